@@ -1,0 +1,171 @@
+#include "CommandLine.h"
+
+#include "CliProgress.h"
+#include "HeadlessCommands.h"
+
+#include "common/LibraryVersions.h"
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <functional>
+#include <map>
+
+namespace drytwin::app {
+
+struct CommandLine::Impl {
+    CLI::App app{"DryTwin — digital-twin workbench for pneumatic drying lines.\n"
+                 "Without a subcommand it opens the GUI; with one it runs headless.",
+                 "drytwin"};
+    CommandOptions options;
+    std::map<CLI::App*, std::function<int(const CommandOptions&)>> handlers;
+    CLI::App* selected = nullptr;
+    bool quiet = false;
+};
+
+namespace {
+
+int notImplemented(const char* name) {
+    std::fprintf(stderr, "drytwin %s: not implemented in this version yet (see the README's status table)\n",
+                 name);
+    return 2;
+}
+
+} // namespace
+
+CommandLine::CommandLine() : m_impl(new Impl) {
+    auto& app = m_impl->app;
+    auto& o = m_impl->options;
+    app.set_version_flag("--version", "drytwin " + dryTwinVersion());
+    app.allow_extras(); // Qt's own GUI options (-platform, -style ...) pass through
+    app.add_option("--data", m_impl->options.dataPath, "GUI: open this batch file or folder at start");
+    app.add_flag("-q,--quiet", m_impl->quiet, "no progress on stderr");
+    app.require_subcommand(0, 1);
+    app.footer("Exit codes: 0 done; 2 wrong usage; 3 bad input data or model file; 4 numerical failure; "
+               "130 cancelled.");
+
+    auto addData = [&](CLI::App* sub, bool required = true) {
+        auto* opt = sub->add_option("--data", o.dataPath, "batch file or folder of *.csv batch files");
+        if (required) {
+            opt->required();
+        }
+        sub->add_option("--mapping", o.mappingPath,
+                        "JSON column mapping {\"<contract column>\": \"<header in the files>\", ...}");
+    };
+    auto reg = [&](CLI::App* sub, std::function<int(const CommandOptions&)> handler) {
+        sub->allow_extras(false);
+        m_impl->handlers[sub] = std::move(handler);
+    };
+
+    auto* inspect =
+        app.add_subcommand("inspect", "load and validate a data set; print batches, rows, ranges, "
+                                      "missing cells and rows the cleaning rules would drop");
+    addData(inspect);
+    inspect->add_option("--min-xhdt", o.cleaning.minXhdtPct, "cleaning: minimum tube-outlet moisture [% wb]")
+        ->capture_default_str();
+    inspect->add_option("--min-thdt", o.cleaning.minThdtC, "cleaning: minimum tube-outlet temperature [°C]")
+        ->capture_default_str();
+    inspect->add_option("--min-feed", o.cleaning.minFeedKgPerHour, "cleaning: minimum feed rate [kg/h]")
+        ->capture_default_str();
+    inspect->add_option("--json", o.jsonPath, "also write the summary as JSON");
+    reg(inspect, runInspect);
+
+    auto* generate = app.add_subcommand("generate", "write virtual-plant batches");
+    generate->add_option("--out", o.outPath, "output folder")->required();
+    generate->add_option("--seed", o.seed, "random seed")->capture_default_str();
+    generate->add_option("--batches", o.batches, "number of batches")->capture_default_str();
+    generate->add_option("--samples", o.samples, "samples per batch (1 s apart)")->capture_default_str();
+    auto* demo = generate->add_flag("--demo", o.demo, "the bundled demo mix of mechanisms and drift");
+    generate->add_option("--effect", o.effects, "NAME[=STRENGTH] of a CONTRACT.md §4 mechanism; repeatable")
+        ->excludes(demo);
+    generate->add_option("--truth", o.truthPath, "write the hidden truth (parameters, effects) here");
+    reg(generate, runGenerate);
+
+    auto* simulate =
+        app.add_subcommand("simulate", "run a model over data; write predictions and proxy states");
+    addData(simulate);
+    simulate->add_option("--model", o.modelPath, "model file (default: the paper's default parameters)");
+    simulate->add_option("--out", o.outPath, "output CSV")->required();
+    reg(simulate, runSimulate);
+
+    auto* calibrate = app.add_subcommand("calibrate", "calibrate the physics model; write a model file");
+    addData(calibrate);
+    calibrate->add_option("--model", o.modelPath, "start from this model file");
+    calibrate->add_option("--out", o.outPath, "model file to write")->required();
+    calibrate->add_option("--free", o.freeParameters, "parameters to fit (default h_HDT k_HDT)");
+    calibrate->add_option("--seed", o.seed, "random seed of the global search")->capture_default_str();
+    calibrate->add_option("--max-evaluations", o.maxEvaluations, "cap on model evaluations")
+        ->capture_default_str();
+    reg(calibrate, runCalibrate);
+
+    auto* train = app.add_subcommand("train", "learn the PGRL-CC residual model on a calibrated model");
+    addData(train);
+    train->add_option("--model", o.modelPath, "calibrated model file")->required();
+    train->add_option("--out", o.outPath, "model file to write")->required();
+    reg(train, [](const CommandOptions&) { return notImplemented("train"); });
+
+    auto* evaluate = app.add_subcommand("evaluate", "metrics on the held-out part of the data");
+    addData(evaluate);
+    evaluate->add_option("--model", o.modelPath, "model file")->required();
+    evaluate->add_option("--json", o.jsonPath, "write the metrics as JSON (CONTRACT.md §3)");
+    evaluate->add_option("--horizon", o.horizonSteps, "multi-step horizon [steps]")->capture_default_str();
+    reg(evaluate, runEvaluate);
+
+    auto* discover = app.add_subcommand("discover", "find what the simulation gets wrong and name the cause");
+    addData(discover);
+    discover->add_option("--json", o.jsonPath, "write the findings as JSON");
+    reg(discover, [](const CommandOptions&) { return notImplemented("discover"); });
+
+    auto* mpc = app.add_subcommand("mpc", "closed-loop what-if scenario, one row per controller model");
+    addData(mpc);
+    mpc->add_option("--model", o.modelPath, "model file")->required();
+    mpc->add_option("--scenario", o.scenarioPath, "scenario file");
+    mpc->add_option("--json", o.jsonPath, "write the results as JSON");
+    reg(mpc, [](const CommandOptions&) { return notImplemented("mpc"); });
+
+    auto* ablation = app.add_subcommand("ablation", "the ablation table of the paper's Table 3");
+    addData(ablation);
+    ablation->add_option("--json", o.jsonPath, "write the table as JSON");
+    reg(ablation, [](const CommandOptions&) { return notImplemented("ablation"); });
+
+    auto* pipeline = app.add_subcommand("pipeline", "everything above in order, with a report");
+    addData(pipeline);
+    pipeline->add_option("--out", o.outPath, "report folder")->required();
+    reg(pipeline, runPipeline);
+}
+
+CommandLine::~CommandLine() {
+    delete m_impl;
+}
+
+ParsedCommandLine CommandLine::parse(int argc, char** argv) {
+    ParsedCommandLine result;
+    try {
+        m_impl->app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        result.exitNow = true;
+        const int rc = m_impl->app.exit(e);
+        // CLI11 returns 0 for --help/--version; every other parse error is wrong usage.
+        result.exitCode = rc == 0 ? 0 : 2;
+        return result;
+    }
+    for (auto* sub : m_impl->app.get_subcommands()) {
+        m_impl->selected = sub;
+    }
+    if (!m_impl->selected) {
+        result.gui = true;
+        result.guiDataPath = m_impl->options.dataPath;
+    }
+    m_impl->options.quiet = m_impl->quiet;
+    return result;
+}
+
+int CommandLine::run() {
+    if (!m_impl->selected) {
+        return 2;
+    }
+    installInterruptHandler();
+    m_impl->options.progress = makeCliProgress(m_impl->quiet);
+    return m_impl->handlers.at(m_impl->selected)(m_impl->options);
+}
+
+} // namespace drytwin::app

@@ -1,0 +1,40 @@
+#pragma once
+
+#include "common/Progress.h"
+#include "data/Cleaning.h"
+
+#include <string>
+#include <vector>
+
+namespace drytwin::app {
+
+/// @brief Every option of every subcommand; each handler reads the ones it declared.
+struct CommandOptions {
+    std::string dataPath;
+    std::string mappingPath;
+    std::string outPath;
+    std::string modelPath;
+    std::string jsonPath;
+    std::string truthPath;
+    std::string scenarioPath;
+    unsigned seed = 1;
+    int batches = 10;
+    int samples = 6300;
+    bool demo = false;
+    std::vector<std::string> effects;
+    std::vector<std::string> freeParameters;
+    int maxEvaluations = 2000;
+    int horizonSteps = 30;
+    data::CleaningOptions cleaning;
+    bool quiet = false;
+    Progress progress;
+};
+
+int runInspect(const CommandOptions& o);
+int runGenerate(const CommandOptions& o);
+int runSimulate(const CommandOptions& o);
+int runCalibrate(const CommandOptions& o);
+int runEvaluate(const CommandOptions& o);
+int runPipeline(const CommandOptions& o);
+
+} // namespace drytwin::app

@@ -1,0 +1,19 @@
+#include "common/Error.h"
+
+namespace drytwin {
+
+int exitCodeFor(ErrorKind kind) {
+    switch (kind) {
+    case ErrorKind::Usage:
+        return 2;
+    case ErrorKind::BadInput:
+        return 3;
+    case ErrorKind::Numerical:
+        return 4;
+    case ErrorKind::Cancelled:
+        return 130;
+    }
+    return 1;
+}
+
+} // namespace drytwin

@@ -1,0 +1,55 @@
+#include "data/Columns.h"
+
+#include <limits>
+
+namespace drytwin::data {
+
+namespace {
+constexpr double kNotMeasured = std::numeric_limits<double>::quiet_NaN();
+} // namespace
+
+const std::array<ColumnSpec, kColumnCount>& columnSpecs() {
+    static const std::array<ColumnSpec, kColumnCount> specs{{
+        {Column::Time, "time_s", "s", "time since batch start", ColumnRole::Index, true, kNotMeasured, ""},
+        {Column::THotSp, "T_hot_sp_C", "°C", "hot-air temperature setpoint", ColumnRole::ManipulatedInput,
+         false, kNotMeasured,
+         "when absent the measured hot-air temperature T_hot_C is taken as the setpoint"},
+        {Column::THot, "T_hot_C", "°C", "measured hot-air temperature at the tube inlet", ColumnRole::Input,
+         true, kNotMeasured, ""},
+        {Column::AirSpeed, "air_speed_m_s", "m/s", "air speed in the drying tube", ColumnRole::Input, false,
+         16.0, "typical design air speed of a cut-tobacco pneumatic dryer"},
+        {Column::Feed, "feed_kg_h", "kg/h", "wet feed rate entering the tube", ColumnRole::Disturbance, true,
+         kNotMeasured, ""},
+        {Column::XIn, "X_in_pct", "% wb", "inlet moisture", ColumnRole::Disturbance, true, kNotMeasured, ""},
+        {Column::TIn, "T_in_C", "°C", "inlet material temperature", ColumnRole::Disturbance, false, 25.0,
+         "cut tobacco leaves conditioning at about 25 °C"},
+        {Column::TAmb, "T_amb_C", "°C", "ambient air temperature", ColumnRole::Disturbance, true,
+         kNotMeasured, ""},
+        {Column::RHAmb, "RH_amb_pct", "%", "ambient relative humidity", ColumnRole::Disturbance, true,
+         kNotMeasured, ""},
+        {Column::XHdt, "X_hdt_pct", "% wb", "moisture at the tube outlet", ColumnRole::Output, false,
+         kNotMeasured, "not measured: tube-outlet fit terms are skipped"},
+        {Column::THdt, "T_hdt_C", "°C", "material temperature at the tube outlet", ColumnRole::Output, false,
+         kNotMeasured, "not measured: tube-outlet fit terms are skipped"},
+        {Column::XOut, "X_out_pct", "% wb", "final outlet moisture after the winnower", ColumnRole::Output,
+         true, kNotMeasured, ""},
+        {Column::TOut, "T_out_C", "°C", "final outlet temperature after the winnower", ColumnRole::Output,
+         true, kNotMeasured, ""},
+    }};
+    return specs;
+}
+
+const ColumnSpec& spec(Column c) {
+    return columnSpecs()[static_cast<size_t>(c)];
+}
+
+std::optional<Column> columnByName(std::string_view name) {
+    for (const auto& s : columnSpecs()) {
+        if (s.name == name) {
+            return s.id;
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace drytwin::data

@@ -1,0 +1,81 @@
+#include "data/DataSetSummary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+namespace drytwin::data {
+
+DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOptions) {
+    DataSetSummary s;
+    s.cleaning = clean(data, cleaningOptions);
+    std::vector<double> sum(kColumnCount, 0.0);
+    std::vector<std::size_t> count(kColumnCount, 0);
+    for (const auto& spec : columnSpecs()) {
+        ColumnSummary c;
+        c.name = std::string(spec.name);
+        c.unit = std::string(spec.unit);
+        c.min = std::numeric_limits<double>::infinity();
+        c.max = -std::numeric_limits<double>::infinity();
+        s.columns.push_back(c);
+    }
+    std::set<std::string> extras;
+    for (std::size_t bi = 0; bi < data.batches.size(); ++bi) {
+        const Batch& b = data.batches[bi];
+        BatchSummary bs;
+        bs.id = b.id;
+        bs.path = b.sourcePath;
+        bs.rows = b.rows();
+        bs.missing = b.missing.size();
+        const auto& keep = s.cleaning.keep[bi];
+        bs.droppedByCleaning = static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 0));
+        if (const auto* t = b.values(Column::Time); t && !t->empty()) {
+            bs.startS = t->front();
+            bs.endS = t->back();
+            std::vector<double> steps;
+            for (std::size_t i = 1; i < t->size(); ++i) {
+                steps.push_back((*t)[i] - (*t)[i - 1]);
+            }
+            if (!steps.empty()) {
+                bs.largestGapS = *std::max_element(steps.begin(), steps.end());
+                std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2),
+                                 steps.end());
+                bs.medianStepS = steps[steps.size() / 2];
+            }
+        }
+        for (const auto& col : b.numeric) {
+            const auto i = static_cast<std::size_t>(col.id);
+            auto& cs = s.columns[i];
+            cs.present = true;
+            for (double v : col.values) {
+                if (std::isnan(v)) {
+                    ++cs.missing;
+                    continue;
+                }
+                cs.min = std::min(cs.min, v);
+                cs.max = std::max(cs.max, v);
+                sum[i] += v;
+                ++count[i];
+            }
+        }
+        for (const auto& t : b.text) {
+            extras.insert(t.fileName);
+        }
+        s.rows += bs.rows;
+        s.missing += bs.missing;
+        s.batches.push_back(bs);
+    }
+    for (std::size_t i = 0; i < s.columns.size(); ++i) {
+        auto& c = s.columns[i];
+        if (count[i] > 0) {
+            c.mean = sum[i] / static_cast<double>(count[i]);
+        } else {
+            c.min = c.max = c.mean = std::numeric_limits<double>::quiet_NaN();
+        }
+    }
+    s.extraColumns.assign(extras.begin(), extras.end());
+    return s;
+}
+
+} // namespace drytwin::data

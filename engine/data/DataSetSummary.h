@@ -1,0 +1,48 @@
+#pragma once
+
+#include "data/Batch.h"
+#include "data/Cleaning.h"
+
+#include <string>
+#include <vector>
+
+namespace drytwin::data {
+
+/// @brief Range of one column over a data set, in file units.
+struct ColumnSummary {
+    std::string name;
+    std::string unit;
+    bool present = false; ///< in at least one batch
+    double min = 0;
+    double max = 0;
+    double mean = 0;
+    std::size_t missing = 0;
+};
+
+/// @brief One batch at a glance.
+struct BatchSummary {
+    std::string id;
+    std::string path;
+    std::size_t rows = 0;
+    double startS = 0;
+    double endS = 0;
+    double medianStepS = 0;
+    double largestGapS = 0;
+    std::size_t missing = 0;
+    std::size_t droppedByCleaning = 0;
+};
+
+/// @brief What a user needs to trust a data set (drytwin inspect, the GUI's data panel).
+struct DataSetSummary {
+    std::vector<BatchSummary> batches;
+    std::vector<ColumnSummary> columns; ///< contract columns, then nothing else
+    std::vector<std::string> extraColumns;
+    std::size_t rows = 0;
+    std::size_t missing = 0;
+    CleaningReport cleaning;
+};
+
+/// @brief Summarises a loaded data set and what the cleaning rules would drop.
+DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaning = {});
+
+} // namespace drytwin::data

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package DryTwin needs to build, test and run.
+# Safe to run twice: apt-get install is idempotent. Uses sudo only when not root.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake pkg-config git
+  # Qt 5.15 (Qwt and VTK's Qt module exist for Qt 5 only on Debian 12)
+  qtbase5-dev qttools5-dev qttools5-dev-tools libqt5svg5-dev libqt5opengl5-dev
+  libqwt-qt5-dev
+  # numerics
+  libeigen3-dev libsundials-dev libnlopt-cxx-dev coinor-libipopt-dev libtorch-dev
+  # 3D view
+  libvtk9-dev libvtk9-qt-dev
+  # well-kept helpers instead of hand-written code:
+  #   JSON, CLI parsing, CSV parsing, FFT, statistics (Boost.Math distributions)
+  nlohmann-json3-dev libcli11-dev libcsv-dev libfftw3-dev libboost-dev
+  # tests and benchmarks
+  libbenchmark-dev
+  # screenshots of the GUI and headless GUI tests
+  xvfb xauth
+)
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  SUDO="sudo"
+fi
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages already installed"
+  exit 0
+fi
+
+echo "install-deps: installing ${#missing[@]} packages: ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,337 @@
+#include "data/BatchReader.h"
+#include "data/BatchWriter.h"
+#include "data/Cleaning.h"
+#include "data/SiBatch.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+#include <cmath>
+#include <fstream>
+
+using namespace drytwin;
+using namespace drytwin::data;
+
+namespace {
+
+const char* kHeader = "time_s,T_hot_sp_C,T_hot_C,air_speed_m_s,feed_kg_h,X_in_pct,T_in_C,T_amb_C,RH_amb_pct,"
+                      "X_hdt_pct,T_hdt_C,X_out_pct,T_out_C";
+
+std::string row(double t, double xOut = 12.8, double feed = 6200, double xHdt = 14.0, double tHdt = 58.0) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%g,170,169.5,16,%g,22,25,24,55,%g,%g,%g,55.2", t, feed, xHdt, tHdt, xOut);
+    return buf;
+}
+
+std::string goodFile(int rows = 5) {
+    std::string s = "# batch: B07\n# line: 2\n";
+    s += kHeader;
+    s += "\n";
+    for (int i = 0; i < rows; ++i) {
+        s += row(i) + "\n";
+    }
+    return s;
+}
+
+void writeText(const QString& path, const std::string& text) {
+    std::ofstream out(path.toStdString(), std::ios::binary);
+    out << text;
+}
+
+} // namespace
+
+class TestBatchReader : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void readsGoodFileWithMetadata() {
+        auto b = parseBatchText(goodFile(), "dir/B07_file.csv");
+        QVERIFY2(b.ok(), b.ok() ? "" : b.error().message().c_str());
+        QCOMPARE(b->id, std::string("B07")); // metadata overrides the file stem
+        QCOMPARE(b->metadata("line"), std::string("2"));
+        QCOMPARE(b->rows(), std::size_t(5));
+        QCOMPARE(b->metadataLines.size(), std::size_t(2));
+        QCOMPARE((*b->values(Column::XOut))[3], 12.8);
+        QCOMPARE((*b->values(Column::Time))[4], 4.0);
+    }
+
+    void columnsInAnyOrderAndExtraTextColumnsKept() {
+        std::string s = "operator,X_out_pct,T_out_C,time_s,T_hot_C,feed_kg_h,X_in_pct,T_amb_C,RH_amb_pct\n"
+                        "anna,12.5,55,0,170,6000,22,20,50\n"
+                        "\"li, wei\",12.6,55.1,1,171,6000,22,20,50\n";
+        auto b = parseBatchText(s, "x.csv");
+        QVERIFY2(b.ok(), b.ok() ? "" : b.error().message().c_str());
+        QCOMPARE(b->text.size(), std::size_t(1));
+        QCOMPARE(b->text[0].cells[1], std::string("li, wei"));
+        QVERIFY(!b->has(Column::XHdt));
+        QCOMPARE((*b->values(Column::XOut))[1], 12.6);
+    }
+
+    void missingCellsReportedNotZeroFilled() {
+        std::string s = std::string(kHeader) + "\n" + row(0) + "\n" +
+                        "1,170,169.5,16,6200,22,25,24,55,14,58,,55.2\n" +
+                        "2,170,NaN,16,6200,22,25,24,55,14,58,12.9,55\n";
+        auto b = parseBatchText(s, "m.csv");
+        QVERIFY2(b.ok(), b.ok() ? "" : b.error().message().c_str());
+        QCOMPARE(b->missing.size(), std::size_t(2));
+        QCOMPARE(b->missing[0].line, 3);
+        QCOMPARE(b->missing[0].column, 12);
+        QCOMPARE(b->missing[0].columnName, std::string("X_out_pct"));
+        QCOMPARE(b->missing[1].line, 4);
+        QCOMPARE(b->missing[1].columnName, std::string("T_hot_C"));
+        QVERIFY(std::isnan((*b->values(Column::XOut))[1]));
+        QVERIFY(std::isnan((*b->values(Column::THot))[2]));
+    }
+
+    void malformed_data() {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("expectedPlace");
+        QTest::addColumn<QString>("expectedReason");
+        const std::string h = std::string(kHeader) + "\n";
+        QTest::newRow("empty file") << QString() << "f.csv:1:1"
+                                    << "empty file";
+        QTest::newRow("only blank lines") << QString("\n\n  \n") << "f.csv:3:1"
+                                          << "empty file";
+        QTest::newRow("only metadata") << QString("# batch: x\n") << "f.csv:1:1"
+                                       << "no header row";
+        QTest::newRow("numeric first row")
+            << QString::fromStdString(row(0) + "\n" + row(1) + "\n") << "f.csv:1:1"
+            << "no header row";
+        QTest::newRow("semicolon delimiter") << QString("time_s;T_hot_C;feed_kg_h\n0;1;2\n") << "f.csv:1:1"
+                                             << "wrong delimiter";
+        QTest::newRow("tab delimiter") << QString("time_s\tT_hot_C\n0\t1\n") << "f.csv:1:1"
+                                       << "wrong delimiter";
+        QTest::newRow("missing required column")
+            << QString("time_s,T_hot_C,feed_kg_h,X_in_pct,T_amb_C,RH_amb_pct,X_out_pct\n0,1,2,3,4,5,6\n")
+            << "f.csv:1:1"
+            << "missing required column 'T_out_C'";
+        QTest::newRow("duplicate column")
+            << QString::fromStdString(std::string(kHeader) + ",X_out_pct\n") << "f.csv:1:14"
+            << "duplicate column 'X_out_pct'";
+        QTest::newRow("empty column name")
+            << QString::fromStdString(std::string(kHeader) + ",\n") << "f.csv:1:14"
+            << "empty column name";
+        QTest::newRow("header only") << QString::fromStdString(h) << "f.csv:1:1"
+                                     << "no data rows";
+        QTest::newRow("text in number")
+            << QString::fromStdString(h + row(0) + "\n" + "1,170,169.5,16,6200,22,25,24,55,14,58,wet,55\n")
+            << "f.csv:3:12"
+            << "text 'wet' in numeric column 'X_out_pct'";
+        QTest::newRow("decimal comma")
+            << QString::fromStdString(h + "0,170,169.5,16,6200,22,25,24,55,14,58,\"12,8\",55\n")
+            << "f.csv:2:12"
+            << "text '12,8'";
+        QTest::newRow("too few fields") << QString::fromStdString(h + row(0) + "\n1,2,3\n") << "f.csv:3:4"
+                                        << "expected 13 fields";
+        QTest::newRow("too many fields") << QString::fromStdString(h + row(0) + ",7\n") << "f.csv:2:14"
+                                         << "expected 13 fields";
+        QTest::newRow("time goes backwards")
+            << QString::fromStdString(h + row(0) + "\n" + row(5) + "\n" + row(3) + "\n") << "f.csv:4:1"
+            << "time does not increase";
+        QTest::newRow("time repeats")
+            << QString::fromStdString(h + row(0) + "\n" + row(0) + "\n") << "f.csv:3:1"
+            << "time does not increase";
+        QTest::newRow("missing time")
+            << QString::fromStdString(h + ",170,169.5,16,6200,22,25,24,55,14,58,12,55\n") << "f.csv:2:1"
+            << "missing time";
+        QTest::newRow("infinite value")
+            << QString::fromStdString(h + "0,170,inf,16,6200,22,25,24,55,14,58,12,55\n") << "f.csv:2:3"
+            << "infinite value";
+        QTest::newRow("unterminated quote")
+            << QString::fromStdString(h + row(0) + "\n1,\"170,169\n") << "f.csv:3:1"
+            << "malformed CSV";
+        QTest::newRow("stray quote") << QString::fromStdString(
+                                            h + "0,17\"0,169.5,16,6200,22,25,24,55,14,58,12,55\n")
+                                     << "f.csv:2:2"
+                                     << "malformed CSV";
+    }
+    void malformed() {
+        QFETCH(QString, text);
+        QFETCH(QString, expectedPlace);
+        QFETCH(QString, expectedReason);
+        auto b = parseBatchText(text.toStdString(), "f.csv");
+        QVERIFY(!b.ok());
+        QCOMPARE(QString::fromStdString(b.error().place), expectedPlace);
+        QVERIFY2(QString::fromStdString(b.error().reason).contains(expectedReason),
+                 b.error().message().c_str());
+        QCOMPARE(exitCodeFor(b.error().kind), 3);
+    }
+
+    void wrongEncoding() {
+        std::string latin1 = goodFile();
+        latin1.insert(latin1.find("# line"), "# operator: J\xFCrgen\n"); // Latin-1 ü
+        auto b = parseBatchText(latin1, "f.csv");
+        QVERIFY(!b.ok());
+        QCOMPARE(QString::fromStdString(b.error().place), QString("f.csv:2:14"));
+        QVERIFY(QString::fromStdString(b.error().reason).contains("UTF-8"));
+
+        const std::string utf16("\xFF\xFEt\0i\0", 6);
+        auto c = parseBatchText(utf16, "g.csv");
+        QVERIFY(!c.ok());
+        QVERIFY(QString::fromStdString(c.error().reason).contains("UTF-16"));
+    }
+
+    void utf8BomAndCrlfAccepted() {
+        std::string s = "\xEF\xBB\xBF" + std::string(kHeader) + "\r\n" + row(0) + "\r\n" + row(1) + "\r\n";
+        auto b = parseBatchText(s, "crlf.csv");
+        QVERIFY2(b.ok(), b.ok() ? "" : b.error().message().c_str());
+        QCOMPARE(b->rows(), std::size_t(2));
+        QCOMPARE((*b->values(Column::TOut))[1], 55.2);
+    }
+
+    void columnMapping() {
+        ColumnMapping m;
+        m.contractToFile["X_out_pct"] = "Moisture_Out";
+        ReadOptions ro;
+        ro.mapping = m;
+        std::string s =
+            "time_s,T_hot_C,feed_kg_h,X_in_pct,T_amb_C,RH_amb_pct,Moisture_Out,T_out_C\n0,1,2,3,4,5,6,7\n";
+        auto b = parseBatchText(s, "m.csv", ro);
+        QVERIFY2(b.ok(), b.ok() ? "" : b.error().message().c_str());
+        QCOMPARE((*b->values(Column::XOut))[0], 6.0);
+        // Written back with the file's own names, with contract names on request.
+        QVERIFY(formatBatch(*b).find("Moisture_Out") != std::string::npos);
+        QVERIFY(formatBatch(*b, HeaderNames::Contract).find("X_out_pct") != std::string::npos);
+        // The mapping names the column but the file lacks it: the message says so.
+        auto c = parseBatchText(
+            "time_s,T_hot_C,feed_kg_h,X_in_pct,T_amb_C,RH_amb_pct,T_out_C\n0,1,2,3,4,5,7\n", "n.csv", ro);
+        QVERIFY(!c.ok());
+        QVERIFY(QString::fromStdString(c.error().reason).contains("Moisture_Out"));
+        ColumnMapping bad;
+        bad.contractToFile["X_wet"] = "a";
+        QVERIFY(!bad.validate().ok());
+    }
+
+    void roundTripIsLossless() {
+        std::string s = goodFile(3);
+        s += "3,170,169.5,16,6200,22,25,24,55,14,58,0.1000000000000000055511151231257827,55.2\n";
+        s += "4,170,169.5,16,6200,22,25,24,55,,58,12.345678901234567,55.2\n";
+        auto a = parseBatchText(s, "r.csv");
+        QVERIFY(a.ok());
+        const std::string written = formatBatch(*a);
+        auto b = parseBatchText(written, "r.csv");
+        QVERIFY(b.ok());
+        QCOMPARE(b->metadataLines, a->metadataLines);
+        QCOMPARE(b->rows(), a->rows());
+        QCOMPARE(b->missing.size(), a->missing.size());
+        for (std::size_t c = 0; c < a->numeric.size(); ++c) {
+            for (std::size_t r = 0; r < a->rows(); ++r) {
+                const double x = a->numeric[c].values[r];
+                const double y = b->numeric[c].values[r];
+                QVERIFY((std::isnan(x) && std::isnan(y)) || x == y); // bit-exact
+            }
+        }
+        QCOMPARE(formatBatch(*b), written);
+    }
+
+    void folderLoadReportsEveryBadFileAndKeepsNothingHalfLoaded() {
+        QTemporaryDir dir;
+        writeText(dir.filePath("a.csv"), goodFile());
+        writeText(dir.filePath("b.csv"), std::string(kHeader) + "\n" + row(0) + "\n1,2\n");
+        writeText(dir.filePath("c.csv"), "");
+        writeText(dir.filePath("notes.txt"), "ignored");
+        auto r = loadDataSet(dir.path().toStdString());
+        QVERIFY(!r.ok());
+        QCOMPARE(r.errors.size(), std::size_t(2));
+        QVERIFY(QString::fromStdString(r.errors[0].place).endsWith("b.csv:3:3"));
+        QVERIFY(QString::fromStdString(r.errors[1].place).endsWith("c.csv:1:1"));
+
+        QTemporaryDir good;
+        writeText(good.filePath("b2.csv"), goodFile(4).replace(goodFile(4).find("B07"), 3, "B08"));
+        writeText(good.filePath("b1.csv"), goodFile(3));
+        auto ok = loadDataSet(good.path().toStdString());
+        QVERIFY(ok.ok());
+        QCOMPARE(ok.dataSet.batches.size(), std::size_t(2));
+        QCOMPARE(ok.dataSet.batches[0].id, std::string("B07")); // b1.csv sorts first
+        QCOMPARE(ok.dataSet.totalRows(), std::size_t(7));
+
+        QTemporaryDir dup;
+        writeText(dup.filePath("x.csv"), goodFile());
+        writeText(dup.filePath("y.csv"), goodFile());
+        auto d = loadDataSet(dup.path().toStdString());
+        QCOMPARE(d.errors.size(), std::size_t(1));
+        QVERIFY(QString::fromStdString(d.errors[0].reason).contains("B07"));
+
+        auto none = loadDataSet(dir.filePath("nope").toStdString());
+        QVERIFY(!none.ok());
+    }
+
+    void cancelStopsLoading() {
+        QTemporaryDir dir;
+        writeText(dir.filePath("a.csv"), goodFile());
+        auto r = loadDataSet(dir.path().toStdString(), {},
+                             [](const ProgressInfo&) { return ProgressAction::Stop; });
+        QVERIFY(r.cancelled);
+        QVERIFY(r.dataSet.batches.empty());
+    }
+
+    void atomicWriteReplacesAndFailsCleanly() {
+        QTemporaryDir dir;
+        auto b = parseBatchText(goodFile(), "w.csv");
+        const std::string path = dir.filePath("out.csv").toStdString();
+        QVERIFY(writeBatchFile(*b, path).ok());
+        auto back = readBatchFile(path);
+        QVERIFY(back.ok());
+        QCOMPARE(back->rows(), b->rows());
+        auto bad = writeBatchFile(*b, dir.filePath("no/such/dir/out.csv").toStdString());
+        QVERIFY(!bad.ok());
+        QVERIFY(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size() == 1); // no temp left
+    }
+
+    void cleaningRulesOfThePaper() {
+        std::string s = std::string(kHeader) + "\n" + row(0) + "\n" + row(1, 12.8, 5000) + "\n" +
+                        row(2, 12.8, 6200, 10.5) + "\n" + row(3, 12.8, 6200, 14, 45) + "\n" +
+                        "4,170,169.5,16,6200,22,25,24,55,14,58,,55\n";
+        DataSet ds;
+        ds.batches.push_back(*parseBatchText(s, "c.csv"));
+        auto rep = clean(ds);
+        QCOMPARE(rep.kept, std::size_t(1));
+        QCOMPARE(rep.droppedFeed, std::size_t(1));
+        QCOMPARE(rep.droppedXhdt, std::size_t(1));
+        QCOMPARE(rep.droppedThdt, std::size_t(1));
+        QCOMPARE(rep.droppedMissing, std::size_t(1));
+        CleaningOptions loose;
+        loose.minFeedKgPerHour = 0;
+        loose.minXhdtPct = 0;
+        loose.minThdtC = 0;
+        QCOMPARE(clean(ds, loose).kept, std::size_t(4));
+        CleaningOptions invalid;
+        invalid.minXhdtPct = 120;
+        QVERIFY(!invalid.validate().ok());
+    }
+
+    void siConversionAndSplits() {
+        std::string s = std::string(kHeader) + "\n";
+        for (int i = 0; i < 100; ++i) {
+            s += row(i) + "\n";
+        }
+        DataSet ds;
+        ds.batches.push_back(*parseBatchText(s, "s.csv"));
+        (*ds.batches[0].values(Column::THot))[10] = std::nan("");
+        ds.batches[0].missing.push_back({12, 3, "T_hot_C"});
+        const auto si = toSi(ds, clean(ds));
+        QCOMPARE(si.size(), std::size_t(1));
+        QCOMPARE(si[0].xOutDb[0], 0.128 / (1 - 0.128));
+        QCOMPARE(si[0].tOutK[0], 55.2 + 273.15);
+        QCOMPARE(si[0].feedKgPerS[0], 6200.0 / 3600.0);
+        QCOMPARE(si[0].rhAmb[0], 0.55);
+        QCOMPARE(si[0].tHotK[10], 169.5 + 273.15); // bridged ...
+        QCOMPARE(int(si[0].keep[10]), 0);          // ... and masked out of fitting
+        QCOMPARE(dryToWetPct(wetPctToDry(13.7)), 13.7);
+
+        auto split = chronologicalSplit({6300, 6300, 6300, 6300, 6300, 6300, 6300, 6300, 6300, 6300});
+        QCOMPARE(split.name, std::string("chronological_70_30"));
+        QCOMPARE(split.train[6].size(), std::size_t(6300));
+        QCOMPARE(split.train[7].size(), std::size_t(0));
+        QCOMPARE(split.test[7].size(), std::size_t(6300));
+        auto uneven = chronologicalSplit({10, 10, 5});
+        QCOMPARE(uneven.train[1].end, std::size_t(7)); // floor(0.7*25) = 17 = 10 + 7
+        QCOMPARE(uneven.test[1].begin, std::size_t(7));
+
+        auto subset = calibrationSubset(si, 10, 5);
+        QCOMPARE(subset.size(), std::size_t(5));
+        QCOMPARE(subset[0].row, std::size_t(0));
+        QCOMPARE(subset[1].row, std::size_t(11)); // row 10 masked, so the 10th kept row is row 11
+    }
+};
+
+QTEST_APPLESS_MAIN(TestBatchReader)
+#include "TestBatchReader.moc"
