@@ -152,6 +152,15 @@ ParsedCommandLine CommandLine::parse(int argc, char** argv) {
         m_impl->selected = sub;
     }
     if (!m_impl->selected) {
+        // Extras are for Qt's own options (-platform ...); a bare word is a mistyped subcommand.
+        for (const auto& extra : m_impl->app.remaining()) {
+            if (!extra.empty() && extra[0] != '-') {
+                std::fprintf(stderr, "drytwin: unknown subcommand '%s'; see drytwin --help\n", extra.c_str());
+                result.exitNow = true;
+                result.exitCode = 2;
+                return result;
+            }
+        }
         result.gui = true;
         result.guiDataPath = m_impl->options.dataPath;
     }

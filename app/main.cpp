@@ -5,10 +5,23 @@
 #include <QApplication>
 #include <QSurfaceFormat>
 #include <QVTKOpenGLNativeWidget.h>
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
 
 namespace {
 
 int runGui(int argc, char** argv, const QString& dataPath) {
+    const bool platformGiven =
+        qEnvironmentVariableIsSet("QT_QPA_PLATFORM") ||
+        std::any_of(argv, argv + argc, [](const char* a) { return std::strcmp(a, "-platform") == 0; });
+    if (!platformGiven && !qEnvironmentVariableIsSet("DISPLAY") &&
+        !qEnvironmentVariableIsSet("WAYLAND_DISPLAY")) {
+        std::fprintf(stderr,
+                     "drytwin: no display for the GUI (DISPLAY is not set); run a subcommand headless, "
+                     "e.g. drytwin pipeline --data DIR --out DIR, or see drytwin --help\n");
+        return 2;
+    }
     // Must precede QApplication for the VTK view (PLATFORM-NOTES.md).
     QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
     QApplication app(argc, argv);
