@@ -1,0 +1,42 @@
+#pragma once
+
+#include "common/Error.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace drytwin::physics {
+
+/// @brief Input series of one batch in SI units and dry basis, as the line model needs them.
+/// Before the first sample the line is taken to have run steadily at the first values; after
+/// the last, at the last values.
+struct LineInputs {
+    std::vector<double> timeS;
+    std::vector<double> tHotK;        ///< hot-air temperature at the tube inlet [K]
+    std::vector<double> xInDb;        ///< inlet moisture, dry basis
+    std::vector<double> tInK;         ///< inlet material temperature [K]
+    std::vector<double> tAmbK;        ///< ambient air [K]
+    std::vector<double> rhAmb;        ///< ambient relative humidity [0..1]
+    std::vector<double> feedKgPerS;   ///< wet feed [kg/s] (not used by the paper's PBM; by the plant)
+    std::vector<double> airSpeedMPerS;///< [m/s] (not used by the paper's PBM; by the plant)
+
+    std::size_t size() const { return timeS.size(); }
+    /// @brief Equal lengths, ≥ 2 samples, strictly increasing time, finite physical values.
+    Status validate() const;
+};
+
+/// @brief Linear interpolation in a sampled series, held constant outside its time range.
+/// Thread-safe (no state).
+double interpolate(const std::vector<double>& timeS, const std::vector<double>& values, double t);
+
+/// @brief As interpolate(), starting the search at @p hint (updated), which makes the many
+/// nearby look-ups of an integration O(1) instead of O(log n).
+double interpolateFrom(const std::vector<double>& timeS, const std::vector<double>& values, double t,
+                       std::size_t& hint);
+
+/// @brief Response of a first-order actuator with time constant @p tauS to a setpoint series
+/// (exact for a setpoint held between samples). Used when T_hot follows T_hot_sp (MPC).
+std::vector<double> firstOrderResponse(const std::vector<double>& timeS, const std::vector<double>& setpoint,
+                                       double tauS, double initial);
+
+} // namespace drytwin::physics

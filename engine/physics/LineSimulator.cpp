@@ -1,0 +1,476 @@
+#include "physics/LineSimulator.h"
+
+#include "physics/SectionRates.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <cmath>
+
+namespace drytwin::physics {
+
+using properties::Param;
+using properties::ParameterSet;
+
+namespace {
+
+struct SectionContext {
+    const LineInputs* in = nullptr;
+    const ParameterSet* p = nullptr;
+    const properties::ModelSwitches* sw = nullptr;
+    const std::vector<double>* entry = nullptr; ///< absolute entry time of each parcel [s]
+    mutable std::vector<std::size_t> hint;      ///< per-parcel interpolation hints
+    double at(const std::vector<double>& series, std::size_t parcel, double s) const {
+        return interpolateFrom(in->timeS, series, (*entry)[parcel] + s, hint[parcel]);
+    }
+};
+
+SectionContext makeContext(const LineInputs& in, const ParameterSet& p, const properties::ModelSwitches& sw,
+                           const std::vector<double>& entry) {
+    SectionContext c{&in, &p, &sw, &entry, std::vector<std::size_t>(entry.size(), 0)};
+    return c;
+}
+
+bool finite2(const double* d) { return std::isfinite(d[0]) && std::isfinite(d[1]); }
+
+bool tubeEval(const void* c, double s, std::size_t i, const double* y, double* ydot) {
+    const auto& x = *static_cast<const SectionContext*>(c);
+    const ParameterSet& p = *x.p;
+    TubeEnvironment env;
+    env.tGasK = x.at(x.in->tHotK, i, s);
+    env.wGas = p[Param::w];
+    env.h = p[Param::h_HDT];
+    env.k = p[Param::k_HDT];
+    const auto r = tubeRates(y[0], y[1], env, p, *x.sw);
+    ydot[0] = r.dXdt;
+    ydot[1] = r.dTdt;
+    return finite2(ydot);
+}
+
+AmbientEnvironment ambientAt(const SectionContext& x, std::size_t parcel, double s) {
+    AmbientEnvironment env;
+    env.tAirK = x.at(x.in->tAmbK, parcel, s);
+    env.rh = x.at(x.in->rhAmb, parcel, s);
+    return env;
+}
+
+bool conveyorEval(const void* c, double s, std::size_t i, const double* y, double* ydot) {
+    const auto& x = *static_cast<const SectionContext*>(c);
+    const auto r = conveyorRates(y[0], y[1], ambientAt(x, i, s), *x.p, *x.sw);
+    ydot[0] = r.dXdt;
+    ydot[1] = r.dTdt;
+    return finite2(ydot);
+}
+
+bool winnowerEval(const void* c, double s, std::size_t i, const double* y, double* ydot) {
+    const auto& x = *static_cast<const SectionContext*>(c);
+    // States: X, T, and the entry mix (X_mix, T_mix) carried as constants so that their
+    // sensitivities flow into Eq. 18.
+    const auto r = winnowerRates(y[0], y[1], s, y[2], y[3], ambientAt(x, i, s), *x.p, *x.sw);
+    ydot[0] = r.dXdt;
+    ydot[1] = r.dTdt;
+    ydot[2] = 0;
+    ydot[3] = 0;
+    return finite2(ydot);
+}
+
+IntegratorSettings settingsFor(const SimulationOptions& o, int states) {
+    IntegratorSettings s;
+    s.reference = o.reference;
+    s.relTol = o.relTol;
+    // Moisture is ~0.2 kg/kg and temperature ~330 K: absolute tolerances per state.
+    const double atolX = o.relTol * 1e-2;
+    const double atolT = o.relTol * 1e2;
+    s.absTol = states == 2 ? std::vector<double>{atolX, atolT} : std::vector<double>{atolX, atolT, atolX, atolT};
+    return s;
+}
+
+/// Core simulation; sensitivities only for rate (non-duration) parameters.
+Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet& params,
+                                        const SimulationOptions& o, const std::vector<std::size_t>& rows,
+                                        const std::vector<Param>& odeSens) {
+    SimulationResult res;
+    res.rows = rows;
+    const std::size_t n = rows.size();
+    ParameterSet p = params; // CVODES perturbs this copy in place
+    const double tauH = p[Param::tau_HDT];
+    const double tauC = p[Param::tau_conv];
+    const double tW = p[Param::t_W];
+
+    SensitivitySpec spec;
+    const bool withSens = !odeSens.empty();
+    const std::size_t ns = odeSens.size();
+    for (Param q : odeSens) {
+        spec.plist.push_back(static_cast<int>(q));
+        const double v = std::abs(p[q]);
+        spec.pbar.push_back(v > 0 ? v : 1.0);
+    }
+    spec.params = p.data();
+
+    // Tube: the parcel that leaves the line at row k (set A) and the one that leaves the tube at
+    // row k (set B). With delays that are whole sample steps most set-A parcels are set-B parcels
+    // of earlier rows, so equal entry times share one integration.
+    std::vector<double> entryTube;
+    entryTube.reserve(2 * n);
+    std::vector<std::size_t> tubeOfA(n);
+    std::vector<std::size_t> tubeOfB(n);
+    {
+        std::vector<std::pair<double, std::size_t>> wanted; // (entry time, slot: j for A, n + j for B)
+        wanted.reserve(2 * n);
+        for (std::size_t j = 0; j < n; ++j) {
+            const double tOut = in.timeS[rows[j]];
+            wanted.emplace_back(tOut - (tauH + tauC + tW), j);
+            wanted.emplace_back(tOut - tauH, n + j);
+        }
+        std::sort(wanted.begin(), wanted.end());
+        for (const auto& [t, slot] : wanted) {
+            if (entryTube.empty() || t - entryTube.back() > 1e-9) {
+                entryTube.push_back(t);
+            }
+            (slot < n ? tubeOfA[slot] : tubeOfB[slot - n]) = entryTube.size() - 1;
+        }
+    }
+    const std::size_t nTube = entryTube.size();
+    std::vector<double> y(2 * nTube);
+    for (std::size_t j = 0; j < nTube; ++j) {
+        y[2 * j] = interpolate(in.timeS, in.xInDb, entryTube[j]);
+        y[2 * j + 1] = interpolate(in.timeS, in.tInK, entryTube[j]);
+    }
+    std::vector<std::vector<double>> yS(ns, std::vector<double>(2 * nTube, 0.0));
+    SectionContext ctx = makeContext(in, p, o.switches, entryTube);
+    ParcelRhs tube{&ctx, tubeEval, nTube, 2};
+    if (auto st = integrateParcels(tube, y, tauH, settingsFor(o, 2), withSens ? &spec : nullptr,
+                                   withSens ? &yS : nullptr, "drying tube", &res.stats);
+        !st) {
+        return st.error();
+    }
+    res.xHdtDb.resize(n);
+    res.tHdtK.resize(n);
+    res.proxyXHdtDb.resize(n);
+    res.proxyTHdtK.resize(n);
+    for (std::size_t j = 0; j < n; ++j) {
+        res.proxyXHdtDb[j] = y[2 * tubeOfA[j]];
+        res.proxyTHdtK[j] = y[2 * tubeOfA[j] + 1];
+        res.xHdtDb[j] = y[2 * tubeOfB[j]];
+        res.tHdtK[j] = y[2 * tubeOfB[j] + 1];
+    }
+    for (std::size_t q = 0; q < ns; ++q) {
+        OutputSensitivity os;
+        os.param = odeSens[q];
+        os.dXHdt.resize(n);
+        os.dTHdt.resize(n);
+        for (std::size_t j = 0; j < n; ++j) {
+            os.dXHdt[j] = yS[q][2 * tubeOfB[j]];
+            os.dTHdt[j] = yS[q][2 * tubeOfB[j] + 1];
+        }
+        res.sensitivities.push_back(std::move(os));
+    }
+
+    // Conveyor: the top layer of set A.
+    std::vector<double> entryConv(n);
+    std::vector<double> yc(2 * n);
+    std::vector<std::vector<double>> ySc(ns, std::vector<double>(2 * n));
+    for (std::size_t j = 0; j < n; ++j) {
+        const std::size_t a = tubeOfA[j];
+        entryConv[j] = entryTube[a] + tauH;
+        yc[2 * j] = y[2 * a];
+        yc[2 * j + 1] = y[2 * a + 1];
+        for (std::size_t q = 0; q < ns; ++q) {
+            ySc[q][2 * j] = yS[q][2 * a];
+            ySc[q][2 * j + 1] = yS[q][2 * a + 1];
+        }
+    }
+    SectionContext cctx = makeContext(in, p, o.switches, entryConv);
+    ParcelRhs conv{&cctx, conveyorEval, n, 2};
+    if (auto st = integrateParcels(conv, yc, tauC, settingsFor(o, 2), withSens ? &spec : nullptr,
+                                   withSens ? &ySc : nullptr, "conveyor", &res.stats);
+        !st) {
+        return st.error();
+    }
+
+    // Winnower inlet mix, Eqs. 15–16, and its Jacobian for the sensitivities (the mix is
+    // algebraic, so central differences are accurate to ~1e-9 here).
+    std::vector<double> entryWin(n);
+    std::vector<double> yw(4 * n);
+    std::vector<std::vector<double>> ySw(ns, std::vector<double>(4 * n));
+    res.proxyXConvDb.resize(n);
+    res.proxyTConvK.resize(n);
+    res.proxyXMixDb.resize(n);
+    res.proxyTMixK.resize(n);
+    for (std::size_t j = 0; j < n; ++j) {
+        const double xc = yc[2 * j];
+        const double tc = yc[2 * j + 1];
+        const double xh = y[2 * tubeOfA[j]];
+        const double th = y[2 * tubeOfA[j] + 1];
+        const MixState mix = winnowerInletMix(xc, tc, xh, th, p, o.switches);
+        entryWin[j] = entryConv[j] + tauC;
+        res.proxyXConvDb[j] = xc;
+        res.proxyTConvK[j] = tc;
+        res.proxyXMixDb[j] = mix.xDb;
+        res.proxyTMixK[j] = mix.tK;
+        yw[4 * j] = mix.xDb;
+        yw[4 * j + 1] = mix.tK;
+        yw[4 * j + 2] = mix.xDb;
+        yw[4 * j + 3] = mix.tK;
+        if (!withSens) {
+            continue;
+        }
+        const double in4[4] = {xc, tc, xh, th};
+        double jac[2][4];
+        for (int a = 0; a < 4; ++a) {
+            double up[4] = {in4[0], in4[1], in4[2], in4[3]};
+            double dn[4] = {in4[0], in4[1], in4[2], in4[3]};
+            const double h = 1e-6 * std::max(1.0, std::abs(in4[a]));
+            up[a] += h;
+            dn[a] -= h;
+            const MixState mu = winnowerInletMix(up[0], up[1], up[2], up[3], p, o.switches);
+            const MixState md = winnowerInletMix(dn[0], dn[1], dn[2], dn[3], p, o.switches);
+            jac[0][a] = (mu.xDb - md.xDb) / (2 * h);
+            jac[1][a] = (mu.tK - md.tK) / (2 * h);
+        }
+        for (std::size_t q = 0; q < ns; ++q) {
+            const double d4[4] = {ySc[q][2 * j], ySc[q][2 * j + 1], yS[q][2 * tubeOfA[j]],
+                                  yS[q][2 * tubeOfA[j] + 1]};
+            double dx = 0;
+            double dt = 0;
+            for (int a = 0; a < 4; ++a) {
+                dx += jac[0][a] * d4[a];
+                dt += jac[1][a] * d4[a];
+            }
+            // Direct dependence of the mix on the parameter (β_top, θ_Cp1, θ_Cp2).
+            ParameterSet pp = p;
+            const double v = p[odeSens[q]];
+            const double h = 1e-6 * std::max(1e-3, std::abs(v));
+            pp[odeSens[q]] = v + h;
+            const MixState mu = winnowerInletMix(xc, tc, xh, th, pp, o.switches);
+            pp[odeSens[q]] = v - h;
+            const MixState md = winnowerInletMix(xc, tc, xh, th, pp, o.switches);
+            dx += (mu.xDb - md.xDb) / (2 * h);
+            dt += (mu.tK - md.tK) / (2 * h);
+            ySw[q][4 * j] = dx;
+            ySw[q][4 * j + 1] = dt;
+            ySw[q][4 * j + 2] = dx;
+            ySw[q][4 * j + 3] = dt;
+        }
+    }
+
+    res.xOutDb.resize(n);
+    res.tOutK.resize(n);
+    if (o.winnower == WinnowerForm::Transient) {
+        SectionContext wctx = makeContext(in, p, o.switches, entryWin);
+        ParcelRhs win{&wctx, winnowerEval, n, 4};
+        if (auto st = integrateParcels(win, yw, tW, settingsFor(o, 4), withSens ? &spec : nullptr,
+                                       withSens ? &ySw : nullptr, "winnower", &res.stats);
+            !st) {
+            return st.error();
+        }
+        for (std::size_t j = 0; j < n; ++j) {
+            res.xOutDb[j] = yw[4 * j];
+            res.tOutK[j] = yw[4 * j + 1];
+        }
+        for (std::size_t q = 0; q < ns; ++q) {
+            auto& os = res.sensitivities[q];
+            os.dXOut.resize(n);
+            os.dTOut.resize(n);
+            for (std::size_t j = 0; j < n; ++j) {
+                os.dXOut[j] = ySw[q][4 * j];
+                os.dTOut[j] = ySw[q][4 * j + 1];
+            }
+        }
+    } else {
+        for (std::size_t j = 0; j < n; ++j) {
+            const double xm = res.proxyXMixDb[j];
+            const double tm = res.proxyTMixK[j];
+            const AmbientEnvironment env{interpolate(in.timeS, in.tAmbK, entryWin[j]),
+                                         interpolate(in.timeS, in.rhAmb, entryWin[j]), 0.0};
+            const double xOut = winnowerTerminalMoisture(xm, tm, env, p); // Eq. (17)
+            // Eq. (19) over t_W as one explicit step with the evaporated mass of Eq. 17.
+            const auto r = winnowerRates(xm, tm, 0.0, xm, tm, env, p, o.switches);
+            res.xOutDb[j] = xOut;
+            res.tOutK[j] = tm + (r.heatIn * tW - r.vapourEnthalpy * (xm - xOut)) / r.heatCapacity;
+        }
+    }
+    return res;
+}
+
+} // namespace
+
+Status SimulationOptions::validate() const {
+    if (!(relTol >= 1e-12 && relTol <= 1e-2)) {
+        return Error{ErrorKind::BadInput, "relTol", "must lie in [1e-12, 1e-2]"};
+    }
+    for (Param q : sensitivities) {
+        if (properties::info(q).fixed) {
+            return Error{ErrorKind::BadInput, std::string(properties::info(q).symbol),
+                         "is a physical constant; no sensitivity"};
+        }
+    }
+    if (!sensitivities.empty() && winnower == WinnowerForm::Terminal) {
+        return Error{ErrorKind::BadInput, "sensitivities", "need the transient winnower form (Eqs. 18-19)"};
+    }
+    return {};
+}
+
+const std::vector<std::string>& proxyNames() {
+    static const std::vector<std::string> names{"X_HDT", "T_HDT", "X_Conv", "T_Conv", "X_mix", "T_mix"};
+    return names;
+}
+
+double totalDelay(const ParameterSet& p) { return p[Param::tau_HDT] + p[Param::tau_conv] + p[Param::t_W]; }
+
+Expected<SimulationResult> simulateLine(const LineInputs& inputs, const ParameterSet& params,
+                                        const SimulationOptions& options, const std::vector<std::size_t>& rowsIn) {
+    const auto start = std::chrono::steady_clock::now();
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    if (auto st = params.validate(); !st) {
+        return st.error();
+    }
+    if (auto st = inputs.validate(); !st) {
+        return st.error();
+    }
+    std::vector<std::size_t> rows = rowsIn;
+    if (rows.empty()) {
+        rows.resize(inputs.size());
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            rows[i] = i;
+        }
+    }
+    for (std::size_t r : rows) {
+        if (r >= inputs.size()) {
+            return Error{ErrorKind::BadInput, "rows", "row " + std::to_string(r) + " is past the end of the batch"};
+        }
+    }
+    std::vector<Param> odeSens;
+    std::vector<Param> durationSens;
+    for (Param q : options.sensitivities) {
+        (properties::info(q).duration ? durationSens : odeSens).push_back(q);
+    }
+    auto res = simulateCore(inputs, params, options, rows, odeSens);
+    if (!res) {
+        return res;
+    }
+    // Residence times move the windows the parcels see: central differences of whole runs.
+    for (Param q : durationSens) {
+        SimulationOptions plain = options;
+        plain.sensitivities.clear();
+        const double v = params[q];
+        const double h = 1e-3 * std::max(1.0, std::abs(v));
+        ParameterSet up = params;
+        ParameterSet dn = params;
+        up[q] = v + h;
+        dn[q] = v - h;
+        auto ru = simulateCore(inputs, up, plain, rows, {});
+        auto rd = simulateCore(inputs, dn, plain, rows, {});
+        if (!ru || !rd) {
+            return ru ? rd.error() : ru.error();
+        }
+        OutputSensitivity os;
+        os.param = q;
+        const auto diff = [&](const std::vector<double>& a, const std::vector<double>& b) {
+            std::vector<double> d(a.size());
+            for (std::size_t i = 0; i < a.size(); ++i) {
+                d[i] = (a[i] - b[i]) / (2 * h);
+            }
+            return d;
+        };
+        os.dXOut = diff(ru->xOutDb, rd->xOutDb);
+        os.dTOut = diff(ru->tOutK, rd->tOutK);
+        os.dXHdt = diff(ru->xHdtDb, rd->xHdtDb);
+        os.dTHdt = diff(ru->tHdtK, rd->tHdtK);
+        res->sensitivities.push_back(std::move(os));
+    }
+    // Report sensitivities in the order they were asked for.
+    std::vector<OutputSensitivity> ordered;
+    for (Param q : options.sensitivities) {
+        for (auto& s : res->sensitivities) {
+            if (s.param == q) {
+                ordered.push_back(std::move(s));
+                break;
+            }
+        }
+    }
+    res->sensitivities = std::move(ordered);
+    res->elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return res;
+}
+
+Expected<std::vector<SimulationResult>> simulateBatches(const std::vector<LineInputs>& batches,
+                                                        const ParameterSet& params, const SimulationOptions& options,
+                                                        unsigned threads, const Progress& progress) {
+    const std::size_t nb = batches.size();
+    std::vector<std::optional<Expected<SimulationResult>>> results(nb);
+    std::atomic<std::size_t> next{0};
+    std::atomic<bool> stop{false};
+    std::mutex mutex;
+    std::condition_variable finished;
+    std::size_t done = 0;
+    auto work = [&] {
+        for (;;) {
+            const std::size_t i = next++;
+            if (i >= nb || stop) {
+                return;
+            }
+            auto r = simulateLine(batches[i], params, options);
+            std::lock_guard lock(mutex);
+            results[i].emplace(std::move(r));
+            ++done;
+            finished.notify_all();
+        }
+    };
+    if (threads == 0) {
+        threads = std::max(1u, std::thread::hardware_concurrency());
+    }
+    threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(nb, 1)));
+    std::vector<std::thread> pool;
+    for (unsigned t = 0; threads > 1 && t < threads; ++t) {
+        pool.emplace_back(work);
+    }
+    // The calling thread reports progress while the pool works; with one thread it works itself.
+    if (threads == 1) {
+        work();
+    }
+    {
+        std::unique_lock lock(mutex);
+        std::size_t reported = 0;
+        while (done < nb && !(stop && pool.empty())) {
+            finished.wait_for(lock, std::chrono::milliseconds(50), [&] { return done != reported || done == nb; });
+            if (done != reported) {
+                reported = done;
+                lock.unlock();
+                if (reportProgress(progress, "simulate", static_cast<double>(reported) / static_cast<double>(nb),
+                                   std::to_string(reported) + "/" + std::to_string(nb) + " batches")) {
+                    stop = true;
+                }
+                lock.lock();
+            }
+            if (stop) {
+                break;
+            }
+        }
+    }
+    for (auto& t : pool) {
+        t.join();
+    }
+    if (stop) {
+        return Error{ErrorKind::Cancelled, "simulate", "cancelled by the user"};
+    }
+    std::vector<SimulationResult> out;
+    out.reserve(nb);
+    for (std::size_t i = 0; i < nb; ++i) {
+        if (!results[i] || !*results[i]) {
+            Error e = results[i] ? results[i]->error() : Error{ErrorKind::Numerical, "simulate", "batch not run"};
+            e.place = "batch " + std::to_string(i + 1) + ": " + e.place;
+            return e;
+        }
+        out.push_back(std::move(results[i]->value()));
+    }
+    return out;
+}
+
+} // namespace drytwin::physics

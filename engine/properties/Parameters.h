@@ -1,0 +1,85 @@
+#pragma once
+
+#include "common/Error.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace drytwin::properties {
+
+/// @brief Every parameter of the line model. Symbols follow the paper without backslashes and
+/// braces (θ_{xe1} → theta_xe1), as model files key them (CONTRACT.md §2).
+enum class Param {
+    R_gas,
+    R_water,
+    theta_Cp1,
+    theta_Cp2,
+    theta_aw1,
+    theta_xe1,
+    theta_xe2,
+    theta_xe3,
+    theta_D0,
+    theta_Ea,
+    theta_Lv_aw,
+    theta_D_RH,
+    rho_mat,
+    r,
+    L_t,
+    h_HDT,
+    k_HDT,
+    w,
+    P_total,
+    T_ref,
+    chi_layer,
+    L_char,
+    h_conveyor,
+    A_exp,
+    beta_top,
+    kappa,
+    h_winnower,
+    t_W,
+    tau_HDT,
+    tau_conv,
+    tau_act,
+};
+inline constexpr int kParamCount = 31;
+
+/// @brief One row of the parameter table: symbol, meaning, unit, default, bounds, source.
+struct ParameterInfo {
+    Param id;
+    std::string_view symbol;
+    std::string_view meaning;
+    std::string_view unit;
+    double defaultValue;
+    double lower;
+    double upper;
+    std::string_view source; ///< "paper App. A", "paper §IV.C", or the engineering reason
+    bool fixed;              ///< physical constant: never freed in calibration
+    bool duration;           ///< a residence or lag time: changes integration windows, not rates
+};
+
+/// @brief The whole table, in enum order.
+const std::array<ParameterInfo, kParamCount>& parameterTable();
+const ParameterInfo& info(Param p);
+std::optional<Param> paramBySymbol(std::string_view symbol);
+
+/// @brief Values of every parameter, indexed by Param. Defaults from the table.
+/// Stored contiguously so that CVODES can perturb them in place for sensitivities.
+class ParameterSet {
+public:
+    ParameterSet();
+    double operator[](Param p) const { return m_values[static_cast<std::size_t>(p)]; }
+    double& operator[](Param p) { return m_values[static_cast<std::size_t>(p)]; }
+    double* data() { return m_values.data(); }
+    const double* data() const { return m_values.data(); }
+    /// @brief Every value finite and inside its bounds; the error names the parameter.
+    Status validate() const;
+
+private:
+    std::vector<double> m_values;
+};
+
+} // namespace drytwin::properties
