@@ -2,10 +2,26 @@
 
 #include "common/AtomicFile.h"
 #include "data/BatchReader.h"
+#include "data/BatchWriter.h"
+#include "data/BatchWriter.h"
 #include "data/DataSetSummary.h"
+#include "data/PlantExport.h"
+#include "data/SiBatch.h"
+#include "diagnostics/Metrics.h"
+#include "io/ModelFile.h"
+#include "physics/LineSimulator.h"
+#include "plant/VirtualPlant.h"
+#include "data/PlantExport.h"
+#include "data/SiBatch.h"
+#include "diagnostics/Metrics.h"
+#include "io/ModelFile.h"
+#include "physics/LineSimulator.h"
+#include "plant/VirtualPlant.h"
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -145,11 +161,155 @@ int runInspect(const CommandOptions& o) {
     return 0;
 }
 
-int runGenerate(const CommandOptions&) {
-    return notImplemented("generate");
+int runGenerate(const CommandOptions& o) {
+    plant::PlantOptions po = o.demo ? plant::PlantOptions::demo(o.seed) : plant::PlantOptions{};
+    po.seed = o.seed;
+    po.batches = o.batches;
+    po.samples = o.samples;
+    for (const auto& e : o.effects) {
+        const auto eq = e.find('=');
+        const std::string name = e.substr(0, eq);
+        const auto m = plant::mechanismByName(name);
+        if (!m) {
+            std::string known;
+            for (const auto& i : plant::mechanisms()) {
+                known += " " + std::string(i.name);
+            }
+            return fail(Error{ErrorKind::Usage, "--effect " + name, "unknown mechanism; known:" + known});
+        }
+        double strength = plant::info(*m).defaultStrength;
+        if (eq != std::string::npos) {
+            try {
+                std::size_t used = 0;
+                strength = std::stod(e.substr(eq + 1), &used);
+                if (used != e.size() - eq - 1) {
+                    throw std::invalid_argument("trailing text");
+                }
+            } catch (const std::exception&) {
+                return fail(Error{ErrorKind::Usage, "--effect " + e, "strength is not a number"});
+            }
+        }
+        po.effects[*m] = strength;
+    }
+    if (auto st = po.validate(); !st) {
+        return fail(Error{ErrorKind::Usage, st.error().place, st.error().reason});
+    }
+    std::error_code ec;
+    std::filesystem::create_directories(o.outPath, ec);
+    if (ec) {
+        return fail(Error{ErrorKind::BadInput, o.outPath, "cannot create the folder: " + ec.message()});
+    }
+    auto result = plant::runPlant(po, o.progress);
+    if (!result) {
+        return fail(result.error());
+    }
+    for (const auto& pb : result->batches) {
+        const std::string path = (std::filesystem::path(o.outPath) / (pb.id + ".csv")).string();
+        if (auto st = data::writeBatchFile(data::toBatch(pb, po.seed), path); !st) {
+            return fail(st.error());
+        }
+    }
+    if (!o.truthPath.empty()) {
+        if (auto st = writeFileAtomically(o.truthPath,
+                                          io::formatTruth(result->truth, result->effects, po.seed, po.unmeasuredDrift));
+            !st) {
+            return fail(st.error());
+        }
+    }
+    std::printf("wrote %zu batch(es) of %d samples to %s in %.2f s\n", result->batches.size(), po.samples,
+                o.outPath.c_str(), result->elapsedSeconds);
+    return 0;
 }
-int runSimulate(const CommandOptions&) {
-    return notImplemented("simulate");
+
+namespace {
+
+/// Loads --model, or the default parameters when none is given.
+bool loadModel(const CommandOptions& o, io::ModelFile& model, int& exitCode) {
+    if (o.modelPath.empty()) {
+        return true;
+    }
+    auto m = io::readModelFile(o.modelPath);
+    if (!m) {
+        exitCode = fail(m.error());
+        return false;
+    }
+    model = std::move(*m);
+    return true;
+}
+
+} // namespace
+
+int runSimulate(const CommandOptions& o) {
+    data::DataSet ds;
+    io::ModelFile model;
+    int rc = 0;
+    if (!loadModel(o, model, rc) || !loadData(o, ds, rc)) {
+        return rc;
+    }
+    const auto si = data::toSi(ds, data::clean(ds, o.cleaning));
+    std::vector<physics::LineInputs> inputs;
+    for (const auto& b : si) {
+        inputs.push_back(data::toLineInputs(b));
+    }
+    physics::SimulationOptions so;
+    so.switches = model.switches;
+    so.winnower = model.winnower;
+    auto sims = physics::simulateBatches(inputs, model.parameters, so, 0, o.progress);
+    if (!sims) {
+        return fail(sims.error());
+    }
+    // One CSV: batch id, the input columns in file units, predictions in file units, proxies in SI.
+    std::string out = "batch,time_s,T_hot_sp_C,T_hot_C,air_speed_m_s,feed_kg_h,X_in_pct,T_in_C,T_amb_C,RH_amb_pct,"
+                      "pred_X_out_pct,pred_T_out_C,pred_X_hdt_pct,pred_T_hdt_C";
+    for (const auto& n : physics::proxyNames()) {
+        out += ",proxy_" + n;
+    }
+    out += "\n";
+    std::printf("%-10s %8s %14s %14s\n", "batch", "rows", "MAE X_out [%]", "MAE T_out [°C]");
+    for (std::size_t b = 0; b < si.size(); ++b) {
+        const auto& s = si[b];
+        const auto& r = (*sims)[b];
+        std::vector<double> obsX, predX, obsT, predT;
+        for (std::size_t k = 0; k < s.rows(); ++k) {
+            const double v[] = {s.timeS[k],
+                                s.tHotSpK[k] - data::kKelvinOffset,
+                                s.tHotK[k] - data::kKelvinOffset,
+                                s.airSpeedMPerS[k],
+                                s.feedKgPerS[k] * 3600,
+                                data::dryToWetPct(s.xInDb[k]),
+                                s.tInK[k] - data::kKelvinOffset,
+                                s.tAmbK[k] - data::kKelvinOffset,
+                                100 * s.rhAmb[k],
+                                data::dryToWetPct(r.xOutDb[k]),
+                                r.tOutK[k] - data::kKelvinOffset,
+                                data::dryToWetPct(r.xHdtDb[k]),
+                                r.tHdtK[k] - data::kKelvinOffset,
+                                r.proxyXHdtDb[k],
+                                r.proxyTHdtK[k],
+                                r.proxyXConvDb[k],
+                                r.proxyTConvK[k],
+                                r.proxyXMixDb[k],
+                                r.proxyTMixK[k]};
+            out += s.id;
+            for (double x : v) {
+                out += ",";
+                out += data::formatNumber(x);
+            }
+            out += "\n";
+            if (s.keep[k]) {
+                obsX.push_back(data::dryToWetPct(s.xOutDb[k]));
+                predX.push_back(data::dryToWetPct(r.xOutDb[k]));
+                obsT.push_back(s.tOutK[k]);
+                predT.push_back(r.tOutK[k]);
+            }
+        }
+        std::printf("%-10s %8zu %14.4f %14.4f\n", s.id.c_str(), s.rows(), diagnostics::meanAbsoluteError(obsX, predX),
+                    diagnostics::meanAbsoluteError(obsT, predT));
+    }
+    if (auto st = writeFileAtomically(o.outPath, out); !st) {
+        return fail(st.error());
+    }
+    return 0;
 }
 int runCalibrate(const CommandOptions&) {
     return notImplemented("calibrate");

@@ -1,0 +1,64 @@
+#include "data/PlantExport.h"
+
+#include <cmath>
+
+namespace drytwin::data {
+
+namespace {
+/// Rounds to @p decimals places; dividing by an exact power of ten gives the double nearest
+/// the decimal value, so the file shows "13.809", not "13.809000000000001".
+double round(double v, int decimals) {
+    const double scale = std::pow(10.0, decimals);
+    return std::round(v * scale) / scale;
+}
+} // namespace
+
+Batch toBatch(const plant::PlantBatch& pb, unsigned seed) {
+    Batch b;
+    b.id = pb.id;
+    b.metadataLines = {"# batch: " + pb.id, "# source: DryTwin virtual plant, seed " + std::to_string(seed),
+                       "# sampling: 1 s"};
+    const std::size_t n = pb.timeS.size();
+    auto column = [&](Column c, const std::vector<double>& si, auto toFile, int decimals) {
+        std::vector<double> v(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            v[i] = round(toFile(si[i]), decimals);
+        }
+        b.setValues(c, std::move(v));
+    };
+    const auto celsius = [](double k) { return k - kKelvinOffset; };
+    const auto same = [](double x) { return x; };
+    column(Column::Time, pb.timeS, same, 3);
+    column(Column::THotSp, pb.tHotSpK, celsius, 2);
+    column(Column::THot, pb.tHotK, celsius, 2);
+    column(Column::AirSpeed, pb.airSpeedMPerS, same, 3);
+    column(Column::Feed, pb.feedKgPerS, [](double kgs) { return kgs * 3600; }, 1);
+    column(Column::XIn, pb.xInDb, dryToWetPct, 3);
+    column(Column::TIn, pb.tInK, celsius, 2);
+    column(Column::TAmb, pb.tAmbK, celsius, 2);
+    column(Column::RHAmb, pb.rhAmb, [](double f) { return 100 * f; }, 2);
+    column(Column::XHdt, pb.xHdtDb, dryToWetPct, 3);
+    column(Column::THdt, pb.tHdtK, celsius, 2);
+    column(Column::XOut, pb.xOutDb, dryToWetPct, 3);
+    column(Column::TOut, pb.tOutK, celsius, 3);
+    b.lineOfRow.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        b.lineOfRow[i] = static_cast<int>(i) + 5; // 3 metadata lines and the header
+    }
+    return b;
+}
+
+physics::LineInputs toLineInputs(const SiBatch& b) {
+    physics::LineInputs in;
+    in.timeS = b.timeS;
+    in.tHotK = b.tHotK;
+    in.xInDb = b.xInDb;
+    in.tInK = b.tInK;
+    in.tAmbK = b.tAmbK;
+    in.rhAmb = b.rhAmb;
+    in.feedKgPerS = b.feedKgPerS;
+    in.airSpeedMPerS = b.airSpeedMPerS;
+    return in;
+}
+
+} // namespace drytwin::data

@@ -1,0 +1,52 @@
+#pragma once
+
+#include "common/Error.h"
+#include "common/Progress.h"
+#include "plant/Mechanisms.h"
+#include "properties/Parameters.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace drytwin::plant {
+
+/// @brief Options of the virtual plant. Deterministic for a seed.
+struct PlantOptions {
+    unsigned seed = 1;
+    int batches = 10;
+    int samples = 6300;   ///< per batch, 1 s apart
+    std::map<Mechanism, double> effects;
+    /// Unmeasured slow drift of the leaf's drying behaviour (k_HDT wanders ±5 %), as in the demo.
+    bool unmeasuredDrift = false;
+    double targetXOutPct = 12.8; ///< setpoint of the plant's own moisture controller
+    /// The plant's true parameters. Defaults: the model table with h_HDT and k_HDT of this
+    /// plant (72 W/(m²·K), 0.0236 m/s), which a calibration must find.
+    properties::ParameterSet truth = defaultTruth();
+    Status validate() const;
+    static properties::ParameterSet defaultTruth();
+    /// @brief The bundled demo: a realistic mix of mechanisms and unmeasured drift.
+    static PlantOptions demo(unsigned seed = 2025);
+};
+
+/// @brief One batch as the plant's instruments recorded it (SI units, dry basis).
+struct PlantBatch {
+    std::string id;
+    std::vector<double> timeS, tHotSpK, tHotK, airSpeedMPerS, feedKgPerS, xInDb, tInK, tAmbK, rhAmb;
+    std::vector<double> xHdtDb, tHdtK, xOutDb, tOutK;
+};
+
+/// @brief Everything the plant produced, and the truth behind it.
+struct PlantResult {
+    std::vector<PlantBatch> batches;
+    properties::ParameterSet truth;
+    std::map<Mechanism, double> effects;
+    double elapsedSeconds = 0;
+};
+
+/// @brief Runs the virtual plant: the line with its own parameters, mechanisms, sensor noise,
+/// disturbances, a PI controller moving the hot-air setpoint, and cleaning between batches.
+/// Integrates with fixed-step RK4 (its own numerics, independent of the model's CVODE path).
+Expected<PlantResult> runPlant(const PlantOptions& options, const Progress& progress = {});
+
+} // namespace drytwin::plant
