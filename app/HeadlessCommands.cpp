@@ -3,14 +3,7 @@
 #include "common/AtomicFile.h"
 #include "data/BatchReader.h"
 #include "data/BatchWriter.h"
-#include "data/BatchWriter.h"
 #include "data/DataSetSummary.h"
-#include "data/PlantExport.h"
-#include "data/SiBatch.h"
-#include "diagnostics/Metrics.h"
-#include "io/ModelFile.h"
-#include "physics/LineSimulator.h"
-#include "plant/VirtualPlant.h"
 #include "data/PlantExport.h"
 #include "data/SiBatch.h"
 #include "diagnostics/Metrics.h"
@@ -20,7 +13,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -210,8 +202,8 @@ int runGenerate(const CommandOptions& o) {
         }
     }
     if (!o.truthPath.empty()) {
-        if (auto st = writeFileAtomically(o.truthPath,
-                                          io::formatTruth(result->truth, result->effects, po.seed, po.unmeasuredDrift));
+        if (auto st = writeFileAtomically(
+                o.truthPath, io::formatTruth(result->truth, result->effects, po.seed, po.unmeasuredDrift));
             !st) {
             return fail(st.error());
         }
@@ -259,8 +251,9 @@ int runSimulate(const CommandOptions& o) {
         return fail(sims.error());
     }
     // One CSV: batch id, the input columns in file units, predictions in file units, proxies in SI.
-    std::string out = "batch,time_s,T_hot_sp_C,T_hot_C,air_speed_m_s,feed_kg_h,X_in_pct,T_in_C,T_amb_C,RH_amb_pct,"
-                      "pred_X_out_pct,pred_T_out_C,pred_X_hdt_pct,pred_T_hdt_C";
+    std::string out =
+        "batch,time_s,T_hot_sp_C,T_hot_C,air_speed_m_s,feed_kg_h,X_in_pct,T_in_C,T_amb_C,RH_amb_pct,"
+        "pred_X_out_pct,pred_T_out_C,pred_X_hdt_pct,pred_T_hdt_C";
     for (const auto& n : physics::proxyNames()) {
         out += ",proxy_" + n;
     }
@@ -303,8 +296,8 @@ int runSimulate(const CommandOptions& o) {
                 predT.push_back(r.tOutK[k]);
             }
         }
-        std::printf("%-10s %8zu %14.4f %14.4f\n", s.id.c_str(), s.rows(), diagnostics::meanAbsoluteError(obsX, predX),
-                    diagnostics::meanAbsoluteError(obsT, predT));
+        std::printf("%-10s %8zu %14.4f %14.4f\n", s.id.c_str(), s.rows(),
+                    diagnostics::meanAbsoluteError(obsX, predX), diagnostics::meanAbsoluteError(obsT, predT));
     }
     if (auto st = writeFileAtomically(o.outPath, out); !st) {
         return fail(st.error());

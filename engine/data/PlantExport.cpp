@@ -32,11 +32,13 @@ Batch toBatch(const plant::PlantBatch& pb, unsigned seed) {
     column(Column::THotSp, pb.tHotSpK, celsius, 2);
     column(Column::THot, pb.tHotK, celsius, 2);
     column(Column::AirSpeed, pb.airSpeedMPerS, same, 3);
-    column(Column::Feed, pb.feedKgPerS, [](double kgs) { return kgs * 3600; }, 1);
+    column(
+        Column::Feed, pb.feedKgPerS, [](double kgs) { return kgs * 3600; }, 1);
     column(Column::XIn, pb.xInDb, dryToWetPct, 3);
     column(Column::TIn, pb.tInK, celsius, 2);
     column(Column::TAmb, pb.tAmbK, celsius, 2);
-    column(Column::RHAmb, pb.rhAmb, [](double f) { return 100 * f; }, 2);
+    column(
+        Column::RHAmb, pb.rhAmb, [](double f) { return 100 * f; }, 2);
     column(Column::XHdt, pb.xHdtDb, dryToWetPct, 3);
     column(Column::THdt, pb.tHdtK, celsius, 2);
     column(Column::XOut, pb.xOutDb, dryToWetPct, 3);

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "data/Batch.h"
-#include "physics/LineInputs.h"
 #include "data/SiBatch.h"
+#include "physics/LineInputs.h"
 #include "plant/VirtualPlant.h"
 
 namespace drytwin::data {

@@ -37,7 +37,8 @@ std::string formatModelFile(const ModelFile& m) {
     if (m.hasCalibration) {
         json c;
         for (const auto& e : m.calibration.estimates) {
-            c["estimates"][e.symbol] = {{"value", e.value}, {"ci95", {e.ci95Low, e.ci95High}}, {"at_bound", e.atBound}};
+            c["estimates"][e.symbol] = {
+                {"value", e.value}, {"ci95", {e.ci95Low, e.ci95High}}, {"at_bound", e.atBound}};
         }
         c["loss_before"] = m.calibration.lossBefore;
         c["loss_after"] = m.calibration.lossAfter;
@@ -129,7 +130,8 @@ Expected<ModelFile> parseModelFile(const std::string& text, const std::string& n
         m.calibration.algorithm = c.value("algorithm", "");
     }
     json extra = j;
-    for (const char* k : {"format", "format_version", "parameters", "switches", "winnower_form", "calibration"}) {
+    for (const char* k :
+         {"format", "format_version", "parameters", "switches", "winnower_form", "calibration"}) {
         extra.erase(k);
     }
     m.extraJson = extra.dump();
@@ -144,8 +146,9 @@ Expected<ModelFile> readModelFile(const std::string& path) {
     return parseModelFile(*text, path);
 }
 
-std::string formatTruth(const properties::ParameterSet& truth, const std::map<plant::Mechanism, double>& effects,
-                        unsigned seed, bool unmeasuredDrift) {
+std::string formatTruth(const properties::ParameterSet& truth,
+                        const std::map<plant::Mechanism, double>& effects, unsigned seed,
+                        bool unmeasuredDrift) {
     json j;
     j["parameters"] = parametersJson(truth);
     j["effects"] = json::object();

@@ -51,7 +51,8 @@ Status writeModelFile(const ModelFile& model, const std::string& path);
 std::string formatModelFile(const ModelFile& model);
 
 /// @brief The `--truth` file of `generate`: the plant's parameters and effects (CONTRACT.md §2).
-std::string formatTruth(const properties::ParameterSet& truth, const std::map<plant::Mechanism, double>& effects,
-                        unsigned seed, bool unmeasuredDrift);
+std::string formatTruth(const properties::ParameterSet& truth,
+                        const std::map<plant::Mechanism, double>& effects, unsigned seed,
+                        bool unmeasuredDrift);
 
 } // namespace drytwin::io

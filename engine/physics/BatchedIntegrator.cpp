@@ -78,7 +78,8 @@ struct Solver {
 
 Status solveSystem(const ParcelRhs& rhs, std::size_t first, std::size_t count, double* yData, double duration,
                    const IntegratorSettings& settings, const SensitivitySpec* sens,
-                   std::vector<std::vector<double>>* ySData, const std::string& section, IntegratorStats* stats) {
+                   std::vector<std::vector<double>>* ySData, const std::string& section,
+                   IntegratorStats* stats) {
     const auto m = static_cast<std::size_t>(rhs.statesPerParcel);
     const auto n = static_cast<sunindextype>(count * m);
     Solver s;
@@ -175,7 +176,8 @@ Status solveSystem(const ParcelRhs& rhs, std::size_t first, std::size_t count, d
 
 Status integrateParcels(const ParcelRhs& rhs, std::vector<double>& y, double duration,
                         const IntegratorSettings& settings, const SensitivitySpec* sens,
-                        std::vector<std::vector<double>>* yS, const std::string& section, IntegratorStats* stats) {
+                        std::vector<std::vector<double>>* yS, const std::string& section,
+                        IntegratorStats* stats) {
     if (rhs.parcels == 0 || duration <= 0) {
         return {};
     }

@@ -12,7 +12,8 @@ namespace drytwin::physics {
 /// Returns false when the state is not physical (non-finite), so the solver can retry.
 struct ParcelRhs {
     const void* context = nullptr;
-    bool (*evaluate)(const void* context, double s, std::size_t parcel, const double* y, double* ydot) = nullptr;
+    bool (*evaluate)(const void* context, double s, std::size_t parcel, const double* y,
+                     double* ydot) = nullptr;
     std::size_t parcels = 0;
     int statesPerParcel = 0;
 };

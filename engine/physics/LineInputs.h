@@ -12,13 +12,13 @@ namespace drytwin::physics {
 /// the last, at the last values.
 struct LineInputs {
     std::vector<double> timeS;
-    std::vector<double> tHotK;        ///< hot-air temperature at the tube inlet [K]
-    std::vector<double> xInDb;        ///< inlet moisture, dry basis
-    std::vector<double> tInK;         ///< inlet material temperature [K]
-    std::vector<double> tAmbK;        ///< ambient air [K]
-    std::vector<double> rhAmb;        ///< ambient relative humidity [0..1]
-    std::vector<double> feedKgPerS;   ///< wet feed [kg/s] (not used by the paper's PBM; by the plant)
-    std::vector<double> airSpeedMPerS;///< [m/s] (not used by the paper's PBM; by the plant)
+    std::vector<double> tHotK;         ///< hot-air temperature at the tube inlet [K]
+    std::vector<double> xInDb;         ///< inlet moisture, dry basis
+    std::vector<double> tInK;          ///< inlet material temperature [K]
+    std::vector<double> tAmbK;         ///< ambient air [K]
+    std::vector<double> rhAmb;         ///< ambient relative humidity [0..1]
+    std::vector<double> feedKgPerS;    ///< wet feed [kg/s] (not used by the paper's PBM; by the plant)
+    std::vector<double> airSpeedMPerS; ///< [m/s] (not used by the paper's PBM; by the plant)
 
     std::size_t size() const { return timeS.size(); }
     /// @brief Equal lengths, ≥ 2 samples, strictly increasing time, finite physical values.

@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <mutex>
 #include <optional>
 #include <thread>
-#include <cmath>
 
 namespace drytwin::physics {
 
@@ -35,7 +35,9 @@ SectionContext makeContext(const LineInputs& in, const ParameterSet& p, const pr
     return c;
 }
 
-bool finite2(const double* d) { return std::isfinite(d[0]) && std::isfinite(d[1]); }
+bool finite2(const double* d) {
+    return std::isfinite(d[0]) && std::isfinite(d[1]);
+}
 
 bool tubeEval(const void* c, double s, std::size_t i, const double* y, double* ydot) {
     const auto& x = *static_cast<const SectionContext*>(c);
@@ -85,7 +87,8 @@ IntegratorSettings settingsFor(const SimulationOptions& o, int states) {
     // Moisture is ~0.2 kg/kg and temperature ~330 K: absolute tolerances per state.
     const double atolX = o.relTol * 1e-2;
     const double atolT = o.relTol * 1e2;
-    s.absTol = states == 2 ? std::vector<double>{atolX, atolT} : std::vector<double>{atolX, atolT, atolX, atolT};
+    s.absTol =
+        states == 2 ? std::vector<double>{atolX, atolT} : std::vector<double>{atolX, atolT, atolX, atolT};
     return s;
 }
 
@@ -320,10 +323,13 @@ const std::vector<std::string>& proxyNames() {
     return names;
 }
 
-double totalDelay(const ParameterSet& p) { return p[Param::tau_HDT] + p[Param::tau_conv] + p[Param::t_W]; }
+double totalDelay(const ParameterSet& p) {
+    return p[Param::tau_HDT] + p[Param::tau_conv] + p[Param::t_W];
+}
 
 Expected<SimulationResult> simulateLine(const LineInputs& inputs, const ParameterSet& params,
-                                        const SimulationOptions& options, const std::vector<std::size_t>& rowsIn) {
+                                        const SimulationOptions& options,
+                                        const std::vector<std::size_t>& rowsIn) {
     const auto start = std::chrono::steady_clock::now();
     if (auto st = options.validate(); !st) {
         return st.error();
@@ -343,7 +349,8 @@ Expected<SimulationResult> simulateLine(const LineInputs& inputs, const Paramete
     }
     for (std::size_t r : rows) {
         if (r >= inputs.size()) {
-            return Error{ErrorKind::BadInput, "rows", "row " + std::to_string(r) + " is past the end of the batch"};
+            return Error{ErrorKind::BadInput, "rows",
+                         "row " + std::to_string(r) + " is past the end of the batch"};
         }
     }
     std::vector<Param> odeSens;
@@ -359,6 +366,8 @@ Expected<SimulationResult> simulateLine(const LineInputs& inputs, const Paramete
     for (Param q : durationSens) {
         SimulationOptions plain = options;
         plain.sensitivities.clear();
+        // Solver noise divided by the step would swamp the difference: tighten the tolerance.
+        plain.relTol = std::min(options.relTol, 1e-9);
         const double v = params[q];
         const double h = 1e-3 * std::max(1.0, std::abs(v));
         ParameterSet up = params;
@@ -401,8 +410,9 @@ Expected<SimulationResult> simulateLine(const LineInputs& inputs, const Paramete
 }
 
 Expected<std::vector<SimulationResult>> simulateBatches(const std::vector<LineInputs>& batches,
-                                                        const ParameterSet& params, const SimulationOptions& options,
-                                                        unsigned threads, const Progress& progress) {
+                                                        const ParameterSet& params,
+                                                        const SimulationOptions& options, unsigned threads,
+                                                        const Progress& progress) {
     const std::size_t nb = batches.size();
     std::vector<std::optional<Expected<SimulationResult>>> results(nb);
     std::atomic<std::size_t> next{0};
@@ -431,19 +441,27 @@ Expected<std::vector<SimulationResult>> simulateBatches(const std::vector<LineIn
     for (unsigned t = 0; threads > 1 && t < threads; ++t) {
         pool.emplace_back(work);
     }
-    // The calling thread reports progress while the pool works; with one thread it works itself.
     if (threads == 1) {
-        work();
-    }
-    {
+        for (std::size_t i = 0; i < nb && !stop; ++i) {
+            if (reportProgress(progress, "simulate", static_cast<double>(i) / static_cast<double>(nb),
+                               std::to_string(i) + "/" + std::to_string(nb) + " batches")) {
+                stop = true;
+                break;
+            }
+            results[i].emplace(simulateLine(batches[i], params, options));
+        }
+    } else {
+        // The calling thread reports progress while the pool works.
         std::unique_lock lock(mutex);
         std::size_t reported = 0;
         while (done < nb && !(stop && pool.empty())) {
-            finished.wait_for(lock, std::chrono::milliseconds(50), [&] { return done != reported || done == nb; });
+            finished.wait_for(lock, std::chrono::milliseconds(50),
+                              [&] { return done != reported || done == nb; });
             if (done != reported) {
                 reported = done;
                 lock.unlock();
-                if (reportProgress(progress, "simulate", static_cast<double>(reported) / static_cast<double>(nb),
+                if (reportProgress(progress, "simulate",
+                                   static_cast<double>(reported) / static_cast<double>(nb),
                                    std::to_string(reported) + "/" + std::to_string(nb) + " batches")) {
                     stop = true;
                 }
@@ -464,7 +482,8 @@ Expected<std::vector<SimulationResult>> simulateBatches(const std::vector<LineIn
     out.reserve(nb);
     for (std::size_t i = 0; i < nb; ++i) {
         if (!results[i] || !*results[i]) {
-            Error e = results[i] ? results[i]->error() : Error{ErrorKind::Numerical, "simulate", "batch not run"};
+            Error e =
+                results[i] ? results[i]->error() : Error{ErrorKind::Numerical, "simulate", "batch not run"};
             e.place = "batch " + std::to_string(i + 1) + ": " + e.place;
             return e;
         }

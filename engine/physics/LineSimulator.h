@@ -68,8 +68,8 @@ Expected<SimulationResult> simulateLine(const LineInputs& inputs, const properti
 /// the batches not yet started (the error is then Cancelled).
 Expected<std::vector<SimulationResult>> simulateBatches(const std::vector<LineInputs>& batches,
                                                         const properties::ParameterSet& params,
-                                                        const SimulationOptions& options = {}, unsigned threads = 0,
-                                                        const Progress& progress = {});
+                                                        const SimulationOptions& options = {},
+                                                        unsigned threads = 0, const Progress& progress = {});
 
 /// @brief Total transport delay from tube inlet to line outlet [s].
 double totalDelay(const properties::ParameterSet& params);

@@ -15,16 +15,17 @@ double vapourEnthalpy(double tK, double aw, const ParameterSet& p, const ModelSw
 }
 } // namespace
 
-SectionRates tubeRates(double x, double t, const TubeEnvironment& env, const ParameterSet& p, const ModelSwitches& s) {
+SectionRates tubeRates(double x, double t, const TubeEnvironment& env, const ParameterSet& p,
+                       const ModelSwitches& s) {
     SectionRates r;
     const double area = (1.0 + x) / p[Param::rho_mat] * (2.0 / p[Param::r] + 2.0 / p[Param::L_t]); // Eq. (7)
-    r.heatIn = env.h * area * (env.tGasK - t);                                                       // Eq. (8)
+    r.heatIn = env.h * area * (env.tGasK - t);                                                     // Eq. (8)
     r.waterActivity = pr::waterActivity(t, x, p, s.clampWaterActivity);
     const double rhoSurf = pr::vapourDensity(r.waterActivity * pr::saturationPressure(t), t, p); // Eq. (9)
     const double rhoGas =
         pr::vapourDensity(pr::vapourPressureOfHumidityRatio(env.wGas, p[Param::P_total]), env.tGasK, p);
     r.evaporation = env.dryingFactor * env.k * area * std::max(0.0, rhoSurf - rhoGas); // Eq. (10)
-    r.dXdt = -r.evaporation;                                                            // Eq. (11)
+    r.dXdt = -r.evaporation;                                                           // Eq. (11)
     r.heatCapacity = pr::heatCapacityPerDryKg(x, p, s);
     r.vapourEnthalpy = vapourEnthalpy(t, r.waterActivity, p, s);
     r.dTdt = (r.heatIn - r.vapourEnthalpy * r.evaporation) / r.heatCapacity; // Eq. (12)
@@ -47,8 +48,8 @@ SectionRates conveyorRates(double x, double t, const AmbientEnvironment& env, co
     return r;
 }
 
-SectionRates winnowerRates(double x, double t, double tS, double xMix, double tMixK, const AmbientEnvironment& env,
-                           const ParameterSet& p, const ModelSwitches& s) {
+SectionRates winnowerRates(double x, double t, double tS, double xMix, double tMixK,
+                           const AmbientEnvironment& env, const ParameterSet& p, const ModelSwitches& s) {
     SectionRates r;
     const double xe = pr::equilibriumMoisture(env.tAirK, env.rh, p);
     // A parcel colder than the air does not flash; the exponent then stays bounded.
@@ -64,7 +65,8 @@ SectionRates winnowerRates(double x, double t, double tS, double xMix, double tM
     return r;
 }
 
-double winnowerTerminalMoisture(double xMix, double tMixK, const AmbientEnvironment& env, const ParameterSet& p) {
+double winnowerTerminalMoisture(double xMix, double tMixK, const AmbientEnvironment& env,
+                                const ParameterSet& p) {
     const double xe = pr::equilibriumMoisture(env.tAirK, env.rh, p);
     const double excess = std::max(0.0, tMixK - env.tAirK);
     return xMix - (xMix - xe) * 0.5 * (1.0 - std::exp(-p[Param::kappa] * p[Param::t_W] * excess)); // Eq. (17)
@@ -76,7 +78,7 @@ MixState winnowerInletMix(double xConv, double tConv, double xHdt, double tHdt, 
     const double cc = pr::specificHeat(xConv, p, s);
     const double ch = pr::specificHeat(xHdt, p, s);
     MixState m;
-    m.xDb = b * xConv + (1.0 - b) * xHdt;                                      // Eq. (15)
+    m.xDb = b * xConv + (1.0 - b) * xHdt;                                        // Eq. (15)
     m.tK = (b * cc * tConv + (1.0 - b) * ch * tHdt) / (b * cc + (1.0 - b) * ch); // Eq. (16)
     return m;
 }

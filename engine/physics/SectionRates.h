@@ -22,11 +22,11 @@ struct TubeEnvironment {
 
 /// @brief Rates of one tube parcel and the energy terms behind them.
 struct SectionRates {
-    double dXdt = 0;         ///< [1/s], Eq. 11 / 13 / 18
-    double dTdt = 0;         ///< [K/s], Eq. 12 / 14 / 19
-    double heatIn = 0;       ///< convective heat into the parcel [W per kg dry] (negative = loss)
-    double evaporation = 0;  ///< dm_evap/dt [kg/s per kg dry] (= −dX/dt)
-    double heatCapacity = 0; ///< M_dry C_p,dry + M_water C_p,w [J/K per kg dry]
+    double dXdt = 0;           ///< [1/s], Eq. 11 / 13 / 18
+    double dTdt = 0;           ///< [K/s], Eq. 12 / 14 / 19
+    double heatIn = 0;         ///< convective heat into the parcel [W per kg dry] (negative = loss)
+    double evaporation = 0;    ///< dm_evap/dt [kg/s per kg dry] (= −dX/dt)
+    double heatCapacity = 0;   ///< M_dry C_p,dry + M_water C_p,w [J/K per kg dry]
     double vapourEnthalpy = 0; ///< L_v + C_p,w (T − T_ref) [J/kg]
     double waterActivity = 0;
 };
@@ -38,8 +38,8 @@ SectionRates tubeRates(double xDb, double tK, const TubeEnvironment& env, const 
 /// @brief What a parcel in the conveyor's top layer sees.
 struct AmbientEnvironment {
     double tAirK = 0;
-    double rh = 0;            ///< [0..1]
-    double extraUptake = 0;   ///< added dX/dt [1/s] (plant's ambient re-absorption; PBM: 0)
+    double rh = 0;          ///< [0..1]
+    double extraUptake = 0; ///< added dX/dt [1/s] (plant's ambient re-absorption; PBM: 0)
 };
 
 /// @brief Conveyor top-layer rates, Eqs. 13–14.
@@ -48,11 +48,12 @@ SectionRates conveyorRates(double xDb, double tK, const AmbientEnvironment& env,
 
 /// @brief Winnower rates of the transient form, Eqs. 18–19, at time @p tS after entry.
 /// X_mix and T_mix are the parcel's state at entry (Eqs. 15–16).
-SectionRates winnowerRates(double xDb, double tK, double tS, double xMix, double tMixK, const AmbientEnvironment& env,
-                           const ParameterSet& p, const ModelSwitches& s);
+SectionRates winnowerRates(double xDb, double tK, double tS, double xMix, double tMixK,
+                           const AmbientEnvironment& env, const ParameterSet& p, const ModelSwitches& s);
 
 /// @brief Winnower outlet moisture of the terminal-value form. Eq. (17)
-double winnowerTerminalMoisture(double xMix, double tMixK, const AmbientEnvironment& env, const ParameterSet& p);
+double winnowerTerminalMoisture(double xMix, double tMixK, const AmbientEnvironment& env,
+                                const ParameterSet& p);
 
 /// @brief Winnower inlet mixing of the conveyor top layer and the rest of the layer. Eqs. (15–16)
 struct MixState {

@@ -24,10 +24,10 @@ inline constexpr int kMechanismCount = 8;
 /// @brief Static description of a mechanism: contract name, what the strength means.
 struct MechanismInfo {
     Mechanism id;
-    std::string_view name;          ///< contract name, e.g. "heat_transfer_fouling"
+    std::string_view name; ///< contract name, e.g. "heat_transfer_fouling"
     std::string_view strengthMeaning;
     std::string_view unit;
-    double defaultStrength;         ///< used for `--effect NAME` without a value
+    double defaultStrength; ///< used for `--effect NAME` without a value
     double maxStrength;
 };
 

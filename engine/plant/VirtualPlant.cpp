@@ -29,7 +29,8 @@ double effect(const PlantOptions& o, Mechanism m) {
 /// Ornstein-Uhlenbeck noise with time constant tau [s] and stationary standard deviation sigma.
 class OrnsteinUhlenbeck {
 public:
-    OrnsteinUhlenbeck(double tauS, double sigma) : m_a(std::exp(-1.0 / tauS)), m_s(sigma * std::sqrt(1 - m_a * m_a)) {}
+    OrnsteinUhlenbeck(double tauS, double sigma)
+        : m_a(std::exp(-1.0 / tauS)), m_s(sigma * std::sqrt(1 - m_a * m_a)) {}
     double next(std::mt19937_64& rng) {
         m_x = m_a * m_x + m_s * m_n(rng);
         return m_x;
@@ -173,8 +174,8 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
         pb.id = id;
         // --- Disturbances (true values), generated ahead: they do not depend on the controller.
         std::vector<double> feed(n), xIn(n), tIn(n), tAmb(n), rh(n), air(n), kDrift(n, 1.0);
-        const double ambBase = 10.0 + 25.0 * uniform(rng);   // season and hall: 10–35 °C
-        const double rhBase = 0.25 + 0.5 * uniform(rng);     // 25–75 %
+        const double ambBase = 10.0 + 25.0 * uniform(rng); // season and hall: 10–35 °C
+        const double rhBase = 0.25 + 0.5 * uniform(rng);   // 25–75 %
         const double dayPhase = 2 * M_PI * uniform(rng);
         double feedLevel = 6000 + 400 * uniform(rng);
         OrnsteinUhlenbeck feedNoise(120, 25), xInWalk(900, 0.0045), tInNoise(600, 0.8), rhNoise(1200, 0.03),
@@ -184,18 +185,19 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
         for (std::size_t k = 0; k < n; ++k) {
             const double t = static_cast<double>(k);
             if (uniform(rng) < 1.0 / 1200.0) { // a feed step about every 20 min
-                feedLevel = std::clamp(feedLevel + 250 * (uniform(rng) < 0.5 ? -1 : 1) * (0.5 + uniform(rng)), 5850.0,
-                                       6550.0);
+                feedLevel = std::clamp(feedLevel + 250 * (uniform(rng) < 0.5 ? -1 : 1) * (0.5 + uniform(rng)),
+                                       5850.0, 6550.0);
             }
             feed[k] = std::clamp(feedLevel + feedNoise.next(rng), 5800.0, 6600.0) / 3600.0;
-            const double xWb = std::clamp(xInBase + 0.008 * std::sin(2 * M_PI * t / 1800 + xInPhase) + xInWalk.next(rng),
-                                          0.20, 0.24);
+            const double xWb = std::clamp(
+                xInBase + 0.008 * std::sin(2 * M_PI * t / 1800 + xInPhase) + xInWalk.next(rng), 0.20, 0.24);
             xIn[k] = xWb / (1 - xWb);
             tIn[k] = kKelvin + 25 + tInNoise.next(rng);
             tAmb[k] = kKelvin + std::clamp(ambBase + 3.0 * std::sin(2 * M_PI * t / 86400 * 4 + dayPhase) +
                                                tAmbNoise.next(rng),
                                            10.0, 35.0);
-            rh[k] = std::clamp(rhBase + 0.08 * std::sin(2 * M_PI * t / 7200 + dayPhase) + rhNoise.next(rng), 0.2, 0.8);
+            rh[k] = std::clamp(rhBase + 0.08 * std::sin(2 * M_PI * t / 7200 + dayPhase) + rhNoise.next(rng),
+                               0.2, 0.8);
             air[k] = 16.0 + airNoise.next(rng);
             if (o.unmeasuredDrift) {
                 kDrift[k] = 1.0 + drift.next(rng);
@@ -224,50 +226,54 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
             const double foulingFactor = 1.0 - fouling * (tEntry / batchLength);
             const double gasFlow = 0.8 * at(air, when(tEntry)) * kTubeAreaM2; // kg/s of hot air
             const double loadRatio = at(feed, when(tEntry)) / (1.0 + xIn[j]) / gasFlow;
-            rk4<4>(y, 0.0, tauH, static_cast<int>(std::ceil(tauH / 0.25)), [&](double s, const double* v, double* d) {
-                const double t = when(tEntry + s);
-                const double tHotNow = hotAt(t);
-                ph::TubeEnvironment env;
-                // Gas around the parcel: the inlet air (less the wall loss) minus the cooling by
-                // the material so far, carried in v[2] relative to the inlet temperature.
-                env.tGasK = tHotNow - wallLoss * (tHotNow - at(tAmb, t)) + (v[2] - hotAt(tEntry));
-                env.wGas = v[3];
-                env.h = p0[Param::h_HDT] * foulingFactor;
-                env.k = p0[Param::k_HDT] * at(kDrift, t);
-                if (fallingRate > 0) {
-                    const double xe = properties::equilibriumMoisture(v[1], 1e-6, p0);
-                    const double depth = std::clamp((kCriticalMoisture - v[0]) / (kCriticalMoisture - xe), 0.0, 1.0);
-                    env.dryingFactor = 1.0 - fallingRate * depth;
-                }
-                const auto r = ph::tubeRates(v[0], v[1], env, p0, sw);
-                d[0] = r.dXdt;
-                d[1] = r.dTdt;
-                // Co-current gas phase: energy and vapour balances per kg of air.
-                d[2] = -gasCoupling * loadRatio * r.heatIn / kAirHeatCapacity;
-                d[3] = gasCoupling * loadRatio * r.evaporation;
-            });
+            rk4<4>(y, 0.0, tauH, static_cast<int>(std::ceil(tauH / 0.25)),
+                   [&](double s, const double* v, double* d) {
+                       const double t = when(tEntry + s);
+                       const double tHotNow = hotAt(t);
+                       ph::TubeEnvironment env;
+                       // Gas around the parcel: the inlet air (less the wall loss) minus the cooling by
+                       // the material so far, carried in v[2] relative to the inlet temperature.
+                       env.tGasK = tHotNow - wallLoss * (tHotNow - at(tAmb, t)) + (v[2] - hotAt(tEntry));
+                       env.wGas = v[3];
+                       env.h = p0[Param::h_HDT] * foulingFactor;
+                       env.k = p0[Param::k_HDT] * at(kDrift, t);
+                       if (fallingRate > 0) {
+                           const double xe = properties::equilibriumMoisture(v[1], 1e-6, p0);
+                           const double depth =
+                               std::clamp((kCriticalMoisture - v[0]) / (kCriticalMoisture - xe), 0.0, 1.0);
+                           env.dryingFactor = 1.0 - fallingRate * depth;
+                       }
+                       const auto r = ph::tubeRates(v[0], v[1], env, p0, sw);
+                       d[0] = r.dXdt;
+                       d[1] = r.dTdt;
+                       // Co-current gas phase: energy and vapour balances per kg of air.
+                       d[2] = -gasCoupling * loadRatio * r.heatIn / kAirHeatCapacity;
+                       d[3] = gasCoupling * loadRatio * r.evaporation;
+                   });
             ParcelOutcome out;
             out.xHdt = y[0];
             out.tHdt = y[1];
             const double tConvIn = tEntry + tauH;
             double c[2] = {y[0], y[1]};
-            rk4<2>(c, 0.0, tauC, static_cast<int>(std::ceil(tauC / 2.0)), [&](double s, const double* v, double* d) {
-                const double t = when(tConvIn + s);
-                ph::AmbientEnvironment env{at(tAmb, t), at(rh, t), reabsorption * 1e-4 * at(rh, t)};
-                const auto r = ph::conveyorRates(v[0], v[1], env, p0, sw);
-                d[0] = r.dXdt;
-                d[1] = r.dTdt;
-            });
+            rk4<2>(c, 0.0, tauC, static_cast<int>(std::ceil(tauC / 2.0)),
+                   [&](double s, const double* v, double* d) {
+                       const double t = when(tConvIn + s);
+                       ph::AmbientEnvironment env{at(tAmb, t), at(rh, t), reabsorption * 1e-4 * at(rh, t)};
+                       const auto r = ph::conveyorRates(v[0], v[1], env, p0, sw);
+                       d[0] = r.dXdt;
+                       d[1] = r.dTdt;
+                   });
             const ph::MixState mix = ph::winnowerInletMix(c[0], c[1], y[0], y[1], p0, sw);
             const double tWinIn = tConvIn + tauC;
             double w[2] = {mix.xDb, mix.tK};
-            rk4<2>(w, 0.0, tW, static_cast<int>(std::ceil(tW / 0.25)), [&](double s, const double* v, double* d) {
-                const double t = when(tWinIn + s);
-                ph::AmbientEnvironment env{at(tAmb, t), at(rh, t), 0.0};
-                const auto r = ph::winnowerRates(v[0], v[1], s, mix.xDb, mix.tK, env, p0, sw);
-                d[0] = r.dXdt;
-                d[1] = r.dTdt;
-            });
+            rk4<2>(w, 0.0, tW, static_cast<int>(std::ceil(tW / 0.25)),
+                   [&](double s, const double* v, double* d) {
+                       const double t = when(tWinIn + s);
+                       ph::AmbientEnvironment env{at(tAmb, t), at(rh, t), 0.0};
+                       const auto r = ph::winnowerRates(v[0], v[1], s, mix.xDb, mix.tK, env, p0, sw);
+                       d[0] = r.dXdt;
+                       d[1] = r.dTdt;
+                   });
             out.xOut = w[0];
             out.tOut = w[1];
             return out;
@@ -276,7 +282,9 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
         // between neighbouring parcels (the instrument sees a blend of adjacent material).
         auto outcomeAt = [&](double t, double delay) {
             const double e = t - delay;
-            const auto parcelAt = [&](double j) { return j < 0 ? preStart : parcel[static_cast<std::size_t>(j)]; };
+            const auto parcelAt = [&](double j) {
+                return j < 0 ? preStart : parcel[static_cast<std::size_t>(j)];
+            };
             const double j0 = std::floor(e);
             const double w = e - j0;
             const ParcelOutcome a = parcelAt(j0);
@@ -314,9 +322,9 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
             // Instruments.
             double xOutMeasPct = 100 * out.xOut / (1 + out.xOut);
             if (meterLag > 0) {
-                meterState = std::isnan(meterState) ? xOutMeasPct
-                                                    : meterState + (xOutMeasPct - meterState) *
-                                                                       (1 - std::exp(-1.0 / meterLag));
+                meterState = std::isnan(meterState)
+                                 ? xOutMeasPct
+                                 : meterState + (xOutMeasPct - meterState) * (1 - std::exp(-1.0 / meterLag));
                 xOutMeasPct = meterState;
             }
             xOutMeasPct += meterOffset + 0.02 * normal(rng);

@@ -15,7 +15,7 @@ namespace drytwin::plant {
 struct PlantOptions {
     unsigned seed = 1;
     int batches = 10;
-    int samples = 6300;   ///< per batch, 1 s apart
+    int samples = 6300; ///< per batch, 1 s apart
     std::map<Mechanism, double> effects;
     /// Unmeasured slow drift of the leaf's drying behaviour (k_HDT wanders ±5 %), as in the demo.
     bool unmeasuredDrift = false;

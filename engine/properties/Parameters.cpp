@@ -10,20 +10,22 @@ namespace drytwin::properties {
 // (tube-outlet 13–15 % wb, outlet 12–13.5 % wb, outlet 45–65 °C at 140–200 °C hot air).
 const std::array<ParameterInfo, kParamCount>& parameterTable() {
     static const std::array<ParameterInfo, kParamCount> t{{
-        {Param::R_gas, "R_gas", "ideal gas constant", "J/(mol·K)", 8.314, 8.314, 8.314, "paper App. A", true, false},
+        {Param::R_gas, "R_gas", "ideal gas constant", "J/(mol·K)", 8.314, 8.314, 8.314, "paper App. A", true,
+         false},
         {Param::R_water, "R_water", "specific gas constant of water vapour", "J/(kg·K)", 461.5, 461.5, 461.5,
          "paper App. A", true, false},
-        {Param::theta_Cp1, "theta_Cp1", "specific heat of dry material", "J/(kg·K)", 1300, 1000, 1800, "paper App. A",
-         false, false},
-        {Param::theta_Cp2, "theta_Cp2", "specific heat of water", "J/(kg·K)", 4186, 4000, 4300, "paper App. A", false,
-         false},
-        {Param::theta_aw1, "theta_aw1", "temperature parameter of water activity (Eq. 2)", "K", -3000, -6000, -1500,
+        {Param::theta_Cp1, "theta_Cp1", "specific heat of dry material", "J/(kg·K)", 1300, 1000, 1800,
          "paper App. A", false, false},
-        {Param::theta_xe1, "theta_xe1", "Oswin parameter 1 (Eq. 5)", "-", 0.075, 0.02, 0.15, "paper App. A", false,
-         false},
-        {Param::theta_xe2, "theta_xe2", "Oswin parameter 2 (Eq. 5), per kelvin of T in °C", "1/K", -1e-4, -1e-3, 0.0,
-         "paper App. A (bounds: sign kept, tenfold range)", false, false},
-        {Param::theta_xe3, "theta_xe3", "Oswin parameter 3 (Eq. 5)", "-", 0.55, 0.3, 0.9, "paper App. A", false, false},
+        {Param::theta_Cp2, "theta_Cp2", "specific heat of water", "J/(kg·K)", 4186, 4000, 4300,
+         "paper App. A", false, false},
+        {Param::theta_aw1, "theta_aw1", "temperature parameter of water activity (Eq. 2)", "K", -3000, -6000,
+         -1500, "paper App. A", false, false},
+        {Param::theta_xe1, "theta_xe1", "Oswin parameter 1 (Eq. 5)", "-", 0.075, 0.02, 0.15, "paper App. A",
+         false, false},
+        {Param::theta_xe2, "theta_xe2", "Oswin parameter 2 (Eq. 5), per kelvin of T in °C", "1/K", -1e-4,
+         -1e-3, 0.0, "paper App. A (bounds: sign kept, tenfold range)", false, false},
+        {Param::theta_xe3, "theta_xe3", "Oswin parameter 3 (Eq. 5)", "-", 0.55, 0.3, 0.9, "paper App. A",
+         false, false},
         {Param::theta_D0, "theta_D0", "diffusivity pre-factor (Eq. 6)", "m²/s", 1e-5, 1e-7, 1e-3,
          "gives D_eff ≈ 1.7e-10 m²/s at 57 °C, the order reported for tobacco lamina", false, false},
         {Param::theta_Ea, "theta_Ea", "activation energy of diffusion (Eq. 6)", "J/mol", 30000, 15000, 60000,
@@ -34,47 +36,49 @@ const std::array<ParameterInfo, kParamCount>& parameterTable() {
          "humid air halves the surface gradient at saturation", false, false},
         {Param::rho_mat, "rho_mat", "particle density of the material (Eq. 7)", "kg/m³", 600, 200, 1400,
          "cut tobacco strands (lamina with air spaces)", false, false},
-        {Param::r, "r", "strand radius as a cylinder (Eq. 7)", "m", 5e-4, 1e-4, 3e-3,
-         "cut width about 1 mm", false, false},
-        {Param::L_t, "L_t", "strand length (Eq. 7)", "m", 0.02, 0.003, 0.1, "cut tobacco strands of 1–3 cm", false,
-         false},
-        {Param::h_HDT, "h_HDT", "convective heat-transfer coefficient in the tube (Eq. 8)", "W/(m²·K)", 66.6, 10, 300,
-         "paper §IV.C calibrated value", false, false},
+        {Param::r, "r", "strand radius as a cylinder (Eq. 7)", "m", 5e-4, 1e-4, 3e-3, "cut width about 1 mm",
+         false, false},
+        {Param::L_t, "L_t", "strand length (Eq. 7)", "m", 0.02, 0.003, 0.1, "cut tobacco strands of 1–3 cm",
+         false, false},
+        {Param::h_HDT, "h_HDT", "convective heat-transfer coefficient in the tube (Eq. 8)", "W/(m²·K)", 66.6,
+         10, 300, "paper §IV.C calibrated value", false, false},
         {Param::k_HDT, "k_HDT", "mass-transfer coefficient in the tube (Eq. 10)", "m/s", 0.0219, 0.001, 0.2,
          "paper §IV.C calibrated value", false, false},
         {Param::w, "w", "humidity ratio of the drying air (Eq. 9)", "kg/kg", 0.05, 0.0, 0.5,
          "recirculated hot air of a tobacco dryer is humid", false, false},
         {Param::P_total, "P_total", "total pressure of the drying air (Eq. 9)", "Pa", 101325, 80000, 110000,
          "atmospheric", false, false},
-        {Param::T_ref, "T_ref", "enthalpy reference temperature (Eqs. 12, 14, 19)", "K", 273.15, 273.15, 273.15,
-         "0 °C, the reference of the 2501 kJ/kg in Eq. 4", true, false},
-        {Param::chi_layer, "chi_layer", "layer packing factor (Eq. 13)", "-", 1.0, 0.1, 10, "loose single layer",
-         false, false},
+        {Param::T_ref, "T_ref", "enthalpy reference temperature (Eqs. 12, 14, 19)", "K", 273.15, 273.15,
+         273.15, "0 °C, the reference of the 2501 kJ/kg in Eq. 4", true, false},
+        {Param::chi_layer, "chi_layer", "layer packing factor (Eq. 13)", "-", 1.0, 0.1, 10,
+         "loose single layer", false, false},
         {Param::L_char, "L_char", "characteristic diffusion length (Eq. 13)", "m", 3e-4, 2e-5, 2e-3,
          "gives about 1 % dry-basis loss of the top layer on a 60 s belt", false, false},
-        {Param::h_conveyor, "h_conveyor", "natural-convection coefficient on the belt (Eq. 14)", "W/(m²·K)", 8, 2, 30,
-         "natural convection of a horizontal layer", false, false},
-        {Param::A_exp, "A_exp", "exposed area per kg of dry matter on the belt (Eq. 14)", "m²/kg", 0.5, 0.01, 5,
-         "top layer of about 2 kg/m²", false, false},
-        {Param::beta_top, "beta_top", "mass fraction of the conveyor top layer (Eqs. 15-16)", "-", 0.3, 0.0, 1.0,
-         "top third of the layer exchanges with the air", false, false},
-        {Param::kappa, "kappa", "flash-evaporation rate in the winnower (Eqs. 17-18)", "1/(K·s)", 0.001, 0.0, 0.05,
-         "about 0.4 % wb flash loss at 35 K excess temperature", false, false},
-        {Param::h_winnower, "h_winnower", "heat loss of the winnower per kg of dry matter (Eq. 19)", "W/K per kg",
-         20, 0, 500, "turbulent air, short contact", false, false},
-        {Param::t_W, "t_W", "residence time in the winnower (Eqs. 17-19)", "s", 3, 0.5, 20, "a few seconds", false,
-         true},
+        {Param::h_conveyor, "h_conveyor", "natural-convection coefficient on the belt (Eq. 14)", "W/(m²·K)",
+         8, 2, 30, "natural convection of a horizontal layer", false, false},
+        {Param::A_exp, "A_exp", "exposed area per kg of dry matter on the belt (Eq. 14)", "m²/kg", 0.5, 0.01,
+         5, "top layer of about 2 kg/m²", false, false},
+        {Param::beta_top, "beta_top", "mass fraction of the conveyor top layer (Eqs. 15-16)", "-", 0.3, 0.0,
+         1.0, "top third of the layer exchanges with the air", false, false},
+        {Param::kappa, "kappa", "flash-evaporation rate in the winnower (Eqs. 17-18)", "1/(K·s)", 0.001, 0.0,
+         0.05, "about 0.4 % wb flash loss at 35 K excess temperature", false, false},
+        {Param::h_winnower, "h_winnower", "heat loss of the winnower per kg of dry matter (Eq. 19)",
+         "W/K per kg", 20, 0, 500, "turbulent air, short contact", false, false},
+        {Param::t_W, "t_W", "residence time in the winnower (Eqs. 17-19)", "s", 3, 0.5, 20, "a few seconds",
+         false, true},
         {Param::tau_HDT, "tau_HDT", "residence time in the drying tube", "s", 6, 1, 30,
          "tube of about 60 m at 10 m/s particle speed", false, true},
-        {Param::tau_conv, "tau_conv", "transport time on the conveyor", "s", 60, 5, 600, "belt of 12 m at 0.2 m/s",
-         false, true},
+        {Param::tau_conv, "tau_conv", "transport time on the conveyor", "s", 60, 5, 600,
+         "belt of 12 m at 0.2 m/s", false, true},
         {Param::tau_act, "tau_act", "time constant of the hot-air temperature actuator", "s", 20, 1, 300,
          "heat exchanger and duct lag; used when T_hot follows its setpoint (MPC)", false, true},
     }};
     return t;
 }
 
-const ParameterInfo& info(Param p) { return parameterTable()[static_cast<std::size_t>(p)]; }
+const ParameterInfo& info(Param p) {
+    return parameterTable()[static_cast<std::size_t>(p)];
+}
 
 std::optional<Param> paramBySymbol(std::string_view symbol) {
     for (const auto& i : parameterTable()) {
@@ -96,8 +100,8 @@ Status ParameterSet::validate() const {
         const double v = (*this)[i.id];
         if (!std::isfinite(v) || v < i.lower || v > i.upper) {
             std::ostringstream os;
-            os << "value " << v << " " << i.unit << " is outside [" << i.lower << ", " << i.upper << "] (" << i.meaning
-               << ")";
+            os << "value " << v << " " << i.unit << " is outside [" << i.lower << ", " << i.upper << "] ("
+               << i.meaning << ")";
             return Error{ErrorKind::BadInput, std::string(i.symbol), os.str()};
         }
     }

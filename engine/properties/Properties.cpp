@@ -20,7 +20,8 @@ double sorptionIsotherm(double xDb, const ParameterSet& p) {
 }
 
 double waterActivity(double tK, double xDb, const ParameterSet& p, bool clamp) {
-    const double aw = sorptionIsotherm(xDb, p) * std::exp(p[Param::theta_aw1] * (1.0 / tK - 1.0 / 298.15)); // Eq. (2)
+    const double aw =
+        sorptionIsotherm(xDb, p) * std::exp(p[Param::theta_aw1] * (1.0 / tK - 1.0 / 298.15)); // Eq. (2)
     return clamp ? std::min(1.0, std::max(0.0, aw)) : aw;
 }
 
@@ -41,7 +42,8 @@ double latentHeat(double tK, double aw, const ParameterSet& p, const ModelSwitch
 double equilibriumMoisture(double tK, double rh, const ParameterSet& p) {
     const double h = std::clamp(rh, 0.0, 0.999);
     const double tC = tK - kKelvin;
-    return (p[Param::theta_xe1] + p[Param::theta_xe2] * tC) * std::pow(h / (1.0 - h), p[Param::theta_xe3]); // Eq. (5)
+    return (p[Param::theta_xe1] + p[Param::theta_xe2] * tC) *
+           std::pow(h / (1.0 - h), p[Param::theta_xe3]); // Eq. (5)
 }
 
 double effectiveDiffusivity(double tK, double rh, double xDb, const ParameterSet& p) {
@@ -49,8 +51,12 @@ double effectiveDiffusivity(double tK, double rh, double xDb, const ParameterSet
            (1.0 - p[Param::theta_D_RH] * rh); // Eq. (6)
 }
 
-double vapourPressureOfHumidityRatio(double w, double pTotal) { return w * pTotal / (0.622 + w); } // Eq. (9)
+double vapourPressureOfHumidityRatio(double w, double pTotal) {
+    return w * pTotal / (0.622 + w);
+} // Eq. (9)
 
-double vapourDensity(double pv, double tK, const ParameterSet& p) { return pv / (p[Param::R_water] * tK); } // Eq. (9)
+double vapourDensity(double pv, double tK, const ParameterSet& p) {
+    return pv / (p[Param::R_water] * tK);
+} // Eq. (9)
 
 } // namespace drytwin::properties

@@ -1,0 +1,368 @@
+#include "physics/BatchedIntegrator.h"
+#include "physics/LineSimulator.h"
+#include "physics/SectionRates.h"
+
+#include <QtTest>
+#include <cmath>
+
+using namespace drytwin;
+using namespace drytwin::physics;
+using properties::Param;
+using properties::ParameterSet;
+
+namespace {
+
+LineInputs constantInputs(std::size_t n, double tHotC = 170, double xInDb = 0.282) {
+    LineInputs in;
+    for (std::size_t i = 0; i < n; ++i) {
+        in.timeS.push_back(static_cast<double>(i));
+        in.tHotK.push_back(tHotC + 273.15);
+        in.xInDb.push_back(xInDb);
+        in.tInK.push_back(298.15);
+        in.tAmbK.push_back(297.15);
+        in.rhAmb.push_back(0.55);
+        in.feedKgPerS.push_back(6200 / 3600.0);
+        in.airSpeedMPerS.push_back(16);
+    }
+    return in;
+}
+
+/// Inputs that move: hot-air steps and ramps, inlet-moisture and ambient waves.
+LineInputs varyingInputs(std::size_t n) {
+    LineInputs in = constantInputs(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double t = static_cast<double>(i);
+        in.tHotK[i] += (i > n / 3 ? 12.0 : 0.0) + 4.0 * std::sin(t / 40.0);
+        in.xInDb[i] += 0.01 * std::sin(t / 90.0);
+        in.tAmbK[i] += 3.0 * std::sin(t / 300.0);
+        in.rhAmb[i] += 0.1 * std::cos(t / 200.0);
+    }
+    return in;
+}
+
+/// One parcel in a fixed environment, integrated in many short pieces so that the energy and
+/// mass flows can be summed independently of the solver (trapezoid rule on the trajectory).
+struct Closure {
+    double heatIn = 0;
+    double sensible = 0;
+    double latent = 0;
+    double evaporated = 0;
+    double x0 = 0, x1 = 0;
+};
+
+template <class Rates> Closure integrateClosure(double x0, double t0, double duration, Rates rates) {
+    struct Ctx {
+        Rates* rates;
+    } ctx{&rates};
+    ParcelRhs rhs;
+    rhs.context = &ctx;
+    rhs.parcels = 1;
+    rhs.statesPerParcel = 2;
+    rhs.evaluate = [](const void* c, double, std::size_t, const double* y, double* d) {
+        const auto r = (*static_cast<const Ctx*>(c)->rates)(y[0], y[1]);
+        d[0] = r.dXdt;
+        d[1] = r.dTdt;
+        return true;
+    };
+    IntegratorSettings s;
+    s.reference = true;
+    s.relTol = 1e-10;
+    s.absTol = {1e-13, 1e-9};
+    const int pieces = 4000;
+    const double h = duration / pieces;
+    std::vector<double> y{x0, t0};
+    Closure c;
+    c.x0 = x0;
+    auto before = rates(y[0], y[1]);
+    for (int i = 0; i < pieces; ++i) {
+        const double xPrev = y[0];
+        const double tPrev = y[1];
+        const double cPrev = before.heatCapacity;
+        if (!integrateParcels(rhs, y, h, s, nullptr, nullptr, "closure").ok()) {
+            qFatal("integration failed");
+        }
+        const auto after = rates(y[0], y[1]);
+        c.heatIn += 0.5 * h * (before.heatIn + after.heatIn);
+        c.latent +=
+            0.5 * h * (before.vapourEnthalpy * before.evaporation + after.vapourEnthalpy * after.evaporation);
+        c.evaporated += 0.5 * h * (before.evaporation + after.evaporation);
+        c.sensible += 0.5 * (cPrev + after.heatCapacity) * (y[1] - tPrev);
+        (void)xPrev;
+        before = after;
+    }
+    c.x1 = y[0];
+    return c;
+}
+
+double maxAbsDiff(const std::vector<double>& a, const std::vector<double>& b) {
+    double m = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        m = std::max(m, std::abs(a[i] - b[i]));
+    }
+    return m;
+}
+
+} // namespace
+
+class TestPhysics : public QObject {
+    Q_OBJECT
+    ParameterSet m_p;
+    properties::ModelSwitches m_sw;
+
+private Q_SLOTS:
+    void tubeEnergyClosureAndMassBalance() {
+        TubeEnvironment env{443.15, m_p[Param::w], m_p[Param::h_HDT], m_p[Param::k_HDT], 1.0};
+        const auto c = integrateClosure(0.28, 298.15, 6.0,
+                                        [&](double x, double t) { return tubeRates(x, t, env, m_p, m_sw); });
+        // Heat in = sensible + latent (Eq. 12), and water evaporated = M_dry ΔX (Eq. 11).
+        QVERIFY2(std::abs(c.heatIn - c.sensible - c.latent) < 1e-5 * std::abs(c.heatIn),
+                 qPrintable(QString("Q %1 S %2 L %3").arg(c.heatIn).arg(c.sensible).arg(c.latent)));
+        QVERIFY(std::abs(c.evaporated - (c.x0 - c.x1)) < 1e-6 * (c.x0 - c.x1));
+        QVERIFY(c.x1 < c.x0 - 0.05); // it does dry
+    }
+
+    void conveyorEnergyClosureAndMassBalance() {
+        AmbientEnvironment env{297.15, 0.55, 0.0};
+        const auto c = integrateClosure(
+            0.16, 339.0, 60.0, [&](double x, double t) { return conveyorRates(x, t, env, m_p, m_sw); });
+        QVERIFY(std::abs(c.heatIn - c.sensible - c.latent) <
+                1e-5 * (std::abs(c.heatIn) + std::abs(c.latent)));
+        QVERIFY(std::abs(c.evaporated - (c.x0 - c.x1)) < 1e-7);
+        QVERIFY(c.x1 < c.x0);
+    }
+
+    void winnowerEnergyClosureAndMassBalance() {
+        AmbientEnvironment env{297.15, 0.55, 0.0};
+        const double xMix = 0.16;
+        const double tMix = 333.0;
+        double s = 0; // time since entry advances with the pieces: Eq. 18 depends on it
+        const auto c = integrateClosure(xMix, tMix, 3.0, [&](double x, double t) {
+            return winnowerRates(x, t, s, xMix, tMix, env, m_p, m_sw);
+        });
+        QVERIFY(std::abs(c.heatIn - c.sensible - c.latent) <
+                1e-5 * (std::abs(c.heatIn) + std::abs(c.latent)));
+        QVERIFY(std::abs(c.evaporated - (c.x0 - c.x1)) < 1e-7);
+    }
+
+    void noDryingAtEquilibrium() {
+        // Conveyor: X at X_e(T_air, RH) does not change.
+        AmbientEnvironment env{297.15, 0.55, 0.0};
+        const double xe = properties::equilibriumMoisture(297.15, 0.55, m_p);
+        QCOMPARE(conveyorRates(xe, 297.15, env, m_p, m_sw).dXdt, 0.0);
+        QVERIFY(conveyorRates(xe + 0.05, 330, env, m_p, m_sw).dXdt < 0);
+        QVERIFY(conveyorRates(xe - 0.02, 297.15, env, m_p, m_sw).dXdt > 0); // dry material takes water back
+        // Winnower: a mix at equilibrium does not flash.
+        QCOMPARE(winnowerRates(xe, 320, 0.5, xe, 320, env, m_p, m_sw).dXdt, 0.0);
+        // Tube: gas saturated beyond the surface vapour density: no evaporation (max(0, ·) of Eq. 10).
+        TubeEnvironment wet{360, 0.5, 66.6, 0.02, 1.0};
+        QCOMPARE(tubeRates(0.2, 330, wet, m_p, m_sw).evaporation, 0.0);
+        // No drying without water.
+        TubeEnvironment hot{443.15, 0.05, 66.6, 0.02, 1.0};
+        QCOMPARE(tubeRates(0.0, 330, hot, m_p, m_sw).evaporation, 0.0);
+    }
+
+    void mixingLimits() {
+        ParameterSet p = m_p;
+        p[Param::beta_top] = 0;
+        auto m = winnowerInletMix(0.1, 320, 0.2, 340, p, m_sw);
+        QCOMPARE(m.xDb, 0.2);
+        QCOMPARE(m.tK, 340.0);
+        p[Param::beta_top] = 1;
+        m = winnowerInletMix(0.1, 320, 0.2, 340, p, m_sw);
+        QCOMPARE(m.xDb, 0.1);
+        QCOMPARE(m.tK, 320.0);
+        p[Param::beta_top] = 0.5;
+        m = winnowerInletMix(0.1, 320, 0.2, 340, p, m_sw);
+        QVERIFY(m.tK > 330); // the wetter half carries more heat capacity (Eq. 16)
+    }
+
+    void steadyLineInRealisticRange() {
+        auto r = simulateLine(constantInputs(200), m_p);
+        QVERIFY2(r.ok(), r.ok() ? "" : r.error().message().c_str());
+        const double xHdt = 100 * r->xHdtDb[150] / (1 + r->xHdtDb[150]);
+        const double xOut = 100 * r->xOutDb[150] / (1 + r->xOutDb[150]);
+        QVERIFY2(xHdt > 13 && xHdt < 16, qPrintable(QString::number(xHdt)));
+        QVERIFY2(xOut > 12 && xOut < xHdt, qPrintable(QString::number(xOut)));
+        QVERIFY(r->tHdtK[150] - 273.15 > 50 && r->tOutK[150] - 273.15 > 45 && r->tOutK[150] - 273.15 < 65);
+        // Steady inputs give a steady line.
+        QVERIFY(std::abs(r->xOutDb[199] - r->xOutDb[100]) < 1e-8);
+    }
+
+    void hotterAirDriesMoreWetterFeedStaysWetter() {
+        const auto base = simulateLine(constantInputs(120, 170), m_p);
+        const auto hot = simulateLine(constantInputs(120, 185), m_p);
+        const auto wet = simulateLine(constantInputs(120, 170, 0.30), m_p);
+        QVERIFY(base.ok() && hot.ok() && wet.ok());
+        for (std::size_t k : {0u, 60u, 119u}) {
+            QVERIFY(hot->xOutDb[k] < base->xOutDb[k]);
+            QVERIFY(hot->xHdtDb[k] < base->xHdtDb[k]);
+            QVERIFY(hot->tOutK[k] > base->tOutK[k]);
+            QVERIFY(wet->xOutDb[k] > base->xOutDb[k]);
+        }
+    }
+
+    void outputsFollowTheTransportDelay() {
+        // A hot-air step between t = 99 s and 100 s reaches a parcel whose tube passage
+        // [t_k − delay, t_k − delay + tau_HDT] ends after 99 s.
+        LineInputs in = constantInputs(300);
+        for (std::size_t i = 100; i < 300; ++i) {
+            in.tHotK[i] += 15;
+        }
+        auto r = simulateLine(in, m_p);
+        QVERIFY(r.ok());
+        const auto lastUnaffected = static_cast<std::size_t>(99 + totalDelay(m_p) - m_p[Param::tau_HDT]);
+        QCOMPARE(lastUnaffected, std::size_t(162));
+        QCOMPARE(r->xOutDb[lastUnaffected], r->xOutDb[0]);
+        QVERIFY(r->xOutDb[lastUnaffected + 2] < r->xOutDb[0] - 1e-5);
+        QVERIFY(r->xOutDb[lastUnaffected + 10] < r->xOutDb[lastUnaffected + 2]);
+        QCOMPARE(r->xHdtDb[99], r->xHdtDb[0]);
+        QVERIFY(r->xHdtDb[101] < r->xHdtDb[0]);
+    }
+
+    void fastPathAgreesWithReference() {
+        const LineInputs in = varyingInputs(400);
+        std::vector<std::size_t> rows;
+        for (std::size_t k = 0; k < 400; k += 7) {
+            rows.push_back(k);
+        }
+        auto fast = simulateLine(in, m_p, {}, rows);
+        SimulationOptions ref;
+        ref.reference = true;
+        ref.relTol = 1e-10;
+        auto slow = simulateLine(in, m_p, ref, rows);
+        QVERIFY(fast.ok() && slow.ok());
+        QVERIFY2(maxAbsDiff(fast->xOutDb, slow->xOutDb) < 3e-5,
+                 qPrintable(QString::number(maxAbsDiff(fast->xOutDb, slow->xOutDb))));
+        QVERIFY(maxAbsDiff(fast->tOutK, slow->tOutK) < 5e-3);
+        QVERIFY(maxAbsDiff(fast->xHdtDb, slow->xHdtDb) < 3e-5);
+        QVERIFY(maxAbsDiff(fast->proxyXConvDb, slow->proxyXConvDb) < 3e-5);
+        // A tighter fast path converges to the reference.
+        SimulationOptions tight;
+        tight.relTol = 1e-8;
+        auto t = simulateLine(in, m_p, tight, rows);
+        QVERIFY(maxAbsDiff(t->xOutDb, slow->xOutDb) < 1e-7);
+        // Subsets give the same values as the full run at those rows.
+        auto all = simulateLine(in, m_p, tight);
+        for (std::size_t j = 0; j < rows.size(); ++j) {
+            QVERIFY(std::abs(all->xOutDb[rows[j]] - t->xOutDb[j]) < 1e-7);
+        }
+    }
+
+    void terminalWinnowerMatchesTransientInSteadyAmbient() {
+        SimulationOptions term;
+        term.winnower = WinnowerForm::Terminal;
+        auto a = simulateLine(constantInputs(150), m_p);
+        auto b = simulateLine(constantInputs(150), m_p, term);
+        QVERIFY(a.ok() && b.ok());
+        // Eq. 17 is the integral of Eq. 18 at constant X_e and T_air.
+        QVERIFY(std::abs(a->xOutDb[140] - b->xOutDb[140]) < 2e-6);
+        QVERIFY(std::abs(a->tOutK[140] - b->tOutK[140]) < 1.0); // Eq. 19 as one step is approximate
+    }
+
+    void sensitivitiesMatchFiniteDifferences_data() {
+        QTest::addColumn<int>("param");
+        QTest::newRow("h_HDT") << int(Param::h_HDT);
+        QTest::newRow("k_HDT") << int(Param::k_HDT);
+        QTest::newRow("beta_top") << int(Param::beta_top);
+        QTest::newRow("L_char") << int(Param::L_char);
+        QTest::newRow("kappa") << int(Param::kappa);
+        QTest::newRow("tau_conv") << int(Param::tau_conv);
+    }
+    void sensitivitiesMatchFiniteDifferences() {
+        QFETCH(int, param);
+        const Param q = static_cast<Param>(param);
+        const LineInputs in = varyingInputs(300);
+        const std::vector<std::size_t> rows{10, 120, 150, 299};
+        SimulationOptions o;
+        o.relTol = 1e-8;
+        o.sensitivities = {q};
+        auto s = simulateLine(in, m_p, o, rows);
+        QVERIFY2(s.ok(), s.ok() ? "" : s.error().message().c_str());
+        SimulationOptions plain;
+        plain.relTol = 1e-10;
+        plain.reference = true;
+        const double v = m_p[q];
+        const double h = 1e-4 * std::abs(v);
+        ParameterSet up = m_p;
+        ParameterSet dn = m_p;
+        up[q] = v + h;
+        dn[q] = v - h;
+        auto ru = simulateLine(in, up, plain, rows);
+        auto rd = simulateLine(in, dn, plain, rows);
+        QVERIFY(ru.ok() && rd.ok());
+        for (std::size_t j = 0; j < rows.size(); ++j) {
+            const double fdX = (ru->xOutDb[j] - rd->xOutDb[j]) / (2 * h);
+            const double fdT = (ru->tOutK[j] - rd->tOutK[j]) / (2 * h);
+            const double fdXh = (ru->xHdtDb[j] - rd->xHdtDb[j]) / (2 * h);
+            const auto& sens = s->sensitivities.front();
+            QVERIFY2(std::abs(sens.dXOut[j] - fdX) <= 2e-3 * std::abs(fdX) + 1e-9,
+                     qPrintable(QString("dX %1 vs %2").arg(sens.dXOut[j]).arg(fdX)));
+            QVERIFY2(std::abs(sens.dTOut[j] - fdT) <= 2e-3 * std::abs(fdT) + 1e-6,
+                     qPrintable(QString("dT %1 vs %2").arg(sens.dTOut[j]).arg(fdT)));
+            QVERIFY2(std::abs(sens.dXHdt[j] - fdXh) <= 2e-3 * std::abs(fdXh) + 1e-7,
+                     qPrintable(QString("dXhdt %1 vs %2").arg(sens.dXHdt[j]).arg(fdXh)));
+        }
+    }
+
+    void badInputsAndParametersAreErrors() {
+        ParameterSet p = m_p;
+        p[Param::h_HDT] = 1e6;
+        auto r = simulateLine(constantInputs(20), p);
+        QVERIFY(!r.ok());
+        QCOMPARE(r.error().place, std::string("h_HDT"));
+        LineInputs in = constantInputs(20);
+        in.rhAmb[5] = std::nan("");
+        QVERIFY(!simulateLine(in, m_p).ok());
+        in = constantInputs(20);
+        in.timeS[3] = 1;
+        QVERIFY(!simulateLine(in, m_p).ok());
+        QVERIFY(!simulateLine(constantInputs(20), m_p, {}, {25}).ok());
+        SimulationOptions o;
+        o.sensitivities = {Param::R_gas};
+        QVERIFY(!simulateLine(constantInputs(20), m_p, o).ok());
+    }
+
+    void ablationSwitchesChangeThePrediction() {
+        // The L_v correction acts only where a_w* < 1: dry material. At the line's operating
+        // point a_w* = 1 (θ_aw1 < 0 raises a_w with temperature), so it cannot change the line.
+        AmbientEnvironment env{297.15, 0.4, 0.0};
+        properties::ModelSwitches noLv;
+        noLv.latentHeatCorrection = false;
+        QVERIFY(conveyorRates(0.03, 320, env, m_p, m_sw).dTdt !=
+                conveyorRates(0.03, 320, env, m_p, noLv).dTdt);
+        QCOMPARE(conveyorRates(0.16, 320, env, m_p, m_sw).dTdt,
+                 conveyorRates(0.16, 320, env, m_p, noLv).dTdt);
+        const LineInputs in = constantInputs(100);
+        auto base = simulateLine(in, m_p);
+        for (int v = 0; v < 2; ++v) {
+            SimulationOptions o;
+            if (v == 0) {
+                o.switches.clampWaterActivity = false;
+            } else {
+                o.switches.moistureDependentCp = false;
+            }
+            auto r = simulateLine(in, m_p, o);
+            QVERIFY(r.ok());
+            QVERIFY2(std::abs(r->xOutDb[90] - base->xOutDb[90]) + std::abs(r->tOutK[90] - base->tOutK[90]) >
+                         1e-6,
+                     qPrintable(QString("variant %1").arg(v)));
+        }
+    }
+
+    void batchesInParallelEqualSerial() {
+        std::vector<LineInputs> b{varyingInputs(200), constantInputs(150), varyingInputs(180)};
+        auto par = simulateBatches(b, m_p, {}, 2);
+        QVERIFY(par.ok());
+        for (std::size_t i = 0; i < b.size(); ++i) {
+            auto one = simulateLine(b[i], m_p);
+            QCOMPARE((*par)[i].xOutDb, one->xOutDb);
+        }
+        auto cancelled = simulateBatches(
+            b, m_p, {}, 1, [](const drytwin::ProgressInfo&) { return drytwin::ProgressAction::Stop; });
+        QVERIFY(!cancelled.ok());
+        QCOMPARE(exitCodeFor(cancelled.error().kind), 130);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestPhysics)
+#include "TestPhysics.moc"
