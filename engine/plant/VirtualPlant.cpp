@@ -99,9 +99,9 @@ ParameterSet PlantOptions::defaultTruth() {
 PlantOptions PlantOptions::demo(unsigned seed) {
     PlantOptions o;
     o.seed = seed;
-    o.effects[Mechanism::HeatTransferFouling] = 0.15;
-    o.effects[Mechanism::GasPhaseCoupling] = 0.3;
-    o.effects[Mechanism::TubeWallHeatLoss] = 0.03;
+    o.effects[Mechanism::HeatTransferFouling] = 0.1;
+    o.effects[Mechanism::GasPhaseCoupling] = 0.1;
+    o.effects[Mechanism::TubeWallHeatLoss] = 0.015;
     o.effects[Mechanism::MoistureMeterLag] = 20;
     o.unmeasuredDrift = true;
     return o;
@@ -128,6 +128,9 @@ Status PlantOptions::validate() const {
     if (std::abs(tauH - std::round(tauH)) > 1e-9) {
         return Error{ErrorKind::Usage, "tau_HDT", "the plant needs a whole number of seconds"};
     }
+    if (!(noiseScale >= 0 && noiseScale <= 10)) {
+        return Error{ErrorKind::Usage, "noiseScale", "must lie in [0, 10]"};
+    }
     if (!(targetXOutPct > 5 && targetXOutPct < 30)) {
         return Error{ErrorKind::Usage, "targetXOutPct", "must lie in (5, 30) % wb"};
     }
@@ -145,7 +148,8 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
     const ParameterSet& p0 = o.truth;
     const properties::ModelSwitches sw;
     std::mt19937_64 rng(o.seed);
-    std::normal_distribution<double> normal(0, 1);
+    std::normal_distribution<double> unitNormal(0, 1);
+    const auto normal = [&](std::mt19937_64& g) { return o.noiseScale * unitNormal(g); };
     std::uniform_real_distribution<double> uniform(0, 1);
 
     const double wallLoss = effect(o, Mechanism::TubeWallHeatLoss);
@@ -211,8 +215,12 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
         double sp = kKelvin + 170 + 10 * (uniform(rng) - 0.5);
         double integral = 0;
         double meterState = std::nan("");
-        const double kc = 2.0;   // K per % wb
-        const double ti = 150.0; // s
+        // PI tuned by SIMC for ≈ 80 s dead time and a 20 s actuator lag (gain ≈ −0.06 %/K),
+        // with the inlet-moisture feedforward tobacco dryers commonly have.
+        const double kc = 2.0;  // K per % wb
+        const double ti = 30.0; // s
+        const double kff = 8.0; // K per % wb of inlet moisture
+        const double xInRefPct = 22.0;
         pb.timeS.resize(n);
 
         // Parcel j enters the tube at sample j. The pre-start parcel stands for the steady
@@ -334,7 +342,8 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
             // The plant's PI controller moves the hot-air setpoint (anti-windup by clamping).
             const double e = xOutMeasPct - o.targetXOutPct;
             integral += e / ti;
-            double newSp = kKelvin + 170 + kc * (e + integral);
+            const double ff = kff * (100 * xIn[k] / (1 + xIn[k]) - xInRefPct);
+            double newSp = kKelvin + 170 + ff + kc * (e + integral);
             const double lo = kKelvin + 140;
             const double hi = kKelvin + 200;
             if (newSp > hi || newSp < lo) {
@@ -348,7 +357,7 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
             pb.tHotK.push_back(tHot[k] + 0.1 * normal(rng));
             pb.airSpeedMPerS.push_back(air[k] + 0.02 * normal(rng));
             pb.feedKgPerS.push_back(feed[k] + 5.0 / 3600 * normal(rng));
-            const double xInWb = xIn[k] / (1 + xIn[k]) + 0.0003 * normal(rng);
+            const double xInWb = xIn[k] / (1 + xIn[k]) + 0.0001 * normal(rng);
             pb.xInDb.push_back(xInWb / (1 - xInWb));
             pb.tInK.push_back(tIn[k] + 0.1 * normal(rng));
             pb.tAmbK.push_back(tAmb[k] + 0.1 * normal(rng));

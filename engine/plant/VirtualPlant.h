@@ -19,7 +19,8 @@ struct PlantOptions {
     std::map<Mechanism, double> effects;
     /// Unmeasured slow drift of the leaf's drying behaviour (k_HDT wanders ±5 %), as in the demo.
     bool unmeasuredDrift = false;
-    double targetXOutPct = 12.8; ///< setpoint of the plant's own moisture controller
+    double targetXOutPct = 13.0; ///< setpoint of the plant's own moisture controller
+    double noiseScale = 1.0;     ///< multiplies every instrument's noise (0: ideal instruments)
     /// The plant's true parameters. Defaults: the model table with h_HDT and k_HDT of this
     /// plant (72 W/(m²·K), 0.0236 m/s), which a calibration must find.
     properties::ParameterSet truth = defaultTruth();
