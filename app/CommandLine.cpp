@@ -92,6 +92,8 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     calibrate->add_option("--model", o.modelPath, "start from this model file");
     calibrate->add_option("--out", o.outPath, "model file to write")->required();
     calibrate->add_option("--free", o.freeParameters, "parameters to fit (default h_HDT k_HDT)");
+    calibrate->add_option("--bound", o.bounds,
+                          "NAME=LOWER:UPPER search range of a free parameter; repeatable");
     calibrate->add_option("--seed", o.seed, "random seed of the global search")->capture_default_str();
     calibrate->add_option("--max-evaluations", o.maxEvaluations, "cap on model evaluations")
         ->capture_default_str();

@@ -1,5 +1,6 @@
 #include "HeadlessCommands.h"
 
+#include "calibration/Calibration.h"
 #include "common/AtomicFile.h"
 #include "data/BatchReader.h"
 #include "data/BatchWriter.h"
@@ -7,6 +8,7 @@
 #include "data/PlantExport.h"
 #include "data/SiBatch.h"
 #include "diagnostics/Metrics.h"
+#include "io/Evaluation.h"
 #include "io/ModelFile.h"
 #include "physics/LineSimulator.h"
 #include "plant/VirtualPlant.h"
@@ -304,11 +306,150 @@ int runSimulate(const CommandOptions& o) {
     }
     return 0;
 }
-int runCalibrate(const CommandOptions&) {
-    return notImplemented("calibrate");
+namespace {
+
+/// Loads, cleans and converts the data set of --data.
+bool loadSi(const CommandOptions& o, std::vector<data::SiBatch>& si, int& exitCode) {
+    data::DataSet ds;
+    if (!loadData(o, ds, exitCode)) {
+        return false;
+    }
+    si = data::toSi(ds, data::clean(ds, o.cleaning));
+    return true;
 }
-int runEvaluate(const CommandOptions&) {
-    return notImplemented("evaluate");
+
+/// "--bound NAME=LO:HI" into the options; false with a message on a malformed one.
+bool parseBounds(const std::vector<std::string>& specs, calibration::CalibrationOptions& co, int& exitCode) {
+    for (const auto& b : specs) {
+        const auto eq = b.find('=');
+        const auto colon = b.find(':', eq == std::string::npos ? 0 : eq);
+        const auto p = properties::paramBySymbol(b.substr(0, eq));
+        double lo = 0;
+        double hi = 0;
+        try {
+            if (eq == std::string::npos || colon == std::string::npos) {
+                throw std::invalid_argument("form");
+            }
+            lo = std::stod(b.substr(eq + 1, colon - eq - 1));
+            hi = std::stod(b.substr(colon + 1));
+        } catch (const std::exception&) {
+            exitCode = fail(Error{ErrorKind::Usage, "--bound " + b, "expected NAME=LOWER:UPPER"});
+            return false;
+        }
+        if (!p) {
+            exitCode =
+                fail(Error{ErrorKind::BadInput, "--bound " + b, "no parameter '" + b.substr(0, eq) + "'"});
+            return false;
+        }
+        co.bounds[*p] = {lo, hi};
+    }
+    return true;
+}
+
+} // namespace
+
+int runCalibrate(const CommandOptions& o) {
+    io::ModelFile model;
+    int rc = 0;
+    if (!loadModel(o, model, rc)) {
+        return rc;
+    }
+    calibration::CalibrationOptions co;
+    co.seed = o.seed;
+    co.maxEvaluations = o.maxEvaluations;
+    co.simulation.switches = model.switches;
+    co.simulation.winnower = model.winnower;
+    if (!o.freeParameters.empty()) {
+        co.freeParameters.clear();
+        for (const auto& name : o.freeParameters) {
+            const auto p = properties::paramBySymbol(name);
+            if (!p) {
+                std::string known;
+                for (const auto& i : properties::parameterTable()) {
+                    known += " " + std::string(i.symbol);
+                }
+                return fail(
+                    Error{ErrorKind::BadInput, "--free " + name, "no such parameter; known:" + known});
+            }
+            co.freeParameters.push_back(*p);
+        }
+    }
+    if (!parseBounds(o.bounds, co, rc)) {
+        return rc;
+    }
+    if (auto st = co.validate(); !st) {
+        return fail(st.error());
+    }
+    std::vector<data::SiBatch> si;
+    if (!loadSi(o, si, rc)) {
+        return rc;
+    }
+    auto result = calibration::calibrate(si, model.parameters, co, o.progress);
+    if (!result) {
+        return fail(result.error());
+    }
+    const auto& r = *result;
+    std::printf("Calibrated %zu parameter(s) on %zu rows (%s), %d evaluations (%d failed), %.2f s\n",
+                r.estimates.size(), r.rowsUsed, r.algorithm.c_str(), r.evaluations, r.failedEvaluations,
+                r.elapsedSeconds);
+    std::printf("%-12s %12s %12s %26s %-12s %s\n", "parameter", "start", "estimate", "95 % interval", "unit",
+                "");
+    io::CalibrationRecord rec;
+    for (const auto& e : r.estimates) {
+        const auto& info = properties::info(e.param);
+        char ci[64];
+        std::snprintf(ci, sizeof ci, "[%.5g, %.5g]", e.ci95Low, e.ci95High);
+        std::printf("%-12s %12.5g %12.5g %26s %-12s %s\n", std::string(info.symbol).c_str(),
+                    model.parameters[e.param], e.value, ci, std::string(info.unit).c_str(),
+                    e.atBound ? "AT BOUND: the fit wants to leave the range" : "");
+        rec.estimates.push_back({std::string(info.symbol), e.value, e.ci95Low, e.ci95High, e.atBound});
+    }
+    std::printf(
+        "loss %.5g -> %.5g; MAE X_out %.4f -> %.4f %% wb; MAE T_out %.3f -> %.3f °C (calibration rows)\n",
+        r.before.loss, r.after.loss, r.before.maeXOutPct, r.after.maeXOutPct, r.before.maeTOutC,
+        r.after.maeTOutC);
+    rec.lossBefore = r.before.loss;
+    rec.lossAfter = r.after.loss;
+    rec.evaluations = r.evaluations;
+    rec.seed = co.seed;
+    rec.algorithm = r.algorithm;
+    model.parameters = r.parameters;
+    model.hasCalibration = true;
+    model.calibration = rec;
+    if (auto st = io::writeModelFile(model, o.outPath); !st) {
+        return fail(st.error());
+    }
+    return 0;
+}
+
+int runEvaluate(const CommandOptions& o) {
+    io::ModelFile model;
+    int rc = 0;
+    if (!loadModel(o, model, rc)) {
+        return rc;
+    }
+    std::vector<data::SiBatch> si;
+    if (!loadSi(o, si, rc)) {
+        return rc;
+    }
+    auto ev = evaluation::evaluate(si, model, {o.horizonSteps}, o.progress);
+    if (!ev) {
+        return fail(ev.error());
+    }
+    std::printf("held-out part: %s, %zu rows\n", ev->split.c_str(), ev->testRows);
+    std::printf("%-20s %10s %8s %10s %10s %8s %10s\n", "model", "MAE X [%]", "R2 X", "LB p X", "MAE T [C]",
+                "R2 T", "LB p T");
+    for (const auto& m : ev->models) {
+        std::printf("%-20s %10.4f %8.4f %10.3g %10.4f %8.4f %10.3g\n", m.name.c_str(), m.moisture.mae,
+                    m.moisture.r2, m.moisture.ljungBoxP, m.temperature.mae, m.temperature.r2,
+                    m.temperature.ljungBoxP);
+    }
+    if (!o.jsonPath.empty()) {
+        if (auto st = writeFileAtomically(o.jsonPath, evaluation::toJson(*ev)); !st) {
+            return fail(st.error());
+        }
+    }
+    return 0;
 }
 int runPipeline(const CommandOptions&) {
     return notImplemented("pipeline");

@@ -23,6 +23,7 @@ struct CommandOptions {
     bool demo = false;
     std::vector<std::string> effects;
     std::vector<std::string> freeParameters;
+    std::vector<std::string> bounds;
     int maxEvaluations = 2000;
     int horizonSteps = 30;
     data::CleaningOptions cleaning;

@@ -50,17 +50,4 @@ Batch toBatch(const plant::PlantBatch& pb, unsigned seed) {
     return b;
 }
 
-physics::LineInputs toLineInputs(const SiBatch& b) {
-    physics::LineInputs in;
-    in.timeS = b.timeS;
-    in.tHotK = b.tHotK;
-    in.xInDb = b.xInDb;
-    in.tInK = b.tInK;
-    in.tAmbK = b.tAmbK;
-    in.rhAmb = b.rhAmb;
-    in.feedKgPerS = b.feedKgPerS;
-    in.airSpeedMPerS = b.airSpeedMPerS;
-    return in;
-}
-
 } // namespace drytwin::data

@@ -2,7 +2,6 @@
 
 #include "data/Batch.h"
 #include "data/SiBatch.h"
-#include "physics/LineInputs.h"
 #include "plant/VirtualPlant.h"
 
 namespace drytwin::data {
@@ -10,8 +9,5 @@ namespace drytwin::data {
 /// @brief A plant batch as its batch file would hold it (file units, instrument resolution:
 /// 0.001 % for moisture, 0.01 °C, 0.1 kg/h ...), with `# batch:` and `# source:` metadata.
 Batch toBatch(const plant::PlantBatch& pb, unsigned seed);
-
-/// @brief The model's input series of an SI batch.
-physics::LineInputs toLineInputs(const SiBatch& b);
 
 } // namespace drytwin::data

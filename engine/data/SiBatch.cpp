@@ -144,4 +144,17 @@ std::vector<RowRef> calibrationSubset(const std::vector<SiBatch>& batches, std::
     return subset;
 }
 
+physics::LineInputs toLineInputs(const SiBatch& b) {
+    physics::LineInputs in;
+    in.timeS = b.timeS;
+    in.tHotK = b.tHotK;
+    in.xInDb = b.xInDb;
+    in.tInK = b.tInK;
+    in.tAmbK = b.tAmbK;
+    in.rhAmb = b.rhAmb;
+    in.feedKgPerS = b.feedKgPerS;
+    in.airSpeedMPerS = b.airSpeedMPerS;
+    return in;
+}
+
 } // namespace drytwin::data

@@ -3,6 +3,7 @@
 #include "common/Error.h"
 #include "data/Batch.h"
 #include "data/Cleaning.h"
+#include "physics/LineInputs.h"
 
 #include <cstdint>
 #include <string>
@@ -48,6 +49,9 @@ struct SiBatch {
 /// between its neighbours (inputs must be continuous for simulation) and its row is masked
 /// out of fitting and metrics; missing outputs stay NaN and masked.
 std::vector<SiBatch> toSi(const DataSet& data, const CleaningReport& cleaning);
+
+/// @brief The model's input series of an SI batch.
+physics::LineInputs toLineInputs(const SiBatch& b);
 
 /// @brief Row range [begin, end) of one batch.
 struct RowRange {

@@ -1,0 +1,59 @@
+#pragma once
+
+#include "common/Error.h"
+#include "common/Progress.h"
+#include "data/SiBatch.h"
+#include "io/ModelFile.h"
+
+#include <string>
+#include <vector>
+
+namespace drytwin::evaluation {
+
+/// @brief Options of a held-out evaluation.
+struct EvaluationOptions {
+    int horizonSteps = 30;      ///< multi-step horizon reported beside the one-step error
+    double trainFraction = 0.7; ///< chronological split (paper §IV.A)
+    int ljungBoxLags = 20;
+};
+
+/// @brief Accuracy of one output: MAE and R² in % wb or °C, Ljung-Box p of the residual.
+struct OutputMetrics {
+    double mae = 0;
+    double r2 = 0;
+    double ljungBoxP = 0;
+};
+
+/// @brief One model's held-out metrics.
+struct ModelMetrics {
+    std::string name; ///< contract key: pbm, ext_input_residual, lstm, pgrl_cc
+    OutputMetrics moisture;
+    OutputMetrics temperature;
+    OutputMetrics moistureMultiStep;
+    OutputMetrics temperatureMultiStep;
+    std::vector<double> moistureResidual;    ///< held-out rows, % wb, for plots (ACF, PSD)
+    std::vector<double> temperatureResidual; ///< held-out rows, °C
+};
+
+/// @brief Held-out evaluation of every model a model file holds.
+struct EvaluationResult {
+    std::string split;
+    std::size_t testRows = 0;
+    int horizonSteps = 1;
+    int multiStepHorizon = 0;
+    std::vector<ModelMetrics> models;
+    double elapsedSeconds = 0;
+};
+
+/// @brief Metrics on the chronological held-out part (rows the cleaning keeps).
+Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, const io::ModelFile& model,
+                                    const EvaluationOptions& options = {}, const Progress& progress = {});
+
+/// @brief Output metrics of observed/predicted series (moisture in % wb or temperature in °C).
+OutputMetrics outputMetrics(const std::vector<double>& observed, const std::vector<double>& predicted,
+                            int lbLags);
+
+/// @brief The JSON of CONTRACT.md §3 for `evaluate`.
+std::string toJson(const EvaluationResult& result);
+
+} // namespace drytwin::evaluation
