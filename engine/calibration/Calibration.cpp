@@ -285,6 +285,10 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
 
     const auto objective = [](unsigned n, const double* u, double*, void* data) -> double {
         auto& s = *static_cast<State*>(data);
+        if (s.cancelled) {
+            // NLopt may evaluate a whole population before it sees the stop request.
+            throw nlopt::forced_stop();
+        }
         ParameterSet p = s.base;
         IterationRecord rec;
         rec.evaluation = s.result->evaluations + 1;
@@ -364,12 +368,17 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
         result.parameters[coords[i].param] = coords[i].toValue(state.bestUnit[i]);
     }
     // Fit after, with sensitivities for the Fisher information.
+    // The sensitivity run needs more solver steps than a plain one; if it fails, the fit
+    // stands and the intervals are reported as unknown (NaN).
     Residuals at;
-    if (!problem.residuals(result.parameters, true, at, &why)) {
+    const bool withSensitivities = problem.residuals(result.parameters, true, at, &why);
+    if (!withSensitivities && !problem.residuals(result.parameters, false, at, &why)) {
         return Error{ErrorKind::Numerical, "calibration result", "the model fails at the optimum: " + why};
     }
     result.after = {problem.loss(at), meanAbs(at.xOut), meanAbs(at.tOut)};
-    const Eigen::MatrixXd fisher = fisherInformation(at, np);
+    const Eigen::MatrixXd fisher = withSensitivities ? fisherInformation(at, np)
+                                                     : Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(np),
+                                                                             static_cast<Eigen::Index>(np));
     Eigen::MatrixXd cov =
         Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(np), static_cast<Eigen::Index>(np),
                                   std::numeric_limits<double>::quiet_NaN());

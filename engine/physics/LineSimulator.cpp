@@ -115,6 +115,7 @@ bool winnowerEval(const void* c, double s, std::size_t i, const double* y, doubl
 IntegratorSettings settingsFor(const SimulationOptions& o, int states) {
     IntegratorSettings s;
     s.reference = o.reference;
+    s.maxSteps = o.maxStepsPerSection;
     s.relTol = o.relTol;
     // Absolute tolerances per state (moisture in kg/kg, temperature in K), shrinking with the
     // relative tolerance.
@@ -337,6 +338,9 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
 } // namespace
 
 Status SimulationOptions::validate() const {
+    if (maxStepsPerSection < 1) {
+        return Error{ErrorKind::BadInput, "maxStepsPerSection", "must be at least 1"};
+    }
     if (!(relTol >= 1e-12 && relTol <= 1e-2)) {
         return Error{ErrorKind::BadInput, "relTol", "must lie in [1e-12, 1e-2]"};
     }

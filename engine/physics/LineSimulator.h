@@ -25,6 +25,8 @@ struct SimulationOptions {
     /// At 1e-5 the fast path stays within ~2e-6 kg/kg and ~1e-3 K of the reference path
     /// (tests/engine/physics), far below the instruments' noise (0.02 % wb, 0.03 K).
     double relTol = 1e-5;
+    /// Cap on solver steps per section; a parcel needing more fails the run with an error.
+    long maxStepsPerSection = 50000;
     /// Parameters to compute output sensitivities for: CVODES forward sensitivities for rate
     /// parameters, central differences for residence times (they move integration windows).
     std::vector<properties::Param> sensitivities;
