@@ -103,7 +103,12 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     addData(train);
     train->add_option("--model", o.modelPath, "calibrated model file")->required();
     train->add_option("--out", o.outPath, "model file to write")->required();
-    reg(train, [](const CommandOptions&) { return notImplemented("train"); });
+    train->add_option("--lags", o.residualLags, "measured residual lags in the lifted state")
+        ->capture_default_str();
+    train->add_option("--degree", o.degree, "polynomial dictionary degree (1-3)")->capture_default_str();
+    train->add_option("--ridge", o.ridge,
+                      "ridge weight lambda_A = lambda_B = lambda_E per unit of total weight");
+    reg(train, runTrain);
 
     auto* evaluate = app.add_subcommand("evaluate", "metrics on the held-out part of the data");
     addData(evaluate);
@@ -126,8 +131,9 @@ CommandLine::CommandLine() : m_impl(new Impl) {
 
     auto* ablation = app.add_subcommand("ablation", "the ablation table of the paper's Table 3");
     addData(ablation);
+    ablation->add_option("--model", o.modelPath, "calibrated model file (default: default parameters)");
     ablation->add_option("--json", o.jsonPath, "write the table as JSON");
-    reg(ablation, [](const CommandOptions&) { return notImplemented("ablation"); });
+    reg(ablation, runAblation);
 
     auto* pipeline = app.add_subcommand("pipeline", "everything above in order, with a report");
     addData(pipeline);

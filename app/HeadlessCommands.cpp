@@ -9,6 +9,7 @@
 #include "data/SiBatch.h"
 #include "diagnostics/Metrics.h"
 #include "io/Evaluation.h"
+#include "io/HybridTraining.h"
 #include "io/ModelFile.h"
 #include "physics/LineSimulator.h"
 #include "plant/VirtualPlant.h"
@@ -451,6 +452,80 @@ int runEvaluate(const CommandOptions& o) {
     }
     return 0;
 }
+int runTrain(const CommandOptions& o) {
+    io::ModelFile model;
+    int rc = 0;
+    if (!loadModel(o, model, rc)) {
+        return rc;
+    }
+    if (!model.hasCalibration) {
+        std::fprintf(stderr,
+                     "drytwin train: note: %s holds no calibration; the residual model is learnt on top of "
+                     "the default physics parameters\n",
+                     o.modelPath.c_str());
+    }
+    std::vector<data::SiBatch> si;
+    if (!loadSi(o, si, rc)) {
+        return rc;
+    }
+    residual::ResidualOptions ro;
+    ro.residualLags = o.residualLags;
+    ro.degree = o.degree;
+    if (o.ridge >= 0) {
+        ro.lambdaA = ro.lambdaB = ro.lambdaE = o.ridge;
+    }
+    if (auto st = ro.validate(); !st) {
+        return fail(Error{ErrorKind::Usage, st.error().place, st.error().reason});
+    }
+    auto trained = hybrid::trainResidualModels(si, model, ro, o.progress);
+    if (!trained) {
+        return fail(trained.error());
+    }
+    for (const auto* m : {&trained->pgrlCc, &trained->extInput}) {
+        const auto& c = m->stability();
+        std::printf("%-20s state %3d, %zu snapshots, %.2f s; spectral radius %.4f -> %.4f, alpha %.4f, "
+                    "certificate max eig %.3g (%s)\n",
+                    m == &trained->pgrlCc ? "pgrl_cc" : "ext_input_residual", m->stateSize(),
+                    m->trainingSnapshots(), m->trainingSeconds(), c.spectralRadiusBefore,
+                    c.spectralRadiusAfter, c.alpha, c.certificateMaxEig,
+                    c.certified ? "certified" : "NOT certified");
+    }
+    hybrid::storeResidualModels(model, *trained);
+    if (auto st = io::writeModelFile(model, o.outPath); !st) {
+        return fail(st.error());
+    }
+    return 0;
+}
+
+int runAblation(const CommandOptions& o) {
+    io::ModelFile model;
+    int rc = 0;
+    if (!loadModel(o, model, rc)) {
+        return rc;
+    }
+    std::vector<data::SiBatch> si;
+    if (!loadSi(o, si, rc)) {
+        return rc;
+    }
+    auto rows = hybrid::runAblation(si, model, o.progress);
+    if (!rows) {
+        return fail(rows.error());
+    }
+    std::printf("Ablation (paper Table 3), one step ahead on the held-out 30 %%\n");
+    std::printf("%-26s %10s %8s %10s %8s %10s\n", "variant", "MAE X [%]", "R2 X", "MAE T [C]", "R2 T",
+                "LB p X");
+    for (const auto& r : *rows) {
+        std::printf("%-26s %10.4f %8.4f %10.4f %8.4f %10.3g\n", r.variant.c_str(), r.maeMoisture,
+                    r.r2Moisture, r.maeTemperature, r.r2Temperature, r.ljungBoxPMoisture);
+    }
+    if (!o.jsonPath.empty()) {
+        if (auto st = writeFileAtomically(o.jsonPath, hybrid::ablationJson(*rows)); !st) {
+            return fail(st.error());
+        }
+    }
+    return 0;
+}
+
 int runPipeline(const CommandOptions&) {
     return notImplemented("pipeline");
 }

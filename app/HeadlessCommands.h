@@ -26,6 +26,9 @@ struct CommandOptions {
     std::vector<std::string> bounds;
     int maxEvaluations = 2000;
     int horizonSteps = 30;
+    int residualLags = 8;
+    int degree = 2;
+    double ridge = -1; ///< < 0: the model's default
     data::CleaningOptions cleaning;
     bool quiet = false;
     Progress progress;
@@ -36,6 +39,8 @@ int runGenerate(const CommandOptions& o);
 int runSimulate(const CommandOptions& o);
 int runCalibrate(const CommandOptions& o);
 int runEvaluate(const CommandOptions& o);
+int runTrain(const CommandOptions& o);
+int runAblation(const CommandOptions& o);
 int runPipeline(const CommandOptions& o);
 
 } // namespace drytwin::app

@@ -2,6 +2,7 @@
 
 #include "diagnostics/LjungBox.h"
 #include "diagnostics/Metrics.h"
+#include "io/HybridTraining.h"
 #include "physics/LineSimulator.h"
 
 #include <chrono>
@@ -29,38 +30,52 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, c
     if (options.horizonSteps < 1) {
         return Error{ErrorKind::Usage, "horizon", "must be at least 1 step"};
     }
-    std::vector<std::size_t> rowsPerBatch;
-    std::vector<physics::LineInputs> inputs;
-    for (const auto& b : batches) {
-        rowsPerBatch.push_back(b.rows());
-        inputs.push_back(data::toLineInputs(b));
-    }
-    const auto split = data::chronologicalSplit(rowsPerBatch, options.trainFraction);
-    physics::SimulationOptions so;
-    so.switches = model.switches;
-    so.winnower = model.winnower;
-    auto sims = physics::simulateBatches(inputs, model.parameters, so, 0, progress);
+    auto sims = hybrid::simulatePbm(batches, model, model.switches, progress);
     if (!sims) {
         return sims.error();
     }
+    const auto test = hybrid::splitViews(batches, *sims, true, options.trainFraction);
     EvaluationResult out;
-    out.split = split.name;
+    {
+        std::vector<std::size_t> rowsPerBatch;
+        for (const auto& b : batches) {
+            rowsPerBatch.push_back(b.rows());
+        }
+        out.split = data::chronologicalSplit(rowsPerBatch, options.trainFraction).name;
+    }
     out.multiStepHorizon = options.horizonSteps;
-    std::vector<double> obsX, predX, obsT, predT;
-    for (std::size_t b = 0; b < batches.size(); ++b) {
-        const auto& s = batches[b];
-        const auto& r = (*sims)[b];
-        for (std::size_t k = split.test[b].begin; k < split.test[b].end; ++k) {
-            if (!s.keep[k]) {
-                continue;
+    // Observed and predicted series over the kept held-out rows; predictions NaN-free rows only.
+    struct Series {
+        std::vector<double> ox, px, ot, pt;
+        void add(double oX, double pX, double oT, double pT) {
+            if (std::isfinite(pX) && std::isfinite(pT)) {
+                ox.push_back(oX);
+                px.push_back(pX);
+                ot.push_back(oT);
+                pt.push_back(pT);
             }
-            obsX.push_back(data::dryToWetPct(s.xOutDb[k]));
-            predX.push_back(data::dryToWetPct(r.xOutDb[k]));
-            obsT.push_back(s.tOutK[k] - data::kKelvinOffset);
-            predT.push_back(r.tOutK[k] - data::kKelvinOffset);
+        }
+    };
+    auto metricsOf = [&](const Series& s, ModelMetrics& m, bool multi) {
+        (multi ? m.moistureMultiStep : m.moisture) = outputMetrics(s.ox, s.px, options.ljungBoxLags);
+        (multi ? m.temperatureMultiStep : m.temperature) = outputMetrics(s.ot, s.pt, options.ljungBoxLags);
+        if (!multi) {
+            for (std::size_t i = 0; i < s.ox.size(); ++i) {
+                m.moistureResidual.push_back(s.ox[i] - s.px[i]);
+                m.temperatureResidual.push_back(s.ot[i] - s.pt[i]);
+            }
+        }
+    };
+    Series pbmSeries;
+    for (const auto& v : test) {
+        for (std::size_t k = v.rows.begin; k < v.rows.end; ++k) {
+            if (v.batch->keep[k]) {
+                pbmSeries.add(data::dryToWetPct(v.batch->xOutDb[k]), data::dryToWetPct(v.pbm->xOutDb[k]),
+                              v.batch->tOutK[k] - data::kKelvinOffset, v.pbm->tOutK[k] - data::kKelvinOffset);
+            }
         }
     }
-    out.testRows = obsX.size();
+    out.testRows = pbmSeries.ox.size();
     if (out.testRows < 30) {
         return Error{ErrorKind::BadInput, "held-out data",
                      "only " + std::to_string(out.testRows) + " held-out rows pass the cleaning rules"};
@@ -68,15 +83,43 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, c
     // The PBM runs open loop on the inputs: its one-step and multi-step predictions coincide.
     ModelMetrics pbm;
     pbm.name = "pbm";
-    pbm.moisture = outputMetrics(obsX, predX, options.ljungBoxLags);
-    pbm.temperature = outputMetrics(obsT, predT, options.ljungBoxLags);
-    pbm.moistureMultiStep = pbm.moisture;
-    pbm.temperatureMultiStep = pbm.temperature;
-    for (std::size_t i = 0; i < obsX.size(); ++i) {
-        pbm.moistureResidual.push_back(obsX[i] - predX[i]);
-        pbm.temperatureResidual.push_back(obsT[i] - predT[i]);
-    }
+    metricsOf(pbmSeries, pbm, false);
+    metricsOf(pbmSeries, pbm, true);
     out.models.push_back(std::move(pbm));
+
+    for (const char* key : {hybrid::kExtInputKey, hybrid::kPgrlCcKey}) {
+        bool present = false;
+        auto rm = hybrid::loadResidualModel(model, key, present);
+        if (!present) {
+            continue;
+        }
+        if (!rm) {
+            return rm.error();
+        }
+        ModelMetrics m;
+        m.name = key;
+        for (int pass = 0; pass < 2; ++pass) {
+            Series s;
+            for (const auto& v : test) {
+                const auto p = pass == 0 ? rm->predictOneStep(v) : rm->predictAhead(v, options.horizonSteps);
+                for (std::size_t i = 0; i < v.rows.size(); ++i) {
+                    const std::size_t k = v.rows.begin + i;
+                    if (v.batch->keep[k]) {
+                        s.add(data::dryToWetPct(v.batch->xOutDb[k]), p.xOutPct[i],
+                              v.batch->tOutK[k] - data::kKelvinOffset, p.tOutC[i]);
+                    }
+                }
+            }
+            metricsOf(s, m, pass == 1);
+        }
+        const auto& c = rm->stability();
+        m.hasStability = true;
+        m.spectralRadiusBefore = c.spectralRadiusBefore;
+        m.spectralRadiusAfter = c.spectralRadiusAfter;
+        m.alpha = c.alpha;
+        m.certificateMaxEig = c.certificateMaxEig;
+        out.models.push_back(std::move(m));
+    }
     out.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return out;
 }
@@ -96,6 +139,12 @@ std::string toJson(const EvaluationResult& r) {
     multi["horizon_steps"] = r.multiStepHorizon;
     for (const auto& m : r.models) {
         j["models"][m.name] = {{"moisture", metrics(m.moisture)}, {"temperature", metrics(m.temperature)}};
+        if (m.hasStability) {
+            j["models"][m.name]["stability"] = {{"spectral_radius_before", m.spectralRadiusBefore},
+                                                {"spectral_radius_after", m.spectralRadiusAfter},
+                                                {"alpha", m.alpha},
+                                                {"certificate_max_eig", m.certificateMaxEig}};
+        }
         multi["models"][m.name] = {{"moisture", metrics(m.moistureMultiStep)},
                                    {"temperature", metrics(m.temperatureMultiStep)}};
     }

@@ -33,6 +33,8 @@ struct ModelMetrics {
     OutputMetrics temperatureMultiStep;
     std::vector<double> moistureResidual;    ///< held-out rows, % wb, for plots (ACF, PSD)
     std::vector<double> temperatureResidual; ///< held-out rows, °C
+    bool hasStability = false;
+    double spectralRadiusBefore = 0, spectralRadiusAfter = 0, alpha = 0, certificateMaxEig = 0;
 };
 
 /// @brief Held-out evaluation of every model a model file holds.

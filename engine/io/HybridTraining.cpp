@@ -1,0 +1,202 @@
+#include "io/HybridTraining.h"
+
+#include "io/Evaluation.h"
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+namespace drytwin::hybrid {
+
+Expected<std::vector<physics::SimulationResult>> simulatePbm(const std::vector<data::SiBatch>& batches,
+                                                             const io::ModelFile& model,
+                                                             const properties::ModelSwitches& switches,
+                                                             const Progress& progress) {
+    std::vector<physics::LineInputs> inputs;
+    for (const auto& b : batches) {
+        inputs.push_back(data::toLineInputs(b));
+    }
+    physics::SimulationOptions so;
+    so.switches = switches;
+    so.winnower = model.winnower;
+    return physics::simulateBatches(inputs, model.parameters, so, 0, progress);
+}
+
+std::vector<residual::BatchView> splitViews(const std::vector<data::SiBatch>& batches,
+                                            const std::vector<physics::SimulationResult>& pbm, bool test,
+                                            double trainFraction) {
+    std::vector<std::size_t> rows;
+    for (const auto& b : batches) {
+        rows.push_back(b.rows());
+    }
+    const auto split = data::chronologicalSplit(rows, trainFraction);
+    std::vector<residual::BatchView> views;
+    for (std::size_t b = 0; b < batches.size(); ++b) {
+        const auto& range = test ? split.test[b] : split.train[b];
+        if (range.size() > 0) {
+            views.push_back({&batches[b], &pbm[b], range});
+        }
+    }
+    return views;
+}
+
+Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& batches,
+                                             const io::ModelFile& model,
+                                             const residual::ResidualOptions& options,
+                                             const Progress& progress) {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto pbm = simulatePbm(batches, model, model.switches, progress);
+    if (!pbm) {
+        return pbm.error();
+    }
+    const auto views = splitViews(batches, *pbm, false);
+    if (reportProgress(progress, "train", 0.3, "PGRL-CC")) {
+        return Error{ErrorKind::Cancelled, "train", "cancelled by the user"};
+    }
+    auto full = residual::ResidualModel::train(views, options);
+    if (!full) {
+        return full.error();
+    }
+    if (reportProgress(progress, "train", 0.7, "external-input residual")) {
+        return Error{ErrorKind::Cancelled, "train", "cancelled by the user"};
+    }
+    residual::ResidualOptions ext = options;
+    ext.useProxies = false;
+    auto extModel = residual::ResidualModel::train(views, ext);
+    if (!extModel) {
+        return extModel.error();
+    }
+    reportProgress(progress, "train", 1.0, "done");
+    TrainingResult r{std::move(*full), std::move(*extModel), 0};
+    r.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return r;
+}
+
+void storeResidualModels(io::ModelFile& model, const TrainingResult& trained) {
+    auto extra = nlohmann::json::parse(model.extraJson.empty() ? "{}" : model.extraJson);
+    extra[kPgrlCcKey] = nlohmann::json::parse(trained.pgrlCc.toJson());
+    extra[kExtInputKey] = nlohmann::json::parse(trained.extInput.toJson());
+    model.extraJson = extra.dump();
+}
+
+Expected<residual::ResidualModel> loadResidualModel(const io::ModelFile& model, const std::string& key,
+                                                    bool& present) {
+    const auto extra = nlohmann::json::parse(model.extraJson.empty() ? "{}" : model.extraJson);
+    present = extra.contains(key);
+    if (!present) {
+        return Error{ErrorKind::BadInput, key, "not in the model file; run drytwin train first"};
+    }
+    auto m = residual::ResidualModel::fromJson(extra[key].dump());
+    if (!m) {
+        return Error{ErrorKind::BadInput, "model file: " + key, m.error().reason};
+    }
+    return m;
+}
+
+namespace {
+
+/// One-step metrics of a model over the test views (rows the cleaning keeps).
+AblationRow scoreOneStep(const residual::ResidualModel& m, const std::vector<residual::BatchView>& test) {
+    std::vector<double> ox, px, ot, pt;
+    for (const auto& v : test) {
+        const auto p = m.predictOneStep(v);
+        for (std::size_t i = 0; i < v.rows.size(); ++i) {
+            const std::size_t k = v.rows.begin + i;
+            if (!v.batch->keep[k] || !std::isfinite(p.xOutPct[i])) {
+                continue;
+            }
+            ox.push_back(data::dryToWetPct(v.batch->xOutDb[k]));
+            px.push_back(p.xOutPct[i]);
+            ot.push_back(v.batch->tOutK[k] - data::kKelvinOffset);
+            pt.push_back(p.tOutC[i]);
+        }
+    }
+    const auto mx = evaluation::outputMetrics(ox, px, 20);
+    const auto mt = evaluation::outputMetrics(ot, pt, 20);
+    AblationRow row;
+    row.maeMoisture = mx.mae;
+    row.r2Moisture = mx.r2;
+    row.maeTemperature = mt.mae;
+    row.r2Temperature = mt.r2;
+    row.ljungBoxPMoisture = mx.ljungBoxP;
+    return row;
+}
+
+} // namespace
+
+Expected<std::vector<AblationRow>> runAblation(const std::vector<data::SiBatch>& batches,
+                                               const io::ModelFile& model, const Progress& progress) {
+    struct Variant {
+        const char* name;
+        const char* description;
+        int physics;  ///< 0 none, 1 no clamp, 2 no L_v correction, 3 no C_p(X)
+        int learning; ///< 0 none, 4 no P⊥, 5 no CC weights, 6 no stability constraint
+    };
+    const Variant variants[] = {
+        {"full", "PGRL-CC, all components", 0, 0},
+        {"no_aw_clamp", "1. no a_w clamping", 1, 0},
+        {"no_lv_correction", "2. no L_v correction", 2, 0},
+        {"no_cp_moisture", "3. no C_p(X) dependency", 3, 0},
+        {"no_orthogonal_projection", "4. no orthogonal learning (P_perp)", 0, 4},
+        {"no_cc_weights", "5. no control-consistent weights", 0, 5},
+        {"no_stability_constraint", "6. no stability constraint (EDMDc-S)", 0, 6},
+    };
+    std::vector<AblationRow> rows;
+    std::vector<physics::SimulationResult> basePbm;
+    int done = 0;
+    for (const auto& v : variants) {
+        if (reportProgress(progress, "ablation", done / 7.0, v.name)) {
+            return Error{ErrorKind::Cancelled, "ablation", "cancelled by the user"};
+        }
+        properties::ModelSwitches sw = model.switches;
+        sw.clampWaterActivity = sw.clampWaterActivity && v.physics != 1;
+        sw.latentHeatCorrection = sw.latentHeatCorrection && v.physics != 2;
+        sw.moistureDependentCp = sw.moistureDependentCp && v.physics != 3;
+        std::vector<physics::SimulationResult> pbm;
+        if (v.physics == 0 && !basePbm.empty()) {
+            pbm = basePbm;
+        } else {
+            auto sims = simulatePbm(batches, model, sw);
+            if (!sims) {
+                return sims.error();
+            }
+            pbm = std::move(*sims);
+            if (v.physics == 0) {
+                basePbm = pbm;
+            }
+        }
+        residual::ResidualOptions o;
+        o.orthogonalProjection = v.learning != 4;
+        o.controlConsistentWeights = v.learning != 5;
+        o.stabilityConstraint = v.learning != 6;
+        auto m = residual::ResidualModel::train(splitViews(batches, pbm, false), o);
+        if (!m) {
+            return m.error();
+        }
+        AblationRow row = scoreOneStep(*m, splitViews(batches, pbm, true));
+        row.variant = v.name;
+        row.description = v.description;
+        rows.push_back(row);
+        ++done;
+    }
+    reportProgress(progress, "ablation", 1.0, "done");
+    return rows;
+}
+
+std::string ablationJson(const std::vector<AblationRow>& rows) {
+    nlohmann::json j;
+    j["split"] = "chronological_70_30";
+    j["horizon_steps"] = 1;
+    j["units"] = {{"moisture", "% wb"}, {"temperature", "°C"}};
+    for (const auto& r : rows) {
+        j["variants"].push_back({{"variant", r.variant},
+                                 {"description", r.description},
+                                 {"mae_moisture", r.maeMoisture},
+                                 {"r2_moisture", r.r2Moisture},
+                                 {"mae_temperature", r.maeTemperature},
+                                 {"r2_temperature", r.r2Temperature},
+                                 {"ljung_box_p_moisture", r.ljungBoxPMoisture}});
+    }
+    return j.dump(2) + "\n";
+}
+
+} // namespace drytwin::hybrid

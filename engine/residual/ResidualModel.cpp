@@ -1,0 +1,548 @@
+#include "residual/ResidualModel.h"
+
+#include "diagnostics/Stability.h"
+
+#include <chrono>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+namespace drytwin::residual {
+
+namespace {
+
+constexpr int kOutputs = 2; // outlet moisture (% wb) and temperature (°C)
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+/// PBM outlet changes Δŷ_{k+1}, Δŷ_k used as inputs: the next one carries what the PBM
+/// already knows, the current one cancels the PBM's reaction to input noise in e_k.
+constexpr int kPbmChangeLags = 2;
+
+const std::vector<std::string> kProxyNames{"X_HDT", "T_HDT", "X_Conv", "T_Conv", "X_mix", "T_mix"};
+const std::vector<std::string> kDisturbanceNames{"feed", "X_in", "T_in", "T_amb", "RH"};
+
+std::vector<std::string> inputNames(bool proxies) {
+    std::vector<std::string> n;
+    if (proxies) {
+        n = kProxyNames;
+    }
+    n.push_back("T_hot");
+    n.insert(n.end(), kDisturbanceNames.begin(), kDisturbanceNames.end());
+    return n;
+}
+
+nlohmann::json matrixJson(const Eigen::MatrixXd& m) {
+    std::vector<double> data;
+    data.reserve(static_cast<std::size_t>(m.size()));
+    for (Eigen::Index r = 0; r < m.rows(); ++r) {
+        for (Eigen::Index c = 0; c < m.cols(); ++c) {
+            data.push_back(m(r, c));
+        }
+    }
+    return {{"rows", m.rows()}, {"cols", m.cols()}, {"data", data}};
+}
+
+Eigen::MatrixXd matrixFrom(const nlohmann::json& j) {
+    const auto rows = j.at("rows").get<Eigen::Index>();
+    const auto cols = j.at("cols").get<Eigen::Index>();
+    const auto data = j.at("data").get<std::vector<double>>();
+    if (static_cast<Eigen::Index>(data.size()) != rows * cols) {
+        throw std::runtime_error("matrix data size does not match rows × cols");
+    }
+    Eigen::MatrixXd m(rows, cols);
+    for (Eigen::Index r = 0; r < rows; ++r) {
+        for (Eigen::Index c = 0; c < cols; ++c) {
+            m(r, c) = data[static_cast<std::size_t>(r * cols + c)];
+        }
+    }
+    return m;
+}
+
+Eigen::VectorXd vectorFrom(const nlohmann::json& j) {
+    const auto v = j.get<std::vector<double>>();
+    return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+}
+
+/// Weighted ridge: Θ minimising Σ_i w_i ‖y_i − Θ r_i‖² + Σ_j λ_j ‖Θ_{:,j}‖², rows are snapshots.
+Eigen::MatrixXd weightedRidge(const Eigen::MatrixXd& r, const Eigen::MatrixXd& y, const Eigen::VectorXd& w,
+                              const Eigen::VectorXd& lambda) {
+    const Eigen::MatrixXd rw = r.array().colwise() * w.array();
+    Eigen::MatrixXd gram = r.transpose() * rw;
+    gram.diagonal() += lambda;
+    const Eigen::MatrixXd rhs = rw.transpose() * y;
+    return gram.ldlt().solve(rhs).transpose();
+}
+
+} // namespace
+
+Status ResidualOptions::validate() const {
+    if (degree < 1 || degree > 3) {
+        return Error{ErrorKind::BadInput, "degree", "dictionary degree must be 1, 2 or 3"};
+    }
+    if (residualLags < 1 || residualLags > 60) {
+        return Error{ErrorKind::BadInput, "residualLags", "must lie in [1, 60]"};
+    }
+    for (double l : {lambdaA, lambdaB, lambdaE, lambdaC, kappa1, kappa2, deltaPct}) {
+        if (!(l >= 0 && std::isfinite(l))) {
+            return Error{ErrorKind::BadInput, "ridge and weight parameters", "must be finite and ≥ 0"};
+        }
+    }
+    if (!(moistureLowPct < moistureHighPct)) {
+        return Error{ErrorKind::BadInput, "moisture constraints", "low must be below high"};
+    }
+    if (!(alphaMax > 0 && alphaMax < 1 && radiusMax > 0 && radiusMax < alphaMax)) {
+        return Error{ErrorKind::BadInput, "alphaMax", "need 0 < radiusMax < alphaMax < 1"};
+    }
+    return {};
+}
+
+bool observedResidual(const data::SiBatch& b, const physics::SimulationResult& pbm, std::size_t k, double& ex,
+                      double& et) {
+    ex = data::dryToWetPct(b.xOutDb[k]) - data::dryToWetPct(pbm.xOutDb[k]);
+    et = b.tOutK[k] - pbm.tOutK[k];
+    return std::isfinite(ex) && std::isfinite(et);
+}
+
+bool ResidualModel::features(const BatchView& v, std::size_t k, Eigen::VectorXd& zLin, double& u,
+                             Eigen::VectorXd& d) const {
+    const auto& b = *v.batch;
+    const auto& p = *v.pbm;
+    std::vector<double> z;
+    if (m_options.useProxies) {
+        z = {p.proxyXHdtDb[k], p.proxyTHdtK[k],  p.proxyXConvDb[k],
+             p.proxyTConvK[k], p.proxyXMixDb[k], p.proxyTMixK[k]};
+    }
+    z.push_back(b.tHotK[k]);
+    for (double x : {b.feedKgPerS[k], b.xInDb[k], b.tInK[k], b.tAmbK[k], b.rhAmb[k]}) {
+        z.push_back(x);
+    }
+    zLin = Eigen::Map<const Eigen::VectorXd>(z.data(), static_cast<Eigen::Index>(z.size()));
+    const Eigen::VectorXd s = (zLin - m_dict.mean()).cwiseQuotient(m_dict.scale());
+    const Eigen::Index uIdx = m_options.useProxies ? 6 : 0;
+    u = s(uIdx);
+    // d = [1, standardised disturbances, standardised proxies]: the base features other than u.
+    // With proxies, also the PBM's change of outlet prediction from k to k+1: the parcel that
+    // reaches the outlet next is already in the line, so the PBM knows it one step ahead.
+    const int lags = std::min(m_options.residualLags, kPbmChangeLags);
+    d.resize(s.size() + (m_options.useProxies ? kOutputs * lags : 0));
+    d(0) = 1.0;
+    Eigen::Index j = 1;
+    for (Eigen::Index i = 0; i < s.size(); ++i) {
+        if (i != uIdx) {
+            d(j++) = s(i);
+        }
+    }
+    if (m_options.useProxies) {
+        // … and its recent history, so that the PBM's reaction to input noise, which the
+        // residual carries with the opposite sign, can be told apart from the plant's.
+        for (int l = 0; l < lags; ++l) {
+            const std::size_t hi =
+                std::min(k + 1 >= static_cast<std::size_t>(l) ? k + 1 - l : 0, p.xOutDb.size() - 1);
+            const std::size_t lo = hi > 0 ? hi - 1 : 0;
+            d(j++) = (data::dryToWetPct(p.xOutDb[hi]) - data::dryToWetPct(p.xOutDb[lo])) / m_eScale(0);
+            d(j++) = (p.tOutK[hi] - p.tOutK[lo]) / m_eScale(1);
+        }
+    }
+    return zLin.allFinite();
+}
+
+Eigen::VectorXd ResidualModel::liftedResidualFeatures(const Eigen::VectorXd& z) const {
+    const Eigen::VectorXd psi = m_dict.lift(z);
+    Eigen::VectorXd base(static_cast<Eigen::Index>(m_baseIdx.size()));
+    for (std::size_t i = 0; i < m_baseIdx.size(); ++i) {
+        base(static_cast<Eigen::Index>(i)) = psi(m_baseIdx[i]);
+    }
+    Eigen::VectorXd res(static_cast<Eigen::Index>(m_resIdx.size()));
+    for (std::size_t i = 0; i < m_resIdx.size(); ++i) {
+        res(static_cast<Eigen::Index>(i)) = psi(m_resIdx[i]);
+    }
+    if (m_projection.size() > 0) {
+        res -= m_projection.transpose() * base; // P⊥ (Eq. 27) as the fixed map learned in training
+    }
+    return res.cwiseQuotient(m_featureScale);
+}
+
+bool ResidualModel::stateAt(const BatchView& v, std::size_t k, const std::vector<double>& ex,
+                            const std::vector<double>& et, Eigen::VectorXd& x, double& u,
+                            Eigen::VectorXd& d) const {
+    const int lags = m_options.residualLags;
+    Eigen::VectorXd z;
+    if (!features(v, k, z, u, d)) {
+        return false;
+    }
+    const Eigen::VectorXd phi = liftedResidualFeatures(z);
+    x.resize(kOutputs * lags + phi.size());
+    for (int l = 0; l < lags; ++l) {
+        const std::size_t j = k >= static_cast<std::size_t>(l) ? k - static_cast<std::size_t>(l) : 0;
+        if (!std::isfinite(ex[j]) || !std::isfinite(et[j])) {
+            return false;
+        }
+        x(kOutputs * l) = ex[j] / m_eScale(0);
+        x(kOutputs * l + 1) = et[j] / m_eScale(1);
+    }
+    x.tail(phi.size()) = phi;
+    return true;
+}
+
+Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& training,
+                                             const ResidualOptions& o) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (auto st = o.validate(); !st) {
+        return st.error();
+    }
+    ResidualModel m;
+    m.m_options = o;
+    m.m_dict = PolynomialDictionary(inputNames(o.useProxies), o.degree);
+    const int lags = o.residualLags;
+
+    // 1. Residuals and snapshot rows (k, k+1 both in the training range with valid lags).
+    struct Snapshot {
+        std::size_t view;
+        std::size_t k;
+    };
+    std::vector<Snapshot> snaps;
+    std::vector<std::vector<double>> ex(training.size()), et(training.size());
+    for (std::size_t vi = 0; vi < training.size(); ++vi) {
+        const auto& v = training[vi];
+        const std::size_t n = v.batch->rows();
+        if (v.pbm->xOutDb.size() != n) {
+            return Error{ErrorKind::BadInput, "residual training",
+                         "the PBM run must cover every row of the batch"};
+        }
+        ex[vi].assign(n, kNaN);
+        et[vi].assign(n, kNaN);
+        for (std::size_t k = 0; k < n; ++k) {
+            observedResidual(*v.batch, *v.pbm, k, ex[vi][k], et[vi][k]);
+        }
+        for (std::size_t k = v.rows.begin + static_cast<std::size_t>(lags - 1); k + 1 < v.rows.end; ++k) {
+            bool ok = v.batch->keep[k] && v.batch->keep[k + 1];
+            for (int l = -1; ok && l < lags; ++l) {
+                const std::size_t j = k - static_cast<std::size_t>(l == -1 ? 0 : l) + (l == -1 ? 1 : 0);
+                ok = std::isfinite(ex[vi][j]) && std::isfinite(et[vi][j]);
+            }
+            if (ok) {
+                snaps.push_back({vi, k});
+            }
+        }
+    }
+    const auto n = static_cast<Eigen::Index>(snaps.size());
+    if (n < 200) {
+        return Error{ErrorKind::BadInput, "residual training",
+                     "only " + std::to_string(n) + " usable snapshot pairs; need at least 200"};
+    }
+    m.m_snapshots = snaps.size();
+
+    // 2. Dictionary scaling on the training inputs.
+    const int nz = m.m_dict.inputCount();
+    Eigen::MatrixXd zNow(n, nz), zNext(n, nz);
+    {
+        double u = 0;
+        Eigen::VectorXd d, z;
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const auto& s = snaps[static_cast<std::size_t>(i)];
+            m.features(training[s.view], s.k, z, u, d);
+            zNow.row(i) = z.transpose();
+            m.features(training[s.view], s.k + 1, z, u, d);
+            zNext.row(i) = z.transpose();
+        }
+    }
+    m.m_dict.fitScaling(zNow);
+
+    // 3. Control-consistent weights, Eq. (29): ℓ = (X_out − target)², margin to [low, high].
+    Eigen::VectorXd w = Eigen::VectorXd::Ones(n);
+    if (o.controlConsistentWeights) {
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const auto& s = snaps[static_cast<std::size_t>(i)];
+            const double y = data::dryToWetPct(training[s.view].batch->xOutDb[s.k]);
+            const double dl = 2.0 * std::abs(y - o.moistureTargetPct);
+            const double margin = std::min(y - o.moistureLowPct, o.moistureHighPct - y);
+            w(i) = 1.0 + o.kappa1 * dl + o.kappa2 * std::max(0.0, o.deltaPct - margin);
+        }
+    }
+    const double wSum = w.sum();
+
+    // 4. Lifting and orthogonal projection, Eq. (27), without the N × N matrix:
+    //    Φ̃_res = Φ_res − Φ_base G, G = (Φ_bᵀ W Φ_b)⁻¹ Φ_bᵀ W Φ_res.
+    const Eigen::MatrixXd psiNow = m.m_dict.lift(zNow);
+    const Eigen::MatrixXd psiNext = m.m_dict.lift(zNext);
+    m.m_baseIdx = m.m_dict.constantAndLinear();
+    for (int f = 0; f < m.m_dict.featureCount(); ++f) {
+        if (std::find(m.m_baseIdx.begin(), m.m_baseIdx.end(), f) == m.m_baseIdx.end()) {
+            m.m_resIdx.push_back(f);
+        }
+    }
+    auto columns = [](const Eigen::MatrixXd& a, const std::vector<int>& idx) {
+        Eigen::MatrixXd out(a.rows(), static_cast<Eigen::Index>(idx.size()));
+        for (std::size_t i = 0; i < idx.size(); ++i) {
+            out.col(static_cast<Eigen::Index>(i)) = a.col(idx[i]);
+        }
+        return out;
+    };
+    const Eigen::MatrixXd baseNow = columns(psiNow, m.m_baseIdx);
+    Eigen::MatrixXd resNow = columns(psiNow, m.m_resIdx);
+    Eigen::MatrixXd resNext = columns(psiNext, m.m_resIdx);
+    if (o.orthogonalProjection && resNow.cols() > 0) {
+        const Eigen::MatrixXd bw = baseNow.array().colwise() * w.array();
+        Eigen::MatrixXd gram = baseNow.transpose() * bw;
+        gram.diagonal().array() += 1e-10 * gram.diagonal().maxCoeff();
+        m.m_projection = gram.ldlt().solve(bw.transpose() * resNow);
+        resNow -= baseNow * m.m_projection;
+        resNext -= columns(psiNext, m.m_baseIdx) * m.m_projection;
+    }
+    m.m_featureScale = Eigen::VectorXd::Ones(resNow.cols());
+    for (Eigen::Index c = 0; c < resNow.cols(); ++c) {
+        const double sd = std::sqrt(resNow.col(c).squaredNorm() / static_cast<double>(n));
+        m.m_featureScale(c) = sd > 1e-12 ? sd : 1.0;
+    }
+    resNow = resNow * m.m_featureScale.cwiseInverse().asDiagonal();
+    resNext = resNext * m.m_featureScale.cwiseInverse().asDiagonal();
+
+    // 5. Snapshot matrices X−, X+, U−, D− (rows are snapshots).
+    for (int j = 0; j < kOutputs; ++j) {
+        double s2 = 0;
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const auto& s = snaps[static_cast<std::size_t>(i)];
+            const double v = j == 0 ? ex[s.view][s.k] : et[s.view][s.k];
+            s2 += v * v;
+        }
+        const double sd = std::sqrt(s2 / static_cast<double>(n));
+        m.m_eScale(j) = sd > 1e-12 ? sd : 1.0;
+    }
+    const Eigen::Index nx = kOutputs * lags + resNow.cols();
+    const Eigen::Index nd = nz + (o.useProxies ? kOutputs * std::min(lags, kPbmChangeLags)
+                                               : 0); // [1, z without u, PBM outlet changes]
+    Eigen::MatrixXd xm(n, nx), xp(n, nx), um(n, 1), dm(n, nd);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const auto& s = snaps[static_cast<std::size_t>(i)];
+        for (int l = 0; l < lags; ++l) {
+            xm(i, kOutputs * l) = ex[s.view][s.k - static_cast<std::size_t>(l)] / m.m_eScale(0);
+            xm(i, kOutputs * l + 1) = et[s.view][s.k - static_cast<std::size_t>(l)] / m.m_eScale(1);
+            xp(i, kOutputs * l) = ex[s.view][s.k + 1 - static_cast<std::size_t>(l)] / m.m_eScale(0);
+            xp(i, kOutputs * l + 1) = et[s.view][s.k + 1 - static_cast<std::size_t>(l)] / m.m_eScale(1);
+        }
+        xm.row(i).tail(resNow.cols()) = resNow.row(i);
+        xp.row(i).tail(resNow.cols()) = resNext.row(i);
+        double u = 0;
+        Eigen::VectorXd d, z;
+        m.features(training[s.view], s.k, z, u, d);
+        um(i, 0) = u;
+        dm.row(i) = d.transpose();
+    }
+
+    // 6. CC-EDMDc, Eq. (30): weighted ridge for [A B E].
+    Eigen::MatrixXd r(n, nx + 1 + nd);
+    r << xm, um, dm;
+    Eigen::VectorXd lambda(r.cols());
+    lambda.head(nx).setConstant(o.lambdaA * wSum);
+    lambda(nx) = o.lambdaB * wSum;
+    lambda.tail(nd).setConstant(o.lambdaE * wSum);
+    const Eigen::MatrixXd theta = weightedRidge(r, xp, w, lambda);
+    m.m_a = theta.leftCols(nx);
+    m.m_b = theta.middleCols(nx, 1);
+    m.m_e = theta.rightCols(nd);
+    m.m_aFree = m.m_a;
+
+    // 7. Stability constraint with a certificate; refit B, E for the constrained A.
+    if (o.stabilityConstraint) {
+        m.m_cert = enforceStability(m.m_a, o.alphaMax, o.radiusMax);
+        if (m.m_cert.modified) {
+            Eigen::MatrixXd ru(n, 1 + nd);
+            ru << um, dm;
+            const Eigen::MatrixXd target = xp - xm * m.m_a.transpose();
+            Eigen::VectorXd lu(1 + nd);
+            lu(0) = o.lambdaB * wSum;
+            lu.tail(nd).setConstant(o.lambdaE * wSum);
+            const Eigen::MatrixXd be = weightedRidge(ru, target, w, lu);
+            m.m_b = be.leftCols(1);
+            m.m_e = be.rightCols(nd);
+        }
+    } else {
+        const double rho = diagnostics::spectralRadius(m.m_a);
+        m.m_cert = rho < o.alphaMax ? certify(m.m_a, scaledLyapunov(m.m_a, 0.5 * (rho + o.alphaMax)),
+                                              0.5 * (rho + o.alphaMax))
+                                    : StabilityCertificate{};
+        m.m_cert.spectralRadiusBefore = rho;
+        m.m_cert.spectralRadiusAfter = rho;
+    }
+
+    // 8. Output matrix C (Algorithm 1, step 15): ê_k ≈ C x_k.
+    Eigen::MatrixXd eNow(n, kOutputs);
+    eNow.col(0) = xm.col(0);
+    eNow.col(1) = xm.col(1);
+    m.m_c = weightedRidge(xm, eNow, w, Eigen::VectorXd::Constant(nx, o.lambdaC * wSum));
+    m.m_trainSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return m;
+}
+
+HybridPrediction ResidualModel::predictOneStep(const BatchView& v) const {
+    return predictAhead(v, 1);
+}
+
+HybridPrediction ResidualModel::predictAhead(const BatchView& v, int horizon) const {
+    const std::size_t n = v.batch->rows();
+    const std::size_t count = v.rows.size();
+    HybridPrediction out;
+    out.xOutPct.assign(count, kNaN);
+    out.tOutC.assign(count, kNaN);
+    out.residualXPct.assign(count, kNaN);
+    out.residualTC.assign(count, kNaN);
+    std::vector<double> ex(n, kNaN), et(n, kNaN);
+    for (std::size_t k = 0; k < n; ++k) {
+        observedResidual(*v.batch, *v.pbm, k, ex[k], et[k]);
+    }
+    // Exogenous inputs of every row, computed once.
+    std::vector<double> us(n, kNaN);
+    std::vector<Eigen::VectorXd> ds(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        Eigen::VectorXd z;
+        features(v, k, z, us[k], ds[k]);
+    }
+    const auto h = static_cast<std::size_t>(std::max(1, horizon));
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t target = v.rows.begin + i;
+        if (target < h) {
+            continue;
+        }
+        const std::size_t origin = target - h;
+        Eigen::VectorXd x;
+        double u = 0;
+        Eigen::VectorXd d;
+        if (!stateAt(v, origin, ex, et, x, u, d)) {
+            continue;
+        }
+        for (std::size_t j = origin; j < target; ++j) {
+            x = m_a * x + m_b * us[j] + m_e * ds[j];
+        }
+        const Eigen::Vector2d e = m_c * x;
+        out.residualXPct[i] = e(0) * m_eScale(0);
+        out.residualTC[i] = e(1) * m_eScale(1);
+        out.xOutPct[i] = data::dryToWetPct(v.pbm->xOutDb[target]) + out.residualXPct[i]; // Eq. (21)
+        out.tOutC[i] = v.pbm->tOutK[target] - data::kKelvinOffset + out.residualTC[i];
+    }
+    return out;
+}
+
+std::vector<Eigen::VectorXd> ResidualModel::rollout(const Eigen::VectorXd& x0, const std::vector<double>& u,
+                                                    const std::vector<Eigen::VectorXd>& d) const {
+    std::vector<Eigen::VectorXd> xs{x0};
+    for (std::size_t j = 0; j < u.size() && j < d.size(); ++j) {
+        xs.push_back(m_a * xs.back() + m_b * u[j] + m_e * d[j]);
+    }
+    return xs;
+}
+
+std::string ResidualModel::toJson() const {
+    nlohmann::json j;
+    const auto& o = m_options;
+    j["format_version"] = 1;
+    j["options"] = {{"use_proxies", o.useProxies},
+                    {"degree", o.degree},
+                    {"residual_lags", o.residualLags},
+                    {"orthogonal_projection", o.orthogonalProjection},
+                    {"control_consistent_weights", o.controlConsistentWeights},
+                    {"stability_constraint", o.stabilityConstraint},
+                    {"lambda_A", o.lambdaA},
+                    {"lambda_B", o.lambdaB},
+                    {"lambda_E", o.lambdaE},
+                    {"lambda_C", o.lambdaC},
+                    {"kappa1", o.kappa1},
+                    {"kappa2", o.kappa2},
+                    {"delta_pct", o.deltaPct},
+                    {"moisture_target_pct", o.moistureTargetPct},
+                    {"moisture_low_pct", o.moistureLowPct},
+                    {"moisture_high_pct", o.moistureHighPct},
+                    {"alpha_max", o.alphaMax},
+                    {"radius_max", o.radiusMax}};
+    j["dictionary"] = {
+        {"inputs", m_dict.inputNames()},
+        {"mean", std::vector<double>(m_dict.mean().data(), m_dict.mean().data() + m_dict.mean().size())},
+        {"scale", std::vector<double>(m_dict.scale().data(), m_dict.scale().data() + m_dict.scale().size())},
+        {"features", m_dict.featureNames()}};
+    j["base_features"] = m_baseIdx;
+    j["residual_features"] = m_resIdx;
+    j["projection_G"] = matrixJson(m_projection);
+    j["feature_scale"] =
+        std::vector<double>(m_featureScale.data(), m_featureScale.data() + m_featureScale.size());
+    j["residual_scale"] = {m_eScale(0), m_eScale(1)};
+    j["A"] = matrixJson(m_a);
+    j["A_unconstrained"] = matrixJson(m_aFree);
+    j["B"] = matrixJson(m_b);
+    j["E"] = matrixJson(m_e);
+    j["C"] = matrixJson(m_c);
+    j["stability"] = {{"spectral_radius_before", m_cert.spectralRadiusBefore},
+                      {"spectral_radius_after", m_cert.spectralRadiusAfter},
+                      {"alpha", m_cert.alpha},
+                      {"certificate_max_eig", m_cert.certificateMaxEig},
+                      {"certified", m_cert.certified},
+                      {"P", matrixJson(m_cert.p)}};
+    j["training_snapshots"] = m_snapshots;
+    j["training_seconds"] = m_trainSeconds;
+    return j.dump();
+}
+
+Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
+    try {
+        const auto j = nlohmann::json::parse(text);
+        ResidualModel m;
+        auto& o = m.m_options;
+        const auto& jo = j.at("options");
+        o.useProxies = jo.at("use_proxies");
+        o.degree = jo.at("degree");
+        o.residualLags = jo.at("residual_lags");
+        o.orthogonalProjection = jo.at("orthogonal_projection");
+        o.controlConsistentWeights = jo.at("control_consistent_weights");
+        o.stabilityConstraint = jo.at("stability_constraint");
+        o.lambdaA = jo.at("lambda_A");
+        o.lambdaB = jo.at("lambda_B");
+        o.lambdaE = jo.at("lambda_E");
+        o.lambdaC = jo.at("lambda_C");
+        o.kappa1 = jo.at("kappa1");
+        o.kappa2 = jo.at("kappa2");
+        o.deltaPct = jo.at("delta_pct");
+        o.moistureTargetPct = jo.at("moisture_target_pct");
+        o.moistureLowPct = jo.at("moisture_low_pct");
+        o.moistureHighPct = jo.at("moisture_high_pct");
+        o.alphaMax = jo.at("alpha_max");
+        o.radiusMax = jo.at("radius_max");
+        if (auto st = o.validate(); !st) {
+            return st.error();
+        }
+        m.m_dict =
+            PolynomialDictionary(j.at("dictionary").at("inputs").get<std::vector<std::string>>(), o.degree);
+        m.m_dict.setScaling(vectorFrom(j.at("dictionary").at("mean")),
+                            vectorFrom(j.at("dictionary").at("scale")));
+        m.m_baseIdx = j.at("base_features").get<std::vector<int>>();
+        m.m_resIdx = j.at("residual_features").get<std::vector<int>>();
+        m.m_projection = matrixFrom(j.at("projection_G"));
+        m.m_featureScale = vectorFrom(j.at("feature_scale"));
+        const auto es = j.at("residual_scale").get<std::vector<double>>();
+        m.m_eScale = Eigen::Vector2d(es.at(0), es.at(1));
+        m.m_a = matrixFrom(j.at("A"));
+        m.m_aFree = matrixFrom(j.at("A_unconstrained"));
+        m.m_b = matrixFrom(j.at("B"));
+        m.m_e = matrixFrom(j.at("E"));
+        m.m_c = matrixFrom(j.at("C"));
+        const auto& s = j.at("stability");
+        m.m_cert.spectralRadiusBefore = s.at("spectral_radius_before");
+        m.m_cert.spectralRadiusAfter = s.at("spectral_radius_after");
+        m.m_cert.alpha = s.at("alpha");
+        m.m_cert.certificateMaxEig = s.at("certificate_max_eig");
+        m.m_cert.certified = s.at("certified");
+        m.m_cert.p = matrixFrom(s.at("P"));
+        m.m_snapshots = j.value("training_snapshots", std::size_t(0));
+        m.m_trainSeconds = j.value("training_seconds", 0.0);
+        const Eigen::Index nx = m.m_a.rows();
+        const bool shapesOk =
+            m.m_a.cols() == nx && m.m_b.rows() == nx && m.m_e.rows() == nx && m.m_c.cols() == nx &&
+            m.m_c.rows() == kOutputs &&
+            nx == kOutputs * o.residualLags + static_cast<Eigen::Index>(m.m_resIdx.size()) &&
+            m.m_e.cols() == m.m_dict.inputCount() +
+                                (o.useProxies ? kOutputs * std::min(o.residualLags, kPbmChangeLags) : 0);
+        if (!shapesOk) {
+            return Error{ErrorKind::BadInput, "residual model", "matrix shapes do not fit together"};
+        }
+        return m;
+    } catch (const std::exception& e) {
+        return Error{ErrorKind::BadInput, "residual model", std::string("malformed: ") + e.what()};
+    }
+}
+
+} // namespace drytwin::residual

@@ -1,0 +1,115 @@
+#pragma once
+
+#include "common/Error.h"
+#include "data/SiBatch.h"
+#include "physics/LineSimulator.h"
+#include "residual/PolynomialDictionary.h"
+#include "residual/StabilityConstraint.h"
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+namespace drytwin::residual {
+
+/// @brief Options of the PGRL-CC residual model (paper §III) and its variants.
+struct ResidualOptions {
+    /// z = [x̂_mech, u, d] (Eq. 24); false gives the external-input baseline z = [u, d].
+    bool useProxies = true;
+    int degree = 2;                       ///< dictionary degree (Eq. 26)
+    int residualLags = 8;                 ///< measured residuals e_k … e_{k−L+1} in the lifted state
+    bool orthogonalProjection = true;     ///< P⊥ of Eq. 27 on the residual features
+    bool controlConsistentWeights = true; ///< ω of Eq. 29 (else W = I)
+    bool stabilityConstraint = true;      ///< A with a certificate (Eq. 30)
+    double lambdaA = 1e-4;                ///< ridge weights of Eq. 30, per unit of total weight Σω
+    double lambdaB = 1e-4;
+    double lambdaE = 1e-4;
+    double lambdaC = 1e-8; ///< step 15 of Algorithm 1
+    // Eq. 29: ℓ(y) = (X_out − target)², constraints X_out ∈ [low, high] (% wb).
+    double kappa1 = 1.0;
+    double kappa2 = 5.0;
+    double deltaPct = 0.3;
+    double moistureTargetPct = 13.0;
+    double moistureLowPct = 12.0;
+    double moistureHighPct = 14.0;
+    double alphaMax = 0.999;  ///< largest contraction factor α accepted
+    double radiusMax = 0.995; ///< eigenvalues beyond this radius are pulled onto it
+    Status validate() const;
+};
+
+/// @brief Where a model's rows come from: a batch, its PBM run and the rows to use.
+struct BatchView {
+    const data::SiBatch* batch = nullptr;
+    const physics::SimulationResult* pbm = nullptr; ///< over every row of the batch
+    data::RowRange rows;
+};
+
+/// @brief Hybrid predictions (Eq. 21) for the rows of a view; NaN where none can be made.
+struct HybridPrediction {
+    std::vector<double> xOutPct;
+    std::vector<double> tOutC;
+    std::vector<double> residualXPct; ///< ê, % wb
+    std::vector<double> residualTC;   ///< ê, °C
+};
+
+/// @brief The PGRL-CC residual model: a lifted linear predictor of the PBM's residual
+/// (Eqs. 20–30, Algorithm 1). State x_k = [e_k … e_{k−L+1}, P⊥Ψ_res(z_k)], dynamics
+/// x_{k+1} = A x_k + B u_k + E d_k with d_k = [1, d, x̂_mech] (the base features), and
+/// ê_k = C x_k. Thread-safe for concurrent const use.
+class ResidualModel {
+public:
+    /// @brief Algorithm 1 on the training rows of every view.
+    static Expected<ResidualModel> train(const std::vector<BatchView>& training,
+                                         const ResidualOptions& options);
+
+    /// @brief One-step-ahead: ê_{k+1} from the measured residuals up to k.
+    HybridPrediction predictOneStep(const BatchView& view) const;
+    /// @brief H-step-ahead: the prediction of row k made at k − H from measurements up to k − H,
+    /// then inputs only.
+    HybridPrediction predictAhead(const BatchView& view, int horizon) const;
+    /// @brief Free rollout of the lifted state from x0 under given inputs (for boundedness checks).
+    std::vector<Eigen::VectorXd> rollout(const Eigen::VectorXd& x0, const std::vector<double>& u,
+                                         const std::vector<Eigen::VectorXd>& d) const;
+
+    const Eigen::MatrixXd& a() const { return m_a; }
+    const Eigen::MatrixXd& b() const { return m_b; }
+    const Eigen::MatrixXd& e() const { return m_e; }
+    const Eigen::MatrixXd& c() const { return m_c; }
+    const Eigen::MatrixXd& aUnconstrained() const { return m_aFree; }
+    const StabilityCertificate& stability() const { return m_cert; }
+    const ResidualOptions& options() const { return m_options; }
+    int stateSize() const { return static_cast<int>(m_a.rows()); }
+    std::size_t trainingSnapshots() const { return m_snapshots; }
+    double trainingSeconds() const { return m_trainSeconds; }
+
+    /// @brief Everything needed to predict, as a JSON object (stored in the model file).
+    std::string toJson() const;
+    static Expected<ResidualModel> fromJson(const std::string& json);
+
+private:
+    struct RowFeatures;
+    bool features(const BatchView& v, std::size_t k, Eigen::VectorXd& zLin, double& u,
+                  Eigen::VectorXd& d) const;
+    Eigen::VectorXd liftedResidualFeatures(const Eigen::VectorXd& z) const;
+    bool stateAt(const BatchView& v, std::size_t k, const std::vector<double>& ex,
+                 const std::vector<double>& et, Eigen::VectorXd& x, double& u, Eigen::VectorXd& d) const;
+
+    ResidualOptions m_options;
+    PolynomialDictionary m_dict;
+    std::vector<int> m_baseIdx;
+    std::vector<int> m_resIdx;
+    Eigen::MatrixXd m_projection;   ///< G of P⊥: Φ̃_res = Φ_res − Φ_base G
+    Eigen::VectorXd m_featureScale; ///< std of Φ̃_res columns
+    Eigen::Vector2d m_eScale{1, 1}; ///< std of the residual outputs (% wb, °C)
+    double m_uMean = 0, m_uScale = 1;
+    Eigen::MatrixXd m_a, m_aFree, m_b, m_e, m_c;
+    StabilityCertificate m_cert;
+    std::size_t m_snapshots = 0;
+    double m_trainSeconds = 0;
+};
+
+/// @brief Observed residual e = y_obs − ŷ_mech (Eq. 20) of a row: moisture in % wb, temperature in °C.
+bool observedResidual(const data::SiBatch& b, const physics::SimulationResult& pbm, std::size_t k, double& ex,
+                      double& et);
+
+} // namespace drytwin::residual
