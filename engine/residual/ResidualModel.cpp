@@ -1,6 +1,7 @@
 #include "residual/ResidualModel.h"
 
 #include "diagnostics/Stability.h"
+#include "residual/OrthogonalProjection.h"
 
 #include <chrono>
 #include <cmath>
@@ -280,10 +281,7 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
     Eigen::MatrixXd resNow = columns(psiNow, m.m_resIdx);
     Eigen::MatrixXd resNext = columns(psiNext, m.m_resIdx);
     if (o.orthogonalProjection && resNow.cols() > 0) {
-        const Eigen::MatrixXd bw = baseNow.array().colwise() * w.array();
-        Eigen::MatrixXd gram = baseNow.transpose() * bw;
-        gram.diagonal().array() += 1e-10 * gram.diagonal().maxCoeff();
-        m.m_projection = gram.ldlt().solve(bw.transpose() * resNow);
+        m.m_projection = projectionCoefficients(baseNow, resNow, w);
         resNow -= baseNow * m.m_projection;
         resNext -= columns(psiNext, m.m_baseIdx) * m.m_projection;
     }
