@@ -108,6 +108,9 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     train->add_option("--degree", o.degree, "polynomial dictionary degree (1-3)")->capture_default_str();
     train->add_option("--ridge", o.ridge,
                       "ridge weight lambda_A = lambda_B = lambda_E per unit of total weight");
+    train->add_option("--lstm-epochs", o.lstmEpochs, "training epochs of the LSTM baseline")
+        ->capture_default_str();
+    train->add_option("--seed", o.seed, "seed of the LSTM baseline")->capture_default_str();
     reg(train, runTrain);
 
     auto* evaluate = app.add_subcommand("evaluate", "metrics on the held-out part of the data");

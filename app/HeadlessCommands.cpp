@@ -477,7 +477,10 @@ int runTrain(const CommandOptions& o) {
     if (auto st = ro.validate(); !st) {
         return fail(Error{ErrorKind::Usage, st.error().place, st.error().reason});
     }
-    auto trained = hybrid::trainResidualModels(si, model, ro, o.progress);
+    baselines::LstmOptions lo;
+    lo.seed = o.seed;
+    lo.epochs = o.lstmEpochs;
+    auto trained = hybrid::trainResidualModels(si, model, ro, lo, o.progress);
     if (!trained) {
         return fail(trained.error());
     }
@@ -490,6 +493,8 @@ int runTrain(const CommandOptions& o) {
                     c.spectralRadiusAfter, c.alpha, c.certificateMaxEig,
                     c.certified ? "certified" : "NOT certified");
     }
+    std::printf("%-20s trained in %.1f s, final training loss %.4g (standardised)\n", "lstm",
+                trained->lstm.trainingSeconds(), trained->lstm.lossHistory().back());
     hybrid::storeResidualModels(model, *trained);
     if (auto st = io::writeModelFile(model, o.outPath); !st) {
         return fail(st.error());

@@ -28,6 +28,7 @@ struct CommandOptions {
     int horizonSteps = 30;
     int residualLags = 8;
     int degree = 2;
+    int lstmEpochs = 30;
     double ridge = -1; ///< < 0: the model's default
     data::CleaningOptions cleaning;
     bool quiet = false;

@@ -87,6 +87,32 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, c
     metricsOf(pbmSeries, pbm, true);
     out.models.push_back(std::move(pbm));
 
+    {
+        bool present = false;
+        auto lstm = hybrid::loadLstm(model, present);
+        if (present && !lstm) {
+            return lstm.error();
+        }
+        if (present) {
+            ModelMetrics m;
+            m.name = hybrid::kLstmKey;
+            for (int pass = 0; pass < 2; ++pass) {
+                Series s;
+                for (const auto& v : test) {
+                    const auto p = lstm->predictAhead(v, pass == 0 ? 1 : options.horizonSteps);
+                    for (std::size_t i = 0; i < v.rows.size(); ++i) {
+                        const std::size_t k = v.rows.begin + i;
+                        if (v.batch->keep[k]) {
+                            s.add(data::dryToWetPct(v.batch->xOutDb[k]), p.xOutPct[i],
+                                  v.batch->tOutK[k] - data::kKelvinOffset, p.tOutC[i]);
+                        }
+                    }
+                }
+                metricsOf(s, m, pass == 1);
+            }
+            out.models.push_back(std::move(m));
+        }
+    }
     for (const char* key : {hybrid::kExtInputKey, hybrid::kPgrlCcKey}) {
         bool present = false;
         auto rm = hybrid::loadResidualModel(model, key, present);

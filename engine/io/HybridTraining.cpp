@@ -42,6 +42,7 @@ std::vector<residual::BatchView> splitViews(const std::vector<data::SiBatch>& ba
 Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& batches,
                                              const io::ModelFile& model,
                                              const residual::ResidualOptions& options,
+                                             const baselines::LstmOptions& lstmOptions,
                                              const Progress& progress) {
     const auto t0 = std::chrono::steady_clock::now();
     auto pbm = simulatePbm(batches, model, model.switches, progress);
@@ -65,8 +66,12 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
     if (!extModel) {
         return extModel.error();
     }
+    auto lstm = baselines::LstmBaseline::train(views, lstmOptions, progress);
+    if (!lstm) {
+        return lstm.error();
+    }
     reportProgress(progress, "train", 1.0, "done");
-    TrainingResult r{std::move(*full), std::move(*extModel), 0};
+    TrainingResult r{std::move(*full), std::move(*extModel), std::move(*lstm), 0};
     r.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return r;
 }
@@ -75,6 +80,7 @@ void storeResidualModels(io::ModelFile& model, const TrainingResult& trained) {
     auto extra = nlohmann::json::parse(model.extraJson.empty() ? "{}" : model.extraJson);
     extra[kPgrlCcKey] = nlohmann::json::parse(trained.pgrlCc.toJson());
     extra[kExtInputKey] = nlohmann::json::parse(trained.extInput.toJson());
+    extra[kLstmKey] = nlohmann::json::parse(trained.lstm.toJson());
     model.extraJson = extra.dump();
 }
 
@@ -88,6 +94,19 @@ Expected<residual::ResidualModel> loadResidualModel(const io::ModelFile& model, 
     auto m = residual::ResidualModel::fromJson(extra[key].dump());
     if (!m) {
         return Error{ErrorKind::BadInput, "model file: " + key, m.error().reason};
+    }
+    return m;
+}
+
+Expected<baselines::LstmBaseline> loadLstm(const io::ModelFile& model, bool& present) {
+    const auto extra = nlohmann::json::parse(model.extraJson.empty() ? "{}" : model.extraJson);
+    present = extra.contains(kLstmKey);
+    if (!present) {
+        return Error{ErrorKind::BadInput, kLstmKey, "not in the model file; run drytwin train first"};
+    }
+    auto m = baselines::LstmBaseline::fromJson(extra[kLstmKey].dump());
+    if (!m) {
+        return Error{ErrorKind::BadInput, std::string("model file: ") + kLstmKey, m.error().reason};
     }
     return m;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "baselines/LstmBaseline.h"
 #include "common/Error.h"
 #include "common/Progress.h"
 #include "data/SiBatch.h"
@@ -14,6 +15,7 @@ namespace drytwin::hybrid {
 /// @brief Model-file keys of the residual models (CONTRACT.md §3 model keys).
 inline constexpr const char* kPgrlCcKey = "pgrl_cc";
 inline constexpr const char* kExtInputKey = "ext_input_residual";
+inline constexpr const char* kLstmKey = "lstm";
 
 /// @brief PBM runs of a data set with a model file's parameters and switches.
 Expected<std::vector<physics::SimulationResult>> simulatePbm(const std::vector<data::SiBatch>& batches,
@@ -30,15 +32,20 @@ std::vector<residual::BatchView> splitViews(const std::vector<data::SiBatch>& ba
 struct TrainingResult {
     residual::ResidualModel pgrlCc;
     residual::ResidualModel extInput;
+    baselines::LstmBaseline lstm;
     double elapsedSeconds = 0;
 };
 
-/// @brief Algorithm 1 on the chronological 70 % of the data: the PGRL-CC model and the
-/// external-input baseline (same machinery, z = [u, d]).
+/// @brief Algorithm 1 on the chronological 70 % of the data: the PGRL-CC model, the
+/// external-input baseline (same machinery, z = [u, d]) and the black-box LSTM.
 Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& batches,
                                              const io::ModelFile& model,
                                              const residual::ResidualOptions& options = {},
+                                             const baselines::LstmOptions& lstmOptions = {},
                                              const Progress& progress = {});
+
+/// @brief The LSTM baseline stored in a model file, if any.
+Expected<baselines::LstmBaseline> loadLstm(const io::ModelFile& model, bool& present);
 
 /// @brief Stores the trained models in the model file (kept through later reads and writes).
 void storeResidualModels(io::ModelFile& model, const TrainingResult& trained);

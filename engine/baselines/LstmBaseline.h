@@ -1,0 +1,51 @@
+#pragma once
+
+#include "common/Error.h"
+#include "common/Progress.h"
+#include "residual/ResidualModel.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace drytwin::baselines {
+
+/// @brief Options of the black-box LSTM baseline (libtorch, CPU). Small by default, so that it
+/// trains in well under a minute on two cores.
+struct LstmOptions {
+    int hidden = 24;
+    int sequenceLength = 64; ///< training windows [steps]
+    int epochs = 30;
+    int batchSize = 32;
+    double learningRate = 3e-3;
+    unsigned seed = 1;
+    int threads = 2;
+    Status validate() const;
+};
+
+/// @brief A black-box LSTM from inputs (u, d) and the measured outputs up to k to y_{k+1}
+/// (paper §IV.B, "Black-Box (LSTM)"); multi-step prediction feeds back its own outputs.
+/// Holds no Qt; libtorch stays inside this translation unit.
+class LstmBaseline {
+public:
+    LstmBaseline();
+    ~LstmBaseline();
+    LstmBaseline(LstmBaseline&&) noexcept;
+    LstmBaseline& operator=(LstmBaseline&&) noexcept;
+
+    static Expected<LstmBaseline> train(const std::vector<residual::BatchView>& training,
+                                        const LstmOptions& options, const Progress& progress = {});
+    /// @brief Predictions of the rows of the view made @p horizon steps before (1 = one step).
+    residual::HybridPrediction predictAhead(const residual::BatchView& view, int horizon) const;
+
+    std::string toJson() const;
+    static Expected<LstmBaseline> fromJson(const std::string& json);
+    double trainingSeconds() const;
+    const std::vector<double>& lossHistory() const; ///< mean training loss per epoch (standardised units)
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+} // namespace drytwin::baselines
