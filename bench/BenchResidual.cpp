@@ -1,0 +1,55 @@
+// PGRL-CC training on ~44,000 snapshots with a degree-2 dictionary (issue: under 1 s), and the
+// LSTM baseline's training time (reported).
+#include "baselines/LstmBaseline.h"
+#include "data/PlantExport.h"
+#include "io/HybridTraining.h"
+#include "plant/VirtualPlant.h"
+
+#include <benchmark/benchmark.h>
+
+namespace {
+
+struct Demo {
+    std::vector<drytwin::data::SiBatch> batches;
+    std::vector<drytwin::physics::SimulationResult> pbm;
+};
+
+const Demo& demo() {
+    static const Demo d = [] {
+        const auto o = drytwin::plant::PlantOptions::demo(2025);
+        auto r = drytwin::plant::runPlant(o);
+        drytwin::data::DataSet ds;
+        for (const auto& b : r->batches) {
+            ds.batches.push_back(drytwin::data::toBatch(b, o.seed));
+        }
+        Demo x;
+        x.batches = drytwin::data::toSi(ds, drytwin::data::clean(ds));
+        x.pbm = std::move(*drytwin::hybrid::simulatePbm(x.batches, drytwin::io::ModelFile{}, {}));
+        return x;
+    }();
+    return d;
+}
+
+void BM_TrainPgrlCc(benchmark::State& state) {
+    const auto views = drytwin::hybrid::splitViews(demo().batches, demo().pbm, false);
+    std::size_t snapshots = 0;
+    for (auto _ : state) {
+        auto m = drytwin::residual::ResidualModel::train(views, {});
+        snapshots = m->trainingSnapshots();
+    }
+    state.counters["snapshots"] = static_cast<double>(snapshots);
+}
+BENCHMARK(BM_TrainPgrlCc)->Unit(benchmark::kMillisecond);
+
+void BM_TrainLstm(benchmark::State& state) {
+    const auto views = drytwin::hybrid::splitViews(demo().batches, demo().pbm, false);
+    for (auto _ : state) {
+        auto m = drytwin::baselines::LstmBaseline::train(views, {});
+        benchmark::DoNotOptimize(m->lossHistory().data());
+    }
+}
+BENCHMARK(BM_TrainLstm)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+} // namespace
+
+BENCHMARK_MAIN();
