@@ -20,6 +20,7 @@ struct CommandLine::Impl {
     std::map<CLI::App*, std::function<int(const CommandOptions&)>> handlers;
     CLI::App* selected = nullptr;
     bool quiet = false;
+    std::string screenshotPath;
 };
 
 namespace {
@@ -39,6 +40,8 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     app.allow_extras(); // Qt's own GUI options (-platform, -style ...) pass through
     app.add_option("--data", m_impl->options.dataPath, "GUI: open this batch file or folder at start");
     app.add_flag("-q,--quiet", m_impl->quiet, "no progress on stderr");
+    app.add_option("--screenshot", m_impl->screenshotPath,
+                   "GUI: save a PNG of the main window once the data set is shown, then quit");
     app.require_subcommand(0, 1);
     app.footer("Exit codes: 0 done; 2 wrong usage; 3 bad input data or model file; 4 numerical failure; "
                "130 cancelled.");
@@ -174,6 +177,7 @@ ParsedCommandLine CommandLine::parse(int argc, char** argv) {
         }
         result.gui = true;
         result.guiDataPath = m_impl->options.dataPath;
+        result.screenshotPath = m_impl->screenshotPath;
     }
     m_impl->options.quiet = m_impl->quiet;
     return result;

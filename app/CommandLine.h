@@ -10,6 +10,7 @@ struct ParsedCommandLine {
     int exitCode = 0;
     bool gui = false; ///< no subcommand: open the main window
     std::string guiDataPath;
+    std::string screenshotPath; ///< GUI: save a PNG of the window once the data is shown, then quit
 };
 
 /// @brief The `drytwin` command line (CONTRACT.md §2), built on CLI11.

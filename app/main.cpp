@@ -4,6 +4,7 @@
 
 #include <QApplication>
 #include <QSurfaceFormat>
+#include <QTimer>
 #include <QVTKOpenGLNativeWidget.h>
 #include <algorithm>
 #include <cstdio>
@@ -11,7 +12,7 @@
 
 namespace {
 
-int runGui(int argc, char** argv, const QString& dataPath) {
+int runGui(int argc, char** argv, const QString& dataPath, const QString& screenshotPath) {
     const bool platformGiven =
         qEnvironmentVariableIsSet("QT_QPA_PLATFORM") ||
         std::any_of(argv, argv + argc, [](const char* a) { return std::strcmp(a, "-platform") == 0; });
@@ -29,6 +30,20 @@ int runGui(int argc, char** argv, const QString& dataPath) {
     QApplication::setOrganizationName(QStringLiteral("DryTwin"));
     drytwin::widgets::MainWindow window;
     window.show();
+    if (!screenshotPath.isEmpty()) {
+        auto save = [&window, screenshotPath] {
+            const bool ok = window.grab().save(screenshotPath);
+            std::fprintf(stderr, ok ? "drytwin: saved %s\n" : "drytwin: could not save %s\n",
+                         qPrintable(screenshotPath));
+            QApplication::exit(ok ? 0 : 3);
+        };
+        if (dataPath.isEmpty()) {
+            QTimer::singleShot(500, &window, save);
+        } else {
+            QObject::connect(&window, &drytwin::widgets::MainWindow::loadFinished, &window,
+                             [save] { QTimer::singleShot(300, save); });
+        }
+    }
     if (!dataPath.isEmpty()) {
         window.openDataSet(dataPath);
     }
@@ -44,7 +59,8 @@ int main(int argc, char** argv) {
         return parsed.exitCode;
     }
     if (parsed.gui) {
-        return runGui(argc, argv, QString::fromStdString(parsed.guiDataPath));
+        return runGui(argc, argv, QString::fromStdString(parsed.guiDataPath),
+                      QString::fromStdString(parsed.screenshotPath));
     }
     return commandLine.run();
 }

@@ -21,5 +21,4 @@ fi
 if [ -n "${DISPLAY:-}" ] && [ "${DRYTWIN_HEADLESS:-0}" != "1" ]; then
   exec "$DRYTWIN" --data "$DEMO"
 fi
-"$DRYTWIN" inspect --data "$DEMO"
 exec "$DRYTWIN" pipeline --data "$DEMO" --out build/demo-report
