@@ -344,6 +344,12 @@ bool parseBounds(const std::vector<std::string>& specs, calibration::Calibration
 
 } // namespace
 
+/// The model file of --model and the cleaned SI data of --data, or an exit code.
+bool loadModelAndData(const CommandOptions& o, io::ModelFile& model, std::vector<data::SiBatch>& si,
+                      int& exitCode) {
+    return loadModel(o, model, exitCode) && loadSi(o, si, exitCode);
+}
+
 int runCalibrate(const CommandOptions& o) {
     io::ModelFile model;
     int rc = 0;
@@ -421,11 +427,8 @@ int runCalibrate(const CommandOptions& o) {
 int runEvaluate(const CommandOptions& o) {
     io::ModelFile model;
     int rc = 0;
-    if (!loadModel(o, model, rc)) {
-        return rc;
-    }
     std::vector<data::SiBatch> si;
-    if (!loadSi(o, si, rc)) {
+    if (!loadModelAndData(o, model, si, rc)) {
         return rc;
     }
     auto ev = evaluation::evaluate(si, model, {o.horizonSteps}, o.progress);
@@ -500,11 +503,8 @@ int runTrain(const CommandOptions& o) {
 int runAblation(const CommandOptions& o) {
     io::ModelFile model;
     int rc = 0;
-    if (!loadModel(o, model, rc)) {
-        return rc;
-    }
     std::vector<data::SiBatch> si;
-    if (!loadSi(o, si, rc)) {
+    if (!loadModelAndData(o, model, si, rc)) {
         return rc;
     }
     auto rows = hybrid::runAblation(si, model, o.progress);
@@ -573,7 +573,7 @@ int runPipeline(const CommandOptions& o) {
     c = o;
     c.modelPath = in("model.json");
     std::vector<data::SiBatch> si;
-    if (!loadModel(c, model, rc) || !loadSi(c, si, rc)) {
+    if (!loadModelAndData(c, model, si, rc)) {
         return rc;
     }
     auto ev = evaluation::evaluate(si, model, {o.horizonSteps}, {});

@@ -50,4 +50,8 @@ Batch toBatch(const plant::PlantBatch& pb, unsigned seed) {
     return b;
 }
 
+physics::LineInputs toLineInputs(const plant::PlantBatch& pb) {
+    return {pb.timeS, pb.tHotK, pb.xInDb, pb.tInK, pb.tAmbK, pb.rhAmb, pb.feedKgPerS, pb.airSpeedMPerS};
+}
+
 } // namespace drytwin::data

@@ -2,6 +2,7 @@
 
 #include "data/Batch.h"
 #include "data/SiBatch.h"
+#include "physics/LineInputs.h"
 #include "plant/VirtualPlant.h"
 
 namespace drytwin::data {
@@ -9,5 +10,8 @@ namespace drytwin::data {
 /// @brief A plant batch as its batch file would hold it (file units, instrument resolution:
 /// 0.001 % for moisture, 0.01 °C, 0.1 kg/h ...), with `# batch:` and `# source:` metadata.
 Batch toBatch(const plant::PlantBatch& pb, unsigned seed);
+
+/// @brief The model's input series of a plant batch (as recorded, full precision).
+physics::LineInputs toLineInputs(const plant::PlantBatch& pb);
 
 } // namespace drytwin::data

@@ -24,6 +24,40 @@ OutputMetrics outputMetrics(const std::vector<double>& observed, const std::vect
     return m;
 }
 
+residual::HybridPrediction pbmPrediction(const residual::BatchView& v) {
+    residual::HybridPrediction p;
+    for (std::size_t k = v.rows.begin; k < v.rows.end; ++k) {
+        p.xOutPct.push_back(data::dryToWetPct(v.pbm->xOutDb[k]));
+        p.tOutC.push_back(v.pbm->tOutK[k] - data::kKelvinOffset);
+    }
+    return p;
+}
+
+ScoredPredictions scorePredictions(const std::vector<residual::BatchView>& views, const Predictor& predict,
+                                   int lbLags) {
+    std::vector<double> ox, px, ot, pt;
+    for (const auto& v : views) {
+        const auto p = predict(v);
+        for (std::size_t i = 0; i < v.rows.size(); ++i) {
+            const std::size_t k = v.rows.begin + i;
+            if (v.batch->keep[k] && std::isfinite(p.xOutPct[i]) && std::isfinite(p.tOutC[i])) {
+                ox.push_back(data::dryToWetPct(v.batch->xOutDb[k]));
+                px.push_back(p.xOutPct[i]);
+                ot.push_back(v.batch->tOutK[k] - data::kKelvinOffset);
+                pt.push_back(p.tOutC[i]);
+            }
+        }
+    }
+    ScoredPredictions s;
+    s.moisture = outputMetrics(ox, px, lbLags);
+    s.temperature = outputMetrics(ot, pt, lbLags);
+    for (std::size_t i = 0; i < ox.size(); ++i) {
+        s.moistureResidual.push_back(ox[i] - px[i]);
+        s.temperatureResidual.push_back(ot[i] - pt[i]);
+    }
+    return s;
+}
+
 Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, const io::ModelFile& model,
                                     const EvaluationOptions& options, const Progress& progress) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -44,77 +78,48 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, c
         out.split = data::chronologicalSplit(rowsPerBatch, options.trainFraction).name;
     }
     out.multiStepHorizon = options.horizonSteps;
-    // Observed and predicted series over the kept held-out rows; predictions NaN-free rows only.
-    struct Series {
-        std::vector<double> ox, px, ot, pt;
-        void add(double oX, double pX, double oT, double pT) {
-            if (std::isfinite(pX) && std::isfinite(pT)) {
-                ox.push_back(oX);
-                px.push_back(pX);
-                ot.push_back(oT);
-                pt.push_back(pT);
-            }
-        }
-    };
-    auto metricsOf = [&](const Series& s, ModelMetrics& m, bool multi) {
-        (multi ? m.moistureMultiStep : m.moisture) = outputMetrics(s.ox, s.px, options.ljungBoxLags);
-        (multi ? m.temperatureMultiStep : m.temperature) = outputMetrics(s.ot, s.pt, options.ljungBoxLags);
-        if (!multi) {
-            for (std::size_t i = 0; i < s.ox.size(); ++i) {
-                m.moistureResidual.push_back(s.ox[i] - s.px[i]);
-                m.temperatureResidual.push_back(s.ot[i] - s.pt[i]);
-            }
-        }
-    };
-    Series pbmSeries;
-    for (const auto& v : test) {
-        for (std::size_t k = v.rows.begin; k < v.rows.end; ++k) {
-            if (v.batch->keep[k]) {
-                pbmSeries.add(data::dryToWetPct(v.batch->xOutDb[k]), data::dryToWetPct(v.pbm->xOutDb[k]),
-                              v.batch->tOutK[k] - data::kKelvinOffset, v.pbm->tOutK[k] - data::kKelvinOffset);
-            }
-        }
-    }
-    out.testRows = pbmSeries.ox.size();
+    const int lags = options.ljungBoxLags;
+    // The PBM runs open loop on the inputs: its one-step and multi-step predictions coincide.
+    ModelMetrics pbm;
+    pbm.name = "pbm";
+    const auto pbmScore = scorePredictions(test, pbmPrediction, lags);
+    pbm.moisture = pbm.moistureMultiStep = pbmScore.moisture;
+    pbm.temperature = pbm.temperatureMultiStep = pbmScore.temperature;
+    pbm.moistureResidual = pbmScore.moistureResidual;
+    pbm.temperatureResidual = pbmScore.temperatureResidual;
+    out.testRows = pbm.moistureResidual.size();
     if (out.testRows < 30) {
         return Error{ErrorKind::BadInput, "held-out data",
                      "only " + std::to_string(out.testRows) + " held-out rows pass the cleaning rules"};
     }
-    // The PBM runs open loop on the inputs: its one-step and multi-step predictions coincide.
-    ModelMetrics pbm;
-    pbm.name = "pbm";
-    metricsOf(pbmSeries, pbm, false);
-    metricsOf(pbmSeries, pbm, true);
     out.models.push_back(std::move(pbm));
 
-    {
-        bool present = false;
-        auto lstm = hybrid::loadLstm(model, present);
-        if (present && !lstm) {
-            return lstm.error();
-        }
-        if (present) {
-            ModelMetrics m;
-            m.name = hybrid::kLstmKey;
-            for (int pass = 0; pass < 2; ++pass) {
-                Series s;
-                for (const auto& v : test) {
-                    const auto p = lstm->predictAhead(v, pass == 0 ? 1 : options.horizonSteps);
-                    for (std::size_t i = 0; i < v.rows.size(); ++i) {
-                        const std::size_t k = v.rows.begin + i;
-                        if (v.batch->keep[k]) {
-                            s.add(data::dryToWetPct(v.batch->xOutDb[k]), p.xOutPct[i],
-                                  v.batch->tOutK[k] - data::kKelvinOffset, p.tOutC[i]);
-                        }
-                    }
-                }
-                metricsOf(s, m, pass == 1);
-            }
-            out.models.push_back(std::move(m));
-        }
+    // One-step and H-step scores of a learnt model.
+    auto score = [&](const char* name, const Predictor& oneStep, const Predictor& ahead) {
+        ModelMetrics m;
+        m.name = name;
+        const auto one = scorePredictions(test, oneStep, lags);
+        const auto multi = scorePredictions(test, ahead, lags);
+        m.moisture = one.moisture;
+        m.temperature = one.temperature;
+        m.moistureResidual = one.moistureResidual;
+        m.temperatureResidual = one.temperatureResidual;
+        m.moistureMultiStep = multi.moisture;
+        m.temperatureMultiStep = multi.temperature;
+        return m;
+    };
+    const int h = options.horizonSteps;
+    bool present = false;
+    auto lstm = hybrid::loadLstm(model, present);
+    if (present && !lstm) {
+        return lstm.error();
+    }
+    if (present) {
+        out.models.push_back(score(
+            hybrid::kLstmKey, [&](const residual::BatchView& v) { return lstm->predictAhead(v, 1); },
+            [&](const residual::BatchView& v) { return lstm->predictAhead(v, h); }));
     }
     for (const char* key : {hybrid::kExtInputKey, hybrid::kPgrlCcKey}) {
-        bool present = false;
         auto rm = hybrid::loadResidualModel(model, key, present);
         if (!present) {
             continue;
@@ -122,22 +127,9 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, c
         if (!rm) {
             return rm.error();
         }
-        ModelMetrics m;
-        m.name = key;
-        for (int pass = 0; pass < 2; ++pass) {
-            Series s;
-            for (const auto& v : test) {
-                const auto p = pass == 0 ? rm->predictOneStep(v) : rm->predictAhead(v, options.horizonSteps);
-                for (std::size_t i = 0; i < v.rows.size(); ++i) {
-                    const std::size_t k = v.rows.begin + i;
-                    if (v.batch->keep[k]) {
-                        s.add(data::dryToWetPct(v.batch->xOutDb[k]), p.xOutPct[i],
-                              v.batch->tOutK[k] - data::kKelvinOffset, p.tOutC[i]);
-                    }
-                }
-            }
-            metricsOf(s, m, pass == 1);
-        }
+        ModelMetrics m = score(
+            key, [&](const residual::BatchView& v) { return rm->predictOneStep(v); },
+            [&](const residual::BatchView& v) { return rm->predictAhead(v, h); });
         const auto& c = rm->stability();
         m.hasStability = true;
         m.spectralRadiusBefore = c.spectralRadiusBefore;

@@ -4,6 +4,9 @@
 #include "common/Progress.h"
 #include "data/SiBatch.h"
 #include "io/ModelFile.h"
+#include "residual/ResidualModel.h"
+
+#include <functional>
 
 #include <string>
 #include <vector>
@@ -54,6 +57,23 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, c
 /// @brief Output metrics of observed/predicted series (moisture in % wb or temperature in °C).
 OutputMetrics outputMetrics(const std::vector<double>& observed, const std::vector<double>& predicted,
                             int lbLags);
+
+/// @brief Makes a model's predictions for the rows of a view.
+using Predictor = std::function<residual::HybridPrediction(const residual::BatchView&)>;
+
+/// @brief Metrics and residuals of predictions over the rows of the views that the cleaning
+/// keeps and the model could predict.
+struct ScoredPredictions {
+    OutputMetrics moisture;
+    OutputMetrics temperature;
+    std::vector<double> moistureResidual;    ///< % wb
+    std::vector<double> temperatureResidual; ///< °C
+};
+ScoredPredictions scorePredictions(const std::vector<residual::BatchView>& views, const Predictor& predict,
+                                   int lbLags);
+
+/// @brief The PBM's own predictions of a view's rows (% wb, °C).
+residual::HybridPrediction pbmPrediction(const residual::BatchView& view);
 
 /// @brief The JSON of CONTRACT.md §3 for `evaluate`.
 std::string toJson(const EvaluationResult& result);

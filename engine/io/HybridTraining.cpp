@@ -111,37 +111,6 @@ Expected<baselines::LstmBaseline> loadLstm(const io::ModelFile& model, bool& pre
     return m;
 }
 
-namespace {
-
-/// One-step metrics of a model over the test views (rows the cleaning keeps).
-AblationRow scoreOneStep(const residual::ResidualModel& m, const std::vector<residual::BatchView>& test) {
-    std::vector<double> ox, px, ot, pt;
-    for (const auto& v : test) {
-        const auto p = m.predictOneStep(v);
-        for (std::size_t i = 0; i < v.rows.size(); ++i) {
-            const std::size_t k = v.rows.begin + i;
-            if (!v.batch->keep[k] || !std::isfinite(p.xOutPct[i])) {
-                continue;
-            }
-            ox.push_back(data::dryToWetPct(v.batch->xOutDb[k]));
-            px.push_back(p.xOutPct[i]);
-            ot.push_back(v.batch->tOutK[k] - data::kKelvinOffset);
-            pt.push_back(p.tOutC[i]);
-        }
-    }
-    const auto mx = evaluation::outputMetrics(ox, px, 20);
-    const auto mt = evaluation::outputMetrics(ot, pt, 20);
-    AblationRow row;
-    row.maeMoisture = mx.mae;
-    row.r2Moisture = mx.r2;
-    row.maeTemperature = mt.mae;
-    row.r2Temperature = mt.r2;
-    row.ljungBoxPMoisture = mx.ljungBoxP;
-    return row;
-}
-
-} // namespace
-
 Expected<std::vector<AblationRow>> runAblation(const std::vector<data::SiBatch>& batches,
                                                const io::ModelFile& model, const Progress& progress) {
     struct Variant {
@@ -191,7 +160,15 @@ Expected<std::vector<AblationRow>> runAblation(const std::vector<data::SiBatch>&
         if (!m) {
             return m.error();
         }
-        AblationRow row = scoreOneStep(*m, splitViews(batches, pbm, true));
+        const auto scored = evaluation::scorePredictions(
+            splitViews(batches, pbm, true),
+            [&](const residual::BatchView& view) { return m->predictOneStep(view); }, 20);
+        AblationRow row;
+        row.maeMoisture = scored.moisture.mae;
+        row.r2Moisture = scored.moisture.r2;
+        row.maeTemperature = scored.temperature.mae;
+        row.r2Temperature = scored.temperature.r2;
+        row.ljungBoxPMoisture = scored.moisture.ljungBoxP;
         row.variant = v.name;
         row.description = v.description;
         rows.push_back(row);

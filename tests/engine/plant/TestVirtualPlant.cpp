@@ -22,19 +22,6 @@ plant::PlantOptions small(unsigned seed = 3) {
     return o;
 }
 
-physics::LineInputs inputsOf(const plant::PlantBatch& b) {
-    physics::LineInputs in;
-    in.timeS = b.timeS;
-    in.tHotK = b.tHotK;
-    in.xInDb = b.xInDb;
-    in.tInK = b.tInK;
-    in.tAmbK = b.tAmbK;
-    in.rhAmb = b.rhAmb;
-    in.feedKgPerS = b.feedKgPerS;
-    in.airSpeedMPerS = b.airSpeedMPerS;
-    return in;
-}
-
 /// Residual of the outlet moisture [% wb] of the model with the plant's true parameters.
 struct Residual {
     double mean = 0;
@@ -49,7 +36,7 @@ Residual residualWithTruth(const plant::PlantResult& r) {
     int ne = 0;
     int nl = 0;
     for (const auto& b : r.batches) {
-        auto sim = physics::simulateLine(inputsOf(b), r.truth);
+        auto sim = physics::simulateLine(data::toLineInputs(b), r.truth);
         if (!sim) {
             qFatal("%s", sim.error().message().c_str());
         }
@@ -97,7 +84,7 @@ private Q_SLOTS:
         QVERIFY2(std::abs(res.mean) < 0.005, qPrintable(QString::number(res.mean)));
         // The plant's h_HDT and k_HDT differ from the model defaults: default PBM is visibly off.
         const auto& b = r->batches[0];
-        auto def = physics::simulateLine(inputsOf(b), properties::ParameterSet{});
+        auto def = physics::simulateLine(data::toLineInputs(b), properties::ParameterSet{});
         std::vector<double> o, p;
         for (std::size_t k = 100; k < b.timeS.size(); ++k) {
             o.push_back(data::dryToWetPct(b.xOutDb[k]));
