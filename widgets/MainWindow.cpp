@@ -8,6 +8,7 @@
 #include <QApplication>
 #include <QFileDialog>
 #include <QHeaderView>
+#include <QIcon>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenuBar>
@@ -49,6 +50,7 @@ QwtPlot* makePlot(const QString& yTitle, QwtPlotCurve*& curve, const QColor& col
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowTitle(tr("DryTwin"));
+    setWindowIcon(QIcon(QStringLiteral(":/icons/drytwin.svg")));
     resize(1200, 760);
 
     m_batchList = new QListWidget;
