@@ -95,6 +95,11 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     calibrate->add_option("--model", o.modelPath, "start from this model file");
     calibrate->add_option("--out", o.outPath, "model file to write")->required();
     calibrate->add_option("--free", o.freeParameters, "parameters to fit (default h_HDT k_HDT)");
+    calibrate
+        ->add_option("--subset", o.subset,
+                     "calibration rows STRIDE:COUNT, every STRIDE-th kept row, the first COUNT "
+                     "(paper: 10:300; 1:0 for every row)")
+        ->capture_default_str();
     calibrate->add_option("--bound", o.bounds,
                           "NAME=LOWER:UPPER search range of a free parameter; repeatable");
     calibrate->add_option("--seed", o.seed, "random seed of the global search")->capture_default_str();
@@ -109,6 +114,9 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     train->add_option("--lags", o.residualLags, "measured residual lags in the lifted state")
         ->capture_default_str();
     train->add_option("--degree", o.degree, "polynomial dictionary degree (1-3)")->capture_default_str();
+    train->add_option("--base", o.baseFeatures,
+                      "base features of the orthogonal projection (Eq. 27), e.g. 1 T_amb X_HDT^2; "
+                      "default: the constant and linear terms");
     train->add_option("--ridge", o.ridge,
                       "ridge weight lambda_A = lambda_B = lambda_E per unit of total weight");
     train->add_option("--lstm-epochs", o.lstmEpochs, "training epochs of the LSTM baseline")

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -382,10 +383,17 @@ int runCalibrate(const CommandOptions& o) {
     if (auto st = co.validate(); !st) {
         return fail(st.error());
     }
+    std::size_t stride = 10;
+    std::size_t count = 300;
+    if (std::sscanf(o.subset.c_str(), "%zu:%zu", &stride, &count) != 2 || stride == 0) {
+        return fail(Error{ErrorKind::Usage, "--subset " + o.subset, "expected STRIDE:COUNT with STRIDE ≥ 1"});
+    }
     std::vector<data::SiBatch> si;
     if (!loadSi(o, si, rc)) {
         return rc;
     }
+    co.rows =
+        data::calibrationSubset(si, stride, count == 0 ? std::numeric_limits<std::size_t>::max() : count);
     auto result = calibration::calibrate(si, model.parameters, co, o.progress);
     if (!result) {
         return fail(result.error());
@@ -469,6 +477,7 @@ int runTrain(const CommandOptions& o) {
     residual::ResidualOptions ro;
     ro.residualLags = o.residualLags;
     ro.degree = o.degree;
+    ro.baseFeatures = o.baseFeatures;
     if (o.ridge >= 0) {
         ro.lambdaA = ro.lambdaB = ro.lambdaE = o.ridge;
     }

@@ -25,10 +25,12 @@ struct CommandOptions {
     std::vector<std::string> freeParameters;
     std::vector<std::string> bounds;
     int maxEvaluations = 2000;
+    std::string subset = "10:300"; ///< calibration rows: every STRIDE-th kept row, the first COUNT
     int horizonSteps = 30;
     int residualLags = 8;
     int degree = 2;
     int lstmEpochs = 30;
+    std::vector<std::string> baseFeatures;
     double ridge = -1; ///< < 0: the model's default
     data::CleaningOptions cleaning;
     bool quiet = false;

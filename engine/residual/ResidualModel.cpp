@@ -264,7 +264,23 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
     //    Φ̃_res = Φ_res − Φ_base G, G = (Φ_bᵀ W Φ_b)⁻¹ Φ_bᵀ W Φ_res.
     const Eigen::MatrixXd psiNow = m.m_dict.lift(zNow);
     const Eigen::MatrixXd psiNext = m.m_dict.lift(zNext);
-    m.m_baseIdx = m.m_dict.constantAndLinear();
+    if (o.baseFeatures.empty()) {
+        m.m_baseIdx = m.m_dict.constantAndLinear();
+    } else {
+        const auto names = m.m_dict.featureNames();
+        for (const auto& b : o.baseFeatures) {
+            const auto it = std::find(names.begin(), names.end(), b);
+            if (it == names.end()) {
+                std::string known;
+                for (const auto& n : names) {
+                    known += " " + n;
+                }
+                return Error{ErrorKind::BadInput, "base feature '" + b + "'",
+                             "not in the dictionary; known:" + known};
+            }
+            m.m_baseIdx.push_back(static_cast<int>(it - names.begin()));
+        }
+    }
     for (int f = 0; f < m.m_dict.featureCount(); ++f) {
         if (std::find(m.m_baseIdx.begin(), m.m_baseIdx.end(), f) == m.m_baseIdx.end()) {
             m.m_resIdx.push_back(f);

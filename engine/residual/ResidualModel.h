@@ -16,7 +16,10 @@ namespace drytwin::residual {
 struct ResidualOptions {
     /// z = [x̂_mech, u, d] (Eq. 24); false gives the external-input baseline z = [u, d].
     bool useProxies = true;
-    int degree = 2;                       ///< dictionary degree (Eq. 26)
+    int degree = 2; ///< dictionary degree (Eq. 26)
+    /// Base set Φ_base of Eq. 27 by feature name ("1", "T_amb", "X_HDT^2", "X_HDT*T_HDT" …);
+    /// empty: the constant and the linear terms. The residual set is every other feature.
+    std::vector<std::string> baseFeatures;
     int residualLags = 8;                 ///< measured residuals e_k … e_{k−L+1} in the lifted state
     bool orthogonalProjection = true;     ///< P⊥ of Eq. 27 on the residual features
     bool controlConsistentWeights = true; ///< ω of Eq. 29 (else W = I)

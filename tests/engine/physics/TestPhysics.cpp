@@ -354,6 +354,25 @@ private Q_SLOTS:
         }
     }
 
+    void actuatorLagFollowsTheSetpoint() {
+        // T_hot following T_hot_sp through the first-order actuator (for MPC): a 10 K step
+        // reaches 1 − e^(−t/τ) of its size, exactly at the samples.
+        std::vector<double> t(200), sp(200, 443.15);
+        for (std::size_t i = 0; i < t.size(); ++i) {
+            t[i] = static_cast<double>(i);
+            if (i >= 10) {
+                sp[i] = 453.15;
+            }
+        }
+        const double tau = m_p[Param::tau_act];
+        const auto y = firstOrderResponse(t, sp, tau, 443.15);
+        QCOMPARE(y[10], 443.15);
+        for (std::size_t i : {11u, 30u, 70u, 199u}) {
+            const double expected = 443.15 + 10.0 * (1.0 - std::exp(-(static_cast<double>(i) - 10.0) / tau));
+            QVERIFY(std::abs(y[i] - expected) < 1e-9);
+        }
+    }
+
     void batchesInParallelEqualSerial() {
         std::vector<LineInputs> b{varyingInputs(200), constantInputs(150), varyingInputs(180)};
         auto par = simulateBatches(b, m_p, {}, 2);

@@ -230,6 +230,18 @@ private Q_SLOTS:
         auto m = ResidualModel::train(hybrid::splitViews(f.batches, f.pbm, false), ext);
         QVERIFY(m.ok());
         QVERIFY(m->stateSize() < 60); // 6 inputs: 2·8 lags + 21 quadratic features
+        // A user-chosen base set: the named features leave the residual set.
+        ResidualOptions custom;
+        custom.baseFeatures = {"1", "X_HDT", "T_HDT", "X_HDT^2"};
+        auto c = ResidualModel::train(hybrid::splitViews(f.batches, f.pbm, false), custom);
+        QVERIFY2(c.ok(), c.ok() ? "" : c.error().message().c_str());
+        auto full = ResidualModel::train(hybrid::splitViews(f.batches, f.pbm, false), {});
+        // Default base: 1 + 12 linear of 91 features; custom: 4 of 91 → 9 more residual features.
+        QCOMPARE(c->stateSize(), full->stateSize() + 9);
+        custom.baseFeatures = {"1", "no_such_feature"};
+        auto wrong = ResidualModel::train(hybrid::splitViews(f.batches, f.pbm, false), custom);
+        QVERIFY(!wrong.ok());
+        QVERIFY(QString::fromStdString(wrong.error().place).contains("no_such_feature"));
         ResidualOptions bad;
         bad.degree = 5;
         QVERIFY(!bad.validate().ok());
