@@ -6,6 +6,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include <cstdlib>
 #include <memory>
 
 namespace drytwin::physics {
@@ -84,8 +85,11 @@ Status solveSystem(const ParcelRhs& rhs, std::size_t first, std::size_t count, d
     const auto n = static_cast<sunindextype>(count * m);
     Solver s;
     auto fail = [&](const std::string& what, int flag) {
-        return Status(Error{ErrorKind::Numerical, section,
-                            what + " failed (" + std::string(CVodeGetReturnFlagName(flag)) + ")"});
+        // CVodeGetReturnFlagName hands over a malloc'd string.
+        char* name = CVodeGetReturnFlagName(flag);
+        const std::string flagName = name ? name : "unknown flag";
+        std::free(name);
+        return Status(Error{ErrorKind::Numerical, section, what + " failed (" + flagName + ")"});
     };
     if (SUNContext_Create(nullptr, &s.ctx) != 0) {
         return Error{ErrorKind::Numerical, section, "could not create a SUNDIALS context"};
