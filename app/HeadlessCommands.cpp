@@ -11,6 +11,7 @@
 #include "io/Evaluation.h"
 #include "io/HybridTraining.h"
 #include "io/ModelFile.h"
+#include "io/Report.h"
 #include "io/ResidualDiagnostics.h"
 #include "physics/LineSimulator.h"
 #include "plant/VirtualPlant.h"
@@ -594,12 +595,16 @@ int runPipeline(const CommandOptions& o) {
         !st) {
         return fail(st.error());
     }
+    auto report = io::writePipelineReport(o.outPath);
+    if (!report) {
+        return fail(report.error());
+    }
     std::printf(
         "\n== not in this version ==\ndiscover and mpc are not implemented yet; the report says so.\n");
     std::printf(
-        "\nreport folder %s: inspect.json, model-calibrated.json, model.json, evaluate.json, ablation.json, "
-        "diagnostics.json\n",
-        o.outPath.c_str());
+        "\nreport %s, with inspect.json, model-calibrated.json, model.json, evaluate.json, ablation.json and "
+        "diagnostics.json beside it\n",
+        report->c_str());
     return 0;
 }
 
