@@ -11,11 +11,7 @@ const std::vector<drytwin::data::SiBatch>& demoData() {
     static const auto data = [] {
         const auto o = drytwin::plant::PlantOptions::demo(2025);
         auto r = drytwin::plant::runPlant(o);
-        drytwin::data::DataSet ds;
-        for (const auto& b : r->batches) {
-            ds.batches.push_back(drytwin::data::toBatch(b, o.seed));
-        }
-        return drytwin::data::toSi(ds, drytwin::data::clean(ds));
+        return drytwin::data::toSiBatches(*r, o.seed);
     }();
     return data;
 }

@@ -18,12 +18,8 @@ const Demo& demo() {
     static const Demo d = [] {
         const auto o = drytwin::plant::PlantOptions::demo(2025);
         auto r = drytwin::plant::runPlant(o);
-        drytwin::data::DataSet ds;
-        for (const auto& b : r->batches) {
-            ds.batches.push_back(drytwin::data::toBatch(b, o.seed));
-        }
         Demo x;
-        x.batches = drytwin::data::toSi(ds, drytwin::data::clean(ds));
+        x.batches = drytwin::data::toSiBatches(*r, o.seed);
         x.pbm = std::move(*drytwin::hybrid::simulatePbm(x.batches, drytwin::io::ModelFile{}, {}));
         return x;
     }();

@@ -50,6 +50,14 @@ Batch toBatch(const plant::PlantBatch& pb, unsigned seed) {
     return b;
 }
 
+std::vector<SiBatch> toSiBatches(const plant::PlantResult& result, unsigned seed) {
+    DataSet ds;
+    for (const auto& b : result.batches) {
+        ds.batches.push_back(toBatch(b, seed));
+    }
+    return toSi(ds, clean(ds));
+}
+
 physics::LineInputs toLineInputs(const plant::PlantBatch& pb) {
     return {pb.timeS, pb.tHotK, pb.xInDb, pb.tInK, pb.tAmbK, pb.rhAmb, pb.feedKgPerS, pb.airSpeedMPerS};
 }

@@ -11,6 +11,10 @@ namespace drytwin::data {
 /// 0.001 % for moisture, 0.01 °C, 0.1 kg/h ...), with `# batch:` and `# source:` metadata.
 Batch toBatch(const plant::PlantBatch& pb, unsigned seed);
 
+/// @brief The plant's batches as a loaded, cleaned data set in SI units: what reading the
+/// files `generate` writes would give (same rounding), without the files.
+std::vector<SiBatch> toSiBatches(const plant::PlantResult& result, unsigned seed);
+
 /// @brief The model's input series of a plant batch (as recorded, full precision).
 physics::LineInputs toLineInputs(const plant::PlantBatch& pb);
 

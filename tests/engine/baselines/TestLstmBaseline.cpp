@@ -19,11 +19,7 @@ private Q_SLOTS:
         o.batches = 3;
         o.samples = 1500;
         auto r = plant::runPlant(o);
-        data::DataSet ds;
-        for (const auto& b : r->batches) {
-            ds.batches.push_back(data::toBatch(b, o.seed));
-        }
-        m_batches = data::toSi(ds, data::clean(ds));
+        m_batches = data::toSiBatches(*r, o.seed);
         m_pbm = std::move(*hybrid::simulatePbm(m_batches, io::ModelFile{}, {}));
     }
 

@@ -16,11 +16,7 @@ std::vector<data::SiBatch> plantData(const plant::PlantOptions& o) {
     if (!r) {
         qFatal("%s", r.error().message().c_str());
     }
-    data::DataSet ds;
-    for (const auto& b : r->batches) {
-        ds.batches.push_back(data::toBatch(b, o.seed));
-    }
-    return data::toSi(ds, data::clean(ds));
+    return data::toSiBatches(*r, o.seed);
 }
 
 plant::PlantOptions noMechanisms() {

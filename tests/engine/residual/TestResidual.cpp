@@ -27,12 +27,8 @@ const Fixture& demoFixture() {
         o.batches = 4;
         o.samples = 2500;
         auto r = plant::runPlant(o);
-        data::DataSet ds;
-        for (const auto& b : r->batches) {
-            ds.batches.push_back(data::toBatch(b, o.seed));
-        }
         Fixture fx;
-        fx.batches = data::toSi(ds, data::clean(ds));
+        fx.batches = data::toSiBatches(*r, o.seed);
         auto sims = hybrid::simulatePbm(fx.batches, io::ModelFile{}, {});
         fx.pbm = std::move(*sims);
         return fx;
