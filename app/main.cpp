@@ -40,8 +40,14 @@ int runGui(int argc, char** argv, const QString& dataPath, const QString& screen
         if (dataPath.isEmpty()) {
             QTimer::singleShot(500, &window, save);
         } else {
-            QObject::connect(&window, &drytwin::widgets::MainWindow::loadFinished, &window,
+            // After the model's predictions are drawn, or at once when the data was rejected.
+            QObject::connect(&window, &drytwin::widgets::MainWindow::simulationShown, &window,
                              [save] { QTimer::singleShot(300, save); });
+            QObject::connect(&window, &drytwin::widgets::MainWindow::loadFinished, &window, [save](bool ok) {
+                if (!ok) {
+                    QTimer::singleShot(300, save);
+                }
+            });
         }
     }
     if (!dataPath.isEmpty()) {

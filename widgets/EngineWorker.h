@@ -6,6 +6,7 @@
 #include <QObject>
 #include <QString>
 #include <QStringList>
+#include <QVector>
 #include <atomic>
 
 namespace drytwin::widgets {
@@ -23,6 +24,9 @@ public:
 public Q_SLOTS:
     /// @brief Loads a batch file or folder; emits dataLoaded or loadFailed.
     void loadDataSet(const QString& path);
+    /// @brief Runs the physics model with default parameters over every batch; emits
+    /// simulated (outlet predictions in % wb and °C, per batch) or simulationFailed.
+    void simulateDataSet(const drytwin::data::DataSet& dataSet);
 
 Q_SIGNALS:
     void progress(const QString& stage, double fraction, const QString& detail);
@@ -30,6 +34,8 @@ Q_SIGNALS:
                     const drytwin::data::DataSetSummary& summary);
     void loadFailed(const QString& path, const QStringList& errors);
     void cancelled();
+    void simulated(const QVector<QVector<double>>& xOutPct, const QVector<QVector<double>>& tOutC);
+    void simulationFailed(const QString& message);
 
 private:
     std::atomic<bool> m_cancel{false};

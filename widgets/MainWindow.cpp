@@ -31,6 +31,14 @@ namespace drytwin::widgets {
 
 namespace {
 
+QwtPlotCurve* addModelCurve(QwtPlot* plot, const QString& title, const QColor& colour) {
+    auto* curve = new QwtPlotCurve(title);
+    curve->setPen(colour, 1.6, Qt::DashLine);
+    curve->setRenderHint(QwtPlotItem::RenderAntialiased);
+    curve->attach(plot);
+    return curve;
+}
+
 QwtPlot* makePlot(const QString& yTitle, QwtPlotCurve*& curve, const QColor& colour, QWidget* parent) {
     auto* plot = new QwtPlot(parent);
     plot->setCanvasBackground(Qt::white);
@@ -39,7 +47,7 @@ QwtPlot* makePlot(const QString& yTitle, QwtPlotCurve*& curve, const QColor& col
     auto* grid = new QwtPlotGrid;
     grid->setMajorPen(QColor(220, 220, 220), 0, Qt::DotLine);
     grid->attach(plot);
-    curve = new QwtPlotCurve(yTitle);
+    curve = new QwtPlotCurve(QObject::tr("measured"));
     curve->setPen(colour, 1.2);
     curve->setRenderHint(QwtPlotItem::RenderAntialiased);
     curve->attach(plot);
@@ -66,6 +74,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         makePlot(tr("outlet moisture X_out [% wb]"), m_moistureCurve, QColor(31, 119, 180), plots);
     m_temperaturePlot =
         makePlot(tr("outlet temperature T_out [°C]"), m_temperatureCurve, QColor(214, 39, 40), plots);
+    m_moistureModelCurve = addModelCurve(m_moisturePlot, tr("physics model (default parameters)"), Qt::black);
+    m_temperatureModelCurve =
+        addModelCurve(m_temperaturePlot, tr("physics model (default parameters)"), Qt::black);
+    for (auto* plot : {m_moisturePlot, m_temperaturePlot}) {
+        plot->insertLegend(new QwtLegend, QwtPlot::TopLegend);
+    }
     plotLayout->addWidget(m_moisturePlot);
     plotLayout->addWidget(m_temperaturePlot);
 
@@ -98,6 +112,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_worker, &EngineWorker::dataLoaded, this, &MainWindow::onDataLoaded);
     connect(m_worker, &EngineWorker::loadFailed, this, &MainWindow::onLoadFailed);
     connect(m_worker, &EngineWorker::progress, this, &MainWindow::onProgress);
+    connect(this, &MainWindow::simulationRequested, m_worker, &EngineWorker::simulateDataSet);
+    connect(m_worker, &EngineWorker::simulated, this, &MainWindow::onSimulated);
+    connect(m_worker, &EngineWorker::simulationFailed, this, [this](const QString& message) {
+        setBusy(false);
+        m_statusLabel->setText(tr("The physics model failed on this data: %1").arg(message));
+    });
     connect(m_worker, &EngineWorker::cancelled, this, [this] {
         setBusy(false);
         m_statusLabel->setText(tr("Loading cancelled; the data shown before is unchanged."));
@@ -178,10 +198,11 @@ void MainWindow::setBusy(bool busy) {
     }
 }
 
-void MainWindow::onProgress(const QString&, double fraction, const QString& detail) {
+void MainWindow::onProgress(const QString& stage, double fraction, const QString& detail) {
     m_progressBar->setValue(static_cast<int>(fraction * 100));
     if (!detail.isEmpty()) {
-        m_statusLabel->setText(tr("Loading %1…").arg(detail));
+        const QString what = stage == QLatin1String("simulate") ? tr("Simulating %1…") : tr("Loading %1…");
+        m_statusLabel->setText(what.arg(detail));
     }
 }
 
@@ -208,16 +229,22 @@ void MainWindow::onDataLoaded(const QString& path, const drytwin::data::DataSet&
         }
     }
     m_columnTable->header()->resizeSections(QHeaderView::ResizeToContents);
-    m_statusLabel->setText(tr("%1: %2 batches, %3 rows, %4 missing cells; cleaning keeps %5 rows")
-                               .arg(path)
-                               .arg(summary.batches.size())
-                               .arg(summary.rows)
-                               .arg(summary.missing)
-                               .arg(summary.cleaning.kept));
+    m_dataStatus = tr("%1: %2 batches, %3 rows, %4 missing cells; cleaning keeps %5 rows")
+                       .arg(path)
+                       .arg(summary.batches.size())
+                       .arg(summary.rows)
+                       .arg(summary.missing)
+                       .arg(summary.cleaning.kept);
+    m_statusLabel->setText(m_dataStatus);
+    m_modelX.clear();
+    m_modelT.clear();
     if (m_batchList->count() > 0) {
         m_batchList->setCurrentRow(0);
     }
     Q_EMIT loadFinished(true);
+    // The model's view of the same batches, computed on the worker thread.
+    setBusy(true);
+    Q_EMIT simulationRequested(m_data);
 }
 
 void MainWindow::onLoadFailed(const QString& path, const QStringList& errors) {
@@ -235,7 +262,20 @@ void MainWindow::onLoadFailed(const QString& path, const QStringList& errors) {
     Q_EMIT loadFinished(false);
 }
 
+void MainWindow::onSimulated(const QVector<QVector<double>>& xOutPct, const QVector<QVector<double>>& tOutC) {
+    setBusy(false);
+    m_modelX = xOutPct;
+    m_modelT = tOutC;
+    m_statusLabel->setText(m_dataStatus + tr("; physics model (default parameters) shown dashed"));
+    showBatch(m_batchList->currentRow());
+    Q_EMIT simulationShown();
+}
+
 void MainWindow::onBatchSelected(int row) {
+    showBatch(row);
+}
+
+void MainWindow::showBatch(int row) {
     if (row < 0 || static_cast<std::size_t>(row) >= m_data.batches.size()) {
         return;
     }
@@ -248,6 +288,14 @@ void MainWindow::onBatchSelected(int row) {
     }
     if (t && temp) {
         m_temperatureCurve->setSamples(t->data(), temp->data(), static_cast<int>(t->size()));
+    }
+    const auto r = static_cast<int>(row);
+    if (t && r < m_modelX.size() && m_modelX[r].size() == static_cast<int>(t->size())) {
+        m_moistureModelCurve->setSamples(t->data(), m_modelX[r].constData(), m_modelX[r].size());
+        m_temperatureModelCurve->setSamples(t->data(), m_modelT[r].constData(), m_modelT[r].size());
+    } else {
+        m_moistureModelCurve->setSamples(QVector<QPointF>());
+        m_temperatureModelCurve->setSamples(QVector<QPointF>());
     }
     m_moisturePlot->replot();
     m_temperaturePlot->replot();

@@ -5,6 +5,7 @@
 
 #include <QMainWindow>
 #include <QThread>
+#include <QVector>
 
 class QLabel;
 class QListWidget;
@@ -35,6 +36,9 @@ public:
 
 Q_SIGNALS:
     void loadRequested(const QString& path);
+    void simulationRequested(const drytwin::data::DataSet& dataSet);
+    /// @brief The model's predictions are shown (for tests and scripting).
+    void simulationShown();
     /// @brief Emitted after a load attempt finished, successful or not (for tests and scripting).
     void loadFinished(bool ok);
 
@@ -44,12 +48,14 @@ private Q_SLOTS:
     void onLoadFailed(const QString& path, const QStringList& errors);
     void onProgress(const QString& stage, double fraction, const QString& detail);
     void onBatchSelected(int row);
+    void onSimulated(const QVector<QVector<double>>& xOutPct, const QVector<QVector<double>>& tOutC);
     void showAbout();
     void chooseFile();
     void chooseFolder();
 
 private:
     void createMenus();
+    void showBatch(int row);
     void setBusy(bool busy);
 
     QThread m_thread;
@@ -61,6 +67,11 @@ private:
     QwtPlot* m_temperaturePlot = nullptr;
     QwtPlotCurve* m_moistureCurve = nullptr;
     QwtPlotCurve* m_temperatureCurve = nullptr;
+    QwtPlotCurve* m_moistureModelCurve = nullptr;
+    QwtPlotCurve* m_temperatureModelCurve = nullptr;
+    QVector<QVector<double>> m_modelX;
+    QVector<QVector<double>> m_modelT;
+    QString m_dataStatus; ///< what the status bar says about the loaded data
     QLabel* m_statusLabel = nullptr;
     QProgressBar* m_progressBar = nullptr;
     QPushButton* m_cancelButton = nullptr;

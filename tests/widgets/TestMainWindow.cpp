@@ -7,6 +7,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <fstream>
+#include <qwt_plot.h>
+#include <qwt_plot_curve.h>
 
 using drytwin::widgets::MainWindow;
 
@@ -44,12 +46,24 @@ private Q_SLOTS:
         writeText(dir.filePath("bad.csv"), "time_s;T_hot_C\n0;1\n");
         MainWindow w;
         QSignalSpy spy(&w, &MainWindow::loadFinished);
+        QSignalSpy shown(&w, &MainWindow::simulationShown);
         w.openDataSet(dir.filePath("good.csv"));
         QVERIFY(spy.wait(10000));
         QCOMPARE(spy.takeFirst().at(0).toBool(), true);
         QCOMPARE(w.dataSet().batches.size(), std::size_t(1));
         auto* list = w.findChild<QListWidget*>();
         QCOMPARE(list->count(), 1);
+        // The physics model's predictions follow on the worker thread and are drawn dashed.
+        QVERIFY(shown.count() > 0 || shown.wait(20000));
+        bool modelDrawn = false;
+        for (auto* plot : w.findChildren<QwtPlot*>()) {
+            for (auto* item : plot->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+                auto* curve = static_cast<QwtPlotCurve*>(item);
+                modelDrawn =
+                    modelDrawn || (curve->title().text().contains("model") && curve->dataSize() == 3);
+            }
+        }
+        QVERIFY(modelDrawn);
 
         w.openDataSet(dir.filePath("bad.csv"));
         QVERIFY(spy.wait(10000));
