@@ -145,16 +145,7 @@ std::vector<RowRef> calibrationSubset(const std::vector<SiBatch>& batches, std::
 }
 
 physics::LineInputs toLineInputs(const SiBatch& b) {
-    physics::LineInputs in;
-    in.timeS = b.timeS;
-    in.tHotK = b.tHotK;
-    in.xInDb = b.xInDb;
-    in.tInK = b.tInK;
-    in.tAmbK = b.tAmbK;
-    in.rhAmb = b.rhAmb;
-    in.feedKgPerS = b.feedKgPerS;
-    in.airSpeedMPerS = b.airSpeedMPerS;
-    return in;
+    return {b.timeS, b.tHotK, b.xInDb, b.tInK, b.tAmbK, b.rhAmb, b.feedKgPerS, b.airSpeedMPerS};
 }
 
 } // namespace drytwin::data

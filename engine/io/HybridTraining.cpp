@@ -84,31 +84,31 @@ void storeResidualModels(io::ModelFile& model, const TrainingResult& trained) {
     model.extraJson = extra.dump();
 }
 
-Expected<residual::ResidualModel> loadResidualModel(const io::ModelFile& model, const std::string& key,
-                                                    bool& present) {
+namespace {
+
+/// A model stored under @p key in the model file's extra JSON, read by T::fromJson.
+template <class T> Expected<T> loadStored(const io::ModelFile& model, const std::string& key, bool& present) {
     const auto extra = nlohmann::json::parse(model.extraJson.empty() ? "{}" : model.extraJson);
     present = extra.contains(key);
     if (!present) {
         return Error{ErrorKind::BadInput, key, "not in the model file; run drytwin train first"};
     }
-    auto m = residual::ResidualModel::fromJson(extra[key].dump());
+    auto m = T::fromJson(extra[key].dump());
     if (!m) {
         return Error{ErrorKind::BadInput, "model file: " + key, m.error().reason};
     }
     return m;
 }
 
+} // namespace
+
+Expected<residual::ResidualModel> loadResidualModel(const io::ModelFile& model, const std::string& key,
+                                                    bool& present) {
+    return loadStored<residual::ResidualModel>(model, key, present);
+}
+
 Expected<baselines::LstmBaseline> loadLstm(const io::ModelFile& model, bool& present) {
-    const auto extra = nlohmann::json::parse(model.extraJson.empty() ? "{}" : model.extraJson);
-    present = extra.contains(kLstmKey);
-    if (!present) {
-        return Error{ErrorKind::BadInput, kLstmKey, "not in the model file; run drytwin train first"};
-    }
-    auto m = baselines::LstmBaseline::fromJson(extra[kLstmKey].dump());
-    if (!m) {
-        return Error{ErrorKind::BadInput, std::string("model file: ") + kLstmKey, m.error().reason};
-    }
-    return m;
+    return loadStored<baselines::LstmBaseline>(model, kLstmKey, present);
 }
 
 Expected<std::vector<AblationRow>> runAblation(const std::vector<data::SiBatch>& batches,
