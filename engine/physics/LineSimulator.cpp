@@ -179,11 +179,17 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
         y[2 * j + 1] = interpolate(in.timeS, in.tInK, entryTube[j]);
     }
     std::vector<std::vector<double>> yS(ns, std::vector<double>(2 * nTube, 0.0));
-    SectionContext ctx = makeContext(in, p, o.switches, entryTube, uniform);
-    ParcelRhs tube{&ctx, tubeEval, nTube, 2};
-    if (auto st = integrateParcels(tube, y, tauH, settingsFor(o, 2), withSens ? &spec : nullptr,
-                                   withSens ? &yS : nullptr, "drying tube", &res.stats);
-        !st) {
+    // One section: every parcel (entry times, states) integrated over the section's duration.
+    using Evaluate = bool (*)(const void*, double, std::size_t, const double*, double*);
+    auto runSection = [&](Evaluate evaluate, const std::vector<double>& entry, int states, double duration,
+                          std::vector<double>& state, std::vector<std::vector<double>>& sens,
+                          const char* name) {
+        const SectionContext ctx = makeContext(in, p, o.switches, entry, uniform);
+        const ParcelRhs rhs{&ctx, evaluate, entry.size(), states};
+        return integrateParcels(rhs, state, duration, settingsFor(o, states), withSens ? &spec : nullptr,
+                                withSens ? &sens : nullptr, name, &res.stats);
+    };
+    if (auto st = runSection(tubeEval, entryTube, 2, tauH, y, yS, "drying tube"); !st) {
         return st.error();
     }
     res.xHdtDb.resize(n);
@@ -222,11 +228,7 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
             ySc[q][2 * j + 1] = yS[q][2 * a + 1];
         }
     }
-    SectionContext cctx = makeContext(in, p, o.switches, entryConv, uniform);
-    ParcelRhs conv{&cctx, conveyorEval, n, 2};
-    if (auto st = integrateParcels(conv, yc, tauC, settingsFor(o, 2), withSens ? &spec : nullptr,
-                                   withSens ? &ySc : nullptr, "conveyor", &res.stats);
-        !st) {
+    if (auto st = runSection(conveyorEval, entryConv, 2, tauC, yc, ySc, "conveyor"); !st) {
         return st.error();
     }
 
@@ -299,11 +301,7 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
     res.xOutDb.resize(n);
     res.tOutK.resize(n);
     if (o.winnower == WinnowerForm::Transient) {
-        SectionContext wctx = makeContext(in, p, o.switches, entryWin, uniform);
-        ParcelRhs win{&wctx, winnowerEval, n, 4};
-        if (auto st = integrateParcels(win, yw, tW, settingsFor(o, 4), withSens ? &spec : nullptr,
-                                       withSens ? &ySw : nullptr, "winnower", &res.stats);
-            !st) {
+        if (auto st = runSection(winnowerEval, entryWin, 4, tW, yw, ySw, "winnower"); !st) {
             return st.error();
         }
         for (std::size_t j = 0; j < n; ++j) {

@@ -214,9 +214,9 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
             observedResidual(*v.batch, *v.pbm, k, ex[vi][k], et[vi][k]);
         }
         for (std::size_t k = v.rows.begin + static_cast<std::size_t>(lags - 1); k + 1 < v.rows.end; ++k) {
+            // Both rows kept, and measured residuals at k+1 and at every lag k … k−L+1.
             bool ok = v.batch->keep[k] && v.batch->keep[k + 1];
-            for (int l = -1; ok && l < lags; ++l) {
-                const std::size_t j = k - static_cast<std::size_t>(l == -1 ? 0 : l) + (l == -1 ? 1 : 0);
+            for (std::size_t j = k + 1 - static_cast<std::size_t>(lags); ok && j <= k + 1; ++j) {
                 ok = std::isfinite(ex[vi][j]) && std::isfinite(et[vi][j]);
             }
             if (ok) {
@@ -398,18 +398,19 @@ HybridPrediction ResidualModel::predictAhead(const BatchView& v, int horizon) co
     out.tOutC.assign(count, kNaN);
     out.residualXPct.assign(count, kNaN);
     out.residualTC.assign(count, kNaN);
+    const auto h = static_cast<std::size_t>(std::max(1, horizon));
+    // Residuals and exogenous inputs of the rows the predictions need, computed once: from the
+    // earliest origin's oldest lag to the end of the view.
+    const std::size_t back = h + static_cast<std::size_t>(m_options.residualLags);
+    const std::size_t first = v.rows.begin > back ? v.rows.begin - back : 0;
     std::vector<double> ex(n, kNaN), et(n, kNaN);
-    for (std::size_t k = 0; k < n; ++k) {
-        observedResidual(*v.batch, *v.pbm, k, ex[k], et[k]);
-    }
-    // Exogenous inputs of every row, computed once.
     std::vector<double> us(n, kNaN);
     std::vector<Eigen::VectorXd> ds(n);
-    for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t k = first; k < v.rows.end; ++k) {
+        observedResidual(*v.batch, *v.pbm, k, ex[k], et[k]);
         Eigen::VectorXd z;
         features(v, k, z, us[k], ds[k]);
     }
-    const auto h = static_cast<std::size_t>(std::max(1, horizon));
     for (std::size_t i = 0; i < count; ++i) {
         const std::size_t target = v.rows.begin + i;
         if (target < h) {
