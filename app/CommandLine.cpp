@@ -128,6 +128,8 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     addData(evaluate);
     evaluate->add_option("--model", o.modelPath, "model file")->required();
     evaluate->add_option("--json", o.jsonPath, "write the metrics as JSON (CONTRACT.md §3)");
+    evaluate->add_option("--diagnostics", o.diagnosticsPath,
+                         "write residual ACF, PSD and the eigenvalues of A (before/after) as JSON");
     evaluate->add_option("--horizon", o.horizonSteps, "multi-step horizon [steps]")->capture_default_str();
     reg(evaluate, runEvaluate);
 

@@ -457,6 +457,12 @@ int runEvaluate(const CommandOptions& o) {
             return fail(st.error());
         }
     }
+    if (!o.diagnosticsPath.empty()) {
+        if (auto st = writeFileAtomically(o.diagnosticsPath, evaluation::residualDiagnosticsJson(*ev, model));
+            !st) {
+            return fail(st.error());
+        }
+    }
     return 0;
 }
 int runTrain(const CommandOptions& o) {
@@ -568,6 +574,7 @@ int runPipeline(const CommandOptions& o) {
     c = o;
     c.modelPath = in("model.json");
     c.jsonPath = in("evaluate.json");
+    c.diagnosticsPath = in("diagnostics.json");
     if (int rc = step("evaluate", runEvaluate, c); rc != 0) {
         return rc;
     }
@@ -576,24 +583,6 @@ int runPipeline(const CommandOptions& o) {
     c.jsonPath = in("ablation.json");
     if (int rc = step("ablation", runAblation, c); rc != 0) {
         return rc;
-    }
-    // Residual diagnostics (ACF, PSD, eigenvalues) as data for plots.
-    io::ModelFile model;
-    int rc = 0;
-    c = o;
-    c.modelPath = in("model.json");
-    std::vector<data::SiBatch> si;
-    if (!loadModelAndData(c, model, si, rc)) {
-        return rc;
-    }
-    auto ev = evaluation::evaluate(si, model, {o.horizonSteps}, {});
-    if (!ev) {
-        return fail(ev.error());
-    }
-    if (auto st =
-            writeFileAtomically(in("diagnostics.json"), evaluation::residualDiagnosticsJson(*ev, model));
-        !st) {
-        return fail(st.error());
     }
     auto report = io::writePipelineReport(o.outPath);
     if (!report) {

@@ -15,6 +15,7 @@ struct CommandOptions {
     std::string outPath;
     std::string modelPath;
     std::string jsonPath;
+    std::string diagnosticsPath; ///< evaluate: residual ACF, PSD and eigenvalues as JSON
     std::string truthPath;
     std::string scenarioPath;
     unsigned seed = 1;

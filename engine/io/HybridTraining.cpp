@@ -139,19 +139,17 @@ Expected<std::vector<AblationRow>> runAblation(const std::vector<data::SiBatch>&
         sw.clampWaterActivity = sw.clampWaterActivity && v.physics != 1;
         sw.latentHeatCorrection = sw.latentHeatCorrection && v.physics != 2;
         sw.moistureDependentCp = sw.moistureDependentCp && v.physics != 3;
-        std::vector<physics::SimulationResult> pbm;
-        if (v.physics == 0 && !basePbm.empty()) {
-            pbm = basePbm;
-        } else {
+        // The base PBM run serves the full model and the three learning variants; the physics
+        // variants each need their own.
+        std::vector<physics::SimulationResult> variantPbm;
+        if (v.physics != 0 || basePbm.empty()) {
             auto sims = simulatePbm(batches, model, sw);
             if (!sims) {
                 return sims.error();
             }
-            pbm = std::move(*sims);
-            if (v.physics == 0) {
-                basePbm = pbm;
-            }
+            (v.physics == 0 ? basePbm : variantPbm) = std::move(*sims);
         }
+        const auto& pbm = v.physics == 0 ? basePbm : variantPbm;
         residual::ResidualOptions o;
         o.orthogonalProjection = v.learning != 4;
         o.controlConsistentWeights = v.learning != 5;
