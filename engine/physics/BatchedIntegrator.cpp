@@ -1,5 +1,7 @@
 #include "physics/BatchedIntegrator.h"
 
+#include "physics/FastVectorKernels.h"
+
 #include <cvodes/cvodes.h>
 #include <nvector/nvector_serial.h>
 #include <sunlinsol/sunlinsol_dense.h>
@@ -96,6 +98,12 @@ Status solveSystem(const ParcelRhs& rhs, std::size_t first, std::size_t count, d
     }
     s.y = N_VNew_Serial(n, s.ctx);
     s.abstol = N_VNew_Serial(n, s.ctx);
+    if (!s.y || !s.abstol) {
+        return Error{ErrorKind::Numerical, section, "could not allocate the solver's vectors"};
+    }
+    // Every vector CVODE clones from these inherits the optimised kernels.
+    useFastVectorKernels(s.y);
+    useFastVectorKernels(s.abstol);
     double* yv = N_VGetArrayPointer(s.y);
     double* at = N_VGetArrayPointer(s.abstol);
     for (std::size_t i = 0; i < count * m; ++i) {
@@ -113,9 +121,10 @@ Status solveSystem(const ParcelRhs& rhs, std::size_t first, std::size_t count, d
     CVodeSetUserData(s.mem, &data);
     CVodeSetMaxNumSteps(s.mem, settings.maxSteps);
     if (!settings.reference) {
-        // Each Adams order adds a Nordsieck vector that every step updates; on these smooth,
-        // short sections order 4 keeps CVODE's vector work below the right-hand side's.
+        // Each Adams order adds a Nordsieck vector that every step updates; the sections run at
+        // order 2–4 anyway (the inputs' kinks every sample keep the order low).
         CVodeSetMaxOrd(s.mem, settings.maxAdamsOrder);
+        CVodeSetNonlinConvCoef(s.mem, settings.nonlinearConvergenceCoefficient);
     }
     CVodeSetStopTime(s.mem, duration);
     if (settings.reference) {

@@ -25,15 +25,19 @@ struct SectionContext {
     const std::vector<double>* entry = nullptr; ///< absolute entry time of each parcel [s]
     mutable std::vector<std::size_t> hint;      ///< per-parcel interpolation hints
     /// Uniform sampling (the normal case, 1 s): the segment is found by arithmetic.
+    /// Winnower inlet mix per parcel when it is not carried as solver states (no sensitivities).
+    const double* xMix = nullptr;
+    const double* tMixK = nullptr;
     bool uniform = false;
     double t0 = 0;
     double dt = 1;
+    double invDt = 1;
     double at(const std::vector<double>& series, std::size_t parcel, double s) const {
         const double t = (*entry)[parcel] + s;
         if (!uniform) {
             return interpolateFrom(in->timeS, series, t, hint[parcel]);
         }
-        const double u = (t - t0) / dt;
+        const double u = (t - t0) * invDt;
         if (u <= 0) {
             return series.front();
         }
@@ -64,6 +68,7 @@ SectionContext makeContext(const LineInputs& in, const ParameterSet& p, const pr
     c.uniform = uniform;
     c.t0 = in.timeS.front();
     c.dt = (in.timeS.back() - in.timeS.front()) / static_cast<double>(in.timeS.size() - 1);
+    c.invDt = 1.0 / c.dt;
     return c;
 }
 
@@ -101,6 +106,15 @@ bool conveyorEval(const void* c, double s, std::size_t i, const double* y, doubl
 }
 
 bool winnowerEval(const void* c, double s, std::size_t i, const double* y, double* ydot) {
+    const auto& x = *static_cast<const SectionContext*>(c);
+    // States: X and T; the entry mix (X_mix, T_mix) comes from the context.
+    const auto r = winnowerRates(y[0], y[1], s, x.xMix[i], x.tMixK[i], ambientAt(x, i, s), *x.p, *x.sw);
+    ydot[0] = r.dXdt;
+    ydot[1] = r.dTdt;
+    return finite2(ydot);
+}
+
+bool winnowerEvalWithMixStates(const void* c, double s, std::size_t i, const double* y, double* ydot) {
     const auto& x = *static_cast<const SectionContext*>(c);
     // States: X, T, and the entry mix (X_mix, T_mix) carried as constants so that their
     // sensitivities flow into Eq. 18.
@@ -184,7 +198,9 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
     auto runSection = [&](Evaluate evaluate, const std::vector<double>& entry, int states, double duration,
                           std::vector<double>& state, std::vector<std::vector<double>>& sens,
                           const char* name) {
-        const SectionContext ctx = makeContext(in, p, o.switches, entry, uniform);
+        SectionContext ctx = makeContext(in, p, o.switches, entry, uniform);
+        ctx.xMix = res.proxyXMixDb.data();
+        ctx.tMixK = res.proxyTMixK.data();
         const ParcelRhs rhs{&ctx, evaluate, entry.size(), states};
         return integrateParcels(rhs, state, duration, settingsFor(o, states), withSens ? &spec : nullptr,
                                 withSens ? &sens : nullptr, name, &res.stats);
@@ -235,7 +251,10 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
     // Winnower inlet mix, Eqs. 15–16, and its Jacobian for the sensitivities (the mix is
     // algebraic, so central differences are accurate to ~1e-9 here).
     std::vector<double> entryWin(n);
-    std::vector<double> yw(4 * n);
+    // With sensitivities the mix rides along as two constant states (so that its sensitivities
+    // reach Eq. 18); without, it is read from the proxies, which halves the winnower's system.
+    const std::size_t wm = withSens ? 4 : 2;
+    std::vector<double> yw(wm * n);
     std::vector<std::vector<double>> ySw(ns, std::vector<double>(4 * n));
     res.proxyXConvDb.resize(n);
     res.proxyTConvK.resize(n);
@@ -252,13 +271,13 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
         res.proxyTConvK[j] = tc;
         res.proxyXMixDb[j] = mix.xDb;
         res.proxyTMixK[j] = mix.tK;
-        yw[4 * j] = mix.xDb;
-        yw[4 * j + 1] = mix.tK;
-        yw[4 * j + 2] = mix.xDb;
-        yw[4 * j + 3] = mix.tK;
+        yw[wm * j] = mix.xDb;
+        yw[wm * j + 1] = mix.tK;
         if (!withSens) {
             continue;
         }
+        yw[4 * j + 2] = mix.xDb;
+        yw[4 * j + 3] = mix.tK;
         const double in4[4] = {xc, tc, xh, th};
         double jac[2][4];
         for (int a = 0; a < 4; ++a) {
@@ -301,12 +320,14 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
     res.xOutDb.resize(n);
     res.tOutK.resize(n);
     if (o.winnower == WinnowerForm::Transient) {
-        if (auto st = runSection(winnowerEval, entryWin, 4, tW, yw, ySw, "winnower"); !st) {
+        if (auto st = runSection(withSens ? winnowerEvalWithMixStates : winnowerEval, entryWin,
+                                 static_cast<int>(wm), tW, yw, ySw, "winnower");
+            !st) {
             return st.error();
         }
         for (std::size_t j = 0; j < n; ++j) {
-            res.xOutDb[j] = yw[4 * j];
-            res.tOutK[j] = yw[4 * j + 1];
+            res.xOutDb[j] = yw[wm * j];
+            res.tOutK[j] = yw[wm * j + 1];
         }
         for (std::size_t q = 0; q < ns; ++q) {
             auto& os = res.sensitivities[q];

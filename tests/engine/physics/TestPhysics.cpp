@@ -1,9 +1,13 @@
 #include "physics/BatchedIntegrator.h"
+#include "physics/FastVectorKernels.h"
 #include "physics/LineSimulator.h"
 #include "physics/SectionRates.h"
 
 #include <QtTest>
 #include <cmath>
+#include <memory>
+#include <nvector/nvector_serial.h>
+#include <random>
 
 using namespace drytwin;
 using namespace drytwin::physics;
@@ -371,6 +375,124 @@ private Q_SLOTS:
             const double expected = 443.15 + 10.0 * (1.0 - std::exp(-(static_cast<double>(i) - 10.0) / tau));
             QVERIFY(std::abs(y[i] - expected) < 1e-9);
         }
+    }
+
+    void fastVectorKernelsMatchSundials() {
+        // Every replaced operation against SUNDIALS' own serial implementation, on random data
+        // with zeros and negative entries, including the aliasing SUNDIALS allows (z = x[0]).
+        SUNContext ctx = nullptr;
+        QCOMPARE(SUNContext_Create(nullptr, &ctx), 0);
+        const sunindextype n = 1001;
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<double> u(-2.0, 2.0);
+        auto make = [&](bool fast) {
+            N_Vector v = N_VNew_Serial(n, ctx);
+            if (fast) {
+                useFastVectorKernels(v);
+            }
+            return v;
+        };
+        std::vector<N_Vector> stock;
+        std::vector<N_Vector> fast;
+        for (int k = 0; k < 5; ++k) {
+            stock.push_back(make(false));
+            fast.push_back(make(true));
+            for (sunindextype i = 0; i < n; ++i) {
+                double v = u(rng);
+                if (i % 97 == 0) {
+                    v = 0.0;
+                }
+                NV_Ith_S(stock[k], i) = v;
+                NV_Ith_S(fast[k], i) = v;
+            }
+        }
+        N_Vector mask[2] = {stock[4], fast[4]};
+        // A clone carries the kernels, as CVODE's internal vectors must.
+        N_Vector clone = N_VClone(fast[0]);
+        QVERIFY(clone->ops->nvlinearsum == fast[0]->ops->nvlinearsum);
+        QVERIFY(clone->ops->nvlinearsum != stock[0]->ops->nvlinearsum);
+        N_VDestroy(clone);
+        auto same = [&](N_Vector a, N_Vector b) {
+            double d = 0;
+            for (sunindextype i = 0; i < n; ++i) {
+                d = std::max(d, std::abs(NV_Ith_S(a, i) - NV_Ith_S(b, i)));
+            }
+            return d <= 1e-14;
+        };
+        auto close = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(a)); };
+        for (int side = 0; side < 2; ++side) {
+            auto& v = side == 0 ? stock : fast;
+            N_VLinearSum(0.3, v[0], -1.7, v[1], v[2]);
+        }
+        QVERIFY(same(stock[2], fast[2]));
+        QVERIFY(close(N_VWrmsNorm(stock[0], stock[1]), N_VWrmsNorm(fast[0], fast[1])));
+        QVERIFY(
+            close(N_VWrmsNormMask(stock[0], stock[1], mask[0]), N_VWrmsNormMask(fast[0], fast[1], mask[1])));
+        QVERIFY(close(N_VWSqrSumLocal(stock[0], stock[1]), N_VWSqrSumLocal(fast[0], fast[1])));
+        QVERIFY(close(N_VWL2Norm(stock[0], stock[1]), N_VWL2Norm(fast[0], fast[1])));
+        QVERIFY(close(N_VDotProd(stock[0], stock[1]), N_VDotProd(fast[0], fast[1])));
+        QVERIFY(close(N_VMaxNorm(stock[0]), N_VMaxNorm(fast[0])));
+        QVERIFY(close(N_VMin(stock[0]), N_VMin(fast[0])));
+        QVERIFY(close(N_VL1Norm(stock[0]), N_VL1Norm(fast[0])));
+        QVERIFY(close(N_VMinQuotient(stock[0], stock[1]), N_VMinQuotient(fast[0], fast[1])));
+        using Op = void (*)(std::vector<N_Vector>&);
+        const std::vector<std::pair<const char*, Op>> unary{
+            {"Prod", [](std::vector<N_Vector>& v) { N_VProd(v[0], v[1], v[2]); }},
+            {"Scale", [](std::vector<N_Vector>& v) { N_VScale(-3.5, v[0], v[2]); }},
+            {"Abs", [](std::vector<N_Vector>& v) { N_VAbs(v[0], v[2]); }},
+            {"AddConst", [](std::vector<N_Vector>& v) { N_VAddConst(v[0], 0.25, v[2]); }},
+            {"Const", [](std::vector<N_Vector>& v) { N_VConst(1.5, v[2]); }},
+            {"Compare", [](std::vector<N_Vector>& v) { N_VCompare(0.8, v[0], v[2]); }},
+            {"InvTest", [](std::vector<N_Vector>& v) { QVERIFY(!N_VInvTest(v[0], v[2])); }},
+            {"LinearCombination",
+             [](std::vector<N_Vector>& v) {
+                 double c[3] = {0.5, -2.0, 3.0};
+                 N_Vector x[3] = {v[0], v[1], v[3]};
+                 N_VLinearCombination(3, c, x, v[2]);
+             }},
+            {"LinearCombinationInPlace",
+             [](std::vector<N_Vector>& v) {
+                 N_VScale(1.0, v[0], v[2]);
+                 double c[3] = {1.5, -2.0, 3.0};
+                 N_Vector x[3] = {v[2], v[1], v[3]};
+                 N_VLinearCombination(3, c, x, v[2]);
+             }},
+            {"ScaleAddMulti",
+             [](std::vector<N_Vector>& v) {
+                 double a[2] = {0.5, -1.0};
+                 N_Vector y[2] = {v[1], v[3]};
+                 N_Vector z[2] = {v[2], v[3]};
+                 N_VScaleAddMulti(2, a, v[0], y, z);
+             }},
+        };
+        for (const auto& [name, op] : unary) {
+            N_VScale(1.0, stock[1], stock[3]);
+            N_VScale(1.0, fast[1], fast[3]);
+            N_VConst(0.0, stock[2]);
+            N_VConst(0.0, fast[2]);
+            if (std::string(name) == "InvTest") {
+                // Only the entries with x != 0 are written; start both outputs equal.
+                N_VConst(9.0, stock[2]);
+                N_VConst(9.0, fast[2]);
+            }
+            op(stock);
+            op(fast);
+            QVERIFY2(same(stock[2], fast[2]) && same(stock[3], fast[3]), name);
+        }
+        // Division away from the zeros.
+        N_VAddConst(stock[4], 5.0, stock[3]);
+        N_VAddConst(fast[4], 5.0, fast[3]);
+        N_VDiv(stock[0], stock[3], stock[2]);
+        N_VDiv(fast[0], fast[3], fast[2]);
+        QVERIFY(same(stock[2], fast[2]));
+        N_VInv(stock[3], stock[2]);
+        N_VInv(fast[3], fast[2]);
+        QVERIFY(same(stock[2], fast[2]));
+        for (int k = 0; k < 5; ++k) {
+            N_VDestroy(stock[k]);
+            N_VDestroy(fast[k]);
+        }
+        SUNContext_Free(&ctx);
     }
 
     void batchesInParallelEqualSerial() {
