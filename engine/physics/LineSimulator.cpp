@@ -25,6 +25,9 @@ struct SectionContext {
     const std::vector<double>* entry = nullptr; ///< absolute entry time of each parcel [s]
     mutable std::vector<std::size_t> hint;      ///< per-parcel interpolation hints
     /// Uniform sampling (the normal case, 1 s): the segment is found by arithmetic.
+    /// X_e (Eq. 5) at the sample times, interpolated like the inputs it comes from (saves a log
+    /// and an exp per right-hand side); null when X_e must follow parameters CVODES perturbs.
+    const std::vector<double>* xeSeries = nullptr;
     /// Winnower inlet mix per parcel when it is not carried as solver states (no sensitivities).
     const double* xMix = nullptr;
     const double* tMixK = nullptr;
@@ -94,6 +97,9 @@ AmbientEnvironment ambientAt(const SectionContext& x, std::size_t parcel, double
     AmbientEnvironment env;
     env.tAirK = x.at(x.in->tAmbK, parcel, s);
     env.rh = x.at(x.in->rhAmb, parcel, s);
+    if (x.xeSeries) {
+        env.xeDb = x.at(*x.xeSeries, parcel, s);
+    }
     return env;
 }
 
@@ -193,6 +199,16 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
         y[2 * j + 1] = interpolate(in.timeS, in.tInK, entryTube[j]);
     }
     std::vector<std::vector<double>> yS(ns, std::vector<double>(2 * nTube, 0.0));
+    std::vector<double> xeSeries;
+    const bool xeMoves = std::any_of(odeSens.begin(), odeSens.end(), [](Param q) {
+        return q == Param::theta_xe1 || q == Param::theta_xe2 || q == Param::theta_xe3;
+    });
+    if (!xeMoves) {
+        xeSeries.resize(in.size());
+        for (std::size_t k = 0; k < in.size(); ++k) {
+            xeSeries[k] = properties::equilibriumMoisture(in.tAmbK[k], in.rhAmb[k], p);
+        }
+    }
     // One section: every parcel (entry times, states) integrated over the section's duration.
     using Evaluate = bool (*)(const void*, double, std::size_t, const double*, double*);
     auto runSection = [&](Evaluate evaluate, const std::vector<double>& entry, int states, double duration,
@@ -201,6 +217,7 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
         SectionContext ctx = makeContext(in, p, o.switches, entry, uniform);
         ctx.xMix = res.proxyXMixDb.data();
         ctx.tMixK = res.proxyTMixK.data();
+        ctx.xeSeries = xeMoves ? nullptr : &xeSeries;
         const ParcelRhs rhs{&ctx, evaluate, entry.size(), states};
         return integrateParcels(rhs, state, duration, settingsFor(o, states), withSens ? &spec : nullptr,
                                 withSens ? &sens : nullptr, name, &res.stats);

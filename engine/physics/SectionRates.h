@@ -62,13 +62,22 @@ struct AmbientEnvironment {
     double tAirK = 0;
     double rh = 0;          ///< [0..1]
     double extraUptake = 0; ///< added dX/dt [1/s] (plant's ambient re-absorption; PBM: 0)
+    /// Equilibrium moisture X_e of this air when the caller already has it (the line simulator
+    /// interpolates it between samples, like the inputs it comes from); negative: computed
+    /// from tAirK and rh with Eq. 5.
+    double xeDb = -1;
 };
+
+/// @brief X_e of the air around a parcel, Eq. (5).
+inline double equilibriumMoistureOf(const AmbientEnvironment& env, const ParameterSet& p) {
+    return env.xeDb >= 0 ? env.xeDb : properties::equilibriumMoisture(env.tAirK, env.rh, p);
+}
 
 /// @brief Conveyor top-layer rates, Eqs. 13–14.
 inline SectionRates conveyorRates(double x, double t, const AmbientEnvironment& env, const ParameterSet& p,
                                   const ModelSwitches& s) {
     SectionRates r;
-    const double xe = properties::equilibriumMoisture(env.tAirK, env.rh, p);
+    const double xe = equilibriumMoistureOf(env, p);
     const double lChar = p[properties::Param::L_char];
     r.dXdt = -p[properties::Param::chi_layer] * properties::effectiveDiffusivity(t, env.rh, x, p) * (x - xe) /
                  (lChar * lChar) +
@@ -88,7 +97,7 @@ inline SectionRates winnowerRates(double x, double t, double tS, double xMix, do
                                   const AmbientEnvironment& env, const ParameterSet& p,
                                   const ModelSwitches& s) {
     SectionRates r;
-    const double xe = properties::equilibriumMoisture(env.tAirK, env.rh, p);
+    const double xe = equilibriumMoistureOf(env, p);
     // A parcel colder than the air does not flash; the exponent then stays bounded.
     const double excess = std::max(0.0, tMixK - env.tAirK);
     const double kappa = p[properties::Param::kappa];
@@ -105,7 +114,7 @@ inline SectionRates winnowerRates(double x, double t, double tS, double xMix, do
 /// @brief Winnower outlet moisture of the terminal-value form. Eq. (17)
 inline double winnowerTerminalMoisture(double xMix, double tMixK, const AmbientEnvironment& env,
                                        const ParameterSet& p) {
-    const double xe = properties::equilibriumMoisture(env.tAirK, env.rh, p);
+    const double xe = equilibriumMoistureOf(env, p);
     const double excess = std::max(0.0, tMixK - env.tAirK);
     return xMix - (xMix - xe) * 0.5 *
                       (1.0 - std::exp(-p[properties::Param::kappa] * p[properties::Param::t_W] *
