@@ -25,13 +25,8 @@ int cvRhs(sunrealtype s, N_Vector y, N_Vector ydot, void* user) {
     const auto* d = static_cast<const SystemData*>(user);
     const double* yv = N_VGetArrayPointer(y);
     double* dv = N_VGetArrayPointer(ydot);
-    const auto m = static_cast<std::size_t>(d->rhs->statesPerParcel);
-    for (std::size_t i = 0; i < d->count; ++i) {
-        if (!d->rhs->evaluate(d->rhs->context, s, d->first + i, yv + i * m, dv + i * m)) {
-            return 1; // recoverable: CVODE retries with a smaller step
-        }
-    }
-    return 0;
+    // false: recoverable, CVODE retries with a smaller step
+    return d->rhs->evaluate(d->rhs->context, s, d->first, d->count, yv, dv) ? 0 : 1;
 }
 
 void silentErrors(int, const char*, const char*, char*, void*) {}

@@ -8,11 +8,13 @@
 
 namespace drytwin::physics {
 
-/// @brief Right-hand side of one parcel: ydot = f(s, y) at local time s since section entry.
-/// Returns false when the state is not physical (non-finite), so the solver can retry.
+/// @brief Right-hand side of a run of parcels: ydot = f(s, y) at local time s since section
+/// entry, for parcels first … first + count − 1, whose states start at @p y (and rates at
+/// @p ydot). One call per solver evaluation lets the section hoist what all parcels share.
+/// Returns false when a state is not physical (non-finite), so the solver can retry.
 struct ParcelRhs {
     const void* context = nullptr;
-    bool (*evaluate)(const void* context, double s, std::size_t parcel, const double* y,
+    bool (*evaluate)(const void* context, double s, std::size_t first, std::size_t count, const double* y,
                      double* ydot) = nullptr;
     std::size_t parcels = 0;
     int statesPerParcel = 0;

@@ -45,16 +45,15 @@ double interpolate(const std::vector<double>& timeS, const std::vector<double>& 
     return values[j - 1] + w * (values[j] - values[j - 1]);
 }
 
-double interpolateFrom(const std::vector<double>& timeS, const std::vector<double>& values, double t,
-                       std::size_t& hint) {
+SamplePoint locateFrom(const std::vector<double>& timeS, double t, std::size_t& hint) {
     const std::size_t n = timeS.size();
     if (t <= timeS.front()) {
         hint = 0;
-        return values.front();
+        return {0, 0.0};
     }
     if (t >= timeS.back()) {
         hint = n - 2;
-        return values.back();
+        return {n - 2, 1.0};
     }
     std::size_t j = std::min(hint, n - 2);
     while (j > 0 && timeS[j] > t) {
@@ -64,8 +63,12 @@ double interpolateFrom(const std::vector<double>& timeS, const std::vector<doubl
         ++j;
     }
     hint = j;
-    const double w = (t - timeS[j]) / (timeS[j + 1] - timeS[j]);
-    return values[j] + w * (values[j + 1] - values[j]);
+    return {j, (t - timeS[j]) / (timeS[j + 1] - timeS[j])};
+}
+
+double interpolateFrom(const std::vector<double>& timeS, const std::vector<double>& values, double t,
+                       std::size_t& hint) {
+    return locateFrom(timeS, t, hint).of(values);
 }
 
 std::vector<double> firstOrderResponse(const std::vector<double>& timeS, const std::vector<double>& setpoint,

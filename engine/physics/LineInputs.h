@@ -29,8 +29,19 @@ struct LineInputs {
 /// Thread-safe (no state).
 double interpolate(const std::vector<double>& timeS, const std::vector<double>& values, double t);
 
-/// @brief As interpolate(), starting the search at @p hint (updated), which makes the many
-/// nearby look-ups of an integration O(1) instead of O(log n).
+/// @brief Where a time falls in a sampled series: value = v[j] + w (v[j+1] − v[j]), with w in
+/// [0, 1] (held constant outside the time range). One look-up serves every series of a batch.
+struct SamplePoint {
+    std::size_t j = 0;
+    double w = 0;
+    double of(const std::vector<double>& values) const { return values[j] + w * (values[j + 1] - values[j]); }
+};
+
+/// @brief Locates @p t starting the search at @p hint (updated), which makes the many nearby
+/// look-ups of an integration O(1) instead of O(log n). Needs ≥ 2 samples.
+SamplePoint locateFrom(const std::vector<double>& timeS, double t, std::size_t& hint);
+
+/// @brief As interpolate(), through locateFrom().
 double interpolateFrom(const std::vector<double>& timeS, const std::vector<double>& values, double t,
                        std::size_t& hint);
 

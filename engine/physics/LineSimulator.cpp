@@ -35,22 +35,23 @@ struct SectionContext {
     double t0 = 0;
     double dt = 1;
     double invDt = 1;
-    double at(const std::vector<double>& series, std::size_t parcel, double s) const {
+    /// Where parcel @p parcel is in the input series at local time @p s; one look-up serves
+    /// every input the section reads.
+    SamplePoint locate(std::size_t parcel, double s) const {
         const double t = (*entry)[parcel] + s;
         if (!uniform) {
-            return interpolateFrom(in->timeS, series, t, hint[parcel]);
+            return locateFrom(in->timeS, t, hint[parcel]);
         }
         const double u = (t - t0) * invDt;
         if (u <= 0) {
-            return series.front();
+            return {0, 0.0};
         }
-        const auto last = series.size() - 1;
+        const auto last = in->timeS.size() - 1;
         if (u >= static_cast<double>(last)) {
-            return series.back();
+            return {last - 1, 1.0};
         }
         const auto j = static_cast<std::size_t>(u);
-        const double w = u - static_cast<double>(j);
-        return series[j] + w * (series[j + 1] - series[j]);
+        return {j, u - static_cast<double>(j)};
     }
 };
 
@@ -75,61 +76,84 @@ SectionContext makeContext(const LineInputs& in, const ParameterSet& p, const pr
     return c;
 }
 
-bool finite2(const double* d) {
-    return std::isfinite(d[0]) && std::isfinite(d[1]);
+/// Runs @p rates over a run of parcels. The parameters and switches are copied once per call:
+/// the rate stores cannot alias the copies, so the compiler may keep what all parcels share
+/// (parameter quotients, the area factor) out of the loop. CVODES perturbs the parameters in
+/// place between calls, so the copy is fresh each time.
+template <int States, class Rates>
+bool forParcels(const void* c, std::size_t first, std::size_t count, const double* y, double* ydot,
+                Rates rates) {
+    const auto& ctx = *static_cast<const SectionContext*>(c);
+    const ParameterSet p = *ctx.p;
+    const properties::ModelSwitches sw = *ctx.sw;
+    bool finite = true;
+    for (std::size_t k = 0; k < count; ++k) {
+        const double* yk = y + k * States;
+        double* dk = ydot + k * States;
+        const SectionRates r = rates(ctx, p, sw, first + k, yk);
+        dk[0] = r.dXdt;
+        dk[1] = r.dTdt;
+        for (int m = 2; m < States; ++m) {
+            dk[m] = 0; // carried constants (the winnower's entry mix)
+        }
+        finite &= std::isfinite(r.dXdt) & std::isfinite(r.dTdt);
+    }
+    return finite;
 }
 
-bool tubeEval(const void* c, double s, std::size_t i, const double* y, double* ydot) {
-    const auto& x = *static_cast<const SectionContext*>(c);
-    const ParameterSet& p = *x.p;
-    TubeEnvironment env;
-    env.tGasK = x.at(x.in->tHotK, i, s);
-    env.wGas = p[Param::w];
-    env.h = p[Param::h_HDT];
-    env.k = p[Param::k_HDT];
-    const auto r = tubeRates(y[0], y[1], env, p, *x.sw);
-    ydot[0] = r.dXdt;
-    ydot[1] = r.dTdt;
-    return finite2(ydot);
+bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, const double* y, double* ydot) {
+    return forParcels<2>(c, first, count, y, ydot,
+                         [s](const SectionContext& x, const ParameterSet& p,
+                             const properties::ModelSwitches& sw, std::size_t i, const double* yi) {
+                             TubeEnvironment env;
+                             env.tGasK = x.locate(i, s).of(x.in->tHotK);
+                             env.wGas = p[Param::w];
+                             env.h = p[Param::h_HDT];
+                             env.k = p[Param::k_HDT];
+                             return tubeRates(yi[0], yi[1], env, p, sw);
+                         });
 }
 
 AmbientEnvironment ambientAt(const SectionContext& x, std::size_t parcel, double s) {
+    const SamplePoint where = x.locate(parcel, s);
     AmbientEnvironment env;
-    env.tAirK = x.at(x.in->tAmbK, parcel, s);
-    env.rh = x.at(x.in->rhAmb, parcel, s);
+    env.tAirK = where.of(x.in->tAmbK);
+    env.rh = where.of(x.in->rhAmb);
     if (x.xeSeries) {
-        env.xeDb = x.at(*x.xeSeries, parcel, s);
+        env.xeDb = where.of(*x.xeSeries);
     }
     return env;
 }
 
-bool conveyorEval(const void* c, double s, std::size_t i, const double* y, double* ydot) {
-    const auto& x = *static_cast<const SectionContext*>(c);
-    const auto r = conveyorRates(y[0], y[1], ambientAt(x, i, s), *x.p, *x.sw);
-    ydot[0] = r.dXdt;
-    ydot[1] = r.dTdt;
-    return finite2(ydot);
+bool conveyorEval(const void* c, double s, std::size_t first, std::size_t count, const double* y,
+                  double* ydot) {
+    return forParcels<2>(c, first, count, y, ydot,
+                         [s](const SectionContext& x, const ParameterSet& p,
+                             const properties::ModelSwitches& sw, std::size_t i, const double* yi) {
+                             return conveyorRates(yi[0], yi[1], ambientAt(x, i, s), p, sw);
+                         });
 }
 
-bool winnowerEval(const void* c, double s, std::size_t i, const double* y, double* ydot) {
-    const auto& x = *static_cast<const SectionContext*>(c);
+bool winnowerEval(const void* c, double s, std::size_t first, std::size_t count, const double* y,
+                  double* ydot) {
     // States: X and T; the entry mix (X_mix, T_mix) comes from the context.
-    const auto r = winnowerRates(y[0], y[1], s, x.xMix[i], x.tMixK[i], ambientAt(x, i, s), *x.p, *x.sw);
-    ydot[0] = r.dXdt;
-    ydot[1] = r.dTdt;
-    return finite2(ydot);
+    return forParcels<2>(c, first, count, y, ydot,
+                         [s](const SectionContext& x, const ParameterSet& p,
+                             const properties::ModelSwitches& sw, std::size_t i, const double* yi) {
+                             return winnowerRates(yi[0], yi[1], s, x.xMix[i], x.tMixK[i], ambientAt(x, i, s),
+                                                  p, sw);
+                         });
 }
 
-bool winnowerEvalWithMixStates(const void* c, double s, std::size_t i, const double* y, double* ydot) {
-    const auto& x = *static_cast<const SectionContext*>(c);
+bool winnowerEvalWithMixStates(const void* c, double s, std::size_t first, std::size_t count, const double* y,
+                               double* ydot) {
     // States: X, T, and the entry mix (X_mix, T_mix) carried as constants so that their
     // sensitivities flow into Eq. 18.
-    const auto r = winnowerRates(y[0], y[1], s, y[2], y[3], ambientAt(x, i, s), *x.p, *x.sw);
-    ydot[0] = r.dXdt;
-    ydot[1] = r.dTdt;
-    ydot[2] = 0;
-    ydot[3] = 0;
-    return finite2(ydot);
+    return forParcels<4>(c, first, count, y, ydot,
+                         [s](const SectionContext& x, const ParameterSet& p,
+                             const properties::ModelSwitches& sw, std::size_t i, const double* yi) {
+                             return winnowerRates(yi[0], yi[1], s, yi[2], yi[3], ambientAt(x, i, s), p, sw);
+                         });
 }
 
 IntegratorSettings settingsFor(const SimulationOptions& o, int states) {
@@ -210,7 +234,7 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
         }
     }
     // One section: every parcel (entry times, states) integrated over the section's duration.
-    using Evaluate = bool (*)(const void*, double, std::size_t, const double*, double*);
+    using Evaluate = bool (*)(const void*, double, std::size_t, std::size_t, const double*, double*);
     auto runSection = [&](Evaluate evaluate, const std::vector<double>& entry, int states, double duration,
                           std::vector<double>& state, std::vector<std::vector<double>>& sens,
                           const char* name) {

@@ -89,7 +89,7 @@ std::optional<Param> paramBySymbol(std::string_view symbol) {
     return std::nullopt;
 }
 
-ParameterSet::ParameterSet() : m_values(kParamCount) {
+ParameterSet::ParameterSet() {
     for (const auto& i : parameterTable()) {
         m_values[static_cast<std::size_t>(i.id)] = i.defaultValue;
     }

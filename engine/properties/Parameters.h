@@ -79,7 +79,7 @@ public:
     Status validate() const;
 
 private:
-    std::vector<double> m_values;
+    std::array<double, kParamCount> m_values{}; // a value type: copies need no allocation
 };
 
 } // namespace drytwin::properties

@@ -62,7 +62,7 @@ template <class Rates> Closure integrateClosure(double x0, double t0, double dur
     rhs.context = &ctx;
     rhs.parcels = 1;
     rhs.statesPerParcel = 2;
-    rhs.evaluate = [](const void* c, double, std::size_t, const double* y, double* d) {
+    rhs.evaluate = [](const void* c, double, std::size_t, std::size_t, const double* y, double* d) {
         const auto r = (*static_cast<const Ctx*>(c)->rates)(y[0], y[1]);
         d[0] = r.dXdt;
         d[1] = r.dTdt;
