@@ -24,17 +24,16 @@ struct SectionContext {
     const properties::ModelSwitches* sw = nullptr;
     const std::vector<double>* entry = nullptr; ///< absolute entry time of each parcel [s]
     mutable std::vector<std::size_t> hint;      ///< per-parcel interpolation hints
-    /// Uniform sampling (the normal case, 1 s): the segment is found by arithmetic.
     /// X_e (Eq. 5) at the sample times, interpolated like the inputs it comes from (saves a log
     /// and an exp per right-hand side); null when X_e must follow parameters CVODES perturbs.
     const std::vector<double>* xeSeries = nullptr;
     /// Winnower inlet mix per parcel when it is not carried as solver states (no sensitivities).
     const double* xMix = nullptr;
     const double* tMixK = nullptr;
+    /// Uniform sampling (the normal case, 1 s): the segment is found by arithmetic.
     bool uniform = false;
     double t0 = 0;
-    double dt = 1;
-    double invDt = 1;
+    double invDt = 1; ///< 1 / sampling step [1/s]
     /// Where parcel @p parcel is in the input series at local time @p s; one look-up serves
     /// every input the section reads.
     SamplePoint locate(std::size_t parcel, double s) const {
@@ -71,8 +70,7 @@ SectionContext makeContext(const LineInputs& in, const ParameterSet& p, const pr
     SectionContext c{&in, &p, &sw, &entry, std::vector<std::size_t>(entry.size(), 0)};
     c.uniform = uniform;
     c.t0 = in.timeS.front();
-    c.dt = (in.timeS.back() - in.timeS.front()) / static_cast<double>(in.timeS.size() - 1);
-    c.invDt = 1.0 / c.dt;
+    c.invDt = static_cast<double>(in.timeS.size() - 1) / (in.timeS.back() - in.timeS.front());
     return c;
 }
 
