@@ -10,9 +10,11 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <type_traits>
 
 namespace drytwin::physics {
 
+using properties::Pack2;
 using properties::Param;
 using properties::ParameterSet;
 
@@ -74,10 +76,34 @@ SectionContext makeContext(const LineInputs& in, const ParameterSet& p, const pr
     return c;
 }
 
-/// Runs @p rates over a run of parcels. The parameters and switches are copied once per call:
-/// the rate stores cannot alias the copies, so the compiler may keep what all parcels share
-/// (parameter quotients, the area factor) out of the loop. CVODES perturbs the parameters in
-/// place between calls, so the copy is fresh each time.
+/// The parcels one evaluation of the rates works on: one (T = double) or two consecutive ones
+/// (T = Pack2, one per lane), with their solver states.
+template <class T> struct Lanes {
+    static constexpr int width = std::is_same_v<T, double> ? 1 : 2;
+    std::size_t parcel = 0; ///< the first lane's parcel
+    const double* y = nullptr;
+    int statesPerParcel = 2;
+    /// Packs one value per lane.
+    static T load(const double* v) {
+        if constexpr (width == 1) {
+            return v[0];
+        } else {
+            return T(v[0], v[1]);
+        }
+    }
+    /// State @p m of every lane.
+    T state(int m) const {
+        const double v[2] = {y[m], width == 2 ? y[statesPerParcel + m] : 0.0};
+        return load(v);
+    }
+    /// A per-parcel series (the winnower's entry mix) for every lane.
+    T of(const double* perParcel) const { return load(perParcel + parcel); }
+};
+
+/// Runs @p rates over a run of parcels, two at a time where the target has Pack2. The
+/// parameters and switches are copied once per call: the rate stores cannot alias the copies,
+/// so the compiler may keep what all parcels share out of the loop. CVODES perturbs the
+/// parameters in place between calls, so the copy is fresh each time.
 template <int States, class Rates>
 bool forParcels(const void* c, std::size_t first, std::size_t count, const double* y, double* ydot,
                 Rates rates) {
@@ -85,14 +111,28 @@ bool forParcels(const void* c, std::size_t first, std::size_t count, const doubl
     const ParameterSet p = *ctx.p;
     const properties::ModelSwitches sw = *ctx.sw;
     bool finite = true;
-    for (std::size_t k = 0; k < count; ++k) {
-        const double* yk = y + k * States;
-        double* dk = ydot + k * States;
-        const SectionRates r = rates(ctx, p, sw, first + k, yk);
-        dk[0] = r.dXdt;
-        dk[1] = r.dTdt;
+    std::size_t k = 0;
+#if DRYTWIN_HAVE_PACK2
+    for (; k + 2 <= count; k += 2) {
+        const SectionRatesT<Pack2> r = rates(ctx, p, sw, Lanes<Pack2>{first + k, y + k * States, States});
+        double* d = ydot + k * States;
+        for (int lane = 0; lane < 2; ++lane) {
+            d[lane * States] = r.dXdt[lane];
+            d[lane * States + 1] = r.dTdt[lane];
+            for (int m = 2; m < States; ++m) {
+                d[lane * States + m] = 0; // carried constants (the winnower's entry mix)
+            }
+        }
+        finite &= r.dXdt.isFinite().all() & r.dTdt.isFinite().all();
+    }
+#endif
+    for (; k < count; ++k) {
+        const SectionRates r = rates(ctx, p, sw, Lanes<double>{first + k, y + k * States, States});
+        double* d = ydot + k * States;
+        d[0] = r.dXdt;
+        d[1] = r.dTdt;
         for (int m = 2; m < States; ++m) {
-            dk[m] = 0; // carried constants (the winnower's entry mix)
+            d[m] = 0;
         }
         finite &= std::isfinite(r.dXdt) & std::isfinite(r.dTdt);
     }
@@ -102,24 +142,40 @@ bool forParcels(const void* c, std::size_t first, std::size_t count, const doubl
 bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, const double* y, double* ydot) {
     return forParcels<2>(c, first, count, y, ydot,
                          [s](const SectionContext& x, const ParameterSet& p,
-                             const properties::ModelSwitches& sw, std::size_t i, const double* yi) {
-                             TubeEnvironment env;
-                             env.tGasK = x.locate(i, s).of(x.in->tHotK);
+                             const properties::ModelSwitches& sw, const auto& l) {
+                             using T = std::decay_t<decltype(l.state(0))>;
+                             double gas[2] = {0, 0};
+                             for (int lane = 0; lane < l.width; ++lane) {
+                                 gas[lane] =
+                                     x.locate(l.parcel + static_cast<std::size_t>(lane), s).of(x.in->tHotK);
+                             }
+                             TubeEnvironmentT<T> env;
+                             env.tGasK = l.load(gas);
                              env.wGas = p[Param::w];
                              env.h = p[Param::h_HDT];
                              env.k = p[Param::k_HDT];
-                             return tubeRates(yi[0], yi[1], env, p, sw);
+                             return generic::tubeRates(l.state(0), l.state(1), env, p, sw);
                          });
 }
 
-AmbientEnvironment ambientAt(const SectionContext& x, std::size_t parcel, double s) {
-    const SamplePoint where = x.locate(parcel, s);
-    AmbientEnvironment env;
-    env.tAirK = where.of(x.in->tAmbK);
-    env.rh = where.of(x.in->rhAmb);
-    if (x.xeSeries) {
-        env.xeDb = where.of(*x.xeSeries);
+/// The air around every lane's parcel, one input look-up per parcel for all series.
+template <class T> AmbientEnvironmentT<T> ambientAt(const SectionContext& x, const Lanes<T>& l, double s) {
+    double tAir[2] = {0, 0};
+    double rh[2] = {0, 0};
+    double xe[2] = {0, 0};
+    for (int lane = 0; lane < l.width; ++lane) {
+        const SamplePoint where = x.locate(l.parcel + static_cast<std::size_t>(lane), s);
+        tAir[lane] = where.of(x.in->tAmbK);
+        rh[lane] = where.of(x.in->rhAmb);
+        if (x.xeSeries) {
+            xe[lane] = where.of(*x.xeSeries);
+        }
     }
+    AmbientEnvironmentT<T> env;
+    env.tAirK = l.load(tAir);
+    env.rh = l.load(rh);
+    env.xeDb = l.load(xe);
+    env.hasXe = x.xeSeries != nullptr;
     return env;
 }
 
@@ -127,8 +183,8 @@ bool conveyorEval(const void* c, double s, std::size_t first, std::size_t count,
                   double* ydot) {
     return forParcels<2>(c, first, count, y, ydot,
                          [s](const SectionContext& x, const ParameterSet& p,
-                             const properties::ModelSwitches& sw, std::size_t i, const double* yi) {
-                             return conveyorRates(yi[0], yi[1], ambientAt(x, i, s), p, sw);
+                             const properties::ModelSwitches& sw, const auto& l) {
+                             return generic::conveyorRates(l.state(0), l.state(1), ambientAt(x, l, s), p, sw);
                          });
 }
 
@@ -137,9 +193,9 @@ bool winnowerEval(const void* c, double s, std::size_t first, std::size_t count,
     // States: X and T; the entry mix (X_mix, T_mix) comes from the context.
     return forParcels<2>(c, first, count, y, ydot,
                          [s](const SectionContext& x, const ParameterSet& p,
-                             const properties::ModelSwitches& sw, std::size_t i, const double* yi) {
-                             return winnowerRates(yi[0], yi[1], s, x.xMix[i], x.tMixK[i], ambientAt(x, i, s),
-                                                  p, sw);
+                             const properties::ModelSwitches& sw, const auto& l) {
+                             return generic::winnowerRates(l.state(0), l.state(1), s, l.of(x.xMix),
+                                                           l.of(x.tMixK), ambientAt(x, l, s), p, sw);
                          });
 }
 
@@ -149,8 +205,9 @@ bool winnowerEvalWithMixStates(const void* c, double s, std::size_t first, std::
     // sensitivities flow into Eq. 18.
     return forParcels<4>(c, first, count, y, ydot,
                          [s](const SectionContext& x, const ParameterSet& p,
-                             const properties::ModelSwitches& sw, std::size_t i, const double* yi) {
-                             return winnowerRates(yi[0], yi[1], s, yi[2], yi[3], ambientAt(x, i, s), p, sw);
+                             const properties::ModelSwitches& sw, const auto& l) {
+                             return generic::winnowerRates(l.state(0), l.state(1), s, l.state(2), l.state(3),
+                                                           ambientAt(x, l, s), p, sw);
                          });
 }
 

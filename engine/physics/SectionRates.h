@@ -7,88 +7,138 @@ namespace drytwin::physics {
 using properties::ModelSwitches;
 using properties::ParameterSet;
 
-/// @brief L_v + C_p,w (T − T_ref), the enthalpy the evaporated water carries (Eqs. 12, 14, 19).
-inline double vapourEnthalpy(double tK, double aw, const ParameterSet& p, const ModelSwitches& s) {
-    return properties::latentHeat(tK, aw, p, s) +
-           p[properties::Param::theta_Cp2] * (tK - p[properties::Param::T_ref]);
-}
-
 // Every section is written per kilogram of dry matter (M_dry = 1 kg): Eqs. 7–19 are linear in
-// M_dry, so a parcel of any size follows the same intensive equations.
+// M_dry, so a parcel of any size follows the same intensive equations. The rates are templates
+// over the number type (double, or properties::Pack2 for two parcels at once; see Pack.h).
 
 /// @brief What a parcel in the drying tube sees. The PBM uses T_hot, the parameter w and the
 /// tube coefficients; the virtual plant passes modified values for its extra mechanisms.
-struct TubeEnvironment {
-    double tGasK = 0;          ///< gas temperature around the parcel (PBM: T_hot)
+template <class T> struct TubeEnvironmentT {
+    T tGasK{};                 ///< gas temperature around the parcel (PBM: T_hot)
     double wGas = 0;           ///< humidity ratio of the gas (PBM: parameter w)
     double h = 0;              ///< heat-transfer coefficient [W/(m²·K)] (PBM: h_HDT)
     double k = 0;              ///< mass-transfer coefficient [m/s] (PBM: k_HDT)
     double dryingFactor = 1.0; ///< multiplies Eq. 10 (plant's falling-rate mechanism; PBM: 1)
 };
+using TubeEnvironment = TubeEnvironmentT<double>;
 
-/// @brief Rates of one tube parcel and the energy terms behind them.
-struct SectionRates {
-    double dXdt = 0;           ///< [1/s], Eq. 11 / 13 / 18
-    double dTdt = 0;           ///< [K/s], Eq. 12 / 14 / 19
-    double heatIn = 0;         ///< convective heat into the parcel [W per kg dry] (negative = loss)
-    double evaporation = 0;    ///< dm_evap/dt [kg/s per kg dry] (= −dX/dt)
-    double heatCapacity = 0;   ///< M_dry C_p,dry + M_water C_p,w [J/K per kg dry]
-    double vapourEnthalpy = 0; ///< L_v + C_p,w (T − T_ref) [J/kg]
-    double waterActivity = 0;
+/// @brief Rates of one parcel and the energy terms behind them.
+template <class T> struct SectionRatesT {
+    T dXdt{};           ///< [1/s], Eq. 11 / 13 / 18
+    T dTdt{};           ///< [K/s], Eq. 12 / 14 / 19
+    T heatIn{};         ///< convective heat into the parcel [W per kg dry] (negative = loss)
+    T evaporation{};    ///< dm_evap/dt [kg/s per kg dry] (= −dX/dt)
+    T heatCapacity{};   ///< M_dry C_p,dry + M_water C_p,w [J/K per kg dry]
+    T vapourEnthalpy{}; ///< L_v + C_p,w (T − T_ref) [J/kg]
+    T waterActivity{};
 };
+using SectionRates = SectionRatesT<double>;
 
-/// @brief Drying-tube rates, Eqs. 7–12.
-inline SectionRates tubeRates(double x, double t, const TubeEnvironment& env, const ParameterSet& p,
-                              const ModelSwitches& s) {
-    SectionRates r;
-    const double area = (1.0 + x) / p[properties::Param::rho_mat] *
-                        (2.0 / p[properties::Param::r] + 2.0 / p[properties::Param::L_t]); // Eq. (7)
-    r.heatIn = env.h * area * (env.tGasK - t);                                             // Eq. (8)
-    r.waterActivity = properties::waterActivity(t, x, p, s.clampWaterActivity);
-    const double rhoSurf =
-        properties::vapourDensity(r.waterActivity * properties::saturationPressure(t), t, p); // Eq. (9)
-    const double rhoGas = properties::vapourDensity(
-        properties::vapourPressureOfHumidityRatio(env.wGas, p[properties::Param::P_total]), env.tGasK, p);
-    r.evaporation = env.dryingFactor * env.k * area * std::max(0.0, rhoSurf - rhoGas); // Eq. (10)
-    r.dXdt = -r.evaporation;                                                           // Eq. (11)
-    r.heatCapacity = properties::heatCapacityPerDryKg(x, p, s);
+/// @brief What a parcel in the conveyor's top layer or the winnower sees.
+template <class T> struct AmbientEnvironmentT {
+    T tAirK{};
+    T rh{};                 ///< [0..1]
+    double extraUptake = 0; ///< added dX/dt [1/s] (plant's ambient re-absorption; PBM: 0)
+    /// Equilibrium moisture X_e of this air when the caller already has it (the line simulator
+    /// interpolates it between samples, like the inputs it comes from; hasXe set); otherwise
+    /// computed from tAirK and rh with Eq. 5.
+    T xeDb{};
+    bool hasXe = false;
+};
+using AmbientEnvironment = AmbientEnvironmentT<double>;
+
+namespace generic {
+
+namespace pr = properties::generic;
+using properties::Param;
+
+/// L_v + C_p,w (T − T_ref), the enthalpy the evaporated water carries (Eqs. 12, 14, 19).
+template <class T> T vapourEnthalpy(const T& tK, const T& aw, const ParameterSet& p, const ModelSwitches& s) {
+    return pr::latentHeat(tK, aw, p, s) + p[Param::theta_Cp2] * (tK - p[Param::T_ref]);
+}
+
+/// X_e of the air around a parcel, Eq. (5).
+template <class T> T equilibriumMoistureOf(const AmbientEnvironmentT<T>& env, const ParameterSet& p) {
+    return env.hasXe ? env.xeDb : pr::equilibriumMoisture(env.tAirK, env.rh, p);
+}
+
+template <class T>
+SectionRatesT<T> tubeRates(const T& x, const T& t, const TubeEnvironmentT<T>& env, const ParameterSet& p,
+                           const ModelSwitches& s) {
+    SectionRatesT<T> r;
+    const T area = (1.0 + x) / p[Param::rho_mat] * (2.0 / p[Param::r] + 2.0 / p[Param::L_t]); // Eq. (7)
+    r.heatIn = env.h * area * (env.tGasK - t);                                                // Eq. (8)
+    r.waterActivity = pr::waterActivity(t, x, p, s.clampWaterActivity);
+    const T rhoSurf = pr::vapourDensity(T(r.waterActivity * pr::saturationPressure(t)), t, p); // Eq. (9)
+    const double pvGas = properties::vapourPressureOfHumidityRatio(env.wGas, p[Param::P_total]);
+    const T rhoGas = pr::vapourDensity(properties::math::constant<T>(pvGas), env.tGasK, p);
+    r.evaporation =
+        env.dryingFactor * env.k * area * properties::math::maxOf(T(rhoSurf - rhoGas), 0.0); // Eq. (10)
+    r.dXdt = -r.evaporation;                                                                 // Eq. (11)
+    r.heatCapacity = pr::heatCapacityPerDryKg(x, p, s);
     r.vapourEnthalpy = vapourEnthalpy(t, r.waterActivity, p, s);
     r.dTdt = (r.heatIn - r.vapourEnthalpy * r.evaporation) / r.heatCapacity; // Eq. (12)
     return r;
 }
 
-/// @brief What a parcel in the conveyor's top layer sees.
-struct AmbientEnvironment {
-    double tAirK = 0;
-    double rh = 0;          ///< [0..1]
-    double extraUptake = 0; ///< added dX/dt [1/s] (plant's ambient re-absorption; PBM: 0)
-    /// Equilibrium moisture X_e of this air when the caller already has it (the line simulator
-    /// interpolates it between samples, like the inputs it comes from); negative: computed
-    /// from tAirK and rh with Eq. 5.
-    double xeDb = -1;
-};
+template <class T>
+SectionRatesT<T> conveyorRates(const T& x, const T& t, const AmbientEnvironmentT<T>& env,
+                               const ParameterSet& p, const ModelSwitches& s) {
+    SectionRatesT<T> r;
+    const T xe = equilibriumMoistureOf(env, p);
+    const double lChar = p[Param::L_char];
+    r.dXdt = -p[Param::chi_layer] * pr::effectiveDiffusivity(t, env.rh, x, p) * (x - xe) / (lChar * lChar) +
+             env.extraUptake; // Eq. (13)
+    r.evaporation = -r.dXdt;
+    r.heatIn = -p[Param::h_conveyor] * p[Param::A_exp] * (t - env.tAirK);
+    r.waterActivity = pr::waterActivity(t, x, p, s.clampWaterActivity);
+    r.heatCapacity = pr::heatCapacityPerDryKg(x, p, s);
+    r.vapourEnthalpy = vapourEnthalpy(t, r.waterActivity, p, s);
+    r.dTdt = (r.heatIn - r.vapourEnthalpy * r.evaporation) / r.heatCapacity; // Eq. (14)
+    return r;
+}
+
+template <class T>
+SectionRatesT<T> winnowerRates(const T& x, const T& t, double tS, const T& xMix, const T& tMixK,
+                               const AmbientEnvironmentT<T>& env, const ParameterSet& p,
+                               const ModelSwitches& s) {
+    SectionRatesT<T> r;
+    const T xe = equilibriumMoistureOf(env, p);
+    // A parcel colder than the air does not flash; the exponent then stays bounded.
+    const T excess = properties::math::maxOf(T(tMixK - env.tAirK), 0.0);
+    const double kappa = p[Param::kappa];
+    r.dXdt = -0.5 * (xMix - xe) * kappa * excess * properties::math::exp(T(-kappa * excess * tS)); // Eq. (18)
+    r.evaporation = -r.dXdt;
+    r.heatIn = -p[Param::h_winnower] * (t - env.tAirK);
+    r.waterActivity = pr::waterActivity(t, x, p, s.clampWaterActivity);
+    r.heatCapacity = pr::heatCapacityPerDryKg(x, p, s);
+    r.vapourEnthalpy = vapourEnthalpy(t, r.waterActivity, p, s);
+    r.dTdt = (r.heatIn - r.vapourEnthalpy * r.evaporation) / r.heatCapacity; // Eq. (19)
+    return r;
+}
+
+} // namespace generic
+
+/// @brief L_v + C_p,w (T − T_ref), the enthalpy the evaporated water carries (Eqs. 12, 14, 19).
+inline double vapourEnthalpy(double tK, double aw, const ParameterSet& p, const ModelSwitches& s) {
+    return generic::vapourEnthalpy(tK, aw, p, s);
+}
 
 /// @brief X_e of the air around a parcel, Eq. (5).
 inline double equilibriumMoistureOf(const AmbientEnvironment& env, const ParameterSet& p) {
-    return env.xeDb >= 0 ? env.xeDb : properties::equilibriumMoisture(env.tAirK, env.rh, p);
+    return generic::equilibriumMoistureOf(env, p);
+}
+
+/// @brief Drying-tube rates, Eqs. 7–12.
+inline SectionRates tubeRates(double x, double t, const TubeEnvironment& env, const ParameterSet& p,
+                              const ModelSwitches& s) {
+    return generic::tubeRates(x, t, env, p, s);
 }
 
 /// @brief Conveyor top-layer rates, Eqs. 13–14.
 inline SectionRates conveyorRates(double x, double t, const AmbientEnvironment& env, const ParameterSet& p,
                                   const ModelSwitches& s) {
-    SectionRates r;
-    const double xe = equilibriumMoistureOf(env, p);
-    const double lChar = p[properties::Param::L_char];
-    r.dXdt = -p[properties::Param::chi_layer] * properties::effectiveDiffusivity(t, env.rh, x, p) * (x - xe) /
-                 (lChar * lChar) +
-             env.extraUptake; // Eq. (13)
-    r.evaporation = -r.dXdt;
-    r.heatIn = -p[properties::Param::h_conveyor] * p[properties::Param::A_exp] * (t - env.tAirK);
-    r.waterActivity = properties::waterActivity(t, x, p, s.clampWaterActivity);
-    r.heatCapacity = properties::heatCapacityPerDryKg(x, p, s);
-    r.vapourEnthalpy = vapourEnthalpy(t, r.waterActivity, p, s);
-    r.dTdt = (r.heatIn - r.vapourEnthalpy * r.evaporation) / r.heatCapacity; // Eq. (14)
-    return r;
+    return generic::conveyorRates(x, t, env, p, s);
 }
 
 /// @brief Winnower rates of the transient form, Eqs. 18–19, at time @p tS after entry.
@@ -96,19 +146,7 @@ inline SectionRates conveyorRates(double x, double t, const AmbientEnvironment& 
 inline SectionRates winnowerRates(double x, double t, double tS, double xMix, double tMixK,
                                   const AmbientEnvironment& env, const ParameterSet& p,
                                   const ModelSwitches& s) {
-    SectionRates r;
-    const double xe = equilibriumMoistureOf(env, p);
-    // A parcel colder than the air does not flash; the exponent then stays bounded.
-    const double excess = std::max(0.0, tMixK - env.tAirK);
-    const double kappa = p[properties::Param::kappa];
-    r.dXdt = -0.5 * (xMix - xe) * kappa * excess * std::exp(-kappa * excess * tS); // Eq. (18)
-    r.evaporation = -r.dXdt;
-    r.heatIn = -p[properties::Param::h_winnower] * (t - env.tAirK);
-    r.waterActivity = properties::waterActivity(t, x, p, s.clampWaterActivity);
-    r.heatCapacity = properties::heatCapacityPerDryKg(x, p, s);
-    r.vapourEnthalpy = vapourEnthalpy(t, r.waterActivity, p, s);
-    r.dTdt = (r.heatIn - r.vapourEnthalpy * r.evaporation) / r.heatCapacity; // Eq. (19)
-    return r;
+    return generic::winnowerRates(x, t, tS, xMix, tMixK, env, p, s);
 }
 
 /// @brief Winnower outlet moisture of the terminal-value form. Eq. (17)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "properties/Pack.h"
 #include "properties/Parameters.h"
 
 #include <algorithm>
@@ -18,70 +19,110 @@ struct ModelSwitches {
 inline constexpr double kCpReferenceMoisture = 0.176;
 inline constexpr double kKelvin = 273.15;
 
+// Each equation is a template over the number type (double, or Pack2 for two parcels at once;
+// see Pack.h), in namespace `generic`; the double functions below it are the public API.
+namespace generic {
+
+template <class T> T saturationPressure(const T& tK) {
+    const T c = tK - kKelvin;
+    return 610.78 * math::exp(17.27 * c / (237.7 + c)); // Eq. (1)
+}
+
+template <class T> T sorptionIsotherm(const T& xDb, const ParameterSet& p) {
+    const double a = p[Param::theta_xe1] + p[Param::theta_xe2] * 25.0; // Oswin at 25 °C
+    // exp(log(·)/n) rather than pow: the same value to a few ulp, and several times cheaper in
+    // glibc, which matters because every right-hand side of every section calls it.
+    const T q = math::exp(math::log(xDb / a) / p[Param::theta_xe3]);
+    return math::ifPositive(xDb, T(q / (1.0 + q)));
+}
+
+template <class T> T waterActivity(const T& tK, const T& xDb, const ParameterSet& p, bool clamp) {
+    const T aw =
+        sorptionIsotherm(xDb, p) * math::exp(p[Param::theta_aw1] * (1.0 / tK - 1.0 / 298.15)); // Eq. (2)
+    return clamp ? math::minOf(math::maxOf(aw, 0.0), 1.0) : aw;
+}
+
+template <class T> T specificHeat(const T& xDb, const ParameterSet& p, const ModelSwitches& s) {
+    const T x = s.moistureDependentCp ? xDb : math::constant<T>(kCpReferenceMoisture);
+    return (p[Param::theta_Cp1] + x * p[Param::theta_Cp2]) / (1.0 + x); // Eq. (3)
+}
+
+template <class T> T heatCapacityPerDryKg(const T& xDb, const ParameterSet& p, const ModelSwitches& s) {
+    return (1.0 + xDb) * specificHeat(xDb, p, s);
+}
+
+template <class T> T latentHeat(const T& tK, const T& aw, const ParameterSet& p, const ModelSwitches& s) {
+    const T base = (2501.0 - 2.361 * (tK - kKelvin)) * 1e3; // Eq. (4)
+    if (!s.latentHeatCorrection) {
+        return base;
+    }
+    return base * (1.0 + p[Param::theta_Lv_aw] * (1.0 - aw));
+}
+
+template <class T> T equilibriumMoisture(const T& tK, const T& rh, const ParameterSet& p) {
+    const T h = math::minOf(math::maxOf(rh, 0.0), 0.999);
+    const T tC = tK - kKelvin;
+    // exp(n·log(·)) rather than pow, as in sorptionIsotherm.
+    const T xe = (p[Param::theta_xe1] + p[Param::theta_xe2] * tC) *
+                 math::exp(p[Param::theta_xe3] * math::log(h / (1.0 - h))); // Eq. (5)
+    return math::ifPositive(h, xe);
+}
+
+template <class T> T effectiveDiffusivity(const T& tK, const T& rh, const T& xDb, const ParameterSet& p) {
+    return p[Param::theta_D0] * math::exp(-p[Param::theta_Ea] / (p[Param::R_gas] * tK)) * (1.0 + 2.0 * xDb) *
+           (1.0 - p[Param::theta_D_RH] * rh); // Eq. (6)
+}
+
+template <class T> T vapourDensity(const T& pv, const T& tK, const ParameterSet& p) {
+    return pv / (p[Param::R_water] * tK); // Eq. (9)
+}
+
+} // namespace generic
+
 /// @brief Saturation vapour pressure of water [Pa], Magnus form, T in K. Eq. (1)
 inline double saturationPressure(double tK) {
-    const double c = tK - kKelvin;
-    return 610.78 * std::exp(17.27 * c / (237.7 + c)); // Eq. (1)
+    return generic::saturationPressure(tK);
 }
 
 /// @brief Sorption isotherm f(X) of Eq. (2): the modified Oswin model of Eq. (5) inverted at the
 /// reference temperature 25 °C, so that Eq. 2 and Eq. 5 agree there exactly:
-/// f(X) = q / (1 + q), q = (X / (θ_xe1 + θ_xe2·25))^(1/θ_xe3).
+/// f(X) = q / (1 + q), q = (X / (θ_xe1 + θ_xe2·25))^(1/θ_xe3); 0 for X ≤ 0.
 /// Chosen because it is the one f consistent with the equilibrium model the paper already uses.
 inline double sorptionIsotherm(double xDb, const ParameterSet& p) {
-    if (xDb <= 0) {
-        return 0.0;
-    }
-    const double a = p[Param::theta_xe1] + p[Param::theta_xe2] * 25.0; // Oswin at 25 °C
-    // exp(log(·)/n) rather than pow: the same value to a few ulp, and several times cheaper in
-    // glibc, which matters because every right-hand side of every section calls it.
-    const double q = std::exp(std::log(xDb / a) / p[Param::theta_xe3]);
-    return q / (1.0 + q);
+    return generic::sorptionIsotherm(xDb, p);
 }
 
 /// @brief Water activity of Eq. (2), clamped to [0, 1] when @p clamp is set.
 inline double waterActivity(double tK, double xDb, const ParameterSet& p, bool clamp) {
-    const double aw =
-        sorptionIsotherm(xDb, p) * std::exp(p[Param::theta_aw1] * (1.0 / tK - 1.0 / 298.15)); // Eq. (2)
-    return clamp ? std::min(1.0, std::max(0.0, aw)) : aw;
+    return generic::waterActivity(tK, xDb, p, clamp);
 }
 
 /// @brief Specific heat of the wet material per kg of wet material [J/(kg·K)]. Eq. (3)
 inline double specificHeat(double xDb, const ParameterSet& p, const ModelSwitches& s) {
-    const double x = s.moistureDependentCp ? xDb : kCpReferenceMoisture;
-    return (p[Param::theta_Cp1] + x * p[Param::theta_Cp2]) / (1.0 + x); // Eq. (3)
+    return generic::specificHeat(xDb, p, s);
 }
 
 /// @brief Heat capacity of the material per kg of dry matter, M_dry·C_p,dry + M_water·C_p,w
 /// = (1 + X)·C_p(X) [J/(K·kg dry)] (left-hand side of Eqs. 12, 14, 19).
 inline double heatCapacityPerDryKg(double xDb, const ParameterSet& p, const ModelSwitches& s) {
-    return (1.0 + xDb) * specificHeat(xDb, p, s);
+    return generic::heatCapacityPerDryKg(xDb, p, s);
 }
 
 /// @brief Latent heat of vaporisation [J/kg] with the bound-water correction. Eq. (4)
 inline double latentHeat(double tK, double aw, const ParameterSet& p, const ModelSwitches& s) {
-    const double base = (2501.0 - 2.361 * (tK - kKelvin)) * 1e3; // Eq. (4)
-    return s.latentHeatCorrection ? base * (1.0 + p[Param::theta_Lv_aw] * (1.0 - aw)) : base;
+    return generic::latentHeat(tK, aw, p, s);
 }
 
 /// @brief Equilibrium moisture, dry basis, modified Oswin model with T in °C. Eq. (5)
 /// (θ_xe2 is per kelvin; with T in K the App. A values would give X_e ≈ 0.04, far below
 /// tobacco's 0.10–0.15 at room conditions, so T enters in °C.) RH is clamped to [0, 0.999].
 inline double equilibriumMoisture(double tK, double rh, const ParameterSet& p) {
-    const double h = std::clamp(rh, 0.0, 0.999);
-    const double tC = tK - kKelvin;
-    if (h <= 0) {
-        return 0.0;
-    }
-    // exp(n·log(·)) rather than pow, as in sorptionIsotherm.
-    return (p[Param::theta_xe1] + p[Param::theta_xe2] * tC) *
-           std::exp(p[Param::theta_xe3] * std::log(h / (1.0 - h))); // Eq. (5)
+    return generic::equilibriumMoisture(tK, rh, p);
 }
 
 /// @brief Effective diffusion coefficient [m²/s]. Eq. (6)
 inline double effectiveDiffusivity(double tK, double rh, double xDb, const ParameterSet& p) {
-    return p[Param::theta_D0] * std::exp(-p[Param::theta_Ea] / (p[Param::R_gas] * tK)) * (1.0 + 2.0 * xDb) *
-           (1.0 - p[Param::theta_D_RH] * rh); // Eq. (6)
+    return generic::effectiveDiffusivity(tK, rh, xDb, p);
 }
 
 /// @brief Partial pressure of water vapour in air of humidity ratio w [Pa]. Eq. (9)
@@ -91,7 +132,7 @@ inline double vapourPressureOfHumidityRatio(double w, double pTotal) {
 
 /// @brief Vapour density of an ideal gas at partial pressure pv and temperature T [kg/m³]. Eq. (9)
 inline double vapourDensity(double pv, double tK, const ParameterSet& p) {
-    return pv / (p[Param::R_water] * tK);
+    return generic::vapourDensity(pv, tK, p);
 }
 
 } // namespace drytwin::properties
