@@ -66,11 +66,6 @@ SamplePoint locateFrom(const std::vector<double>& timeS, double t, std::size_t& 
     return {j, (t - timeS[j]) / (timeS[j + 1] - timeS[j])};
 }
 
-double interpolateFrom(const std::vector<double>& timeS, const std::vector<double>& values, double t,
-                       std::size_t& hint) {
-    return locateFrom(timeS, t, hint).of(values);
-}
-
 std::vector<double> firstOrderResponse(const std::vector<double>& timeS, const std::vector<double>& setpoint,
                                        double tauS, double initial) {
     std::vector<double> y(setpoint.size());

@@ -41,10 +41,6 @@ struct SamplePoint {
 /// look-ups of an integration O(1) instead of O(log n). Needs ≥ 2 samples.
 SamplePoint locateFrom(const std::vector<double>& timeS, double t, std::size_t& hint);
 
-/// @brief As interpolate(), through locateFrom().
-double interpolateFrom(const std::vector<double>& timeS, const std::vector<double>& values, double t,
-                       std::size_t& hint);
-
 /// @brief Response of a first-order actuator with time constant @p tauS to a setpoint series
 /// (exact for a setpoint held between samples). Used when T_hot follows T_hot_sp (MPC).
 std::vector<double> firstOrderResponse(const std::vector<double>& timeS, const std::vector<double>& setpoint,

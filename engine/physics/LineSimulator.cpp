@@ -100,6 +100,14 @@ template <class T> struct Lanes {
     T of(const double* perParcel) const { return load(perParcel + parcel); }
 };
 
+/// Lane @p lane of a value: the value itself for one parcel, its element for two.
+inline double laneOf(double v, int) {
+    return v;
+}
+inline double laneOf(const Pack2& v, int lane) {
+    return v[lane];
+}
+
 /// Runs @p rates over a run of parcels, two at a time where the target has Pack2. The
 /// parameters and switches are copied once per call: the rate stores cannot alias the copies,
 /// so the compiler may keep what all parcels share out of the loop. CVODES perturbs the
@@ -111,30 +119,29 @@ bool forParcels(const void* c, std::size_t first, std::size_t count, const doubl
     const ParameterSet p = *ctx.p;
     const properties::ModelSwitches sw = *ctx.sw;
     bool finite = true;
+    // Stores one evaluation's rates for each of its lanes; the winnower's carried entry mix
+    // (states 2 and 3) has zero rates.
+    auto store = [&](const auto& r, std::size_t k, int width) {
+        double* d = ydot + k * States;
+        for (int lane = 0; lane < width; ++lane) {
+            const double dX = laneOf(r.dXdt, lane);
+            const double dT = laneOf(r.dTdt, lane);
+            d[lane * States] = dX;
+            d[lane * States + 1] = dT;
+            for (int m = 2; m < States; ++m) {
+                d[lane * States + m] = 0;
+            }
+            finite &= std::isfinite(dX) & std::isfinite(dT);
+        }
+    };
     std::size_t k = 0;
 #if DRYTWIN_HAVE_PACK2
     for (; k + 2 <= count; k += 2) {
-        const SectionRatesT<Pack2> r = rates(ctx, p, sw, Lanes<Pack2>{first + k, y + k * States, States});
-        double* d = ydot + k * States;
-        for (int lane = 0; lane < 2; ++lane) {
-            d[lane * States] = r.dXdt[lane];
-            d[lane * States + 1] = r.dTdt[lane];
-            for (int m = 2; m < States; ++m) {
-                d[lane * States + m] = 0; // carried constants (the winnower's entry mix)
-            }
-        }
-        finite &= r.dXdt.isFinite().all() & r.dTdt.isFinite().all();
+        store(rates(ctx, p, sw, Lanes<Pack2>{first + k, y + k * States, States}), k, 2);
     }
 #endif
     for (; k < count; ++k) {
-        const SectionRates r = rates(ctx, p, sw, Lanes<double>{first + k, y + k * States, States});
-        double* d = ydot + k * States;
-        d[0] = r.dXdt;
-        d[1] = r.dTdt;
-        for (int m = 2; m < States; ++m) {
-            d[m] = 0;
-        }
-        finite &= std::isfinite(r.dXdt) & std::isfinite(r.dTdt);
+        store(rates(ctx, p, sw, Lanes<double>{first + k, y + k * States, States}), k, 1);
     }
     return finite;
 }
