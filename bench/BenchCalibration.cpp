@@ -1,6 +1,6 @@
 // Calibration on the paper's subset (300 rows): 2 parameters under 5 s, 4 under 30 s (issue).
 #include "calibration/Calibration.h"
-#include "data/PlantExport.h"
+#include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
 
 #include <benchmark/benchmark.h>
@@ -11,7 +11,7 @@ const std::vector<drytwin::data::SiBatch>& demoData() {
     static const auto data = [] {
         const auto o = drytwin::plant::PlantOptions::demo(2025);
         auto r = drytwin::plant::runPlant(o);
-        return drytwin::data::toSiBatches(*r, o.seed);
+        return drytwin::plant::toSiBatches(*r, o.seed);
     }();
     return data;
 }

@@ -1,5 +1,5 @@
 // The PBM over 10 batches × 6,300 samples (issue: under 0.5 s on this 2-core machine).
-#include "data/PlantExport.h"
+#include "plant/PlantExport.h"
 #include "physics/LineSimulator.h"
 #include "plant/VirtualPlant.h"
 
@@ -12,7 +12,7 @@ const std::vector<drytwin::physics::LineInputs>& demoInputs() {
         auto plant = drytwin::plant::runPlant(drytwin::plant::PlantOptions::demo(2025));
         std::vector<drytwin::physics::LineInputs> v;
         for (const auto& b : plant->batches) {
-            v.push_back(drytwin::data::toLineInputs(b));
+            v.push_back(drytwin::plant::toLineInputs(b));
         }
         return v;
     }();

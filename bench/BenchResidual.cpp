@@ -1,8 +1,8 @@
 // PGRL-CC training on ~44,000 snapshots with a degree-2 dictionary (issue: under 1 s), and the
 // LSTM baseline's training time (reported).
 #include "baselines/LstmBaseline.h"
-#include "data/PlantExport.h"
-#include "io/HybridTraining.h"
+#include "plant/PlantExport.h"
+#include "hybrid/HybridTraining.h"
 #include "plant/VirtualPlant.h"
 
 #include <benchmark/benchmark.h>
@@ -19,8 +19,8 @@ const Demo& demo() {
         const auto o = drytwin::plant::PlantOptions::demo(2025);
         auto r = drytwin::plant::runPlant(o);
         Demo x;
-        x.batches = drytwin::data::toSiBatches(*r, o.seed);
-        x.pbm = std::move(*drytwin::hybrid::simulatePbm(x.batches, drytwin::io::ModelFile{}, {}));
+        x.batches = drytwin::plant::toSiBatches(*r, o.seed);
+        x.pbm = std::move(*drytwin::hybrid::simulatePbm(x.batches, drytwin::hybrid::HybridModel{}, {}));
         return x;
     }();
     return d;

@@ -21,6 +21,8 @@ if(DRYTWIN_WITH_TORCH)
 endif()
 
 find_package(Qt5 5.15 REQUIRED COMPONENTS Core Gui Widgets Test Svg OpenGL Concurrent PrintSupport LinguistTools)
+# Versionless Qt:: targets and qt_ commands below, so that Qt 6 is a switch here (ARCHITECTURE.md).
+set(QT_VERSION_MAJOR 5)
 pkg_check_modules(QWT REQUIRED IMPORTED_TARGET Qt5Qwt6)
 
 # VTK's MPI dependency must be found first (PLATFORM-NOTES.md).

@@ -1,8 +1,8 @@
 #include "MainWindow.h"
 
-#include "EngineWorker.h"
-
+#include "common/ErrorText.h"
 #include "common/LibraryVersions.h"
+#include "common/Units.h"
 
 #include <QAction>
 #include <QApplication>
@@ -105,34 +105,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     createMenus();
 
-    m_worker = new EngineWorker;
-    m_worker->moveToThread(&m_thread);
-    connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
-    connect(this, &MainWindow::loadRequested, m_worker, &EngineWorker::loadDataSet);
-    connect(m_worker, &EngineWorker::dataLoaded, this, &MainWindow::onDataLoaded);
-    connect(m_worker, &EngineWorker::loadFailed, this, &MainWindow::onLoadFailed);
-    connect(m_worker, &EngineWorker::progress, this, &MainWindow::onProgress);
-    connect(this, &MainWindow::simulationRequested, m_worker, &EngineWorker::simulateDataSet);
-    connect(m_worker, &EngineWorker::simulated, this, &MainWindow::onSimulated);
-    connect(m_worker, &EngineWorker::simulationFailed, this, [this](const QString& message) {
-        setBusy(false);
-        m_statusLabel->setText(tr("The physics model failed on this data: %1").arg(message));
-    });
-    connect(m_worker, &EngineWorker::cancelled, this, [this] {
-        setBusy(false);
-        m_statusLabel->setText(tr("Loading cancelled; the data shown before is unchanged."));
-        Q_EMIT loadFinished(false);
-    });
-    connect(m_cancelButton, &QPushButton::clicked, this, [this] { m_worker->requestCancel(); });
+    connect(&m_jobs, &JobRunner::progress, this, &MainWindow::onProgress);
+    connect(&m_jobs, &JobRunner::busyChanged, this, &MainWindow::setBusy);
+    connect(m_cancelButton, &QPushButton::clicked, this, [this] { m_jobs.cancelAll(); });
     connect(m_batchList, &QListWidget::currentRowChanged, this, &MainWindow::onBatchSelected);
-    m_thread.start();
 }
 
-MainWindow::~MainWindow() {
-    m_worker->requestCancel();
-    m_thread.quit();
-    m_thread.wait();
-}
+// The job runner's destructor cancels every job and waits for the engine thread.
+MainWindow::~MainWindow() = default;
 
 void MainWindow::createMenus() {
     auto* file = menuBar()->addMenu(tr("&File"));
@@ -185,9 +165,19 @@ void MainWindow::chooseFolder() {
 }
 
 void MainWindow::openDataSet(const QString& path) {
-    setBusy(true);
     m_statusLabel->setText(tr("Loading %1…").arg(path));
-    Q_EMIT loadRequested(path);
+    workflow::OpenOptions options;
+    options.dataPath = path.toStdString();
+    m_jobs.submit<workflow::OpenResult>(
+        tr("Load %1").arg(path),
+        [options](workflow::Session& session, const Progress& progress) { return session.open(options, progress); },
+        this, [this, path](const Expected<workflow::OpenResult>& result) {
+            if (result) {
+                onDataLoaded(path, *result);
+            } else {
+                onLoadFailed(path, result.error());
+            }
+        });
 }
 
 void MainWindow::setBusy(bool busy) {
@@ -198,7 +188,7 @@ void MainWindow::setBusy(bool busy) {
     }
 }
 
-void MainWindow::onProgress(const QString& stage, double fraction, const QString& detail) {
+void MainWindow::onProgress(JobId, const QString& stage, double fraction, const QString& detail) {
     m_progressBar->setValue(static_cast<int>(fraction * 100));
     if (!detail.isEmpty()) {
         const QString what = stage == QLatin1String("simulate") ? tr("Simulating %1…") : tr("Loading %1…");
@@ -206,10 +196,9 @@ void MainWindow::onProgress(const QString& stage, double fraction, const QString
     }
 }
 
-void MainWindow::onDataLoaded(const QString& path, const drytwin::data::DataSet& dataSet,
-                              const drytwin::data::DataSetSummary& summary) {
-    setBusy(false);
-    m_data = dataSet;
+void MainWindow::onDataLoaded(const QString& path, const workflow::OpenResult& result) {
+    const auto& summary = result.summary;
+    m_data = result.dataSet;
     m_batchList->clear();
     for (const auto& b : summary.batches) {
         m_batchList->addItem(tr("%1  (%2 rows)").arg(QString::fromStdString(b.id)).arg(b.rows));
@@ -242,14 +231,23 @@ void MainWindow::onDataLoaded(const QString& path, const drytwin::data::DataSet&
         m_batchList->setCurrentRow(0);
     }
     Q_EMIT loadFinished(true);
-    // The model's view of the same batches, computed on the worker thread.
-    setBusy(true);
-    Q_EMIT simulationRequested(m_data);
+    simulate();
 }
 
-void MainWindow::onLoadFailed(const QString& path, const QStringList& errors) {
-    setBusy(false);
+void MainWindow::onLoadFailed(const QString& path, const Error& error) {
+    if (error.kind == ErrorKind::Cancelled) {
+        m_statusLabel->setText(tr("Loading cancelled; the data shown before is unchanged."));
+        Q_EMIT loadFinished(false);
+        return;
+    }
     m_statusLabel->setText(tr("Could not load %1; the data shown before is unchanged.").arg(path));
+    QStringList errors;
+    for (const auto& cause : error.causes) {
+        errors << errorText(cause);
+    }
+    if (errors.isEmpty()) {
+        errors << errorText(error);
+    }
     QMessageBox box(QMessageBox::Warning, tr("Data set rejected"),
                     tr("%n file(s) could not be read. Nothing was loaded or changed.", nullptr,
                        static_cast<int>(errors.size())),
@@ -262,10 +260,36 @@ void MainWindow::onLoadFailed(const QString& path, const QStringList& errors) {
     Q_EMIT loadFinished(false);
 }
 
-void MainWindow::onSimulated(const QVector<QVector<double>>& xOutPct, const QVector<QVector<double>>& tOutC) {
-    setBusy(false);
-    m_modelX = xOutPct;
-    m_modelT = tOutC;
+void MainWindow::simulate() {
+    m_jobs.submit<workflow::SimulateResult>(
+        tr("Simulate"),
+        [](workflow::Session& session, const Progress& progress) { return session.simulate({}, progress); }, this,
+        [this](const Expected<workflow::SimulateResult>& result) {
+            if (result) {
+                onSimulated(*result);
+            } else if (result.error().kind == ErrorKind::Cancelled) {
+                m_statusLabel->setText(m_dataStatus + tr("; simulation cancelled"));
+            } else {
+                m_statusLabel->setText(tr("The physics model failed on this data: %1").arg(errorText(result.error())));
+            }
+        });
+}
+
+void MainWindow::onSimulated(const workflow::SimulateResult& result) {
+    // Outlet predictions in the file units the plots show (% wb, °C).
+    m_modelX.clear();
+    m_modelT.clear();
+    for (const auto& r : result.simulations) {
+        QVector<double> xb, tb;
+        xb.reserve(static_cast<int>(r.xOutDb.size()));
+        tb.reserve(static_cast<int>(r.tOutK.size()));
+        for (std::size_t k = 0; k < r.xOutDb.size(); ++k) {
+            xb.push_back(units::dryToWetPct(r.xOutDb[k]));
+            tb.push_back(units::kelvinToCelsius(r.tOutK[k]));
+        }
+        m_modelX.push_back(xb);
+        m_modelT.push_back(tb);
+    }
     m_statusLabel->setText(m_dataStatus + tr("; physics model (default parameters) shown dashed"));
     showBatch(m_batchList->currentRow());
     Q_EMIT simulationShown();
@@ -276,10 +300,10 @@ void MainWindow::onBatchSelected(int row) {
 }
 
 void MainWindow::showBatch(int row) {
-    if (row < 0 || static_cast<std::size_t>(row) >= m_data.batches.size()) {
+    if (!m_data || row < 0 || static_cast<std::size_t>(row) >= m_data->batches.size()) {
         return;
     }
-    const auto& b = m_data.batches[static_cast<std::size_t>(row)];
+    const auto& b = m_data->batches[static_cast<std::size_t>(row)];
     const auto* t = b.values(data::Column::Time);
     const auto* x = b.values(data::Column::XOut);
     const auto* temp = b.values(data::Column::TOut);

@@ -1,11 +1,12 @@
 #pragma once
 
+#include "common/JobRunner.h"
 #include "data/Batch.h"
 #include "data/DataSetSummary.h"
 
 #include <QMainWindow>
-#include <QThread>
 #include <QVector>
+#include <memory>
 
 class QLabel;
 class QListWidget;
@@ -17,8 +18,6 @@ class QTreeWidget;
 
 namespace drytwin::widgets {
 
-class EngineWorker;
-
 /// @brief DryTwin's main window: menus, a batch list, plots of the selected batch, a status bar.
 /// Engine work runs on a worker thread; the window only shows and edits.
 class MainWindow : public QMainWindow {
@@ -27,28 +26,24 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    /// @brief Starts loading a batch file or folder on the worker thread.
+    /// @brief Starts loading a batch file or folder on the engine thread.
     void openDataSet(const QString& path);
     /// @brief The data set shown now (empty before the first successful load).
-    const data::DataSet& dataSet() const { return m_data; }
+    const data::DataSet& dataSet() const { return m_data ? *m_data : m_noData; }
+    /// @brief The runner of engine jobs (for tests and scripting).
+    JobRunner& jobs() { return m_jobs; }
     /// @brief HTML of the About box: DryTwin's version and every library's.
     static QString aboutText();
 
 Q_SIGNALS:
-    void loadRequested(const QString& path);
-    void simulationRequested(const drytwin::data::DataSet& dataSet);
     /// @brief The model's predictions are shown (for tests and scripting).
     void simulationShown();
     /// @brief Emitted after a load attempt finished, successful or not (for tests and scripting).
     void loadFinished(bool ok);
 
 private Q_SLOTS:
-    void onDataLoaded(const QString& path, const drytwin::data::DataSet& dataSet,
-                      const drytwin::data::DataSetSummary& summary);
-    void onLoadFailed(const QString& path, const QStringList& errors);
-    void onProgress(const QString& stage, double fraction, const QString& detail);
+    void onProgress(drytwin::widgets::JobId id, const QString& stage, double fraction, const QString& detail);
     void onBatchSelected(int row);
-    void onSimulated(const QVector<QVector<double>>& xOutPct, const QVector<QVector<double>>& tOutC);
     void showAbout();
     void chooseFile();
     void chooseFolder();
@@ -57,10 +52,14 @@ private:
     void createMenus();
     void showBatch(int row);
     void setBusy(bool busy);
+    void onDataLoaded(const QString& path, const workflow::OpenResult& result);
+    void onLoadFailed(const QString& path, const Error& error);
+    void simulate();
+    void onSimulated(const workflow::SimulateResult& result);
 
-    QThread m_thread;
-    EngineWorker* m_worker = nullptr;
-    data::DataSet m_data;
+    JobRunner m_jobs;
+    std::shared_ptr<const data::DataSet> m_data;
+    data::DataSet m_noData;
     QListWidget* m_batchList = nullptr;
     QTreeWidget* m_columnTable = nullptr;
     QwtPlot* m_moisturePlot = nullptr;

@@ -1,5 +1,6 @@
 #include "baselines/LstmBaseline.h"
 
+#include "common/Units.h"
 #include <chrono>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -15,9 +16,10 @@ constexpr int kOutputs = 2; // X_out [% wb], T_out [°C]
 
 /// Raw feature row k of a batch, in file-like units.
 std::array<double, kInputs> rawFeatures(const data::SiBatch& b, std::size_t k) {
-    return {b.tHotK[k] - data::kKelvinOffset, b.feedKgPerS[k] * 3600,           data::dryToWetPct(b.xInDb[k]),
-            b.tInK[k] - data::kKelvinOffset,  b.tAmbK[k] - data::kKelvinOffset, 100 * b.rhAmb[k],
-            data::dryToWetPct(b.xOutDb[k]),   b.tOutK[k] - data::kKelvinOffset};
+    using namespace units;
+    return {kelvinToCelsius(b.tHotK[k]), kgPerSToKgPerHour(b.feedKgPerS[k]), dryToWetPct(b.xInDb[k]),
+            kelvinToCelsius(b.tInK[k]),  kelvinToCelsius(b.tAmbK[k]),        fractionToPercent(b.rhAmb[k]),
+            dryToWetPct(b.xOutDb[k]),    kelvinToCelsius(b.tOutK[k])};
 }
 
 struct Net : torch::nn::Module {
@@ -154,7 +156,7 @@ Expected<LstmBaseline> LstmBaseline::train(const std::vector<residual::BatchView
         if (reportProgress(progress, "lstm", static_cast<double>(epoch + 1) / o.epochs,
                            "epoch " + std::to_string(epoch + 1) + ", loss " +
                                std::to_string(im.losses.back()))) {
-            return Error{ErrorKind::Cancelled, "lstm", "cancelled by the user"};
+            return cancelledError("lstm");
         }
     }
     im.trainSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -1,5 +1,6 @@
 #include "calibration/Calibration.h"
 
+#include "common/Units.h"
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
@@ -68,7 +69,7 @@ public:
         std::vector<data::RowRef> rows = o.rows.empty() ? data::calibrationSubset(batches) : o.rows;
         for (const auto& r : rows) {
             if (m_groups.empty() || m_groups.back().batch != r.batch) {
-                m_groups.push_back({r.batch, {}, data::toLineInputs(batches[r.batch])});
+                m_groups.push_back({r.batch, {}, physics::toLineInputs(batches[r.batch])});
             }
             m_groups.back().rows.push_back(r.row);
         }
@@ -101,7 +102,7 @@ public:
             for (std::size_t j = 0; j < g.rows.size(); ++j) {
                 const std::size_t k = g.rows[j];
                 // d(% wb)/dX_db = 100 / (1 + X)².
-                const auto wet = [](double x) { return data::dryToWetPct(x); };
+                const auto wet = [](double x) { return units::dryToWetPct(x); };
                 const auto dWet = [](double x) { return 100.0 / ((1 + x) * (1 + x)); };
                 if (std::isfinite(b.xOutDb[k]) && std::isfinite(b.tOutK[k])) {
                     out.xOut.push_back(wet(b.xOutDb[k]) - wet(sim->xOutDb[j]));
@@ -266,6 +267,7 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
         double best = std::numeric_limits<double>::infinity();
         std::vector<double> bestUnit;
         bool cancelled = false;
+        bool stoppedKeepBest = false; ///< the user asked to stop and keep the best point so far
         int budget = 0;
     } state{&problem,
             &coords,
@@ -277,6 +279,7 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
             std::numeric_limits<double>::infinity(),
             {},
             false,
+            false,
             options.maxEvaluations};
     for (const auto& c : coords) {
         state.bestUnit.push_back(std::clamp(c.toUnit(start[c.param]), 0.0, 1.0));
@@ -285,7 +288,7 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
 
     const auto objective = [](unsigned n, const double* u, double*, void* data) -> double {
         auto& s = *static_cast<State*>(data);
-        if (s.cancelled) {
+        if (s.cancelled || s.stoppedKeepBest) {
             // NLopt may evaluate a whole population before it sees the stop request.
             throw nlopt::forced_stop();
         }
@@ -316,10 +319,12 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
         rec.loss = loss;
         rec.bestLoss = s.best;
         s.result->history.push_back(rec);
-        if (reportProgress(*s.progress, "calibrate",
+        const auto action =
+            progressAction(*s.progress, "calibrate",
                            std::min(1.0, static_cast<double>(s.result->evaluations) / s.budget),
-                           s.phase + " search, loss " + std::to_string(s.best))) {
-            s.cancelled = true;
+                           s.phase + " search, loss " + std::to_string(s.best));
+        if (action != ProgressAction::Continue) {
+            (action == ProgressAction::StopKeepBest ? s.stoppedKeepBest : s.cancelled) = true;
             throw nlopt::forced_stop();
         }
         return loss;
@@ -354,13 +359,26 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
     std::vector<double> x = state.bestUnit;
     run(nlopt::GN_CRS2_LM, globalEvals, x);
     if (state.cancelled) {
-        return Error{ErrorKind::Cancelled, "calibrate", "cancelled by the user"};
+        return cancelledError("calibrate");
     }
-    state.phase = "local";
-    x = state.bestUnit;
-    run(nlopt::LN_BOBYQA, std::max(1, options.maxEvaluations - result.evaluations), x);
-    if (state.cancelled) {
-        return Error{ErrorKind::Cancelled, "calibrate", "cancelled by the user"};
+    if (!state.stoppedKeepBest) {
+        state.phase = "local";
+        x = state.bestUnit;
+        run(nlopt::LN_BOBYQA, std::max(1, options.maxEvaluations - result.evaluations), x);
+        if (state.cancelled) {
+            return cancelledError("calibrate");
+        }
+    }
+    if (state.stoppedKeepBest) {
+        result.ending.termination = Termination::StoppedKeptBest;
+        result.ending.message = "stopped by the user after " + std::to_string(result.evaluations) +
+                                " evaluations (" + state.phase + " search); the best parameters found so far";
+    } else if (result.evaluations >= options.maxEvaluations) {
+        result.ending.termination = Termination::BudgetExhausted;
+        result.ending.message = "used the budget of " + std::to_string(options.maxEvaluations) + " evaluations";
+    } else {
+        result.ending.termination = Termination::Converged;
+        result.ending.message = "BOBYQA met its relative parameter tolerance";
     }
 
     result.parameters = start;
@@ -400,6 +418,7 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
     }
     reportProgress(progress, "calibrate", 1.0, "done");
     result.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    result.ending.elapsedSeconds = result.elapsedSeconds;
     return result;
 }
 

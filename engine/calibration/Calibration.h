@@ -77,12 +77,15 @@ struct CalibrationResult {
     std::size_t rowsUsed = 0;
     std::string algorithm;
     double elapsedSeconds = 0;
+    Ending ending; ///< converged, budget used, or stopped by the user with the best so far
 };
 
 /// @brief Calibrates the free parameters of the line model to measured batches: NLopt CRS2-LM
 /// (a controlled-random-search global method, in the spirit of the paper's genetic algorithm)
 /// then BOBYQA, in bound-normalised (log where the range spans a decade or more) coordinates.
 /// A simulation failure in one evaluation costs that point a penalty; the search goes on.
+/// Progress returning Stop gives a Cancelled error; StopKeepBest ends the search and returns
+/// the best parameters found so far (with their fit and intervals).
 Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
                                       const properties::ParameterSet& start,
                                       const CalibrationOptions& options, const Progress& progress = {});

@@ -16,4 +16,8 @@ int exitCodeFor(ErrorKind kind) {
     return 1;
 }
 
+Error cancelledError(const std::string& stage) {
+    return Error{ErrorKind::Cancelled, stage, "cancelled by the user", ErrorCode::Cancelled, {stage}};
+}
+
 } // namespace drytwin

@@ -3,6 +3,7 @@
 #include <string>
 #include <utility>
 #include <variant>
+#include <vector>
 
 namespace drytwin {
 
@@ -14,11 +15,41 @@ enum class ErrorKind {
     Cancelled  ///< the user stopped the work (exit code 130)
 };
 
+/// @brief What went wrong, for front ends that word errors in the user's language
+/// (ARCHITECTURE.md rule 11). Each code documents its Error::args in order; Unspecified has
+/// none, and the English message is all there is.
+enum class ErrorCode {
+    Unspecified,
+    InvalidOption,       ///< {option, reason}
+    FileNotFound,        ///< {path}
+    DataFileFormat,      ///< {file, line, column, English reason}
+    MissingColumn,       ///< {file, column name}
+    TextInNumber,        ///< {file, line, column, cell text, column name}
+    TimeNotIncreasing,   ///< {file, line, column}
+    ModelFileInvalid,    ///< {file, key, English reason}
+    UnknownParameter,    ///< {symbol}
+    ParameterOutOfRange, ///< {symbol, value, lower, upper}
+    NotEnoughData,       ///< {what, rows found}
+    NoDataLoaded,        ///< {}
+    ModelNotTrained,     ///< {model key}
+    SolverFailed,        ///< {stage, English reason}
+    NotImplemented,      ///< {feature}
+    Cancelled            ///< {stage}
+};
+
 /// @brief An error as a value: where it happened and why. The engine never throws across its API.
 struct Error {
+    Error() = default;
+    Error(ErrorKind kind_, std::string place_, std::string reason_, ErrorCode code_ = ErrorCode::Unspecified,
+          std::vector<std::string> args_ = {})
+        : kind(kind_), place(std::move(place_)), reason(std::move(reason_)), code(code_), args(std::move(args_)) {}
+
     ErrorKind kind = ErrorKind::BadInput;
     std::string place;  ///< "file:line:column", a parameter name, a solver stage ...
-    std::string reason; ///< one sentence a process engineer can act on
+    std::string reason; ///< one sentence a process engineer can act on, in English (logs, CLI)
+    ErrorCode code = ErrorCode::Unspecified;
+    std::vector<std::string> args; ///< the code's arguments, as ErrorCode documents them
+    std::vector<Error> causes;     ///< the errors behind this one, e.g. one per rejected file
 
     /// @brief "place: reason", or just the reason when there is no place.
     std::string message() const { return place.empty() ? reason : place + ": " + reason; }
@@ -26,6 +57,9 @@ struct Error {
 
 /// @brief Exit code of the contract for an error kind.
 int exitCodeFor(ErrorKind kind);
+
+/// @brief The error of work the user stopped at @p stage ("calibrate", "load" ...).
+Error cancelledError(const std::string& stage);
 
 /// @brief A value or an error. Minimal stand-in for C++23 std::expected.
 template <class T> class Expected {

@@ -28,7 +28,16 @@ std::string place(const std::string& file, int line, int column) {
 }
 
 Error badInput(const std::string& file, int line, int column, std::string reason) {
-    return Error{ErrorKind::BadInput, place(file, line, column), std::move(reason)};
+    std::vector<std::string> args{file, std::to_string(line), std::to_string(column), reason};
+    return Error{ErrorKind::BadInput, place(file, line, column), std::move(reason), ErrorCode::DataFileFormat,
+                 std::move(args)};
+}
+
+/// @p e with a more specific code and its arguments (ErrorCode documents them).
+Error withCode(Error e, ErrorCode code, std::vector<std::string> args) {
+    e.code = code;
+    e.args = std::move(args);
+    return e;
 }
 
 /// Finds the first byte that is not valid UTF-8, using glibc's iconv (a library rather than
@@ -290,9 +299,10 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
                 it != options.mapping.contractToFile.end()) {
                 hint = " (the column mapping names it '" + it->second + "')";
             }
-            return badInput(file, header.line, 1,
-                            "missing required column '" + std::string(s.name) + "' [" + std::string(s.unit) +
-                                ", " + std::string(s.meaning) + "]" + hint);
+            return withCode(badInput(file, header.line, 1,
+                                     "missing required column '" + std::string(s.name) + "' [" +
+                                         std::string(s.unit) + ", " + std::string(s.meaning) + "]" + hint),
+                            ErrorCode::MissingColumn, {file, std::string(s.name)});
         }
     }
 
@@ -328,8 +338,10 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
             if (isMissingToken(cell)) {
                 batch.missing.push_back({row.line, static_cast<int>(c) + 1, std::string(spec(col.id).name)});
             } else if (!parseDouble(cell, v)) {
-                return badInput(file, row.line, static_cast<int>(c) + 1,
-                                "text '" + cell + "' in numeric column '" + col.fileName + "'");
+                return withCode(badInput(file, row.line, static_cast<int>(c) + 1,
+                                         "text '" + cell + "' in numeric column '" + col.fileName + "'"),
+                                ErrorCode::TextInNumber,
+                                {file, std::to_string(row.line), std::to_string(c + 1), cell, col.fileName});
             } else if (!std::isfinite(v)) {
                 return badInput(file, row.line, static_cast<int>(c) + 1,
                                 "infinite value '" + cell + "' in column '" + col.fileName + "'");
@@ -354,9 +366,11 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
                             "missing time; the time index must be complete");
         }
         if (r > 0 && !((*time)[r] > (*time)[r - 1])) {
-            return badInput(file, batch.lineOfRow[r], timeField,
-                            "time does not increase (" + trim(std::to_string((*time)[r - 1])) + " s then " +
-                                trim(std::to_string((*time)[r])) + " s)");
+            return withCode(badInput(file, batch.lineOfRow[r], timeField,
+                                     "time does not increase (" + trim(std::to_string((*time)[r - 1])) +
+                                         " s then " + trim(std::to_string((*time)[r])) + " s)"),
+                            ErrorCode::TimeNotIncreasing,
+                            {file, std::to_string(batch.lineOfRow[r]), std::to_string(timeField)});
         }
     }
     return batch;
@@ -389,7 +403,8 @@ LoadResult loadDataSet(const std::string& path, const ReadOptions& options, cons
     } else if (fs::exists(path, ec)) {
         files.push_back(path);
     } else {
-        result.errors.push_back({ErrorKind::BadInput, path, "no such file or folder"});
+        result.errors.push_back(
+            {ErrorKind::BadInput, path, "no such file or folder", ErrorCode::FileNotFound, {path}});
     }
     std::set<std::string> ids;
     for (std::size_t i = 0; i < files.size(); ++i) {

@@ -1,5 +1,7 @@
 #include "data/SiBatch.h"
 
+#include "common/Units.h"
+
 #include <cmath>
 #include <limits>
 
@@ -76,7 +78,7 @@ std::vector<SiBatch> toSi(const DataSet& data, const CleaningReport& cleaning) {
             }
             return v;
         };
-        const auto kelvin = [](double c) { return c + kKelvinOffset; };
+        const auto kelvin = units::celsiusToKelvin;
         const auto same = [](double x) { return x; };
         s.timeS = column(Column::Time);
         s.tHotK = input(Column::THot, kelvin);
@@ -86,14 +88,14 @@ std::vector<SiBatch> toSi(const DataSet& data, const CleaningReport& cleaning) {
             s.tHotSpK = s.tHotK;
         }
         s.airSpeedMPerS = input(Column::AirSpeed, same);
-        s.feedKgPerS = input(Column::Feed, [](double kgh) { return kgh / 3600.0; });
-        s.xInDb = input(Column::XIn, wetPctToDry);
+        s.feedKgPerS = input(Column::Feed, units::kgPerHourToKgPerS);
+        s.xInDb = input(Column::XIn, units::wetPctToDry);
         s.tInK = input(Column::TIn, kelvin);
         s.tAmbK = input(Column::TAmb, kelvin);
-        s.rhAmb = input(Column::RHAmb, [](double pct) { return pct / 100.0; });
-        s.xHdtDb = output(Column::XHdt, wetPctToDry);
+        s.rhAmb = input(Column::RHAmb, units::percentToFraction);
+        s.xHdtDb = output(Column::XHdt, units::wetPctToDry);
         s.tHdtK = output(Column::THdt, kelvin);
-        s.xOutDb = output(Column::XOut, wetPctToDry);
+        s.xOutDb = output(Column::XOut, units::wetPctToDry);
         s.tOutK = output(Column::TOut, kelvin);
         s.hasXHdt = b.has(Column::XHdt);
         s.hasTHdt = b.has(Column::THdt);
@@ -142,10 +144,6 @@ std::vector<RowRef> calibrationSubset(const std::vector<SiBatch>& batches, std::
         }
     }
     return subset;
-}
-
-physics::LineInputs toLineInputs(const SiBatch& b) {
-    return {b.timeS, b.tHotK, b.xInDb, b.tInK, b.tAmbK, b.rhAmb, b.feedKgPerS, b.airSpeedMPerS};
 }
 
 } // namespace drytwin::data

@@ -3,24 +3,12 @@
 #include "common/Error.h"
 #include "data/Batch.h"
 #include "data/Cleaning.h"
-#include "physics/LineInputs.h"
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace drytwin::data {
-
-/// @brief Wet-basis percent to dry-basis fraction: X_db = X_wb / (1 − X_wb) (paper §IV.A).
-inline double wetPctToDry(double wetPct) {
-    const double x = wetPct / 100.0;
-    return x / (1.0 - x);
-}
-/// @brief Dry-basis fraction to wet-basis percent.
-inline double dryToWetPct(double dry) {
-    return 100.0 * dry / (1.0 + dry);
-}
-inline constexpr double kKelvinOffset = 273.15;
 
 /// @brief One batch in SI units and dry-basis moisture, the engine's internal form.
 /// Series absent from the file hold the column default, or NaN when "not measured".
@@ -49,9 +37,6 @@ struct SiBatch {
 /// between its neighbours (inputs must be continuous for simulation) and its row is masked
 /// out of fitting and metrics; missing outputs stay NaN and masked.
 std::vector<SiBatch> toSi(const DataSet& data, const CleaningReport& cleaning);
-
-/// @brief The model's input series of an SI batch.
-physics::LineInputs toLineInputs(const SiBatch& b);
 
 /// @brief Row range [begin, end) of one batch.
 struct RowRange {

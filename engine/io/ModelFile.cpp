@@ -1,7 +1,9 @@
 #include "io/ModelFile.h"
 
 #include "common/AtomicFile.h"
+#include "plant/Mechanisms.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 namespace drytwin::io {
@@ -10,6 +12,13 @@ using nlohmann::json;
 using properties::Param;
 
 namespace {
+
+using hybrid::HybridModel;
+
+/// Keys this version writes; every other top-level key is kept as a foreign key.
+constexpr const char* kKnownKeys[] = {"format",      "format_version", "parameters",      "switches",
+                                      "winnower_form", "calibration",  "mechanisms",      "residual_models",
+                                      hybrid::kPgrlCcKey, hybrid::kExtInputKey, hybrid::kLstmKey};
 
 json parametersJson(const properties::ParameterSet& p) {
     json j = json::object();
@@ -25,8 +34,11 @@ const char* winnowerName(physics::WinnowerForm f) {
 
 } // namespace
 
-std::string formatModelFile(const ModelFile& m) {
-    json j = json::parse(m.extraJson.empty() ? "{}" : m.extraJson);
+std::string formatModelFile(const HybridModel& m) {
+    json j = json::object();
+    for (const auto& [key, text] : m.foreignKeys) {
+        j[key] = json::parse(text);
+    }
     j["format"] = "drytwin-model";
     j["format_version"] = kModelFormatVersion;
     j["parameters"] = parametersJson(m.parameters);
@@ -34,27 +46,44 @@ std::string formatModelFile(const ModelFile& m) {
                      {"latent_heat_correction", m.switches.latentHeatCorrection},
                      {"moisture_dependent_cp", m.switches.moistureDependentCp}};
     j["winnower_form"] = winnowerName(m.winnower);
-    if (m.hasCalibration) {
+    if (m.calibration) {
         json c;
-        for (const auto& e : m.calibration.estimates) {
+        for (const auto& e : m.calibration->estimates) {
             c["estimates"][e.symbol] = {
                 {"value", e.value}, {"ci95", {e.ci95Low, e.ci95High}}, {"at_bound", e.atBound}};
         }
-        c["loss_before"] = m.calibration.lossBefore;
-        c["loss_after"] = m.calibration.lossAfter;
-        c["evaluations"] = m.calibration.evaluations;
-        c["seed"] = m.calibration.seed;
-        c["algorithm"] = m.calibration.algorithm;
+        c["loss_before"] = m.calibration->lossBefore;
+        c["loss_after"] = m.calibration->lossAfter;
+        c["evaluations"] = m.calibration->evaluations;
+        c["seed"] = m.calibration->seed;
+        c["algorithm"] = m.calibration->algorithm;
         j["calibration"] = c;
+    }
+    j["mechanisms"] = json::object();
+    for (const auto& [name, v] : m.mechanisms) {
+        j["mechanisms"][name] = {{"value", v.value}, {"unit", v.unit}, {"ci95", {v.ci95Low, v.ci95High}}};
+    }
+    if (m.hasResidualModels()) {
+        json r = json::object();
+        if (m.pgrlCc) {
+            r[hybrid::kPgrlCcKey] = json::parse(m.pgrlCc->toJson());
+        }
+        if (m.extInput) {
+            r[hybrid::kExtInputKey] = json::parse(m.extInput->toJson());
+        }
+        if (m.lstm) {
+            r[hybrid::kLstmKey] = json::parse(m.lstm->toJson());
+        }
+        j["residual_models"] = r;
     }
     return j.dump(2) + "\n";
 }
 
-Status writeModelFile(const ModelFile& model, const std::string& path) {
+Status writeModelFile(const HybridModel& model, const std::string& path) {
     return writeFileAtomically(path, formatModelFile(model));
 }
 
-Expected<ModelFile> parseModelFile(const std::string& text, const std::string& name) {
+Expected<HybridModel> parseModelFile(const std::string& text, const std::string& name) {
     json j;
     try {
         j = json::parse(text);
@@ -63,7 +92,7 @@ Expected<ModelFile> parseModelFile(const std::string& text, const std::string& n
                      std::string("invalid JSON: ") + e.what()};
     }
     auto bad = [&](const std::string& key, const std::string& why) {
-        return Error{ErrorKind::BadInput, name + ": " + key, why};
+        return Error{ErrorKind::BadInput, name + ": " + key, why, ErrorCode::ModelFileInvalid, {name, key, why}};
     };
     if (!j.is_object() || j.value("format", "") != "drytwin-model") {
         return bad("format", "not a DryTwin model file (expected \"format\": \"drytwin-model\")");
@@ -76,7 +105,8 @@ Expected<ModelFile> parseModelFile(const std::string& text, const std::string& n
                                          " is newer than this DryTwin reads (" +
                                          std::to_string(kModelFormatVersion) + ")");
     }
-    ModelFile m;
+    const int version = j["format_version"].get<int>();
+    HybridModel m;
     if (j.contains("parameters")) {
         if (!j["parameters"].is_object()) {
             return bad("parameters", "must be an object keyed by parameter symbol");
@@ -109,10 +139,10 @@ Expected<ModelFile> parseModelFile(const std::string& text, const std::string& n
     m.winnower = form == "transient" ? physics::WinnowerForm::Transient : physics::WinnowerForm::Terminal;
     if (j.contains("calibration")) {
         const json& c = j["calibration"];
-        m.hasCalibration = true;
+        m.calibration.emplace();
         if (c.contains("estimates")) {
             for (const auto& [symbol, e] : c["estimates"].items()) {
-                CalibrationRecord::Estimate est;
+                hybrid::CalibrationRecord::Estimate est;
                 est.symbol = symbol;
                 est.value = e.value("value", 0.0);
                 if (e.contains("ci95") && e["ci95"].is_array() && e["ci95"].size() == 2) {
@@ -120,25 +150,73 @@ Expected<ModelFile> parseModelFile(const std::string& text, const std::string& n
                     est.ci95High = e["ci95"][1].get<double>();
                 }
                 est.atBound = e.value("at_bound", false);
-                m.calibration.estimates.push_back(est);
+                m.calibration->estimates.push_back(est);
             }
         }
-        m.calibration.lossBefore = c.value("loss_before", 0.0);
-        m.calibration.lossAfter = c.value("loss_after", 0.0);
-        m.calibration.evaluations = c.value("evaluations", 0);
-        m.calibration.seed = c.value("seed", 0u);
-        m.calibration.algorithm = c.value("algorithm", "");
+        m.calibration->lossBefore = c.value("loss_before", 0.0);
+        m.calibration->lossAfter = c.value("loss_after", 0.0);
+        m.calibration->evaluations = c.value("evaluations", 0);
+        m.calibration->seed = c.value("seed", 0u);
+        m.calibration->algorithm = c.value("algorithm", "");
     }
-    json extra = j;
-    for (const char* k :
-         {"format", "format_version", "parameters", "switches", "winnower_form", "calibration"}) {
-        extra.erase(k);
+    if (j.contains("mechanisms")) {
+        if (!j["mechanisms"].is_object()) {
+            return bad("mechanisms", "must be an object keyed by mechanism name");
+        }
+        for (const auto& [mechanism, entry] : j["mechanisms"].items()) {
+            if (!plant::mechanismByName(mechanism)) {
+                return bad("mechanisms." + mechanism, "unknown mechanism (CONTRACT.md §4 lists the names)");
+            }
+            if (!entry.is_object() || !entry.value("value", json()).is_number()) {
+                return bad("mechanisms." + mechanism, "must be {\"value\": number, \"unit\": ..., \"ci95\": [lo, hi]}");
+            }
+            hybrid::MechanismValue v;
+            v.value = entry["value"].get<double>();
+            v.unit = entry.value("unit", "");
+            if (entry.contains("ci95") && entry["ci95"].is_array() && entry["ci95"].size() == 2 &&
+                entry["ci95"][0].is_number() && entry["ci95"][1].is_number()) {
+                v.ci95Low = entry["ci95"][0].get<double>();
+                v.ci95High = entry["ci95"][1].get<double>();
+            }
+            m.mechanisms[mechanism] = v;
+        }
     }
-    m.extraJson = extra.dump();
+    // Version 1 kept the learnt models at the top level; version 2 under "residual_models".
+    const json* stored = &j;
+    if (version >= 2 && j.contains("residual_models")) {
+        if (!j["residual_models"].is_object()) {
+            return bad("residual_models", "must be an object keyed by model");
+        }
+        stored = &j["residual_models"];
+    }
+    const std::string prefix = stored == &j ? "" : "residual_models.";
+    for (const char* key : {hybrid::kPgrlCcKey, hybrid::kExtInputKey}) {
+        if (!stored->contains(key)) {
+            continue;
+        }
+        auto rm = residual::ResidualModel::fromJson((*stored)[key].dump());
+        if (!rm) {
+            return bad(prefix + key, rm.error().reason);
+        }
+        auto shared = std::make_shared<const residual::ResidualModel>(std::move(*rm));
+        (std::string(key) == hybrid::kPgrlCcKey ? m.pgrlCc : m.extInput) = std::move(shared);
+    }
+    if (stored->contains(hybrid::kLstmKey)) {
+        auto lstm = baselines::LstmBaseline::fromJson((*stored)[hybrid::kLstmKey].dump());
+        if (!lstm) {
+            return bad(prefix + hybrid::kLstmKey, lstm.error().reason);
+        }
+        m.lstm = std::make_shared<const baselines::LstmBaseline>(std::move(*lstm));
+    }
+    for (const auto& [key, value] : j.items()) {
+        if (std::find(std::begin(kKnownKeys), std::end(kKnownKeys), key) == std::end(kKnownKeys)) {
+            m.foreignKeys[key] = value.dump();
+        }
+    }
     return m;
 }
 
-Expected<ModelFile> readModelFile(const std::string& path) {
+Expected<HybridModel> readModelFile(const std::string& path) {
     auto text = readWholeFile(path);
     if (!text) {
         return text.error();
@@ -146,9 +224,8 @@ Expected<ModelFile> readModelFile(const std::string& path) {
     return parseModelFile(*text, path);
 }
 
-std::string formatTruth(const properties::ParameterSet& truth,
-                        const std::map<plant::Mechanism, double>& effects, unsigned seed,
-                        bool unmeasuredDrift) {
+std::string truthJson(const properties::ParameterSet& truth, const std::map<plant::Mechanism, double>& effects,
+                      unsigned seed, bool unmeasuredDrift) {
     json j;
     j["parameters"] = parametersJson(truth);
     j["effects"] = json::object();
@@ -161,5 +238,6 @@ std::string formatTruth(const properties::ParameterSet& truth,
     j["unmeasured_drift"] = unmeasuredDrift;
     return j.dump(2) + "\n";
 }
+
 
 } // namespace drytwin::io

@@ -80,4 +80,8 @@ std::vector<double> firstOrderResponse(const std::vector<double>& timeS, const s
     return y;
 }
 
+LineInputs toLineInputs(const data::SiBatch& b) {
+    return {b.timeS, b.tHotK, b.xInDb, b.tInK, b.tAmbK, b.rhAmb, b.feedKgPerS, b.airSpeedMPerS};
+}
+
 } // namespace drytwin::physics

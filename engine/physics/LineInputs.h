@@ -1,6 +1,7 @@
 #pragma once
 
 #include "common/Error.h"
+#include "data/SiBatch.h"
 
 #include <cstddef>
 #include <vector>
@@ -24,6 +25,9 @@ struct LineInputs {
     /// @brief Equal lengths, ≥ 2 samples, strictly increasing time, finite physical values.
     Status validate() const;
 };
+
+/// @brief The model's input series of an SI batch.
+LineInputs toLineInputs(const data::SiBatch& b);
 
 /// @brief Linear interpolation in a sampled series, held constant outside its time range.
 /// Thread-safe (no state).

@@ -636,7 +636,7 @@ Expected<std::vector<SimulationResult>> simulateBatches(const std::vector<LineIn
         t.join();
     }
     if (stop) {
-        return Error{ErrorKind::Cancelled, "simulate", "cancelled by the user"};
+        return cancelledError("simulate");
     }
     std::vector<SimulationResult> out;
     out.reserve(nb);

@@ -1,5 +1,6 @@
 #include "plant/VirtualPlant.h"
 
+#include "common/Units.h"
 #include "physics/SectionRates.h"
 #include "properties/Properties.h"
 
@@ -16,7 +17,7 @@ namespace ph = physics;
 
 namespace {
 
-constexpr double kKelvin = 273.15;
+constexpr double kKelvin = units::kKelvinOffset;
 constexpr double kCriticalMoisture = 0.20; // X_cr of the falling-rate mechanism [kg/kg dry]
 constexpr double kAirHeatCapacity = 1010;  // J/(kg·K)
 constexpr double kTubeAreaM2 = 0.283;      // 0.6 m tube diameter
@@ -170,7 +171,7 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
     for (int b = 0; b < o.batches; ++b) {
         if (reportProgress(progress, "generate", static_cast<double>(b) / o.batches,
                            "batch " + std::to_string(b + 1) + "/" + std::to_string(o.batches))) {
-            return Error{ErrorKind::Cancelled, "generate", "cancelled by the user"};
+            return cancelledError("generate");
         }
         PlantBatch pb;
         char id[16];

@@ -102,7 +102,13 @@ Status ParameterSet::validate() const {
             std::ostringstream os;
             os << "value " << v << " " << i.unit << " is outside [" << i.lower << ", " << i.upper << "] ("
                << i.meaning << ")";
-            return Error{ErrorKind::BadInput, std::string(i.symbol), os.str()};
+            const auto text = [](double x) {
+                std::ostringstream t;
+                t << x;
+                return t.str();
+            };
+            return Error{ErrorKind::BadInput, std::string(i.symbol), os.str(), ErrorCode::ParameterOutOfRange,
+                         {std::string(i.symbol), text(v), text(i.lower), text(i.upper)}};
         }
     }
     return {};

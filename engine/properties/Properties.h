@@ -1,5 +1,6 @@
 #pragma once
 
+#include "common/Units.h"
 #include "properties/Pack.h"
 #include "properties/Parameters.h"
 
@@ -17,7 +18,7 @@ struct ModelSwitches {
 /// Dry-basis moisture at which C_p is frozen when moistureDependentCp is off (≈ 15 % wb, the
 /// middle of the line's operating range).
 inline constexpr double kCpReferenceMoisture = 0.176;
-inline constexpr double kKelvin = 273.15;
+inline constexpr double kKelvin = units::kKelvinOffset;
 
 // Each equation is a template over the number type (double, or Pack2 for two parcels at once;
 // see Pack.h), in namespace `generic`; the double functions below it are the public API.

@@ -1,5 +1,6 @@
 #include "residual/ResidualModel.h"
 
+#include "common/Units.h"
 #include "diagnostics/Stability.h"
 #include "residual/OrthogonalProjection.h"
 
@@ -97,7 +98,7 @@ Status ResidualOptions::validate() const {
 
 bool observedResidual(const data::SiBatch& b, const physics::SimulationResult& pbm, std::size_t k, double& ex,
                       double& et) {
-    ex = data::dryToWetPct(b.xOutDb[k]) - data::dryToWetPct(pbm.xOutDb[k]);
+    ex = units::dryToWetPct(b.xOutDb[k]) - units::dryToWetPct(pbm.xOutDb[k]);
     et = b.tOutK[k] - pbm.tOutK[k];
     return std::isfinite(ex) && std::isfinite(et);
 }
@@ -138,7 +139,7 @@ bool ResidualModel::features(const BatchView& v, std::size_t k, Eigen::VectorXd&
             const std::size_t hi =
                 std::min(k + 1 >= static_cast<std::size_t>(l) ? k + 1 - l : 0, p.xOutDb.size() - 1);
             const std::size_t lo = hi > 0 ? hi - 1 : 0;
-            d(j++) = (data::dryToWetPct(p.xOutDb[hi]) - data::dryToWetPct(p.xOutDb[lo])) / m_eScale(0);
+            d(j++) = (units::dryToWetPct(p.xOutDb[hi]) - units::dryToWetPct(p.xOutDb[lo])) / m_eScale(0);
             d(j++) = (p.tOutK[hi] - p.tOutK[lo]) / m_eScale(1);
         }
     }
@@ -252,7 +253,7 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
     if (o.controlConsistentWeights) {
         for (Eigen::Index i = 0; i < n; ++i) {
             const auto& s = snaps[static_cast<std::size_t>(i)];
-            const double y = data::dryToWetPct(training[s.view].batch->xOutDb[s.k]);
+            const double y = units::dryToWetPct(training[s.view].batch->xOutDb[s.k]);
             const double dl = 2.0 * std::abs(y - o.moistureTargetPct);
             const double margin = std::min(y - o.moistureLowPct, o.moistureHighPct - y);
             w(i) = 1.0 + o.kappa1 * dl + o.kappa2 * std::max(0.0, o.deltaPct - margin);
@@ -429,8 +430,8 @@ HybridPrediction ResidualModel::predictAhead(const BatchView& v, int horizon) co
         const Eigen::Vector2d e = m_c * x;
         out.residualXPct[i] = e(0) * m_eScale(0);
         out.residualTC[i] = e(1) * m_eScale(1);
-        out.xOutPct[i] = data::dryToWetPct(v.pbm->xOutDb[target]) + out.residualXPct[i]; // Eq. (21)
-        out.tOutC[i] = v.pbm->tOutK[target] - data::kKelvinOffset + out.residualTC[i];
+        out.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[target]) + out.residualXPct[i]; // Eq. (21)
+        out.tOutC[i] = v.pbm->tOutK[target] - units::kKelvinOffset + out.residualTC[i];
     }
     return out;
 }

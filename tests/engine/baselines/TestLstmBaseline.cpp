@@ -1,6 +1,7 @@
+#include "common/Units.h"
 #include "baselines/LstmBaseline.h"
-#include "data/PlantExport.h"
-#include "io/HybridTraining.h"
+#include "plant/PlantExport.h"
+#include "hybrid/HybridTraining.h"
 #include "plant/VirtualPlant.h"
 
 #include <QtTest>
@@ -19,8 +20,8 @@ private Q_SLOTS:
         o.batches = 3;
         o.samples = 1500;
         auto r = plant::runPlant(o);
-        m_batches = data::toSiBatches(*r, o.seed);
-        m_pbm = std::move(*hybrid::simulatePbm(m_batches, io::ModelFile{}, {}));
+        m_batches = plant::toSiBatches(*r, o.seed);
+        m_pbm = std::move(*hybrid::simulatePbm(m_batches, hybrid::HybridModel{}, {}));
     }
 
     void trainsPredictsAndRoundTrips() {
@@ -42,9 +43,9 @@ private Q_SLOTS:
         for (std::size_t i = 0; i < p1.xOutPct.size(); ++i) {
             const std::size_t k = test[0].rows.begin + i;
             QVERIFY(std::isfinite(p1.xOutPct[i]) && std::isfinite(p5.tOutC[i]));
-            maeLstm += std::abs(data::dryToWetPct(test[0].batch->xOutDb[k]) - p1.xOutPct[i]);
-            maePbm += std::abs(data::dryToWetPct(test[0].batch->xOutDb[k]) -
-                               data::dryToWetPct(test[0].pbm->xOutDb[k]));
+            maeLstm += std::abs(units::dryToWetPct(test[0].batch->xOutDb[k]) - p1.xOutPct[i]);
+            maePbm += std::abs(units::dryToWetPct(test[0].batch->xOutDb[k]) -
+                               units::dryToWetPct(test[0].pbm->xOutDb[k]));
             ++n;
         }
         QVERIFY(maeLstm < maePbm); // with the measured outputs it beats the uncalibrated PBM one step ahead

@@ -1,5 +1,5 @@
 #include "calibration/Calibration.h"
-#include "data/PlantExport.h"
+#include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
 
 #include <QtTest>
@@ -16,7 +16,7 @@ std::vector<data::SiBatch> plantData(const plant::PlantOptions& o) {
     if (!r) {
         qFatal("%s", r.error().message().c_str());
     }
-    return data::toSiBatches(*r, o.seed);
+    return plant::toSiBatches(*r, o.seed);
 }
 
 plant::PlantOptions noMechanisms() {

@@ -1,3 +1,4 @@
+#include "common/Units.h"
 #include "data/BatchReader.h"
 #include "data/BatchWriter.h"
 #include "data/Cleaning.h"
@@ -315,7 +316,7 @@ private Q_SLOTS:
         QCOMPARE(si[0].rhAmb[0], 0.55);
         QCOMPARE(si[0].tHotK[10], 169.5 + 273.15); // bridged ...
         QCOMPARE(int(si[0].keep[10]), 0);          // ... and masked out of fitting
-        QCOMPARE(dryToWetPct(wetPctToDry(13.7)), 13.7);
+        QCOMPARE(units::dryToWetPct(units::wetPctToDry(13.7)), 13.7);
 
         auto split = chronologicalSplit({6300, 6300, 6300, 6300, 6300, 6300, 6300, 6300, 6300, 6300});
         QCOMPARE(split.name, std::string("chronological_70_30"));

@@ -1,4 +1,5 @@
-#include "data/PlantExport.h"
+#include "common/Units.h"
+#include "plant/PlantExport.h"
 #include "data/SiBatch.h"
 #include "diagnostics/Metrics.h"
 #include "physics/LineSimulator.h"
@@ -36,13 +37,13 @@ Residual residualWithTruth(const plant::PlantResult& r) {
     int ne = 0;
     int nl = 0;
     for (const auto& b : r.batches) {
-        auto sim = physics::simulateLine(data::toLineInputs(b), r.truth);
+        auto sim = physics::simulateLine(plant::toLineInputs(b), r.truth);
         if (!sim) {
             qFatal("%s", sim.error().message().c_str());
         }
         const std::size_t n = b.timeS.size();
         for (std::size_t k = 100; k < n; ++k) { // skip the start-up of the loop
-            const double e = data::dryToWetPct(b.xOutDb[k]) - data::dryToWetPct(sim->xOutDb[k]);
+            const double e = units::dryToWetPct(b.xOutDb[k]) - units::dryToWetPct(sim->xOutDb[k]);
             all.push_back(e);
             if (k < n / 3) {
                 early += e;
@@ -84,11 +85,11 @@ private Q_SLOTS:
         QVERIFY2(std::abs(res.mean) < 0.005, qPrintable(QString::number(res.mean)));
         // The plant's h_HDT and k_HDT differ from the model defaults: default PBM is visibly off.
         const auto& b = r->batches[0];
-        auto def = physics::simulateLine(data::toLineInputs(b), properties::ParameterSet{});
+        auto def = physics::simulateLine(plant::toLineInputs(b), properties::ParameterSet{});
         std::vector<double> o, p;
         for (std::size_t k = 100; k < b.timeS.size(); ++k) {
-            o.push_back(data::dryToWetPct(b.xOutDb[k]));
-            p.push_back(data::dryToWetPct(def->xOutDb[k]));
+            o.push_back(units::dryToWetPct(b.xOutDb[k]));
+            p.push_back(units::dryToWetPct(def->xOutDb[k]));
         }
         QVERIFY(diagnostics::meanAbsoluteError(o, p) > 0.2);
     }
@@ -156,10 +157,10 @@ private Q_SLOTS:
             for (std::size_t k = 150; k < b.timeS.size(); ++k) {
                 fMin = std::min(fMin, b.feedKgPerS[k] * 3600);
                 fMax = std::max(fMax, b.feedKgPerS[k] * 3600);
-                xoMin = std::min(xoMin, data::dryToWetPct(b.xOutDb[k]));
-                xoMax = std::max(xoMax, data::dryToWetPct(b.xOutDb[k]));
-                xhMin = std::min(xhMin, data::dryToWetPct(b.xHdtDb[k]));
-                xhMax = std::max(xhMax, data::dryToWetPct(b.xHdtDb[k]));
+                xoMin = std::min(xoMin, units::dryToWetPct(b.xOutDb[k]));
+                xoMax = std::max(xoMax, units::dryToWetPct(b.xOutDb[k]));
+                xhMin = std::min(xhMin, units::dryToWetPct(b.xHdtDb[k]));
+                xhMax = std::max(xhMax, units::dryToWetPct(b.xHdtDb[k]));
                 toMin = std::min(toMin, b.tOutK[k] - 273.15);
                 toMax = std::max(toMax, b.tOutK[k] - 273.15);
                 thMin = std::min(thMin, b.tHotK[k] - 273.15);
@@ -186,7 +187,7 @@ private Q_SLOTS:
 
     void exportKeepsTheContract() {
         auto r = plant::runPlant(small());
-        const auto batch = data::toBatch(r->batches[0], 3);
+        const auto batch = plant::toBatch(r->batches[0], 3);
         for (const auto& s : data::columnSpecs()) {
             QVERIFY2(batch.has(s.id), s.name.data());
         }

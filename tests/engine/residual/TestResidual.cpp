@@ -1,6 +1,7 @@
-#include "data/PlantExport.h"
+#include "common/Units.h"
+#include "plant/PlantExport.h"
 #include "diagnostics/Stability.h"
-#include "io/HybridTraining.h"
+#include "hybrid/HybridTraining.h"
 #include "plant/VirtualPlant.h"
 #include "residual/OrthogonalProjection.h"
 #include "residual/PolynomialDictionary.h"
@@ -28,8 +29,8 @@ const Fixture& demoFixture() {
         o.samples = 2500;
         auto r = plant::runPlant(o);
         Fixture fx;
-        fx.batches = data::toSiBatches(*r, o.seed);
-        auto sims = hybrid::simulatePbm(fx.batches, io::ModelFile{}, {});
+        fx.batches = plant::toSiBatches(*r, o.seed);
+        auto sims = hybrid::simulatePbm(fx.batches, hybrid::HybridModel{}, {});
         fx.pbm = std::move(*sims);
         return fx;
     }();
@@ -47,8 +48,8 @@ double maeOver(const std::vector<residual::BatchView>& views, bool hybrid, const
         }
         for (std::size_t i = 0; i < v.rows.size(); ++i) {
             const std::size_t k = v.rows.begin + i;
-            const double obs = data::dryToWetPct(v.batch->xOutDb[k]);
-            const double pred = hybrid ? p.xOutPct[i] : data::dryToWetPct(v.pbm->xOutDb[k]);
+            const double obs = units::dryToWetPct(v.batch->xOutDb[k]);
+            const double pred = hybrid ? p.xOutPct[i] : units::dryToWetPct(v.pbm->xOutDb[k]);
             if (v.batch->keep[k] && std::isfinite(pred)) {
                 s += std::abs(obs - pred);
                 ++n;

@@ -1,23 +1,21 @@
-#include "io/HybridTraining.h"
+#include "hybrid/HybridTraining.h"
 
-#include "io/Evaluation.h"
+#include "hybrid/Evaluation.h"
 
 #include <chrono>
-#include <nlohmann/json.hpp>
 
 namespace drytwin::hybrid {
 
 Expected<std::vector<physics::SimulationResult>> simulatePbm(const std::vector<data::SiBatch>& batches,
-                                                             const io::ModelFile& model,
+                                                             const HybridModel& model,
                                                              const properties::ModelSwitches& switches,
                                                              const Progress& progress) {
     std::vector<physics::LineInputs> inputs;
     for (const auto& b : batches) {
-        inputs.push_back(data::toLineInputs(b));
+        inputs.push_back(physics::toLineInputs(b));
     }
-    physics::SimulationOptions so;
+    physics::SimulationOptions so = model.simulationOptions();
     so.switches = switches;
-    so.winnower = model.winnower;
     return physics::simulateBatches(inputs, model.parameters, so, 0, progress);
 }
 
@@ -40,7 +38,7 @@ std::vector<residual::BatchView> splitViews(const std::vector<data::SiBatch>& ba
 }
 
 Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& batches,
-                                             const io::ModelFile& model,
+                                             const HybridModel& model,
                                              const residual::ResidualOptions& options,
                                              const baselines::LstmOptions& lstmOptions,
                                              const Progress& progress) {
@@ -51,14 +49,14 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
     }
     const auto views = splitViews(batches, *pbm, false);
     if (reportProgress(progress, "train", 0.3, "PGRL-CC")) {
-        return Error{ErrorKind::Cancelled, "train", "cancelled by the user"};
+        return cancelledError("train");
     }
     auto full = residual::ResidualModel::train(views, options);
     if (!full) {
         return full.error();
     }
     if (reportProgress(progress, "train", 0.7, "external-input residual")) {
-        return Error{ErrorKind::Cancelled, "train", "cancelled by the user"};
+        return cancelledError("train");
     }
     residual::ResidualOptions ext = options;
     ext.useProxies = false;
@@ -71,48 +69,21 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
         return lstm.error();
     }
     reportProgress(progress, "train", 1.0, "done");
-    TrainingResult r{std::move(*full), std::move(*extModel), std::move(*lstm), 0};
+    TrainingResult r{std::move(*full), std::move(*extModel), std::move(*lstm), 0, {}};
     r.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.ending = {Termination::Completed, "PGRL-CC, external-input residual and LSTM trained", r.elapsedSeconds};
     return r;
 }
 
-void storeResidualModels(io::ModelFile& model, const TrainingResult& trained) {
-    auto extra = nlohmann::json::parse(model.extraJson.empty() ? "{}" : model.extraJson);
-    extra[kPgrlCcKey] = nlohmann::json::parse(trained.pgrlCc.toJson());
-    extra[kExtInputKey] = nlohmann::json::parse(trained.extInput.toJson());
-    extra[kLstmKey] = nlohmann::json::parse(trained.lstm.toJson());
-    model.extraJson = extra.dump();
+void storeResidualModels(HybridModel& model, TrainingResult&& trained) {
+    model.pgrlCc = std::make_shared<const residual::ResidualModel>(std::move(trained.pgrlCc));
+    model.extInput = std::make_shared<const residual::ResidualModel>(std::move(trained.extInput));
+    model.lstm = std::make_shared<const baselines::LstmBaseline>(std::move(trained.lstm));
 }
 
-namespace {
-
-/// A model stored under @p key in the model file's extra JSON, read by T::fromJson.
-template <class T> Expected<T> loadStored(const io::ModelFile& model, const std::string& key, bool& present) {
-    const auto extra = nlohmann::json::parse(model.extraJson.empty() ? "{}" : model.extraJson);
-    present = extra.contains(key);
-    if (!present) {
-        return Error{ErrorKind::BadInput, key, "not in the model file; run drytwin train first"};
-    }
-    auto m = T::fromJson(extra[key].dump());
-    if (!m) {
-        return Error{ErrorKind::BadInput, "model file: " + key, m.error().reason};
-    }
-    return m;
-}
-
-} // namespace
-
-Expected<residual::ResidualModel> loadResidualModel(const io::ModelFile& model, const std::string& key,
-                                                    bool& present) {
-    return loadStored<residual::ResidualModel>(model, key, present);
-}
-
-Expected<baselines::LstmBaseline> loadLstm(const io::ModelFile& model, bool& present) {
-    return loadStored<baselines::LstmBaseline>(model, kLstmKey, present);
-}
-
-Expected<std::vector<AblationRow>> runAblation(const std::vector<data::SiBatch>& batches,
-                                               const io::ModelFile& model, const Progress& progress) {
+Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, const HybridModel& model,
+                                     const Progress& progress) {
+    const auto t0 = std::chrono::steady_clock::now();
     struct Variant {
         const char* name;
         const char* description;
@@ -133,7 +104,7 @@ Expected<std::vector<AblationRow>> runAblation(const std::vector<data::SiBatch>&
     int done = 0;
     for (const auto& v : variants) {
         if (reportProgress(progress, "ablation", done / 7.0, v.name)) {
-            return Error{ErrorKind::Cancelled, "ablation", "cancelled by the user"};
+            return cancelledError("ablation");
         }
         properties::ModelSwitches sw = model.switches;
         sw.clampWaterActivity = sw.clampWaterActivity && v.physics != 1;
@@ -173,24 +144,10 @@ Expected<std::vector<AblationRow>> runAblation(const std::vector<data::SiBatch>&
         ++done;
     }
     reportProgress(progress, "ablation", 1.0, "done");
-    return rows;
-}
-
-std::string ablationJson(const std::vector<AblationRow>& rows) {
-    nlohmann::json j;
-    j["split"] = "chronological_70_30";
-    j["horizon_steps"] = 1;
-    j["units"] = {{"moisture", "% wb"}, {"temperature", "°C"}};
-    for (const auto& r : rows) {
-        j["variants"].push_back({{"variant", r.variant},
-                                 {"description", r.description},
-                                 {"mae_moisture", r.maeMoisture},
-                                 {"r2_moisture", r.r2Moisture},
-                                 {"mae_temperature", r.maeTemperature},
-                                 {"r2_temperature", r.r2Temperature},
-                                 {"ljung_box_p_moisture", r.ljungBoxPMoisture}});
-    }
-    return j.dump(2) + "\n";
+    AblationResult result{std::move(rows), {}};
+    result.ending = {Termination::Completed, "seven variants trained and scored",
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
+    return result;
 }
 
 } // namespace drytwin::hybrid

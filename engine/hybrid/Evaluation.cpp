@@ -1,13 +1,13 @@
-#include "io/Evaluation.h"
+#include "hybrid/Evaluation.h"
 
+#include "common/Units.h"
 #include "diagnostics/LjungBox.h"
 #include "diagnostics/Metrics.h"
-#include "io/HybridTraining.h"
+#include "hybrid/HybridTraining.h"
 #include "physics/LineSimulator.h"
 
 #include <chrono>
 #include <cmath>
-#include <nlohmann/json.hpp>
 
 namespace drytwin::evaluation {
 
@@ -24,11 +24,27 @@ OutputMetrics outputMetrics(const std::vector<double>& observed, const std::vect
     return m;
 }
 
+Status EvaluationOptions::validate() const {
+    if (horizonSteps < 1) {
+        return Error{ErrorKind::Usage, "horizon", "must be at least 1 step", ErrorCode::InvalidOption,
+                     {"horizon", "must be at least 1 step"}};
+    }
+    if (!(trainFraction > 0 && trainFraction < 1)) {
+        return Error{ErrorKind::Usage, "train fraction", "must lie strictly between 0 and 1",
+                     ErrorCode::InvalidOption, {"train fraction", "must lie strictly between 0 and 1"}};
+    }
+    if (ljungBoxLags < 1) {
+        return Error{ErrorKind::Usage, "Ljung-Box lags", "must be at least 1", ErrorCode::InvalidOption,
+                     {"Ljung-Box lags", "must be at least 1"}};
+    }
+    return {};
+}
+
 residual::HybridPrediction pbmPrediction(const residual::BatchView& v) {
     residual::HybridPrediction p;
     for (std::size_t k = v.rows.begin; k < v.rows.end; ++k) {
-        p.xOutPct.push_back(data::dryToWetPct(v.pbm->xOutDb[k]));
-        p.tOutC.push_back(v.pbm->tOutK[k] - data::kKelvinOffset);
+        p.xOutPct.push_back(units::dryToWetPct(v.pbm->xOutDb[k]));
+        p.tOutC.push_back(v.pbm->tOutK[k] - units::kKelvinOffset);
     }
     return p;
 }
@@ -41,9 +57,9 @@ ScoredPredictions scorePredictions(const std::vector<residual::BatchView>& views
         for (std::size_t i = 0; i < v.rows.size(); ++i) {
             const std::size_t k = v.rows.begin + i;
             if (v.batch->keep[k] && std::isfinite(p.xOutPct[i]) && std::isfinite(p.tOutC[i])) {
-                ox.push_back(data::dryToWetPct(v.batch->xOutDb[k]));
+                ox.push_back(units::dryToWetPct(v.batch->xOutDb[k]));
                 px.push_back(p.xOutPct[i]);
-                ot.push_back(v.batch->tOutK[k] - data::kKelvinOffset);
+                ot.push_back(v.batch->tOutK[k] - units::kKelvinOffset);
                 pt.push_back(p.tOutC[i]);
             }
         }
@@ -58,11 +74,11 @@ ScoredPredictions scorePredictions(const std::vector<residual::BatchView>& views
     return s;
 }
 
-Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, const io::ModelFile& model,
+Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, const hybrid::HybridModel& model,
                                     const EvaluationOptions& options, const Progress& progress) {
     const auto t0 = std::chrono::steady_clock::now();
-    if (options.horizonSteps < 1) {
-        return Error{ErrorKind::Usage, "horizon", "must be at least 1 step"};
+    if (auto st = options.validate(); !st) {
+        return st.error();
     }
     auto sims = hybrid::simulatePbm(batches, model, model.switches, progress);
     if (!sims) {
@@ -109,23 +125,16 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, c
         return m;
     };
     const int h = options.horizonSteps;
-    bool present = false;
-    auto lstm = hybrid::loadLstm(model, present);
-    if (present && !lstm) {
-        return lstm.error();
-    }
-    if (present) {
+    if (const auto& lstm = model.lstm) {
         out.models.push_back(score(
             hybrid::kLstmKey, [&](const residual::BatchView& v) { return lstm->predictAhead(v, 1); },
             [&](const residual::BatchView& v) { return lstm->predictAhead(v, h); }));
     }
-    for (const char* key : {hybrid::kExtInputKey, hybrid::kPgrlCcKey}) {
-        auto rm = hybrid::loadResidualModel(model, key, present);
-        if (!present) {
-            continue;
-        }
+    const std::pair<const char*, const residual::ResidualModel*> residualModels[] = {
+        {hybrid::kExtInputKey, model.extInput.get()}, {hybrid::kPgrlCcKey, model.pgrlCc.get()}};
+    for (const auto& [key, rm] : residualModels) {
         if (!rm) {
-            return rm.error();
+            continue;
         }
         ModelMetrics m = score(
             key, [&](const residual::BatchView& v) { return rm->predictOneStep(v); },
@@ -139,35 +148,10 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, c
         out.models.push_back(std::move(m));
     }
     out.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    out.ending = {Termination::Completed, std::to_string(out.models.size()) + " model(s) scored on " +
+                                              std::to_string(out.testRows) + " held-out rows",
+                  out.elapsedSeconds};
     return out;
-}
-
-std::string toJson(const EvaluationResult& r) {
-    using nlohmann::json;
-    auto metrics = [](const OutputMetrics& m) {
-        auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
-        return json{{"mae", num(m.mae)}, {"r2", num(m.r2)}, {"ljung_box_p", num(m.ljungBoxP)}};
-    };
-    json j;
-    j["split"] = r.split;
-    j["horizon_steps"] = r.horizonSteps;
-    j["test_rows"] = r.testRows;
-    j["units"] = {{"moisture", "% wb"}, {"temperature", "°C"}};
-    json multi;
-    multi["horizon_steps"] = r.multiStepHorizon;
-    for (const auto& m : r.models) {
-        j["models"][m.name] = {{"moisture", metrics(m.moisture)}, {"temperature", metrics(m.temperature)}};
-        if (m.hasStability) {
-            j["models"][m.name]["stability"] = {{"spectral_radius_before", m.spectralRadiusBefore},
-                                                {"spectral_radius_after", m.spectralRadiusAfter},
-                                                {"alpha", m.alpha},
-                                                {"certificate_max_eig", m.certificateMaxEig}};
-        }
-        multi["models"][m.name] = {{"moisture", metrics(m.moistureMultiStep)},
-                                   {"temperature", metrics(m.temperatureMultiStep)}};
-    }
-    j["multi_step"] = multi;
-    return j.dump(2) + "\n";
 }
 
 } // namespace drytwin::evaluation

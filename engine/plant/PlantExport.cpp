@@ -1,8 +1,10 @@
-#include "data/PlantExport.h"
+#include "plant/PlantExport.h"
+
+#include "common/Units.h"
 
 #include <cmath>
 
-namespace drytwin::data {
+namespace drytwin::plant {
 
 namespace {
 /// Rounds to @p decimals places; dividing by an exact power of ten gives the double nearest
@@ -13,8 +15,9 @@ double round(double v, int decimals) {
 }
 } // namespace
 
-Batch toBatch(const plant::PlantBatch& pb, unsigned seed) {
-    Batch b;
+data::Batch toBatch(const PlantBatch& pb, unsigned seed) {
+    using data::Column;
+    data::Batch b;
     b.id = pb.id;
     b.metadataLines = {"# batch: " + pb.id, "# source: DryTwin virtual plant, seed " + std::to_string(seed),
                        "# sampling: 1 s"};
@@ -26,22 +29,20 @@ Batch toBatch(const plant::PlantBatch& pb, unsigned seed) {
         }
         b.setValues(c, std::move(v));
     };
-    const auto celsius = [](double k) { return k - kKelvinOffset; };
+    const auto celsius = units::kelvinToCelsius;
     const auto same = [](double x) { return x; };
     column(Column::Time, pb.timeS, same, 3);
     column(Column::THotSp, pb.tHotSpK, celsius, 2);
     column(Column::THot, pb.tHotK, celsius, 2);
     column(Column::AirSpeed, pb.airSpeedMPerS, same, 3);
-    column(
-        Column::Feed, pb.feedKgPerS, [](double kgs) { return kgs * 3600; }, 1);
-    column(Column::XIn, pb.xInDb, dryToWetPct, 3);
+    column(Column::Feed, pb.feedKgPerS, units::kgPerSToKgPerHour, 1);
+    column(Column::XIn, pb.xInDb, units::dryToWetPct, 3);
     column(Column::TIn, pb.tInK, celsius, 2);
     column(Column::TAmb, pb.tAmbK, celsius, 2);
-    column(
-        Column::RHAmb, pb.rhAmb, [](double f) { return 100 * f; }, 2);
-    column(Column::XHdt, pb.xHdtDb, dryToWetPct, 3);
+    column(Column::RHAmb, pb.rhAmb, units::fractionToPercent, 2);
+    column(Column::XHdt, pb.xHdtDb, units::dryToWetPct, 3);
     column(Column::THdt, pb.tHdtK, celsius, 2);
-    column(Column::XOut, pb.xOutDb, dryToWetPct, 3);
+    column(Column::XOut, pb.xOutDb, units::dryToWetPct, 3);
     column(Column::TOut, pb.tOutK, celsius, 3);
     b.lineOfRow.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -50,16 +51,16 @@ Batch toBatch(const plant::PlantBatch& pb, unsigned seed) {
     return b;
 }
 
-std::vector<SiBatch> toSiBatches(const plant::PlantResult& result, unsigned seed) {
-    DataSet ds;
+std::vector<data::SiBatch> toSiBatches(const PlantResult& result, unsigned seed) {
+    data::DataSet ds;
     for (const auto& b : result.batches) {
         ds.batches.push_back(toBatch(b, seed));
     }
-    return toSi(ds, clean(ds));
+    return data::toSi(ds, data::clean(ds));
 }
 
-physics::LineInputs toLineInputs(const plant::PlantBatch& pb) {
+physics::LineInputs toLineInputs(const PlantBatch& pb) {
     return {pb.timeS, pb.tHotK, pb.xInDb, pb.tInK, pb.tAmbK, pb.rhAmb, pb.feedKgPerS, pb.airSpeedMPerS};
 }
 
-} // namespace drytwin::data
+} // namespace drytwin::plant

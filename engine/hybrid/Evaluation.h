@@ -3,7 +3,7 @@
 #include "common/Error.h"
 #include "common/Progress.h"
 #include "data/SiBatch.h"
-#include "io/ModelFile.h"
+#include "hybrid/HybridModel.h"
 #include "residual/ResidualModel.h"
 
 #include <functional>
@@ -18,6 +18,7 @@ struct EvaluationOptions {
     int horizonSteps = 30;      ///< multi-step horizon reported beside the one-step error
     double trainFraction = 0.7; ///< chronological split (paper §IV.A)
     int ljungBoxLags = 20;
+    Status validate() const;
 };
 
 /// @brief Accuracy of one output: MAE and R² in % wb or °C, Ljung-Box p of the residual.
@@ -48,10 +49,11 @@ struct EvaluationResult {
     int multiStepHorizon = 0;
     std::vector<ModelMetrics> models;
     double elapsedSeconds = 0;
+    Ending ending;
 };
 
 /// @brief Metrics on the chronological held-out part (rows the cleaning keeps).
-Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, const io::ModelFile& model,
+Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, const hybrid::HybridModel& model,
                                     const EvaluationOptions& options = {}, const Progress& progress = {});
 
 /// @brief Output metrics of observed/predicted series (moisture in % wb or temperature in °C).
@@ -74,8 +76,5 @@ ScoredPredictions scorePredictions(const std::vector<residual::BatchView>& views
 
 /// @brief The PBM's own predictions of a view's rows (% wb, °C).
 residual::HybridPrediction pbmPrediction(const residual::BatchView& view);
-
-/// @brief The JSON of CONTRACT.md §3 for `evaluate`.
-std::string toJson(const EvaluationResult& result);
 
 } // namespace drytwin::evaluation

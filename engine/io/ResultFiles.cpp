@@ -1,0 +1,164 @@
+#include "io/ResultFiles.h"
+
+#include "common/Units.h"
+#include "data/BatchWriter.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+namespace drytwin::io {
+
+using nlohmann::json;
+
+namespace {
+
+json spectrumJson(const hybrid::EigenSpectrum& s) {
+    json j;
+    for (const auto& l : s.eigenvalues) {
+        j["re"].push_back(l.real());
+        j["im"].push_back(l.imag());
+    }
+    for (double r : s.contractionRatePerStep) {
+        j["contraction_rate_per_step"].push_back(std::isfinite(r) ? json(r) : json(nullptr));
+    }
+    j["spectral_radius"] = s.spectralRadius;
+    return j;
+}
+
+} // namespace
+
+std::string evaluationJson(const evaluation::EvaluationResult& r) {
+    auto metrics = [](const evaluation::OutputMetrics& m) {
+        auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+        return json{{"mae", num(m.mae)}, {"r2", num(m.r2)}, {"ljung_box_p", num(m.ljungBoxP)}};
+    };
+    json j;
+    j["split"] = r.split;
+    j["horizon_steps"] = r.horizonSteps;
+    j["test_rows"] = r.testRows;
+    j["units"] = {{"moisture", "% wb"}, {"temperature", "°C"}};
+    json multi;
+    multi["horizon_steps"] = r.multiStepHorizon;
+    for (const auto& m : r.models) {
+        j["models"][m.name] = {{"moisture", metrics(m.moisture)}, {"temperature", metrics(m.temperature)}};
+        if (m.hasStability) {
+            j["models"][m.name]["stability"] = {{"spectral_radius_before", m.spectralRadiusBefore},
+                                                {"spectral_radius_after", m.spectralRadiusAfter},
+                                                {"alpha", m.alpha},
+                                                {"certificate_max_eig", m.certificateMaxEig}};
+        }
+        multi["models"][m.name] = {{"moisture", metrics(m.moistureMultiStep)},
+                                   {"temperature", metrics(m.temperatureMultiStep)}};
+    }
+    j["multi_step"] = multi;
+    return j.dump(2) + "\n";
+}
+
+std::string ablationJson(const hybrid::AblationResult& result) {
+    json j;
+    j["split"] = "chronological_70_30";
+    j["horizon_steps"] = 1;
+    j["units"] = {{"moisture", "% wb"}, {"temperature", "°C"}};
+    for (const auto& r : result.rows) {
+        j["variants"].push_back({{"variant", r.variant},
+                                 {"description", r.description},
+                                 {"mae_moisture", r.maeMoisture},
+                                 {"r2_moisture", r.r2Moisture},
+                                 {"mae_temperature", r.maeTemperature},
+                                 {"r2_temperature", r.r2Temperature},
+                                 {"ljung_box_p_moisture", r.ljungBoxPMoisture}});
+    }
+    return j.dump(2) + "\n";
+}
+
+std::string residualDiagnosticsJson(const hybrid::ResidualDiagnostics& d) {
+    json j;
+    j["units"] = {{"moisture_residual", "% wb"}, {"psd", "(% wb)^2/Hz"}, {"frequency", "Hz"}};
+    for (const auto& m : d.models) {
+        json e;
+        e["acf_lags_0_to_40"] = m.acf;
+        if (m.hasPsd) {
+            e["psd"] = {{"frequency_hz", m.psdFrequencyHz}, {"density", m.psdDensity}};
+            e["low_frequency_share_below_0_01_hz"] = m.lowFrequencyShareBelow0p01Hz;
+        }
+        j["models"][m.name] = e;
+    }
+    if (d.hasPgrlCcEigenvalues) {
+        j["pgrl_cc_eigenvalues"] = {{"before", spectrumJson(d.pgrlCcBefore)}, {"after", spectrumJson(d.pgrlCcAfter)}};
+    }
+    return j.dump(1) + "\n";
+}
+
+std::string inspectJson(const data::DataSetSummary& s) {
+    json j;
+    j["rows"] = s.rows;
+    j["missing"] = s.missing;
+    for (const auto& b : s.batches) {
+        j["batches"].push_back({{"id", b.id},
+                                {"rows", b.rows},
+                                {"start_s", b.startS},
+                                {"end_s", b.endS},
+                                {"missing", b.missing},
+                                {"dropped_by_cleaning", b.droppedByCleaning},
+                                {"file", b.path}});
+    }
+    for (const auto& col : s.columns) {
+        if (col.present) {
+            j["columns"][col.name] = {
+                {"unit", col.unit}, {"min", col.min}, {"max", col.max}, {"mean", col.mean}, {"missing", col.missing}};
+        }
+    }
+    const auto& c = s.cleaning;
+    j["cleaning"] = {{"kept", c.kept},
+                     {"dropped_x_hdt", c.droppedXhdt},
+                     {"dropped_t_hdt", c.droppedThdt},
+                     {"dropped_feed", c.droppedFeed},
+                     {"dropped_missing", c.droppedMissing}};
+    return j.dump(2) + "\n";
+}
+
+std::string simulationCsv(const std::vector<data::SiBatch>& batches,
+                          const std::vector<physics::SimulationResult>& simulations) {
+    using namespace units;
+    std::string out =
+        "batch,time_s,T_hot_sp_C,T_hot_C,air_speed_m_s,feed_kg_h,X_in_pct,T_in_C,T_amb_C,RH_amb_pct,"
+        "pred_X_out_pct,pred_T_out_C,pred_X_hdt_pct,pred_T_hdt_C";
+    for (const auto& n : physics::proxyNames()) {
+        out += ",proxy_" + n;
+    }
+    out += "\n";
+    for (std::size_t b = 0; b < batches.size() && b < simulations.size(); ++b) {
+        const auto& s = batches[b];
+        const auto& r = simulations[b];
+        for (std::size_t k = 0; k < s.rows(); ++k) {
+            const double v[] = {s.timeS[k],
+                                kelvinToCelsius(s.tHotSpK[k]),
+                                kelvinToCelsius(s.tHotK[k]),
+                                s.airSpeedMPerS[k],
+                                kgPerSToKgPerHour(s.feedKgPerS[k]),
+                                dryToWetPct(s.xInDb[k]),
+                                kelvinToCelsius(s.tInK[k]),
+                                kelvinToCelsius(s.tAmbK[k]),
+                                fractionToPercent(s.rhAmb[k]),
+                                dryToWetPct(r.xOutDb[k]),
+                                kelvinToCelsius(r.tOutK[k]),
+                                dryToWetPct(r.xHdtDb[k]),
+                                kelvinToCelsius(r.tHdtK[k]),
+                                r.proxyXHdtDb[k],
+                                r.proxyTHdtK[k],
+                                r.proxyXConvDb[k],
+                                r.proxyTConvK[k],
+                                r.proxyXMixDb[k],
+                                r.proxyTMixK[k]};
+            out += s.id;
+            for (double x : v) {
+                out += ",";
+                out += data::formatNumber(x);
+            }
+            out += "\n";
+        }
+    }
+    return out;
+}
+
+} // namespace drytwin::io

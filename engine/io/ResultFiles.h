@@ -1,0 +1,31 @@
+#pragma once
+
+#include "data/DataSetSummary.h"
+#include "data/SiBatch.h"
+#include "hybrid/Evaluation.h"
+#include "hybrid/HybridTraining.h"
+#include "hybrid/ResidualDiagnostics.h"
+#include "physics/LineSimulator.h"
+#include <string>
+#include <vector>
+
+namespace drytwin::io {
+
+/// @brief The JSON of CONTRACT.md §3 for `evaluate`.
+std::string evaluationJson(const evaluation::EvaluationResult& result);
+
+/// @brief The ablation table (paper Table 3) as JSON.
+std::string ablationJson(const hybrid::AblationResult& result);
+
+/// @brief Residual ACF, PSD and eigenvalues (paper Figs. 4 and 6) as JSON.
+std::string residualDiagnosticsJson(const hybrid::ResidualDiagnostics& diagnostics);
+
+/// @brief What `inspect --json` writes: batches, column ranges, cleaning counts.
+std::string inspectJson(const data::DataSetSummary& summary);
+
+/// @brief What `simulate --out` writes (CONTRACT.md §2): per row the batch id, the input columns
+/// in file units, the predictions in file units and the proxy states in SI units.
+std::string simulationCsv(const std::vector<data::SiBatch>& batches,
+                          const std::vector<physics::SimulationResult>& simulations);
+
+} // namespace drytwin::io

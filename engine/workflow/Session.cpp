@@ -1,0 +1,466 @@
+#include "workflow/Session.h"
+
+#include "common/AtomicFile.h"
+#include "common/Units.h"
+#include "data/BatchReader.h"
+#include "data/BatchWriter.h"
+#include "data/ColumnMapping.h"
+#include "diagnostics/Metrics.h"
+#include "io/ModelFile.h"
+#include "io/Report.h"
+#include "io/ResultFiles.h"
+#include "physics/LineInputs.h"
+#include "plant/PlantExport.h"
+
+#include <chrono>
+#include <filesystem>
+#include <limits>
+
+namespace drytwin::workflow {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Error invalidOption(const std::string& option, const std::string& reason) {
+    return Error{ErrorKind::Usage, option, reason, ErrorCode::InvalidOption, {option, reason}};
+}
+
+} // namespace
+
+Status OpenOptions::validate() const {
+    if (dataPath.empty() && modelPath.empty()) {
+        return invalidOption("data", "give a data path, a model path or both");
+    }
+    if (auto st = cleaning.validate(); !st) {
+        return invalidOption(st.error().place, st.error().reason);
+    }
+    return {};
+}
+
+Status GenerateOptions::validate() const {
+    if (outFolder.empty()) {
+        return invalidOption("out", "an output folder is needed");
+    }
+    if (auto st = plant.validate(); !st) {
+        return invalidOption(st.error().place, st.error().reason);
+    }
+    return {};
+}
+
+Status CalibrateOptions::validate() const {
+    if (subsetStride == 0) {
+        return invalidOption("subset", "the stride must be at least 1");
+    }
+    return calibration.validate();
+}
+
+Status TrainOptions::validate() const {
+    if (auto st = residual.validate(); !st) {
+        return invalidOption(st.error().place, st.error().reason);
+    }
+    return lstm.validate();
+}
+
+Status PipelineOptions::validate() const {
+    if (outFolder.empty()) {
+        return invalidOption("out", "an output folder is needed");
+    }
+    if (auto st = calibrate.validate(); !st) {
+        return st;
+    }
+    if (auto st = train.validate(); !st) {
+        return st;
+    }
+    return evaluate.validate();
+}
+
+Expected<OpenResult> Session::open(const OpenOptions& options, const Progress& progress) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    // Everything is read first and only then taken over, so a rejection changes nothing.
+    std::optional<hybrid::HybridModel> model;
+    if (!options.modelPath.empty()) {
+        auto m = io::readModelFile(options.modelPath);
+        if (!m) {
+            return m.error();
+        }
+        model = std::move(*m);
+    }
+    OpenResult result;
+    std::shared_ptr<const data::DataSet> dataSet;
+    if (!options.dataPath.empty()) {
+        data::ReadOptions ro;
+        if (!options.mappingPath.empty()) {
+            auto mapping = data::readColumnMapping(options.mappingPath);
+            if (!mapping) {
+                return mapping.error();
+            }
+            ro.mapping = *mapping;
+        }
+        auto loaded = data::loadDataSet(options.dataPath, ro, progress);
+        if (loaded.cancelled) {
+            return cancelledError("load");
+        }
+        if (!loaded.errors.empty()) {
+            Error e{ErrorKind::BadInput, options.dataPath,
+                    std::to_string(loaded.errors.size()) + " file(s) rejected; nothing was changed",
+                    ErrorCode::Unspecified, {}};
+            // One rejected file: its own error is the most useful one to show.
+            if (loaded.errors.size() == 1) {
+                e = loaded.errors.front();
+                e.reason += " (nothing was changed)";
+            }
+            e.causes = std::move(loaded.errors);
+            return e;
+        }
+        dataSet = std::make_shared<const data::DataSet>(std::move(loaded.dataSet));
+        result.summary = data::summarize(*dataSet, options.cleaning);
+    }
+    if (model) {
+        m_model = std::move(*model);
+        result.modelLoaded = true;
+    }
+    if (dataSet) {
+        m_dataSet = dataSet;
+        m_dataPath = options.dataPath;
+        m_cleaning = options.cleaning;
+        m_si = data::toSi(*m_dataSet, data::clean(*m_dataSet, m_cleaning));
+        m_latest = {};
+        result.dataSet = dataSet;
+    }
+    result.ending = {Termination::Completed,
+                     dataSet ? std::to_string(dataSet->batches.size()) + " batch(es) loaded" : "model loaded",
+                     secondsSince(t0)};
+    return result;
+}
+
+Expected<GenerateResult> Session::generate(const GenerateOptions& options, const Progress& progress) const {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    std::error_code ec;
+    std::filesystem::create_directories(options.outFolder, ec);
+    if (ec) {
+        return Error{ErrorKind::BadInput, options.outFolder, "cannot create the folder: " + ec.message()};
+    }
+    auto plantResult = plant::runPlant(options.plant, progress);
+    if (!plantResult) {
+        return plantResult.error();
+    }
+    GenerateResult result;
+    for (const auto& pb : plantResult->batches) {
+        const std::string path = (std::filesystem::path(options.outFolder) / (pb.id + ".csv")).string();
+        if (auto st = data::writeBatchFile(plant::toBatch(pb, options.plant.seed), path); !st) {
+            return st.error();
+        }
+        result.files.push_back(path);
+    }
+    if (!options.truthPath.empty()) {
+        if (auto st = writeFileAtomically(options.truthPath,
+                                          io::truthJson(plantResult->truth, plantResult->effects,
+                                                        options.plant.seed, options.plant.unmeasuredDrift));
+            !st) {
+            return st.error();
+        }
+    }
+    result.samplesPerBatch = options.plant.samples;
+    result.ending = {Termination::Completed, std::to_string(result.files.size()) + " batch file(s) written",
+                     secondsSince(t0)};
+    return result;
+}
+
+Status Session::requireData(const std::string& action) const {
+    if (!m_dataSet) {
+        return Error{ErrorKind::Usage, action, "no data loaded; open a batch file or folder first",
+                     ErrorCode::NoDataLoaded, {}};
+    }
+    return {};
+}
+
+Status Session::requireSupportedModel(const std::string& action) const {
+    for (const auto& [name, v] : m_model.mechanisms) {
+        if (v.value != 0) {
+            return Error{ErrorKind::BadInput, action + ": mechanism " + name,
+                         "this version's physics model cannot simulate mechanism extensions yet; remove it "
+                         "from the model file or set its value to 0",
+                         ErrorCode::NotImplemented, {"mechanism " + name}};
+        }
+    }
+    return {};
+}
+
+Expected<data::DataSetSummary> Session::inspect() const {
+    if (auto st = requireData("inspect"); !st) {
+        return st.error();
+    }
+    return data::summarize(*m_dataSet, m_cleaning);
+}
+
+Expected<SimulateResult> Session::simulate(const SimulateOptions& options, const Progress& progress) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    if (auto st = requireData("simulate"); !st) {
+        return st.error();
+    }
+    if (auto st = requireSupportedModel("simulate"); !st) {
+        return st.error();
+    }
+    auto sims = hybrid::simulatePbm(m_si, m_model, m_model.switches, progress);
+    if (!sims) {
+        return sims.error();
+    }
+    SimulateResult result;
+    for (std::size_t b = 0; b < m_si.size(); ++b) {
+        const auto& s = m_si[b];
+        const auto& r = (*sims)[b];
+        std::vector<double> obsX, predX, obsT, predT;
+        for (std::size_t k = 0; k < s.rows(); ++k) {
+            if (s.keep[k]) {
+                obsX.push_back(units::dryToWetPct(s.xOutDb[k]));
+                predX.push_back(units::dryToWetPct(r.xOutDb[k]));
+                obsT.push_back(s.tOutK[k]);
+                predT.push_back(r.tOutK[k]);
+            }
+        }
+        result.fits.push_back({s.id, s.rows(), diagnostics::meanAbsoluteError(obsX, predX),
+                               diagnostics::meanAbsoluteError(obsT, predT)});
+    }
+    result.simulations = std::move(*sims);
+    result.ending = {Termination::Completed, std::to_string(m_si.size()) + " batch(es) simulated",
+                     secondsSince(t0)};
+    m_latest.simulate = result;
+    return result;
+}
+
+Expected<CalibrateResult> Session::calibrate(const CalibrateOptions& options, const Progress& progress) {
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    if (auto st = requireData("calibrate"); !st) {
+        return st.error();
+    }
+    if (auto st = requireSupportedModel("calibrate"); !st) {
+        return st.error();
+    }
+    calibration::CalibrationOptions co = options.calibration;
+    co.simulation = m_model.simulationOptions();
+    co.rows = data::calibrationSubset(m_si, options.subsetStride,
+                                      options.subsetCount == 0 ? std::numeric_limits<std::size_t>::max()
+                                                               : options.subsetCount);
+    auto r = calibration::calibrate(m_si, m_model.parameters, co, progress);
+    if (!r) {
+        return r.error();
+    }
+    CalibrateResult result;
+    result.startParameters = m_model.parameters;
+    hybrid::CalibrationRecord rec;
+    for (const auto& e : r->estimates) {
+        rec.estimates.push_back(
+            {std::string(properties::info(e.param).symbol), e.value, e.ci95Low, e.ci95High, e.atBound});
+    }
+    rec.lossBefore = r->before.loss;
+    rec.lossAfter = r->after.loss;
+    rec.evaluations = r->evaluations;
+    rec.seed = co.seed;
+    rec.algorithm = r->algorithm;
+    m_model.parameters = r->parameters;
+    m_model.calibration = rec;
+    result.droppedResidualModels = m_model.hasResidualModels();
+    m_model.pgrlCc.reset();
+    m_model.extInput.reset();
+    m_model.lstm.reset();
+    result.ending = r->ending;
+    if (result.droppedResidualModels) {
+        result.ending.message += "; the learnt residual models were dropped (trained on the old parameters)";
+    }
+    result.calibration = std::move(*r);
+    m_latest.calibrate = result;
+    return result;
+}
+
+Expected<TrainResult> Session::train(const TrainOptions& options, const Progress& progress) {
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    if (auto st = requireData("train"); !st) {
+        return st.error();
+    }
+    if (auto st = requireSupportedModel("train"); !st) {
+        return st.error();
+    }
+    auto trained = hybrid::trainResidualModels(m_si, m_model, options.residual, options.lstm, progress);
+    if (!trained) {
+        return trained.error();
+    }
+    TrainResult result;
+    result.onDefaultParameters = !m_model.calibration.has_value();
+    result.ending = trained->ending;
+    hybrid::storeResidualModels(m_model, std::move(*trained));
+    result.pgrlCc = m_model.pgrlCc;
+    result.extInput = m_model.extInput;
+    result.lstm = m_model.lstm;
+    if (result.onDefaultParameters) {
+        result.ending.message += "; on the default physics parameters (the model holds no calibration)";
+    }
+    m_latest.train = result;
+    return result;
+}
+
+Expected<EvaluateResult> Session::evaluate(const EvaluateOptions& options, const Progress& progress) {
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    if (auto st = requireData("evaluate"); !st) {
+        return st.error();
+    }
+    if (auto st = requireSupportedModel("evaluate"); !st) {
+        return st.error();
+    }
+    auto ev = evaluation::evaluate(m_si, m_model, options.evaluation, progress);
+    if (!ev) {
+        return ev.error();
+    }
+    EvaluateResult result;
+    result.diagnostics = hybrid::residualDiagnostics(*ev, m_model);
+    result.ending = ev->ending;
+    result.evaluation = std::move(*ev);
+    m_latest.evaluate = result;
+    return result;
+}
+
+Expected<hybrid::AblationResult> Session::ablation(const Progress& progress) {
+    if (auto st = requireData("ablation"); !st) {
+        return st.error();
+    }
+    if (auto st = requireSupportedModel("ablation"); !st) {
+        return st.error();
+    }
+    auto rows = hybrid::runAblation(m_si, m_model, progress);
+    if (!rows) {
+        return rows.error();
+    }
+    m_latest.ablation = *rows;
+    return rows;
+}
+
+Expected<PipelineResult> Session::pipeline(const PipelineOptions& options, const Progress& progress) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    if (auto st = requireData("pipeline"); !st) {
+        return st.error();
+    }
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::create_directories(options.outFolder, ec);
+    if (ec) {
+        return Error{ErrorKind::BadInput, options.outFolder, "cannot create the folder: " + ec.message()};
+    }
+    const auto in = [&](const char* name) { return (fs::path(options.outFolder) / name).string(); };
+    // A failed stage leaves the session's model as it was before the pipeline.
+    const hybrid::HybridModel modelBefore = m_model;
+    const auto failWith = [&](Error e) {
+        m_model = modelBefore;
+        return e;
+    };
+    PipelineResult result;
+    auto stageStart = std::chrono::steady_clock::now();
+    const auto finishStage = [&](const char* name, std::vector<std::string> files) {
+        result.stages.push_back({name, std::move(files), secondsSince(stageStart)});
+        stageStart = std::chrono::steady_clock::now();
+    };
+    const auto write = [&](const std::string& path, const std::string& text) { return writeFileAtomically(path, text); };
+
+    auto summary = inspect();
+    if (!summary) {
+        return failWith(summary.error());
+    }
+    result.inspect = *summary;
+    if (auto st = write(in("inspect.json"), io::inspectJson(result.inspect)); !st) {
+        return failWith(st.error());
+    }
+    finishStage("inspect", {in("inspect.json")});
+
+    auto calibrated = calibrate(options.calibrate, progress);
+    if (!calibrated) {
+        return failWith(calibrated.error());
+    }
+    result.calibrate = *calibrated;
+    if (auto st = saveModel(in("model-calibrated.json")); !st) {
+        return failWith(st.error());
+    }
+    finishStage("calibrate", {in("model-calibrated.json")});
+    const hybrid::HybridModel calibratedModel = m_model;
+
+    auto trained = train(options.train, progress);
+    if (!trained) {
+        return failWith(trained.error());
+    }
+    result.train = *trained;
+    if (auto st = saveModel(in("model.json")); !st) {
+        return failWith(st.error());
+    }
+    finishStage("train", {in("model.json")});
+
+    auto evaluated = evaluate(options.evaluate, progress);
+    if (!evaluated) {
+        return failWith(evaluated.error());
+    }
+    result.evaluate = *evaluated;
+    if (auto st = write(in("evaluate.json"), io::evaluationJson(evaluated->evaluation)); !st) {
+        return failWith(st.error());
+    }
+    if (auto st = write(in("diagnostics.json"), io::residualDiagnosticsJson(evaluated->diagnostics)); !st) {
+        return failWith(st.error());
+    }
+    finishStage("evaluate", {in("evaluate.json"), in("diagnostics.json")});
+
+    // The ablation trains its own variants on the calibrated physics model alone.
+    const hybrid::HybridModel trainedModel = m_model;
+    m_model = calibratedModel;
+    auto ablated = ablation(progress);
+    m_model = trainedModel;
+    if (!ablated) {
+        return failWith(ablated.error());
+    }
+    result.ablation = *ablated;
+    if (auto st = write(in("ablation.json"), io::ablationJson(*ablated)); !st) {
+        return failWith(st.error());
+    }
+    finishStage("ablation", {in("ablation.json")});
+
+    auto report = io::writePipelineReport(options.outFolder);
+    if (!report) {
+        return failWith(report.error());
+    }
+    result.reportPath = *report;
+    finishStage("report", {*report});
+    result.ending = {Termination::Completed, "every stage done; discover and mpc are not in this version",
+                     secondsSince(t0)};
+    return result;
+}
+
+Status Session::saveModel(const std::string& path) const {
+    return io::writeModelFile(m_model, path);
+}
+
+Status Session::setParameter(properties::Param param, double value) {
+    properties::ParameterSet p = m_model.parameters;
+    p[param] = value;
+    if (auto st = p.validate(); !st) {
+        return st;
+    }
+    m_model.parameters = p;
+    return {};
+}
+
+} // namespace drytwin::workflow

@@ -1,0 +1,212 @@
+#pragma once
+
+#include "calibration/Calibration.h"
+#include "common/Error.h"
+#include "common/Progress.h"
+#include "data/Batch.h"
+#include "data/Cleaning.h"
+#include "data/DataSetSummary.h"
+#include "data/SiBatch.h"
+#include "hybrid/Evaluation.h"
+#include "hybrid/HybridModel.h"
+#include "hybrid/HybridTraining.h"
+#include "hybrid/ResidualDiagnostics.h"
+#include "plant/VirtualPlant.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace drytwin::workflow {
+
+/// @brief What to load: a batch file or folder (CONTRACT.md §1), an optional column mapping,
+/// the cleaning rules. An empty path with only a model path opens a model alone.
+struct OpenOptions {
+    std::string dataPath;
+    std::string mappingPath;
+    std::string modelPath; ///< empty: keep the current model (default parameters in a new session)
+    data::CleaningOptions cleaning;
+    Status validate() const;
+};
+
+/// @brief What open() loaded.
+struct OpenResult {
+    std::shared_ptr<const data::DataSet> dataSet; ///< null when no data path was given
+    data::DataSetSummary summary;
+    bool modelLoaded = false;
+    Ending ending;
+};
+
+/// @brief Virtual-plant batches written as batch files (CONTRACT.md §2 `generate`).
+struct GenerateOptions {
+    plant::PlantOptions plant;
+    std::string outFolder;
+    std::string truthPath; ///< empty: the hidden truth is not written
+    Status validate() const;
+};
+
+struct GenerateResult {
+    std::vector<std::string> files;
+    int samplesPerBatch = 0;
+    Ending ending;
+};
+
+/// @brief The physics model over every loaded batch, with the session's model.
+struct SimulateOptions {
+    Status validate() const { return {}; }
+};
+
+/// @brief One batch's fit of the simulation on the rows the cleaning keeps.
+struct BatchFit {
+    std::string id;
+    std::size_t rows = 0;
+    double maeXOutPct = 0; ///< % wb
+    double maeTOutC = 0;   ///< °C (= K)
+};
+
+struct SimulateResult {
+    std::vector<physics::SimulationResult> simulations; ///< one per batch, SI units, dry basis
+    std::vector<BatchFit> fits;
+    Ending ending;
+};
+
+/// @brief Calibration of the session's physics model (paper §IV.B).
+struct CalibrateOptions {
+    calibration::CalibrationOptions calibration; ///< rows and simulation options are set by the session
+    std::size_t subsetStride = 10;               ///< every STRIDE-th kept row ...
+    std::size_t subsetCount = 300;               ///< ... the first COUNT of them (0: all)
+    Status validate() const;
+};
+
+struct CalibrateResult {
+    calibration::CalibrationResult calibration;
+    properties::ParameterSet startParameters;
+    bool droppedResidualModels = false; ///< learnt models were trained on the old parameters
+    Ending ending;
+};
+
+/// @brief Training of the residual models on the chronological 70 % (Algorithm 1).
+struct TrainOptions {
+    residual::ResidualOptions residual;
+    baselines::LstmOptions lstm;
+    Status validate() const;
+};
+
+struct TrainResult {
+    std::shared_ptr<const residual::ResidualModel> pgrlCc;
+    std::shared_ptr<const residual::ResidualModel> extInput;
+    std::shared_ptr<const baselines::LstmBaseline> lstm;
+    bool onDefaultParameters = false; ///< the model held no calibration
+    Ending ending;
+};
+
+/// @brief Held-out metrics of every model the session holds, with residual diagnostics.
+struct EvaluateOptions {
+    evaluation::EvaluationOptions evaluation;
+    Status validate() const { return evaluation.validate(); }
+};
+
+struct EvaluateResult {
+    evaluation::EvaluationResult evaluation;
+    hybrid::ResidualDiagnostics diagnostics;
+    Ending ending;
+};
+
+/// @brief Everything in order into a folder, with a report (CONTRACT.md §2 `pipeline`).
+struct PipelineOptions {
+    std::string outFolder;
+    CalibrateOptions calibrate;
+    TrainOptions train;
+    EvaluateOptions evaluate;
+    Status validate() const;
+};
+
+/// @brief One finished stage of a pipeline.
+struct PipelineStage {
+    std::string name; ///< inspect, calibrate, train, evaluate, ablation, report
+    std::vector<std::string> files;
+    double elapsedSeconds = 0;
+};
+
+struct PipelineResult {
+    data::DataSetSummary inspect;
+    CalibrateResult calibrate;
+    TrainResult train;
+    EvaluateResult evaluate;
+    hybrid::AblationResult ablation;
+    std::string reportPath;
+    std::vector<PipelineStage> stages;
+    Ending ending;
+};
+
+/// @brief The latest result of each action, for views that show them later.
+struct LatestResults {
+    std::optional<SimulateResult> simulate;
+    std::optional<CalibrateResult> calibrate;
+    std::optional<TrainResult> train;
+    std::optional<EvaluateResult> evaluate;
+    std::optional<hybrid::AblationResult> ablation;
+};
+
+/// @brief What a user does with DryTwin, one method per action, called alike by the command
+/// line and the GUI (ARCHITECTURE.md, workflow layer). Holds the loaded data set (immutable once
+/// loaded, shared with whoever shows it), the current model and the latest results.
+///
+/// Every action takes an options struct and a Progress, and returns a result that says how it
+/// ended, or an Error. A failed or cancelled action leaves the session as it was: nothing loaded
+/// before is lost. Not thread-safe: one thread at a time calls it (the engine thread in the GUI);
+/// the data set and learnt models it hands out are immutable and may be read from any thread.
+class Session {
+public:
+    /// @brief Loads data and/or a model. On any error nothing changes; every rejected file is
+    /// listed in the error's causes.
+    Expected<OpenResult> open(const OpenOptions& options, const Progress& progress = {});
+    /// @brief Runs the virtual plant and writes its batches (and the truth) to files. Leaves
+    /// the session's data and model alone.
+    Expected<GenerateResult> generate(const GenerateOptions& options, const Progress& progress = {}) const;
+    /// @brief The loaded data set at a glance, with the cleaning counts.
+    Expected<data::DataSetSummary> inspect() const;
+    /// @brief Runs the physics model over every batch.
+    Expected<SimulateResult> simulate(const SimulateOptions& options = {}, const Progress& progress = {});
+    /// @brief Calibrates the physics parameters; the model takes the result (also when stopped
+    /// with StopKeepBest). Learnt residual models, trained on the old parameters, are dropped.
+    Expected<CalibrateResult> calibrate(const CalibrateOptions& options = {}, const Progress& progress = {});
+    /// @brief Trains PGRL-CC and the two baselines on top of the physics model.
+    Expected<TrainResult> train(const TrainOptions& options = {}, const Progress& progress = {});
+    /// @brief Held-out metrics of every model the session holds.
+    Expected<EvaluateResult> evaluate(const EvaluateOptions& options = {}, const Progress& progress = {});
+    /// @brief The ablation table (paper Table 3) on the current physics parameters.
+    Expected<hybrid::AblationResult> ablation(const Progress& progress = {});
+    /// @brief inspect, calibrate, train, evaluate and ablation in order, each result written to
+    /// the folder as it is done, then report.md. A failed or cancelled stage keeps the files
+    /// of the stages before it.
+    Expected<PipelineResult> pipeline(const PipelineOptions& options, const Progress& progress = {});
+
+    /// @brief Saves the current model as a model file (atomically).
+    Status saveModel(const std::string& path) const;
+    /// @brief Sets one physics parameter after checking it against its bounds.
+    Status setParameter(properties::Param param, double value);
+
+    bool hasData() const { return m_dataSet != nullptr; }
+    std::shared_ptr<const data::DataSet> dataSet() const { return m_dataSet; }
+    /// @brief The loaded batches in SI units, cleaning applied (empty without data).
+    const std::vector<data::SiBatch>& siBatches() const { return m_si; }
+    const data::CleaningOptions& cleaning() const { return m_cleaning; }
+    const hybrid::HybridModel& model() const { return m_model; }
+    void setModel(hybrid::HybridModel model) { m_model = std::move(model); }
+    const LatestResults& latest() const { return m_latest; }
+
+private:
+    Status requireData(const std::string& action) const;
+    Status requireSupportedModel(const std::string& action) const;
+
+    std::shared_ptr<const data::DataSet> m_dataSet;
+    std::string m_dataPath;
+    data::CleaningOptions m_cleaning;
+    std::vector<data::SiBatch> m_si;
+    hybrid::HybridModel m_model;
+    LatestResults m_latest;
+};
+
+} // namespace drytwin::workflow
