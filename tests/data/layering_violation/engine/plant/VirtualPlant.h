@@ -1,0 +1,3 @@
+#pragma once
+// Fixture only: a legal include (plant/ may use data/).
+#include "data/Batch.h"

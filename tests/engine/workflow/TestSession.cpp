@@ -1,0 +1,311 @@
+// The workflow Session driven directly, as the CLI and the GUI drive it: every action, a
+// rejected load, cancel, stop-and-keep-best, failed steps, model files and the pipeline.
+#include "common/AtomicFile.h"
+#include "io/ModelFile.h"
+#include "workflow/Session.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+using namespace drytwin;
+using properties::Param;
+
+namespace {
+
+/// Progress that answers @p action from the @p after-th calibration report on.
+Progress stopAfter(int after, ProgressAction action, int* calls) {
+    return [=](const ProgressInfo& info) {
+        if (info.stage != "calibrate") {
+            return ProgressAction::Continue;
+        }
+        return ++*calls >= after ? action : ProgressAction::Continue;
+    };
+}
+
+workflow::TrainOptions quickTraining() {
+    workflow::TrainOptions t;
+    t.lstm.epochs = 2;
+    t.lstm.hidden = 8;
+    return t;
+}
+
+workflow::CalibrateOptions quickCalibration() {
+    workflow::CalibrateOptions c;
+    c.calibration.maxEvaluations = 60;
+    c.calibration.globalEvaluations = 20;
+    return c;
+}
+
+} // namespace
+
+class TestSession : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    QString m_data; ///< a small virtual-plant data set, written once
+
+private Q_SLOTS:
+    void initTestCase() {
+        QVERIFY(m_dir.isValid());
+        m_data = m_dir.filePath("plant");
+        workflow::GenerateOptions g;
+        g.plant = plant::PlantOptions::demo(5);
+        g.plant.batches = 3;
+        g.plant.samples = 1500;
+        g.outFolder = m_data.toStdString();
+        g.truthPath = m_dir.filePath("truth.json").toStdString();
+        auto r = workflow::Session().generate(g);
+        QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
+        QCOMPARE(r->files.size(), std::size_t(3));
+        QVERIFY(std::filesystem::exists(g.truthPath));
+        QCOMPARE(r->ending.termination, Termination::Completed);
+    }
+
+    void actionsNeedData() {
+        workflow::Session s;
+        QVERIFY(!s.hasData());
+        for (const auto& e : {s.simulate().error(), s.calibrate().error(), s.train().error(), s.evaluate().error(),
+                              s.ablation().error(), s.inspect().error()}) {
+            QCOMPARE(e.code, ErrorCode::NoDataLoaded);
+            QCOMPARE(exitCodeFor(e.kind), 2);
+        }
+        QCOMPARE(s.open({}).error().code, ErrorCode::InvalidOption);
+    }
+
+    void rejectedLoadChangesNothing() {
+        workflow::Session s;
+        workflow::OpenOptions good;
+        good.dataPath = DRYTWIN_TEST_DATA "/good/B01.csv";
+        auto first = s.open(good);
+        QVERIFY(first.ok());
+        const auto before = s.dataSet();
+        QCOMPARE(before->batches.size(), std::size_t(1));
+
+        workflow::OpenOptions bad;
+        bad.dataPath = DRYTWIN_TEST_DATA "/malformed";
+        auto second = s.open(bad);
+        QVERIFY(!second.ok());
+        QCOMPARE(exitCodeFor(second.error().kind), 3);
+        QCOMPARE(second.error().causes.size(), std::size_t(4)); // every rejected file, each with its place
+        bool sawTextInNumber = false;
+        for (const auto& c : second.error().causes) {
+            sawTextInNumber = sawTextInNumber || (c.code == ErrorCode::TextInNumber && c.args.at(3) == "wet");
+        }
+        QVERIFY(sawTextInNumber);
+        QCOMPARE(s.dataSet().get(), before.get()); // the same, untouched data set
+
+        workflow::OpenOptions missingModel = good;
+        missingModel.modelPath = DRYTWIN_TEST_DATA "/models/out_of_bounds.json";
+        auto third = s.open(missingModel);
+        QVERIFY(!third.ok());
+        QCOMPARE(third.error().code, ErrorCode::ModelFileInvalid);
+        QCOMPARE(s.dataSet().get(), before.get()); // a bad model file does not load the data either
+    }
+
+    void simulateCalibrateTrainEvaluate() {
+        workflow::Session s;
+        workflow::OpenOptions o;
+        o.dataPath = m_data.toStdString();
+        QVERIFY(s.open(o).ok());
+        QCOMPARE(s.siBatches().size(), std::size_t(3));
+
+        auto sim = s.simulate();
+        QVERIFY(sim.ok());
+        QCOMPARE(sim->simulations.size(), std::size_t(3));
+        QCOMPARE(sim->fits.size(), std::size_t(3));
+        for (const auto& f : sim->fits) {
+            QVERIFY(std::isfinite(f.maeXOutPct) && f.maeXOutPct > 0 && f.maeXOutPct < 5);
+        }
+        QVERIFY(s.latest().simulate.has_value());
+
+        const double hBefore = s.model().parameters[Param::h_HDT];
+        auto cal = s.calibrate(quickCalibration());
+        QVERIFY2(cal.ok(), cal ? "" : cal.error().message().c_str());
+        QVERIFY(cal->calibration.after.loss < cal->calibration.before.loss);
+        QVERIFY(s.model().parameters[Param::h_HDT] != hBefore);
+        QCOMPARE(s.model().parameters[Param::h_HDT], cal->calibration.parameters[Param::h_HDT]);
+        QVERIFY(s.model().calibration.has_value());
+        QVERIFY(cal->ending.termination == Termination::Converged ||
+                cal->ending.termination == Termination::BudgetExhausted);
+
+        auto trained = s.train(quickTraining());
+        QVERIFY2(trained.ok(), trained ? "" : trained.error().message().c_str());
+        QVERIFY(s.model().pgrlCc && s.model().extInput && s.model().lstm);
+        QVERIFY(!trained->onDefaultParameters);
+        QVERIFY(trained->pgrlCc->stability().certified);
+
+        auto ev = s.evaluate();
+        QVERIFY2(ev.ok(), ev ? "" : ev.error().message().c_str());
+        QStringList names;
+        for (const auto& m : ev->evaluation.models) {
+            names << QString::fromStdString(m.name);
+        }
+        QCOMPARE(names, QStringList({"pbm", "lstm", "ext_input_residual", "pgrl_cc"}));
+        QVERIFY(ev->diagnostics.hasPgrlCcEigenvalues);
+        QCOMPARE(ev->diagnostics.models.size(), std::size_t(4));
+        QVERIFY(ev->diagnostics.pgrlCcAfter.spectralRadius <= ev->diagnostics.pgrlCcBefore.spectralRadius + 1e-12);
+        // The hybrid beats the physics model alone one step ahead on this plant data.
+        QVERIFY(ev->evaluation.models.back().moisture.mae < ev->evaluation.models.front().moisture.mae);
+
+        // Recalibrating drops the residual models, which were learnt on the old parameters.
+        auto again = s.calibrate(quickCalibration());
+        QVERIFY(again.ok());
+        QVERIFY(again->droppedResidualModels);
+        QVERIFY(!s.model().hasResidualModels());
+    }
+
+    void calibrationCancelKeepsModel() {
+        workflow::Session s;
+        workflow::OpenOptions o;
+        o.dataPath = m_data.toStdString();
+        QVERIFY(s.open(o).ok());
+        const auto before = s.model().parameters;
+        int calls = 0;
+        auto r = s.calibrate(quickCalibration(), stopAfter(5, ProgressAction::Stop, &calls));
+        QVERIFY(!r.ok());
+        QCOMPARE(r.error().code, ErrorCode::Cancelled);
+        QCOMPARE(exitCodeFor(r.error().kind), 130);
+        QCOMPARE(s.model().parameters[Param::h_HDT], before[Param::h_HDT]);
+        QCOMPARE(s.model().parameters[Param::k_HDT], before[Param::k_HDT]);
+        QVERIFY(!s.model().calibration.has_value());
+    }
+
+    void calibrationStopKeepsBest() {
+        workflow::Session s;
+        workflow::OpenOptions o;
+        o.dataPath = m_data.toStdString();
+        QVERIFY(s.open(o).ok());
+        int calls = 0;
+        auto r = s.calibrate(quickCalibration(), stopAfter(12, ProgressAction::StopKeepBest, &calls));
+        QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
+        QCOMPARE(r->ending.termination, Termination::StoppedKeptBest);
+        const auto& history = r->calibration.history;
+        QVERIFY(history.size() >= 12 && history.size() < 40); // stopped early, not at the budget of 60
+        // The parameters returned are those of the best evaluation so far.
+        const auto best = std::min_element(history.begin(), history.end(),
+                                           [](const auto& a, const auto& b) { return a.loss < b.loss; });
+        QCOMPARE(s.model().parameters[Param::h_HDT], best->values[0]);
+        QCOMPARE(s.model().parameters[Param::k_HDT], best->values[1]);
+        // The fit after is recomputed with sensitivities (for the intervals), whose error control
+        // differs slightly from the plain runs of the search.
+        QVERIFY(std::abs(r->calibration.after.loss - best->loss) < 1e-3 * best->loss);
+        QVERIFY(best->loss < r->calibration.before.loss);
+    }
+
+    void failedStepsSayWhy() {
+        workflow::Session s;
+        workflow::OpenOptions o;
+        o.dataPath = m_data.toStdString();
+        QVERIFY(s.open(o).ok());
+        // An impossible parameter is refused and changes nothing.
+        const double h = s.model().parameters[Param::h_HDT];
+        const auto st = s.setParameter(Param::h_HDT, -5);
+        QVERIFY(!st.ok());
+        QCOMPARE(st.error().code, ErrorCode::ParameterOutOfRange);
+        QCOMPARE(s.model().parameters[Param::h_HDT], h);
+        // A model with a mechanism the physics cannot simulate yet is refused, not ignored.
+        auto model = s.model();
+        model.mechanisms["heat_transfer_fouling"] = {0.1, "1/h", 0.05, 0.15};
+        s.setModel(model);
+        auto sim = s.simulate();
+        QVERIFY(!sim.ok());
+        QCOMPARE(sim.error().code, ErrorCode::NotImplemented);
+        // Options are validated before any work.
+        workflow::EvaluateOptions bad;
+        bad.evaluation.horizonSteps = 0;
+        QCOMPARE(s.evaluate(bad).error().code, ErrorCode::InvalidOption);
+        workflow::CalibrateOptions noRows = quickCalibration();
+        noRows.subsetStride = 0;
+        QVERIFY(!s.calibrate(noRows).ok());
+    }
+
+    void modelFilesRoundTripAndReadVersion1() {
+        workflow::Session s;
+        workflow::OpenOptions o;
+        o.dataPath = m_data.toStdString();
+        QVERIFY(s.open(o).ok());
+        QVERIFY(s.calibrate(quickCalibration()).ok());
+        QVERIFY(s.train(quickTraining()).ok());
+        auto model = s.model();
+        model.mechanisms["moisture_meter_offset"] = {0.0, "% wb", -0.1, 0.1};
+        s.setModel(model);
+        const std::string path = m_dir.filePath("model-v2.json").toStdString();
+        QVERIFY(s.saveModel(path).ok());
+
+        auto back = io::readModelFile(path);
+        QVERIFY2(back.ok(), back ? "" : back.error().message().c_str());
+        QCOMPARE(back->parameters[Param::h_HDT], s.model().parameters[Param::h_HDT]);
+        QVERIFY(back->pgrlCc && back->extInput && back->lstm);
+        QCOMPARE(back->pgrlCc->a(), s.model().pgrlCc->a());
+        QCOMPARE(back->mechanisms.at("moisture_meter_offset").ci95High, 0.1);
+        QCOMPARE(io::formatModelFile(*back), io::formatModelFile(s.model()));
+
+        // The same model as version 1 wrote it: learnt models at the top level, plus a key of
+        // another tool that must survive a round trip.
+        auto j = nlohmann::json::parse(*readWholeFile(path));
+        j["format_version"] = 1;
+        for (const auto& [key, value] : j["residual_models"].items()) {
+            j[key] = value;
+        }
+        j.erase("residual_models");
+        j.erase("mechanisms");
+        j["site_notes"] = {{"line", 2}};
+        auto v1 = io::parseModelFile(j.dump(), "v1.json");
+        QVERIFY2(v1.ok(), v1 ? "" : v1.error().message().c_str());
+        QVERIFY(v1->pgrlCc && v1->lstm);
+        QCOMPARE(v1->pgrlCc->a(), s.model().pgrlCc->a());
+        const auto rewritten = nlohmann::json::parse(io::formatModelFile(*v1));
+        QCOMPARE(rewritten["format_version"].get<int>(), io::kModelFormatVersion);
+        QCOMPARE(rewritten["site_notes"]["line"].get<int>(), 2);
+        QVERIFY(rewritten.contains("residual_models"));
+
+        // A newer version than this DryTwin reads is refused with the key named.
+        j["format_version"] = io::kModelFormatVersion + 1;
+        auto newer = io::parseModelFile(j.dump(), "newer.json");
+        QVERIFY(!newer.ok());
+        QVERIFY(QString::fromStdString(newer.error().message()).contains("format_version"));
+    }
+
+    void pipelineWritesEveryStage() {
+        workflow::Session s;
+        workflow::OpenOptions o;
+        o.dataPath = m_data.toStdString();
+        QVERIFY(s.open(o).ok());
+        workflow::PipelineOptions p;
+        p.outFolder = m_dir.filePath("report").toStdString();
+        p.calibrate = quickCalibration();
+        p.train = quickTraining();
+        auto r = s.pipeline(p);
+        QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
+        QStringList stages;
+        for (const auto& st : r->stages) {
+            stages << QString::fromStdString(st.name);
+            for (const auto& f : st.files) {
+                QVERIFY2(std::filesystem::exists(f), f.c_str());
+            }
+        }
+        QCOMPARE(stages, QStringList({"inspect", "calibrate", "train", "evaluate", "ablation", "report"}));
+        QCOMPARE(r->ablation.rows.size(), std::size_t(7));
+        // The files hold the session's own numbers.
+        auto saved = io::readModelFile(p.outFolder + "/model.json");
+        QVERIFY(saved.ok());
+        QCOMPARE(saved->parameters[Param::k_HDT], s.model().parameters[Param::k_HDT]);
+        const auto ev = nlohmann::json::parse(*readWholeFile(p.outFolder + "/evaluate.json"));
+        QCOMPARE(ev["models"]["pgrl_cc"]["moisture"]["mae"].get<double>(),
+                 r->evaluate.evaluation.models.back().moisture.mae);
+
+        // A cancelled pipeline keeps the model it started with.
+        workflow::Session c;
+        QVERIFY(c.open(o).ok());
+        int calls = 0;
+        auto cancelled = c.pipeline(p, stopAfter(3, ProgressAction::Stop, &calls));
+        QVERIFY(!cancelled.ok());
+        QCOMPARE(cancelled.error().kind, ErrorKind::Cancelled);
+        QVERIFY(!c.model().calibration.has_value());
+    }
+};
+
+QTEST_APPLESS_MAIN(TestSession)
+#include "TestSession.moc"
