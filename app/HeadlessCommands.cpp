@@ -1,5 +1,5 @@
-#include "common/Units.h"
 #include "HeadlessCommands.h"
+#include "common/Units.h"
 
 #include "io/ModelFile.h"
 #include "io/ResultFiles.h"
@@ -172,7 +172,8 @@ int runSimulate(const CommandOptions& o) {
     for (const auto& f : result->fits) {
         std::printf("%-10s %8zu %14.4f %14.4f\n", f.id.c_str(), f.rows, f.maeXOutPct, f.maeTOutC);
     }
-    if (auto st = writeFileAtomically(o.outPath, io::simulationCsv(session.siBatches(), result->simulations)); !st) {
+    if (auto st = writeFileAtomically(o.outPath, io::simulationCsv(session.siBatches(), result->simulations));
+        !st) {
         return fail(st.error());
     }
     return 0;
@@ -222,8 +223,8 @@ bool calibrateOptions(const CommandOptions& o, workflow::CalibrateOptions& optio
                 for (const auto& i : properties::parameterTable()) {
                     known += " " + std::string(i.symbol);
                 }
-                exitCode = fail(
-                    Error{ErrorKind::BadInput, "--free " + name, "no such parameter; known:" + known});
+                exitCode =
+                    fail(Error{ErrorKind::BadInput, "--free " + name, "no such parameter; known:" + known});
                 return false;
             }
             co.freeParameters.push_back(*p);
@@ -234,7 +235,8 @@ bool calibrateOptions(const CommandOptions& o, workflow::CalibrateOptions& optio
     }
     if (std::sscanf(o.subset.c_str(), "%zu:%zu", &options.subsetStride, &options.subsetCount) != 2 ||
         options.subsetStride == 0) {
-        exitCode = fail(Error{ErrorKind::Usage, "--subset " + o.subset, "expected STRIDE:COUNT with STRIDE ≥ 1"});
+        exitCode =
+            fail(Error{ErrorKind::Usage, "--subset " + o.subset, "expected STRIDE:COUNT with STRIDE ≥ 1"});
         return false;
     }
     if (auto st = options.validate(); !st) {
@@ -263,7 +265,8 @@ void printCalibration(const workflow::CalibrateResult& result) {
         "loss %.5g -> %.5g; MAE X_out %.4f -> %.4f %% wb; MAE T_out %.3f -> %.3f °C (calibration rows)\n",
         r.before.loss, r.after.loss, r.before.maeXOutPct, r.after.maeXOutPct, r.before.maeTOutC,
         r.after.maeTOutC);
-    std::printf("ended: %s (%s)\n", terminationName(result.ending.termination), result.ending.message.c_str());
+    std::printf("ended: %s (%s)\n", terminationName(result.ending.termination),
+                result.ending.message.c_str());
 }
 
 void printEvaluation(const evaluation::EvaluationResult& ev) {
@@ -283,11 +286,13 @@ void printTraining(const workflow::TrainResult& t) {
         std::printf("%-20s state %3d, %zu snapshots, %.2f s; spectral radius %.4f -> %.4f, alpha %.4f, "
                     "certificate max eig %.3g (%s)\n",
                     m == t.pgrlCc.get() ? "pgrl_cc" : "ext_input_residual", m->stateSize(),
-                    m->trainingSnapshots(), m->trainingSeconds(), c.spectralRadiusBefore, c.spectralRadiusAfter,
-                    c.alpha, c.certificateMaxEig, c.certified ? "certified" : "NOT certified");
+                    m->trainingSnapshots(), m->trainingSeconds(), c.spectralRadiusBefore,
+                    c.spectralRadiusAfter, c.alpha, c.certificateMaxEig,
+                    c.certified ? "certified" : "NOT certified");
     }
     std::printf("%-20s trained in %.1f s, final training loss %.4g (standardised)\n", "lstm",
-                t.lstm->trainingSeconds(), t.lstm->lossHistory().empty() ? std::nan("") : t.lstm->lossHistory().back());
+                t.lstm->trainingSeconds(),
+                t.lstm->lossHistory().empty() ? std::nan("") : t.lstm->lossHistory().back());
 }
 
 void printAblation(const hybrid::AblationResult& a) {
@@ -295,8 +300,8 @@ void printAblation(const hybrid::AblationResult& a) {
     std::printf("%-26s %10s %8s %10s %8s %10s\n", "variant", "MAE X [%]", "R2 X", "MAE T [C]", "R2 T",
                 "LB p X");
     for (const auto& r : a.rows) {
-        std::printf("%-26s %10.4f %8.4f %10.4f %8.4f %10.3g\n", r.variant.c_str(), r.maeMoisture, r.r2Moisture,
-                    r.maeTemperature, r.r2Temperature, r.ljungBoxPMoisture);
+        std::printf("%-26s %10.4f %8.4f %10.4f %8.4f %10.3g\n", r.variant.c_str(), r.maeMoisture,
+                    r.r2Moisture, r.maeTemperature, r.r2Temperature, r.ljungBoxPMoisture);
     }
 }
 
@@ -357,7 +362,9 @@ int runEvaluate(const CommandOptions& o) {
         }
     }
     if (!o.diagnosticsPath.empty()) {
-        if (auto st = writeFileAtomically(o.diagnosticsPath, io::residualDiagnosticsJson(result->diagnostics)); !st) {
+        if (auto st =
+                writeFileAtomically(o.diagnosticsPath, io::residualDiagnosticsJson(result->diagnostics));
+            !st) {
             return fail(st.error());
         }
     }
@@ -413,7 +420,8 @@ int runPipeline(const CommandOptions& o) {
     options.evaluate.evaluation.horizonSteps = o.horizonSteps;
     workflow::Session session;
     int rc = 0;
-    if (!calibrateOptions(o, options.calibrate, rc) || !trainOptions(o, options.train, rc) || !open(o, session, rc)) {
+    if (!calibrateOptions(o, options.calibrate, rc) || !trainOptions(o, options.train, rc) ||
+        !open(o, session, rc)) {
         return rc;
     }
     auto result = session.pipeline(options, o.progress);
@@ -421,8 +429,8 @@ int runPipeline(const CommandOptions& o) {
         return fail(result.error());
     }
     const auto& r = *result;
-    std::printf("\n== inspect ==\n%zu batch(es), %zu rows; the cleaning rules keep %zu\n", r.inspect.batches.size(),
-                r.inspect.rows, r.inspect.cleaning.kept);
+    std::printf("\n== inspect ==\n%zu batch(es), %zu rows; the cleaning rules keep %zu\n",
+                r.inspect.batches.size(), r.inspect.rows, r.inspect.cleaning.kept);
     std::printf("\n== calibrate ==\n");
     printCalibration(r.calibrate);
     std::printf("\n== train ==\n");
@@ -441,9 +449,10 @@ int runPipeline(const CommandOptions& o) {
     }
     std::printf(
         "\n== not in this version ==\ndiscover and mpc are not implemented yet; the report says so.\n");
-    std::printf("\nreport %s, with inspect.json, model-calibrated.json, model.json, evaluate.json, ablation.json and "
-                "diagnostics.json beside it\n",
-                r.reportPath.c_str());
+    std::printf(
+        "\nreport %s, with inspect.json, model-calibrated.json, model.json, evaluate.json, ablation.json and "
+        "diagnostics.json beside it\n",
+        r.reportPath.c_str());
     return 0;
 }
 

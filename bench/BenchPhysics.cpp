@@ -1,6 +1,6 @@
 // The PBM over 10 batches × 6,300 samples (issue: under 0.5 s on this 2-core machine).
-#include "plant/PlantExport.h"
 #include "physics/LineSimulator.h"
+#include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
 
 #include <benchmark/benchmark.h>

@@ -1,8 +1,8 @@
 // PGRL-CC training on ~44,000 snapshots with a degree-2 dictionary (issue: under 1 s), and the
 // LSTM baseline's training time (reported).
 #include "baselines/LstmBaseline.h"
-#include "plant/PlantExport.h"
 #include "hybrid/HybridTraining.h"
+#include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
 
 #include <benchmark/benchmark.h>

@@ -170,8 +170,11 @@ void MainWindow::openDataSet(const QString& path) {
     options.dataPath = path.toStdString();
     m_jobs.submit<workflow::OpenResult>(
         tr("Load %1").arg(path),
-        [options](workflow::Session& session, const Progress& progress) { return session.open(options, progress); },
-        this, [this, path](const Expected<workflow::OpenResult>& result) {
+        [options](workflow::Session& session, const Progress& progress) {
+            return session.open(options, progress);
+        },
+        this,
+        [this, path](const Expected<workflow::OpenResult>& result) {
             if (result) {
                 onDataLoaded(path, *result);
             } else {
@@ -263,14 +266,16 @@ void MainWindow::onLoadFailed(const QString& path, const Error& error) {
 void MainWindow::simulate() {
     m_jobs.submit<workflow::SimulateResult>(
         tr("Simulate"),
-        [](workflow::Session& session, const Progress& progress) { return session.simulate({}, progress); }, this,
+        [](workflow::Session& session, const Progress& progress) { return session.simulate({}, progress); },
+        this,
         [this](const Expected<workflow::SimulateResult>& result) {
             if (result) {
                 onSimulated(*result);
             } else if (result.error().kind == ErrorKind::Cancelled) {
                 m_statusLabel->setText(m_dataStatus + tr("; simulation cancelled"));
             } else {
-                m_statusLabel->setText(tr("The physics model failed on this data: %1").arg(errorText(result.error())));
+                m_statusLabel->setText(
+                    tr("The physics model failed on this data: %1").arg(errorText(result.error())));
             }
         });
 }

@@ -269,18 +269,9 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
         bool cancelled = false;
         bool stoppedKeepBest = false; ///< the user asked to stop and keep the best point so far
         int budget = 0;
-    } state{&problem,
-            &coords,
-            start,
-            &result,
-            &progress,
-            &options,
-            "global",
-            std::numeric_limits<double>::infinity(),
-            {},
-            false,
-            false,
-            options.maxEvaluations};
+    } state{&problem,  &coords,  start,    &result,
+            &progress, &options, "global", std::numeric_limits<double>::infinity(),
+            {},        false,    false,    options.maxEvaluations};
     for (const auto& c : coords) {
         state.bestUnit.push_back(std::clamp(c.toUnit(start[c.param]), 0.0, 1.0));
     }
@@ -319,10 +310,9 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
         rec.loss = loss;
         rec.bestLoss = s.best;
         s.result->history.push_back(rec);
-        const auto action =
-            progressAction(*s.progress, "calibrate",
-                           std::min(1.0, static_cast<double>(s.result->evaluations) / s.budget),
-                           s.phase + " search, loss " + std::to_string(s.best));
+        const auto action = progressAction(
+            *s.progress, "calibrate", std::min(1.0, static_cast<double>(s.result->evaluations) / s.budget),
+            s.phase + " search, loss " + std::to_string(s.best));
         if (action != ProgressAction::Continue) {
             (action == ProgressAction::StopKeepBest ? s.stoppedKeepBest : s.cancelled) = true;
             throw nlopt::forced_stop();
@@ -375,7 +365,8 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
                                 " evaluations (" + state.phase + " search); the best parameters found so far";
     } else if (result.evaluations >= options.maxEvaluations) {
         result.ending.termination = Termination::BudgetExhausted;
-        result.ending.message = "used the budget of " + std::to_string(options.maxEvaluations) + " evaluations";
+        result.ending.message =
+            "used the budget of " + std::to_string(options.maxEvaluations) + " evaluations";
     } else {
         result.ending.termination = Termination::Converged;
         result.ending.message = "BOBYQA met its relative parameter tolerance";

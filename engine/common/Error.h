@@ -42,7 +42,8 @@ struct Error {
     Error() = default;
     Error(ErrorKind kind_, std::string place_, std::string reason_, ErrorCode code_ = ErrorCode::Unspecified,
           std::vector<std::string> args_ = {})
-        : kind(kind_), place(std::move(place_)), reason(std::move(reason_)), code(code_), args(std::move(args_)) {}
+        : kind(kind_), place(std::move(place_)), reason(std::move(reason_)), code(code_),
+          args(std::move(args_)) {}
 
     ErrorKind kind = ErrorKind::BadInput;
     std::string place;  ///< "file:line:column", a parameter name, a solver stage ...

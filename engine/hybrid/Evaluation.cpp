@@ -26,15 +26,24 @@ OutputMetrics outputMetrics(const std::vector<double>& observed, const std::vect
 
 Status EvaluationOptions::validate() const {
     if (horizonSteps < 1) {
-        return Error{ErrorKind::Usage, "horizon", "must be at least 1 step", ErrorCode::InvalidOption,
+        return Error{ErrorKind::Usage,
+                     "horizon",
+                     "must be at least 1 step",
+                     ErrorCode::InvalidOption,
                      {"horizon", "must be at least 1 step"}};
     }
     if (!(trainFraction > 0 && trainFraction < 1)) {
-        return Error{ErrorKind::Usage, "train fraction", "must lie strictly between 0 and 1",
-                     ErrorCode::InvalidOption, {"train fraction", "must lie strictly between 0 and 1"}};
+        return Error{ErrorKind::Usage,
+                     "train fraction",
+                     "must lie strictly between 0 and 1",
+                     ErrorCode::InvalidOption,
+                     {"train fraction", "must lie strictly between 0 and 1"}};
     }
     if (ljungBoxLags < 1) {
-        return Error{ErrorKind::Usage, "Ljung-Box lags", "must be at least 1", ErrorCode::InvalidOption,
+        return Error{ErrorKind::Usage,
+                     "Ljung-Box lags",
+                     "must be at least 1",
+                     ErrorCode::InvalidOption,
                      {"Ljung-Box lags", "must be at least 1"}};
     }
     return {};
@@ -74,8 +83,9 @@ ScoredPredictions scorePredictions(const std::vector<residual::BatchView>& views
     return s;
 }
 
-Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, const hybrid::HybridModel& model,
-                                    const EvaluationOptions& options, const Progress& progress) {
+Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
+                                    const hybrid::HybridModel& model, const EvaluationOptions& options,
+                                    const Progress& progress) {
     const auto t0 = std::chrono::steady_clock::now();
     if (auto st = options.validate(); !st) {
         return st.error();
@@ -148,8 +158,9 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, c
         out.models.push_back(std::move(m));
     }
     out.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    out.ending = {Termination::Completed, std::to_string(out.models.size()) + " model(s) scored on " +
-                                              std::to_string(out.testRows) + " held-out rows",
+    out.ending = {Termination::Completed,
+                  std::to_string(out.models.size()) + " model(s) scored on " + std::to_string(out.testRows) +
+                      " held-out rows",
                   out.elapsedSeconds};
     return out;
 }

@@ -53,8 +53,9 @@ struct EvaluationResult {
 };
 
 /// @brief Metrics on the chronological held-out part (rows the cleaning keeps).
-Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches, const hybrid::HybridModel& model,
-                                    const EvaluationOptions& options = {}, const Progress& progress = {});
+Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
+                                    const hybrid::HybridModel& model, const EvaluationOptions& options = {},
+                                    const Progress& progress = {});
 
 /// @brief Output metrics of observed/predicted series (moisture in % wb or temperature in °C).
 OutputMetrics outputMetrics(const std::vector<double>& observed, const std::vector<double>& predicted,

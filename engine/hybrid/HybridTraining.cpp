@@ -71,7 +71,8 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
     reportProgress(progress, "train", 1.0, "done");
     TrainingResult r{std::move(*full), std::move(*extModel), std::move(*lstm), 0, {}};
     r.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.ending = {Termination::Completed, "PGRL-CC, external-input residual and LSTM trained", r.elapsedSeconds};
+    r.ending = {Termination::Completed, "PGRL-CC, external-input residual and LSTM trained",
+                r.elapsedSeconds};
     return r;
 }
 

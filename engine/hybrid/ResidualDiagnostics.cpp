@@ -18,7 +18,8 @@ EigenSpectrum spectrum(const Eigen::MatrixXd& a) {
 
 } // namespace
 
-ResidualDiagnostics residualDiagnostics(const evaluation::EvaluationResult& evaluation, const HybridModel& model) {
+ResidualDiagnostics residualDiagnostics(const evaluation::EvaluationResult& evaluation,
+                                        const HybridModel& model) {
     ResidualDiagnostics d;
     for (const auto& m : evaluation.models) {
         ModelResidualDiagnostics e;

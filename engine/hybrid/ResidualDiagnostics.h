@@ -15,7 +15,7 @@ struct ModelResidualDiagnostics {
     std::vector<double> acf; ///< autocorrelation at lags 0..40
     bool hasPsd = false;     ///< false when the series is too short for Welch's method
     std::vector<double> psdFrequencyHz;
-    std::vector<double> psdDensity;         ///< (% wb)²/Hz
+    std::vector<double> psdDensity;          ///< (% wb)²/Hz
     double lowFrequencyShareBelow0p01Hz = 0; ///< share of the residual's power below 0.01 Hz
 };
 
@@ -36,6 +36,7 @@ struct ResidualDiagnostics {
 
 /// @brief ACF and Welch PSD of every evaluated model's held-out moisture residual and, when the
 /// model holds PGRL-CC, the eigenvalues of A before and after the stability constraint.
-ResidualDiagnostics residualDiagnostics(const evaluation::EvaluationResult& evaluation, const HybridModel& model);
+ResidualDiagnostics residualDiagnostics(const evaluation::EvaluationResult& evaluation,
+                                        const HybridModel& model);
 
 } // namespace drytwin::hybrid

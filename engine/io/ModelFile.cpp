@@ -16,9 +16,9 @@ namespace {
 using hybrid::HybridModel;
 
 /// Keys this version writes; every other top-level key is kept as a foreign key.
-constexpr const char* kKnownKeys[] = {"format",      "format_version", "parameters",      "switches",
-                                      "winnower_form", "calibration",  "mechanisms",      "residual_models",
-                                      hybrid::kPgrlCcKey, hybrid::kExtInputKey, hybrid::kLstmKey};
+constexpr const char* kKnownKeys[] = {
+    "format",     "format_version",  "parameters",       "switches",           "winnower_form", "calibration",
+    "mechanisms", "residual_models", hybrid::kPgrlCcKey, hybrid::kExtInputKey, hybrid::kLstmKey};
 
 json parametersJson(const properties::ParameterSet& p) {
     json j = json::object();
@@ -92,7 +92,8 @@ Expected<HybridModel> parseModelFile(const std::string& text, const std::string&
                      std::string("invalid JSON: ") + e.what()};
     }
     auto bad = [&](const std::string& key, const std::string& why) {
-        return Error{ErrorKind::BadInput, name + ": " + key, why, ErrorCode::ModelFileInvalid, {name, key, why}};
+        return Error{
+            ErrorKind::BadInput, name + ": " + key, why, ErrorCode::ModelFileInvalid, {name, key, why}};
     };
     if (!j.is_object() || j.value("format", "") != "drytwin-model") {
         return bad("format", "not a DryTwin model file (expected \"format\": \"drytwin-model\")");
@@ -168,7 +169,8 @@ Expected<HybridModel> parseModelFile(const std::string& text, const std::string&
                 return bad("mechanisms." + mechanism, "unknown mechanism (CONTRACT.md §4 lists the names)");
             }
             if (!entry.is_object() || !entry.value("value", json()).is_number()) {
-                return bad("mechanisms." + mechanism, "must be {\"value\": number, \"unit\": ..., \"ci95\": [lo, hi]}");
+                return bad("mechanisms." + mechanism,
+                           "must be {\"value\": number, \"unit\": ..., \"ci95\": [lo, hi]}");
             }
             hybrid::MechanismValue v;
             v.value = entry["value"].get<double>();
@@ -224,8 +226,9 @@ Expected<HybridModel> readModelFile(const std::string& path) {
     return parseModelFile(*text, path);
 }
 
-std::string truthJson(const properties::ParameterSet& truth, const std::map<plant::Mechanism, double>& effects,
-                      unsigned seed, bool unmeasuredDrift) {
+std::string truthJson(const properties::ParameterSet& truth,
+                      const std::map<plant::Mechanism, double>& effects, unsigned seed,
+                      bool unmeasuredDrift) {
     json j;
     j["parameters"] = parametersJson(truth);
     j["effects"] = json::object();
@@ -238,6 +241,5 @@ std::string truthJson(const properties::ParameterSet& truth, const std::map<plan
     j["unmeasured_drift"] = unmeasuredDrift;
     return j.dump(2) + "\n";
 }
-
 
 } // namespace drytwin::io

@@ -26,7 +26,7 @@ Status writeModelFile(const hybrid::HybridModel& model, const std::string& path)
 std::string formatModelFile(const hybrid::HybridModel& model);
 
 /// @brief The `--truth` file of `generate`: the plant's parameters and effects (CONTRACT.md §2).
-std::string truthJson(const properties::ParameterSet& truth, const std::map<plant::Mechanism, double>& effects,
-                      unsigned seed, bool unmeasuredDrift);
+std::string truthJson(const properties::ParameterSet& truth,
+                      const std::map<plant::Mechanism, double>& effects, unsigned seed, bool unmeasuredDrift);
 
 } // namespace drytwin::io

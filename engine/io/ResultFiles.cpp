@@ -84,7 +84,8 @@ std::string residualDiagnosticsJson(const hybrid::ResidualDiagnostics& d) {
         j["models"][m.name] = e;
     }
     if (d.hasPgrlCcEigenvalues) {
-        j["pgrl_cc_eigenvalues"] = {{"before", spectrumJson(d.pgrlCcBefore)}, {"after", spectrumJson(d.pgrlCcAfter)}};
+        j["pgrl_cc_eigenvalues"] = {{"before", spectrumJson(d.pgrlCcBefore)},
+                                    {"after", spectrumJson(d.pgrlCcAfter)}};
     }
     return j.dump(1) + "\n";
 }
@@ -104,8 +105,11 @@ std::string inspectJson(const data::DataSetSummary& s) {
     }
     for (const auto& col : s.columns) {
         if (col.present) {
-            j["columns"][col.name] = {
-                {"unit", col.unit}, {"min", col.min}, {"max", col.max}, {"mean", col.mean}, {"missing", col.missing}};
+            j["columns"][col.name] = {{"unit", col.unit},
+                                      {"min", col.min},
+                                      {"max", col.max},
+                                      {"mean", col.mean},
+                                      {"missing", col.missing}};
         }
     }
     const auto& c = s.cleaning;

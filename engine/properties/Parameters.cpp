@@ -107,7 +107,10 @@ Status ParameterSet::validate() const {
                 t << x;
                 return t.str();
             };
-            return Error{ErrorKind::BadInput, std::string(i.symbol), os.str(), ErrorCode::ParameterOutOfRange,
+            return Error{ErrorKind::BadInput,
+                         std::string(i.symbol),
+                         os.str(),
+                         ErrorCode::ParameterOutOfRange,
                          {std::string(i.symbol), text(v), text(i.lower), text(i.upper)}};
         }
     }

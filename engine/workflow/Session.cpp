@@ -107,9 +107,11 @@ Expected<OpenResult> Session::open(const OpenOptions& options, const Progress& p
             return cancelledError("load");
         }
         if (!loaded.errors.empty()) {
-            Error e{ErrorKind::BadInput, options.dataPath,
+            Error e{ErrorKind::BadInput,
+                    options.dataPath,
                     std::to_string(loaded.errors.size()) + " file(s) rejected; nothing was changed",
-                    ErrorCode::Unspecified, {}};
+                    ErrorCode::Unspecified,
+                    {}};
             // One rejected file: its own error is the most useful one to show.
             if (loaded.errors.size() == 1) {
                 e = loaded.errors.front();
@@ -177,8 +179,11 @@ Expected<GenerateResult> Session::generate(const GenerateOptions& options, const
 
 Status Session::requireData(const std::string& action) const {
     if (!m_dataSet) {
-        return Error{ErrorKind::Usage, action, "no data loaded; open a batch file or folder first",
-                     ErrorCode::NoDataLoaded, {}};
+        return Error{ErrorKind::Usage,
+                     action,
+                     "no data loaded; open a batch file or folder first",
+                     ErrorCode::NoDataLoaded,
+                     {}};
     }
     return {};
 }
@@ -186,10 +191,12 @@ Status Session::requireData(const std::string& action) const {
 Status Session::requireSupportedModel(const std::string& action) const {
     for (const auto& [name, v] : m_model.mechanisms) {
         if (v.value != 0) {
-            return Error{ErrorKind::BadInput, action + ": mechanism " + name,
+            return Error{ErrorKind::BadInput,
+                         action + ": mechanism " + name,
                          "this version's physics model cannot simulate mechanism extensions yet; remove it "
                          "from the model file or set its value to 0",
-                         ErrorCode::NotImplemented, {"mechanism " + name}};
+                         ErrorCode::NotImplemented,
+                         {"mechanism " + name}};
         }
     }
     return {};
@@ -378,7 +385,9 @@ Expected<PipelineResult> Session::pipeline(const PipelineOptions& options, const
         result.stages.push_back({name, std::move(files), secondsSince(stageStart)});
         stageStart = std::chrono::steady_clock::now();
     };
-    const auto write = [&](const std::string& path, const std::string& text) { return writeFileAtomically(path, text); };
+    const auto write = [&](const std::string& path, const std::string& text) {
+        return writeFileAtomically(path, text);
+    };
 
     auto summary = inspect();
     if (!summary) {

@@ -16,8 +16,8 @@ using drytwin::widgets::JobStatus;
 namespace {
 
 /// A job that reports progress every millisecond until told to stop, or @p steps are done.
-std::function<Expected<int>(workflow::Session&, const Progress&)> countingJob(int steps, std::atomic<bool>* ran,
-                                                                             QThread** thread) {
+std::function<Expected<int>(workflow::Session&, const Progress&)>
+countingJob(int steps, std::atomic<bool>* ran, QThread** thread) {
     return [=](workflow::Session&, const Progress& progress) -> Expected<int> {
         *ran = true;
         *thread = QThread::currentThread();

@@ -31,7 +31,8 @@ QString errorText(const Error& e) {
         break;
     case ErrorCode::TextInNumber:
         if (has(5)) {
-            return tr("%1, line %2, column %3: text '%4' in the numeric column '%5'").arg(a[0], a[1], a[2], a[3], a[4]);
+            return tr("%1, line %2, column %3: text '%4' in the numeric column '%5'")
+                .arg(a[0], a[1], a[2], a[3], a[4]);
         }
         break;
     case ErrorCode::TimeNotIncreasing:

@@ -30,7 +30,8 @@ JobId JobRunner::enqueue(const QString& name, std::shared_ptr<detail::Job> job) 
     m_jobs[job->id] = job;
     m_worker->push(job);
     auto* worker = m_worker;
-    QMetaObject::invokeMethod(worker, [worker] { worker->runNext(); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        worker, [worker] { worker->runNext(); }, Qt::QueuedConnection);
     if (!wasBusy) {
         Q_EMIT busyChanged(true);
     }
@@ -96,7 +97,8 @@ void JobWorker::runNext() {
     const JobId id = job->id;
     Job* raw = job.get();
     const Progress progressCb = [this, id, raw](const ProgressInfo& info) {
-        Q_EMIT progress(id, QString::fromStdString(info.stage), info.fraction, QString::fromStdString(info.detail));
+        Q_EMIT progress(id, QString::fromStdString(info.stage), info.fraction,
+                        QString::fromStdString(info.detail));
         if (raw->cancel) {
             return ProgressAction::Stop;
         }

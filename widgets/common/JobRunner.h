@@ -29,8 +29,8 @@ class JobWorker;
 struct Job {
     JobId id = 0;
     QString name;
-    std::atomic<bool> cancel{false};      ///< stop and give up
-    std::atomic<bool> keepBest{false};    ///< stop and keep the best so far (iterative work)
+    std::atomic<bool> cancel{false};   ///< stop and give up
+    std::atomic<bool> keepBest{false}; ///< stop and keep the best so far (iterative work)
     std::function<JobStatus(workflow::Session&, const Progress&)> run; ///< engine thread
     std::function<void()> deliver;                                     ///< GUI thread, after run
     QPointer<QObject> context; ///< deliver is skipped when this object is gone

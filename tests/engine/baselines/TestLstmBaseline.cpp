@@ -1,7 +1,7 @@
-#include "common/Units.h"
 #include "baselines/LstmBaseline.h"
-#include "plant/PlantExport.h"
+#include "common/Units.h"
 #include "hybrid/HybridTraining.h"
+#include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
 
 #include <QtTest>

@@ -1,8 +1,8 @@
 #include "common/Units.h"
-#include "plant/PlantExport.h"
 #include "data/SiBatch.h"
 #include "diagnostics/Metrics.h"
 #include "physics/LineSimulator.h"
+#include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
 
 #include <QtTest>

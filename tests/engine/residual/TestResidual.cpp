@@ -1,7 +1,7 @@
 #include "common/Units.h"
-#include "plant/PlantExport.h"
 #include "diagnostics/Stability.h"
 #include "hybrid/HybridTraining.h"
+#include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
 #include "residual/OrthogonalProjection.h"
 #include "residual/PolynomialDictionary.h"

@@ -66,8 +66,8 @@ private Q_SLOTS:
     void actionsNeedData() {
         workflow::Session s;
         QVERIFY(!s.hasData());
-        for (const auto& e : {s.simulate().error(), s.calibrate().error(), s.train().error(), s.evaluate().error(),
-                              s.ablation().error(), s.inspect().error()}) {
+        for (const auto& e : {s.simulate().error(), s.calibrate().error(), s.train().error(),
+                              s.evaluate().error(), s.ablation().error(), s.inspect().error()}) {
             QCOMPARE(e.code, ErrorCode::NoDataLoaded);
             QCOMPARE(exitCodeFor(e.kind), 2);
         }
@@ -145,7 +145,8 @@ private Q_SLOTS:
         QCOMPARE(names, QStringList({"pbm", "lstm", "ext_input_residual", "pgrl_cc"}));
         QVERIFY(ev->diagnostics.hasPgrlCcEigenvalues);
         QCOMPARE(ev->diagnostics.models.size(), std::size_t(4));
-        QVERIFY(ev->diagnostics.pgrlCcAfter.spectralRadius <= ev->diagnostics.pgrlCcBefore.spectralRadius + 1e-12);
+        QVERIFY(ev->diagnostics.pgrlCcAfter.spectralRadius <=
+                ev->diagnostics.pgrlCcBefore.spectralRadius + 1e-12);
         // The hybrid beats the physics model alone one step ahead on this plant data.
         QVERIFY(ev->evaluation.models.back().moisture.mae < ev->evaluation.models.front().moisture.mae);
 
