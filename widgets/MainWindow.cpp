@@ -27,6 +27,12 @@
 #include <qwt_plot_grid.h>
 #include <vtkVersion.h>
 
+// The widgets are a static library: its resources (window icon) must be registered by hand,
+// and Q_INIT_RESOURCE must be called outside any namespace.
+static void initDryTwinResources() {
+    Q_INIT_RESOURCE(drytwin);
+}
+
 namespace drytwin::widgets {
 
 namespace {
@@ -58,6 +64,7 @@ QwtPlot* makePlot(const QString& yTitle, QwtPlotCurve*& curve, const QColor& col
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowTitle(tr("DryTwin"));
+    initDryTwinResources();
     setWindowIcon(QIcon(QStringLiteral(":/icons/drytwin.svg")));
     resize(1200, 760);
 
