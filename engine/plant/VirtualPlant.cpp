@@ -193,7 +193,7 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
                 feedLevel = std::clamp(feedLevel + 250 * (uniform(rng) < 0.5 ? -1 : 1) * (0.5 + uniform(rng)),
                                        5850.0, 6550.0);
             }
-            feed[k] = std::clamp(feedLevel + feedNoise.next(rng), 5800.0, 6600.0) / 3600.0;
+            feed[k] = units::kgPerHourToKgPerS(std::clamp(feedLevel + feedNoise.next(rng), 5800.0, 6600.0));
             const double xWb = std::clamp(
                 xInBase + 0.008 * std::sin(2 * M_PI * t / 1800 + xInPhase) + xInWalk.next(rng), 0.20, 0.24);
             xIn[k] = xWb / (1 - xWb);
@@ -357,17 +357,15 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
             pb.tHotSpK.push_back(sp);
             pb.tHotK.push_back(tHot[k] + 0.1 * normal(rng));
             pb.airSpeedMPerS.push_back(air[k] + 0.02 * normal(rng));
-            pb.feedKgPerS.push_back(feed[k] + 5.0 / 3600 * normal(rng));
+            pb.feedKgPerS.push_back(feed[k] + units::kgPerHourToKgPerS(5.0) * normal(rng));
             const double xInWb = xIn[k] / (1 + xIn[k]) + 0.0001 * normal(rng);
             pb.xInDb.push_back(xInWb / (1 - xInWb));
             pb.tInK.push_back(tIn[k] + 0.1 * normal(rng));
             pb.tAmbK.push_back(tAmb[k] + 0.1 * normal(rng));
             pb.rhAmb.push_back(std::clamp(rh[k] + 0.005 * normal(rng), 0.0, 1.0));
-            const double xh = xHdtPct / 100;
-            pb.xHdtDb.push_back(xh / (1 - xh));
+            pb.xHdtDb.push_back(units::wetPctToDry(xHdtPct));
             pb.tHdtK.push_back(tHdtMeas);
-            const double xo = xOutMeasPct / 100;
-            pb.xOutDb.push_back(xo / (1 - xo));
+            pb.xOutDb.push_back(units::wetPctToDry(xOutMeasPct));
             pb.tOutK.push_back(tOutMeas);
         }
         result.batches.push_back(std::move(pb));
