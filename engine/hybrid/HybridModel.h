@@ -37,7 +37,9 @@ struct CalibrationRecord {
     std::string algorithm;
 };
 
-/// @brief A mechanism extension of CONTRACT.md §4 that discovery added to the physics model.
+/// @brief What discovery found for a mechanism extension of CONTRACT.md §4: its fitted value
+/// and 95 % interval. The value the model simulates with is its parameter in
+/// HybridModel::parameters (theta_wall, …); this keeps the evidence beside it.
 struct MechanismValue {
     double value = 0;
     std::string unit;
@@ -53,7 +55,8 @@ struct HybridModel {
     properties::ParameterSet parameters;
     properties::ModelSwitches switches;
     physics::WinnowerForm winnower = physics::WinnowerForm::Transient;
-    /// Mechanisms by their CONTRACT.md §4 name; empty: the paper's base model.
+    /// Intervals of the mechanisms discovery fitted, by CONTRACT.md §4 name (the values are the
+    /// mechanism parameters in `parameters`; all 0: the paper's base model).
     std::map<std::string, MechanismValue> mechanisms;
     std::optional<CalibrationRecord> calibration;
     std::shared_ptr<const residual::ResidualModel> pgrlCc;   ///< PGRL-CC residual model

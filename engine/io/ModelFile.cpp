@@ -20,10 +20,13 @@ constexpr const char* kKnownKeys[] = {
     "format",     "format_version",  "parameters",       "switches",           "winnower_form", "calibration",
     "mechanisms", "residual_models", hybrid::kPgrlCcKey, hybrid::kExtInputKey, hybrid::kLstmKey};
 
+/// The paper's parameters; the mechanism extensions go under "mechanisms" (CONTRACT.md §2).
 json parametersJson(const properties::ParameterSet& p) {
     json j = json::object();
     for (const auto& i : properties::parameterTable()) {
-        j[std::string(i.symbol)] = {{"value", p[i.id]}, {"unit", std::string(i.unit)}};
+        if (!properties::mechanismOf(i.id)) {
+            j[std::string(i.symbol)] = {{"value", p[i.id]}, {"unit", std::string(i.unit)}};
+        }
     }
     return j;
 }
@@ -59,9 +62,21 @@ std::string formatModelFile(const HybridModel& m) {
         c["algorithm"] = m.calibration->algorithm;
         j["calibration"] = c;
     }
+    // A mechanism is written when the model uses it or discovery left its interval.
     j["mechanisms"] = json::object();
-    for (const auto& [name, v] : m.mechanisms) {
-        j["mechanisms"][name] = {{"value", v.value}, {"unit", v.unit}, {"ci95", {v.ci95Low, v.ci95High}}};
+    for (const properties::Param p : properties::mechanismParams()) {
+        const std::string name(*properties::mechanismOf(p));
+        const double value = m.parameters[p];
+        const auto it = m.mechanisms.find(name);
+        if (value == 0 && it == m.mechanisms.end()) {
+            continue;
+        }
+        json entry = {{"value", value}, {"unit", std::string(properties::info(p).unit)},
+                      {"parameter", std::string(properties::info(p).symbol)}};
+        if (it != m.mechanisms.end()) {
+            entry["ci95"] = {it->second.ci95Low, it->second.ci95High};
+        }
+        j["mechanisms"][name] = entry;
     }
     if (m.hasResidualModels()) {
         json r = json::object();
@@ -165,7 +180,8 @@ Expected<HybridModel> parseModelFile(const std::string& text, const std::string&
             return bad("mechanisms", "must be an object keyed by mechanism name");
         }
         for (const auto& [mechanism, entry] : j["mechanisms"].items()) {
-            if (!plant::mechanismByName(mechanism)) {
+            const auto param = properties::mechanismParam(mechanism);
+            if (!param) {
                 return bad("mechanisms." + mechanism, "unknown mechanism (CONTRACT.md §4 lists the names)");
             }
             if (!entry.is_object() || !entry.value("value", json()).is_number()) {
@@ -174,13 +190,18 @@ Expected<HybridModel> parseModelFile(const std::string& text, const std::string&
             }
             hybrid::MechanismValue v;
             v.value = entry["value"].get<double>();
-            v.unit = entry.value("unit", "");
+            v.unit = std::string(properties::info(*param).unit);
+            v.ci95Low = v.ci95High = v.value;
             if (entry.contains("ci95") && entry["ci95"].is_array() && entry["ci95"].size() == 2 &&
                 entry["ci95"][0].is_number() && entry["ci95"][1].is_number()) {
                 v.ci95Low = entry["ci95"][0].get<double>();
                 v.ci95High = entry["ci95"][1].get<double>();
+                m.mechanisms[mechanism] = v;
             }
-            m.mechanisms[mechanism] = v;
+            m.parameters[*param] = v.value;
+        }
+        if (auto st = m.parameters.validate(); !st) {
+            return bad("mechanisms." + st.error().place, st.error().reason);
         }
     }
     // Version 1 kept the learnt models at the top level; version 2 under "residual_models".

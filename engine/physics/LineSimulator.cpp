@@ -1,5 +1,6 @@
 #include "physics/LineSimulator.h"
 
+#include "common/Units.h"
 #include "physics/SectionRates.h"
 
 #include <algorithm>
@@ -146,21 +147,65 @@ bool forParcels(const void* c, std::size_t first, std::size_t count, const doubl
     return finite;
 }
 
+// Engineering constants of the gas-phase extension (model side; the plant has its own).
+constexpr double kModelAirHeatCapacity = 1010;    // J/(kg·K)
+constexpr double kModelAirMassPerSpeed = 0.8 * 0.283; // kg/s of hot air per m/s (0.6 m tube, 0.8 kg/m³)
+constexpr double kModelLatentHeat = 2.3e6;        // J/kg, for the gas cooling only
+constexpr double kModelCriticalMoisture = 0.25;   // X_cr of the falling-rate extension [kg/kg dry]
+
 bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, const double* y, double* ydot) {
     return forParcels<2>(c, first, count, y, ydot,
                          [s](const SectionContext& x, const ParameterSet& p,
                              const properties::ModelSwitches& sw, const auto& l) {
                              using T = std::decay_t<decltype(l.state(0))>;
+                             const double wall = p[Param::theta_wall];
+                             const double gasCoupling = p[Param::theta_gas];
+                             const double fouling = p[Param::theta_foul];
+                             const double falling = p[Param::theta_fall];
                              double gas[2] = {0, 0};
+                             double hours[2] = {0, 0};     // since the batch started
+                             double gasCooling[2] = {0, 0}; // K per kg/kg evaporated
+                             double xEntry[2] = {0, 0};
                              for (int lane = 0; lane < l.width; ++lane) {
-                                 gas[lane] =
-                                     x.locate(l.parcel + static_cast<std::size_t>(lane), s).of(x.in->tHotK);
+                                 const std::size_t parcel = l.parcel + static_cast<std::size_t>(lane);
+                                 const SamplePoint where = x.locate(parcel, s);
+                                 const double tHot = where.of(x.in->tHotK);
+                                 gas[lane] = tHot;
+                                 if (wall != 0) { // tube_wall_heat_loss, simple form
+                                     gas[lane] = tHot - wall * (tHot - where.of(x.in->tAmbK));
+                                 }
+                                 if (fouling != 0) {
+                                     hours[lane] = ((*x.entry)[parcel] + s - x.t0) / 3600.0;
+                                 }
+                                 if (gasCoupling != 0) { // conditions at the parcel's entry
+                                     const SamplePoint in0 = x.locate(parcel, 0.0);
+                                     xEntry[lane] = in0.of(x.in->xInDb);
+                                     const double dryFeed = in0.of(x.in->feedKgPerS) / (1 + xEntry[lane]);
+                                     const double air = std::max(1.0, in0.of(x.in->airSpeedMPerS));
+                                     gasCooling[lane] = kModelLatentHeat * dryFeed /
+                                                        (kModelAirHeatCapacity * kModelAirMassPerSpeed * air);
+                                 }
                              }
                              TubeEnvironmentT<T> env;
                              env.tGasK = l.load(gas);
+                             if (gasCoupling != 0) { // gas_phase_coupling, simple form
+                                 env.tGasK = env.tGasK -
+                                             gasCoupling * l.load(gasCooling) * (l.load(xEntry) - l.state(0));
+                             }
                              env.wGas = p[Param::w];
-                             env.h = p[Param::h_HDT];
+                             env.h = properties::math::constant<T>(p[Param::h_HDT]);
+                             if (fouling != 0) { // heat_transfer_fouling, simple form
+                                 env.h = p[Param::h_HDT] *
+                                         properties::math::maxOf(T(1.0 - fouling * l.load(hours)), 0.05);
+                             }
                              env.k = p[Param::k_HDT];
+                             if (falling != 0) { // falling_rate_drying, simple form
+                                 const T depth = properties::math::minOf(
+                                     properties::math::maxOf(
+                                         T((kModelCriticalMoisture - l.state(0)) / kModelCriticalMoisture), 0.0),
+                                     1.0);
+                                 env.dryingFactor = 1.0 - falling * depth;
+                             }
                              return generic::tubeRates(l.state(0), l.state(1), env, p, sw);
                          });
 }
@@ -191,7 +236,11 @@ bool conveyorEval(const void* c, double s, std::size_t first, std::size_t count,
     return forParcels<2>(c, first, count, y, ydot,
                          [s](const SectionContext& x, const ParameterSet& p,
                              const properties::ModelSwitches& sw, const auto& l) {
-                             return generic::conveyorRates(l.state(0), l.state(1), ambientAt(x, l, s), p, sw);
+                             auto env = ambientAt(x, l, s);
+                             if (const double reabsorption = p[Param::theta_reabs]; reabsorption != 0) {
+                                 env.extraUptake = reabsorption * 1e-4 * env.rh; // ambient_reabsorption
+                             }
+                             return generic::conveyorRates(l.state(0), l.state(1), env, p, sw);
                          });
 }
 
@@ -242,7 +291,7 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
     const std::size_t n = rows.size();
     ParameterSet p = params; // CVODES perturbs this copy in place
     const double tauH = p[Param::tau_HDT];
-    const double tauC = p[Param::tau_conv];
+    const double tauC = p[Param::tau_conv] + p[Param::dtau_conv]; // transport_delay_error
     const double tW = p[Param::t_W];
 
     SensitivitySpec spec;
@@ -457,6 +506,87 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
     return res;
 }
 
+/// The outlet moisture as the meter reports it: the moisture_meter_lag and moisture_meter_offset
+/// extensions (first-order lag, then a constant offset in % wb) applied to the predicted X_out
+/// and to its sensitivities. A lag needs every row from the first: the run then covers them all.
+Expected<SimulationResult> simulateMeasured(const LineInputs& in, const ParameterSet& params,
+                                            const SimulationOptions& o, const std::vector<std::size_t>& rows,
+                                            const std::vector<Param>& odeSens) {
+    const double tauMeter = params[Param::tau_meter];
+    const double offsetPct = params[Param::X_meter_offset];
+    if (tauMeter <= 0 && offsetPct == 0) {
+        return simulateCore(in, params, o, rows, odeSens);
+    }
+    std::vector<std::size_t> runRows = rows;
+    const bool contiguous = [&] {
+        for (std::size_t j = 0; j < rows.size(); ++j) {
+            if (rows[j] != j) {
+                return false;
+            }
+        }
+        return true;
+    }();
+    if (tauMeter > 0 && !contiguous) {
+        const std::size_t last = rows.empty() ? 0 : *std::max_element(rows.begin(), rows.end());
+        runRows.resize(last + 1);
+        for (std::size_t j = 0; j <= last; ++j) {
+            runRows[j] = j;
+        }
+    }
+    auto res = simulateCore(in, params, o, runRows, odeSens);
+    if (!res) {
+        return res;
+    }
+    if (tauMeter > 0) {
+        // Exact for an input linear between rows would need more; holding the input over the
+        // step is what a meter's own discrete filter does, and matches at 1 s sampling.
+        auto filter = [&](std::vector<double>& v) {
+            for (std::size_t j = 1; j < v.size(); ++j) {
+                const double dt = in.timeS[runRows[j]] - in.timeS[runRows[j - 1]];
+                v[j] = v[j - 1] + (v[j] - v[j - 1]) * (1 - std::exp(-dt / tauMeter));
+            }
+        };
+        filter(res->xOutDb);
+        for (auto& sens : res->sensitivities) {
+            filter(sens.dXOut);
+        }
+    }
+    if (offsetPct != 0) {
+        for (std::size_t j = 0; j < res->xOutDb.size(); ++j) {
+            const double x = res->xOutDb[j];
+            const double wet = units::dryToWetPct(x) + offsetPct;
+            const double shifted = units::wetPctToDry(wet);
+            // Chain rule through wet basis: dX'/dX = (dX'/dw)(dw/dX).
+            const double slope = (100.0 / ((100.0 - wet) * (100.0 - wet))) * (100.0 / ((1 + x) * (1 + x)));
+            res->xOutDb[j] = shifted;
+            for (auto& sens : res->sensitivities) {
+                sens.dXOut[j] *= slope;
+            }
+        }
+    }
+    if (runRows.size() != rows.size()) {
+        auto pick = [&](std::vector<double>& v) {
+            std::vector<double> out(rows.size());
+            for (std::size_t j = 0; j < rows.size(); ++j) {
+                out[j] = v[rows[j]];
+            }
+            v = std::move(out);
+        };
+        for (auto* v : {&res->xOutDb, &res->tOutK, &res->xHdtDb, &res->tHdtK, &res->proxyXHdtDb, &res->proxyTHdtK,
+                        &res->proxyXConvDb, &res->proxyTConvK, &res->proxyXMixDb, &res->proxyTMixK}) {
+            pick(*v);
+        }
+        for (auto& sens : res->sensitivities) {
+            pick(sens.dXOut);
+            pick(sens.dTOut);
+            pick(sens.dXHdt);
+            pick(sens.dTHdt);
+        }
+        res->rows = rows;
+    }
+    return res;
+}
+
 } // namespace
 
 Status SimulationOptions::validate() const {
@@ -484,7 +614,7 @@ const std::vector<std::string>& proxyNames() {
 }
 
 double totalDelay(const ParameterSet& p) {
-    return p[Param::tau_HDT] + p[Param::tau_conv] + p[Param::t_W];
+    return p[Param::tau_HDT] + p[Param::tau_conv] + p[Param::dtau_conv] + p[Param::t_W];
 }
 
 Expected<SimulationResult> simulateLine(const LineInputs& inputs, const ParameterSet& params,
@@ -496,6 +626,9 @@ Expected<SimulationResult> simulateLine(const LineInputs& inputs, const Paramete
     }
     if (auto st = params.validate(); !st) {
         return st.error();
+    }
+    if (params[Param::tau_conv] + params[Param::dtau_conv] < 1.0) {
+        return Error{ErrorKind::BadInput, "dtau_conv", "the conveyor transport time tau_conv + dtau_conv must be at least 1 s"};
     }
     if (auto st = inputs.validate(); !st) {
         return st.error();
@@ -518,7 +651,7 @@ Expected<SimulationResult> simulateLine(const LineInputs& inputs, const Paramete
     for (Param q : options.sensitivities) {
         (properties::info(q).duration ? durationSens : odeSens).push_back(q);
     }
-    auto res = simulateCore(inputs, params, options, rows, odeSens);
+    auto res = simulateMeasured(inputs, params, options, rows, odeSens);
     if (!res) {
         return res;
     }
@@ -533,9 +666,12 @@ Expected<SimulationResult> simulateLine(const LineInputs& inputs, const Paramete
         ParameterSet up = params;
         ParameterSet dn = params;
         up[q] = v + h;
-        dn[q] = v - h;
-        auto ru = simulateCore(inputs, up, plain, rows, {});
-        auto rd = simulateCore(inputs, dn, plain, rows, {});
+        // At a lower bound (a meter lag of 0) the difference is one-sided.
+        const bool oneSided = v - h < properties::info(q).lower;
+        dn[q] = oneSided ? v : v - h;
+        const double span = oneSided ? h : 2 * h;
+        auto ru = simulateMeasured(inputs, up, plain, rows, {});
+        auto rd = simulateMeasured(inputs, dn, plain, rows, {});
         if (!ru || !rd) {
             return ru ? rd.error() : ru.error();
         }
@@ -544,7 +680,7 @@ Expected<SimulationResult> simulateLine(const LineInputs& inputs, const Paramete
         const auto diff = [&](const std::vector<double>& a, const std::vector<double>& b) {
             std::vector<double> d(a.size());
             for (std::size_t i = 0; i < a.size(); ++i) {
-                d[i] = (a[i] - b[i]) / (2 * h);
+                d[i] = (a[i] - b[i]) / span;
             }
             return d;
         };

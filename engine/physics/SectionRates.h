@@ -16,9 +16,10 @@ using properties::ParameterSet;
 template <class T> struct TubeEnvironmentT {
     T tGasK{};                 ///< gas temperature around the parcel (PBM: T_hot)
     double wGas = 0;           ///< humidity ratio of the gas (PBM: parameter w)
-    double h = 0;              ///< heat-transfer coefficient [W/(m²·K)] (PBM: h_HDT)
-    double k = 0;              ///< mass-transfer coefficient [m/s] (PBM: k_HDT)
-    double dryingFactor = 1.0; ///< multiplies Eq. 10 (plant's falling-rate mechanism; PBM: 1)
+    // Eigen's Pack2 leaves its elements uninitialised by default: every member starts from a value.
+    T h = properties::math::constant<T>(0.0); ///< heat-transfer coefficient [W/(m²·K)] (h_HDT, less fouling)
+    double k = 0;                             ///< mass-transfer coefficient [m/s] (PBM: k_HDT)
+    T dryingFactor = properties::math::constant<T>(1.0); ///< multiplies Eq. 10 (falling rate; paper: 1)
 };
 using TubeEnvironment = TubeEnvironmentT<double>;
 
@@ -38,7 +39,7 @@ using SectionRates = SectionRatesT<double>;
 template <class T> struct AmbientEnvironmentT {
     T tAirK{};
     T rh{};                 ///< [0..1]
-    double extraUptake = 0; ///< added dX/dt [1/s] (plant's ambient re-absorption; PBM: 0)
+    T extraUptake = properties::math::constant<T>(0.0); ///< added dX/dt [1/s] (re-absorption; paper: 0)
     /// Equilibrium moisture X_e of this air when the caller already has it (the line simulator
     /// interpolates it between samples, like the inputs it comes from; hasXe set); otherwise
     /// computed from tAirK and rh with Eq. 5.

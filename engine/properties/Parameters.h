@@ -44,8 +44,21 @@ enum class Param {
     tau_HDT,
     tau_conv,
     tau_act,
+    // Mechanism extensions of CONTRACT.md §4 (discovery): 0 gives back the paper's model.
+    theta_wall,     ///< tube_wall_heat_loss
+    theta_gas,      ///< gas_phase_coupling
+    theta_foul,     ///< heat_transfer_fouling
+    tau_meter,      ///< moisture_meter_lag
+    X_meter_offset, ///< moisture_meter_offset
+    dtau_conv,      ///< transport_delay_error
+    theta_fall,     ///< falling_rate_drying
+    theta_reabs,    ///< ambient_reabsorption
 };
-inline constexpr int kParamCount = 31;
+inline constexpr int kParamCount = 39;
+/// @brief The first mechanism-extension parameter; the eight from here on are, in order, the
+/// mechanisms of CONTRACT.md §4.
+inline constexpr Param kFirstMechanismParam = Param::theta_wall;
+inline constexpr int kMechanismParamCount = 8;
 
 /// @brief One row of the parameter table: symbol, meaning, unit, default, bounds, source.
 struct ParameterInfo {
@@ -65,6 +78,13 @@ struct ParameterInfo {
 const std::array<ParameterInfo, kParamCount>& parameterTable();
 const ParameterInfo& info(Param p);
 std::optional<Param> paramBySymbol(std::string_view symbol);
+
+/// @brief The CONTRACT.md §4 mechanism a parameter extends the model by, if any.
+std::optional<std::string_view> mechanismOf(Param p);
+/// @brief The parameter of a CONTRACT.md §4 mechanism, by its contract name.
+std::optional<Param> mechanismParam(std::string_view mechanism);
+/// @brief Every mechanism-extension parameter, in CONTRACT.md §4 order.
+const std::vector<Param>& mechanismParams();
 
 /// @brief Values of every parameter, indexed by Param. Defaults from the table.
 /// Stored contiguously so that CVODES can perturb them in place for sensitivities.

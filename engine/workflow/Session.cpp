@@ -188,20 +188,6 @@ Status Session::requireData(const std::string& action) const {
     return {};
 }
 
-Status Session::requireSupportedModel(const std::string& action) const {
-    for (const auto& [name, v] : m_model.mechanisms) {
-        if (v.value != 0) {
-            return Error{ErrorKind::BadInput,
-                         action + ": mechanism " + name,
-                         "this version's physics model cannot simulate mechanism extensions yet; remove it "
-                         "from the model file or set its value to 0",
-                         ErrorCode::NotImplemented,
-                         {"mechanism " + name}};
-        }
-    }
-    return {};
-}
-
 Expected<data::DataSetSummary> Session::inspect() const {
     if (auto st = requireData("inspect"); !st) {
         return st.error();
@@ -215,9 +201,6 @@ Expected<SimulateResult> Session::simulate(const SimulateOptions& options, const
         return st.error();
     }
     if (auto st = requireData("simulate"); !st) {
-        return st.error();
-    }
-    if (auto st = requireSupportedModel("simulate"); !st) {
         return st.error();
     }
     auto sims = hybrid::simulatePbm(m_si, m_model, m_model.switches, progress);
@@ -252,9 +235,6 @@ Expected<CalibrateResult> Session::calibrate(const CalibrateOptions& options, co
         return st.error();
     }
     if (auto st = requireData("calibrate"); !st) {
-        return st.error();
-    }
-    if (auto st = requireSupportedModel("calibrate"); !st) {
         return st.error();
     }
     calibration::CalibrationOptions co = options.calibration;
@@ -300,9 +280,6 @@ Expected<TrainResult> Session::train(const TrainOptions& options, const Progress
     if (auto st = requireData("train"); !st) {
         return st.error();
     }
-    if (auto st = requireSupportedModel("train"); !st) {
-        return st.error();
-    }
     auto trained = hybrid::trainResidualModels(m_si, m_model, options.residual, options.lstm, progress);
     if (!trained) {
         return trained.error();
@@ -328,9 +305,6 @@ Expected<EvaluateResult> Session::evaluate(const EvaluateOptions& options, const
     if (auto st = requireData("evaluate"); !st) {
         return st.error();
     }
-    if (auto st = requireSupportedModel("evaluate"); !st) {
-        return st.error();
-    }
     auto ev = evaluation::evaluate(m_si, m_model, options.evaluation, progress);
     if (!ev) {
         return ev.error();
@@ -345,9 +319,6 @@ Expected<EvaluateResult> Session::evaluate(const EvaluateOptions& options, const
 
 Expected<hybrid::AblationResult> Session::ablation(const Progress& progress) {
     if (auto st = requireData("ablation"); !st) {
-        return st.error();
-    }
-    if (auto st = requireSupportedModel("ablation"); !st) {
         return st.error();
     }
     auto rows = hybrid::runAblation(m_si, m_model, progress);

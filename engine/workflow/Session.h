@@ -199,7 +199,6 @@ public:
 
 private:
     Status requireData(const std::string& action) const;
-    Status requireSupportedModel(const std::string& action) const;
 
     std::shared_ptr<const data::DataSet> m_dataSet;
     std::string m_dataPath;

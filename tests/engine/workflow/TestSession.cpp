@@ -1,6 +1,7 @@
 // The workflow Session driven directly, as the CLI and the GUI drive it: every action, a
 // rejected load, cancel, stop-and-keep-best, failed steps, model files and the pipeline.
 #include "common/AtomicFile.h"
+#include "common/Units.h"
 #include "io/ModelFile.h"
 #include "workflow/Session.h"
 
@@ -206,13 +207,16 @@ private Q_SLOTS:
         QVERIFY(!st.ok());
         QCOMPARE(st.error().code, ErrorCode::ParameterOutOfRange);
         QCOMPARE(s.model().parameters[Param::h_HDT], h);
-        // A model with a mechanism the physics cannot simulate yet is refused, not ignored.
-        auto model = s.model();
-        model.mechanisms["heat_transfer_fouling"] = {0.1, "1/h", 0.05, 0.15};
-        s.setModel(model);
-        auto sim = s.simulate();
-        QVERIFY(!sim.ok());
-        QCOMPARE(sim.error().code, ErrorCode::NotImplemented);
+        // A mechanism extension in the model is simulated, not ignored: a meter offset of
+        // 0.5 % wb moves every predicted outlet moisture by that much.
+        auto base = s.simulate();
+        QVERIFY(base.ok());
+        QVERIFY(s.setParameter(Param::X_meter_offset, 0.5).ok());
+        auto shifted = s.simulate();
+        QVERIFY(shifted.ok());
+        const double x0 = units::dryToWetPct(base->simulations[0].xOutDb[100]);
+        const double x1 = units::dryToWetPct(shifted->simulations[0].xOutDb[100]);
+        QVERIFY(std::abs(x1 - x0 - 0.5) < 1e-9);
         // Options are validated before any work.
         workflow::EvaluateOptions bad;
         bad.evaluation.horizonSteps = 0;
