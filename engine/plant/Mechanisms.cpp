@@ -5,26 +5,29 @@ namespace drytwin::plant {
 const std::vector<MechanismInfo>& mechanisms() {
     static const std::vector<MechanismInfo> m{
         {Mechanism::TubeWallHeatLoss, "tube_wall_heat_loss",
-         "fraction of the hot-air excess over ambient lost to the wall: T_gas = T_hot - s (T_hot - T_amb)",
-         "-", 0.05, 0.5},
+         "wall-loss NTU of the tube at 16 m/s: the gas approaches ambient as exp(-s x (16/v)^0.8) along "
+         "the tube (x: fraction of the length)",
+         "-", 0.1, 1.0},
         {Mechanism::GasPhaseCoupling, "gas_phase_coupling",
          "multiplier of the physical gas-phase energy and vapour balance along the tube (1 = full coupling)",
          "-", 0.5, 2.0},
         {Mechanism::HeatTransferFouling, "heat_transfer_fouling",
-         "fractional loss of h_HDT at the end of a batch (linear build-up, reset by cleaning)", "-", 0.2,
-         0.8},
-        {Mechanism::MoistureMeterLag, "moisture_meter_lag", "time constant of the outlet moisture meter", "s",
-         30, 600},
+         "asymptotic fractional loss of h_HDT: 1 - s (1 - exp(-t/2400 s)), reset by cleaning between batches",
+         "-", 0.2, 0.8},
+        {Mechanism::MoistureMeterLag, "moisture_meter_lag",
+         "total time constant of the outlet moisture meter (second order: two equal stages)", "s", 30, 600},
         {Mechanism::MoistureMeterOffset, "moisture_meter_offset",
-         "constant offset of the outlet moisture meter", "% wb", 0.2, 3.0},
+         "offset of the outlet moisture meter at 55 °C (it grows 10 % per 10 K of product temperature)", "% wb",
+         0.2, 3.0},
         {Mechanism::TransportDelayError, "transport_delay_error",
-         "conveyor transport time minus its nominal value", "s", 15, 300},
+         "conveyor transport time minus its nominal value (with axial dispersion growing with it)", "s", 15,
+         300},
         {Mechanism::FallingRateDrying, "falling_rate_drying",
-         "fractional slow-down of tube drying at the equilibrium moisture, rising linearly below X_cr = 0.20 "
-         "kg/kg",
+         "fractional slow-down of tube drying at the equilibrium moisture, rising as depth^0.7 below "
+         "X_cr = 0.20 kg/kg",
          "-", 0.5, 1.0},
         {Mechanism::AmbientReabsorption, "ambient_reabsorption",
-         "moisture uptake on the conveyor per unit ambient RH", "1e-4 1/s", 3, 50},
+         "moisture uptake on the conveyor: s 1e-4 RH exp(3 (RH - 0.5)) (1 - X/0.35) [1/s]", "1e-4 1/s", 3, 50},
     };
     return m;
 }

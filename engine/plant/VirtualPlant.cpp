@@ -18,7 +18,10 @@ namespace ph = physics;
 namespace {
 
 constexpr double kKelvin = units::kKelvinOffset;
+// The plant's own forms of the mechanisms (docs/mechanisms.md sets them beside the model's).
 constexpr double kCriticalMoisture = 0.20; // X_cr of the falling-rate mechanism [kg/kg dry]
+constexpr double kFoulingTimeS = 2400;     // deposits approach their asymptote with this time constant
+constexpr double kNominalAirSpeed = 16.0;  // m/s, where the wall-loss NTU is given
 constexpr double kAirHeatCapacity = 1010;  // J/(kg·K)
 constexpr double kTubeAreaM2 = 0.283;      // 0.6 m tube diameter
 
@@ -102,7 +105,7 @@ PlantOptions PlantOptions::demo(unsigned seed) {
     o.seed = seed;
     o.effects[Mechanism::HeatTransferFouling] = 0.1;
     o.effects[Mechanism::GasPhaseCoupling] = 0.1;
-    o.effects[Mechanism::TubeWallHeatLoss] = 0.015;
+    o.effects[Mechanism::TubeWallHeatLoss] = 0.03; // NTU: about 1.5 % of the excess lost on average
     o.effects[Mechanism::MoistureMeterLag] = 20;
     o.unmeasuredDrift = true;
     return o;
@@ -212,10 +215,10 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
         std::vector<double> tHot(n), tHotSp(n);
         std::vector<ParcelOutcome> parcel(n); // parcel entering the tube at sample j
         std::size_t nextParcel = 0;
-        const double batchLength = static_cast<double>(n);
         double sp = kKelvin + 170 + 10 * (uniform(rng) - 0.5);
         double integral = 0;
         double meterState = std::nan("");
+        double meterState2 = std::nan("");
         // PI tuned by SIMC for ≈ 80 s dead time and a 20 s actuator lag (gain ≈ −0.06 %/K),
         // with the inlet-moisture feedforward tobacco dryers commonly have.
         const double kc = 2.0;  // K per % wb
@@ -232,7 +235,8 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
             const auto when = [&](double t) { return frozen ? 0.0 : t; };
             const auto hotAt = [&](double t) { return frozen ? sp : at(tHot, t); };
             double y[4] = {xIn[j], tIn[j], hotAt(tEntry), p0[Param::w]}; // X, T, gas T, gas humidity
-            const double foulingFactor = 1.0 - fouling * (tEntry / batchLength);
+            // Deposits grow towards an asymptotic loss of h; cleaning between batches resets them.
+            const double foulingFactor = 1.0 - fouling * (1.0 - std::exp(-tEntry / kFoulingTimeS));
             const double gasFlow = 0.8 * at(air, when(tEntry)) * kTubeAreaM2; // kg/s of hot air
             const double loadRatio = at(feed, when(tEntry)) / (1.0 + xIn[j]) / gasFlow;
             rk4<4>(y, 0.0, tauH, static_cast<int>(std::ceil(tauH / 0.25)),
@@ -242,7 +246,16 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
                        ph::TubeEnvironment env;
                        // Gas around the parcel: the inlet air (less the wall loss) minus the cooling by
                        // the material so far, carried in v[2] relative to the inlet temperature.
-                       env.tGasK = tHotNow - wallLoss * (tHotNow - at(tAmb, t)) + (v[2] - hotAt(tEntry));
+                       // The wall takes heat along the tube: the gas approaches ambient exponentially
+                       // with the distance travelled, faster at low air speed (less turbulent
+                       // transport to the wall is outweighed by the longer contact per kg of air).
+                       double tWallGas = tHotNow;
+                       if (wallLoss > 0) {
+                           const double ntu = wallLoss * (s / tauH) *
+                                              std::pow(kNominalAirSpeed / std::max(4.0, at(air, t)), 0.8);
+                           tWallGas = at(tAmb, t) + (tHotNow - at(tAmb, t)) * std::exp(-ntu);
+                       }
+                       env.tGasK = tWallGas + (v[2] - hotAt(tEntry));
                        env.wGas = v[3];
                        env.h = p0[Param::h_HDT] * foulingFactor;
                        env.k = p0[Param::k_HDT] * at(kDrift, t);
@@ -250,7 +263,7 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
                            const double xe = properties::equilibriumMoisture(v[1], 1e-6, p0);
                            const double depth =
                                std::clamp((kCriticalMoisture - v[0]) / (kCriticalMoisture - xe), 0.0, 1.0);
-                           env.dryingFactor = 1.0 - fallingRate * depth;
+                           env.dryingFactor = 1.0 - fallingRate * std::pow(depth, 0.7);
                        }
                        const auto r = ph::tubeRates(v[0], v[1], env, p0, sw);
                        d[0] = r.dXdt;
@@ -267,7 +280,12 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
             rk4<2>(c, 0.0, tauC, static_cast<int>(std::ceil(tauC / 2.0)),
                    [&](double s, const double* v, double* d) {
                        const double t = when(tConvIn + s);
-                       ph::AmbientEnvironment env{at(tAmb, t), at(rh, t), reabsorption * 1e-4 * at(rh, t)};
+                       // Humid air loads the surface faster than linearly in RH, and a drier leaf
+                       // takes up more.
+                       const double rhNow = at(rh, t);
+                       const double uptake = reabsorption * 1e-4 * rhNow * std::exp(3.0 * (rhNow - 0.5)) *
+                                             std::max(0.0, 1.0 - v[0] / 0.35);
+                       ph::AmbientEnvironment env{at(tAmb, t), rhNow, uptake};
                        const auto r = ph::conveyorRates(v[0], v[1], env, p0, sw);
                        d[0] = r.dXdt;
                        d[1] = r.dTdt;
@@ -327,16 +345,37 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
                 ++nextParcel;
             }
             const ParcelOutcome hdt = outcomeAt(t, tauH);
-            const ParcelOutcome out = outcomeAt(t, tauTotal);
+            ParcelOutcome out = outcomeAt(t, tauTotal);
+            if (delayError != 0) {
+                // A belt whose transport time is off also spreads the material: the outlet sees
+                // a moving average over a window that widens with the error (axial dispersion).
+                const double halfWidth = 2.0 + 0.15 * std::abs(delayError);
+                const int points = 9;
+                ParcelOutcome sum;
+                for (int i = 0; i < points; ++i) {
+                    const double shift = halfWidth * (2.0 * i / (points - 1) - 1.0);
+                    const ParcelOutcome o2 = outcomeAt(std::max(0.0, t + shift), tauTotal);
+                    sum.xOut += o2.xOut / points;
+                    sum.tOut += o2.tOut / points;
+                }
+                out.xOut = sum.xOut;
+                out.tOut = sum.tOut;
+            }
             // Instruments.
             double xOutMeasPct = 100 * out.xOut / (1 + out.xOut);
             if (meterLag > 0) {
-                meterState = std::isnan(meterState)
-                                 ? xOutMeasPct
-                                 : meterState + (xOutMeasPct - meterState) * (1 - std::exp(-1.0 / meterLag));
-                xOutMeasPct = meterState;
+                // Second order: a sample line and the sensor, each with half the time constant.
+                const double a = 1 - std::exp(-2.0 / meterLag);
+                if (std::isnan(meterState)) {
+                    meterState = meterState2 = xOutMeasPct;
+                }
+                meterState += (xOutMeasPct - meterState) * a;
+                meterState2 += (meterState - meterState2) * a;
+                xOutMeasPct = meterState2;
             }
-            xOutMeasPct += meterOffset + 0.02 * normal(rng);
+            // The offset of a meter calibrated at 55 °C grows with the product's temperature.
+            xOutMeasPct += meterOffset * (1.0 + 0.1 * (units::kelvinToCelsius(out.tOut) - 55.0) / 10.0) +
+                           0.02 * normal(rng);
             const double tOutMeas = out.tOut + 0.03 * normal(rng);
             const double xHdtPct = 100 * hdt.xHdt / (1 + hdt.xHdt) + 0.03 * normal(rng);
             const double tHdtMeas = hdt.tHdt + 0.05 * normal(rng);
