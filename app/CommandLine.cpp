@@ -81,6 +81,13 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     generate->add_option("--effect", o.effects, "NAME[=STRENGTH] of a CONTRACT.md §4 mechanism; repeatable")
         ->excludes(demo);
     generate->add_option("--truth", o.truthPath, "write the hidden truth (parameters, effects) here");
+    generate
+        ->add_option("--periodic", o.periodic,
+                     "PERIOD_S:AMPLITUDE_K of an unmeasured periodic swing of the drying gas temperature "
+                     "(matches no mechanism: discover must report it as unexplained)")
+        ->excludes(demo);
+    generate->add_flag("--drift", o.drift, "unmeasured slow random-walk drift of the leaf's drying (as in --demo)")
+        ->excludes(demo);
     reg(generate, runGenerate);
 
     auto* simulate =
@@ -135,8 +142,12 @@ CommandLine::CommandLine() : m_impl(new Impl) {
 
     auto* discover = app.add_subcommand("discover", "find what the simulation gets wrong and name the cause");
     addData(discover);
-    discover->add_option("--json", o.jsonPath, "write the findings as JSON");
-    reg(discover, [](const CommandOptions&) { return notImplemented("discover"); });
+    discover->add_option("--model", o.modelPath,
+                         "model file to start from (default: the paper's parameters, h_HDT and k_HDT fitted first)");
+    discover->add_option("--json", o.jsonPath, "write the findings as JSON (CONTRACT.md §3)");
+    discover->add_option("--out-model", o.outPath, "write the extended model file here");
+    discover->add_option("--max-causes", o.maxCauses, "causes added one at a time, at most")->capture_default_str();
+    reg(discover, runDiscover);
 
     auto* mpc = app.add_subcommand("mpc", "closed-loop what-if scenario, one row per controller model");
     addData(mpc);

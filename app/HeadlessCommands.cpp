@@ -124,6 +124,12 @@ int runGenerate(const CommandOptions& o) {
     go.plant.samples = o.samples;
     go.outFolder = o.outPath;
     go.truthPath = o.truthPath;
+    go.plant.unmeasuredDrift = go.plant.unmeasuredDrift || o.drift;
+    if (!o.periodic.empty()) {
+        if (std::sscanf(o.periodic.c_str(), "%lf:%lf", &go.plant.hiddenPeriodS, &go.plant.hiddenAmplitudeK) != 2) {
+            return fail(Error{ErrorKind::Usage, "--periodic " + o.periodic, "expected PERIOD_S:AMPLITUDE_K"});
+        }
+    }
     for (const auto& e : o.effects) {
         const auto eq = e.find('=');
         const std::string name = e.substr(0, eq);
@@ -408,6 +414,85 @@ int runAblation(const CommandOptions& o) {
     printAblation(*result);
     if (!o.jsonPath.empty()) {
         if (auto st = writeFileAtomically(o.jsonPath, io::ablationJson(*result)); !st) {
+            return fail(st.error());
+        }
+    }
+    return 0;
+}
+
+int runDiscover(const CommandOptions& o) {
+    workflow::DiscoverOptions options;
+    options.discovery.maxCauses = o.maxCauses;
+    workflow::Session session;
+    int rc = 0;
+    if (auto st = options.validate(); !st) {
+        return fail(st.error());
+    }
+    if (!open(o, session, rc)) {
+        return rc;
+    }
+    auto result = session.discover(options, o.progress);
+    if (!result) {
+        return fail(result.error());
+    }
+    const auto& d = result->discovery;
+    std::printf("What the simulation gets wrong (after refitting h_HDT, k_HDT on the training part; residual = "
+                "measured - simulated):\n");
+    std::printf("%-6s %-5s %10s %10s %12s %10s %12s  %s\n", "output", "unit", "bias", "± se", "trend [/h]", "± se",
+                "line [s]", "strongest correlate (differences)");
+    for (const auto& r : d.residuals) {
+        const auto c = r.correlates.empty() ? std::string("-")
+                                            : r.correlates[0].column + " at " + fmt(r.correlates[0].lagS, 0) +
+                                                  " s, ccf " + fmt(r.correlates[0].ccf, 2);
+        std::printf("%-6s %-5s %10.4f %10.4f %12.4f %10.4f %12s  %s\n", r.output.c_str(), r.unit.c_str(), r.bias,
+                    r.biasSe, r.trendPerHour, r.trendSe,
+                    r.peakPowerRatio > 1 ? (fmt(r.peakPeriodS, 0) + " (x" + fmt(r.peakPowerRatio, 1) + ")").c_str() : "-",
+                    c.c_str());
+    }
+    std::printf("\nCandidate causes (score test on the training part, HAC variance, Holm-corrected):\n");
+    std::printf("%-24s %8s %10s %10s %12s %14s\n", "cause", "z", "p", "p (Holm)", "fitted", "train loss");
+    for (const auto& c : d.ranking) {
+        std::printf("%-24s %8.2f %10.3g %10.3g %12s %14s\n", c.cause.c_str(), c.score, c.pValue, c.pHolm,
+                    c.fitted ? "yes" : "no",
+                    c.fitted ? (fmt(c.fitLossBefore, 4) + " -> " + fmt(c.fitLossAfter, 4)).c_str() : "-");
+    }
+    std::printf("\nVerdict: %s\n", d.verdict.c_str());
+    for (const auto& f : d.findings) {
+        std::printf("\n* %s\n  %s\n", f.cause.c_str(), f.evidence.c_str());
+    }
+    for (const auto& s : d.unexplained) {
+        std::printf("\nUnexplained (%s): %s", s.output.c_str(), s.type.c_str());
+        if (s.type == "periodic") {
+            std::printf(", period %.0f s, power x%.1f over its background", s.periodS, s.strength);
+        } else if (s.type == "lagged_input") {
+            std::printf(", %s at %.0f s (ccf %.2f)", s.column.c_str(), s.lagS, s.strength);
+        } else if (s.type == "batch_shift") {
+            std::printf(", batches");
+            for (const auto& b : s.batches) {
+                std::printf(" %s", b.c_str());
+            }
+        } else {
+            std::printf(", %+.3g per hour", s.strength);
+        }
+        std::printf("\n");
+    }
+    if (result->hasHybrid) {
+        std::printf("\nPGRL-CC retrained on top, held-out one-step MAE: X_out %.4f -> %.4f %% wb, T_out %.4f -> %.4f °C\n",
+                    result->hybridMaeMoistureBefore, result->hybridMaeMoistureAfter,
+                    result->hybridMaeTemperatureBefore, result->hybridMaeTemperatureAfter);
+    }
+    std::printf("\n%.1f s\n", result->ending.elapsedSeconds);
+    if (!o.jsonPath.empty()) {
+        if (auto st = writeFileAtomically(o.jsonPath, io::discoveryJson(d, result->hasHybrid, result->hybridMaeMoistureBefore,
+                                                                     result->hybridMaeMoistureAfter,
+                                                                     result->hybridMaeTemperatureBefore,
+                                                                     result->hybridMaeTemperatureAfter));
+            !st) {
+            return fail(st.error());
+        }
+    }
+    if (!o.outPath.empty()) {
+        if (auto st = io::writeModelFile(result->extendedModel, o.outPath); !st) {
             return fail(st.error());
         }
     }

@@ -22,6 +22,9 @@ struct CommandOptions {
     int batches = 10;
     int samples = 6300;
     bool demo = false;
+    std::string periodic; ///< generate: PERIOD_S:AMPLITUDE_K of a hidden periodic disturbance
+    bool drift = false;   ///< generate: unmeasured random-walk drift
+    int maxCauses = 3;    ///< discover
     std::vector<std::string> effects;
     std::vector<std::string> freeParameters;
     std::vector<std::string> bounds;
@@ -45,6 +48,7 @@ int runCalibrate(const CommandOptions& o);
 int runEvaluate(const CommandOptions& o);
 int runTrain(const CommandOptions& o);
 int runAblation(const CommandOptions& o);
+int runDiscover(const CommandOptions& o);
 int runPipeline(const CommandOptions& o);
 
 } // namespace drytwin::app

@@ -320,7 +320,7 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
         return loss;
     };
 
-    const int globalEvals =
+    const int globalEvals = !options.globalSearch ? 0 :
         std::min(options.maxEvaluations / 2,
                  options.globalEvaluations > 0 ? options.globalEvaluations : 60 * static_cast<int>(np));
     state.budget =
@@ -347,7 +347,9 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
         }
     };
     std::vector<double> x = state.bestUnit;
-    run(nlopt::GN_CRS2_LM, globalEvals, x);
+    if (globalEvals > 0) {
+        run(nlopt::GN_CRS2_LM, globalEvals, x);
+    }
     if (state.cancelled) {
         return cancelledError("calibrate");
     }
@@ -380,7 +382,7 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
     // The sensitivity run needs more solver steps than a plain one; if it fails, the fit
     // stands and the intervals are reported as unknown (NaN).
     Residuals at;
-    const bool withSensitivities = problem.residuals(result.parameters, true, at, &why);
+    const bool withSensitivities = options.intervals && problem.residuals(result.parameters, true, at, &why);
     if (!withSensitivities && !problem.residuals(result.parameters, false, at, &why)) {
         return Error{ErrorKind::Numerical, "calibration result", "the model fails at the optimum: " + why};
     }

@@ -33,6 +33,8 @@ struct CalibrationOptions {
     unsigned seed = 1;
     int maxEvaluations = 2000; ///< cap on loss evaluations, both phases together
     int globalEvaluations = 0; ///< 0: 60 per free parameter
+    bool globalSearch = true;  ///< false: BOBYQA from the start point only (a refit near a known fit)
+    bool intervals = true;     ///< false: skip the sensitivity run behind the Fisher intervals (NaN)
     double localRelTol = 1e-6; ///< BOBYQA's relative tolerance on the parameters
     physics::SimulationOptions simulation;
     Status validate() const;

@@ -165,4 +165,108 @@ std::string simulationCsv(const std::vector<data::SiBatch>& batches,
     return out;
 }
 
+std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, double hybridMaeXBefore,
+                          double hybridMaeXAfter, double hybridMaeTBefore, double hybridMaeTAfter) {
+    const auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+    json j;
+    j["verdict"] = r.verdict;
+    j["units"] = {{"moisture", "% wb"}, {"temperature", "°C"}};
+    j["findings"] = json::array();
+    for (const auto& f : r.findings) {
+        const auto& g = f.gain;
+        j["findings"].push_back(
+            {{"cause", f.cause},
+             {"parameter",
+              {{"name", std::string(properties::info(f.parameter).symbol)},
+               {"value", num(f.value)},
+               {"unit", std::string(properties::info(f.parameter).unit)},
+               {"ci95", {num(f.ci95Low), num(f.ci95High)}}}},
+             {"explained_fraction", num(f.explainedFraction)},
+             {"evidence", f.evidence},
+             {"gain",
+              {{"split", g.split},
+               {"mae_moisture_before", num(g.maeMoistureBefore)},
+               {"mae_moisture_after", num(g.maeMoistureAfter)},
+               {"mae_temperature_before", num(g.maeTemperatureBefore)},
+               {"mae_temperature_after", num(g.maeTemperatureAfter)},
+               {"r2_moisture_before", num(g.r2MoistureBefore)},
+               {"r2_moisture_after", num(g.r2MoistureAfter)},
+               {"r2_temperature_before", num(g.r2TemperatureBefore)},
+               {"r2_temperature_after", num(g.r2TemperatureAfter)},
+               {"ljung_box_p_moisture_before", num(g.ljungBoxPMoistureBefore)},
+               {"ljung_box_p_moisture_after", num(g.ljungBoxPMoistureAfter)},
+               {"low_frequency_share_before", num(g.lowFrequencyShareBefore)},
+               {"low_frequency_share_after", num(g.lowFrequencyShareAfter)},
+               {"p_value", num(g.pValue)}}}});
+    }
+    j["ranking"] = json::array();
+    for (const auto& c : r.ranking) {
+        json e = {{"cause", c.cause},       {"score", num(c.score)},         {"p_value", num(c.pValue)},
+                  {"p_holm", num(c.pHolm)}, {"fitted", c.fitted},            {"linear_estimate", num(c.linearEstimate)},
+                  {"linear_se", num(c.linearSe)}};
+        if (c.fitted) {
+            e["training_loss_before"] = num(c.fitLossBefore);
+            e["training_loss_after"] = num(c.fitLossAfter);
+        }
+        j["ranking"].push_back(e);
+    }
+    j["unexplained"] = json::array();
+    for (const auto& s : r.unexplained) {
+        json e = {{"signature", s.type}, {"output", s.output}, {"strength", num(s.strength)}};
+        if (s.type == "periodic") {
+            e["period_s"] = num(s.periodS);
+        } else if (s.type == "lagged_input") {
+            e["column"] = s.column;
+            e["lag_s"] = num(s.lagS);
+        } else if (s.type == "batch_shift") {
+            e["batches"] = s.batches;
+        }
+        j["unexplained"].push_back(e);
+    }
+    if (hasHybrid) {
+        j["hybrid"] = {{"model", "pgrl_cc, one step ahead, retrained on each physics model"},
+                       {"mae_moisture_before", num(hybridMaeXBefore)},
+                       {"mae_moisture_after", num(hybridMaeXAfter)},
+                       {"mae_temperature_before", num(hybridMaeTBefore)},
+                       {"mae_temperature_after", num(hybridMaeTAfter)}};
+    }
+    const auto residualsJson = [&](const std::vector<discovery::OutputResidual>& rs) {
+        json a = json::array();
+        for (const auto& o : rs) {
+            json e = {{"output", o.output},
+                      {"unit", o.unit},
+                      {"rows", o.rows},
+                      {"bias", num(o.bias)},
+                      {"bias_se", num(o.biasSe)},
+                      {"trend_per_hour", num(o.trendPerHour)},
+                      {"trend_se", num(o.trendSe)},
+                      {"ljung_box_p", num(o.ljungBoxP)},
+                      {"peak_period_s", num(o.peakPeriodS)},
+                      {"peak_power_ratio", num(o.peakPowerRatio)}};
+            for (const auto& b : o.perBatch) {
+                e["per_batch"].push_back({{"batch", b.batch}, {"mean", num(b.mean)}, {"se", num(b.se)}});
+            }
+            for (const auto& c : o.correlates) {
+                e["correlates"].push_back(
+                    {{"column", c.column}, {"lag_s", c.lagS}, {"ccf", num(c.ccf)}, {"significant", c.significant}});
+            }
+            for (const auto& g : o.regions) {
+                json m = json::array();
+                for (double v : g.mean) {
+                    m.push_back(num(v));
+                }
+                e["by_region"].push_back({{"column", g.column}, {"unit", g.unit}, {"bin_upper", g.binUpper}, {"mean", m}});
+            }
+            a.push_back(e);
+        }
+        return a;
+    };
+    j["residuals_before"] = residualsJson(r.residuals);
+    j["residuals_after"] = residualsJson(r.residualsAfter);
+    j["training_rows"] = r.trainingRows;
+    j["held_out_rows"] = r.heldOutRows;
+    j["elapsed_s"] = r.ending.elapsedSeconds;
+    return j.dump(2) + "\n";
+}
+
 } // namespace drytwin::io

@@ -2,6 +2,7 @@
 
 #include "data/DataSetSummary.h"
 #include "data/SiBatch.h"
+#include "discovery/Discovery.h"
 #include "hybrid/Evaluation.h"
 #include "hybrid/HybridTraining.h"
 #include "hybrid/ResidualDiagnostics.h"
@@ -27,5 +28,9 @@ std::string inspectJson(const data::DataSetSummary& summary);
 /// in file units, the predictions in file units and the proxy states in SI units.
 std::string simulationCsv(const std::vector<data::SiBatch>& batches,
                           const std::vector<physics::SimulationResult>& simulations);
+
+/// @brief The JSON of CONTRACT.md §3 for `discover`, with the residual analysis beside it.
+std::string discoveryJson(const discovery::DiscoveryResult& result, bool hasHybrid, double hybridMaeXBefore,
+                          double hybridMaeXAfter, double hybridMaeTBefore, double hybridMaeTAfter);
 
 } // namespace drytwin::io

@@ -538,12 +538,18 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& in, const Paramete
         return res;
     }
     if (tauMeter > 0) {
-        // Exact for an input linear between rows would need more; holding the input over the
-        // step is what a meter's own discrete filter does, and matches at 1 s sampling.
+        // Exact first-order response to an input linear between rows: as τ → 0 it tends to the
+        // input minus τ times its slope, so the sensitivity at τ = 0 is −dX/dt, not 0.
         auto filter = [&](std::vector<double>& v) {
+            double prevIn = v.empty() ? 0.0 : v[0];
             for (std::size_t j = 1; j < v.size(); ++j) {
                 const double dt = in.timeS[runRows[j]] - in.timeS[runRows[j - 1]];
-                v[j] = v[j - 1] + (v[j] - v[j - 1]) * (1 - std::exp(-dt / tauMeter));
+                const double a = std::exp(-dt / tauMeter);
+                const double u0 = prevIn;
+                const double u1 = v[j];
+                const double ramp = (u1 - u0) * tauMeter / dt;
+                prevIn = u1;
+                v[j] = u1 - ramp + (v[j - 1] - u0 + ramp) * a;
             }
         };
         filter(res->xOutDb);

@@ -132,6 +132,10 @@ Status PlantOptions::validate() const {
     if (std::abs(tauH - std::round(tauH)) > 1e-9) {
         return Error{ErrorKind::Usage, "tau_HDT", "the plant needs a whole number of seconds"};
     }
+    if (!(hiddenPeriodS >= 10 && hiddenPeriodS <= 1e5) || !(hiddenAmplitudeK >= 0 && hiddenAmplitudeK <= 30)) {
+        return Error{ErrorKind::Usage, "hidden periodic disturbance",
+                     "period must lie in [10, 1e5] s and amplitude in [0, 30] K"};
+    }
     if (!(noiseScale >= 0 && noiseScale <= 10)) {
         return Error{ErrorKind::Usage, "noiseScale", "must lie in [0, 10]"};
     }
@@ -256,6 +260,9 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
                            tWallGas = at(tAmb, t) + (tHotNow - at(tAmb, t)) * std::exp(-ntu);
                        }
                        env.tGasK = tWallGas + (v[2] - hotAt(tEntry));
+                       if (o.hiddenAmplitudeK > 0) {
+                           env.tGasK += o.hiddenAmplitudeK * std::sin(2 * M_PI * t / o.hiddenPeriodS);
+                       }
                        env.wGas = v[3];
                        env.h = p0[Param::h_HDT] * foulingFactor;
                        env.k = p0[Param::k_HDT] * at(kDrift, t);

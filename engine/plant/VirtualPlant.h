@@ -21,6 +21,11 @@ struct PlantOptions {
     bool unmeasuredDrift = false;
     double targetXOutPct = 13.0; ///< setpoint of the plant's own moisture controller
     double noiseScale = 1.0;     ///< multiplies every instrument's noise (0: ideal instruments)
+    /// An unmeasured periodic swing of the gas temperature the material sees (say, steam-pressure
+    /// cycling in the heat exchanger), matching no mechanism of CONTRACT.md §4: discovery must
+    /// report it as unexplained. Period [s] and amplitude [K]; amplitude 0: none.
+    double hiddenPeriodS = 600;
+    double hiddenAmplitudeK = 0;
     /// The plant's true parameters. Defaults: the model table with h_HDT and k_HDT of this
     /// plant (72 W/(m²·K), 0.0236 m/s), which a calibration must find.
     properties::ParameterSet truth = defaultTruth();

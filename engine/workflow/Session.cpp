@@ -9,6 +9,7 @@
 #include "io/ModelFile.h"
 #include "io/Report.h"
 #include "io/ResultFiles.h"
+#include "hybrid/Evaluation.h"
 #include "physics/LineInputs.h"
 #include "plant/PlantExport.h"
 
@@ -314,6 +315,77 @@ Expected<EvaluateResult> Session::evaluate(const EvaluateOptions& options, const
     result.ending = ev->ending;
     result.evaluation = std::move(*ev);
     m_latest.evaluate = result;
+    return result;
+}
+
+Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const Progress& progress) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    if (auto st = requireData("discover"); !st) {
+        return st.error();
+    }
+    auto found = discovery::discover(m_si, m_model, options.discovery, progress);
+    if (!found) {
+        return found.error();
+    }
+    DiscoverResult result;
+    result.extendedModel = m_model;
+    auto& ext = result.extendedModel;
+    ext.parameters = found->parameters;
+    for (const auto& f : found->findings) {
+        ext.mechanisms[f.cause] = {f.value, std::string(properties::info(f.parameter).unit), f.ci95Low, f.ci95High};
+    }
+    hybrid::CalibrationRecord rec;
+    rec.algorithm = "discovery: h_HDT, k_HDT and the named mechanisms refitted on the training part (BOBYQA)";
+    for (properties::Param p : {properties::Param::h_HDT, properties::Param::k_HDT}) {
+        const double v = ext.parameters[p];
+        rec.estimates.push_back({std::string(properties::info(p).symbol), v, std::nan(""), std::nan(""), false});
+    }
+    ext.calibration = rec;
+    // The residual models were learnt on the old physics model: retrain on the extended one.
+    ext.pgrlCc.reset();
+    ext.extInput.reset();
+    if (options.retrainResidual) {
+        const auto pgrlHeldOut = [&](const hybrid::HybridModel& m, std::shared_ptr<const residual::ResidualModel>& out,
+                                     double& maeX, double& maeT) -> Status {
+            auto sims = hybrid::simulatePbm(m_si, m, m.switches);
+            if (!sims) {
+                return sims.error();
+            }
+            auto trained = residual::ResidualModel::train(hybrid::splitViews(m_si, *sims, false), {});
+            if (!trained) {
+                return trained.error();
+            }
+            const auto scored = evaluation::scorePredictions(
+                hybrid::splitViews(m_si, *sims, true),
+                [&](const residual::BatchView& v) { return trained->predictOneStep(v); }, 20);
+            maeX = scored.moisture.mae;
+            maeT = scored.temperature.mae;
+            out = std::make_shared<const residual::ResidualModel>(std::move(*trained));
+            return {};
+        };
+        if (reportProgress(progress, "discover", 0.97, "retraining PGRL-CC on both models")) {
+            return cancelledError("discover");
+        }
+        std::shared_ptr<const residual::ResidualModel> before;
+        hybrid::HybridModel start = m_model;
+        start.parameters = found->baseParameters; // the same refit, without the causes
+        if (auto st = pgrlHeldOut(start, before, result.hybridMaeMoistureBefore, result.hybridMaeTemperatureBefore);
+            !st) {
+            return st.error();
+        }
+        if (auto st = pgrlHeldOut(ext, ext.pgrlCc, result.hybridMaeMoistureAfter, result.hybridMaeTemperatureAfter);
+            !st) {
+            return st.error();
+        }
+        result.hasHybrid = true;
+    }
+    result.ending = found->ending;
+    result.ending.elapsedSeconds = secondsSince(t0);
+    result.discovery = std::move(*found);
+    m_latest.discover = result;
     return result;
 }
 

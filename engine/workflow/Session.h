@@ -7,6 +7,7 @@
 #include "data/Cleaning.h"
 #include "data/DataSetSummary.h"
 #include "data/SiBatch.h"
+#include "discovery/Discovery.h"
 #include "hybrid/Evaluation.h"
 #include "hybrid/HybridModel.h"
 #include "hybrid/HybridTraining.h"
@@ -113,6 +114,25 @@ struct EvaluateResult {
     Ending ending;
 };
 
+/// @brief Discovery on the loaded data with the session's model (CONTRACT.md §2 `discover`).
+struct DiscoverOptions {
+    discovery::DiscoveryOptions discovery;
+    bool retrainResidual = true; ///< retrain PGRL-CC on the starting and the extended model for the hybrid gain
+    Status validate() const { return discovery.validate(); }
+};
+
+struct DiscoverResult {
+    discovery::DiscoveryResult discovery;
+    /// The session's model with the causes added (fitted values and intervals under mechanisms,
+    /// h_HDT and k_HDT refitted), the residual models retrained on top. The session's own model is
+    /// unchanged until setModel() takes this one ("extend the model").
+    hybrid::HybridModel extendedModel;
+    bool hasHybrid = false; ///< PGRL-CC one-step held-out MAE on the starting and the extended model
+    double hybridMaeMoistureBefore = 0, hybridMaeMoistureAfter = 0;       ///< % wb
+    double hybridMaeTemperatureBefore = 0, hybridMaeTemperatureAfter = 0; ///< °C
+    Ending ending;
+};
+
 /// @brief Everything in order into a folder, with a report (CONTRACT.md §2 `pipeline`).
 struct PipelineOptions {
     std::string outFolder;
@@ -147,6 +167,7 @@ struct LatestResults {
     std::optional<TrainResult> train;
     std::optional<EvaluateResult> evaluate;
     std::optional<hybrid::AblationResult> ablation;
+    std::optional<DiscoverResult> discover;
 };
 
 /// @brief What a user does with DryTwin, one method per action, called alike by the command
@@ -176,6 +197,8 @@ public:
     Expected<TrainResult> train(const TrainOptions& options = {}, const Progress& progress = {});
     /// @brief Held-out metrics of every model the session holds.
     Expected<EvaluateResult> evaluate(const EvaluateOptions& options = {}, const Progress& progress = {});
+    /// @brief What the simulation gets wrong, its cause, the extended model and the gain.
+    Expected<DiscoverResult> discover(const DiscoverOptions& options = {}, const Progress& progress = {});
     /// @brief The ablation table (paper Table 3) on the current physics parameters.
     Expected<hybrid::AblationResult> ablation(const Progress& progress = {});
     /// @brief inspect, calibrate, train, evaluate and ablation in order, each result written to

@@ -1,0 +1,157 @@
+#pragma once
+
+#include "calibration/Calibration.h"
+#include "common/Error.h"
+#include "common/Progress.h"
+#include "data/SiBatch.h"
+#include "hybrid/HybridModel.h"
+#include "properties/Parameters.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace drytwin::discovery {
+
+/// @brief Options of a discovery run. Every choice is made on the training part of the
+/// chronological split; the held-out part only judges the gain.
+struct DiscoveryOptions {
+    double trainFraction = 0.7;    ///< chronological split (paper §IV.A)
+    /// Every STRIDE-th kept training row enters the tests and fits; 0: chosen so that about
+    /// 1,000 rows do (the fits' cost grows with them, the tests' power hardly beyond that).
+    std::size_t subsetStride = 0;
+    /// Screening: a candidate is fitted when its score test (HAC variance) has p below this in the
+    /// direction that helps. Deliberately liberal; the confirmatory decision is the held-out test.
+    double screenAlpha = 0.05;
+    /// Level of the one-sided held-out Diebold-Mariano test that names a cause, Bonferroni-divided
+    /// over the rounds (maxCauses): the held-out part never chose the candidate, so one test per
+    /// round is a valid confirmation.
+    double gainAlpha = 0.05;
+    /// A named cause must remove at least this share of the held-out squared error left.
+    double minExplainedFraction = 0.15;
+    int maxCauses = 3;             ///< causes added one at a time, at most this many
+    int candidatesToFit = 3;       ///< significant candidates fitted per round, best score first
+    int maxEvaluationsPerFit = 120;
+    calibration::LossWeights weights; ///< as in calibration: 1 K weighs like 0.1 % wb
+    Status validate() const;
+};
+
+/// @brief One output's residual at a glance (question 1: what does the simulation get wrong?).
+/// Residual = measured − simulated; moisture in % wb, temperature in °C.
+struct OutputResidual {
+    std::string output; ///< "X_out", "T_out", "X_hdt", "T_hdt"
+    std::string unit;   ///< "% wb" or "°C"
+    std::size_t rows = 0;
+    double bias = 0;
+    double biasSe = 0; ///< HAC standard error (per-batch Newey-West, batches independent)
+    struct BatchBias {
+        std::string batch;
+        double mean = 0;
+        double se = 0;
+    };
+    std::vector<BatchBias> perBatch;
+    double withinBatchSd = 0; ///< standard deviation of the residual about its batch means
+    double meanBatchHours = 0;
+    double trendPerHour = 0; ///< pooled within-batch slope [unit/h]
+    double trendSe = 0;
+    double ljungBoxP = 1; ///< whiteness over 20 lags
+    /// Strongest cross-correlations of the differenced residual with differenced inputs and
+    /// proxy states over lags 0..300 s (10 s steps); `significant` beyond 4/√n.
+    struct Correlate {
+        std::string column;
+        double lagS = 0;
+        double ccf = 0;
+        bool significant = false;
+    };
+    std::vector<Correlate> correlates;
+    /// Mean residual per quintile of an operating variable.
+    struct RegionBias {
+        std::string column;
+        std::string unit;
+        std::vector<double> binUpper; ///< upper edge of each bin, in file units
+        std::vector<double> mean;
+    };
+    std::vector<RegionBias> regions;
+    double peakPeriodS = 0;    ///< strongest spectral line of the detrended residual (0: none)
+    double peakPowerRatio = 0; ///< its power over the local background
+    /// The residual every 60 s of every batch, for plots: time since batch start [s], value.
+    std::vector<std::string> seriesBatch;
+    std::vector<double> seriesTimeS;
+    std::vector<double> seriesValue;
+};
+
+/// @brief A candidate cause and its score test (question 2).
+struct Candidate {
+    std::string cause;             ///< CONTRACT.md §4 name
+    properties::Param parameter{}; ///< its model parameter
+    double score = 0;              ///< z of the score test (positive: the mechanism helps)
+    double pValue = 1;             ///< one-sided for parameters bounded at 0, two-sided otherwise
+    double pHolm = 1;              ///< Holm-adjusted over all candidates of the round (reported)
+    double predictedReduction = 0; ///< share of the training loss one Gauss-Newton step would remove
+    double linearEstimate = 0;     ///< one Gauss-Newton step from 0: U / (s̃ᵀs̃)
+    double linearSe = 0;           ///< its HAC standard error
+    bool fitted = false;
+    double fitLossBefore = 0; ///< training loss of the model without it (after its own refit)
+    double fitLossAfter = 0;  ///< training loss with it fitted (h_HDT, k_HDT free again)
+};
+
+/// @brief Held-out accuracy of the physics model before and after a cause (question 4).
+struct Gain {
+    std::string split = "chronological_70_30";
+    double maeMoistureBefore = 0, maeMoistureAfter = 0;       ///< X_out, % wb
+    double maeTemperatureBefore = 0, maeTemperatureAfter = 0; ///< T_out, °C
+    double r2MoistureBefore = 0, r2MoistureAfter = 0;
+    double r2TemperatureBefore = 0, r2TemperatureAfter = 0;
+    double pValue = 1; ///< one-sided Diebold-Mariano (HAC) on the weighted squared error
+    double ljungBoxPMoistureBefore = 0, ljungBoxPMoistureAfter = 0;
+    double lowFrequencyShareBefore = 0, lowFrequencyShareAfter = 0; ///< X_out residual below 0.01 Hz
+    bool hasHybrid = false; ///< PGRL-CC retrained on top of each (filled by the Session)
+    double hybridMaeMoistureBefore = 0, hybridMaeMoistureAfter = 0;
+    double hybridMaeTemperatureBefore = 0, hybridMaeTemperatureAfter = 0;
+};
+
+/// @brief A named cause with its fitted parameter, evidence and gain.
+struct Finding {
+    std::string cause;
+    properties::Param parameter{};
+    double value = 0;
+    double ci95Low = 0, ci95High = 0; ///< value ± 1.96 HAC standard errors of the score step
+    double explainedFraction = 0;     ///< share of the held-out weighted squared error it removes
+    std::string evidence;             ///< one or two sentences an engineer can check on a plot
+    Gain gain;
+};
+
+/// @brief Structure left after the named causes that matches no mechanism (never forced onto one).
+struct Signature {
+    std::string type; ///< "periodic", "lagged_input", "batch_shift", "drift"
+    std::string output;
+    double periodS = 0;              ///< periodic
+    std::string column;              ///< lagged_input
+    double lagS = 0;                 ///< lagged_input
+    std::vector<std::string> batches; ///< batch_shift
+    double strength = 0;             ///< power ratio, |ccf|, shift in units, or trend per hour
+};
+
+/// @brief The answer to the four questions.
+struct DiscoveryResult {
+    std::string verdict; ///< "cause_found", "no_structural_cause", "unexplained_structure"
+    std::vector<OutputResidual> residuals; ///< of the starting model (after its refit of h_HDT, k_HDT)
+    std::vector<OutputResidual> residualsAfter; ///< of the extended model
+    std::vector<Candidate> ranking;        ///< the first round, best score first
+    std::vector<Finding> findings;         ///< in the order they were added
+    std::vector<Signature> unexplained;
+    properties::ParameterSet baseParameters; ///< the starting model after its refit of h_HDT, k_HDT
+    properties::ParameterSet parameters;     ///< the extended model's physics parameters
+    std::size_t trainingRows = 0, heldOutRows = 0;
+    Ending ending;
+};
+
+/// @brief Discovery on measured batches (CONTRACT.md §2 `discover`, §4): residual analysis, a
+/// score test per mechanism with a HAC variance and Holm's correction, fits of the leading
+/// candidates with h_HDT and k_HDT free again, and a held-out Diebold-Mariano test before a cause
+/// is kept; causes are added one at a time until none helps. What is left is reported by its
+/// signature. Thread-safe for distinct arguments.
+Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, const hybrid::HybridModel& model,
+                                   const DiscoveryOptions& options = {}, const Progress& progress = {});
+
+} // namespace drytwin::discovery
