@@ -147,6 +147,10 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     discover->add_option("--json", o.jsonPath, "write the findings as JSON (CONTRACT.md §3)");
     discover->add_option("--out-model", o.outPath, "write the extended model file here");
     discover->add_option("--max-causes", o.maxCauses, "causes added one at a time, at most")->capture_default_str();
+    discover
+        ->add_option("--min-explained", o.minExplained,
+                     "share of the held-out squared error left that a cause must remove to be named")
+        ->capture_default_str();
     reg(discover, runDiscover);
 
     auto* mpc = app.add_subcommand("mpc", "closed-loop what-if scenario, one row per controller model");

@@ -423,6 +423,7 @@ int runAblation(const CommandOptions& o) {
 int runDiscover(const CommandOptions& o) {
     workflow::DiscoverOptions options;
     options.discovery.maxCauses = o.maxCauses;
+    options.discovery.minExplainedFraction = o.minExplained;
     workflow::Session session;
     int rc = 0;
     if (auto st = options.validate(); !st) {
@@ -455,6 +456,11 @@ int runDiscover(const CommandOptions& o) {
         std::printf("%-24s %8.2f %10.3g %10.3g %12s %14s\n", c.cause.c_str(), c.score, c.pValue, c.pHolm,
                     c.fitted ? "yes" : "no",
                     c.fitted ? (fmt(c.fitLossBefore, 4) + " -> " + fmt(c.fitLossAfter, 4)).c_str() : "-");
+    }
+    for (std::size_t i = 0; i < d.rounds.size(); ++i) {
+        const auto& rd = d.rounds[i];
+        std::printf("round %zu: %s%s%s\n", i + 1, rd.best.empty() ? "" : (rd.best + ": ").c_str(),
+                    rd.named ? "named" : "stop, ", rd.reason.c_str());
     }
     std::printf("\nVerdict: %s\n", d.verdict.c_str());
     for (const auto& f : d.findings) {

@@ -2,6 +2,7 @@
 
 #include "common/Progress.h"
 #include "data/Cleaning.h"
+#include "discovery/Discovery.h"
 
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ struct CommandOptions {
     std::string periodic; ///< generate: PERIOD_S:AMPLITUDE_K of a hidden periodic disturbance
     bool drift = false;   ///< generate: unmeasured random-walk drift
     int maxCauses = 3;    ///< discover
+    double minExplained = discovery::DiscoveryOptions{}.minExplainedFraction; ///< discover
     std::vector<std::string> effects;
     std::vector<std::string> freeParameters;
     std::vector<std::string> bounds;

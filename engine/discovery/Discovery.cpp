@@ -855,6 +855,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
         return full.error();
     }
     result.residuals = analyse(pr, *full);
+    std::vector<OutputResidual> currentResiduals = result.residuals; // of the model before each round
     auto currentHeld = heldOut(pr, current);
     if (!currentHeld) {
         return currentHeld.error();
@@ -940,22 +941,29 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
                 bestParams = fit->parameters;
             }
         }
+        Round record;
+        record.candidates = cands;
+        // The ranking a user reads: fitted causes by training loss removed, then the rest by evidence.
+        std::stable_sort(record.candidates.begin(), record.candidates.end(), [](const auto& a, const auto& b) {
+            if (a.fitted != b.fitted) {
+                return a.fitted;
+            }
+            if (a.fitted) {
+                return a.fitLossAfter < b.fitLossAfter;
+            }
+            return a.pValue < b.pValue;
+        });
         if (round == 0) {
-            result.ranking = cands;
-            // The ranking a user reads: fitted causes by training loss removed, then the rest by evidence.
-            std::stable_sort(result.ranking.begin(), result.ranking.end(), [](const auto& a, const auto& b) {
-                if (a.fitted != b.fitted) {
-                    return a.fitted;
-                }
-                if (a.fitted) {
-                    return a.fitLossAfter < b.fitLossAfter;
-                }
-                return a.pValue < b.pValue;
-            });
+            result.ranking = record.candidates;
         }
         if (!bestIndex || !(cands[*bestIndex].fitLossAfter < currentLoss)) {
+            record.reason = bestIndex ? "no fitted candidate lowers the training loss"
+                                      : "no candidate passes the screening test (p < " +
+                                            format("%.2g", options.screenAlpha) + ")";
+            result.rounds.push_back(record);
             break;
         }
+        record.best = cands[*bestIndex].cause;
         const Candidate& chosen = cands[*bestIndex];
         auto afterHeld = heldOut(pr, bestParams);
         if (!afterHeld) {
@@ -965,10 +973,20 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
         const double lossBefore = meanOf(currentHeld->loss);
         const double lossAfter = meanOf(afterHeld->loss);
         const double explained = lossBefore > 0 ? 1.0 - lossAfter / lossBefore : 0;
-        if (!(gain.pValue < options.gainAlpha / std::max(1, options.maxCauses) &&
-              explained >= options.minExplainedFraction)) {
-            break; // it fits the training part but does not predict clearly better: not a cause
+        record.heldOutPValue = gain.pValue;
+        record.explainedFraction = explained;
+        const double level = options.gainAlpha; // fixed-sequence testing (DiscoveryOptions::gainAlpha)
+        if (!(gain.pValue < level && explained >= options.minExplainedFraction)) {
+            // It fits the training part but does not predict clearly better: not a cause.
+            record.reason = gain.pValue >= level
+                                ? format("held-out gain not significant (p = %.2g, needs < %.2g)", gain.pValue, level)
+                                : format("removes only %.0f %% of the held-out error left (needs %.0f %%)",
+                                         100 * explained, 100 * options.minExplainedFraction);
+            result.rounds.push_back(record);
+            break;
         }
+        record.named = true;
+        result.rounds.push_back(record);
         // Interval: the sandwich (HAC) standard error at the fit, from the score of the fitted model.
         std::vector<Param> sensAt = nuisance;
         sensAt.push_back(chosen.parameter);
@@ -995,7 +1013,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
                                         (gain.maeTemperatureBefore - gain.maeTemperatureAfter) /
                                             std::max(1e-12, gain.maeTemperatureBefore);
         const OutputResidual* before = nullptr;
-        for (const auto& o : result.residuals) {
+        for (const auto& o : currentResiduals) {
             if (o.output == (moistureHelped ? "X_out" : "T_out")) {
                 before = &o;
             }
@@ -1012,6 +1030,9 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
             f.ci95High, gain.maeMoistureBefore, gain.maeMoistureAfter, gain.maeTemperatureBefore,
             gain.maeTemperatureAfter, gain.pValue, 100 * f.explainedFraction, lookFor(chosen.parameter));
         result.findings.push_back(f);
+        if (auto sims = physics::simulateBatches(pr.inputs, bestParams, pr.simulation); sims) {
+            currentResiduals = analyse(pr, *sims);
+        }
         current = bestParams;
         currentLoss = chosen.fitLossAfter;
         *currentHeld = std::move(*afterHeld);

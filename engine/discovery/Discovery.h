@@ -23,9 +23,10 @@ struct DiscoveryOptions {
     /// Screening: a candidate is fitted when its score test (HAC variance) has p below this in the
     /// direction that helps. Deliberately liberal; the confirmatory decision is the held-out test.
     double screenAlpha = 0.05;
-    /// Level of the one-sided held-out Diebold-Mariano test that names a cause, Bonferroni-divided
-    /// over the rounds (maxCauses): the held-out part never chose the candidate, so one test per
-    /// round is a valid confirmation.
+    /// Level of the one-sided held-out Diebold-Mariano test that names a cause. The rounds form a
+    /// fixed sequence: the candidate of each round is chosen on the training part alone, and the
+    /// selection stops at the first round whose held-out test fails, which keeps the chance of
+    /// naming any absent cause at this level (fixed-sequence testing) without dividing it.
     double gainAlpha = 0.05;
     /// A named cause must remove at least this share of the held-out squared error left.
     double minExplainedFraction = 0.15;
@@ -132,12 +133,24 @@ struct Signature {
     double strength = 0;             ///< power ratio, |ccf|, shift in units, or trend per hour
 };
 
+/// @brief One round of the forward selection: what was tested and fitted, and why the best
+/// candidate was named or not (so that a user can see why a suspected cause is absent).
+struct Round {
+    std::vector<Candidate> candidates; ///< fitted first, by training loss; then by evidence
+    std::string best;                  ///< the fitted candidate with the lowest training loss
+    double heldOutPValue = 1;          ///< its one-sided Diebold-Mariano p on the held-out part
+    double explainedFraction = 0;      ///< of the held-out squared error left
+    bool named = false;
+    std::string reason; ///< why it stopped here, when not named
+};
+
 /// @brief The answer to the four questions.
 struct DiscoveryResult {
     std::string verdict; ///< "cause_found", "no_structural_cause", "unexplained_structure"
     std::vector<OutputResidual> residuals; ///< of the starting model (after its refit of h_HDT, k_HDT)
     std::vector<OutputResidual> residualsAfter; ///< of the extended model
     std::vector<Candidate> ranking;        ///< the first round, best score first
+    std::vector<Round> rounds;
     std::vector<Finding> findings;         ///< in the order they were added
     std::vector<Signature> unexplained;
     properties::ParameterSet baseParameters; ///< the starting model after its refit of h_HDT, k_HDT

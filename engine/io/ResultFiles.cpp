@@ -210,6 +210,21 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
         }
         j["ranking"].push_back(e);
     }
+    j["rounds"] = json::array();
+    for (const auto& rd : r.rounds) {
+        json fitted = json::array();
+        for (const auto& c : rd.candidates) {
+            if (c.fitted) {
+                fitted.push_back({{"cause", c.cause}, {"training_loss_after", num(c.fitLossAfter)}});
+            }
+        }
+        j["rounds"].push_back({{"fitted", fitted},
+                               {"best", rd.best},
+                               {"held_out_p_value", num(rd.heldOutPValue)},
+                               {"explained_fraction", num(rd.explainedFraction)},
+                               {"named", rd.named},
+                               {"reason", rd.reason}});
+    }
     j["unexplained"] = json::array();
     for (const auto& s : r.unexplained) {
         json e = {{"signature", s.type}, {"output", s.output}, {"strength", num(s.strength)}};
