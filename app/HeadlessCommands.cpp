@@ -530,6 +530,12 @@ int runPipeline(const CommandOptions& o) {
     printEvaluation(r.evaluate.evaluation);
     std::printf("\n== ablation ==\n");
     printAblation(r.ablation);
+    std::printf("\n== discover ==\nverdict %s", r.discover.discovery.verdict.c_str());
+    for (const auto& f : r.discover.discovery.findings) {
+        std::printf("; %s (%s = %.4g)", f.cause.c_str(), std::string(properties::info(f.parameter).symbol).c_str(),
+                    f.value);
+    }
+    std::printf("\n");
     std::printf("\n== stages ==\n");
     for (const auto& s : r.stages) {
         std::printf("%-10s %7.1f s ", s.name.c_str(), s.elapsedSeconds);

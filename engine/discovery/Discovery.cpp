@@ -1043,6 +1043,26 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
     if (stop(0.95, "what is left")) {
         return cancelledError("discover");
     }
+    // Later rounds refit the causes named before: report every cause at the extended model's
+    // value, with its interval from the score of the final fit (the others held as nuisance).
+    if (result.findings.size() > 1) {
+        if (auto at = stackAt(pr, current, nuisance); at) {
+            for (auto& f : result.findings) {
+                const auto col = static_cast<int>(std::find(nuisance.begin(), nuisance.end(), f.parameter) - nuisance.begin());
+                std::vector<int> others;
+                for (int i = 0; i < static_cast<int>(nuisance.size()); ++i) {
+                    if (i != col) {
+                        others.push_back(i);
+                    }
+                }
+                const auto sc = scoreTest(*at, others, col);
+                f.value = current[f.parameter];
+                const double se = sc.se > 0 ? sc.se : 0.5 * (f.ci95High - f.ci95Low) / 1.96;
+                f.ci95Low = f.value - 1.96 * se;
+                f.ci95High = f.value + 1.96 * se;
+            }
+        }
+    }
     auto finalSims = physics::simulateBatches(pr.inputs, current, pr.simulation);
     if (!finalSims) {
         return finalSims.error();

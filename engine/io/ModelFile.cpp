@@ -4,6 +4,7 @@
 #include "plant/Mechanisms.h"
 
 #include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 namespace drytwin::io {
@@ -98,6 +99,10 @@ Status writeModelFile(const HybridModel& model, const std::string& path) {
     return writeFileAtomically(path, formatModelFile(model));
 }
 
+namespace {
+Expected<HybridModel> parseModelJson(const json& j, const std::string& name);
+} // namespace
+
 Expected<HybridModel> parseModelFile(const std::string& text, const std::string& name) {
     json j;
     try {
@@ -106,6 +111,19 @@ Expected<HybridModel> parseModelFile(const std::string& text, const std::string&
         return Error{ErrorKind::BadInput, name + ":byte " + std::to_string(e.byte),
                      std::string("invalid JSON: ") + e.what()};
     }
+    // A key of the wrong type (null where a number belongs ...) is an error naming the file, never
+    // an exception across the engine's boundary.
+    try {
+        return parseModelJson(j, name);
+    } catch (const json::exception& e) {
+        return Error{ErrorKind::BadInput, name, std::string("a key has the wrong type: ") + e.what(),
+                     ErrorCode::ModelFileInvalid, {name, "", e.what()}};
+    }
+}
+
+namespace {
+
+Expected<HybridModel> parseModelJson(const json& j, const std::string& name) {
     auto bad = [&](const std::string& key, const std::string& why) {
         return Error{
             ErrorKind::BadInput, name + ": " + key, why, ErrorCode::ModelFileInvalid, {name, key, why}};
@@ -162,8 +180,10 @@ Expected<HybridModel> parseModelFile(const std::string& text, const std::string&
                 est.symbol = symbol;
                 est.value = e.value("value", 0.0);
                 if (e.contains("ci95") && e["ci95"].is_array() && e["ci95"].size() == 2) {
-                    est.ci95Low = e["ci95"][0].get<double>();
-                    est.ci95High = e["ci95"][1].get<double>();
+                    // Unknown intervals are written as null (NaN in JSON has no other form).
+                    const auto bound = [](const json& v) { return v.is_number() ? v.get<double>() : std::nan(""); };
+                    est.ci95Low = bound(e["ci95"][0]);
+                    est.ci95High = bound(e["ci95"][1]);
                 }
                 est.atBound = e.value("at_bound", false);
                 m.calibration->estimates.push_back(est);
@@ -238,6 +258,8 @@ Expected<HybridModel> parseModelFile(const std::string& text, const std::string&
     }
     return m;
 }
+
+} // namespace
 
 Expected<HybridModel> readModelFile(const std::string& path) {
     auto text = readWholeFile(path);

@@ -106,9 +106,47 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
     r +=
         "\nResidual ACF and PSD of every model and the eigenvalues of A before and after the constraint with "
         "their contraction rates are in `diagnostics.json`.\n\n";
-    r += "## Not in this version\n\n`discover` (naming unmodelled mechanisms) and `mpc` (closed-loop "
-         "scenarios) "
-         "are not implemented yet; no results are given for them.\n";
+    if (fs::exists(dir / "discover.json")) {
+        auto disc = readJson(dir / "discover.json");
+        if (!disc) {
+            return disc.error();
+        }
+        const auto& d = *disc;
+        r += "## Discovery: what the simulation gets wrong and why\n\nVerdict: **" + d.value("verdict", std::string()) +
+             "** (score tests with a HAC variance on the training part, fits with h_HDT and k_HDT free, "
+             "held-out Diebold-Mariano confirmation; `discover.json`, extended model `model-extended.json`).\n\n";
+        if (!d["findings"].empty()) {
+            r += "| cause | parameter | value | 95 % interval | MAE X_out before → after [% wb] | MAE T_out before → "
+                 "after [°C] | DM p |\n| --- | --- | --- | --- | --- | --- | --- |\n";
+            for (const auto& f : d["findings"]) {
+                const auto& p = f["parameter"];
+                const auto& g = f["gain"];
+                r += "| " + f.value("cause", std::string()) + " | " + p.value("name", std::string()) + " | " +
+                     num(p["value"]) + " " + p.value("unit", std::string()) + " | [" + num(p["ci95"][0]) + ", " +
+                     num(p["ci95"][1]) + "] | " + num(g["mae_moisture_before"]) + " → " + num(g["mae_moisture_after"]) +
+                     " | " + num(g["mae_temperature_before"]) + " → " + num(g["mae_temperature_after"]) + " | " +
+                     num(g["p_value"], "%.2g") + " |\n";
+            }
+            r += "\n";
+            for (const auto& f : d["findings"]) {
+                r += "- **" + f.value("cause", std::string()) + "**: " + f.value("evidence", std::string()) + "\n";
+            }
+        }
+        for (const auto& u : d["unexplained"]) {
+            r += "- Unexplained structure in " + u.value("output", std::string()) + ": " +
+                 u.value("signature", std::string()) +
+                 (u.contains("period_s") ? ", period " + num(u["period_s"], "%.0f") + " s" : std::string()) + "\n";
+        }
+        for (const auto& rd : d["rounds"]) {
+            if (!rd.value("named", false)) {
+                r += "\nSelection stopped: " + rd.value("best", std::string()) +
+                     (rd.value("best", std::string()).empty() ? "" : ": ") + rd.value("reason", std::string()) + ".\n";
+            }
+        }
+        r += "\n";
+    }
+    r += "## Not in this version\n\n`mpc` (closed-loop scenarios) is not implemented yet; no results are given "
+         "for it.\n";
     const std::string path = (dir / "report.md").string();
     if (auto st = writeFileAtomically(path, r); !st) {
         return st.error();

@@ -139,6 +139,7 @@ struct PipelineOptions {
     CalibrateOptions calibrate;
     TrainOptions train;
     EvaluateOptions evaluate;
+    DiscoverOptions discover;
     Status validate() const;
 };
 
@@ -155,6 +156,7 @@ struct PipelineResult {
     TrainResult train;
     EvaluateResult evaluate;
     hybrid::AblationResult ablation;
+    DiscoverResult discover;
     std::string reportPath;
     std::vector<PipelineStage> stages;
     Ending ending;
@@ -201,7 +203,7 @@ public:
     Expected<DiscoverResult> discover(const DiscoverOptions& options = {}, const Progress& progress = {});
     /// @brief The ablation table (paper Table 3) on the current physics parameters.
     Expected<hybrid::AblationResult> ablation(const Progress& progress = {});
-    /// @brief inspect, calibrate, train, evaluate and ablation in order, each result written to
+    /// @brief inspect, calibrate, train, evaluate, ablation and discover in order, each result written to
     /// the folder as it is done, then report.md. A failed or cancelled stage keeps the files
     /// of the stages before it.
     Expected<PipelineResult> pipeline(const PipelineOptions& options, const Progress& progress = {});

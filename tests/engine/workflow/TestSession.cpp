@@ -268,11 +268,56 @@ private Q_SLOTS:
         QCOMPARE(rewritten["site_notes"]["line"].get<int>(), 2);
         QVERIFY(rewritten.contains("residual_models"));
 
+        // Unknown intervals (NaN, written as null) read back; a wrongly typed key is an error, not a crash.
+        auto withNan = s.model();
+        withNan.calibration->estimates[0].ci95Low = std::nan("");
+        auto nanBack = io::parseModelFile(io::formatModelFile(withNan), "nan.json");
+        QVERIFY2(nanBack.ok(), nanBack ? "" : nanBack.error().message().c_str());
+        QVERIFY(std::isnan(nanBack->calibration->estimates[0].ci95Low));
+        auto wrongType = nlohmann::json::parse(io::formatModelFile(withNan));
+        wrongType["calibration"]["loss_after"] = "small";
+        auto typed = io::parseModelFile(wrongType.dump(), "typed.json");
+        QVERIFY(!typed.ok());
+        QCOMPARE(typed.error().code, ErrorCode::ModelFileInvalid);
+
         // A newer version than this DryTwin reads is refused with the key named.
         j["format_version"] = io::kModelFormatVersion + 1;
         auto newer = io::parseModelFile(j.dump(), "newer.json");
         QVERIFY(!newer.ok());
         QVERIFY(QString::fromStdString(newer.error().message()).contains("format_version"));
+    }
+
+    void discoverExtendsACopyOfTheModel() {
+        workflow::Session s;
+        workflow::OpenOptions o;
+        o.dataPath = m_data.toStdString();
+        QVERIFY(s.open(o).ok());
+        QVERIFY(s.calibrate(quickCalibration()).ok());
+        const auto before = s.model().parameters;
+        auto r = s.discover();
+        QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
+        // The session's model is untouched until the user takes the extended one.
+        QCOMPARE(s.model().parameters[Param::h_HDT], before[Param::h_HDT]);
+        QVERIFY(s.latest().discover.has_value());
+        const auto& ext = r->extendedModel;
+        for (const auto& f : r->discovery.findings) {
+            QCOMPARE(ext.parameters[f.parameter], f.value);
+            QCOMPARE(ext.mechanisms.at(f.cause).ci95High, f.ci95High);
+        }
+        QCOMPARE(ext.parameters[Param::k_HDT], r->discovery.parameters[Param::k_HDT]);
+        QVERIFY(r->hasHybrid && ext.pgrlCc); // the residual model is retrained on the extended model
+        QVERIFY(std::isfinite(r->hybridMaeMoistureAfter));
+        // Extended model files keep the mechanisms with their intervals.
+        const std::string path = m_dir.filePath("extended.json").toStdString();
+        QVERIFY(io::writeModelFile(ext, path).ok());
+        auto back = io::readModelFile(path);
+        QVERIFY(back.ok());
+        for (const auto& f : r->discovery.findings) {
+            QCOMPARE(back->parameters[f.parameter], f.value);
+            QCOMPARE(back->mechanisms.at(f.cause).ci95Low, f.ci95Low);
+        }
+        s.setModel(ext); // "extend the model"
+        QCOMPARE(s.model().parameters[Param::k_HDT], ext.parameters[Param::k_HDT]);
     }
 
     void pipelineWritesEveryStage() {
@@ -293,7 +338,7 @@ private Q_SLOTS:
                 QVERIFY2(std::filesystem::exists(f), f.c_str());
             }
         }
-        QCOMPARE(stages, QStringList({"inspect", "calibrate", "train", "evaluate", "ablation", "report"}));
+        QCOMPARE(stages, QStringList({"inspect", "calibrate", "train", "evaluate", "ablation", "discover", "report"}));
         QCOMPARE(r->ablation.rows.size(), std::size_t(7));
         // The files hold the session's own numbers.
         auto saved = io::readModelFile(p.outFolder + "/model.json");
