@@ -450,6 +450,9 @@ int runDiscover(const CommandOptions& o) {
                     r.peakPowerRatio > 1 ? (fmt(r.peakPeriodS, 0) + " (x" + fmt(r.peakPowerRatio, 1) + ")").c_str() : "-",
                     c.c_str());
     }
+    for (const auto& note : d.notes) {
+        std::printf("note: %s\n", note.c_str());
+    }
     std::printf("\nCandidate causes (score test on the training part, HAC variance, Holm-corrected):\n");
     std::printf("%-24s %8s %10s %10s %12s %14s\n", "cause", "z", "p", "p (Holm)", "fitted", "train loss");
     for (const auto& c : d.ranking) {

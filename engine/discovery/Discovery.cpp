@@ -848,6 +848,30 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
 
     DiscoveryResult result;
     result.baseParameters = current;
+    {
+        bool xHdt = false, tHdt = false;
+        for (const auto& b : batches) {
+            xHdt = xHdt || b.hasXHdt;
+            tHdt = tHdt || b.hasTHdt;
+        }
+        if (!xHdt) {
+            result.notes.push_back("X_hdt_pct is not measured: the tube-outlet moisture cannot separate meter and "
+                                   "conveyor causes from tube causes; outlet channels only");
+        }
+        if (!tHdt) {
+            result.notes.push_back("T_hdt_C is not measured: tube-outlet temperature not used");
+        }
+        bool airVaries = false;
+        for (const auto& b : batches) {
+            for (double v : b.airSpeedMPerS) {
+                airVaries = airVaries || v != b.airSpeedMPerS.front();
+            }
+        }
+        if (!airVaries) {
+            result.notes.push_back("air_speed_m_s is constant (not measured?): gas_phase_coupling works with that one "
+                                   "value and cannot use the air speed's variation");
+        }
+    }
     result.trainingRows = keptTrain;
     result.heldOutRows = keptTest;
     auto full = physics::simulateBatches(pr.inputs, current, pr.simulation);

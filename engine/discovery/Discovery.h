@@ -156,6 +156,8 @@ struct DiscoveryResult {
     properties::ParameterSet baseParameters; ///< the starting model after its refit of h_HDT, k_HDT
     properties::ParameterSet parameters;     ///< the extended model's physics parameters
     std::size_t trainingRows = 0, heldOutRows = 0;
+    /// What the data could not give: channels not measured, inputs that took their default.
+    std::vector<std::string> notes;
     Ending ending;
 };
 

@@ -258,6 +258,7 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                       {"ljung_box_p", num(o.ljungBoxP)},
                       {"peak_period_s", num(o.peakPeriodS)},
                       {"peak_power_ratio", num(o.peakPowerRatio)}};
+            e["series_every_60_s"] = {{"batch", o.seriesBatch}, {"time_s", o.seriesTimeS}, {"value", o.seriesValue}};
             for (const auto& b : o.perBatch) {
                 e["per_batch"].push_back({{"batch", b.batch}, {"mean", num(b.mean)}, {"se", num(b.se)}});
             }
@@ -278,6 +279,7 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
     };
     j["residuals_before"] = residualsJson(r.residuals);
     j["residuals_after"] = residualsJson(r.residualsAfter);
+    j["notes"] = r.notes;
     j["training_rows"] = r.trainingRows;
     j["held_out_rows"] = r.heldOutRows;
     j["elapsed_s"] = r.ending.elapsedSeconds;

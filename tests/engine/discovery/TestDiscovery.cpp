@@ -126,6 +126,23 @@ private Q_SLOTS:
         QVERIFY(periodic);
     }
 
+    void missingOptionalColumnsAreNotedNotFatal() {
+        plant::PlantOptions o;
+        o.effects[Mechanism::MoistureMeterOffset] = 0.3;
+        auto data = plantData(o);
+        for (auto& b : data) { // as if the file had no tube-outlet or air-speed columns
+            b.hasXHdt = b.hasTHdt = false;
+            std::fill(b.xHdtDb.begin(), b.xHdtDb.end(), std::nan(""));
+            std::fill(b.tHdtK.begin(), b.tHdtK.end(), std::nan(""));
+            std::fill(b.airSpeedMPerS.begin(), b.airSpeedMPerS.end(), 16.0);
+        }
+        auto r = discovery::discover(data, hybrid::HybridModel{});
+        QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
+        QCOMPARE(r->notes.size(), std::size_t(3));
+        QVERIFY(!r->findings.empty());
+        QCOMPARE(r->findings.front().cause, std::string("moisture_meter_offset"));
+    }
+
     void badInputAndCancelAreErrors() {
         // Too few rows: a short batch leaves too little to test and to judge.
         plant::PlantOptions o;
