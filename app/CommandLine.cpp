@@ -86,7 +86,9 @@ CommandLine::CommandLine() : m_impl(new Impl) {
                      "PERIOD_S:AMPLITUDE_K of an unmeasured periodic swing of the drying gas temperature "
                      "(matches no mechanism: discover must report it as unexplained)")
         ->excludes(demo);
-    generate->add_flag("--drift", o.drift, "unmeasured slow random-walk drift of the leaf's drying (as in --demo)")
+    generate
+        ->add_flag("--drift", o.drift,
+                   "unmeasured slow random-walk drift of the leaf's drying (as in --demo)")
         ->excludes(demo);
     reg(generate, runGenerate);
 
@@ -142,11 +144,13 @@ CommandLine::CommandLine() : m_impl(new Impl) {
 
     auto* discover = app.add_subcommand("discover", "find what the simulation gets wrong and name the cause");
     addData(discover);
-    discover->add_option("--model", o.modelPath,
-                         "model file to start from (default: the paper's parameters, h_HDT and k_HDT fitted first)");
+    discover->add_option(
+        "--model", o.modelPath,
+        "model file to start from (default: the paper's parameters, h_HDT and k_HDT fitted first)");
     discover->add_option("--json", o.jsonPath, "write the findings as JSON (CONTRACT.md §3)");
     discover->add_option("--out-model", o.outPath, "write the extended model file here");
-    discover->add_option("--max-causes", o.maxCauses, "causes added one at a time, at most")->capture_default_str();
+    discover->add_option("--max-causes", o.maxCauses, "causes added one at a time, at most")
+        ->capture_default_str();
     discover
         ->add_option("--min-explained", o.minExplained,
                      "share of the held-out squared error left that a cause must remove to be named")

@@ -126,7 +126,8 @@ int runGenerate(const CommandOptions& o) {
     go.truthPath = o.truthPath;
     go.plant.unmeasuredDrift = go.plant.unmeasuredDrift || o.drift;
     if (!o.periodic.empty()) {
-        if (std::sscanf(o.periodic.c_str(), "%lf:%lf", &go.plant.hiddenPeriodS, &go.plant.hiddenAmplitudeK) != 2) {
+        if (std::sscanf(o.periodic.c_str(), "%lf:%lf", &go.plant.hiddenPeriodS, &go.plant.hiddenAmplitudeK) !=
+            2) {
             return fail(Error{ErrorKind::Usage, "--periodic " + o.periodic, "expected PERIOD_S:AMPLITUDE_K"});
         }
     }
@@ -277,13 +278,17 @@ void printCalibration(const workflow::CalibrateResult& result) {
 
 void printEvaluation(const evaluation::EvaluationResult& ev) {
     std::printf("held-out part: %s, %zu rows\n", ev.split.c_str(), ev.testRows);
-    std::printf("%-20s %10s %8s %10s %10s %8s %10s | %d-step: %9s %10s\n", "model", "MAE X [%]", "R2 X",
-                "LB p X", "MAE T [C]", "R2 T", "LB p T", ev.multiStepHorizon, "MAE X [%]", "MAE T [C]");
+    std::printf("%-20s %10s %8s %10s %10s %8s %10s %7s | %d-step: %9s %10s %7s\n", "model", "MAE X [%]", "R2 X",
+                "LB p X", "MAE T [C]", "R2 T", "LB p T", "skill X", ev.multiStepHorizon, "MAE X [%]", "MAE T [C]",
+                "skill X");
     for (const auto& m : ev.models) {
-        std::printf("%-20s %10.4f %8.4f %10.3g %10.4f %8.4f %10.3g |          %9.4f %10.4f\n", m.name.c_str(),
-                    m.moisture.mae, m.moisture.r2, m.moisture.ljungBoxP, m.temperature.mae, m.temperature.r2,
-                    m.temperature.ljungBoxP, m.moistureMultiStep.mae, m.temperatureMultiStep.mae);
+        std::printf("%-20s %10.4f %8.4f %10.3g %10.4f %8.4f %10.3g %7.3f |          %9.4f %10.4f %7.3f\n",
+                    m.name.c_str(), m.moisture.mae, m.moisture.r2, m.moisture.ljungBoxP, m.temperature.mae,
+                    m.temperature.r2, m.temperature.ljungBoxP, m.skillMoisture, m.moistureMultiStep.mae,
+                    m.temperatureMultiStep.mae, m.skillMoistureMultiStep);
     }
+    std::printf("skill: MAE over the better of persistence and pbm_residual_hold at the same horizon (< 1 beats "
+                "both)\n");
 }
 
 void printTraining(const workflow::TrainResult& t) {
@@ -437,17 +442,20 @@ int runDiscover(const CommandOptions& o) {
         return fail(result.error());
     }
     const auto& d = result->discovery;
-    std::printf("What the simulation gets wrong (after refitting h_HDT, k_HDT on the training part; residual = "
-                "measured - simulated):\n");
-    std::printf("%-6s %-5s %10s %10s %12s %10s %12s  %s\n", "output", "unit", "bias", "± se", "trend [/h]", "± se",
-                "line [s]", "strongest correlate (differences)");
+    std::printf(
+        "What the simulation gets wrong (after refitting h_HDT, k_HDT on the training part; residual = "
+        "measured - simulated):\n");
+    std::printf("%-6s %-5s %10s %10s %12s %10s %12s  %s\n", "output", "unit", "bias", "± se", "trend [/h]",
+                "± se", "line [s]", "strongest correlate (differences)");
     for (const auto& r : d.residuals) {
         const auto c = r.correlates.empty() ? std::string("-")
                                             : r.correlates[0].column + " at " + fmt(r.correlates[0].lagS, 0) +
                                                   " s, ccf " + fmt(r.correlates[0].ccf, 2);
-        std::printf("%-6s %-5s %10.4f %10.4f %12.4f %10.4f %12s  %s\n", r.output.c_str(), r.unit.c_str(), r.bias,
-                    r.biasSe, r.trendPerHour, r.trendSe,
-                    r.peakPowerRatio > 1 ? (fmt(r.peakPeriodS, 0) + " (x" + fmt(r.peakPowerRatio, 1) + ")").c_str() : "-",
+        std::printf("%-6s %-5s %10.4f %10.4f %12.4f %10.4f %12s  %s\n", r.output.c_str(), r.unit.c_str(),
+                    r.bias, r.biasSe, r.trendPerHour, r.trendSe,
+                    r.peakPowerRatio > 1
+                        ? (fmt(r.peakPeriodS, 0) + " (x" + fmt(r.peakPowerRatio, 1) + ")").c_str()
+                        : "-",
                     c.c_str());
     }
     for (const auto& note : d.notes) {
@@ -486,16 +494,18 @@ int runDiscover(const CommandOptions& o) {
         std::printf("\n");
     }
     if (result->hasHybrid) {
-        std::printf("\nPGRL-CC retrained on top, held-out one-step MAE: X_out %.4f -> %.4f %% wb, T_out %.4f -> %.4f °C\n",
+        std::printf("\nPGRL-CC retrained on top, held-out one-step MAE: X_out %.4f -> %.4f %% wb, T_out %.4f "
+                    "-> %.4f °C\n",
                     result->hybridMaeMoistureBefore, result->hybridMaeMoistureAfter,
                     result->hybridMaeTemperatureBefore, result->hybridMaeTemperatureAfter);
     }
     std::printf("\n%.1f s\n", result->ending.elapsedSeconds);
     if (!o.jsonPath.empty()) {
-        if (auto st = writeFileAtomically(o.jsonPath, io::discoveryJson(d, result->hasHybrid, result->hybridMaeMoistureBefore,
-                                                                     result->hybridMaeMoistureAfter,
-                                                                     result->hybridMaeTemperatureBefore,
-                                                                     result->hybridMaeTemperatureAfter));
+        if (auto st = writeFileAtomically(o.jsonPath, io::discoveryJson(d, result->hasHybrid,
+                                                                        result->hybridMaeMoistureBefore,
+                                                                        result->hybridMaeMoistureAfter,
+                                                                        result->hybridMaeTemperatureBefore,
+                                                                        result->hybridMaeTemperatureAfter));
             !st) {
             return fail(st.error());
         }
@@ -535,8 +545,8 @@ int runPipeline(const CommandOptions& o) {
     printAblation(r.ablation);
     std::printf("\n== discover ==\nverdict %s", r.discover.discovery.verdict.c_str());
     for (const auto& f : r.discover.discovery.findings) {
-        std::printf("; %s (%s = %.4g)", f.cause.c_str(), std::string(properties::info(f.parameter).symbol).c_str(),
-                    f.value);
+        std::printf("; %s (%s = %.4g)", f.cause.c_str(),
+                    std::string(properties::info(f.parameter).symbol).c_str(), f.value);
     }
     std::printf("\n");
     std::printf("\n== stages ==\n");

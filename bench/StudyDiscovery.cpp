@@ -62,7 +62,8 @@ int main(int argc, char** argv) {
         {plant::Mechanism::MoistureMeterOffset, 0.2}, {plant::Mechanism::TransportDelayError, 15},
         {plant::Mechanism::FallingRateDrying, 0.5},   {plant::Mechanism::AmbientReabsorption, 3}};
     int runs = 0, right = 0, withFalse = 0;
-    std::printf("| mechanism | strength | seed | named | right first | s |\n| --- | --- | --- | --- | --- | --- |\n");
+    std::printf(
+        "| mechanism | strength | seed | named | right first | s |\n| --- | --- | --- | --- | --- | --- |\n");
     for (const auto& [m, strength] : cases) {
         for (double scale : {1.0, 0.5}) {
             for (int s = 0; s < nSeeds; ++s) {

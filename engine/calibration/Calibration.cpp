@@ -320,9 +320,11 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
         return loss;
     };
 
-    const int globalEvals = !options.globalSearch ? 0 :
-        std::min(options.maxEvaluations / 2,
-                 options.globalEvaluations > 0 ? options.globalEvaluations : 60 * static_cast<int>(np));
+    const int globalEvals =
+        !options.globalSearch
+            ? 0
+            : std::min(options.maxEvaluations / 2,
+                       options.globalEvaluations > 0 ? options.globalEvaluations : 60 * static_cast<int>(np));
     state.budget =
         globalEvals + std::min(options.maxEvaluations - globalEvals, 40 * static_cast<int>(np) + 40);
     nlopt::srand(options.seed); // NLopt's stochastic global methods draw from this seed

@@ -17,9 +17,9 @@
 #include <cmath>
 #include <complex>
 #include <cstdarg>
-#include <optional>
 #include <cstdio>
 #include <numeric>
+#include <optional>
 #include <thread>
 
 namespace drytwin::discovery {
@@ -38,7 +38,7 @@ constexpr double kLaggedInputCcf = 0.35;   // |ccf| of differenced residual and 
 // A shift or drift must also be large beside the residual's own spread within batches: what is
 // statistically clear but far below the scatter is not structure anyone would act on.
 constexpr double kPracticalSpreads = 1.0;
-constexpr double kHacAcfThreshold = 0.05;  // bandwidth: first lag whose |ACF| falls below this
+constexpr double kHacAcfThreshold = 0.05; // bandwidth: first lag whose |ACF| falls below this
 
 double upperTail(double z) {
     const boost::math::normal n;
@@ -52,8 +52,8 @@ constexpr const char* kChannelUnit[] = {"% wb", "°C", "% wb", "°C"};
 
 /// Measured and simulated values of a channel at row k (simulation index j), in file units,
 /// and the factor from a dry-basis (or kelvin) sensitivity to file units. False when missing.
-bool channelAt(const data::SiBatch& b, const physics::SimulationResult& r, std::size_t j, std::size_t k, int c,
-               double& obs, double& pred, double& toFile) {
+bool channelAt(const data::SiBatch& b, const physics::SimulationResult& r, std::size_t j, std::size_t k,
+               int c, double& obs, double& pred, double& toFile) {
     if (!b.keep[k]) {
         return false;
     }
@@ -116,8 +116,9 @@ double channelWeight(const calibration::LossWeights& w, int c) {
 
 /// Runs f(i) for i in [0, n) on every core.
 template <class F> void parallelFor(std::size_t n, F&& f) {
-    const unsigned threads = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(),
-                                                             static_cast<unsigned>(std::max<std::size_t>(n, 1))));
+    const unsigned threads =
+        std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(),
+                                        static_cast<unsigned>(std::max<std::size_t>(n, 1))));
     std::atomic<std::size_t> next{0};
     auto work = [&] {
         for (std::size_t i = next++; i < n; i = next++) {
@@ -137,8 +138,8 @@ template <class F> void parallelFor(std::size_t n, F&& f) {
 /// Residuals and output sensitivities of the training subset, stacked: one entry per
 /// (row, measured channel), weighted by √w so that Σ r² is the calibration loss's sum.
 struct Stack {
-    Eigen::MatrixXd s; ///< entries × parameters, file units per parameter unit, weighted
-    Eigen::VectorXd r; ///< weighted residuals
+    Eigen::MatrixXd s;      ///< entries × parameters, file units per parameter unit, weighted
+    Eigen::VectorXd r;      ///< weighted residuals
     std::vector<int> batch; ///< per entry
     std::vector<int> row;   ///< per entry: position of its row in the batch's subset
 };
@@ -188,7 +189,10 @@ Expected<Stack> stackAt(const Problem& pr, const ParameterSet& p, const std::vec
                 r.push_back(w * (obs - pred));
                 for (std::size_t q = 0; q < sens.size(); ++q) {
                     const auto& os = sim.sensitivities[q];
-                    const double d = c == kXOut ? os.dXOut[j] : c == kTOut ? os.dTOut[j] : c == kXHdt ? os.dXHdt[j] : os.dTHdt[j];
+                    const double d = c == kXOut   ? os.dXOut[j]
+                                     : c == kTOut ? os.dTOut[j]
+                                     : c == kXHdt ? os.dXHdt[j]
+                                                  : os.dTHdt[j];
                     s[q].push_back(w * toFile * d);
                 }
                 st.batch.push_back(static_cast<int>(b));
@@ -199,7 +203,8 @@ Expected<Stack> stackAt(const Problem& pr, const ParameterSet& p, const std::vec
     st.r = Eigen::Map<Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size()));
     st.s.resize(static_cast<Eigen::Index>(r.size()), static_cast<Eigen::Index>(sens.size()));
     for (std::size_t q = 0; q < sens.size(); ++q) {
-        st.s.col(static_cast<Eigen::Index>(q)) = Eigen::Map<Eigen::VectorXd>(s[q].data(), static_cast<Eigen::Index>(s[q].size()));
+        st.s.col(static_cast<Eigen::Index>(q)) =
+            Eigen::Map<Eigen::VectorXd>(s[q].data(), static_cast<Eigen::Index>(s[q].size()));
     }
     return st;
 }
@@ -234,7 +239,8 @@ double hacVarianceOfSum(const std::vector<std::vector<double>>& series, bool dem
         if (u.size() < 3) {
             continue;
         }
-        const int lag = diagnostics::bandwidthFromAutocorrelation(u, kHacAcfThreshold, static_cast<int>(u.size()) / 3);
+        const int lag =
+            diagnostics::bandwidthFromAutocorrelation(u, kHacAcfThreshold, static_cast<int>(u.size()) / 3);
         v += static_cast<double>(u.size()) * diagnostics::longRunVariance(u, lag, demean);
     }
     return v;
@@ -470,9 +476,9 @@ std::vector<OutputResidual> analyse(const Problem& pr, const std::vector<physics
         OutputResidual o;
         o.output = kChannelName[c];
         o.unit = kChannelUnit[c];
-        std::vector<std::vector<double>> perBatch;     // kept residuals, for bias and HAC
-        std::vector<std::vector<double>> records;      // full 1 s records (missing → 0), for the spectrum
-        std::vector<std::vector<double>> trendScore;   // (t − t̄) e per row
+        std::vector<std::vector<double>> perBatch;   // kept residuals, for bias and HAC
+        std::vector<std::vector<double>> records;    // full 1 s records (missing → 0), for the spectrum
+        std::vector<std::vector<double>> trendScore; // (t − t̄) e per row
         double sxx = 0, sxy = 0;
         double within = 0;
         double hours = 0;
@@ -480,8 +486,9 @@ std::vector<OutputResidual> analyse(const Problem& pr, const std::vector<physics
         std::vector<double> diffResidual10;           // differenced, every 10 s, batches joined
         std::vector<std::vector<double>> diffInput10; // per correlate column
         const std::vector<std::pair<std::string, int>> columns = {
-            {"T_hot_C", 0}, {"feed_kg_h", 1}, {"X_in_pct", 2}, {"T_in_C", 3}, {"T_amb_C", 4}, {"RH_amb_pct", 5},
-            {"air_speed_m_s", 6}, {"proxy_X_HDT", 7}, {"proxy_T_HDT", 8}, {"proxy_X_Conv", 9}, {"proxy_T_Conv", 10}};
+            {"T_hot_C", 0},     {"feed_kg_h", 1},    {"X_in_pct", 2},      {"T_in_C", 3},
+            {"T_amb_C", 4},     {"RH_amb_pct", 5},   {"air_speed_m_s", 6}, {"proxy_X_HDT", 7},
+            {"proxy_T_HDT", 8}, {"proxy_X_Conv", 9}, {"proxy_T_Conv", 10}};
         diffInput10.resize(columns.size());
         std::vector<std::vector<double>> regionX(5), regionR(5);
         for (std::size_t b = 0; b < batches.size(); ++b) {
@@ -507,15 +514,17 @@ std::vector<OutputResidual> analyse(const Problem& pr, const std::vector<physics
                     o.seriesTimeS.push_back(bt.timeS[k] - bt.timeS.front());
                     o.seriesValue.push_back(e);
                 }
-                const double regionValue[5] = {units::kelvinToCelsius(bt.tHotK[k]), units::kgPerSToKgPerHour(bt.feedKgPerS[k]),
-                                               units::dryToWetPct(bt.xInDb[k]), units::kelvinToCelsius(bt.tAmbK[k]),
-                                               units::fractionToPercent(bt.rhAmb[k])};
+                const double regionValue[5] = {
+                    units::kelvinToCelsius(bt.tHotK[k]), units::kgPerSToKgPerHour(bt.feedKgPerS[k]),
+                    units::dryToWetPct(bt.xInDb[k]), units::kelvinToCelsius(bt.tAmbK[k]),
+                    units::fractionToPercent(bt.rhAmb[k])};
                 for (int g = 0; g < 5; ++g) {
                     regionX[static_cast<std::size_t>(g)].push_back(regionValue[g]);
                     regionR[static_cast<std::size_t>(g)].push_back(e);
                 }
                 if (k % 10 == 0) {
-                    const double inputs[11] = {bt.tHotK[k], bt.feedKgPerS[k], bt.xInDb[k], bt.tInK[k], bt.tAmbK[k], bt.rhAmb[k],
+                    const double inputs[11] = {bt.tHotK[k],         bt.feedKgPerS[k],   bt.xInDb[k],
+                                               bt.tInK[k],          bt.tAmbK[k],        bt.rhAmb[k],
                                                bt.airSpeedMPerS[k], sim.proxyXHdtDb[k], sim.proxyTHdtK[k],
                                                sim.proxyXConvDb[k], sim.proxyTConvK[k]};
                     if (std::isfinite(prevR)) {
@@ -535,8 +544,10 @@ std::vector<OutputResidual> analyse(const Problem& pr, const std::vector<physics
             }
             o.rows += kept.size();
             bb.mean = diagnostics::mean(kept);
-            const int lag = diagnostics::bandwidthFromAutocorrelation(kept, kHacAcfThreshold, static_cast<int>(kept.size()) / 3);
-            bb.se = std::sqrt(diagnostics::longRunVariance(kept, lag, true) / static_cast<double>(kept.size()));
+            const int lag = diagnostics::bandwidthFromAutocorrelation(kept, kHacAcfThreshold,
+                                                                      static_cast<int>(kept.size()) / 3);
+            bb.se =
+                std::sqrt(diagnostics::longRunVariance(kept, lag, true) / static_cast<double>(kept.size()));
             o.perBatch.push_back(bb);
             perBatch.push_back(kept);
             records.push_back(record);
@@ -603,7 +614,8 @@ std::vector<OutputResidual> analyse(const Problem& pr, const std::vector<physics
             rb.column = regionName[g];
             rb.unit = regionUnit[g];
             for (int q = 1; q <= 5; ++q) {
-                rb.binUpper.push_back(sorted[std::min(sorted.size() - 1, sorted.size() * static_cast<std::size_t>(q) / 5)]);
+                rb.binUpper.push_back(
+                    sorted[std::min(sorted.size() - 1, sorted.size() * static_cast<std::size_t>(q) / 5)]);
             }
             std::vector<double> sum(5, 0.0), count(5, 0.0);
             for (std::size_t i = 0; i < xs.size(); ++i) {
@@ -614,8 +626,9 @@ std::vector<OutputResidual> analyse(const Problem& pr, const std::vector<physics
                 count[bi] += 1;
             }
             for (int q = 0; q < 5; ++q) {
-                rb.mean.push_back(count[static_cast<std::size_t>(q)] > 0 ? sum[static_cast<std::size_t>(q)] / count[static_cast<std::size_t>(q)]
-                                                                          : std::nan(""));
+                rb.mean.push_back(count[static_cast<std::size_t>(q)] > 0
+                                      ? sum[static_cast<std::size_t>(q)] / count[static_cast<std::size_t>(q)]
+                                      : std::nan(""));
             }
             o.regions.push_back(rb);
         }
@@ -709,20 +722,23 @@ std::string format(const char* fmt, ...) {
 const char* lookFor(Param p) {
     switch (p) {
     case Param::theta_wall:
-        return "the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)";
+        return "the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and "
+               "T_hot)";
     case Param::theta_gas:
         return "the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)";
     case Param::theta_foul:
         return "the error drifts within every batch and resets at each batch start";
     case Param::tau_meter:
-        return "the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the "
+        return "the outlet-moisture error follows the rate of change of the simulated outlet moisture, and "
+               "the "
                "tube-outlet error does not";
     case Param::X_meter_offset:
         return "a steady outlet-moisture bias that the tube-outlet moisture does not share";
     case Param::dtau_conv:
         return "the outlet error correlates with tube-outlet changes at a shifted lag";
     case Param::theta_fall:
-        return "the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest";
+        return "the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries "
+               "furthest";
     case Param::theta_reabs:
         return "the outlet-moisture error grows with ambient humidity while the tube-outlet error does not";
     default:
@@ -734,30 +750,40 @@ const char* lookFor(Param p) {
 
 Status DiscoveryOptions::validate() const {
     if (!(trainFraction > 0.2 && trainFraction < 0.95)) {
-        return Error{ErrorKind::Usage, "train fraction", "must lie in (0.2, 0.95)", ErrorCode::InvalidOption,
+        return Error{ErrorKind::Usage,
+                     "train fraction",
+                     "must lie in (0.2, 0.95)",
+                     ErrorCode::InvalidOption,
                      {"train fraction", "must lie in (0.2, 0.95)"}};
     }
     if (!(screenAlpha > 0 && screenAlpha < 0.5) || !(gainAlpha > 0 && gainAlpha < 0.5) ||
         !(minExplainedFraction >= 0 && minExplainedFraction < 1)) {
-        return Error{ErrorKind::Usage, "alpha", "test levels must lie in (0, 0.5), the explained share in [0, 1)",
-                     ErrorCode::InvalidOption, {"alpha", "test levels must lie in (0, 0.5), the explained share in [0, 1)"}};
+        return Error{ErrorKind::Usage,
+                     "alpha",
+                     "test levels must lie in (0, 0.5), the explained share in [0, 1)",
+                     ErrorCode::InvalidOption,
+                     {"alpha", "test levels must lie in (0, 0.5), the explained share in [0, 1)"}};
     }
     if (maxCauses < 0 || candidatesToFit < 1 || maxEvaluationsPerFit < 10) {
-        return Error{ErrorKind::Usage, "discovery limits",
-                     "max causes ≥ 0, candidates to fit ≥ 1, evaluations per fit ≥ 10", ErrorCode::InvalidOption,
+        return Error{ErrorKind::Usage,
+                     "discovery limits",
+                     "max causes ≥ 0, candidates to fit ≥ 1, evaluations per fit ≥ 10",
+                     ErrorCode::InvalidOption,
                      {"discovery limits", "max causes ≥ 0, candidates to fit ≥ 1, evaluations per fit ≥ 10"}};
     }
     return {};
 }
 
-Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, const hybrid::HybridModel& model,
-                                   const DiscoveryOptions& options, const Progress& progress) {
+Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
+                                   const hybrid::HybridModel& model, const DiscoveryOptions& options,
+                                   const Progress& progress) {
     const auto t0 = std::chrono::steady_clock::now();
     if (auto st = options.validate(); !st) {
         return st.error();
     }
     if (batches.empty()) {
-        return Error{ErrorKind::BadInput, "discover", "no batches", ErrorCode::NotEnoughData, {"batches", "0"}};
+        return Error{
+            ErrorKind::BadInput, "discover", "no batches", ErrorCode::NotEnoughData, {"batches", "0"}};
     }
     Problem pr;
     pr.batches = &batches;
@@ -799,17 +825,22 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
         }
     }
     if (pr.subsetRefs.size() < 100 || keptTest < 100) {
-        return Error{ErrorKind::BadInput, "discover",
-                     "too few rows: " + std::to_string(pr.subsetRefs.size()) + " training rows in the tests (need 100) and " +
-                         std::to_string(keptTest) + " held-out rows (need 100) pass the cleaning rules",
-                     ErrorCode::NotEnoughData, {"rows", std::to_string(keptTrain + keptTest)}};
+        return Error{ErrorKind::BadInput,
+                     "discover",
+                     "too few rows: " + std::to_string(pr.subsetRefs.size()) +
+                         " training rows in the tests (need 100) and " + std::to_string(keptTest) +
+                         " held-out rows (need 100) pass the cleaning rules",
+                     ErrorCode::NotEnoughData,
+                     {"rows", std::to_string(keptTrain + keptTest)}};
     }
     double fraction = 0; // of the whole discovery, for the fits' progress
     const auto stop = [&](double f, const std::string& detail) {
         fraction = f;
         return reportProgress(progress, "discover", f, detail);
     };
-    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+    const auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
 
     // The starting model, its h_HDT and k_HDT refitted on the training rows (locally when the
     // model was calibrated, globally and locally when not).
@@ -819,7 +850,8 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
             nuisance.push_back(m); // extensions the model already holds stay free
         }
     }
-    auto refit = [&](const ParameterSet& start, const std::vector<Param>& free, bool global) -> Expected<calibration::CalibrationResult> {
+    auto refit = [&](const ParameterSet& start, const std::vector<Param>& free,
+                     bool global) -> Expected<calibration::CalibrationResult> {
         calibration::CalibrationOptions co;
         co.freeParameters = free;
         co.rows = pr.subsetRefs;
@@ -855,8 +887,9 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
             tHdt = tHdt || b.hasTHdt;
         }
         if (!xHdt) {
-            result.notes.push_back("X_hdt_pct is not measured: the tube-outlet moisture cannot separate meter and "
-                                   "conveyor causes from tube causes; outlet channels only");
+            result.notes.push_back(
+                "X_hdt_pct is not measured: the tube-outlet moisture cannot separate meter and "
+                "conveyor causes from tube causes; outlet channels only");
         }
         if (!tHdt) {
             result.notes.push_back("T_hdt_C is not measured: tube-outlet temperature not used");
@@ -868,8 +901,9 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
             }
         }
         if (!airVaries) {
-            result.notes.push_back("air_speed_m_s is constant (not measured?): gas_phase_coupling works with that one "
-                                   "value and cannot use the air speed's variation");
+            result.notes.push_back(
+                "air_speed_m_s is constant (not measured?): gas_phase_coupling works with that one "
+                "value and cannot use the air speed's variation");
         }
     }
     result.trainingRows = keptTrain;
@@ -921,10 +955,12 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
         // Holm's step-down correction over the candidates of this round.
         std::vector<std::size_t> order(cands.size());
         std::iota(order.begin(), order.end(), 0);
-        std::sort(order.begin(), order.end(), [&](auto a, auto b) { return cands[a].pValue < cands[b].pValue; });
+        std::sort(order.begin(), order.end(),
+                  [&](auto a, auto b) { return cands[a].pValue < cands[b].pValue; });
         double running = 0;
         for (std::size_t i = 0; i < order.size(); ++i) {
-            running = std::max(running, std::min(1.0, static_cast<double>(order.size() - i) * cands[order[i]].pValue));
+            running = std::max(running,
+                               std::min(1.0, static_cast<double>(order.size() - i) * cands[order[i]].pValue));
             cands[order[i]].pHolm = running;
         }
         // Fit the leading candidates that pass the screen, largest predicted reduction first.
@@ -968,15 +1004,16 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
         Round record;
         record.candidates = cands;
         // The ranking a user reads: fitted causes by training loss removed, then the rest by evidence.
-        std::stable_sort(record.candidates.begin(), record.candidates.end(), [](const auto& a, const auto& b) {
-            if (a.fitted != b.fitted) {
-                return a.fitted;
-            }
-            if (a.fitted) {
-                return a.fitLossAfter < b.fitLossAfter;
-            }
-            return a.pValue < b.pValue;
-        });
+        std::stable_sort(record.candidates.begin(), record.candidates.end(),
+                         [](const auto& a, const auto& b) {
+                             if (a.fitted != b.fitted) {
+                                 return a.fitted;
+                             }
+                             if (a.fitted) {
+                                 return a.fitLossAfter < b.fitLossAfter;
+                             }
+                             return a.pValue < b.pValue;
+                         });
         if (round == 0) {
             result.ranking = record.candidates;
         }
@@ -1002,10 +1039,11 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
         const double level = options.gainAlpha; // fixed-sequence testing (DiscoveryOptions::gainAlpha)
         if (!(gain.pValue < level && explained >= options.minExplainedFraction)) {
             // It fits the training part but does not predict clearly better: not a cause.
-            record.reason = gain.pValue >= level
-                                ? format("held-out gain not significant (p = %.2g, needs < %.2g)", gain.pValue, level)
-                                : format("removes only %.0f %% of the held-out error left (needs %.0f %%)",
-                                         100 * explained, 100 * options.minExplainedFraction);
+            record.reason =
+                gain.pValue >= level
+                    ? format("held-out gain not significant (p = %.2g, needs < %.2g)", gain.pValue, level)
+                    : format("removes only %.0f %% of the held-out error left (needs %.0f %%)",
+                             100 * explained, 100 * options.minExplainedFraction);
             result.rounds.push_back(record);
             break;
         }
@@ -1032,10 +1070,11 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
         f.explainedFraction = lossBefore > 0 ? 1.0 - lossAfter / lossBefore : 0;
         f.gain = gain;
         // The output it helps most, and what its residual looked like before.
-        const bool moistureHelped = gain.maeMoistureBefore > 0 &&
-                                    (gain.maeMoistureBefore - gain.maeMoistureAfter) / gain.maeMoistureBefore >=
-                                        (gain.maeTemperatureBefore - gain.maeTemperatureAfter) /
-                                            std::max(1e-12, gain.maeTemperatureBefore);
+        const bool moistureHelped =
+            gain.maeMoistureBefore > 0 &&
+            (gain.maeMoistureBefore - gain.maeMoistureAfter) / gain.maeMoistureBefore >=
+                (gain.maeTemperatureBefore - gain.maeTemperatureAfter) /
+                    std::max(1e-12, gain.maeTemperatureBefore);
         const OutputResidual* before = nullptr;
         for (const auto& o : currentResiduals) {
             if (o.output == (moistureHelped ? "X_out" : "T_out")) {
@@ -1045,14 +1084,17 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
         const auto& info = properties::info(chosen.parameter);
         f.evidence = format(
             "%s error before: bias %+.3g %s, within-batch trend %+.3g %s/h. With %s (%s = %.4g %s, 95 %% CI "
-            "[%.3g, %.3g]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %.3f to %.3f %% wb and "
-            "of T_out from %.2f to %.2f °C (Diebold-Mariano p = %.2g); it removes %.0f %% of the held-out squared "
+            "[%.3g, %.3g]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %.3f to %.3f %% "
+            "wb and "
+            "of T_out from %.2f to %.2f °C (Diebold-Mariano p = %.2g); it removes %.0f %% of the held-out "
+            "squared "
             "error. Check on the plots: %s.",
             moistureHelped ? "Outlet-moisture" : "Outlet-temperature", before ? before->bias : 0.0,
-            moistureHelped ? "% wb" : "°C", before ? before->trendPerHour : 0.0, moistureHelped ? "% wb" : "°C",
-            f.cause.c_str(), std::string(info.symbol).c_str(), f.value, std::string(info.unit).c_str(), f.ci95Low,
-            f.ci95High, gain.maeMoistureBefore, gain.maeMoistureAfter, gain.maeTemperatureBefore,
-            gain.maeTemperatureAfter, gain.pValue, 100 * f.explainedFraction, lookFor(chosen.parameter));
+            moistureHelped ? "% wb" : "°C", before ? before->trendPerHour : 0.0,
+            moistureHelped ? "% wb" : "°C", f.cause.c_str(), std::string(info.symbol).c_str(), f.value,
+            std::string(info.unit).c_str(), f.ci95Low, f.ci95High, gain.maeMoistureBefore,
+            gain.maeMoistureAfter, gain.maeTemperatureBefore, gain.maeTemperatureAfter, gain.pValue,
+            100 * f.explainedFraction, lookFor(chosen.parameter));
         result.findings.push_back(f);
         if (auto sims = physics::simulateBatches(pr.inputs, bestParams, pr.simulation); sims) {
             currentResiduals = analyse(pr, *sims);
@@ -1072,7 +1114,8 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, co
     if (result.findings.size() > 1) {
         if (auto at = stackAt(pr, current, nuisance); at) {
             for (auto& f : result.findings) {
-                const auto col = static_cast<int>(std::find(nuisance.begin(), nuisance.end(), f.parameter) - nuisance.begin());
+                const auto col = static_cast<int>(std::find(nuisance.begin(), nuisance.end(), f.parameter) -
+                                                  nuisance.begin());
                 std::vector<int> others;
                 for (int i = 0; i < static_cast<int>(nuisance.size()); ++i) {
                     if (i != col) {

@@ -16,7 +16,7 @@ namespace drytwin::discovery {
 /// @brief Options of a discovery run. Every choice is made on the training part of the
 /// chronological split; the held-out part only judges the gain.
 struct DiscoveryOptions {
-    double trainFraction = 0.7;    ///< chronological split (paper §IV.A)
+    double trainFraction = 0.7; ///< chronological split (paper §IV.A)
     /// Every STRIDE-th kept training row enters the tests and fits; 0: chosen so that about
     /// 1,000 rows do (the fits' cost grows with them, the tests' power hardly beyond that).
     std::size_t subsetStride = 0;
@@ -30,8 +30,8 @@ struct DiscoveryOptions {
     double gainAlpha = 0.05;
     /// A named cause must remove at least this share of the held-out squared error left.
     double minExplainedFraction = 0.15;
-    int maxCauses = 3;             ///< causes added one at a time, at most this many
-    int candidatesToFit = 3;       ///< significant candidates fitted per round, best score first
+    int maxCauses = 3;       ///< causes added one at a time, at most this many
+    int candidatesToFit = 3; ///< significant candidates fitted per round, best score first
     int maxEvaluationsPerFit = 120;
     calibration::LossWeights weights; ///< as in calibration: 1 K weighs like 0.1 % wb
     Status validate() const;
@@ -126,11 +126,11 @@ struct Finding {
 struct Signature {
     std::string type; ///< "periodic", "lagged_input", "batch_shift", "drift"
     std::string output;
-    double periodS = 0;              ///< periodic
-    std::string column;              ///< lagged_input
-    double lagS = 0;                 ///< lagged_input
+    double periodS = 0;               ///< periodic
+    std::string column;               ///< lagged_input
+    double lagS = 0;                  ///< lagged_input
     std::vector<std::string> batches; ///< batch_shift
-    double strength = 0;             ///< power ratio, |ccf|, shift in units, or trend per hour
+    double strength = 0;              ///< power ratio, |ccf|, shift in units, or trend per hour
 };
 
 /// @brief One round of the forward selection: what was tested and fitted, and why the best
@@ -146,12 +146,12 @@ struct Round {
 
 /// @brief The answer to the four questions.
 struct DiscoveryResult {
-    std::string verdict; ///< "cause_found", "no_structural_cause", "unexplained_structure"
+    std::string verdict;                   ///< "cause_found", "no_structural_cause", "unexplained_structure"
     std::vector<OutputResidual> residuals; ///< of the starting model (after its refit of h_HDT, k_HDT)
     std::vector<OutputResidual> residualsAfter; ///< of the extended model
-    std::vector<Candidate> ranking;        ///< the first round, best score first
+    std::vector<Candidate> ranking;             ///< the first round, best score first
     std::vector<Round> rounds;
-    std::vector<Finding> findings;         ///< in the order they were added
+    std::vector<Finding> findings; ///< in the order they were added
     std::vector<Signature> unexplained;
     properties::ParameterSet baseParameters; ///< the starting model after its refit of h_HDT, k_HDT
     properties::ParameterSet parameters;     ///< the extended model's physics parameters
@@ -166,7 +166,8 @@ struct DiscoveryResult {
 /// candidates with h_HDT and k_HDT free again, and a held-out Diebold-Mariano test before a cause
 /// is kept; causes are added one at a time until none helps. What is left is reported by its
 /// signature. Thread-safe for distinct arguments.
-Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches, const hybrid::HybridModel& model,
-                                   const DiscoveryOptions& options = {}, const Progress& progress = {});
+Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
+                                   const hybrid::HybridModel& model, const DiscoveryOptions& options = {},
+                                   const Progress& progress = {});
 
 } // namespace drytwin::discovery

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace drytwin::evaluation {
 
@@ -47,6 +48,30 @@ Status EvaluationOptions::validate() const {
                      {"Ljung-Box lags", "must be at least 1"}};
     }
     return {};
+}
+
+residual::HybridPrediction referencePrediction(const residual::BatchView& v, int horizon, bool holdPbmError) {
+    residual::HybridPrediction p;
+    const auto& b = *v.batch;
+    const auto& m = *v.pbm;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t k = v.rows.begin; k < v.rows.end; ++k) {
+        if (k < static_cast<std::size_t>(horizon)) {
+            p.xOutPct.push_back(nan);
+            p.tOutC.push_back(nan);
+            continue;
+        }
+        const std::size_t j = k - static_cast<std::size_t>(horizon); // the last measurement seen
+        double x = units::dryToWetPct(b.xOutDb[j]);
+        double t = units::kelvinToCelsius(b.tOutK[j]);
+        if (holdPbmError) {
+            x = units::dryToWetPct(m.xOutDb[k]) + (x - units::dryToWetPct(m.xOutDb[j]));
+            t = units::kelvinToCelsius(m.tOutK[k]) + (t - units::kelvinToCelsius(m.tOutK[j]));
+        }
+        p.xOutPct.push_back(x); // NaN where the measurement was missing
+        p.tOutC.push_back(t);
+    }
+    return p;
 }
 
 residual::HybridPrediction pbmPrediction(const residual::BatchView& v) {
@@ -120,6 +145,25 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
     }
     out.models.push_back(std::move(pbm));
 
+    // The two predictors every forecast must beat (CONTRACT.md §3), one step and H steps ahead.
+    for (const char* name : {kPersistenceKey, kPbmResidualHoldKey}) {
+        const bool hold = std::string(name) == kPbmResidualHoldKey;
+        ModelMetrics m;
+        m.name = name;
+        const auto one = scorePredictions(
+            test, [&](const residual::BatchView& v) { return referencePrediction(v, 1, hold); }, lags);
+        const auto multi = scorePredictions(
+            test, [&](const residual::BatchView& v) { return referencePrediction(v, options.horizonSteps, hold); },
+            lags);
+        m.moisture = one.moisture;
+        m.temperature = one.temperature;
+        m.moistureResidual = one.moistureResidual;
+        m.temperatureResidual = one.temperatureResidual;
+        m.moistureMultiStep = multi.moisture;
+        m.temperatureMultiStep = multi.temperature;
+        out.models.push_back(std::move(m));
+    }
+
     // One-step and H-step scores of a learnt model.
     auto score = [&](const char* name, const Predictor& oneStep, const Predictor& ahead) {
         ModelMetrics m;
@@ -156,6 +200,26 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
         m.alpha = c.alpha;
         m.certificateMaxEig = c.certificateMaxEig;
         out.models.push_back(std::move(m));
+    }
+    // Skill: MAE over the better of the two reference predictors at the same horizon (< 1 beats both).
+    const auto reference = [&](auto metric) {
+        double best = std::numeric_limits<double>::infinity();
+        for (const auto& m : out.models) {
+            if (m.name == kPersistenceKey || m.name == kPbmResidualHoldKey) {
+                best = std::min(best, metric(m));
+            }
+        }
+        return best;
+    };
+    const double refX = reference([](const ModelMetrics& m) { return m.moisture.mae; });
+    const double refT = reference([](const ModelMetrics& m) { return m.temperature.mae; });
+    const double refXH = reference([](const ModelMetrics& m) { return m.moistureMultiStep.mae; });
+    const double refTH = reference([](const ModelMetrics& m) { return m.temperatureMultiStep.mae; });
+    for (auto& m : out.models) {
+        m.skillMoisture = m.moisture.mae / refX;
+        m.skillTemperature = m.temperature.mae / refT;
+        m.skillMoistureMultiStep = m.moistureMultiStep.mae / refXH;
+        m.skillTemperatureMultiStep = m.temperatureMultiStep.mae / refTH;
     }
     out.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.ending = {Termination::Completed,

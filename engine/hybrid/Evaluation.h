@@ -37,6 +37,8 @@ struct ModelMetrics {
     OutputMetrics temperatureMultiStep;
     std::vector<double> moistureResidual;    ///< held-out rows, % wb, for plots (ACF, PSD)
     std::vector<double> temperatureResidual; ///< held-out rows, °C
+    /// MAE over the better of persistence and pbm_residual_hold at the same horizon (< 1 beats both).
+    double skillMoisture = 0, skillTemperature = 0, skillMoistureMultiStep = 0, skillTemperatureMultiStep = 0;
     bool hasStability = false;
     double spectralRadiusBefore = 0, spectralRadiusAfter = 0, alpha = 0, certificateMaxEig = 0;
 };
@@ -74,6 +76,15 @@ struct ScoredPredictions {
 };
 ScoredPredictions scorePredictions(const std::vector<residual::BatchView>& views, const Predictor& predict,
                                    int lbLags);
+
+/// @brief Keys of the reference predictors (CONTRACT.md §3).
+inline constexpr const char* kPersistenceKey = "persistence";
+inline constexpr const char* kPbmResidualHoldKey = "pbm_residual_hold";
+
+/// @brief The reference predictions of a view's rows @p horizon steps ahead: the last measurement
+/// held (persistence, ŷ_{k+H} = y_k), or with @p holdPbmError the PBM with its last measured error
+/// held (ŷ_{k+H} = ŷ_mech,k+H + e_k). NaN where the batch has no measurement H steps before.
+residual::HybridPrediction referencePrediction(const residual::BatchView& view, int horizon, bool holdPbmError);
 
 /// @brief The PBM's own predictions of a view's rows (% wb, °C).
 residual::HybridPrediction pbmPrediction(const residual::BatchView& view);

@@ -72,7 +72,8 @@ std::string formatModelFile(const HybridModel& m) {
         if (value == 0 && it == m.mechanisms.end()) {
             continue;
         }
-        json entry = {{"value", value}, {"unit", std::string(properties::info(p).unit)},
+        json entry = {{"value", value},
+                      {"unit", std::string(properties::info(p).unit)},
                       {"parameter", std::string(properties::info(p).symbol)}};
         if (it != m.mechanisms.end()) {
             entry["ci95"] = {it->second.ci95Low, it->second.ci95High};
@@ -116,8 +117,11 @@ Expected<HybridModel> parseModelFile(const std::string& text, const std::string&
     try {
         return parseModelJson(j, name);
     } catch (const json::exception& e) {
-        return Error{ErrorKind::BadInput, name, std::string("a key has the wrong type: ") + e.what(),
-                     ErrorCode::ModelFileInvalid, {name, "", e.what()}};
+        return Error{ErrorKind::BadInput,
+                     name,
+                     std::string("a key has the wrong type: ") + e.what(),
+                     ErrorCode::ModelFileInvalid,
+                     {name, "", e.what()}};
     }
 }
 
@@ -181,7 +185,9 @@ Expected<HybridModel> parseModelJson(const json& j, const std::string& name) {
                 est.value = e.value("value", 0.0);
                 if (e.contains("ci95") && e["ci95"].is_array() && e["ci95"].size() == 2) {
                     // Unknown intervals are written as null (NaN in JSON has no other form).
-                    const auto bound = [](const json& v) { return v.is_number() ? v.get<double>() : std::nan(""); };
+                    const auto bound = [](const json& v) {
+                        return v.is_number() ? v.get<double>() : std::nan("");
+                    };
                     est.ci95Low = bound(e["ci95"][0]);
                     est.ci95High = bound(e["ci95"][1]);
                 }

@@ -79,14 +79,18 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
          std::to_string(ev.value("test_rows", 0)) + " rows)\n\n";
     r += "Moisture in % wb, temperature in °C; one step ahead, and " +
          std::to_string(ev["multi_step"].value("horizon_steps", 0)) + " steps ahead.\n\n";
-    r += "| model | MAE X | R² X | LB p X | MAE T | R² T | multi-step MAE X | multi-step MAE T |\n"
-         "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    r += "Skill = MAE over the better of `persistence` (last measurement held) and `pbm_residual_hold` (PBM "
+         "with its last error held) at the same horizon: below 1 beats both.\n\n";
+    r += "| model | MAE X | R² X | LB p X | MAE T | R² T | skill X | multi-step MAE X | multi-step MAE T | "
+         "multi-step skill X |\n"
+         "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const auto& [name, m] : ev["models"].items()) {
         const auto& ms = ev["multi_step"]["models"][name];
         r += "| " + name + " | " + num(m["moisture"]["mae"]) + " | " + num(m["moisture"]["r2"]) + " | " +
              num(m["moisture"]["ljung_box_p"], "%.3g") + " | " + num(m["temperature"]["mae"]) + " | " +
-             num(m["temperature"]["r2"]) + " | " + num(ms["moisture"]["mae"]) + " | " +
-             num(ms["temperature"]["mae"]) + " |\n";
+             num(m["temperature"]["r2"]) + " | " + num(m["skill"]["moisture"], "%.3f") + " | " +
+             num(ms["moisture"]["mae"]) + " | " + num(ms["temperature"]["mae"]) + " | " +
+             num(ms["skill"]["moisture"], "%.3f") + " |\n";
     }
     if (ev["models"].contains("pgrl_cc") && ev["models"]["pgrl_cc"].contains("stability")) {
         const auto& s = ev["models"]["pgrl_cc"]["stability"];
@@ -112,40 +116,47 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
             return disc.error();
         }
         const auto& d = *disc;
-        r += "## Discovery: what the simulation gets wrong and why\n\nVerdict: **" + d.value("verdict", std::string()) +
+        r += "## Discovery: what the simulation gets wrong and why\n\nVerdict: **" +
+             d.value("verdict", std::string()) +
              "** (score tests with a HAC variance on the training part, fits with h_HDT and k_HDT free, "
-             "held-out Diebold-Mariano confirmation; `discover.json`, extended model `model-extended.json`).\n\n";
+             "held-out Diebold-Mariano confirmation; `discover.json`, extended model "
+             "`model-extended.json`).\n\n";
         if (!d["findings"].empty()) {
-            r += "| cause | parameter | value | 95 % interval | MAE X_out before → after [% wb] | MAE T_out before → "
+            r += "| cause | parameter | value | 95 % interval | MAE X_out before → after [% wb] | MAE T_out "
+                 "before → "
                  "after [°C] | DM p |\n| --- | --- | --- | --- | --- | --- | --- |\n";
             for (const auto& f : d["findings"]) {
                 const auto& p = f["parameter"];
                 const auto& g = f["gain"];
                 r += "| " + f.value("cause", std::string()) + " | " + p.value("name", std::string()) + " | " +
-                     num(p["value"]) + " " + p.value("unit", std::string()) + " | [" + num(p["ci95"][0]) + ", " +
-                     num(p["ci95"][1]) + "] | " + num(g["mae_moisture_before"]) + " → " + num(g["mae_moisture_after"]) +
-                     " | " + num(g["mae_temperature_before"]) + " → " + num(g["mae_temperature_after"]) + " | " +
-                     num(g["p_value"], "%.2g") + " |\n";
+                     num(p["value"]) + " " + p.value("unit", std::string()) + " | [" + num(p["ci95"][0]) +
+                     ", " + num(p["ci95"][1]) + "] | " + num(g["mae_moisture_before"]) + " → " +
+                     num(g["mae_moisture_after"]) + " | " + num(g["mae_temperature_before"]) + " → " +
+                     num(g["mae_temperature_after"]) + " | " + num(g["p_value"], "%.2g") + " |\n";
             }
             r += "\n";
             for (const auto& f : d["findings"]) {
-                r += "- **" + f.value("cause", std::string()) + "**: " + f.value("evidence", std::string()) + "\n";
+                r += "- **" + f.value("cause", std::string()) + "**: " + f.value("evidence", std::string()) +
+                     "\n";
             }
         }
         for (const auto& u : d["unexplained"]) {
             r += "- Unexplained structure in " + u.value("output", std::string()) + ": " +
                  u.value("signature", std::string()) +
-                 (u.contains("period_s") ? ", period " + num(u["period_s"], "%.0f") + " s" : std::string()) + "\n";
+                 (u.contains("period_s") ? ", period " + num(u["period_s"], "%.0f") + " s" : std::string()) +
+                 "\n";
         }
         for (const auto& rd : d["rounds"]) {
             if (!rd.value("named", false)) {
                 r += "\nSelection stopped: " + rd.value("best", std::string()) +
-                     (rd.value("best", std::string()).empty() ? "" : ": ") + rd.value("reason", std::string()) + ".\n";
+                     (rd.value("best", std::string()).empty() ? "" : ": ") +
+                     rd.value("reason", std::string()) + ".\n";
             }
         }
         r += "\n";
     }
-    r += "## Not in this version\n\n`mpc` (closed-loop scenarios) is not implemented yet; no results are given "
+    r += "## Not in this version\n\n`mpc` (closed-loop scenarios) is not implemented yet; no results are "
+         "given "
          "for it.\n";
     const std::string path = (dir / "report.md").string();
     if (auto st = writeFileAtomically(path, r); !st) {

@@ -40,15 +40,19 @@ std::string evaluationJson(const evaluation::EvaluationResult& r) {
     json multi;
     multi["horizon_steps"] = r.multiStepHorizon;
     for (const auto& m : r.models) {
-        j["models"][m.name] = {{"moisture", metrics(m.moisture)}, {"temperature", metrics(m.temperature)}};
+        j["models"][m.name] = {{"moisture", metrics(m.moisture)},
+                               {"temperature", metrics(m.temperature)},
+                               {"skill", {{"moisture", m.skillMoisture}, {"temperature", m.skillTemperature}}}};
         if (m.hasStability) {
             j["models"][m.name]["stability"] = {{"spectral_radius_before", m.spectralRadiusBefore},
                                                 {"spectral_radius_after", m.spectralRadiusAfter},
                                                 {"alpha", m.alpha},
                                                 {"certificate_max_eig", m.certificateMaxEig}};
         }
-        multi["models"][m.name] = {{"moisture", metrics(m.moistureMultiStep)},
-                                   {"temperature", metrics(m.temperatureMultiStep)}};
+        multi["models"][m.name] = {
+            {"moisture", metrics(m.moistureMultiStep)},
+            {"temperature", metrics(m.temperatureMultiStep)},
+            {"skill", {{"moisture", m.skillMoistureMultiStep}, {"temperature", m.skillTemperatureMultiStep}}}};
     }
     j["multi_step"] = multi;
     return j.dump(2) + "\n";
@@ -174,35 +178,38 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
     j["findings"] = json::array();
     for (const auto& f : r.findings) {
         const auto& g = f.gain;
-        j["findings"].push_back(
-            {{"cause", f.cause},
-             {"parameter",
-              {{"name", std::string(properties::info(f.parameter).symbol)},
-               {"value", num(f.value)},
-               {"unit", std::string(properties::info(f.parameter).unit)},
-               {"ci95", {num(f.ci95Low), num(f.ci95High)}}}},
-             {"explained_fraction", num(f.explainedFraction)},
-             {"evidence", f.evidence},
-             {"gain",
-              {{"split", g.split},
-               {"mae_moisture_before", num(g.maeMoistureBefore)},
-               {"mae_moisture_after", num(g.maeMoistureAfter)},
-               {"mae_temperature_before", num(g.maeTemperatureBefore)},
-               {"mae_temperature_after", num(g.maeTemperatureAfter)},
-               {"r2_moisture_before", num(g.r2MoistureBefore)},
-               {"r2_moisture_after", num(g.r2MoistureAfter)},
-               {"r2_temperature_before", num(g.r2TemperatureBefore)},
-               {"r2_temperature_after", num(g.r2TemperatureAfter)},
-               {"ljung_box_p_moisture_before", num(g.ljungBoxPMoistureBefore)},
-               {"ljung_box_p_moisture_after", num(g.ljungBoxPMoistureAfter)},
-               {"low_frequency_share_before", num(g.lowFrequencyShareBefore)},
-               {"low_frequency_share_after", num(g.lowFrequencyShareAfter)},
-               {"p_value", num(g.pValue)}}}});
+        j["findings"].push_back({{"cause", f.cause},
+                                 {"parameter",
+                                  {{"name", std::string(properties::info(f.parameter).symbol)},
+                                   {"value", num(f.value)},
+                                   {"unit", std::string(properties::info(f.parameter).unit)},
+                                   {"ci95", {num(f.ci95Low), num(f.ci95High)}}}},
+                                 {"explained_fraction", num(f.explainedFraction)},
+                                 {"evidence", f.evidence},
+                                 {"gain",
+                                  {{"split", g.split},
+                                   {"mae_moisture_before", num(g.maeMoistureBefore)},
+                                   {"mae_moisture_after", num(g.maeMoistureAfter)},
+                                   {"mae_temperature_before", num(g.maeTemperatureBefore)},
+                                   {"mae_temperature_after", num(g.maeTemperatureAfter)},
+                                   {"r2_moisture_before", num(g.r2MoistureBefore)},
+                                   {"r2_moisture_after", num(g.r2MoistureAfter)},
+                                   {"r2_temperature_before", num(g.r2TemperatureBefore)},
+                                   {"r2_temperature_after", num(g.r2TemperatureAfter)},
+                                   {"ljung_box_p_moisture_before", num(g.ljungBoxPMoistureBefore)},
+                                   {"ljung_box_p_moisture_after", num(g.ljungBoxPMoistureAfter)},
+                                   {"low_frequency_share_before", num(g.lowFrequencyShareBefore)},
+                                   {"low_frequency_share_after", num(g.lowFrequencyShareAfter)},
+                                   {"p_value", num(g.pValue)}}}});
     }
     j["ranking"] = json::array();
     for (const auto& c : r.ranking) {
-        json e = {{"cause", c.cause},       {"score", num(c.score)},         {"p_value", num(c.pValue)},
-                  {"p_holm", num(c.pHolm)}, {"fitted", c.fitted},            {"linear_estimate", num(c.linearEstimate)},
+        json e = {{"cause", c.cause},
+                  {"score", num(c.score)},
+                  {"p_value", num(c.pValue)},
+                  {"p_holm", num(c.pHolm)},
+                  {"fitted", c.fitted},
+                  {"linear_estimate", num(c.linearEstimate)},
                   {"linear_se", num(c.linearSe)}};
         if (c.fitted) {
             e["training_loss_before"] = num(c.fitLossBefore);
@@ -258,20 +265,24 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                       {"ljung_box_p", num(o.ljungBoxP)},
                       {"peak_period_s", num(o.peakPeriodS)},
                       {"peak_power_ratio", num(o.peakPowerRatio)}};
-            e["series_every_60_s"] = {{"batch", o.seriesBatch}, {"time_s", o.seriesTimeS}, {"value", o.seriesValue}};
+            e["series_every_60_s"] = {
+                {"batch", o.seriesBatch}, {"time_s", o.seriesTimeS}, {"value", o.seriesValue}};
             for (const auto& b : o.perBatch) {
                 e["per_batch"].push_back({{"batch", b.batch}, {"mean", num(b.mean)}, {"se", num(b.se)}});
             }
             for (const auto& c : o.correlates) {
-                e["correlates"].push_back(
-                    {{"column", c.column}, {"lag_s", c.lagS}, {"ccf", num(c.ccf)}, {"significant", c.significant}});
+                e["correlates"].push_back({{"column", c.column},
+                                           {"lag_s", c.lagS},
+                                           {"ccf", num(c.ccf)},
+                                           {"significant", c.significant}});
             }
             for (const auto& g : o.regions) {
                 json m = json::array();
                 for (double v : g.mean) {
                     m.push_back(num(v));
                 }
-                e["by_region"].push_back({{"column", g.column}, {"unit", g.unit}, {"bin_upper", g.binUpper}, {"mean", m}});
+                e["by_region"].push_back(
+                    {{"column", g.column}, {"unit", g.unit}, {"bin_upper", g.binUpper}, {"mean", m}});
             }
             a.push_back(e);
         }

@@ -148,66 +148,65 @@ bool forParcels(const void* c, std::size_t first, std::size_t count, const doubl
 }
 
 // Engineering constants of the gas-phase extension (model side; the plant has its own).
-constexpr double kModelAirHeatCapacity = 1010;    // J/(kg·K)
+constexpr double kModelAirHeatCapacity = 1010;        // J/(kg·K)
 constexpr double kModelAirMassPerSpeed = 0.8 * 0.283; // kg/s of hot air per m/s (0.6 m tube, 0.8 kg/m³)
-constexpr double kModelLatentHeat = 2.3e6;        // J/kg, for the gas cooling only
-constexpr double kModelCriticalMoisture = 0.25;   // X_cr of the falling-rate extension [kg/kg dry]
+constexpr double kModelLatentHeat = 2.3e6;            // J/kg, for the gas cooling only
+constexpr double kModelCriticalMoisture = 0.25;       // X_cr of the falling-rate extension [kg/kg dry]
 
 bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, const double* y, double* ydot) {
-    return forParcels<2>(c, first, count, y, ydot,
-                         [s](const SectionContext& x, const ParameterSet& p,
-                             const properties::ModelSwitches& sw, const auto& l) {
-                             using T = std::decay_t<decltype(l.state(0))>;
-                             const double wall = p[Param::theta_wall];
-                             const double gasCoupling = p[Param::theta_gas];
-                             const double fouling = p[Param::theta_foul];
-                             const double falling = p[Param::theta_fall];
-                             double gas[2] = {0, 0};
-                             double hours[2] = {0, 0};     // since the batch started
-                             double gasCooling[2] = {0, 0}; // K per kg/kg evaporated
-                             double xEntry[2] = {0, 0};
-                             for (int lane = 0; lane < l.width; ++lane) {
-                                 const std::size_t parcel = l.parcel + static_cast<std::size_t>(lane);
-                                 const SamplePoint where = x.locate(parcel, s);
-                                 const double tHot = where.of(x.in->tHotK);
-                                 gas[lane] = tHot;
-                                 if (wall != 0) { // tube_wall_heat_loss, simple form
-                                     gas[lane] = tHot - wall * (tHot - where.of(x.in->tAmbK));
-                                 }
-                                 if (fouling != 0) {
-                                     hours[lane] = ((*x.entry)[parcel] + s - x.t0) / 3600.0;
-                                 }
-                                 if (gasCoupling != 0) { // conditions at the parcel's entry
-                                     const SamplePoint in0 = x.locate(parcel, 0.0);
-                                     xEntry[lane] = in0.of(x.in->xInDb);
-                                     const double dryFeed = in0.of(x.in->feedKgPerS) / (1 + xEntry[lane]);
-                                     const double air = std::max(1.0, in0.of(x.in->airSpeedMPerS));
-                                     gasCooling[lane] = kModelLatentHeat * dryFeed /
-                                                        (kModelAirHeatCapacity * kModelAirMassPerSpeed * air);
-                                 }
-                             }
-                             TubeEnvironmentT<T> env;
-                             env.tGasK = l.load(gas);
-                             if (gasCoupling != 0) { // gas_phase_coupling, simple form
-                                 env.tGasK = env.tGasK -
-                                             gasCoupling * l.load(gasCooling) * (l.load(xEntry) - l.state(0));
-                             }
-                             env.wGas = p[Param::w];
-                             env.h = properties::math::constant<T>(p[Param::h_HDT]);
-                             if (fouling != 0) { // heat_transfer_fouling, simple form
-                                 env.h = p[Param::h_HDT] *
-                                         properties::math::maxOf(T(1.0 - fouling * l.load(hours)), 0.05);
-                             }
-                             env.k = p[Param::k_HDT];
-                             if (falling != 0) { // falling_rate_drying, simple form
-                                 const T depth = properties::math::minOf(
-                                     properties::math::maxOf(
-                                         T((kModelCriticalMoisture - l.state(0)) / kModelCriticalMoisture), 0.0),
-                                     1.0);
-                                 env.dryingFactor = 1.0 - falling * depth;
-                             }
-                             return generic::tubeRates(l.state(0), l.state(1), env, p, sw);
-                         });
+    return forParcels<2>(
+        c, first, count, y, ydot,
+        [s](const SectionContext& x, const ParameterSet& p, const properties::ModelSwitches& sw,
+            const auto& l) {
+            using T = std::decay_t<decltype(l.state(0))>;
+            const double wall = p[Param::theta_wall];
+            const double gasCoupling = p[Param::theta_gas];
+            const double fouling = p[Param::theta_foul];
+            const double falling = p[Param::theta_fall];
+            double gas[2] = {0, 0};
+            double hours[2] = {0, 0};      // since the batch started
+            double gasCooling[2] = {0, 0}; // K per kg/kg evaporated
+            double xEntry[2] = {0, 0};
+            for (int lane = 0; lane < l.width; ++lane) {
+                const std::size_t parcel = l.parcel + static_cast<std::size_t>(lane);
+                const SamplePoint where = x.locate(parcel, s);
+                const double tHot = where.of(x.in->tHotK);
+                gas[lane] = tHot;
+                if (wall != 0) { // tube_wall_heat_loss, simple form
+                    gas[lane] = tHot - wall * (tHot - where.of(x.in->tAmbK));
+                }
+                if (fouling != 0) {
+                    hours[lane] = ((*x.entry)[parcel] + s - x.t0) / 3600.0;
+                }
+                if (gasCoupling != 0) { // conditions at the parcel's entry
+                    const SamplePoint in0 = x.locate(parcel, 0.0);
+                    xEntry[lane] = in0.of(x.in->xInDb);
+                    const double dryFeed = in0.of(x.in->feedKgPerS) / (1 + xEntry[lane]);
+                    const double air = std::max(1.0, in0.of(x.in->airSpeedMPerS));
+                    gasCooling[lane] =
+                        kModelLatentHeat * dryFeed / (kModelAirHeatCapacity * kModelAirMassPerSpeed * air);
+                }
+            }
+            TubeEnvironmentT<T> env;
+            env.tGasK = l.load(gas);
+            if (gasCoupling != 0) { // gas_phase_coupling, simple form
+                env.tGasK = env.tGasK - gasCoupling * l.load(gasCooling) * (l.load(xEntry) - l.state(0));
+            }
+            env.wGas = p[Param::w];
+            env.h = properties::math::constant<T>(p[Param::h_HDT]);
+            if (fouling != 0) { // heat_transfer_fouling, simple form
+                env.h = p[Param::h_HDT] * properties::math::maxOf(T(1.0 - fouling * l.load(hours)), 0.05);
+            }
+            env.k = p[Param::k_HDT];
+            if (falling != 0) { // falling_rate_drying, simple form
+                const T depth = properties::math::minOf(
+                    properties::math::maxOf(T((kModelCriticalMoisture - l.state(0)) / kModelCriticalMoisture),
+                                            0.0),
+                    1.0);
+                env.dryingFactor = 1.0 - falling * depth;
+            }
+            return generic::tubeRates(l.state(0), l.state(1), env, p, sw);
+        });
 }
 
 /// The air around every lane's parcel, one input look-up per parcel for all series.
@@ -578,8 +577,9 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& in, const Paramete
             }
             v = std::move(out);
         };
-        for (auto* v : {&res->xOutDb, &res->tOutK, &res->xHdtDb, &res->tHdtK, &res->proxyXHdtDb, &res->proxyTHdtK,
-                        &res->proxyXConvDb, &res->proxyTConvK, &res->proxyXMixDb, &res->proxyTMixK}) {
+        for (auto* v :
+             {&res->xOutDb, &res->tOutK, &res->xHdtDb, &res->tHdtK, &res->proxyXHdtDb, &res->proxyTHdtK,
+              &res->proxyXConvDb, &res->proxyTConvK, &res->proxyXMixDb, &res->proxyTMixK}) {
             pick(*v);
         }
         for (auto& sens : res->sensitivities) {
@@ -634,7 +634,8 @@ Expected<SimulationResult> simulateLine(const LineInputs& inputs, const Paramete
         return st.error();
     }
     if (params[Param::tau_conv] + params[Param::dtau_conv] < 1.0) {
-        return Error{ErrorKind::BadInput, "dtau_conv", "the conveyor transport time tau_conv + dtau_conv must be at least 1 s"};
+        return Error{ErrorKind::BadInput, "dtau_conv",
+                     "the conveyor transport time tau_conv + dtau_conv must be at least 1 s"};
     }
     if (auto st = inputs.validate(); !st) {
         return st.error();

@@ -14,8 +14,8 @@ using properties::ParameterSet;
 /// @brief What a parcel in the drying tube sees. The PBM uses T_hot, the parameter w and the
 /// tube coefficients; the virtual plant passes modified values for its extra mechanisms.
 template <class T> struct TubeEnvironmentT {
-    T tGasK{};                 ///< gas temperature around the parcel (PBM: T_hot)
-    double wGas = 0;           ///< humidity ratio of the gas (PBM: parameter w)
+    T tGasK{};       ///< gas temperature around the parcel (PBM: T_hot)
+    double wGas = 0; ///< humidity ratio of the gas (PBM: parameter w)
     // Eigen's Pack2 leaves its elements uninitialised by default: every member starts from a value.
     T h = properties::math::constant<T>(0.0); ///< heat-transfer coefficient [W/(m²·K)] (h_HDT, less fouling)
     double k = 0;                             ///< mass-transfer coefficient [m/s] (PBM: k_HDT)
@@ -38,7 +38,7 @@ using SectionRates = SectionRatesT<double>;
 /// @brief What a parcel in the conveyor's top layer or the winnower sees.
 template <class T> struct AmbientEnvironmentT {
     T tAirK{};
-    T rh{};                 ///< [0..1]
+    T rh{};                                             ///< [0..1]
     T extraUptake = properties::math::constant<T>(0.0); ///< added dX/dt [1/s] (re-absorption; paper: 0)
     /// Equilibrium moisture X_e of this air when the caller already has it (the line simulator
     /// interpolates it between samples, like the inputs it comes from; hasXe set); otherwise

@@ -17,8 +17,8 @@ const std::vector<MechanismInfo>& mechanisms() {
         {Mechanism::MoistureMeterLag, "moisture_meter_lag",
          "total time constant of the outlet moisture meter (second order: two equal stages)", "s", 30, 600},
         {Mechanism::MoistureMeterOffset, "moisture_meter_offset",
-         "offset of the outlet moisture meter at 55 °C (it grows 10 % per 10 K of product temperature)", "% wb",
-         0.2, 3.0},
+         "offset of the outlet moisture meter at 55 °C (it grows 10 % per 10 K of product temperature)",
+         "% wb", 0.2, 3.0},
         {Mechanism::TransportDelayError, "transport_delay_error",
          "conveyor transport time minus its nominal value (with axial dispersion growing with it)", "s", 15,
          300},
@@ -27,7 +27,8 @@ const std::vector<MechanismInfo>& mechanisms() {
          "X_cr = 0.20 kg/kg",
          "-", 0.5, 1.0},
         {Mechanism::AmbientReabsorption, "ambient_reabsorption",
-         "moisture uptake on the conveyor: s 1e-4 RH exp(3 (RH - 0.5)) (1 - X/0.35) [1/s]", "1e-4 1/s", 3, 50},
+         "moisture uptake on the conveyor: s 1e-4 RH exp(3 (RH - 0.5)) (1 - X/0.35) [1/s]", "1e-4 1/s", 3,
+         50},
     };
     return m;
 }

@@ -132,7 +132,8 @@ Status PlantOptions::validate() const {
     if (std::abs(tauH - std::round(tauH)) > 1e-9) {
         return Error{ErrorKind::Usage, "tau_HDT", "the plant needs a whole number of seconds"};
     }
-    if (!(hiddenPeriodS >= 10 && hiddenPeriodS <= 1e5) || !(hiddenAmplitudeK >= 0 && hiddenAmplitudeK <= 30)) {
+    if (!(hiddenPeriodS >= 10 && hiddenPeriodS <= 1e5) ||
+        !(hiddenAmplitudeK >= 0 && hiddenAmplitudeK <= 30)) {
         return Error{ErrorKind::Usage, "hidden periodic disturbance",
                      "period must lie in [10, 1e5] s and amplitude in [0, 30] K"};
     }

@@ -76,13 +76,13 @@ const std::array<ParameterInfo, kParamCount>& parameterTable() {
         // the virtual plant has its own, richer forms (docs/mechanisms.md). Default 0: the paper's
         // model. Those acting outside the ODEs are marked like durations: their sensitivities come
         // from differences of whole runs.
-        {Param::theta_wall, "theta_wall", "tube wall heat loss: T_gas = T_hot - theta (T_hot - T_amb)", "-", 0,
-         0, 0.5, "extension tube_wall_heat_loss", false, false},
+        {Param::theta_wall, "theta_wall", "tube wall heat loss: T_gas = T_hot - theta (T_hot - T_amb)", "-",
+         0, 0, 0.5, "extension tube_wall_heat_loss", false, false},
         {Param::theta_gas, "theta_gas",
          "gas-phase coupling: T_gas falls by theta L_v (X_in - X) m_dry / (c_air m_air) along the tube", "-",
          0, 0, 2, "extension gas_phase_coupling", false, false},
-        {Param::theta_foul, "theta_foul", "fouling: h = h_HDT (1 - theta t), t since the batch started", "1/h",
-         0, 0, 0.4, "extension heat_transfer_fouling", false, false},
+        {Param::theta_foul, "theta_foul", "fouling: h = h_HDT (1 - theta t), t since the batch started",
+         "1/h", 0, 0, 0.4, "extension heat_transfer_fouling", false, false},
         {Param::tau_meter, "tau_meter", "first-order lag of the outlet moisture meter", "s", 0, 0, 600,
          "extension moisture_meter_lag", false, true},
         {Param::X_meter_offset, "X_meter_offset", "constant offset of the outlet moisture meter", "% wb", 0,
@@ -92,15 +92,15 @@ const std::array<ParameterInfo, kParamCount>& parameterTable() {
         {Param::theta_fall, "theta_fall",
          "falling-rate drying: Eq. 10 times 1 - theta (X_cr - X)/X_cr below X_cr = 0.25 kg/kg", "-", 0, 0, 1,
          "extension falling_rate_drying", false, false},
-        {Param::theta_reabs, "theta_reabs", "re-absorption on the conveyor: dX/dt gains theta RH", "1e-4 1/s", 0,
-         0, 60, "extension ambient_reabsorption", false, false},
+        {Param::theta_reabs, "theta_reabs", "re-absorption on the conveyor: dX/dt gains theta RH", "1e-4 1/s",
+         0, 0, 60, "extension ambient_reabsorption", false, false},
     }};
     return t;
 }
 
 namespace {
 constexpr std::string_view kMechanismNames[kMechanismParamCount] = {
-    "tube_wall_heat_loss", "gas_phase_coupling",    "heat_transfer_fouling", "moisture_meter_lag",
+    "tube_wall_heat_loss",   "gas_phase_coupling",    "heat_transfer_fouling", "moisture_meter_lag",
     "moisture_meter_offset", "transport_delay_error", "falling_rate_drying",   "ambient_reabsorption"};
 } // namespace
 

@@ -6,10 +6,10 @@
 #include "data/BatchWriter.h"
 #include "data/ColumnMapping.h"
 #include "diagnostics/Metrics.h"
+#include "hybrid/Evaluation.h"
 #include "io/ModelFile.h"
 #include "io/Report.h"
 #include "io/ResultFiles.h"
-#include "hybrid/Evaluation.h"
 #include "physics/LineInputs.h"
 #include "plant/PlantExport.h"
 
@@ -338,7 +338,8 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
     auto& ext = result.extendedModel;
     ext.parameters = found->parameters;
     for (const auto& f : found->findings) {
-        ext.mechanisms[f.cause] = {f.value, std::string(properties::info(f.parameter).unit), f.ci95Low, f.ci95High};
+        ext.mechanisms[f.cause] = {f.value, std::string(properties::info(f.parameter).unit), f.ci95Low,
+                                   f.ci95High};
     }
     hybrid::CalibrationRecord rec;
     rec.algorithm = "discovery: h_HDT, k_HDT and the named mechanisms refitted on the training part (BOBYQA)";
@@ -352,8 +353,9 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
     ext.pgrlCc.reset();
     ext.extInput.reset();
     if (options.retrainResidual) {
-        const auto pgrlHeldOut = [&](const hybrid::HybridModel& m, std::shared_ptr<const residual::ResidualModel>& out,
-                                     double& maeX, double& maeT) -> Status {
+        const auto pgrlHeldOut = [&](const hybrid::HybridModel& m,
+                                     std::shared_ptr<const residual::ResidualModel>& out, double& maeX,
+                                     double& maeT) -> Status {
             auto sims = hybrid::simulatePbm(m_si, m, m.switches);
             if (!sims) {
                 return sims.error();
@@ -376,11 +378,13 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
         std::shared_ptr<const residual::ResidualModel> before;
         hybrid::HybridModel start = m_model;
         start.parameters = found->baseParameters; // the same refit, without the causes
-        if (auto st = pgrlHeldOut(start, before, result.hybridMaeMoistureBefore, result.hybridMaeTemperatureBefore);
+        if (auto st =
+                pgrlHeldOut(start, before, result.hybridMaeMoistureBefore, result.hybridMaeTemperatureBefore);
             !st) {
             return st.error();
         }
-        if (auto st = pgrlHeldOut(ext, ext.pgrlCc, result.hybridMaeMoistureAfter, result.hybridMaeTemperatureAfter);
+        if (auto st =
+                pgrlHeldOut(ext, ext.pgrlCc, result.hybridMaeMoistureAfter, result.hybridMaeTemperatureAfter);
             !st) {
             return st.error();
         }

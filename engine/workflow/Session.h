@@ -117,7 +117,8 @@ struct EvaluateResult {
 /// @brief Discovery on the loaded data with the session's model (CONTRACT.md §2 `discover`).
 struct DiscoverOptions {
     discovery::DiscoveryOptions discovery;
-    bool retrainResidual = true; ///< retrain PGRL-CC on the starting and the extended model for the hybrid gain
+    bool retrainResidual =
+        true; ///< retrain PGRL-CC on the starting and the extended model for the hybrid gain
     Status validate() const { return discovery.validate(); }
 };
 

@@ -72,7 +72,8 @@ private Q_SLOTS:
         const auto& g = r.findings.front().gain;
         const double dropX = 1 - g.maeMoistureAfter / g.maeMoistureBefore;
         const double dropT = 1 - g.maeTemperatureAfter / g.maeTemperatureBefore;
-        QVERIFY2(std::max(dropX, dropT) >= 0.30, qPrintable(QStringLiteral("X %1 %, T %2 %").arg(100 * dropX).arg(100 * dropT)));
+        QVERIFY2(std::max(dropX, dropT) >= 0.30,
+                 qPrintable(QStringLiteral("X %1 %, T %2 %").arg(100 * dropX).arg(100 * dropT)));
         QVERIFY(g.pValue < 0.05);
         // The parameter carries an interval around its value, and the evidence names numbers.
         const auto& f = r.findings.front();

@@ -536,8 +536,8 @@ private Q_SLOTS:
                 const double gas[2] = {ut(rng) + 100, ut(rng) + 100};
                 const Pack2 xp(x[0], x[1]);
                 const Pack2 tp(t[0], t[1]);
-                TubeEnvironmentT<Pack2> tubeP{Pack2(gas[0], gas[1]), m_p[Param::w], Pack2::Constant(70.0), 0.02,
-                                              Pack2::Constant(1.0)};
+                TubeEnvironmentT<Pack2> tubeP{Pack2(gas[0], gas[1]), m_p[Param::w], Pack2::Constant(70.0),
+                                              0.02, Pack2::Constant(1.0)};
                 AmbientEnvironmentT<Pack2> airP{Pack2(295.0, 301.0), Pack2(0.4, 0.7), Pack2::Constant(0.0),
                                                 Pack2(0.0, 0.0), false};
                 const auto tube = generic::tubeRates(xp, tp, tubeP, m_p, s);

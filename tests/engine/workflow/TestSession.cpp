@@ -143,9 +143,9 @@ private Q_SLOTS:
         for (const auto& m : ev->evaluation.models) {
             names << QString::fromStdString(m.name);
         }
-        QCOMPARE(names, QStringList({"pbm", "lstm", "ext_input_residual", "pgrl_cc"}));
+        QCOMPARE(names, QStringList({"pbm", "persistence", "pbm_residual_hold", "lstm", "ext_input_residual", "pgrl_cc"}));
         QVERIFY(ev->diagnostics.hasPgrlCcEigenvalues);
-        QCOMPARE(ev->diagnostics.models.size(), std::size_t(4));
+        QCOMPARE(ev->diagnostics.models.size(), std::size_t(6));
         QVERIFY(ev->diagnostics.pgrlCcAfter.spectralRadius <=
                 ev->diagnostics.pgrlCcBefore.spectralRadius + 1e-12);
         // The hybrid beats the physics model alone one step ahead on this plant data.
@@ -190,8 +190,10 @@ private Q_SLOTS:
         const auto best = std::min_element(history.begin(), history.end(),
                                            [](const auto& a, const auto& b) { return a.loss < b.loss; });
         const bool improved = best->loss < r->calibration.before.loss;
-        QCOMPARE(s.model().parameters[Param::h_HDT], improved ? best->values[0] : r->startParameters[Param::h_HDT]);
-        QCOMPARE(s.model().parameters[Param::k_HDT], improved ? best->values[1] : r->startParameters[Param::k_HDT]);
+        QCOMPARE(s.model().parameters[Param::h_HDT],
+                 improved ? best->values[0] : r->startParameters[Param::h_HDT]);
+        QCOMPARE(s.model().parameters[Param::k_HDT],
+                 improved ? best->values[1] : r->startParameters[Param::k_HDT]);
         // The fit after is recomputed with sensitivities (for the intervals), whose error control
         // differs slightly from the plain runs of the search.
         const double bestLoss = std::min(best->loss, r->calibration.before.loss);
@@ -338,7 +340,8 @@ private Q_SLOTS:
                 QVERIFY2(std::filesystem::exists(f), f.c_str());
             }
         }
-        QCOMPARE(stages, QStringList({"inspect", "calibrate", "train", "evaluate", "ablation", "discover", "report"}));
+        QCOMPARE(stages, QStringList({"inspect", "calibrate", "train", "evaluate", "ablation", "discover",
+                                      "report"}));
         QCOMPARE(r->ablation.rows.size(), std::size_t(7));
         // The files hold the session's own numbers.
         auto saved = io::readModelFile(p.outFolder + "/model.json");
