@@ -278,17 +278,18 @@ void printCalibration(const workflow::CalibrateResult& result) {
 
 void printEvaluation(const evaluation::EvaluationResult& ev) {
     std::printf("held-out part: %s, %zu rows\n", ev.split.c_str(), ev.testRows);
-    std::printf("%-20s %10s %8s %10s %10s %8s %10s %7s | %d-step: %9s %10s %7s\n", "model", "MAE X [%]", "R2 X",
-                "LB p X", "MAE T [C]", "R2 T", "LB p T", "skill X", ev.multiStepHorizon, "MAE X [%]", "MAE T [C]",
-                "skill X");
+    std::printf("%-20s %10s %8s %10s %10s %8s %10s %7s | %d-step: %9s %10s %7s\n", "model", "MAE X [%]",
+                "R2 X", "LB p X", "MAE T [C]", "R2 T", "LB p T", "skill X", ev.multiStepHorizon, "MAE X [%]",
+                "MAE T [C]", "skill X");
     for (const auto& m : ev.models) {
         std::printf("%-20s %10.4f %8.4f %10.3g %10.4f %8.4f %10.3g %7.3f |          %9.4f %10.4f %7.3f\n",
                     m.name.c_str(), m.moisture.mae, m.moisture.r2, m.moisture.ljungBoxP, m.temperature.mae,
                     m.temperature.r2, m.temperature.ljungBoxP, m.skillMoisture, m.moistureMultiStep.mae,
                     m.temperatureMultiStep.mae, m.skillMoistureMultiStep);
     }
-    std::printf("skill: MAE over the better of persistence and pbm_residual_hold at the same horizon (< 1 beats "
-                "both)\n");
+    std::printf(
+        "skill: MAE over the better of persistence and pbm_residual_hold at the same horizon (< 1 beats "
+        "both)\n");
 }
 
 void printTraining(const workflow::TrainResult& t) {
@@ -557,11 +558,10 @@ int runPipeline(const CommandOptions& o) {
         }
         std::printf("\n");
     }
+    std::printf("\n== not in this version ==\nmpc is not implemented yet; the report says so.\n");
     std::printf(
-        "\n== not in this version ==\ndiscover and mpc are not implemented yet; the report says so.\n");
-    std::printf(
-        "\nreport %s, with inspect.json, model-calibrated.json, model.json, evaluate.json, ablation.json and "
-        "diagnostics.json beside it\n",
+        "\nreport %s, with inspect.json, model-calibrated.json, model.json, evaluate.json, ablation.json, "
+        "diagnostics.json, discover.json and model-extended.json beside it\n",
         r.reportPath.c_str());
     return 0;
 }

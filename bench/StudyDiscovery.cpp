@@ -1,7 +1,7 @@
 // The discovery study of issue #10: every mechanism x 3 seeds x 2 strengths, plus 10 data sets
 // without any mechanism (half with unmeasured drift). Prints how often the hidden cause is named
 // first and how often a cause is named that is not there, as a Markdown table.
-// Run: build/bench/study_discovery [--quick]   (about 15 min on 2 cores; --quick: one seed)
+// Run: build/bench/study_discovery [--quick]   (about 25 min on 2 cores; --quick: one seed)
 #include "discovery/Discovery.h"
 #include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"

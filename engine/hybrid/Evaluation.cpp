@@ -153,7 +153,8 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
         const auto one = scorePredictions(
             test, [&](const residual::BatchView& v) { return referencePrediction(v, 1, hold); }, lags);
         const auto multi = scorePredictions(
-            test, [&](const residual::BatchView& v) { return referencePrediction(v, options.horizonSteps, hold); },
+            test,
+            [&](const residual::BatchView& v) { return referencePrediction(v, options.horizonSteps, hold); },
             lags);
         m.moisture = one.moisture;
         m.temperature = one.temperature;

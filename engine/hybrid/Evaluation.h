@@ -84,7 +84,8 @@ inline constexpr const char* kPbmResidualHoldKey = "pbm_residual_hold";
 /// @brief The reference predictions of a view's rows @p horizon steps ahead: the last measurement
 /// held (persistence, ŷ_{k+H} = y_k), or with @p holdPbmError the PBM with its last measured error
 /// held (ŷ_{k+H} = ŷ_mech,k+H + e_k). NaN where the batch has no measurement H steps before.
-residual::HybridPrediction referencePrediction(const residual::BatchView& view, int horizon, bool holdPbmError);
+residual::HybridPrediction referencePrediction(const residual::BatchView& view, int horizon,
+                                               bool holdPbmError);
 
 /// @brief The PBM's own predictions of a view's rows (% wb, °C).
 residual::HybridPrediction pbmPrediction(const residual::BatchView& view);

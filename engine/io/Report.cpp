@@ -144,6 +144,9 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
             r += "- Unexplained structure in " + u.value("output", std::string()) + ": " +
                  u.value("signature", std::string()) +
                  (u.contains("period_s") ? ", period " + num(u["period_s"], "%.0f") + " s" : std::string()) +
+                 (u.contains("column")
+                      ? ", " + u.value("column", std::string()) + " at " + num(u["lag_s"], "%.0f") + " s"
+                      : std::string()) +
                  "\n";
         }
         for (const auto& rd : d["rounds"]) {

@@ -40,9 +40,10 @@ std::string evaluationJson(const evaluation::EvaluationResult& r) {
     json multi;
     multi["horizon_steps"] = r.multiStepHorizon;
     for (const auto& m : r.models) {
-        j["models"][m.name] = {{"moisture", metrics(m.moisture)},
-                               {"temperature", metrics(m.temperature)},
-                               {"skill", {{"moisture", m.skillMoisture}, {"temperature", m.skillTemperature}}}};
+        j["models"][m.name] = {
+            {"moisture", metrics(m.moisture)},
+            {"temperature", metrics(m.temperature)},
+            {"skill", {{"moisture", m.skillMoisture}, {"temperature", m.skillTemperature}}}};
         if (m.hasStability) {
             j["models"][m.name]["stability"] = {{"spectral_radius_before", m.spectralRadiusBefore},
                                                 {"spectral_radius_after", m.spectralRadiusAfter},
@@ -52,7 +53,8 @@ std::string evaluationJson(const evaluation::EvaluationResult& r) {
         multi["models"][m.name] = {
             {"moisture", metrics(m.moistureMultiStep)},
             {"temperature", metrics(m.temperatureMultiStep)},
-            {"skill", {{"moisture", m.skillMoistureMultiStep}, {"temperature", m.skillTemperatureMultiStep}}}};
+            {"skill",
+             {{"moisture", m.skillMoistureMultiStep}, {"temperature", m.skillTemperatureMultiStep}}}};
     }
     j["multi_step"] = multi;
     return j.dump(2) + "\n";

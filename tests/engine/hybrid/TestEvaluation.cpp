@@ -41,7 +41,8 @@ private Q_SLOTS:
         QVERIFY(std::abs(h1.tOutC[2] - 52.0) < 1e-12);
         // Scored over the rows: persistence errs by exactly 1 % wb and 1 °C at every row.
         const auto scored = evaluation::scorePredictions(
-            {view}, [](const residual::BatchView& v) { return evaluation::referencePrediction(v, 1, false); }, 1);
+            {view}, [](const residual::BatchView& v) { return evaluation::referencePrediction(v, 1, false); },
+            1);
         QVERIFY(std::abs(scored.moisture.mae - 1.0) < 1e-12);
         QVERIFY(std::abs(scored.temperature.mae - 1.0) < 1e-12);
     }

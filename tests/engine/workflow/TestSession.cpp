@@ -143,7 +143,8 @@ private Q_SLOTS:
         for (const auto& m : ev->evaluation.models) {
             names << QString::fromStdString(m.name);
         }
-        QCOMPARE(names, QStringList({"pbm", "persistence", "pbm_residual_hold", "lstm", "ext_input_residual", "pgrl_cc"}));
+        QCOMPARE(names, QStringList({"pbm", "persistence", "pbm_residual_hold", "lstm", "ext_input_residual",
+                                     "pgrl_cc"}));
         QVERIFY(ev->diagnostics.hasPgrlCcEigenvalues);
         QCOMPARE(ev->diagnostics.models.size(), std::size_t(6));
         QVERIFY(ev->diagnostics.pgrlCcAfter.spectralRadius <=
