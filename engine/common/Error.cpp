@@ -16,6 +16,10 @@ int exitCodeFor(ErrorKind kind) {
     return 1;
 }
 
+Error invalidOption(const std::string& option, const std::string& reason) {
+    return Error{ErrorKind::Usage, option, reason, ErrorCode::InvalidOption, {option, reason}};
+}
+
 Error cancelledError(const std::string& stage) {
     return Error{ErrorKind::Cancelled, stage, "cancelled by the user", ErrorCode::Cancelled, {stage}};
 }

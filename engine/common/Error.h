@@ -62,6 +62,9 @@ int exitCodeFor(ErrorKind kind);
 /// @brief The error of work the user stopped at @p stage ("calibrate", "load" ...).
 Error cancelledError(const std::string& stage);
 
+/// @brief A wrong option (exit code 2), with ErrorCode::InvalidOption and its arguments.
+Error invalidOption(const std::string& option, const std::string& reason);
+
 /// @brief A value or an error. Minimal stand-in for C++23 std::expected.
 template <class T> class Expected {
 public:

@@ -722,23 +722,22 @@ std::string format(const char* fmt, ...) {
 const char* lookFor(Param p) {
     switch (p) {
     case Param::theta_wall:
-        return "the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and "
-               "T_hot)";
+        return "the outlet-temperature error grows with the hot-air excess over ambient "
+               "(bias by T_amb and T_hot)";
     case Param::theta_gas:
         return "the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)";
     case Param::theta_foul:
         return "the error drifts within every batch and resets at each batch start";
     case Param::tau_meter:
-        return "the outlet-moisture error follows the rate of change of the simulated outlet moisture, and "
-               "the "
-               "tube-outlet error does not";
+        return "the outlet-moisture error follows the rate of change of the simulated outlet moisture, "
+               "and the tube-outlet error does not";
     case Param::X_meter_offset:
         return "a steady outlet-moisture bias that the tube-outlet moisture does not share";
     case Param::dtau_conv:
         return "the outlet error correlates with tube-outlet changes at a shifted lag";
     case Param::theta_fall:
-        return "the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries "
-               "furthest";
+        return "the tube-outlet and outlet moisture are wetter than simulated, "
+               "most where the tube dries furthest";
     case Param::theta_reabs:
         return "the outlet-moisture error grows with ambient humidity while the tube-outlet error does not";
     default:
@@ -750,26 +749,15 @@ const char* lookFor(Param p) {
 
 Status DiscoveryOptions::validate() const {
     if (!(trainFraction > 0.2 && trainFraction < 0.95)) {
-        return Error{ErrorKind::Usage,
-                     "train fraction",
-                     "must lie in (0.2, 0.95)",
-                     ErrorCode::InvalidOption,
-                     {"train fraction", "must lie in (0.2, 0.95)"}};
+        return invalidOption("train fraction", "must lie in (0.2, 0.95)");
     }
     if (!(screenAlpha > 0 && screenAlpha < 0.5) || !(gainAlpha > 0 && gainAlpha < 0.5) ||
         !(minExplainedFraction >= 0 && minExplainedFraction < 1)) {
-        return Error{ErrorKind::Usage,
-                     "alpha",
-                     "test levels must lie in (0, 0.5), the explained share in [0, 1)",
-                     ErrorCode::InvalidOption,
-                     {"alpha", "test levels must lie in (0, 0.5), the explained share in [0, 1)"}};
+        return invalidOption("alpha", "test levels must lie in (0, 0.5), the explained share in [0, 1)");
     }
     if (maxCauses < 0 || candidatesToFit < 1 || maxEvaluationsPerFit < 10) {
-        return Error{ErrorKind::Usage,
-                     "discovery limits",
-                     "max causes ≥ 0, candidates to fit ≥ 1, evaluations per fit ≥ 10",
-                     ErrorCode::InvalidOption,
-                     {"discovery limits", "max causes ≥ 0, candidates to fit ≥ 1, evaluations per fit ≥ 10"}};
+        return invalidOption("discovery limits",
+                             "max causes ≥ 0, candidates to fit ≥ 1, evaluations per fit ≥ 10");
     }
     return {};
 }

@@ -27,25 +27,13 @@ OutputMetrics outputMetrics(const std::vector<double>& observed, const std::vect
 
 Status EvaluationOptions::validate() const {
     if (horizonSteps < 1) {
-        return Error{ErrorKind::Usage,
-                     "horizon",
-                     "must be at least 1 step",
-                     ErrorCode::InvalidOption,
-                     {"horizon", "must be at least 1 step"}};
+        return invalidOption("horizon", "must be at least 1 step");
     }
     if (!(trainFraction > 0 && trainFraction < 1)) {
-        return Error{ErrorKind::Usage,
-                     "train fraction",
-                     "must lie strictly between 0 and 1",
-                     ErrorCode::InvalidOption,
-                     {"train fraction", "must lie strictly between 0 and 1"}};
+        return invalidOption("train fraction", "must lie strictly between 0 and 1");
     }
     if (ljungBoxLags < 1) {
-        return Error{ErrorKind::Usage,
-                     "Ljung-Box lags",
-                     "must be at least 1",
-                     ErrorCode::InvalidOption,
-                     {"Ljung-Box lags", "must be at least 1"}};
+        return invalidOption("Ljung-Box lags", "must be at least 1");
     }
     return {};
 }

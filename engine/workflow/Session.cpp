@@ -25,10 +25,6 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-Error invalidOption(const std::string& option, const std::string& reason) {
-    return Error{ErrorKind::Usage, option, reason, ErrorCode::InvalidOption, {option, reason}};
-}
-
 } // namespace
 
 Status OpenOptions::validate() const {
@@ -181,6 +177,13 @@ Expected<GenerateResult> Session::generate(const GenerateOptions& options, const
     return result;
 }
 
+template <class Options> Status Session::ready(const Options& options, const std::string& action) const {
+    if (auto st = options.validate(); !st) {
+        return st;
+    }
+    return requireData(action);
+}
+
 Status Session::requireData(const std::string& action) const {
     if (!m_dataSet) {
         return Error{ErrorKind::Usage,
@@ -201,10 +204,7 @@ Expected<data::DataSetSummary> Session::inspect() const {
 
 Expected<SimulateResult> Session::simulate(const SimulateOptions& options, const Progress& progress) {
     const auto t0 = std::chrono::steady_clock::now();
-    if (auto st = options.validate(); !st) {
-        return st.error();
-    }
-    if (auto st = requireData("simulate"); !st) {
+    if (auto st = ready(options, "simulate"); !st) {
         return st.error();
     }
     auto sims = hybrid::simulatePbm(m_si, m_model, m_model.switches, progress);
@@ -235,10 +235,7 @@ Expected<SimulateResult> Session::simulate(const SimulateOptions& options, const
 }
 
 Expected<CalibrateResult> Session::calibrate(const CalibrateOptions& options, const Progress& progress) {
-    if (auto st = options.validate(); !st) {
-        return st.error();
-    }
-    if (auto st = requireData("calibrate"); !st) {
+    if (auto st = ready(options, "calibrate"); !st) {
         return st.error();
     }
     calibration::CalibrationOptions co = options.calibration;
@@ -278,10 +275,7 @@ Expected<CalibrateResult> Session::calibrate(const CalibrateOptions& options, co
 }
 
 Expected<TrainResult> Session::train(const TrainOptions& options, const Progress& progress) {
-    if (auto st = options.validate(); !st) {
-        return st.error();
-    }
-    if (auto st = requireData("train"); !st) {
+    if (auto st = ready(options, "train"); !st) {
         return st.error();
     }
     auto trained = hybrid::trainResidualModels(m_si, m_model, options.residual, options.lstm, progress);
@@ -303,10 +297,7 @@ Expected<TrainResult> Session::train(const TrainOptions& options, const Progress
 }
 
 Expected<EvaluateResult> Session::evaluate(const EvaluateOptions& options, const Progress& progress) {
-    if (auto st = options.validate(); !st) {
-        return st.error();
-    }
-    if (auto st = requireData("evaluate"); !st) {
+    if (auto st = ready(options, "evaluate"); !st) {
         return st.error();
     }
     auto ev = evaluation::evaluate(m_si, m_model, options.evaluation, progress);
@@ -323,10 +314,7 @@ Expected<EvaluateResult> Session::evaluate(const EvaluateOptions& options, const
 
 Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const Progress& progress) {
     const auto t0 = std::chrono::steady_clock::now();
-    if (auto st = options.validate(); !st) {
-        return st.error();
-    }
-    if (auto st = requireData("discover"); !st) {
+    if (auto st = ready(options, "discover"); !st) {
         return st.error();
     }
     auto found = discovery::discover(m_si, m_model, options.discovery, progress);
@@ -411,10 +399,7 @@ Expected<hybrid::AblationResult> Session::ablation(const Progress& progress) {
 
 Expected<PipelineResult> Session::pipeline(const PipelineOptions& options, const Progress& progress) {
     const auto t0 = std::chrono::steady_clock::now();
-    if (auto st = options.validate(); !st) {
-        return st.error();
-    }
-    if (auto st = requireData("pipeline"); !st) {
+    if (auto st = ready(options, "pipeline"); !st) {
         return st.error();
     }
     namespace fs = std::filesystem;

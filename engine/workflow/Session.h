@@ -225,6 +225,8 @@ public:
 
 private:
     Status requireData(const std::string& action) const;
+    /// Options valid and data loaded: the precondition of every action on the data.
+    template <class Options> Status ready(const Options& options, const std::string& action) const;
 
     std::shared_ptr<const data::DataSet> m_dataSet;
     std::string m_dataPath;
