@@ -133,27 +133,7 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
     }
     out.models.push_back(std::move(pbm));
 
-    // The two predictors every forecast must beat (CONTRACT.md §3), one step and H steps ahead.
-    for (const char* name : {kPersistenceKey, kPbmResidualHoldKey}) {
-        const bool hold = std::string(name) == kPbmResidualHoldKey;
-        ModelMetrics m;
-        m.name = name;
-        const auto one = scorePredictions(
-            test, [&](const residual::BatchView& v) { return referencePrediction(v, 1, hold); }, lags);
-        const auto multi = scorePredictions(
-            test,
-            [&](const residual::BatchView& v) { return referencePrediction(v, options.horizonSteps, hold); },
-            lags);
-        m.moisture = one.moisture;
-        m.temperature = one.temperature;
-        m.moistureResidual = one.moistureResidual;
-        m.temperatureResidual = one.temperatureResidual;
-        m.moistureMultiStep = multi.moisture;
-        m.temperatureMultiStep = multi.temperature;
-        out.models.push_back(std::move(m));
-    }
-
-    // One-step and H-step scores of a learnt model.
+    // One-step and H-step scores of a model.
     auto score = [&](const char* name, const Predictor& oneStep, const Predictor& ahead) {
         ModelMetrics m;
         m.name = name;
@@ -167,6 +147,16 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
         m.temperatureMultiStep = multi.temperature;
         return m;
     };
+    // The two predictors every forecast must beat (CONTRACT.md §3), one step and H steps ahead.
+    for (const char* name : {kPersistenceKey, kPbmResidualHoldKey}) {
+        const bool hold = std::string(name) == kPbmResidualHoldKey;
+        out.models.push_back(score(
+            name, [&](const residual::BatchView& v) { return referencePrediction(v, 1, hold); },
+            [&](const residual::BatchView& v) {
+                return referencePrediction(v, options.horizonSteps, hold);
+            }));
+    }
+
     const int h = options.horizonSteps;
     if (const auto& lstm = model.lstm) {
         out.models.push_back(score(
