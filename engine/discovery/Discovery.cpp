@@ -640,8 +640,7 @@ std::vector<OutputResidual> analyse(const Problem& pr, const std::vector<physics
 /// What is left that matches no mechanism, by signature.
 std::vector<Signature> signatures(const std::vector<OutputResidual>& residuals) {
     std::vector<Signature> out;
-    const Signature* periodic = nullptr;
-    Signature best;
+    Signature best; // the strongest spectral line, if any passes
     for (const auto& o : residuals) {
         if (o.output != "X_out" && o.output != "T_out") {
             continue;
@@ -652,10 +651,9 @@ std::vector<Signature> signatures(const std::vector<OutputResidual>& residuals) 
             best.output = o.output;
             best.periodS = o.peakPeriodS;
             best.strength = o.peakPowerRatio;
-            periodic = &best;
         }
     }
-    if (periodic) {
+    if (!best.type.empty()) {
         out.push_back(best);
     }
     for (const auto& o : residuals) {
@@ -901,7 +899,8 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
         return full.error();
     }
     result.residuals = analyse(pr, *full);
-    std::vector<OutputResidual> currentResiduals = result.residuals; // of the model before each round
+    // The residual analysis of the model as it stands (before each round, and at the end).
+    std::vector<OutputResidual> currentResiduals = result.residuals;
     auto currentHeld = heldOut(pr, current);
     if (!currentHeld) {
         return currentHeld.error();
@@ -1084,9 +1083,11 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             gain.maeMoistureAfter, gain.maeTemperatureBefore, gain.maeTemperatureAfter, gain.pValue,
             100 * f.explainedFraction, lookFor(chosen.parameter));
         result.findings.push_back(f);
-        if (auto sims = physics::simulateBatches(pr.inputs, bestParams, pr.simulation); sims) {
-            currentResiduals = analyse(pr, *sims);
+        auto sims = physics::simulateBatches(pr.inputs, bestParams, pr.simulation);
+        if (!sims) {
+            return sims.error();
         }
+        currentResiduals = analyse(pr, *sims);
         current = bestParams;
         currentLoss = chosen.fitLossAfter;
         *currentHeld = std::move(*afterHeld);
@@ -1118,11 +1119,9 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             }
         }
     }
-    auto finalSims = physics::simulateBatches(pr.inputs, current, pr.simulation);
-    if (!finalSims) {
-        return finalSims.error();
-    }
-    result.residualsAfter = analyse(pr, *finalSims);
+    // The residual of the extended model was analysed when its last cause was added (or is the
+    // starting model's, when none was): no further simulation.
+    result.residualsAfter = currentResiduals;
     result.unexplained = signatures(result.residualsAfter);
     result.parameters = current;
     result.verdict = !result.findings.empty()      ? "cause_found"
