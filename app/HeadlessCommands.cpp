@@ -290,6 +290,24 @@ void printEvaluation(const evaluation::EvaluationResult& ev) {
     std::printf(
         "skill: MAE over the better of persistence and pbm_residual_hold at the same horizon (< 1 beats "
         "both)\n");
+    std::printf("\nskill X (moisture) by horizon [steps = s]\n%-20s", "model");
+    for (int h : ev.horizons) {
+        std::printf(" %6d", h);
+    }
+    std::printf("\n");
+    for (const auto& m : ev.models) {
+        std::printf("%-20s", m.name.c_str());
+        for (double s : m.skillMoistureByHorizon) {
+            std::printf(" %6.3f", s);
+        }
+        std::printf("\n");
+    }
+    std::printf("\nfree run (never sees a measured output; skill against the references at %d steps)\n",
+                ev.horizons.empty() ? 0 : ev.horizons.back());
+    for (const auto& m : ev.freeRun) {
+        std::printf("%-20s MAE X %.4f %% wb, R2 X %.4f, MAE T %.4f °C, skill X %.3f\n", m.name.c_str(),
+                    m.moisture.mae, m.moisture.r2, m.temperature.mae, m.skillMoisture);
+    }
 }
 
 void printTraining(const workflow::TrainResult& t) {

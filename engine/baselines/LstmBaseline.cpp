@@ -236,6 +236,88 @@ residual::HybridPrediction LstmBaseline::predictAhead(const residual::BatchView&
     return out;
 }
 
+std::vector<residual::HybridPrediction> LstmBaseline::predictHorizons(const residual::BatchView& v,
+                                                                      const std::vector<int>& horizons) const {
+    torch::NoGradGuard noGrad;
+    const auto& im = *m_impl;
+    const std::size_t n = v.batch->rows();
+    const std::size_t count = v.rows.size();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<residual::HybridPrediction> out(horizons.size());
+    for (auto& p : out) {
+        p.xOutPct.assign(count, nan);
+        p.tOutC.assign(count, nan);
+        p.residualXPct.assign(count, nan);
+        p.residualTC.assign(count, nan);
+    }
+    std::size_t hMax = 1;
+    for (int h : horizons) {
+        hMax = std::max(hMax, static_cast<std::size_t>(std::max(1, h)));
+    }
+    if (count == 0 || n < 2) {
+        return out;
+    }
+    torch::Tensor f = im.features(*v.batch, 0, n).to(torch::kFloat32);
+    f = torch::nan_to_num(f, 0.0); // a missing cell enters as its training mean
+    // The state after each row, from one stateful pass.
+    torch::Tensor allH, allC;
+    {
+        std::vector<torch::Tensor> hs(n), cs(n);
+        torch::Tensor hState = torch::zeros({1, 1, im.options.hidden});
+        torch::Tensor cState = torch::zeros({1, 1, im.options.hidden});
+        for (std::size_t k = 0; k < n; ++k) {
+            auto r = im.net->lstm->forward(f.slice(1, static_cast<long>(k), static_cast<long>(k) + 1),
+                                           std::make_tuple(hState, cState));
+            hState = std::get<0>(std::get<1>(r));
+            cState = std::get<1>(std::get<1>(r));
+            hs[k] = hState;
+            cs[k] = cState;
+        }
+        allH = torch::cat(hs, 1);
+        allC = torch::cat(cs, 1);
+    }
+    // Every origin whose prediction lands in the view at some horizon up to hMax.
+    const std::size_t lo = v.rows.begin > hMax ? v.rows.begin - hMax : 0;
+    const std::size_t hi = v.rows.end - 1; // origins lo … hi−1 (targets ≥ origin + 1)
+    if (hi <= lo) {
+        return out;
+    }
+    const auto origins = torch::arange(static_cast<long>(lo), static_cast<long>(hi), torch::kLong);
+    torch::Tensor hState = allH.index_select(1, origins);
+    torch::Tensor cState = allC.index_select(1, origins);
+    torch::Tensor y = im.net->head->forward(hState.squeeze(0)); // row origin+1, standardised
+    for (std::size_t step = 1; step <= hMax; ++step) {
+        for (std::size_t slot = 0; slot < horizons.size(); ++slot) {
+            if (static_cast<std::size_t>(std::max(1, horizons[slot])) != step) {
+                continue;
+            }
+            const auto acc = y.to(torch::kFloat64).contiguous();
+            const auto a = acc.accessor<double, 2>();
+            for (std::size_t o = lo; o < hi; ++o) {
+                const std::size_t target = o + step;
+                if (target >= v.rows.begin && target < v.rows.end) {
+                    const auto j = static_cast<long>(o - lo);
+                    out[slot].xOutPct[target - v.rows.begin] = a[j][0] * im.scale[6] + im.mean[6];
+                    out[slot].tOutC[target - v.rows.begin] = a[j][1] * im.scale[7] + im.mean[7];
+                }
+            }
+        }
+        if (step == hMax) {
+            break;
+        }
+        // Inputs of row origin+step (known), outputs replaced by the model's own prediction;
+        // rows past the batch end repeat the last (their predictions are never read).
+        const auto rows = torch::clamp_max(origins + static_cast<long>(step), static_cast<long>(n) - 1);
+        torch::Tensor in = f.index_select(1, rows).transpose(0, 1).clone(); // [origins, 1, inputs]
+        in.slice(2, kInputs - kOutputs, kInputs) = y.unsqueeze(1);
+        auto r = im.net->lstm->forward(in, std::make_tuple(hState, cState));
+        hState = std::get<0>(std::get<1>(r));
+        cState = std::get<1>(std::get<1>(r));
+        y = im.net->head->forward(hState.squeeze(0));
+    }
+    return out;
+}
+
 std::string LstmBaseline::toJson() const {
     const auto& im = *m_impl;
     nlohmann::json j;

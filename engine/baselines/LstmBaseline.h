@@ -37,6 +37,10 @@ public:
                                         const LstmOptions& options, const Progress& progress = {});
     /// @brief Predictions of the rows of the view made @p horizon steps before (1 = one step).
     residual::HybridPrediction predictAhead(const residual::BatchView& view, int horizon) const;
+    /// @brief The same for several horizons at once (one per entry of @p horizons): every origin
+    /// is rolled once up to the largest horizon, feeding back its own outputs, and read off at each.
+    std::vector<residual::HybridPrediction> predictHorizons(const residual::BatchView& view,
+                                                            const std::vector<int>& horizons) const;
 
     std::string toJson() const;
     static Expected<LstmBaseline> fromJson(const std::string& json);

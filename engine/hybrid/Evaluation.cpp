@@ -6,6 +6,7 @@
 #include "hybrid/HybridTraining.h"
 #include "physics/LineSimulator.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -31,6 +32,11 @@ Status EvaluationOptions::validate() const {
     }
     if (!(trainFraction > 0 && trainFraction < 1)) {
         return invalidOption("train fraction", "must lie strictly between 0 and 1");
+    }
+    for (int h : horizons) {
+        if (h < 1 || h > 3600) {
+            return invalidOption("horizons", "each must lie in [1, 3600] steps");
+        }
     }
     if (ljungBoxLags < 1) {
         return invalidOption("Ljung-Box lags", "must be at least 1");
@@ -71,11 +77,12 @@ residual::HybridPrediction pbmPrediction(const residual::BatchView& v) {
     return p;
 }
 
-ScoredPredictions scorePredictions(const std::vector<residual::BatchView>& views, const Predictor& predict,
-                                   int lbLags) {
+namespace {
+
+/// Pools observed and predicted values of the kept rows of every view, then scores them.
+struct Pool {
     std::vector<double> ox, px, ot, pt;
-    for (const auto& v : views) {
-        const auto p = predict(v);
+    void add(const residual::BatchView& v, const residual::HybridPrediction& p) {
         for (std::size_t i = 0; i < v.rows.size(); ++i) {
             const std::size_t k = v.rows.begin + i;
             if (v.batch->keep[k] && std::isfinite(p.xOutPct[i]) && std::isfinite(p.tOutC[i])) {
@@ -86,14 +93,44 @@ ScoredPredictions scorePredictions(const std::vector<residual::BatchView>& views
             }
         }
     }
-    ScoredPredictions s;
-    s.moisture = outputMetrics(ox, px, lbLags);
-    s.temperature = outputMetrics(ot, pt, lbLags);
-    for (std::size_t i = 0; i < ox.size(); ++i) {
-        s.moistureResidual.push_back(ox[i] - px[i]);
-        s.temperatureResidual.push_back(ot[i] - pt[i]);
+    ScoredPredictions score(int lbLags) const {
+        ScoredPredictions s;
+        s.moisture = outputMetrics(ox, px, lbLags);
+        s.temperature = outputMetrics(ot, pt, lbLags);
+        for (std::size_t i = 0; i < ox.size(); ++i) {
+            s.moistureResidual.push_back(ox[i] - px[i]);
+            s.temperatureResidual.push_back(ot[i] - pt[i]);
+        }
+        return s;
     }
-    return s;
+};
+
+} // namespace
+
+ScoredPredictions scorePredictions(const std::vector<residual::BatchView>& views, const Predictor& predict,
+                                   int lbLags) {
+    Pool pool;
+    for (const auto& v : views) {
+        pool.add(v, predict(v));
+    }
+    return pool.score(lbLags);
+}
+
+std::vector<ScoredPredictions> scoreHorizons(const std::vector<residual::BatchView>& views,
+                                             const HorizonPredictor& predict, const std::vector<int>& horizons,
+                                             int lbLags) {
+    std::vector<Pool> pools(horizons.size());
+    for (const auto& v : views) {
+        const auto p = predict(v, horizons);
+        for (std::size_t h = 0; h < horizons.size(); ++h) {
+            pools[h].add(v, p.at(h));
+        }
+    }
+    std::vector<ScoredPredictions> out;
+    for (const auto& pool : pools) {
+        out.push_back(pool.score(lbLags));
+    }
+    return out;
 }
 
 Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
@@ -117,51 +154,77 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
         out.split = data::chronologicalSplit(rowsPerBatch, options.trainFraction).name;
     }
     out.multiStepHorizon = options.horizonSteps;
+    out.horizons = options.horizons;
+    out.horizons.push_back(1);
+    out.horizons.push_back(options.horizonSteps);
+    std::sort(out.horizons.begin(), out.horizons.end());
+    out.horizons.erase(std::unique(out.horizons.begin(), out.horizons.end()), out.horizons.end());
+    const auto& horizons = out.horizons;
+    const auto slotOf = [&](int h) {
+        return static_cast<std::size_t>(std::find(horizons.begin(), horizons.end(), h) - horizons.begin());
+    };
+    const std::size_t oneStep = slotOf(1);
+    const std::size_t multiStep = slotOf(options.horizonSteps);
     const int lags = options.ljungBoxLags;
-    // The PBM runs open loop on the inputs: its one-step and multi-step predictions coincide.
-    ModelMetrics pbm;
-    pbm.name = "pbm";
-    const auto pbmScore = scorePredictions(test, pbmPrediction, lags);
-    pbm.moisture = pbm.moistureMultiStep = pbmScore.moisture;
-    pbm.temperature = pbm.temperatureMultiStep = pbmScore.temperature;
-    pbm.moistureResidual = pbmScore.moistureResidual;
-    pbm.temperatureResidual = pbmScore.temperatureResidual;
-    out.testRows = pbm.moistureResidual.size();
+
+    // A model's scores at every horizon; the one-step and headline multi-step ones copied out.
+    auto score = [&](const char* name, const HorizonPredictor& predict) {
+        ModelMetrics m;
+        m.name = name;
+        const auto scored = scoreHorizons(test, predict, horizons, lags);
+        for (const auto& s : scored) {
+            m.moistureByHorizon.push_back(s.moisture);
+            m.temperatureByHorizon.push_back(s.temperature);
+        }
+        m.moisture = scored[oneStep].moisture;
+        m.temperature = scored[oneStep].temperature;
+        m.moistureResidual = scored[oneStep].moistureResidual;
+        m.temperatureResidual = scored[oneStep].temperatureResidual;
+        m.moistureMultiStep = scored[multiStep].moisture;
+        m.temperatureMultiStep = scored[multiStep].temperature;
+        return m;
+    };
+    const auto cancelled = [&](double fraction) {
+        return reportProgress(progress, "evaluate", fraction);
+    };
+
+    // The PBM runs open loop on the inputs: the same prediction at every horizon.
+    out.models.push_back(score("pbm", [](const residual::BatchView& v, const std::vector<int>& hs) {
+        return std::vector<residual::HybridPrediction>(hs.size(), pbmPrediction(v));
+    }));
+    out.testRows = out.models.front().moistureResidual.size();
     if (out.testRows < 30) {
         return Error{ErrorKind::BadInput, "held-out data",
                      "only " + std::to_string(out.testRows) + " held-out rows pass the cleaning rules"};
     }
-    out.models.push_back(std::move(pbm));
-
-    // One-step and H-step scores of a model.
-    auto score = [&](const char* name, const Predictor& oneStep, const Predictor& ahead) {
-        ModelMetrics m;
-        m.name = name;
-        const auto one = scorePredictions(test, oneStep, lags);
-        const auto multi = scorePredictions(test, ahead, lags);
-        m.moisture = one.moisture;
-        m.temperature = one.temperature;
-        m.moistureResidual = one.moistureResidual;
-        m.temperatureResidual = one.temperatureResidual;
-        m.moistureMultiStep = multi.moisture;
-        m.temperatureMultiStep = multi.temperature;
-        return m;
-    };
-    // The two predictors every forecast must beat (CONTRACT.md §3), one step and H steps ahead.
+    // The two predictors every forecast must beat (CONTRACT.md §3).
     for (const char* name : {kPersistenceKey, kPbmResidualHoldKey}) {
         const bool hold = std::string(name) == kPbmResidualHoldKey;
-        out.models.push_back(score(
-            name, [&](const residual::BatchView& v) { return referencePrediction(v, 1, hold); },
-            [&](const residual::BatchView& v) {
-                return referencePrediction(v, options.horizonSteps, hold);
+        out.models.push_back(score(name, [hold](const residual::BatchView& v, const std::vector<int>& hs) {
+            std::vector<residual::HybridPrediction> p;
+            for (int h : hs) {
+                p.push_back(referencePrediction(v, h, hold));
+            }
+            return p;
+        }));
+    }
+    if (cancelled(0.3)) {
+        return cancelledError("evaluate");
+    }
+    if (const auto& lstm = model.lstm) {
+        out.models.push_back(
+            score(hybrid::kLstmKey, [&](const residual::BatchView& v, const std::vector<int>& hs) {
+                return lstm->predictHorizons(v, hs);
             }));
     }
-
-    const int h = options.horizonSteps;
-    if (const auto& lstm = model.lstm) {
-        out.models.push_back(score(
-            hybrid::kLstmKey, [&](const residual::BatchView& v) { return lstm->predictAhead(v, 1); },
-            [&](const residual::BatchView& v) { return lstm->predictAhead(v, h); }));
+    if (cancelled(0.6)) {
+        return cancelledError("evaluate");
+    }
+    {
+        ModelMetrics pbmFree = out.models.front();
+        pbmFree.moistureByHorizon.clear();
+        pbmFree.temperatureByHorizon.clear();
+        out.freeRun.push_back(std::move(pbmFree));
     }
     const std::pair<const char*, const residual::ResidualModel*> residualModels[] = {
         {hybrid::kExtInputKey, model.extInput.get()}, {hybrid::kPgrlCcKey, model.pgrlCc.get()}};
@@ -169,9 +232,9 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
         if (!rm) {
             continue;
         }
-        ModelMetrics m = score(
-            key, [&](const residual::BatchView& v) { return rm->predictOneStep(v); },
-            [&](const residual::BatchView& v) { return rm->predictAhead(v, h); });
+        ModelMetrics m = score(key, [rm = rm](const residual::BatchView& v, const std::vector<int>& hs) {
+            return rm->predictHorizons(v, hs);
+        });
         const auto& c = rm->stability();
         m.hasStability = true;
         m.spectralRadiusBefore = c.spectralRadiusBefore;
@@ -179,31 +242,47 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
         m.alpha = c.alpha;
         m.certificateMaxEig = c.certificateMaxEig;
         out.models.push_back(std::move(m));
+
+        ModelMetrics free;
+        free.name = key;
+        const auto s = scorePredictions(test, [rm = rm](const residual::BatchView& v) { return rm->predictFreeRun(v); },
+                                        lags);
+        free.moisture = free.moistureMultiStep = s.moisture;
+        free.temperature = free.temperatureMultiStep = s.temperature;
+        free.moistureResidual = s.moistureResidual;
+        free.temperatureResidual = s.temperatureResidual;
+        out.freeRun.push_back(std::move(free));
     }
     // Skill: MAE over the better of the two reference predictors at the same horizon (< 1 beats both).
-    const auto reference = [&](auto metric) {
-        double best = std::numeric_limits<double>::infinity();
-        for (const auto& m : out.models) {
-            if (m.name == kPersistenceKey || m.name == kPbmResidualHoldKey) {
-                best = std::min(best, metric(m));
+    std::vector<double> refX(horizons.size(), std::numeric_limits<double>::infinity()), refT = refX;
+    for (const auto& m : out.models) {
+        if (m.name == kPersistenceKey || m.name == kPbmResidualHoldKey) {
+            for (std::size_t h = 0; h < horizons.size(); ++h) {
+                refX[h] = std::min(refX[h], m.moistureByHorizon[h].mae);
+                refT[h] = std::min(refT[h], m.temperatureByHorizon[h].mae);
             }
         }
-        return best;
-    };
-    const double refX = reference([](const ModelMetrics& m) { return m.moisture.mae; });
-    const double refT = reference([](const ModelMetrics& m) { return m.temperature.mae; });
-    const double refXH = reference([](const ModelMetrics& m) { return m.moistureMultiStep.mae; });
-    const double refTH = reference([](const ModelMetrics& m) { return m.temperatureMultiStep.mae; });
+    }
     for (auto& m : out.models) {
-        m.skillMoisture = m.moisture.mae / refX;
-        m.skillTemperature = m.temperature.mae / refT;
-        m.skillMoistureMultiStep = m.moistureMultiStep.mae / refXH;
-        m.skillTemperatureMultiStep = m.temperatureMultiStep.mae / refTH;
+        for (std::size_t h = 0; h < horizons.size(); ++h) {
+            m.skillMoistureByHorizon.push_back(m.moistureByHorizon[h].mae / refX[h]);
+            m.skillTemperatureByHorizon.push_back(m.temperatureByHorizon[h].mae / refT[h]);
+        }
+        m.skillMoisture = m.skillMoistureByHorizon[oneStep];
+        m.skillTemperature = m.skillTemperatureByHorizon[oneStep];
+        m.skillMoistureMultiStep = m.skillMoistureByHorizon[multiStep];
+        m.skillTemperatureMultiStep = m.skillTemperatureByHorizon[multiStep];
+    }
+    // A free run is compared with the best reference at the longest horizon: it never sees an
+    // output, so it is at least that far ahead.
+    for (auto& m : out.freeRun) {
+        m.skillMoisture = m.skillMoistureMultiStep = m.moisture.mae / refX.back();
+        m.skillTemperature = m.skillTemperatureMultiStep = m.temperature.mae / refT.back();
     }
     out.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.ending = {Termination::Completed,
                   std::to_string(out.models.size()) + " model(s) scored on " + std::to_string(out.testRows) +
-                      " held-out rows",
+                      " held-out rows at " + std::to_string(horizons.size()) + " horizons",
                   out.elapsedSeconds};
     return out;
 }

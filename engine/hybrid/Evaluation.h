@@ -16,6 +16,9 @@ namespace drytwin::evaluation {
 /// @brief Options of a held-out evaluation.
 struct EvaluationOptions {
     int horizonSteps = 30;      ///< multi-step horizon reported beside the one-step error
+    /// Horizons of the horizon curve [steps]; 1 and horizonSteps are always added. The line's
+    /// transport delay is about 70 s, so the curve runs well past it.
+    std::vector<int> horizons{1, 2, 5, 10, 20, 30, 45, 60, 90, 120, 150, 180};
     double trainFraction = 0.7; ///< chronological split (paper §IV.A)
     int ljungBoxLags = 20;
     Status validate() const;
@@ -39,6 +42,9 @@ struct ModelMetrics {
     std::vector<double> temperatureResidual; ///< held-out rows, °C
     /// MAE over the better of persistence and pbm_residual_hold at the same horizon (< 1 beats both).
     double skillMoisture = 0, skillTemperature = 0, skillMoistureMultiStep = 0, skillTemperatureMultiStep = 0;
+    /// The horizon curve: metrics and skill at each of EvaluationResult::horizons.
+    std::vector<OutputMetrics> moistureByHorizon, temperatureByHorizon;
+    std::vector<double> skillMoistureByHorizon, skillTemperatureByHorizon;
     bool hasStability = false;
     double spectralRadiusBefore = 0, spectralRadiusAfter = 0, alpha = 0, certificateMaxEig = 0;
 };
@@ -50,6 +56,11 @@ struct EvaluationResult {
     int horizonSteps = 1;
     int multiStepHorizon = 0;
     std::vector<ModelMetrics> models;
+    std::vector<int> horizons; ///< of the horizon curve, ascending, with 1 and multiStepHorizon
+    /// Predictions that never see a measured output (pbm, ext_input_residual, pgrl_cc): the
+    /// residual model rolled from each batch's start on inputs and proxies alone. Only
+    /// moisture/temperature metrics are filled; the LSTM has no such mode (it needs outputs).
+    std::vector<ModelMetrics> freeRun;
     double elapsedSeconds = 0;
     Ending ending;
 };
@@ -76,6 +87,15 @@ struct ScoredPredictions {
 };
 ScoredPredictions scorePredictions(const std::vector<residual::BatchView>& views, const Predictor& predict,
                                    int lbLags);
+
+/// @brief Makes a model's predictions for the rows of a view at several horizons, one per entry.
+using HorizonPredictor =
+    std::function<std::vector<residual::HybridPrediction>(const residual::BatchView&, const std::vector<int>&)>;
+
+/// @brief scorePredictions at each horizon, predicting each view once for all horizons.
+std::vector<ScoredPredictions> scoreHorizons(const std::vector<residual::BatchView>& views,
+                                             const HorizonPredictor& predict, const std::vector<int>& horizons,
+                                             int lbLags);
 
 /// @brief Keys of the reference predictors (CONTRACT.md §3).
 inline constexpr const char* kPersistenceKey = "persistence";

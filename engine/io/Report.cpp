@@ -92,6 +92,34 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
              num(ms["moisture"]["mae"]) + " | " + num(ms["temperature"]["mae"]) + " | " +
              num(ms["skill"]["moisture"], "%.3f") + " |\n";
     }
+    if (ev.contains("horizons")) {
+        const auto& hz = ev["horizons"];
+        r += "\nSkill for moisture by horizon (steps of 1 s; the line's transport delay is about 70 s):\n\n| "
+             "model |";
+        std::string rule = "| --- |";
+        for (const auto& h : hz["steps"]) {
+            r += " " + std::to_string(h.get<int>()) + " |";
+            rule += " --- |";
+        }
+        r += "\n" + rule + "\n";
+        for (const auto& [name, m] : hz["models"].items()) {
+            r += "| " + name + " |";
+            for (const auto& v : m["moisture_skill"]) {
+                r += " " + num(v, "%.3f") + " |";
+            }
+            r += "\n";
+        }
+    }
+    if (ev.contains("free_run")) {
+        r += "\nFree run (never sees a measured output; skill against the references at the longest "
+             "horizon):\n\n| model | MAE X | R² X | MAE T | R² T | skill X |\n| --- | --- | --- | --- | --- | "
+             "--- |\n";
+        for (const auto& [name, m] : ev["free_run"].items()) {
+            r += "| " + name + " | " + num(m["moisture"]["mae"]) + " | " + num(m["moisture"]["r2"]) + " | " +
+                 num(m["temperature"]["mae"]) + " | " + num(m["temperature"]["r2"]) + " | " +
+                 num(m["skill"]["moisture"], "%.3f") + " |\n";
+        }
+    }
     if (ev["models"].contains("pgrl_cc") && ev["models"]["pgrl_cc"].contains("stability")) {
         const auto& s = ev["models"]["pgrl_cc"]["stability"];
         r += "\nPGRL-CC stability: spectral radius of A " + num(s["spectral_radius_before"]) +

@@ -57,6 +57,26 @@ std::string evaluationJson(const evaluation::EvaluationResult& r) {
              {{"moisture", m.skillMoistureMultiStep}, {"temperature", m.skillTemperatureMultiStep}}}};
     }
     j["multi_step"] = multi;
+    // The horizon curve (CONTRACT.md §3): MAE and skill at each horizon for every model.
+    json horizons;
+    horizons["steps"] = r.horizons;
+    for (const auto& m : r.models) {
+        json h;
+        for (std::size_t i = 0; i < m.moistureByHorizon.size(); ++i) {
+            h["moisture_mae"].push_back(m.moistureByHorizon[i].mae);
+            h["temperature_mae"].push_back(m.temperatureByHorizon[i].mae);
+            h["moisture_skill"].push_back(m.skillMoistureByHorizon[i]);
+            h["temperature_skill"].push_back(m.skillTemperatureByHorizon[i]);
+        }
+        horizons["models"][m.name] = h;
+    }
+    j["horizons"] = horizons;
+    for (const auto& m : r.freeRun) {
+        j["free_run"][m.name] = {
+            {"moisture", metrics(m.moisture)},
+            {"temperature", metrics(m.temperature)},
+            {"skill", {{"moisture", m.skillMoisture}, {"temperature", m.skillTemperature}}}};
+    }
     return j.dump(2) + "\n";
 }
 

@@ -436,6 +436,124 @@ HybridPrediction ResidualModel::predictAhead(const BatchView& v, int horizon) co
     return out;
 }
 
+std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
+                                                             const std::vector<int>& horizons) const {
+    const std::size_t count = v.rows.size();
+    std::vector<HybridPrediction> out(horizons.size());
+    int hMax = 1;
+    for (int h : horizons) {
+        hMax = std::max(hMax, h);
+    }
+    for (auto& p : out) {
+        p.xOutPct.assign(count, kNaN);
+        p.tOutC.assign(count, kNaN);
+        p.residualXPct.assign(count, kNaN);
+        p.residualTC.assign(count, kNaN);
+    }
+    // Which output slot each horizon fills (a horizon may be asked for twice).
+    std::vector<std::vector<std::size_t>> slotsOf(static_cast<std::size_t>(hMax) + 1);
+    for (std::size_t i = 0; i < horizons.size(); ++i) {
+        if (horizons[i] >= 1) {
+            slotsOf[static_cast<std::size_t>(horizons[i])].push_back(i);
+        }
+    }
+    const std::size_t n = v.batch->rows();
+    const std::size_t back = static_cast<std::size_t>(hMax + m_options.residualLags);
+    const std::size_t first = v.rows.begin > back ? v.rows.begin - back : 0;
+    // Per row: the forcing g_j = B u_j + E d_j and, where the lags are measured, the state x_j.
+    std::vector<double> ex(n, kNaN), et(n, kNaN);
+    for (std::size_t k = first; k < v.rows.end; ++k) {
+        observedResidual(*v.batch, *v.pbm, k, ex[k], et[k]);
+    }
+    const Eigen::Index nx = m_a.rows();
+    Eigen::MatrixXd forcing(nx, static_cast<Eigen::Index>(v.rows.end - first));
+    Eigen::MatrixXd states(nx, static_cast<Eigen::Index>(v.rows.end - first));
+    std::vector<char> stateOk(v.rows.end - first, 0);
+    for (std::size_t k = first; k < v.rows.end; ++k) {
+        const auto col = static_cast<Eigen::Index>(k - first);
+        Eigen::VectorXd z, d, x;
+        double u = 0;
+        if (features(v, k, z, u, d)) {
+            forcing.col(col) = m_b.col(0) * u + m_e * d;
+        } else {
+            forcing.col(col).setConstant(kNaN);
+        }
+        if (stateAt(v, k, ex, et, x, u, d)) {
+            states.col(col) = x;
+            stateOk[k - first] = 1;
+        }
+    }
+    // C A^m for m = 0 … hMax.
+    std::vector<Eigen::MatrixXd> cPow(static_cast<std::size_t>(hMax) + 1);
+    cPow[0] = m_c;
+    for (int m = 1; m <= hMax; ++m) {
+        cPow[static_cast<std::size_t>(m)] = cPow[static_cast<std::size_t>(m) - 1] * m_a;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t target = v.rows.begin + i;
+        Eigen::Vector2d forced = Eigen::Vector2d::Zero();
+        for (int m = 0; m < hMax; ++m) {
+            const auto h = static_cast<std::size_t>(m) + 1; // horizon once row target−1−m is added
+            if (target < h || target - h < first) {
+                break;
+            }
+            forced += cPow[static_cast<std::size_t>(m)] * forcing.col(static_cast<Eigen::Index>(target - h - first));
+            const std::size_t origin = target - h;
+            if (slotsOf[h].empty() || !stateOk[origin - first]) {
+                continue;
+            }
+            const Eigen::Vector2d e =
+                cPow[h] * states.col(static_cast<Eigen::Index>(origin - first)) + forced;
+            for (std::size_t slot : slotsOf[h]) {
+                auto& p = out[slot];
+                p.residualXPct[i] = e(0) * m_eScale(0);
+                p.residualTC[i] = e(1) * m_eScale(1);
+                p.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[target]) + p.residualXPct[i]; // Eq. (21)
+                p.tOutC[i] = v.pbm->tOutK[target] - units::kKelvinOffset + p.residualTC[i];
+            }
+        }
+    }
+    return out;
+}
+
+HybridPrediction ResidualModel::predictFreeRun(const BatchView& v) const {
+    const std::size_t count = v.rows.size();
+    HybridPrediction out;
+    out.xOutPct.assign(count, kNaN);
+    out.tOutC.assign(count, kNaN);
+    out.residualXPct.assign(count, kNaN);
+    out.residualTC.assign(count, kNaN);
+    const Eigen::Index lagPart = kOutputs * m_options.residualLags;
+    Eigen::VectorXd x;
+    bool running = false;
+    for (std::size_t k = 0; k < v.rows.end; ++k) {
+        Eigen::VectorXd z, d;
+        double u = 0;
+        const bool ok = features(v, k, z, u, d);
+        if (!running && ok) {
+            // (Re)start: no measured residual is ever used, so the lags begin at zero.
+            const Eigen::VectorXd phi = liftedResidualFeatures(z);
+            x = Eigen::VectorXd::Zero(lagPart + phi.size());
+            x.tail(phi.size()) = phi;
+            running = true;
+        }
+        if (running && k >= v.rows.begin) {
+            const Eigen::Vector2d e = m_c * x;
+            const std::size_t i = k - v.rows.begin;
+            out.residualXPct[i] = e(0) * m_eScale(0);
+            out.residualTC[i] = e(1) * m_eScale(1);
+            out.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[k]) + out.residualXPct[i]; // Eq. (21)
+            out.tOutC[i] = v.pbm->tOutK[k] - units::kKelvinOffset + out.residualTC[i];
+        }
+        if (!ok) {
+            running = false; // a row without inputs: start again at the next complete one
+        } else if (running) {
+            x = m_a * x + m_b.col(0) * u + m_e * d;
+        }
+    }
+    return out;
+}
+
 std::vector<Eigen::VectorXd> ResidualModel::rollout(const Eigen::VectorXd& x0, const std::vector<double>& u,
                                                     const std::vector<Eigen::VectorXd>& d) const {
     std::vector<Eigen::VectorXd> xs{x0};

@@ -70,6 +70,14 @@ public:
     /// @brief H-step-ahead: the prediction of row k made at k − H from measurements up to k − H,
     /// then inputs only.
     HybridPrediction predictAhead(const BatchView& view, int horizon) const;
+    /// @brief H-step-ahead predictions for several horizons at once, one per entry of
+    /// @p horizons (each ≥ 1), equal to predictAhead(view, H) for each. Uses the linearity of the
+    /// lifted model, ê_{k+H} = C A^H x_k + Σ_{m<H} C A^m (B u_{k+H−1−m} + E d_{k+H−1−m}), so a
+    /// horizon curve up to 180 steps costs one pass of 2·n_x per row and step, not n_x².
+    std::vector<HybridPrediction> predictHorizons(const BatchView& view, const std::vector<int>& horizons) const;
+    /// @brief Free run: the lifted state rolled from the batch's first row with inputs and PBM
+    /// proxies only, never a measured output (lags start at zero), ê_k = C x_k, for the view's rows.
+    HybridPrediction predictFreeRun(const BatchView& view) const;
     /// @brief Free rollout of the lifted state from x0 under given inputs (for boundedness checks).
     std::vector<Eigen::VectorXd> rollout(const Eigen::VectorXd& x0, const std::vector<double>& u,
                                          const std::vector<Eigen::VectorXd>& d) const;

@@ -55,6 +55,22 @@ private Q_SLOTS:
         for (std::size_t i = 0; i < q1.xOutPct.size(); i += 53) {
             QVERIFY(std::abs(q1.xOutPct[i] - p1.xOutPct[i]) < 1e-4);
         }
+        // Several horizons at once give what one horizon at a time gives.
+        const auto many = m->predictHorizons(test[0], {5, 1, 12});
+        const auto p12 = m->predictAhead(test[0], 12);
+        int compared = 0;
+        for (std::size_t i = 0; i < p1.xOutPct.size(); ++i) {
+            for (const auto& [got, want] : {std::pair{&many[0], &p5}, std::pair{&many[1], &p1},
+                                            std::pair{&many[2], &p12}}) {
+                QCOMPARE(std::isnan(got->xOutPct[i]), std::isnan(want->xOutPct[i]));
+                if (std::isfinite(want->xOutPct[i])) {
+                    QVERIFY(std::abs(got->xOutPct[i] - want->xOutPct[i]) < 1e-4);
+                    QVERIFY(std::abs(got->tOutC[i] - want->tOutC[i]) < 1e-4);
+                    ++compared;
+                }
+            }
+        }
+        QVERIFY(compared > 1000);
         // Seeded: the same seed gives the same network.
         auto again = baselines::LstmBaseline::train(train, o);
         QCOMPARE(again->lossHistory(), m->lossHistory());

@@ -169,6 +169,80 @@ private Q_SLOTS:
         QVERIFY(c.spectralRadiusBefore >= c.spectralRadiusAfter);
     }
 
+    void horizonCurveEqualsStepwisePrediction() {
+        const auto& f = demoFixture();
+        auto m = ResidualModel::train(hybrid::splitViews(f.batches, f.pbm, false), {});
+        QVERIFY(m.ok());
+        const auto test = hybrid::splitViews(f.batches, f.pbm, true);
+        const std::vector<int> horizons{1, 7, 30, 7, 120};
+        int compared = 0;
+        for (const auto& v : test) {
+            const auto all = m->predictHorizons(v, horizons);
+            QCOMPARE(all.size(), horizons.size());
+            for (std::size_t h = 0; h < horizons.size(); ++h) {
+                const auto one = m->predictAhead(v, horizons[h]);
+                for (std::size_t i = 0; i < one.xOutPct.size(); ++i) {
+                    QCOMPARE(std::isnan(all[h].xOutPct[i]), std::isnan(one.xOutPct[i]));
+                    if (std::isfinite(one.xOutPct[i])) {
+                        QVERIFY(std::abs(all[h].xOutPct[i] - one.xOutPct[i]) < 1e-9);
+                        QVERIFY(std::abs(all[h].tOutC[i] - one.tOutC[i]) < 1e-9);
+                        ++compared;
+                    }
+                }
+            }
+        }
+        QVERIFY(compared > 1000);
+    }
+
+    void freeRunNeverSeesAMeasuredOutput() {
+        const auto& f = demoFixture();
+        auto m = ResidualModel::train(hybrid::splitViews(f.batches, f.pbm, false), {});
+        QVERIFY(m.ok());
+        // Replace the measured outlet values with nonsense: the free run must not change, the
+        // one-step prediction must.
+        auto batch = f.batches[3];
+        for (std::size_t k = 0; k < batch.rows(); ++k) {
+            batch.xOutDb[k] += 0.05 * std::sin(0.01 * double(k));
+            batch.tOutK[k] += 3.0;
+        }
+        const BatchView original{&f.batches[3], &f.pbm[3], {0, f.batches[3].rows()}};
+        const BatchView changed{&batch, &f.pbm[3], {0, batch.rows()}};
+        const auto a = m->predictFreeRun(original);
+        const auto b = m->predictFreeRun(changed);
+        const auto oneA = m->predictOneStep(original);
+        const auto oneB = m->predictOneStep(changed);
+        double freeDiff = 0, oneDiff = 0;
+        int finite = 0;
+        for (std::size_t i = 0; i < a.xOutPct.size(); ++i) {
+            if (std::isfinite(a.xOutPct[i])) {
+                ++finite;
+                freeDiff = std::max(freeDiff, std::abs(a.xOutPct[i] - b.xOutPct[i]));
+            }
+            if (std::isfinite(oneA.xOutPct[i]) && std::isfinite(oneB.xOutPct[i])) {
+                oneDiff = std::max(oneDiff, std::abs(oneA.tOutC[i] - oneB.tOutC[i]));
+            }
+        }
+        QCOMPARE(finite, int(a.xOutPct.size())); // every row predicted from the first on
+        QCOMPARE(freeDiff, 0.0);
+        QVERIFY(oneDiff > 0.5);
+        // And it does learn something: on held-out rows it beats the PBM alone.
+        const auto test = hybrid::splitViews(f.batches, f.pbm, true);
+        double pbmErr = 0, freeErr = 0;
+        for (const auto& v : test) {
+            const auto p = m->predictFreeRun(v);
+            for (std::size_t i = 0; i < v.rows.size(); ++i) {
+                const std::size_t k = v.rows.begin + i;
+                const double obs = units::dryToWetPct(v.batch->xOutDb[k]);
+                if (v.batch->keep[k] && std::isfinite(obs)) {
+                    pbmErr += std::abs(obs - units::dryToWetPct(v.pbm->xOutDb[k]));
+                    freeErr += std::abs(obs - p.xOutPct[i]);
+                }
+            }
+        }
+        qInfo("held-out sum |error| X_out: PBM %.2f, PGRL-CC free run %.2f", pbmErr, freeErr);
+        QVERIFY(freeErr < pbmErr);
+    }
+
     void rolloutStaysBounded() {
         const auto& f = demoFixture();
         auto m = ResidualModel::train(hybrid::splitViews(f.batches, f.pbm, false), {});

@@ -151,6 +151,27 @@ private Q_SLOTS:
                 ev->diagnostics.pgrlCcBefore.spectralRadius + 1e-12);
         // The hybrid beats the physics model alone one step ahead on this plant data.
         QVERIFY(ev->evaluation.models.back().moisture.mae < ev->evaluation.models.front().moisture.mae);
+        // The horizon curve: 1 … 180 steps with the headline horizon, skill 1 for the better
+        // reference at every horizon, the one-step column equal to the one-step metrics.
+        const auto& e = ev->evaluation;
+        QCOMPARE(e.horizons.front(), 1);
+        QCOMPARE(e.horizons.back(), 180);
+        QVERIFY(std::count(e.horizons.begin(), e.horizons.end(), e.multiStepHorizon) == 1);
+        for (std::size_t h = 0; h < e.horizons.size(); ++h) {
+            const double best = std::min(e.models[1].skillMoistureByHorizon[h], e.models[2].skillMoistureByHorizon[h]);
+            QVERIFY(std::abs(best - 1.0) < 1e-12);
+        }
+        for (const auto& m : e.models) {
+            QCOMPARE(m.moistureByHorizon.size(), e.horizons.size());
+            QCOMPARE(m.moistureByHorizon.front().mae, m.moisture.mae);
+        }
+        // Persistence gets worse with the horizon; the PBM does not depend on it.
+        QVERIFY(e.models[1].moistureByHorizon.back().mae > 2 * e.models[1].moistureByHorizon.front().mae);
+        QCOMPARE(e.models[0].moistureByHorizon.back().mae, e.models[0].moisture.mae);
+        // The free run: the PBM and both residual models, never better than seeing the outputs.
+        QCOMPARE(e.freeRun.size(), std::size_t(3));
+        QCOMPARE(e.freeRun[0].moisture.mae, e.models[0].moisture.mae);
+        QVERIFY(e.freeRun[2].moisture.mae > e.models.back().moisture.mae);
 
         // Recalibrating drops the residual models, which were learnt on the old parameters.
         auto again = s.calibrate(quickCalibration());
