@@ -342,41 +342,85 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
         dm.row(i) = d.transpose();
     }
 
-    // 6. CC-EDMDc, Eq. (30): weighted ridge for [A B E].
+    // 6. CC-EDMDc, Eq. (30): the weighted ridge for [A B E] in normal-equation form.
     Eigen::MatrixXd r(n, nx + 1 + nd);
     r << xm, um, dm;
     Eigen::VectorXd lambda(r.cols());
     lambda.head(nx).setConstant(o.lambdaA * wSum);
     lambda(nx) = o.lambdaB * wSum;
     lambda.tail(nd).setConstant(o.lambdaE * wSum);
-    const Eigen::MatrixXd theta = weightedRidge(r, xp, w, lambda);
-    m.m_a = theta.leftCols(nx);
-    m.m_b = theta.middleCols(nx, 1);
-    m.m_e = theta.rightCols(nd);
-    m.m_aFree = m.m_a;
+    RidgeNormalEquations normal;
+    {
+        const Eigen::MatrixXd rw = r.array().colwise() * w.array();
+        normal.gram = r.transpose() * rw;
+        normal.gram.diagonal() += lambda;
+        normal.cross = xp.transpose() * rw;
+        normal.targetEnergy = (xp.array().square().colwise() * w.array()).sum();
+        normal.stateSize = nx;
+    }
+    const Eigen::LDLT<Eigen::MatrixXd> gramLdlt(normal.gram);
+    const Eigen::MatrixXd thetaFree = gramLdlt.solve(normal.cross.transpose()).transpose();
+    // B, E that minimise the loss for a given A (the A block of Θ held fixed).
+    const Eigen::MatrixXd gramBe = normal.gram.bottomRightCorner(1 + nd, 1 + nd);
+    const Eigen::LDLT<Eigen::MatrixXd> gramBeLdlt(gramBe);
+    const auto withBestInputs = [&](const Eigen::MatrixXd& a) {
+        Eigen::MatrixXd theta(nx, nx + 1 + nd);
+        theta.leftCols(nx) = a;
+        const Eigen::MatrixXd rhs =
+            normal.cross.rightCols(1 + nd) - a * normal.gram.topRightCorner(nx, 1 + nd);
+        theta.rightCols(1 + nd) = gramBeLdlt.solve(rhs.transpose()).transpose();
+        return theta;
+    };
+    Eigen::MatrixXd theta = thetaFree;
+    m.m_aFree = thetaFree.leftCols(nx);
+    auto& cmp = m.m_comparison;
+    cmp.lossUnconstrained = normal.loss(thetaFree) / wSum;
+    cmp.radiusUnconstrained = diagnostics::spectralRadius(m.m_aFree);
 
-    // 7. Stability constraint with a certificate; refit B, E for the constrained A.
+    // 7. Stability constraint with a certificate.
     if (o.stabilityConstraint) {
-        m.m_cert = enforceStability(m.m_a, o.alphaMax, o.radiusMax);
-        if (m.m_cert.modified) {
-            Eigen::MatrixXd ru(n, 1 + nd);
-            ru << um, dm;
-            const Eigen::MatrixXd target = xp - xm * m.m_a.transpose();
-            Eigen::VectorXd lu(1 + nd);
-            lu(0) = o.lambdaB * wSum;
-            lu.tail(nd).setConstant(o.lambdaE * wSum);
-            const Eigen::MatrixXd be = weightedRidge(ru, target, w, lu);
-            m.m_b = be.leftCols(1);
-            m.m_e = be.rightCols(nd);
+        Eigen::MatrixXd aPulled = m.m_aFree;
+        const StabilityCertificate pulled = enforceStability(aPulled, o.alphaMax, o.radiusMax);
+        const Eigen::MatrixXd thetaPulled = pulled.modified ? withBestInputs(aPulled) : thetaFree;
+        cmp.lossEigenvaluePull = normal.loss(thetaPulled) / wSum;
+        cmp.radiusEigenvaluePull = diagnostics::spectralRadius(aPulled);
+        m.m_cert = pulled;
+        theta = thetaPulled;
+        if (o.stabilityMethod == StabilityMethod::Constrained && pulled.certified) {
+            // Eq. (30) as stated, from the feasible pulled fit: never a higher loss than it.
+            const bool alreadyStable = cmp.radiusUnconstrained < o.alphaMax * (1.0 - 1e-4);
+            if (alreadyStable) {
+                m.m_cert = certify(m.m_aFree,
+                                   scaledLyapunov(m.m_aFree, 0.5 * (cmp.radiusUnconstrained + o.alphaMax)),
+                                   o.alphaMax);
+                theta = thetaFree;
+            } else {
+                const auto fit = fitUnderStabilityConstraint(normal, thetaPulled, pulled.p, o.alphaMax);
+                theta = withBestInputs(fit.theta.leftCols(nx));
+                // The refit of B, E never raises the loss; keep the solver's certificate for A.
+                m.m_cert = fit.certificate;
+                cmp.admmIterations = fit.admmIterations;
+                cmp.outerIterations = fit.outerIterations;
+            }
+            m.m_cert.modified = !alreadyStable;
         }
+        m.m_cert.spectralRadiusBefore = cmp.radiusUnconstrained;
+        m.m_cert.spectralRadiusAfter = diagnostics::spectralRadius(theta.leftCols(nx));
     } else {
-        const double rho = diagnostics::spectralRadius(m.m_a);
-        m.m_cert = rho < o.alphaMax ? certify(m.m_a, scaledLyapunov(m.m_a, 0.5 * (rho + o.alphaMax)),
+        const double rho = cmp.radiusUnconstrained;
+        m.m_cert = rho < o.alphaMax ? certify(m.m_aFree, scaledLyapunov(m.m_aFree, 0.5 * (rho + o.alphaMax)),
                                               0.5 * (rho + o.alphaMax))
                                     : StabilityCertificate{};
         m.m_cert.spectralRadiusBefore = rho;
         m.m_cert.spectralRadiusAfter = rho;
+        cmp.lossEigenvaluePull = cmp.lossUnconstrained;
+        cmp.radiusEigenvaluePull = rho;
     }
+    cmp.lossConstrained = normal.loss(theta) / wSum;
+    cmp.radiusConstrained = diagnostics::spectralRadius(theta.leftCols(nx));
+    m.m_a = theta.leftCols(nx);
+    m.m_b = theta.middleCols(nx, 1);
+    m.m_e = theta.rightCols(nd);
 
     // 8. Output matrix C (Algorithm 1, step 15): ê_k ≈ C x_k.
     Eigen::MatrixXd eNow(n, kOutputs);
@@ -573,6 +617,8 @@ std::string ResidualModel::toJson() const {
                     {"orthogonal_projection", o.orthogonalProjection},
                     {"control_consistent_weights", o.controlConsistentWeights},
                     {"stability_constraint", o.stabilityConstraint},
+                    {"stability_method",
+                     o.stabilityMethod == StabilityMethod::Constrained ? "constrained" : "eigenvalue_pull"},
                     {"lambda_A", o.lambdaA},
                     {"lambda_B", o.lambdaB},
                     {"lambda_E", o.lambdaE},
@@ -606,7 +652,18 @@ std::string ResidualModel::toJson() const {
                       {"alpha", m_cert.alpha},
                       {"certificate_max_eig", m_cert.certificateMaxEig},
                       {"certified", m_cert.certified},
+                      {"cholesky_passes", m_cert.choleskyPasses},
+                      {"p_condition_number", m_cert.pConditionNumber},
                       {"P", matrixJson(m_cert.p)}};
+    const auto& cmp = m_comparison;
+    j["stability_comparison"] = {{"loss_unconstrained", cmp.lossUnconstrained},
+                                 {"loss_eigenvalue_pull", cmp.lossEigenvaluePull},
+                                 {"loss_constrained", cmp.lossConstrained},
+                                 {"radius_unconstrained", cmp.radiusUnconstrained},
+                                 {"radius_eigenvalue_pull", cmp.radiusEigenvaluePull},
+                                 {"radius_constrained", cmp.radiusConstrained},
+                                 {"admm_iterations", cmp.admmIterations},
+                                 {"outer_iterations", cmp.outerIterations}};
     j["training_snapshots"] = m_snapshots;
     j["training_seconds"] = m_trainSeconds;
     return j.dump();
@@ -624,6 +681,10 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
         o.orthogonalProjection = jo.at("orthogonal_projection");
         o.controlConsistentWeights = jo.at("control_consistent_weights");
         o.stabilityConstraint = jo.at("stability_constraint");
+        // Files written before Eq. (30) was solved as stated used the eigenvalue pull.
+        o.stabilityMethod = jo.value("stability_method", std::string("eigenvalue_pull")) == "constrained"
+                                ? StabilityMethod::Constrained
+                                : StabilityMethod::EigenvaluePull;
         o.lambdaA = jo.at("lambda_A");
         o.lambdaB = jo.at("lambda_B");
         o.lambdaE = jo.at("lambda_E");
@@ -661,6 +722,20 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
         m.m_cert.certificateMaxEig = s.at("certificate_max_eig");
         m.m_cert.certified = s.at("certified");
         m.m_cert.p = matrixFrom(s.at("P"));
+        m.m_cert.choleskyPasses = s.value("cholesky_passes", false);
+        m.m_cert.pConditionNumber = s.value("p_condition_number", 0.0);
+        if (j.contains("stability_comparison")) {
+            const auto& c = j.at("stability_comparison");
+            auto& cmp = m.m_comparison;
+            cmp.lossUnconstrained = c.at("loss_unconstrained");
+            cmp.lossEigenvaluePull = c.at("loss_eigenvalue_pull");
+            cmp.lossConstrained = c.at("loss_constrained");
+            cmp.radiusUnconstrained = c.at("radius_unconstrained");
+            cmp.radiusEigenvaluePull = c.at("radius_eigenvalue_pull");
+            cmp.radiusConstrained = c.at("radius_constrained");
+            cmp.admmIterations = c.at("admm_iterations");
+            cmp.outerIterations = c.at("outer_iterations");
+        }
         m.m_snapshots = j.value("training_snapshots", std::size_t(0));
         m.m_trainSeconds = j.value("training_seconds", 0.0);
         const Eigen::Index nx = m.m_a.rows();

@@ -12,6 +12,23 @@
 
 namespace drytwin::residual {
 
+/// @brief How the stability constraint of Eq. (30) is met.
+enum class StabilityMethod {
+    Constrained,    ///< A, B, E fitted under AᵀPA ⪯ α²P (the paper's Eq. 30)
+    EigenvaluePull, ///< unconstrained fit, eigenvalues beyond radiusMax pulled in afterwards
+};
+
+/// @brief Training loss (weighted squared one-step error of the lifted state per unit weight)
+/// of the unconstrained, eigenvalue-pulled and constrained A, side by side.
+struct StabilityComparison {
+    double lossUnconstrained = 0;
+    double lossEigenvaluePull = 0;
+    double lossConstrained = 0; ///< equals the unconstrained loss when that A is already stable
+    double radiusUnconstrained = 0, radiusEigenvaluePull = 0, radiusConstrained = 0;
+    int admmIterations = 0;
+    int outerIterations = 0;
+};
+
 /// @brief Options of the PGRL-CC residual model (paper §III) and its variants.
 struct ResidualOptions {
     /// z = [x̂_mech, u, d] (Eq. 24); false gives the external-input baseline z = [u, d].
@@ -24,6 +41,7 @@ struct ResidualOptions {
     bool orthogonalProjection = true;     ///< P⊥ of Eq. 27 on the residual features
     bool controlConsistentWeights = true; ///< ω of Eq. 29 (else W = I)
     bool stabilityConstraint = true;      ///< A with a certificate (Eq. 30)
+    StabilityMethod stabilityMethod = StabilityMethod::Constrained;
     double lambdaA = 1e-4;                ///< ridge weights of Eq. 30, per unit of total weight Σω
     double lambdaB = 1e-4;
     double lambdaE = 1e-4;
@@ -88,6 +106,7 @@ public:
     const Eigen::MatrixXd& c() const { return m_c; }
     const Eigen::MatrixXd& aUnconstrained() const { return m_aFree; }
     const StabilityCertificate& stability() const { return m_cert; }
+    const StabilityComparison& stabilityComparison() const { return m_comparison; }
     const ResidualOptions& options() const { return m_options; }
     int stateSize() const { return static_cast<int>(m_a.rows()); }
     std::size_t trainingSnapshots() const { return m_snapshots; }
@@ -115,6 +134,7 @@ private:
     double m_uMean = 0, m_uScale = 1;
     Eigen::MatrixXd m_a, m_aFree, m_b, m_e, m_c;
     StabilityCertificate m_cert;
+    StabilityComparison m_comparison;
     std::size_t m_snapshots = 0;
     double m_trainSeconds = 0;
 };

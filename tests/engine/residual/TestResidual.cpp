@@ -148,6 +148,64 @@ private Q_SLOTS:
         QCOMPARE(small(0, 0), 0.5);
     }
 
+    void constrainedFitOfEq30BeatsThePullAndIsCertified() {
+        // Least squares for x⁺ = A x + b u with an unstable true A (radius 1.03): the
+        // unconstrained fit is unstable; Eq. (30) solved as stated must be stable, certified
+        // independently, and fit at least as well as pulling the eigenvalues in afterwards.
+        std::mt19937 rng(11);
+        std::normal_distribution<double> n(0, 1);
+        const int nx = 6, snapshots = 4000;
+        Eigen::MatrixXd aTrue(nx, nx);
+        for (int i = 0; i < nx; ++i) {
+            for (int j = 0; j < nx; ++j) {
+                aTrue(i, j) = 0.25 * n(rng);
+            }
+        }
+        aTrue *= 1.03 / diagnostics::spectralRadius(aTrue);
+        Eigen::MatrixXd r(snapshots, nx + 1), y(snapshots, nx);
+        for (int k = 0; k < snapshots; ++k) {
+            Eigen::VectorXd x(nx);
+            for (int i = 0; i < nx; ++i) {
+                x(i) = n(rng);
+            }
+            const double u = n(rng);
+            r.row(k) << x.transpose(), u;
+            for (int i = 0; i < nx; ++i) {
+                y(k, i) = (aTrue * x)(i) + 0.3 * u + 0.05 * n(rng);
+            }
+        }
+        RidgeNormalEquations prob;
+        prob.gram = r.transpose() * r;
+        prob.gram.diagonal().array() += 1e-6;
+        prob.cross = y.transpose() * r;
+        prob.targetEnergy = y.squaredNorm();
+        prob.stateSize = nx;
+        const Eigen::MatrixXd free = prob.gram.ldlt().solve(prob.cross.transpose()).transpose();
+        QVERIFY(diagnostics::spectralRadius(free.leftCols(nx)) > 1.0);
+        // The planted unstable A fails the independent check: neither bound nor Cholesky.
+        const auto planted = certify(aTrue, Eigen::MatrixXd::Identity(nx, nx), 0.999);
+        QVERIFY(!planted.certified);
+        QVERIFY(!planted.choleskyPasses);
+        // Pull, then refit the input column for the pulled A.
+        Eigen::MatrixXd aPulled = free.leftCols(nx);
+        const auto pulled = enforceStability(aPulled, 0.999, 0.995);
+        Eigen::MatrixXd thetaPulled(nx, nx + 1);
+        thetaPulled << aPulled, (prob.cross.col(nx) - aPulled * prob.gram.block(0, nx, nx, 1)) / prob.gram(nx, nx);
+        const auto fit = fitUnderStabilityConstraint(prob, thetaPulled, pulled.p, 0.999);
+        const Eigen::MatrixXd aFit = fit.theta.leftCols(nx);
+        qInfo("loss: free %.3f, pulled %.3f, Eq. 30 %.3f; radius %.4f; %d ADMM its; cond(P) %.3g",
+              prob.loss(free), prob.loss(thetaPulled), prob.loss(fit.theta), diagnostics::spectralRadius(aFit),
+              fit.admmIterations, fit.certificate.pConditionNumber);
+        QVERIFY(prob.loss(fit.theta) <= prob.loss(thetaPulled) + 1e-9);
+        QVERIFY(prob.loss(fit.theta) < prob.loss(thetaPulled) - 1e-3 * (prob.loss(thetaPulled) - prob.loss(free)));
+        QVERIFY(prob.loss(fit.theta) >= prob.loss(free) - 1e-9);
+        QVERIFY(diagnostics::spectralRadius(aFit) < 0.999);
+        const auto check = certify(aFit, fit.certificate.p, 0.999);
+        QVERIFY(check.certified);
+        QVERIFY(check.choleskyPasses);
+        QVERIFY(check.pConditionNumber > 1 && std::isfinite(check.pConditionNumber));
+    }
+
     void learnsTheResidualOnPlantData() {
         const auto& f = demoFixture();
         const auto train = hybrid::splitViews(f.batches, f.pbm, false);
