@@ -48,7 +48,8 @@ std::string formatModelFile(const HybridModel& m) {
     j["parameters"] = parametersJson(m.parameters);
     j["switches"] = {{"clamp_water_activity", m.switches.clampWaterActivity},
                      {"latent_heat_correction", m.switches.latentHeatCorrection},
-                     {"moisture_dependent_cp", m.switches.moistureDependentCp}};
+                     {"moisture_dependent_cp", m.switches.moistureDependentCp},
+                     {"consistent_energy_balance", m.switches.consistentEnergyBalance}};
     j["winnower_form"] = winnowerName(m.winnower);
     if (m.calibration) {
         json c;
@@ -169,6 +170,8 @@ Expected<HybridModel> parseModelJson(const json& j, const std::string& name) {
         m.switches.clampWaterActivity = s.value("clamp_water_activity", true);
         m.switches.latentHeatCorrection = s.value("latent_heat_correction", true);
         m.switches.moistureDependentCp = s.value("moisture_dependent_cp", true);
+        // Files from before the switch existed were made with the paper's printed form.
+        m.switches.consistentEnergyBalance = s.value("consistent_energy_balance", false);
     }
     const std::string form = j.value("winnower_form", "transient");
     if (form != "transient" && form != "terminal") {

@@ -30,7 +30,7 @@ template <class T> struct SectionRatesT {
     T heatIn{};         ///< convective heat into the parcel [W per kg dry] (negative = loss)
     T evaporation{};    ///< dm_evap/dt [kg/s per kg dry] (= −dX/dt)
     T heatCapacity{};   ///< M_dry C_p,dry + M_water C_p,w [J/K per kg dry]
-    T vapourEnthalpy{}; ///< L_v + C_p,w (T − T_ref) [J/kg]
+    T vapourEnthalpy{}; ///< energy drawn per kg evaporated: L_v, or the paper's L_v + C_p,w (T − T_ref) [J/kg]
     T waterActivity{};
 };
 using SectionRates = SectionRatesT<double>;
@@ -53,9 +53,14 @@ namespace generic {
 namespace pr = properties::generic;
 using properties::Param;
 
-/// L_v + C_p,w (T − T_ref), the enthalpy the evaporated water carries (Eqs. 12, 14, 19).
+/// Energy drawn from the parcel per kg evaporated in Eqs. 12, 14, 19: L_v in the consistent
+/// energy balance, L_v + C_p,w (T − T_ref) as the paper prints it (see ModelSwitches).
 template <class T> T vapourEnthalpy(const T& tK, const T& aw, const ParameterSet& p, const ModelSwitches& s) {
-    return pr::latentHeat(tK, aw, p, s) + p[Param::theta_Cp2] * (tK - p[Param::T_ref]);
+    const T lv = pr::latentHeat(tK, aw, p, s);
+    if (s.consistentEnergyBalance) {
+        return lv;
+    }
+    return lv + p[Param::theta_Cp2] * (tK - p[Param::T_ref]);
 }
 
 /// X_e of the air around a parcel, Eq. (5).
@@ -120,7 +125,7 @@ SectionRatesT<T> winnowerRates(const T& x, const T& t, double tS, const T& xMix,
 
 } // namespace generic
 
-/// @brief L_v + C_p,w (T − T_ref), the enthalpy the evaporated water carries (Eqs. 12, 14, 19).
+/// @brief Energy drawn per kg evaporated (Eqs. 12, 14, 19); see ModelSwitches::consistentEnergyBalance.
 inline double vapourEnthalpy(double tK, double aw, const ParameterSet& p, const ModelSwitches& s) {
     return generic::vapourEnthalpy(tK, aw, p, s);
 }

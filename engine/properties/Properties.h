@@ -14,6 +14,13 @@ struct ModelSwitches {
     bool clampWaterActivity = true;   ///< a_w* = min(1, max(0, a_w)) (Eq. 2)
     bool latentHeatCorrection = true; ///< bound-water factor [1 + θ_Lv,aw (1 − a_w)] (Eq. 4)
     bool moistureDependentCp = true;  ///< C_p(X) of Eq. 3; off: C_p fixed at X = kCpReferenceMoisture
+    /// Energy drawn per kg evaporated in Eqs. 12, 14, 19. The paper prints L_v + C_p,w (T − T_ref);
+    /// but the left side (M_dry C_p,dry + M_w C_p,w) dT/dt already follows from
+    /// d/dt[(M_dry C_p,dry + M_w C_p,w)(T − T_ref)] = Q − ṁ (L_v + C_p,w (T − T_ref)) with
+    /// dM_w/dt = −ṁ, where the sensible terms cancel and leave Q − L_v ṁ. The printed form counts
+    /// C_p,w (T − T_ref) twice (about 10 % of the evaporative cooling at T_ref = 0 °C).
+    /// true: L_v only (consistent, DryTwin's default); false: the paper's printed form.
+    bool consistentEnergyBalance = true;
 };
 /// Dry-basis moisture at which C_p is frozen when moistureDependentCp is off (≈ 15 % wb, the
 /// middle of the line's operating range).

@@ -51,10 +51,12 @@ struct Closure {
     double sensible = 0;
     double latent = 0;
     double evaporated = 0;
-    double x0 = 0, x1 = 0;
+    double vapourEnthalpyOut = 0; ///< ∫ ṁ (L_v + C_p,w (T − T_ref)) dt: what the leaving vapour carries
+    double x0 = 0, x1 = 0, t0 = 0, t1 = 0;
 };
 
-template <class Rates> Closure integrateClosure(double x0, double t0, double duration, Rates rates) {
+template <class Rates>
+Closure integrateClosure(double x0, double t0, double duration, Rates rates, const ParameterSet* p = nullptr) {
     struct Ctx {
         Rates* rates;
     } ctx{&rates};
@@ -77,7 +79,16 @@ template <class Rates> Closure integrateClosure(double x0, double t0, double dur
     std::vector<double> y{x0, t0};
     Closure c;
     c.x0 = x0;
+    c.t0 = t0;
+    // Enthalpy the vapour takes away per kg: latent heat at the parcel's state plus the sensible
+    // heat of water vapour above T_ref (independent of the energy-balance form under test).
+    const auto vapourEnthalpy = [&](double t, const SectionRates& r) {
+        const properties::ModelSwitches sw;
+        return properties::latentHeat(t, r.waterActivity, *p, sw) +
+               (*p)[Param::theta_Cp2] * (t - (*p)[Param::T_ref]);
+    };
     auto before = rates(y[0], y[1]);
+    double tBefore = t0;
     for (int i = 0; i < pieces; ++i) {
         const double xPrev = y[0];
         const double tPrev = y[1];
@@ -90,12 +101,25 @@ template <class Rates> Closure integrateClosure(double x0, double t0, double dur
         c.latent +=
             0.5 * h * (before.vapourEnthalpy * before.evaporation + after.vapourEnthalpy * after.evaporation);
         c.evaporated += 0.5 * h * (before.evaporation + after.evaporation);
+        if (p) {
+            c.vapourEnthalpyOut += 0.5 * h *
+                                   (vapourEnthalpy(tBefore, before) * before.evaporation +
+                                    vapourEnthalpy(y[1], after) * after.evaporation);
+        }
+        tBefore = y[1];
         c.sensible += 0.5 * (cPrev + after.heatCapacity) * (y[1] - tPrev);
         (void)xPrev;
         before = after;
     }
     c.x1 = y[0];
+    c.t1 = y[1];
     return c;
+}
+
+/// Enthalpy of the wet material per kg dry relative to liquid water and dry matter at T_ref:
+/// (C_p,dry + X C_p,w)(T − T_ref) = (1 + X) C_p(X) (T − T_ref) with Eq. 3.
+double materialEnthalpy(double x, double t, const ParameterSet& p) {
+    return (p[Param::theta_Cp1] + x * p[Param::theta_Cp2]) * (t - p[Param::T_ref]);
 }
 
 double maxAbsDiff(const std::vector<double>& a, const std::vector<double>& b) {
@@ -123,6 +147,29 @@ private Q_SLOTS:
                  qPrintable(QString("Q %1 S %2 L %3").arg(c.heatIn).arg(c.sensible).arg(c.latent)));
         QVERIFY(std::abs(c.evaporated - (c.x0 - c.x1)) < 1e-6 * (c.x0 - c.x1));
         QVERIFY(c.x1 < c.x0 - 0.05); // it does dry
+    }
+
+    void energyBalanceFormsAgainstTheEnthalpyBalance() {
+        // First law for the parcel: ΔH = ∫Q − ∫ṁ (L_v + C_p,w (T − T_ref)). The consistent form
+        // closes it; the paper's printed form (Eq. 12) misses it by about ∫ṁ C_p,w (T − T_ref).
+        for (const bool consistent : {true, false}) {
+            properties::ModelSwitches sw = m_sw;
+            sw.consistentEnergyBalance = consistent;
+            TubeEnvironment env{443.15, m_p[Param::w], m_p[Param::h_HDT], m_p[Param::k_HDT], 1.0};
+            const auto c = integrateClosure(
+                0.28, 298.15, 6.0, [&](double x, double t) { return tubeRates(x, t, env, m_p, sw); }, &m_p);
+            const double dH = materialEnthalpy(c.x1, c.t1, m_p) - materialEnthalpy(c.x0, c.t0, m_p);
+            const double imbalance = dH - (c.heatIn - c.vapourEnthalpyOut);
+            qInfo("%s form: dH %.1f J/kg, Q %.1f, vapour out %.1f, imbalance %.2f J/kg (%.2f %% of vapour out)",
+                  consistent ? "consistent" : "paper's", dH, c.heatIn, c.vapourEnthalpyOut, imbalance,
+                  100 * imbalance / c.vapourEnthalpyOut);
+            if (consistent) {
+                QVERIFY(std::abs(imbalance) < 1e-4 * c.vapourEnthalpyOut);
+            } else {
+                // Counted twice, so the parcel ends colder than energy conservation allows.
+                QVERIFY(imbalance < -0.02 * c.vapourEnthalpyOut);
+            }
+        }
     }
 
     void conveyorEnergyClosureAndMassBalance() {
@@ -185,7 +232,9 @@ private Q_SLOTS:
         QVERIFY2(r.ok(), r.ok() ? "" : r.error().message().c_str());
         const double xHdt = 100 * r->xHdtDb[150] / (1 + r->xHdtDb[150]);
         const double xOut = 100 * r->xOutDb[150] / (1 + r->xOutDb[150]);
-        QVERIFY2(xHdt > 13 && xHdt < 16, qPrintable(QString::number(xHdt)));
+        // 12.6 % wb with the consistent energy balance (above 13 % with the paper's printed form,
+        // which cools the parcel more): both within a cut-tobacco line's 12–16 % after the tube.
+        QVERIFY2(xHdt > 12 && xHdt < 16, qPrintable(QString::number(xHdt)));
         QVERIFY2(xOut > 12 && xOut < xHdt, qPrintable(QString::number(xOut)));
         QVERIFY(r->tHdtK[150] - 273.15 > 50 && r->tOutK[150] - 273.15 > 45 && r->tOutK[150] - 273.15 < 65);
         // Steady inputs give a steady line.
@@ -244,9 +293,9 @@ private Q_SLOTS:
         QVERIFY(maxAbsDiff(fast->proxyXConvDb, slow->proxyXConvDb) < 3e-5);
         // A tighter fast path converges to the reference.
         SimulationOptions tight;
-        tight.relTol = 1e-8;
+        tight.relTol = 1e-9;
         auto t = simulateLine(in, m_p, tight, rows);
-        QVERIFY(maxAbsDiff(t->xOutDb, slow->xOutDb) < 1e-7);
+        QVERIFY2(maxAbsDiff(t->xOutDb, slow->xOutDb) < 1e-7, qPrintable(QString::number(maxAbsDiff(t->xOutDb, slow->xOutDb))));
         // Subsets give the same values as the full run at those rows.
         auto all = simulateLine(in, m_p, tight);
         for (std::size_t j = 0; j < rows.size(); ++j) {
