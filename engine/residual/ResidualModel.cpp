@@ -124,10 +124,12 @@ bool ResidualModel::features(const BatchView& v, std::size_t k, Eigen::VectorXd&
     // With proxies, also the PBM's change of outlet prediction from k to k+1: the parcel that
     // reaches the outlet next is already in the line, so the PBM knows it one step ahead.
     const int lags = std::min(m_options.residualLags, kPbmChangeLags);
-    d.resize(s.size() + (m_options.useProxies ? kOutputs * lags : 0));
+    // Under Eq. 27 the base features (the disturbances and proxies themselves) are not inputs.
+    const Eigen::Index baseInputs = eq27() ? 0 : s.size() - 1;
+    d.resize(1 + baseInputs + (m_options.useProxies ? kOutputs * lags : 0));
     d(0) = 1.0;
     Eigen::Index j = 1;
-    for (Eigen::Index i = 0; i < s.size(); ++i) {
+    for (Eigen::Index i = 0; i < s.size() && baseInputs > 0; ++i) {
         if (i != uIdx) {
             d(j++) = s(i);
         }
@@ -160,6 +162,45 @@ Eigen::VectorXd ResidualModel::liftedResidualFeatures(const Eigen::VectorXd& z) 
         res -= m_projection.transpose() * base; // P⊥ (Eq. 27) as the fixed map learned in training
     }
     return res.cwiseQuotient(m_featureScale);
+}
+
+void ResidualModel::residualsOf(const BatchView& v, std::size_t from, std::size_t to, std::vector<double>& ex,
+                                std::vector<double>& et) const {
+    for (std::size_t k = from; k < to; ++k) {
+        observedResidual(*v.batch, *v.pbm, k, ex[k], et[k]);
+        if (!eq27() || m_residualProjection.size() == 0) {
+            continue;
+        }
+        Eigen::VectorXd z, d;
+        double u = 0;
+        if (!features(v, k, z, u, d)) {
+            ex[k] = et[k] = kNaN;
+            continue;
+        }
+        const Eigen::VectorXd psi = m_dict.lift(z);
+        for (std::size_t b = 0; b < m_baseIdx.size(); ++b) {
+            const double f = psi(m_baseIdx[b]);
+            ex[k] -= f * m_residualProjection(static_cast<Eigen::Index>(b), 0);
+            et[k] -= f * m_residualProjection(static_cast<Eigen::Index>(b), 1);
+        }
+    }
+}
+
+Eigen::Vector2d ResidualModel::restoredBasePart(const BatchView& v, std::size_t k) const {
+    if (!eq27() || !m_options.restoreBasePart || m_residualProjection.size() == 0) {
+        return Eigen::Vector2d::Zero();
+    }
+    Eigen::VectorXd z, d;
+    double u = 0;
+    if (!features(v, k, z, u, d)) {
+        return Eigen::Vector2d::Constant(kNaN);
+    }
+    const Eigen::VectorXd psi = m_dict.lift(z);
+    Eigen::Vector2d out = Eigen::Vector2d::Zero();
+    for (std::size_t b = 0; b < m_baseIdx.size(); ++b) {
+        out += psi(m_baseIdx[b]) * m_residualProjection.row(static_cast<Eigen::Index>(b)).transpose();
+    }
+    return out;
 }
 
 bool ResidualModel::stateAt(const BatchView& v, std::size_t k, const std::vector<double>& ex,
@@ -302,6 +343,22 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
         resNow -= baseNow * m.m_projection;
         resNext -= columns(psiNext, m.m_baseIdx) * m.m_projection;
     }
+    if (m.eq27()) {
+        // ẽ = P⊥e (Eq. 27) with the same weighted projection, applied to every row's residual so
+        // that the lagged residuals in the state are projected too.
+        Eigen::MatrixXd eNow(n, kOutputs);
+        for (Eigen::Index i = 0; i < n; ++i) {
+            const auto& s = snaps[static_cast<std::size_t>(i)];
+            eNow(i, 0) = ex[s.view][s.k];
+            eNow(i, 1) = et[s.view][s.k];
+        }
+        m.m_residualProjection = projectionCoefficients(baseNow, eNow, w);
+        for (std::size_t vi = 0; vi < training.size(); ++vi) {
+            const auto& v = training[vi];
+            const std::size_t from = v.rows.begin;
+            m.residualsOf(v, from, v.rows.end, ex[vi], et[vi]);
+        }
+    }
     m.m_featureScale = Eigen::VectorXd::Ones(resNow.cols());
     for (Eigen::Index c = 0; c < resNow.cols(); ++c) {
         const double sd = std::sqrt(resNow.col(c).squaredNorm() / static_cast<double>(n));
@@ -316,14 +373,18 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
         for (Eigen::Index i = 0; i < n; ++i) {
             const auto& s = snaps[static_cast<std::size_t>(i)];
             const double v = j == 0 ? ex[s.view][s.k] : et[s.view][s.k];
-            s2 += v * v;
+            s2 += std::isfinite(v) ? v * v : 0.0;
         }
         const double sd = std::sqrt(s2 / static_cast<double>(n));
         m.m_eScale(j) = sd > 1e-12 ? sd : 1.0;
     }
     const Eigen::Index nx = kOutputs * lags + resNow.cols();
-    const Eigen::Index nd = nz + (o.useProxies ? kOutputs * std::min(lags, kPbmChangeLags)
-                                               : 0); // [1, z without u, PBM outlet changes]
+    const Eigen::Index nd = [&] { // [1, (z without u unless Eq. 27), PBM outlet changes]
+        double u = 0;
+        Eigen::VectorXd z, d;
+        m.features(training[snaps[0].view], snaps[0].k, z, u, d);
+        return d.size();
+    }();
     Eigen::MatrixXd xm(n, nx), xp(n, nx), um(n, 1), dm(n, nd);
     for (Eigen::Index i = 0; i < n; ++i) {
         const auto& s = snaps[static_cast<std::size_t>(i)];
@@ -340,6 +401,15 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
         m.features(training[s.view], s.k, z, u, d);
         um(i, 0) = u;
         dm.row(i) = d.transpose();
+        // A lag whose projected residual could not be formed (its inputs were missing) leaves
+        // the snapshot out rather than poisoning the fit.
+        if (!xm.row(i).allFinite() || !xp.row(i).allFinite() || !dm.row(i).allFinite()) {
+            xm.row(i).setZero();
+            xp.row(i).setZero();
+            dm.row(i).setZero();
+            um(i, 0) = 0;
+            w(i) = 0;
+        }
     }
 
     // 6. CC-EDMDc, Eq. (30): the weighted ridge for [A B E] in normal-equation form.
@@ -451,8 +521,8 @@ HybridPrediction ResidualModel::predictAhead(const BatchView& v, int horizon) co
     std::vector<double> ex(n, kNaN), et(n, kNaN);
     std::vector<double> us(n, kNaN);
     std::vector<Eigen::VectorXd> ds(n);
+    residualsOf(v, first, v.rows.end, ex, et);
     for (std::size_t k = first; k < v.rows.end; ++k) {
-        observedResidual(*v.batch, *v.pbm, k, ex[k], et[k]);
         Eigen::VectorXd z;
         features(v, k, z, us[k], ds[k]);
     }
@@ -472,8 +542,9 @@ HybridPrediction ResidualModel::predictAhead(const BatchView& v, int horizon) co
             x = m_a * x + m_b * us[j] + m_e * ds[j];
         }
         const Eigen::Vector2d e = m_c * x;
-        out.residualXPct[i] = e(0) * m_eScale(0);
-        out.residualTC[i] = e(1) * m_eScale(1);
+        const Eigen::Vector2d base = restoredBasePart(v, target);
+        out.residualXPct[i] = e(0) * m_eScale(0) + base(0);
+        out.residualTC[i] = e(1) * m_eScale(1) + base(1);
         out.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[target]) + out.residualXPct[i]; // Eq. (21)
         out.tOutC[i] = v.pbm->tOutK[target] - units::kKelvinOffset + out.residualTC[i];
     }
@@ -506,9 +577,7 @@ std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
     const std::size_t first = v.rows.begin > back ? v.rows.begin - back : 0;
     // Per row: the forcing g_j = B u_j + E d_j and, where the lags are measured, the state x_j.
     std::vector<double> ex(n, kNaN), et(n, kNaN);
-    for (std::size_t k = first; k < v.rows.end; ++k) {
-        observedResidual(*v.batch, *v.pbm, k, ex[k], et[k]);
-    }
+    residualsOf(v, first, v.rows.end, ex, et);
     const Eigen::Index nx = m_a.rows();
     Eigen::MatrixXd forcing(nx, static_cast<Eigen::Index>(v.rows.end - first));
     Eigen::MatrixXd states(nx, static_cast<Eigen::Index>(v.rows.end - first));
@@ -535,6 +604,7 @@ std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
     }
     for (std::size_t i = 0; i < count; ++i) {
         const std::size_t target = v.rows.begin + i;
+        const Eigen::Vector2d base = restoredBasePart(v, target);
         Eigen::Vector2d forced = Eigen::Vector2d::Zero();
         for (int m = 0; m < hMax; ++m) {
             const auto h = static_cast<std::size_t>(m) + 1; // horizon once row target−1−m is added
@@ -550,8 +620,8 @@ std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
                 cPow[h] * states.col(static_cast<Eigen::Index>(origin - first)) + forced;
             for (std::size_t slot : slotsOf[h]) {
                 auto& p = out[slot];
-                p.residualXPct[i] = e(0) * m_eScale(0);
-                p.residualTC[i] = e(1) * m_eScale(1);
+                p.residualXPct[i] = e(0) * m_eScale(0) + base(0);
+                p.residualTC[i] = e(1) * m_eScale(1) + base(1);
                 p.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[target]) + p.residualXPct[i]; // Eq. (21)
                 p.tOutC[i] = v.pbm->tOutK[target] - units::kKelvinOffset + p.residualTC[i];
             }
@@ -583,9 +653,10 @@ HybridPrediction ResidualModel::predictFreeRun(const BatchView& v) const {
         }
         if (running && k >= v.rows.begin) {
             const Eigen::Vector2d e = m_c * x;
+            const Eigen::Vector2d base = restoredBasePart(v, k);
             const std::size_t i = k - v.rows.begin;
-            out.residualXPct[i] = e(0) * m_eScale(0);
-            out.residualTC[i] = e(1) * m_eScale(1);
+            out.residualXPct[i] = e(0) * m_eScale(0) + base(0);
+            out.residualTC[i] = e(1) * m_eScale(1) + base(1);
             out.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[k]) + out.residualXPct[i]; // Eq. (21)
             out.tOutC[i] = v.pbm->tOutK[k] - units::kKelvinOffset + out.residualTC[i];
         }
@@ -615,6 +686,8 @@ std::string ResidualModel::toJson() const {
                     {"degree", o.degree},
                     {"residual_lags", o.residualLags},
                     {"orthogonal_projection", o.orthogonalProjection},
+                    {"project_residual", o.projectResidual},
+                    {"restore_base_part", o.restoreBasePart},
                     {"control_consistent_weights", o.controlConsistentWeights},
                     {"stability_constraint", o.stabilityConstraint},
                     {"stability_method",
@@ -639,6 +712,7 @@ std::string ResidualModel::toJson() const {
     j["base_features"] = m_baseIdx;
     j["residual_features"] = m_resIdx;
     j["projection_G"] = matrixJson(m_projection);
+    j["residual_projection_g"] = matrixJson(m_residualProjection);
     j["feature_scale"] =
         std::vector<double>(m_featureScale.data(), m_featureScale.data() + m_featureScale.size());
     j["residual_scale"] = {m_eScale(0), m_eScale(1)};
@@ -679,6 +753,9 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
         o.degree = jo.at("degree");
         o.residualLags = jo.at("residual_lags");
         o.orthogonalProjection = jo.at("orthogonal_projection");
+        // Files from before Eq. 27 was implemented as written projected the features only.
+        o.projectResidual = jo.value("project_residual", false);
+        o.restoreBasePart = jo.value("restore_base_part", true);
         o.controlConsistentWeights = jo.at("control_consistent_weights");
         o.stabilityConstraint = jo.at("stability_constraint");
         // Files written before Eq. (30) was solved as stated used the eigenvalue pull.
@@ -707,6 +784,9 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
         m.m_baseIdx = j.at("base_features").get<std::vector<int>>();
         m.m_resIdx = j.at("residual_features").get<std::vector<int>>();
         m.m_projection = matrixFrom(j.at("projection_G"));
+        if (j.contains("residual_projection_g")) {
+            m.m_residualProjection = matrixFrom(j.at("residual_projection_g"));
+        }
         m.m_featureScale = vectorFrom(j.at("feature_scale"));
         const auto es = j.at("residual_scale").get<std::vector<double>>();
         m.m_eScale = Eigen::Vector2d(es.at(0), es.at(1));
@@ -743,8 +823,10 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
             m.m_a.cols() == nx && m.m_b.rows() == nx && m.m_e.rows() == nx && m.m_c.cols() == nx &&
             m.m_c.rows() == kOutputs &&
             nx == kOutputs * o.residualLags + static_cast<Eigen::Index>(m.m_resIdx.size()) &&
-            m.m_e.cols() == m.m_dict.inputCount() +
-                                (o.useProxies ? kOutputs * std::min(o.residualLags, kPbmChangeLags) : 0);
+            m.m_e.cols() == 1 + (m.eq27() ? 0 : m.m_dict.inputCount() - 1) +
+                                (o.useProxies ? kOutputs * std::min(o.residualLags, kPbmChangeLags) : 0) &&
+            (!m.eq27() || (m.m_residualProjection.rows() == static_cast<Eigen::Index>(m.m_baseIdx.size()) &&
+                           m.m_residualProjection.cols() == kOutputs));
         if (!shapesOk) {
             return Error{ErrorKind::BadInput, "residual model", "matrix shapes do not fit together"};
         }

@@ -39,6 +39,16 @@ struct ResidualOptions {
     std::vector<std::string> baseFeatures;
     int residualLags = 8;                 ///< measured residuals e_k … e_{k−L+1} in the lifted state
     bool orthogonalProjection = true;     ///< P⊥ of Eq. 27 on the residual features
+    /// Eq. 27 as written: also ẽ = P⊥e (the residual part the base features explain is left to
+    /// the physics model and to discovery) and the base features are not inputs (d = [1, Δŷ_mech]).
+    /// false with orthogonalProjection: the form of model files before 2026-11-22, where P⊥ only
+    /// re-parametrised the residual features and the base features came back in through E d.
+    bool projectResidual = true;
+    /// With Eq. 27: the part of e the base features explain, Φ_base g, is a static correction
+    /// added to the prediction (ŷ = ŷ_mech + Φ_base g + ẽ̂), the "physics side" of the split.
+    /// false: the paper's literal reading, ŷ = ŷ_mech + ẽ̂, which on the demo discards most of the
+    /// calibrated PBM's error and makes the hybrid barely better than the PBM (docs/pgrl-cc.md).
+    bool restoreBasePart = true;
     bool controlConsistentWeights = true; ///< ω of Eq. 29 (else W = I)
     bool stabilityConstraint = true;      ///< A with a certificate (Eq. 30)
     StabilityMethod stabilityMethod = StabilityMethod::Constrained;
@@ -96,6 +106,11 @@ public:
     /// @brief Free run: the lifted state rolled from the batch's first row with inputs and PBM
     /// proxies only, never a measured output (lags start at zero), ê_k = C x_k, for the view's rows.
     HybridPrediction predictFreeRun(const BatchView& view) const;
+    /// @brief The residuals the model learns for rows [from, to) of a view, written into @p ex
+    /// (% wb) and @p et (°C) sized to the batch: e of Eq. 20, or ẽ = P⊥e under Eq. 27 (NaN where
+    /// the base features cannot be formed).
+    void residualsOf(const BatchView& v, std::size_t from, std::size_t to, std::vector<double>& ex,
+                     std::vector<double>& et) const;
     /// @brief Free rollout of the lifted state from x0 under given inputs (for boundedness checks).
     std::vector<Eigen::VectorXd> rollout(const Eigen::VectorXd& x0, const std::vector<double>& u,
                                          const std::vector<Eigen::VectorXd>& d) const;
@@ -120,6 +135,11 @@ private:
     struct RowFeatures;
     bool features(const BatchView& v, std::size_t k, Eigen::VectorXd& zLin, double& u,
                   Eigen::VectorXd& d) const;
+    bool eq27() const { return m_options.orthogonalProjection && m_options.projectResidual; }
+    /// Φ_base(z_k) g of Eq. 27 in % wb and °C when it is restored to the prediction, else 0;
+    /// NaN when the inputs of row k are missing.
+    Eigen::Vector2d restoredBasePart(const BatchView& v, std::size_t k) const;
+
     Eigen::VectorXd liftedResidualFeatures(const Eigen::VectorXd& z) const;
     bool stateAt(const BatchView& v, std::size_t k, const std::vector<double>& ex,
                  const std::vector<double>& et, Eigen::VectorXd& x, double& u, Eigen::VectorXd& d) const;
@@ -129,6 +149,7 @@ private:
     std::vector<int> m_baseIdx;
     std::vector<int> m_resIdx;
     Eigen::MatrixXd m_projection;   ///< G of P⊥: Φ̃_res = Φ_res − Φ_base G
+    Eigen::MatrixXd m_residualProjection; ///< g of P⊥ on e: ẽ = e − Φ_base g (n_base × 2, % wb and °C)
     Eigen::VectorXd m_featureScale; ///< std of Φ̃_res columns
     Eigen::Vector2d m_eScale{1, 1}; ///< std of the residual outputs (% wb, °C)
     double m_uMean = 0, m_uScale = 1;

@@ -108,6 +108,66 @@ private Q_SLOTS:
         QVERIFY((pPerp * res - projected).norm() < 1e-8 * res.norm());
     }
 
+    void projectedResidualIsOrthogonalToTheBaseFeatures() {
+        // Eq. 27: ẽ = P⊥e with W = I is orthogonal to the constant and to every input and proxy
+        // over the training snapshots; e itself is not.
+        const auto& f = demoFixture();
+        const auto train = hybrid::splitViews(f.batches, f.pbm, false);
+        ResidualOptions o;
+        o.controlConsistentWeights = false;
+        auto m = ResidualModel::train(train, o);
+        QVERIFY(m.ok());
+        std::vector<double> eTilde, eRaw;
+        std::vector<std::vector<double>> inputs(13);
+        for (const auto& v : train) {
+            const std::size_t n = v.batch->rows();
+            std::vector<double> ex(n, NAN), et(n, NAN), rx(n, NAN), rt(n, NAN);
+            m->residualsOf(v, v.rows.begin, v.rows.end, ex, et);
+            for (std::size_t k = v.rows.begin; k < v.rows.end; ++k) {
+                observedResidual(*v.batch, *v.pbm, k, rx[k], rt[k]);
+            }
+            // The training snapshots: k and k+1 kept, residuals finite at k+1 and 8 lags.
+            for (std::size_t k = v.rows.begin + 7; k + 1 < v.rows.end; ++k) {
+                bool ok = v.batch->keep[k] && v.batch->keep[k + 1];
+                for (std::size_t j = k - 7; ok && j <= k + 1; ++j) {
+                    ok = std::isfinite(rx[j]) && std::isfinite(rt[j]);
+                }
+                if (!ok) {
+                    continue;
+                }
+                eTilde.push_back(ex[k]);
+                eRaw.push_back(rx[k]);
+                const auto& p = *v.pbm;
+                const auto& b = *v.batch;
+                const double z[13] = {1.0,           p.proxyXHdtDb[k], p.proxyTHdtK[k],  p.proxyXConvDb[k],
+                                      p.proxyTConvK[k], p.proxyXMixDb[k], p.proxyTMixK[k], b.tHotK[k],
+                                      b.feedKgPerS[k],  b.xInDb[k],       b.tInK[k],       b.tAmbK[k],
+                                      b.rhAmb[k]};
+                for (int i = 0; i < 13; ++i) {
+                    inputs[i].push_back(z[i]);
+                }
+            }
+        }
+        QVERIFY(eTilde.size() > 1000);
+        const auto cosine = [](const std::vector<double>& a, const std::vector<double>& b) {
+            double ab = 0, aa = 0, bb = 0;
+            for (std::size_t i = 0; i < a.size(); ++i) {
+                ab += a[i] * b[i];
+                aa += a[i] * a[i];
+                bb += b[i] * b[i];
+            }
+            return ab / std::sqrt(aa * bb);
+        };
+        double worstTilde = 0, worstRaw = 0;
+        for (const auto& z : inputs) {
+            worstTilde = std::max(worstTilde, std::abs(cosine(eTilde, z)));
+            worstRaw = std::max(worstRaw, std::abs(cosine(eRaw, z)));
+        }
+        qInfo("largest |cos(residual, base feature)|: e %.3g, P⊥e %.3g", worstRaw, worstTilde);
+        QVERIFY(worstTilde < 1e-6);
+        QVERIFY(worstRaw > 0.1);
+    }
+
     void stabilityConstraintCertifies() {
         std::mt19937 rng(5);
         std::normal_distribution<double> n(0, 1);
