@@ -1,6 +1,11 @@
 #include "hybrid/HybridTraining.h"
 
+#include "calibration/Calibration.h"
 #include "hybrid/Evaluation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
 
 #include <chrono>
 
@@ -32,6 +37,34 @@ std::vector<residual::BatchView> splitViews(const std::vector<data::SiBatch>& ba
         const auto& range = test ? split.test[b] : split.train[b];
         if (range.size() > 0) {
             views.push_back({&batches[b], &pbm[b], range});
+        }
+    }
+    return views;
+}
+
+std::vector<residual::BatchView> regimeViews(const std::vector<data::SiBatch>& batches,
+                                             const std::vector<physics::SimulationResult>& pbm, bool test,
+                                             double testFraction) {
+    std::vector<std::pair<double, std::size_t>> byAmbient;
+    for (std::size_t b = 0; b < batches.size(); ++b) {
+        double sum = 0;
+        std::size_t n = 0;
+        for (double t : batches[b].tAmbK) {
+            if (std::isfinite(t)) {
+                sum += t;
+                ++n;
+            }
+        }
+        byAmbient.push_back({n > 0 ? sum / double(n) : 0.0, b});
+    }
+    std::sort(byAmbient.begin(), byAmbient.end());
+    const auto testCount = static_cast<std::size_t>(std::ceil(testFraction * double(batches.size())));
+    std::vector<residual::BatchView> views;
+    for (std::size_t i = 0; i < byAmbient.size(); ++i) {
+        const std::size_t b = byAmbient[i].second;
+        const bool isTest = i + testCount >= byAmbient.size();
+        if (isTest == test && batches[b].rows() > 0) {
+            views.push_back({&batches[b], &pbm[b], {0, batches[b].rows()}});
         }
     }
     return views;
@@ -85,68 +118,119 @@ void storeResidualModels(HybridModel& model, TrainingResult&& trained) {
 Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, const HybridModel& model,
                                      const Progress& progress) {
     const auto t0 = std::chrono::steady_clock::now();
+    enum class Physics { None, NoClamp, NoLatentCorrection, NoCpMoisture, OtherEnergyBalance };
+    enum class Learning { None, NoProjection, LiteralEq27, NoWeights, NoConstraint, EigenvaluePull };
     struct Variant {
         const char* name;
-        const char* description;
-        int physics;  ///< 0 none, 1 no clamp, 2 no L_v correction, 3 no C_p(X)
-        int learning; ///< 0 none, 4 no P⊥, 5 no CC weights, 6 no stability constraint
+        std::string description;
+        Physics physics;
+        Learning learning;
     };
-    const Variant variants[] = {
-        {"full", "PGRL-CC, all components", 0, 0},
-        {"no_aw_clamp", "1. no a_w clamping", 1, 0},
-        {"no_lv_correction", "2. no L_v correction", 2, 0},
-        {"no_cp_moisture", "3. no C_p(X) dependency", 3, 0},
-        {"no_orthogonal_projection", "4. no orthogonal learning (P_perp)", 0, 4},
-        {"no_cc_weights", "5. no control-consistent weights", 0, 5},
-        {"no_stability_constraint", "6. no stability constraint (EDMDc-S)", 0, 6},
+    const bool consistent = model.switches.consistentEnergyBalance;
+    const std::vector<Variant> variants{
+        {"full", "PGRL-CC, all components", Physics::None, Learning::None},
+        {"no_aw_clamp", "1. no a_w clamping", Physics::NoClamp, Learning::None},
+        {"no_lv_correction", "2. no L_v correction", Physics::NoLatentCorrection, Learning::None},
+        {"no_cp_moisture", "3. no C_p(X) dependency", Physics::NoCpMoisture, Learning::None},
+        {consistent ? "paper_energy_balance" : "consistent_energy_balance",
+         consistent ? "E. energy balance as printed (Eqs. 12, 14, 19 count C_p,w (T - T_ref) twice)"
+                    : "E. consistent energy balance (L_v only)",
+         Physics::OtherEnergyBalance, Learning::None},
+        {"no_orthogonal_projection", "4. no orthogonal learning (P_perp)", Physics::None, Learning::NoProjection},
+        {"literal_eq27", "4b. Eq. 27 read literally (base part of e dropped from the prediction)", Physics::None,
+         Learning::LiteralEq27},
+        {"no_cc_weights", "5. no control-consistent weights", Physics::None, Learning::NoWeights},
+        {"no_stability_constraint", "6. no stability constraint (EDMDc-S)", Physics::None, Learning::NoConstraint},
+        {"eigenvalue_pull", "6b. eigenvalues pulled in after an unconstrained fit instead of Eq. 30",
+         Physics::None, Learning::EigenvaluePull},
     };
-    std::vector<AblationRow> rows;
+    AblationResult result;
     std::vector<physics::SimulationResult> basePbm;
+    const double total = static_cast<double>(variants.size());
     int done = 0;
     for (const auto& v : variants) {
-        if (reportProgress(progress, "ablation", done / 7.0, v.name)) {
+        if (reportProgress(progress, "ablation", done / total, v.name)) {
             return cancelledError("ablation");
         }
         properties::ModelSwitches sw = model.switches;
-        sw.clampWaterActivity = sw.clampWaterActivity && v.physics != 1;
-        sw.latentHeatCorrection = sw.latentHeatCorrection && v.physics != 2;
-        sw.moistureDependentCp = sw.moistureDependentCp && v.physics != 3;
-        // The base PBM run serves the full model and the three learning variants; the physics
-        // variants each need their own.
+        sw.clampWaterActivity = sw.clampWaterActivity && v.physics != Physics::NoClamp;
+        sw.latentHeatCorrection = sw.latentHeatCorrection && v.physics != Physics::NoLatentCorrection;
+        sw.moistureDependentCp = sw.moistureDependentCp && v.physics != Physics::NoCpMoisture;
+        if (v.physics == Physics::OtherEnergyBalance) {
+            sw.consistentEnergyBalance = !sw.consistentEnergyBalance;
+        }
+        AblationRow row;
+        row.variant = v.name;
+        row.description = v.description;
+        // The base PBM run serves the full model and the learning variants; a physics variant
+        // refits h_HDT, k_HDT for its switches first, then runs with them.
+        HybridModel variantModel = model;
+        variantModel.switches = sw;
         std::vector<physics::SimulationResult> variantPbm;
-        if (v.physics != 0 || basePbm.empty()) {
-            auto sims = simulatePbm(batches, model, sw);
+        if (v.physics != Physics::None) {
+            calibration::CalibrationOptions co;
+            co.globalSearch = false;
+            co.intervals = false;
+            co.maxEvaluations = 200;
+            co.simulation = model.simulationOptions();
+            co.simulation.switches = sw;
+            auto cal = calibration::calibrate(batches, model.parameters, co);
+            if (!cal) {
+                return cal.error();
+            }
+            variantModel.parameters = cal->parameters;
+            row.recalibrated = true;
+        }
+        row.hHdt = variantModel.parameters[properties::Param::h_HDT];
+        row.kHdt = variantModel.parameters[properties::Param::k_HDT];
+        if (v.physics != Physics::None || basePbm.empty()) {
+            auto sims = simulatePbm(batches, variantModel, sw);
             if (!sims) {
                 return sims.error();
             }
-            (v.physics == 0 ? basePbm : variantPbm) = std::move(*sims);
+            (v.physics == Physics::None ? basePbm : variantPbm) = std::move(*sims);
         }
-        const auto& pbm = v.physics == 0 ? basePbm : variantPbm;
+        const auto& pbm = v.physics == Physics::None ? basePbm : variantPbm;
         residual::ResidualOptions o;
-        o.orthogonalProjection = v.learning != 4;
-        o.controlConsistentWeights = v.learning != 5;
-        o.stabilityConstraint = v.learning != 6;
+        o.orthogonalProjection = v.learning != Learning::NoProjection;
+        o.restoreBasePart = v.learning != Learning::LiteralEq27;
+        o.controlConsistentWeights = v.learning != Learning::NoWeights;
+        o.stabilityConstraint = v.learning != Learning::NoConstraint;
+        if (v.learning == Learning::EigenvaluePull) {
+            o.stabilityMethod = residual::StabilityMethod::EigenvaluePull;
+        }
+        // Chronological split: one step and multi-step.
         auto m = residual::ResidualModel::train(splitViews(batches, pbm, false), o);
         if (!m) {
             return m.error();
         }
-        const auto scored = evaluation::scorePredictions(
-            splitViews(batches, pbm, true),
-            [&](const residual::BatchView& view) { return m->predictOneStep(view); }, 20);
-        AblationRow row;
-        row.maeMoisture = scored.moisture.mae;
-        row.r2Moisture = scored.moisture.r2;
-        row.maeTemperature = scored.temperature.mae;
-        row.r2Temperature = scored.temperature.r2;
-        row.ljungBoxPMoisture = scored.moisture.ljungBoxP;
-        row.variant = v.name;
-        row.description = v.description;
-        rows.push_back(row);
+        const auto test = splitViews(batches, pbm, true);
+        const auto scored = evaluation::scoreHorizons(
+            test,
+            [&](const residual::BatchView& view, const std::vector<int>& hs) { return m->predictHorizons(view, hs); },
+            {1, result.multiStepHorizon}, 20);
+        row.maeMoisture = scored[0].moisture.mae;
+        row.r2Moisture = scored[0].moisture.r2;
+        row.maeTemperature = scored[0].temperature.mae;
+        row.r2Temperature = scored[0].temperature.r2;
+        row.ljungBoxPMoisture = scored[0].moisture.ljungBoxP;
+        row.maeMoistureMultiStep = scored[1].moisture.mae;
+        // Extrapolation split: trained on the cooler seasons, tested on the warmest.
+        auto mr = residual::ResidualModel::train(regimeViews(batches, pbm, false), o);
+        if (!mr) {
+            return mr.error();
+        }
+        const auto regime = evaluation::scorePredictions(
+            regimeViews(batches, pbm, true), [&](const residual::BatchView& view) { return mr->predictOneStep(view); },
+            20);
+        row.regimeMaeMoisture = regime.moisture.mae;
+        row.regimeR2Moisture = regime.moisture.r2;
+        row.regimeMaeTemperature = regime.temperature.mae;
+        result.rows.push_back(row);
         ++done;
     }
     reportProgress(progress, "ablation", 1.0, "done");
-    AblationResult result{std::move(rows), {}};
-    result.ending = {Termination::Completed, "seven variants trained and scored",
+    result.ending = {Termination::Completed, std::to_string(variants.size()) + " variants trained and scored on two splits",
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
     return result;
 }

@@ -84,6 +84,8 @@ std::string ablationJson(const hybrid::AblationResult& result) {
     json j;
     j["split"] = "chronological_70_30";
     j["horizon_steps"] = 1;
+    j["multi_step_horizon"] = result.multiStepHorizon;
+    j["regime_split"] = result.regimeSplit;
     j["units"] = {{"moisture", "% wb"}, {"temperature", "°C"}};
     for (const auto& r : result.rows) {
         j["variants"].push_back({{"variant", r.variant},
@@ -92,7 +94,15 @@ std::string ablationJson(const hybrid::AblationResult& result) {
                                  {"r2_moisture", r.r2Moisture},
                                  {"mae_temperature", r.maeTemperature},
                                  {"r2_temperature", r.r2Temperature},
-                                 {"ljung_box_p_moisture", r.ljungBoxPMoisture}});
+                                 {"ljung_box_p_moisture", r.ljungBoxPMoisture},
+                                 {"mae_moisture_multi_step", r.maeMoistureMultiStep},
+                                 {"regime",
+                                  {{"mae_moisture", r.regimeMaeMoisture},
+                                   {"r2_moisture", r.regimeR2Moisture},
+                                   {"mae_temperature", r.regimeMaeTemperature}}},
+                                 {"recalibrated", r.recalibrated},
+                                 {"h_HDT", r.hHdt},
+                                 {"k_HDT", r.kHdt}});
     }
     return j.dump(2) + "\n";
 }
