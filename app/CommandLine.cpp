@@ -120,14 +120,19 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     addData(train);
     train->add_option("--model", o.modelPath, "calibrated model file")->required();
     train->add_option("--out", o.outPath, "model file to write")->required();
-    train->add_option("--lags", o.residualLags, "measured residual lags in the lifted state")
-        ->capture_default_str();
+    train->add_option("--lags", o.residualLags,
+                      "measured residual lags in the lifted state (default: chosen among 8 and 16 by "
+                      "multi-step validation inside the training part)");
     train->add_option("--degree", o.degree, "polynomial dictionary degree (1-3)")->capture_default_str();
     train->add_option("--base", o.baseFeatures,
                       "base features of the orthogonal projection (Eq. 27), e.g. 1 T_amb X_HDT^2; "
                       "default: the constant and linear terms");
     train->add_option("--ridge", o.ridge,
-                      "ridge weight lambda_A = lambda_B = lambda_E per unit of total weight");
+                      "ridge weight lambda_A = lambda_B = lambda_E per unit of total weight (default: chosen "
+                      "among 1e-4 and 1e-3 by validation)");
+    train->add_flag("--no-select", o.noSelect,
+                    "take the settings as given (lags 8, ridge 1e-4, with P_perp) instead of choosing lags, "
+                    "ridge and P_perp by multi-step validation inside the training part");
     train->add_option("--lstm-epochs", o.lstmEpochs, "training epochs of the LSTM baseline")
         ->capture_default_str();
     train->add_option("--seed", o.seed, "seed of the LSTM baseline")->capture_default_str();

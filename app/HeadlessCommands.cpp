@@ -323,6 +323,21 @@ void printTraining(const workflow::TrainResult& t) {
     std::printf("%-20s trained in %.1f s, final training loss %.4g (standardised)\n", "lstm",
                 t.lstm->trainingSeconds(),
                 t.lstm->lossHistory().empty() ? std::nan("") : t.lstm->lossHistory().back());
+    const auto& cmp = t.pgrlCc->stabilityComparison();
+    std::printf("Eq. 30 training loss (per unit weight): unconstrained %.6g (radius %.5f), eigenvalues pulled "
+                "%.6g (%.5f), constrained %.6g (%.5f; %d ADMM iterations); certificate by Cholesky %s, "
+                "cond(P) %.3g\n",
+                cmp.lossUnconstrained, cmp.radiusUnconstrained, cmp.lossEigenvaluePull, cmp.radiusEigenvaluePull,
+                cmp.lossConstrained, cmp.radiusConstrained, cmp.admmIterations,
+                t.pgrlCc->stability().choleskyPasses ? "passes" : "FAILS", t.pgrlCc->stability().pConditionNumber);
+    if (!t.selection.empty()) {
+        std::printf("settings chosen by multi-step validation inside the training part (mean skill over "
+                    "horizons and outputs; < 1 beats the references):\n");
+        for (const auto& c : t.selection) {
+            std::printf("  lags %2d, ridge %.0e, P_perp %-3s  skill %.4f%s\n", c.lags, c.ridge,
+                        c.orthogonalProjection ? "on" : "off", c.validationSkill, c.chosen ? "  <- chosen" : "");
+        }
+    }
 }
 
 void printAblation(const hybrid::AblationResult& a) {
@@ -342,11 +357,16 @@ void printAblation(const hybrid::AblationResult& a) {
 /// The training options of the command line; false with a message on a malformed one.
 bool trainOptions(const CommandOptions& o, workflow::TrainOptions& options, int& exitCode) {
     auto& ro = options.residual;
-    ro.residualLags = o.residualLags;
+    if (o.residualLags > 0) {
+        ro.residualLags = o.residualLags;
+        options.selection.lags = {o.residualLags}; // a given value is not second-guessed
+    }
+    options.selection.enabled = !o.noSelect;
     ro.degree = o.degree;
     ro.baseFeatures = o.baseFeatures;
     if (o.ridge >= 0) {
         ro.lambdaA = ro.lambdaB = ro.lambdaE = o.ridge;
+        options.selection.ridge = {o.ridge};
     }
     options.lstm.seed = o.seed;
     options.lstm.epochs = o.lstmEpochs;

@@ -33,11 +33,12 @@ struct CommandOptions {
     int maxEvaluations = 2000;
     std::string subset = "10:300"; ///< calibration rows: every STRIDE-th kept row, the first COUNT
     int horizonSteps = 30;
-    int residualLags = 8;
+    int residualLags = 0; ///< 0: chosen by validation inside the training part
+    bool noSelect = false;
     int degree = 2;
     int lstmEpochs = 30;
     std::vector<std::string> baseFeatures;
-    double ridge = -1; ///< < 0: the model's default
+    double ridge = -1; ///< < 0: chosen by validation (or the model's default with --no-select)
     data::CleaningOptions cleaning;
     bool quiet = false;
     Progress progress;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include <chrono>
@@ -70,28 +71,136 @@ std::vector<residual::BatchView> regimeViews(const std::vector<data::SiBatch>& b
     return views;
 }
 
+Status ModelSelection::validate() const {
+    if (!enabled) {
+        return {};
+    }
+    if (lags.empty() || ridge.empty() || horizons.empty()) {
+        return invalidOption("model selection", "needs at least one lag count, ridge weight and horizon");
+    }
+    if (!(validationFraction > 0.05 && validationFraction < 0.6)) {
+        return invalidOption("model selection", "validation fraction must lie in (0.05, 0.6)");
+    }
+    return {};
+}
+
+namespace {
+
+/// The training views cut into a fitting part and a validation tail per batch.
+std::pair<std::vector<residual::BatchView>, std::vector<residual::BatchView>>
+innerSplit(const std::vector<residual::BatchView>& views, double validationFraction) {
+    std::pair<std::vector<residual::BatchView>, std::vector<residual::BatchView>> out;
+    for (const auto& v : views) {
+        const auto n = v.rows.size();
+        const auto cut = v.rows.begin + static_cast<std::size_t>(std::round((1.0 - validationFraction) * double(n)));
+        if (cut > v.rows.begin) {
+            out.first.push_back({v.batch, v.pbm, {v.rows.begin, cut}});
+        }
+        if (cut < v.rows.end) {
+            out.second.push_back({v.batch, v.pbm, {cut, v.rows.end}});
+        }
+    }
+    return out;
+}
+
+} // namespace
+
 Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& batches,
                                              const HybridModel& model,
                                              const residual::ResidualOptions& options,
                                              const baselines::LstmOptions& lstmOptions,
-                                             const Progress& progress) {
+                                             const Progress& progress, const ModelSelection& selection) {
     const auto t0 = std::chrono::steady_clock::now();
+    if (auto st = selection.validate(); !st) {
+        return st.error();
+    }
     auto pbm = simulatePbm(batches, model, model.switches, progress);
     if (!pbm) {
         return pbm.error();
     }
     const auto views = splitViews(batches, *pbm, false);
+    residual::ResidualOptions chosen = options;
+    std::vector<SelectionCandidate> candidates;
+    if (selection.enabled) {
+        const auto [fit, validation] = innerSplit(views, selection.validationFraction);
+        // The references' MAE per horizon on the validation rows, once.
+        std::vector<double> refX(selection.horizons.size(), std::numeric_limits<double>::infinity());
+        std::vector<double> refT = refX;
+        for (bool hold : {false, true}) {
+            const auto scored = evaluation::scoreHorizons(
+                validation,
+                [hold](const residual::BatchView& v, const std::vector<int>& hs) {
+                    std::vector<residual::HybridPrediction> p;
+                    for (int h : hs) {
+                        p.push_back(evaluation::referencePrediction(v, h, hold));
+                    }
+                    return p;
+                },
+                selection.horizons, 1);
+            for (std::size_t h = 0; h < scored.size(); ++h) {
+                refX[h] = std::min(refX[h], scored[h].moisture.mae);
+                refT[h] = std::min(refT[h], scored[h].temperature.mae);
+            }
+        }
+        for (bool projection : selection.tryWithoutProjection ? std::vector<bool>{true, false}
+                                                             : std::vector<bool>{options.orthogonalProjection}) {
+            for (int lags : selection.lags) {
+                for (double ridge : selection.ridge) {
+                    candidates.push_back({lags, ridge, projection, 0, false});
+                }
+            }
+        }
+        double best = std::numeric_limits<double>::infinity();
+        std::size_t bestIndex = 0;
+        for (std::size_t c = 0; c < candidates.size(); ++c) {
+            if (reportProgress(progress, "train", 0.3 * double(c) / double(candidates.size()),
+                               "selecting settings " + std::to_string(c + 1) + "/" +
+                                   std::to_string(candidates.size()))) {
+                return cancelledError("train");
+            }
+            residual::ResidualOptions o = options;
+            o.residualLags = candidates[c].lags;
+            o.lambdaA = o.lambdaB = o.lambdaE = candidates[c].ridge;
+            o.orthogonalProjection = candidates[c].orthogonalProjection;
+            auto m = residual::ResidualModel::train(fit, o);
+            if (!m) {
+                candidates[c].validationSkill = std::numeric_limits<double>::infinity();
+                continue; // a candidate that cannot be fitted is not chosen
+            }
+            const auto scored = evaluation::scoreHorizons(
+                validation,
+                [&](const residual::BatchView& v, const std::vector<int>& hs) { return m->predictHorizons(v, hs); },
+                selection.horizons, 1);
+            double skill = 0;
+            for (std::size_t h = 0; h < scored.size(); ++h) {
+                skill += 0.5 * (scored[h].moisture.mae / refX[h] + scored[h].temperature.mae / refT[h]);
+            }
+            candidates[c].validationSkill = skill / double(scored.size());
+            if (candidates[c].validationSkill < best) {
+                best = candidates[c].validationSkill;
+                bestIndex = c;
+            }
+        }
+        if (!std::isfinite(best)) {
+            return Error{ErrorKind::Numerical, "model selection", "no candidate setting could be fitted"};
+        }
+        candidates[bestIndex].chosen = true;
+        chosen.residualLags = candidates[bestIndex].lags;
+        chosen.lambdaA = chosen.lambdaB = chosen.lambdaE = candidates[bestIndex].ridge;
+        chosen.orthogonalProjection = candidates[bestIndex].orthogonalProjection;
+    }
     if (reportProgress(progress, "train", 0.3, "PGRL-CC")) {
         return cancelledError("train");
     }
-    auto full = residual::ResidualModel::train(views, options);
+    auto full = residual::ResidualModel::train(views, chosen);
     if (!full) {
         return full.error();
     }
     if (reportProgress(progress, "train", 0.7, "external-input residual")) {
         return cancelledError("train");
     }
-    residual::ResidualOptions ext = options;
+    // The external-input baseline gets the same settings: the comparison isolates z.
+    residual::ResidualOptions ext = chosen;
     ext.useProxies = false;
     auto extModel = residual::ResidualModel::train(views, ext);
     if (!extModel) {
@@ -102,10 +211,9 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
         return lstm.error();
     }
     reportProgress(progress, "train", 1.0, "done");
-    TrainingResult r{std::move(*full), std::move(*extModel), std::move(*lstm), 0, {}};
+    TrainingResult r{std::move(*full), std::move(*extModel), std::move(*lstm), std::move(candidates), 0, {}};
     r.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.ending = {Termination::Completed, "PGRL-CC, external-input residual and LSTM trained",
-                r.elapsedSeconds};
+    r.ending = {Termination::Completed, "PGRL-CC, external-input residual and LSTM trained", r.elapsedSeconds};
     return r;
 }
 
@@ -127,6 +235,9 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
         Learning learning;
     };
     const bool consistent = model.switches.consistentEnergyBalance;
+    // The full row is the PGRL-CC the model holds (its settings chosen in training), or the defaults.
+    const residual::ResidualOptions base = model.pgrlCc ? model.pgrlCc->options() : residual::ResidualOptions{};
+    const bool withProjection = base.orthogonalProjection;
     const std::vector<Variant> variants{
         {"full", "PGRL-CC, all components", Physics::None, Learning::None},
         {"no_aw_clamp", "1. no a_w clamping", Physics::NoClamp, Learning::None},
@@ -136,7 +247,10 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
          consistent ? "E. energy balance as printed (Eqs. 12, 14, 19 count C_p,w (T - T_ref) twice)"
                     : "E. consistent energy balance (L_v only)",
          Physics::OtherEnergyBalance, Learning::None},
-        {"no_orthogonal_projection", "4. no orthogonal learning (P_perp)", Physics::None, Learning::NoProjection},
+        {withProjection ? "no_orthogonal_projection" : "orthogonal_projection",
+         withProjection ? "4. no orthogonal learning (P_perp)"
+                        : "4. with orthogonal learning (P_perp, Eq. 27; the trained model has none)",
+         Physics::None, Learning::NoProjection},
         {"literal_eq27", "4b. Eq. 27 read literally (base part of e dropped from the prediction)", Physics::None,
          Learning::LiteralEq27},
         {"no_cc_weights", "5. no control-consistent weights", Physics::None, Learning::NoWeights},
@@ -191,11 +305,17 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
             (v.physics == Physics::None ? basePbm : variantPbm) = std::move(*sims);
         }
         const auto& pbm = v.physics == Physics::None ? basePbm : variantPbm;
-        residual::ResidualOptions o;
-        o.orthogonalProjection = v.learning != Learning::NoProjection;
-        o.restoreBasePart = v.learning != Learning::LiteralEq27;
-        o.controlConsistentWeights = v.learning != Learning::NoWeights;
-        o.stabilityConstraint = v.learning != Learning::NoConstraint;
+        residual::ResidualOptions o = base;
+        if (v.learning == Learning::NoProjection) {
+            o.orthogonalProjection = !base.orthogonalProjection;
+            o.projectResidual = true;
+        }
+        if (v.learning == Learning::LiteralEq27) {
+            o.orthogonalProjection = o.projectResidual = true;
+            o.restoreBasePart = false;
+        }
+        o.controlConsistentWeights = base.controlConsistentWeights && v.learning != Learning::NoWeights;
+        o.stabilityConstraint = base.stabilityConstraint && v.learning != Learning::NoConstraint;
         if (v.learning == Learning::EigenvaluePull) {
             o.stabilityMethod = residual::StabilityMethod::EigenvaluePull;
         }

@@ -30,11 +30,36 @@ std::vector<residual::BatchView> regimeViews(const std::vector<data::SiBatch>& b
                                              double testFraction = 0.3);
 inline constexpr const char* kRegimeSplitName = "regime_warmest_ambient_30";
 
+/// @brief Choice of PGRL-CC's settings by multi-step validation inside the training part
+/// (issue #11 part 2): the last @p validationFraction of each batch's training rows is held back,
+/// every candidate is fitted on the rest and scored by its skill (MAE over the better reference
+/// predictor) averaged over @p horizons and both outputs; the best is refitted on the whole
+/// training part. The held-out part is never looked at.
+struct ModelSelection {
+    bool enabled = true;
+    std::vector<int> lags{16, 32, 60};
+    std::vector<double> ridge{1e-3};
+    bool tryWithoutProjection = true; ///< also the variant without P⊥ (Eq. 27)
+    std::vector<int> horizons{1, 5, 15, 30, 60, 120};
+    double validationFraction = 0.25;
+    Status validate() const;
+};
+
+/// @brief One candidate of the selection with its validation score.
+struct SelectionCandidate {
+    int lags = 0;
+    double ridge = 0;
+    bool orthogonalProjection = true;
+    double validationSkill = 0; ///< mean skill over horizons and outputs (< 1 beats the references)
+    bool chosen = false;
+};
+
 /// @brief What `drytwin train` produced.
 struct TrainingResult {
     residual::ResidualModel pgrlCc;
     residual::ResidualModel extInput;
     baselines::LstmBaseline lstm;
+    std::vector<SelectionCandidate> selection; ///< empty when the options were taken as given
     double elapsedSeconds = 0;
     Ending ending;
 };
@@ -45,7 +70,7 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
                                              const HybridModel& model,
                                              const residual::ResidualOptions& options = {},
                                              const baselines::LstmOptions& lstmOptions = {},
-                                             const Progress& progress = {});
+                                             const Progress& progress = {}, const ModelSelection& selection = {});
 
 /// @brief Puts the trained models into @p model, replacing any it held.
 void storeResidualModels(HybridModel& model, TrainingResult&& trained);

@@ -109,6 +109,60 @@ Eigen::MatrixXd clipSingularValues(const Eigen::MatrixXd& m, double alpha) {
     return m * (v * factor.asDiagonal() * v.transpose());
 }
 
+/// The same clipping inside the ADMM loop, where M changes little from one iteration to the next
+/// and only a few singular values exceed α: a block power (subspace) iteration on MᵀM, warm
+/// started from the last iteration's right singular vectors, finds them at O(n² k) instead of
+/// O(n³). When the block is too small to hold every singular value above α, it grows; when it
+/// does not settle it falls back to the exact clip. The final iterate is always clipped exactly.
+class FastClipper {
+public:
+    explicit FastClipper(Eigen::Index n) : m_n(n) {}
+
+    Eigen::MatrixXd clip(const Eigen::MatrixXd& m, double alpha) {
+        const Eigen::Index k = std::min<Eigen::Index>(m_n, m_block);
+        if (m_basis.cols() != k) {
+            m_basis = Eigen::MatrixXd::Identity(m_n, k);
+        }
+        Eigen::MatrixXd q = m_basis;
+        Eigen::VectorXd sigma2;
+        Eigen::MatrixXd v;
+        for (int it = 0; it < 6; ++it) {
+            q = Eigen::HouseholderQR<Eigen::MatrixXd>(m.transpose() * (m * q)).householderQ() *
+                Eigen::MatrixXd::Identity(m_n, k);
+            // Rayleigh–Ritz on the block.
+            const Eigen::MatrixXd mq = m * q;
+            const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(mq.transpose() * mq);
+            sigma2 = es.eigenvalues();
+            v = q * es.eigenvectors();
+            const Eigen::MatrixXd resid = m.transpose() * (m * v) - v * sigma2.asDiagonal();
+            if (resid.norm() < 1e-10 * std::max(1.0, sigma2.maxCoeff())) {
+                break;
+            }
+        }
+        m_basis = v;
+        // The smallest Ritz value must be below α², or the block may miss one above it.
+        if (sigma2.minCoeff() > alpha * alpha && k < m_n) {
+            m_block = std::min<Eigen::Index>(m_n, 2 * m_block);
+            m_basis.resize(0, 0);
+            return clipSingularValues(m, alpha);
+        }
+        Eigen::MatrixXd out = m;
+        for (Eigen::Index i = 0; i < sigma2.size(); ++i) {
+            if (sigma2(i) > alpha * alpha) {
+                // M − (1 − α/σ) M v vᵀ scales the singular value σ of direction v to α.
+                const Eigen::VectorXd vi = v.col(i);
+                out -= (1.0 - alpha / std::sqrt(sigma2(i))) * (m * vi) * vi.transpose();
+            }
+        }
+        return out;
+    }
+
+private:
+    Eigen::Index m_n;
+    Eigen::Index m_block = 8;
+    Eigen::MatrixXd m_basis;
+};
+
 } // namespace
 
 ConstrainedFit fitUnderStabilityConstraint(const RidgeNormalEquations& prob, const Eigen::MatrixXd& thetaStart,
@@ -154,6 +208,7 @@ ConstrainedFit fitUnderStabilityConstraint(const RidgeNormalEquations& prob, con
         Eigen::MatrixXd z = thetaT;
         z.leftCols(nx) = clipSingularValues(z.leftCols(nx), alphaFit);
         Eigen::MatrixXd dual = Eigen::MatrixXd::Zero(nx, np);
+        FastClipper clipper(nx);
         bool converged = false;
         int it = 0;
         for (; it < maxAdmm; ++it) {
@@ -168,7 +223,7 @@ ConstrainedFit fitUnderStabilityConstraint(const RidgeNormalEquations& prob, con
             // Z-step: project onto {‖Ã‖₂ ≤ α} (B̃, Ẽ unconstrained).
             const Eigen::MatrixXd zOld = z;
             z = thetaT + dual;
-            z.leftCols(nx) = clipSingularValues(z.leftCols(nx), alphaFit);
+            z.leftCols(nx) = clipper.clip(z.leftCols(nx), alphaFit);
             dual += thetaT - z;
             const double primal = (thetaT - z).norm();
             const double dualRes = rho * (z - zOld).norm();
@@ -190,7 +245,8 @@ ConstrainedFit fitUnderStabilityConstraint(const RidgeNormalEquations& prob, con
         best.admmIterations += it;
         best.outerIterations = outer + 1;
         best.converged = converged;
-        // Back to the original coordinates from the feasible iterate Z.
+        // Back to the original coordinates from the iterate Z, clipped exactly (feasible).
+        z.leftCols(nx) = clipSingularValues(z.leftCols(nx), alphaFit);
         Eigen::MatrixXd theta = ltInv * z;
         theta.leftCols(nx) = ltInv * z.leftCols(nx) * lt;
         const double loss = prob.loss(theta);

@@ -51,8 +51,8 @@ struct ConstrainedFit {
 /// least-squares objective in A jointly, and an SDP of this size (n_x ≈ 100, so ~10⁴ variables)
 /// would be far slower than the 5 s training budget.
 ConstrainedFit fitUnderStabilityConstraint(const RidgeNormalEquations& problem, const Eigen::MatrixXd& thetaStart,
-                                           const Eigen::MatrixXd& pStart, double alpha, int maxOuter = 4,
-                                           int maxAdmm = 300);
+                                           const Eigen::MatrixXd& pStart, double alpha, int maxOuter = 3,
+                                           int maxAdmm = 250);
 
 /// @brief Solves the scaled discrete Lyapunov equation (A/α)ᵀP(A/α) − P = −I by the doubling
 /// algorithm (exact for ρ(A) < α; then AᵀPA − α²P = −α²I).

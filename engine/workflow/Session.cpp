@@ -58,6 +58,9 @@ Status TrainOptions::validate() const {
     if (auto st = residual.validate(); !st) {
         return invalidOption(st.error().place, st.error().reason);
     }
+    if (auto st = selection.validate(); !st) {
+        return st;
+    }
     return lstm.validate();
 }
 
@@ -278,11 +281,13 @@ Expected<TrainResult> Session::train(const TrainOptions& options, const Progress
     if (auto st = ready(options, "train"); !st) {
         return st.error();
     }
-    auto trained = hybrid::trainResidualModels(m_si, m_model, options.residual, options.lstm, progress);
+    auto trained =
+        hybrid::trainResidualModels(m_si, m_model, options.residual, options.lstm, progress, options.selection);
     if (!trained) {
         return trained.error();
     }
     TrainResult result;
+    result.selection = trained->selection;
     result.onDefaultParameters = !m_model.calibration.has_value();
     result.ending = trained->ending;
     hybrid::storeResidualModels(m_model, std::move(*trained));
@@ -348,7 +353,10 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
             if (!sims) {
                 return sims.error();
             }
-            auto trained = residual::ResidualModel::train(hybrid::splitViews(m_si, *sims, false), {});
+            // The settings the session's PGRL-CC was trained with (chosen by validation there).
+            const residual::ResidualOptions settings = m_model.pgrlCc ? m_model.pgrlCc->options()
+                                                                      : residual::ResidualOptions{};
+            auto trained = residual::ResidualModel::train(hybrid::splitViews(m_si, *sims, false), settings);
             if (!trained) {
                 return trained.error();
             }

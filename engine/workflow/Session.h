@@ -91,6 +91,7 @@ struct CalibrateResult {
 struct TrainOptions {
     residual::ResidualOptions residual;
     baselines::LstmOptions lstm;
+    hybrid::ModelSelection selection; ///< settings chosen inside the training part (off: as given)
     Status validate() const;
 };
 
@@ -99,6 +100,7 @@ struct TrainResult {
     std::shared_ptr<const residual::ResidualModel> extInput;
     std::shared_ptr<const baselines::LstmBaseline> lstm;
     bool onDefaultParameters = false; ///< the model held no calibration
+    std::vector<hybrid::SelectionCandidate> selection;
     Ending ending;
 };
 

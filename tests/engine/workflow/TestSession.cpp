@@ -6,6 +6,7 @@
 #include "workflow/Session.h"
 
 #include <QTemporaryDir>
+#include <algorithm>
 #include <QtTest>
 #include <cmath>
 #include <filesystem>
@@ -30,6 +31,7 @@ workflow::TrainOptions quickTraining() {
     workflow::TrainOptions t;
     t.lstm.epochs = 2;
     t.lstm.hidden = 8;
+    t.selection.lags = {4, 8}; // a small grid: 4 candidates with and without P⊥
     return t;
 }
 
@@ -136,6 +138,22 @@ private Q_SLOTS:
         QVERIFY(s.model().pgrlCc && s.model().extInput && s.model().lstm);
         QVERIFY(!trained->onDefaultParameters);
         QVERIFY(trained->pgrlCc->stability().certified);
+        // Settings chosen inside the training part: every candidate scored, the best one used.
+        QCOMPARE(trained->selection.size(), std::size_t(4));
+        QCOMPARE(std::count_if(trained->selection.begin(), trained->selection.end(),
+                               [](const auto& c) { return c.chosen; }),
+                 std::ptrdiff_t(1));
+        for (const auto& c : trained->selection) {
+            QVERIFY(std::isfinite(c.validationSkill) && c.validationSkill > 0);
+            if (c.chosen) {
+                QCOMPARE(trained->pgrlCc->options().residualLags, c.lags);
+                QCOMPARE(trained->pgrlCc->options().orthogonalProjection, c.orthogonalProjection);
+                for (const auto& other : trained->selection) {
+                    QVERIFY(c.validationSkill <= other.validationSkill);
+                }
+            }
+        }
+        QCOMPARE(trained->extInput->options().residualLags, trained->pgrlCc->options().residualLags);
 
         auto ev = s.evaluate();
         QVERIFY2(ev.ok(), ev ? "" : ev.error().message().c_str());
@@ -364,7 +382,16 @@ private Q_SLOTS:
         }
         QCOMPARE(stages, QStringList({"inspect", "calibrate", "train", "evaluate", "ablation", "discover",
                                       "report"}));
-        QCOMPARE(r->ablation.rows.size(), std::size_t(7));
+        // Table 3's seven rows and three more: the other energy balance, Eq. 27 literally, the pull.
+        QCOMPARE(r->ablation.rows.size(), std::size_t(10));
+        for (const auto& row : r->ablation.rows) {
+            QVERIFY(std::isfinite(row.maeMoisture) && std::isfinite(row.regimeMaeMoisture) &&
+                    std::isfinite(row.maeMoistureMultiStep));
+            QVERIFY(row.maeMoistureMultiStep > row.maeMoisture); // further ahead is harder
+        }
+        // Physics variants refit h_HDT, k_HDT; learning variants keep the model's.
+        QVERIFY(r->ablation.rows[1].recalibrated && !r->ablation.rows[5].recalibrated);
+        QCOMPARE(r->ablation.rows[5].hHdt, s.model().parameters[Param::h_HDT]);
         // The files hold the session's own numbers.
         auto saved = io::readModelFile(p.outFolder + "/model.json");
         QVERIFY(saved.ok());
