@@ -96,15 +96,27 @@ int runInspect(const CommandOptions& o) {
         }
         std::printf("\n");
     }
+    if (s.impossibleTotal > 0) {
+        std::printf("\nWARNING: %zu physically impossible value(s); no model should see them (fix the file or "
+                    "the column mapping/units):\n",
+                    s.impossibleTotal);
+        for (const auto& w : s.impossible) {
+            std::printf("  %s:%d: %s = %g %s\n", w.file.c_str(), w.line, w.column.c_str(), w.value, w.rule.c_str());
+        }
+        if (s.impossible.size() < s.impossibleTotal) {
+            std::printf("  … and %zu more (the first %zu per column are listed)\n",
+                        s.impossibleTotal - s.impossible.size(), data::DataSetSummary::kMaxListedImpossible);
+        }
+    }
     const auto& c = s.cleaning;
     std::printf(
         "\nCleaning rules (paper §IV.A) keep %zu of %zu rows (%.1f %%). Dropped by rule (a row can fail "
         "several):\n",
         c.kept, c.rows, c.rows ? 100.0 * static_cast<double>(c.kept) / static_cast<double>(c.rows) : 0.0);
     std::printf("  X_hdt_pct < %g %% wb: %zu\n  T_hdt_C < %g °C: %zu\n  feed_kg_h < %g kg/h: %zu\n"
-                "  missing input or output: %zu\n",
+                "  missing input or output: %zu\n  physically impossible value: %zu\n",
                 o.cleaning.minXhdtPct, c.droppedXhdt, o.cleaning.minThdtC, c.droppedThdt,
-                o.cleaning.minFeedKgPerHour, c.droppedFeed, c.droppedMissing);
+                o.cleaning.minFeedKgPerHour, c.droppedFeed, c.droppedMissing, c.droppedImpossible);
     for (const auto& r : c.skippedRules) {
         std::printf("  rule not applied: %s\n", r.c_str());
     }

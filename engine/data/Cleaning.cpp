@@ -54,6 +54,14 @@ CleaningReport clean(const DataSet& data, const CleaningOptions& options) {
                     ++report.droppedMissing;
                 }
             }
+            bool impossible = false;
+            for (const auto& col : b.numeric) {
+                impossible = impossible || impossibleValue(col.id, col.values[r]);
+            }
+            if (impossible) {
+                keep[r] = 0;
+                ++report.droppedImpossible;
+            }
             report.kept += keep[r];
         }
         report.rows += n;

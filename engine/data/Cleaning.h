@@ -27,6 +27,7 @@ struct CleaningReport {
     std::size_t droppedThdt = 0;
     std::size_t droppedFeed = 0;
     std::size_t droppedMissing = 0;
+    std::size_t droppedImpossible = 0; ///< a value outside its column's possible range (possibleRange)
     /// Rules that could not be applied because the column is absent (e.g. "X_hdt_pct not measured").
     std::vector<std::string> skippedRules;
 };

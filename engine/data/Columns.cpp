@@ -1,5 +1,7 @@
 #include "data/Columns.h"
 
+#include <cmath>
+
 #include <limits>
 
 namespace drytwin::data {
@@ -50,6 +52,45 @@ std::optional<Column> columnByName(std::string_view name) {
         }
     }
     return std::nullopt;
+}
+
+bool possibleRange(Column c, double& low, double& high) {
+    switch (c) {
+    case Column::RHAmb:
+    case Column::XIn:
+    case Column::XHdt:
+    case Column::XOut:
+        low = 0;
+        high = 100; // % (relative humidity, wet-basis moisture)
+        return true;
+    case Column::Feed:
+        low = 0;
+        high = 1e6; // kg/h: a pneumatic line never carries 1,000 t/h
+        return true;
+    case Column::AirSpeed:
+        low = 0;
+        high = 100; // m/s
+        return true;
+    case Column::THotSp:
+    case Column::THot:
+        low = -50;
+        high = 600; // °C: hot air of a drying line
+        return true;
+    case Column::TIn:
+    case Column::TAmb:
+    case Column::THdt:
+    case Column::TOut:
+        low = -50;
+        high = 300; // °C: material and ambient
+        return true;
+    default:
+        return false;
+    }
+}
+
+bool impossibleValue(Column c, double v) {
+    double low = 0, high = 0;
+    return !std::isnan(v) && possibleRange(c, low, high) && (v < low || v > high);
 }
 
 } // namespace drytwin::data

@@ -45,6 +45,13 @@ struct ColumnSpec {
 const std::array<ColumnSpec, kColumnCount>& columnSpecs();
 /// @brief Spec of one column.
 const ColumnSpec& spec(Column c);
+/// @brief Physically possible range of a contract column in file units; false for columns
+/// without one (time). A value outside it is impossible: inspect lists it with file:line, the
+/// cleaning drops its row and, for an input, the conversion to SI bridges it like a missing cell.
+bool possibleRange(Column c, double& low, double& high);
+/// @brief True when @p v lies outside the possible range of @p c (NaN is missing, not impossible).
+bool impossibleValue(Column c, double v);
+
 /// @brief Column whose header name is @p name, if it is a contract column.
 std::optional<Column> columnByName(std::string_view name);
 

@@ -1,3 +1,4 @@
+#include <cstdio>
 #include "data/DataSetSummary.h"
 
 #include <algorithm>
@@ -6,6 +7,14 @@
 #include <set>
 
 namespace drytwin::data {
+
+namespace {
+std::string formatNumber(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+} // namespace
 
 DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOptions) {
     DataSetSummary s;
@@ -21,6 +30,7 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
         s.columns.push_back(c);
     }
     std::set<std::string> extras;
+    std::vector<std::size_t> listed(kColumnCount, 0);
     for (std::size_t bi = 0; bi < data.batches.size(); ++bi) {
         const Batch& b = data.batches[bi];
         BatchSummary bs;
@@ -48,6 +58,22 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
             const auto i = static_cast<std::size_t>(col.id);
             auto& cs = s.columns[i];
             cs.present = true;
+            double low = 0, high = 0;
+            if (possibleRange(col.id, low, high)) {
+                for (std::size_t r = 0; r < col.values.size(); ++r) {
+                    const double v = col.values[r];
+                    if (!std::isnan(v) && (v < low || v > high)) {
+                        ++s.impossibleTotal;
+                        if (listed[i] < DataSetSummary::kMaxListedImpossible) {
+                            ++listed[i];
+                            s.impossible.push_back({b.sourcePath.empty() ? b.id : b.sourcePath,
+                                                    r < b.lineOfRow.size() ? b.lineOfRow[r] : 0, col.fileName, v,
+                                                    "must lie in [" + formatNumber(low) + ", " +
+                                                        formatNumber(high) + "] " + cs.unit});
+                        }
+                    }
+                }
+            }
             for (double v : col.values) {
                 if (std::isnan(v)) {
                     ++cs.missing;

@@ -32,6 +32,16 @@ struct BatchSummary {
     std::size_t droppedByCleaning = 0;
 };
 
+/// @brief A value no drying line can produce (RH outside 0–100 %, negative feed, a moisture
+/// outside 0–100 %, a temperature outside the line's range), found before any model sees it.
+struct ImpossibleValue {
+    std::string file; ///< path of the batch file (or its id when read from memory)
+    int line = 0;     ///< 1-based line in the file
+    std::string column;
+    double value = 0;
+    std::string rule; ///< e.g. "must lie in [0, 100] %"
+};
+
 /// @brief What a user needs to trust a data set (drytwin inspect, the GUI's data panel).
 struct DataSetSummary {
     std::vector<BatchSummary> batches;
@@ -40,6 +50,10 @@ struct DataSetSummary {
     std::size_t rows = 0;
     std::size_t missing = 0;
     CleaningReport cleaning;
+    /// The first kMaxListedImpossible impossible values per column, in file order …
+    std::vector<ImpossibleValue> impossible;
+    std::size_t impossibleTotal = 0; ///< … and how many there are in all
+    static constexpr std::size_t kMaxListedImpossible = 20;
 };
 
 /// @brief Summarises a loaded data set and what the cleaning rules would drop.

@@ -62,6 +62,11 @@ std::vector<SiBatch> toSi(const DataSet& data, const CleaningReport& cleaning) {
         };
         auto input = [&](Column c, auto convert) {
             std::vector<double> v = column(c);
+            for (auto& x : v) {
+                if (impossibleValue(c, x)) {
+                    x = nan; // never simulated: bridged like a missing cell, its row masked
+                }
+            }
             const auto filled = bridgeGaps(v);
             for (std::size_t r = 0; r < n; ++r) {
                 if (filled[r]) {
@@ -74,7 +79,7 @@ std::vector<SiBatch> toSi(const DataSet& data, const CleaningReport& cleaning) {
         auto output = [&](Column c, auto convert) {
             std::vector<double> v = column(c);
             for (auto& x : v) {
-                x = std::isnan(x) ? nan : convert(x);
+                x = std::isnan(x) || impossibleValue(c, x) ? nan : convert(x);
             }
             return v;
         };

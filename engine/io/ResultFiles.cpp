@@ -153,7 +153,13 @@ std::string inspectJson(const data::DataSetSummary& s) {
                      {"dropped_x_hdt", c.droppedXhdt},
                      {"dropped_t_hdt", c.droppedThdt},
                      {"dropped_feed", c.droppedFeed},
-                     {"dropped_missing", c.droppedMissing}};
+                     {"dropped_missing", c.droppedMissing},
+                     {"dropped_impossible", c.droppedImpossible}};
+    j["impossible_values"] = {{"total", s.impossibleTotal}, {"listed", json::array()}};
+    for (const auto& w : s.impossible) {
+        j["impossible_values"]["listed"].push_back(
+            {{"file", w.file}, {"line", w.line}, {"column", w.column}, {"value", w.value}, {"rule", w.rule}});
+    }
     return j.dump(2) + "\n";
 }
 

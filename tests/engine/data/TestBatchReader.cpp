@@ -2,6 +2,7 @@
 #include "data/BatchReader.h"
 #include "data/BatchWriter.h"
 #include "data/Cleaning.h"
+#include "data/DataSetSummary.h"
 #include "data/SiBatch.h"
 
 #include <QTemporaryDir>
@@ -297,6 +298,44 @@ private Q_SLOTS:
         CleaningOptions invalid;
         invalid.minXhdtPct = 120;
         QVERIFY(!invalid.validate().ok());
+    }
+
+    void impossibleValuesAreListedDroppedAndNeverSimulated() {
+        // Line 3 is the header; data rows are lines 4 … 9. RH 130 % on line 5, feed −50 kg/h on
+        // line 7, an outlet moisture of 104 % wb on line 8.
+        std::string text = "# batch: B09\n# line: 2\n" + std::string(kHeader) + "\n";
+        for (int i = 0; i < 6; ++i) {
+            std::string r = row(i, i == 4 ? 104.0 : 12.8, i == 3 ? -50.0 : 6200);
+            if (i == 1) {
+                r.replace(r.find(",24,55,"), 7, ",24,130,");
+            }
+            text += r + "\n";
+        }
+        QTemporaryDir dir;
+        writeText(dir.filePath("B09.csv"), text);
+        const auto loaded = loadDataSet(dir.path().toStdString());
+        QVERIFY(loaded.ok());
+        const DataSet* ds = &loaded.dataSet;
+        const auto summary = summarize(*ds);
+        QCOMPARE(summary.impossibleTotal, std::size_t(3));
+        QCOMPARE(summary.impossible.size(), std::size_t(3));
+        bool rh = false, feed = false, xOut = false;
+        for (const auto& w : summary.impossible) {
+            QVERIFY(QString::fromStdString(w.file).endsWith("B09.csv"));
+            rh = rh || (w.column == "RH_amb_pct" && w.line == 5 && w.value == 130);
+            feed = feed || (w.column == "feed_kg_h" && w.line == 7 && w.value == -50);
+            xOut = xOut || (w.column == "X_out_pct" && w.line == 8 && w.value == 104);
+        }
+        QVERIFY(rh && feed && xOut);
+        const auto c = clean(*ds);
+        QCOMPARE(c.droppedImpossible, std::size_t(3));
+        QCOMPARE(c.keep[0][1], std::uint8_t(0));
+        QCOMPARE(c.keep[0][0], std::uint8_t(1));
+        // The simulation never sees them: inputs bridged from the neighbours, the output missing.
+        const auto si = toSi(*ds, c);
+        QCOMPARE(si[0].rhAmb[1], 0.55);
+        QVERIFY(si[0].feedKgPerS[3] > 0);
+        QVERIFY(std::isnan(si[0].xOutDb[4]));
     }
 
     void siConversionAndSplits() {
