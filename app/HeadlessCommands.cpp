@@ -284,6 +284,14 @@ void printCalibration(const workflow::CalibrateResult& result) {
         "loss %.5g -> %.5g; MAE X_out %.4f -> %.4f %% wb; MAE T_out %.3f -> %.3f °C (calibration rows)\n",
         r.before.loss, r.after.loss, r.before.maeXOutPct, r.after.maeXOutPct, r.before.maeTOutC,
         r.after.maeTOutC);
+    if (!r.intervalMethod.empty()) {
+        std::printf("intervals: %s; the Fisher intervals (independent rows assumed) would be", r.intervalMethod.c_str());
+        for (const auto& e : r.estimates) {
+            std::printf(" %s %.2gx", std::string(properties::info(e.param).symbol).c_str(),
+                        e.standardErrorFisher / e.standardError);
+        }
+        std::printf(" as wide\n");
+    }
     std::printf("ended: %s (%s)\n", terminationName(result.ending.termination),
                 result.ending.message.c_str());
 }

@@ -1,4 +1,5 @@
 #include "calibration/Calibration.h"
+#include "diagnostics/LongRunVariance.h"
 
 #include "common/Units.h"
 #include <Eigen/Dense>
@@ -164,6 +165,54 @@ Eigen::MatrixXd fisherInformation(const Residuals& r, std::size_t np) {
     add(r.xHdt, r.dXHdt);
     add(r.tHdt, r.dTHdt);
     return f;
+}
+
+/// The "meat" of the sandwich covariance: the long-run (Newey–West, Bartlett kernel) covariance
+/// of the per-row scores s_i = Σ_o (∂ŷ_o/∂θ) r_o,i / σ_o², summed over the output groups
+/// (X_out with T_out, which share rows; X_hdt; T_hdt). Cross-covariances between groups are
+/// left out (they are measured on different row sets). The bandwidth is where the X_out
+/// residual's autocorrelation falls below 0.05 (its own memory), at least the Newey–West rule.
+Eigen::MatrixXd hacScoreCovariance(const Residuals& r, std::size_t np, int& bandwidth) {
+    const auto npi = static_cast<Eigen::Index>(np);
+    Eigen::MatrixXd meat = Eigen::MatrixXd::Zero(npi, npi);
+    const int ruleOfThumb = static_cast<int>(std::floor(4.0 * std::pow(double(r.xOut.size()) / 100.0, 2.0 / 9.0)));
+    bandwidth = std::max(ruleOfThumb, diagnostics::bandwidthFromAutocorrelation(
+                                          r.xOut, 0.05, std::max(1, static_cast<int>(r.xOut.size()) / 3)));
+    const auto addGroup = [&](const std::vector<const std::vector<double>*>& res,
+                              const std::vector<const std::vector<std::vector<double>>*>& d) {
+        const std::size_t n = res[0]->size();
+        if (n < np + 2) {
+            return;
+        }
+        Eigen::MatrixXd scores = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), npi);
+        for (std::size_t o = 0; o < res.size(); ++o) {
+            if (res[o]->size() != n || (*d[o]).empty() || (*d[o])[0].size() != n) {
+                continue;
+            }
+            const double var = std::max(meanSquare(*res[o]), 1e-12);
+            for (std::size_t i = 0; i < n; ++i) {
+                for (std::size_t a = 0; a < np; ++a) {
+                    scores(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(a)) +=
+                        (*d[o])[a][i] * (*res[o])[i] / var;
+                }
+            }
+        }
+        meat += scores.transpose() * scores;
+        for (int l = 1; l <= bandwidth && static_cast<std::size_t>(l) < n; ++l) {
+            const double w = 1.0 - double(l) / double(bandwidth + 1);
+            const auto m = static_cast<Eigen::Index>(n) - l;
+            const Eigen::MatrixXd gamma = scores.bottomRows(m).transpose() * scores.topRows(m);
+            meat += w * (gamma + gamma.transpose());
+        }
+    };
+    addGroup({&r.xOut, &r.tOut}, {&r.dXOut, &r.dTOut});
+    if (!r.xHdt.empty()) {
+        addGroup({&r.xHdt}, {&r.dXHdt});
+    }
+    if (!r.tHdt.empty()) {
+        addGroup({&r.tHdt}, {&r.dTHdt});
+    }
+    return meat;
 }
 
 } // namespace
@@ -395,15 +444,26 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
     Eigen::MatrixXd cov =
         Eigen::MatrixXd::Constant(static_cast<Eigen::Index>(np), static_cast<Eigen::Index>(np),
                                   std::numeric_limits<double>::quiet_NaN());
+    Eigen::MatrixXd fisherCov = cov;
     Eigen::FullPivLU<Eigen::MatrixXd> lu(fisher);
     if (lu.isInvertible()) {
-        cov = lu.inverse();
+        // The residuals are strongly autocorrelated (slow drift, transport delay), so the Fisher
+        // covariance F⁻¹, which assumes independent rows, is far too narrow. The sandwich
+        // F⁻¹ M F⁻¹ with M the HAC covariance of the scores is consistent either way.
+        fisherCov = lu.inverse();
+        int bandwidth = 0;
+        const Eigen::MatrixXd meat = hacScoreCovariance(at, np, bandwidth);
+        cov = fisherCov * meat * fisherCov;
+        result.intervalMethod = "sandwich F^-1 M F^-1, M Newey-West (Bartlett) over " + std::to_string(bandwidth) +
+                                " lags of the calibration rows";
     }
     for (std::size_t i = 0; i < np; ++i) {
         Estimate e;
         e.param = coords[i].param;
         e.value = result.parameters[e.param];
         const double var = cov(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+        const double varFisher = fisherCov(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+        e.standardErrorFisher = varFisher > 0 ? std::sqrt(varFisher) : std::nan("");
         e.standardError = var > 0 ? std::sqrt(var) : std::nan("");
         e.ci95Low = e.value - 1.96 * e.standardError;
         e.ci95High = e.value + 1.96 * e.standardError;

@@ -54,7 +54,8 @@ struct IterationRecord {
 struct Estimate {
     properties::Param param;
     double value = 0;
-    double standardError = 0; ///< from the sensitivity-based Fisher information
+    double standardError = 0; ///< sandwich (HAC) standard error; the interval below uses it
+    double standardErrorFisher = 0; ///< F⁻¹ alone (independent rows assumed), for comparison
     double ci95Low = 0;
     double ci95High = 0;
     bool atBound = false; ///< within 0.1 % of the search range of a bound: the fit wants to go further
@@ -78,6 +79,7 @@ struct CalibrationResult {
     int failedEvaluations = 0;
     std::size_t rowsUsed = 0;
     std::string algorithm;
+    std::string intervalMethod; ///< how the intervals were made (empty: none could be)
     double elapsedSeconds = 0;
     Ending ending; ///< converged, budget used, or stopped by the user with the best so far
 };

@@ -28,8 +28,10 @@ struct CalibrationRecord {
         double ci95Low = 0;
         double ci95High = 0;
         bool atBound = false;
+        double standardErrorFisher = 0; ///< F⁻¹ alone, for comparison with the sandwich interval
     };
     std::vector<Estimate> estimates;
+    std::string intervalMethod;
     double lossBefore = 0;
     double lossAfter = 0;
     int evaluations = 0;

@@ -56,7 +56,11 @@ std::string formatModelFile(const HybridModel& m) {
         for (const auto& e : m.calibration->estimates) {
             c["estimates"][e.symbol] = {
                 {"value", e.value}, {"ci95", {e.ci95Low, e.ci95High}}, {"at_bound", e.atBound}};
+            if (std::isfinite(e.standardErrorFisher)) {
+                c["estimates"][e.symbol]["standard_error_fisher"] = e.standardErrorFisher;
+            }
         }
+        c["interval_method"] = m.calibration->intervalMethod;
         c["loss_before"] = m.calibration->lossBefore;
         c["loss_after"] = m.calibration->lossAfter;
         c["evaluations"] = m.calibration->evaluations;
@@ -181,6 +185,9 @@ Expected<HybridModel> parseModelJson(const json& j, const std::string& name) {
     if (j.contains("calibration")) {
         const json& c = j["calibration"];
         m.calibration.emplace();
+        if (c.contains("interval_method") && c["interval_method"].is_string()) {
+            m.calibration->intervalMethod = c["interval_method"].get<std::string>();
+        }
         if (c.contains("estimates")) {
             for (const auto& [symbol, e] : c["estimates"].items()) {
                 hybrid::CalibrationRecord::Estimate est;
@@ -195,6 +202,9 @@ Expected<HybridModel> parseModelJson(const json& j, const std::string& name) {
                     est.ci95High = bound(e["ci95"][1]);
                 }
                 est.atBound = e.value("at_bound", false);
+                est.standardErrorFisher = e.contains("standard_error_fisher") && e["standard_error_fisher"].is_number()
+                                              ? e["standard_error_fisher"].get<double>()
+                                              : std::nan("");
                 m.calibration->estimates.push_back(est);
             }
         }

@@ -255,8 +255,10 @@ Expected<CalibrateResult> Session::calibrate(const CalibrateOptions& options, co
     hybrid::CalibrationRecord rec;
     for (const auto& e : r->estimates) {
         rec.estimates.push_back(
-            {std::string(properties::info(e.param).symbol), e.value, e.ci95Low, e.ci95High, e.atBound});
+            {std::string(properties::info(e.param).symbol), e.value, e.ci95Low, e.ci95High, e.atBound,
+             e.standardErrorFisher});
     }
+    rec.intervalMethod = r->intervalMethod;
     rec.lossBefore = r->before.loss;
     rec.lossAfter = r->after.loss;
     rec.evaluations = r->evaluations;

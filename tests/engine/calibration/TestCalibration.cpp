@@ -50,14 +50,35 @@ private Q_SLOTS:
                                     .arg(e.value)
                                     .arg(t)));
             QVERIFY(e.ci95Low < e.value && e.value < e.ci95High);
+            QVERIFY(std::isfinite(e.standardErrorFisher) && e.standardErrorFisher > 0);
             QVERIFY(!e.atBound);
         }
+        QVERIFY(QString::fromStdString(r->intervalMethod).startsWith("sandwich"));
         QVERIFY(r->after.loss < 0.05 * r->before.loss);
         QVERIFY(r->after.maeXOutPct < 0.03); // noise level: meter noise 0.02 % wb
         QVERIFY(!r->history.empty());
         QCOMPARE(int(r->history.size()), r->evaluations);
         QVERIFY(r->history.back().bestLoss <= r->history.front().loss);
         QVERIFY(r->evaluations <= o.maxEvaluations);
+    }
+
+    void sandwichIntervalsWidenWithAutocorrelatedResiduals() {
+        // Unmeasured drift makes the residuals slow: independent-row (Fisher) intervals are then
+        // far too narrow, and the sandwich with a HAC meat must be several times wider.
+        auto o = noMechanisms();
+        o.unmeasuredDrift = true;
+        const auto drifting = plantData(o);
+        calibration::CalibrationOptions co;
+        co.globalSearch = false;
+        co.maxEvaluations = 80;
+        auto r = calibration::calibrate(drifting, plant::PlantOptions::defaultTruth(), co);
+        QVERIFY2(r.ok(), r.ok() ? "" : r.error().message().c_str());
+        for (const auto& e : r->estimates) {
+            qInfo("%s: sandwich SE %.4g, Fisher SE %.4g", properties::info(e.param).symbol.data(), e.standardError,
+                  e.standardErrorFisher);
+            QVERIFY(e.standardError > 2 * e.standardErrorFisher);
+            QCOMPARE(e.ci95High - e.ci95Low, 2 * 1.96 * e.standardError);
+        }
     }
 
     void sameSeedSameResult() {
