@@ -241,6 +241,9 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
         m.spectralRadiusAfter = c.spectralRadiusAfter;
         m.alpha = c.alpha;
         m.certificateMaxEig = c.certificateMaxEig;
+        m.choleskyPasses = c.choleskyPasses;
+        m.pConditionNumber = c.pConditionNumber;
+        m.stabilityComparison = rm->stabilityComparison();
         out.models.push_back(std::move(m));
 
         ModelMetrics free;

@@ -47,6 +47,9 @@ struct ModelMetrics {
     std::vector<double> skillMoistureByHorizon, skillTemperatureByHorizon;
     bool hasStability = false;
     double spectralRadiusBefore = 0, spectralRadiusAfter = 0, alpha = 0, certificateMaxEig = 0;
+    bool choleskyPasses = false;   ///< α²P − AᵀPA ≻ 0 by Cholesky, checked apart from the solver
+    double pConditionNumber = 0;
+    residual::StabilityComparison stabilityComparison; ///< training loss: unconstrained / pulled / Eq. 30
 };
 
 /// @brief Held-out evaluation of every model a model file holds.

@@ -70,6 +70,10 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
                  num(e["ci95"][1], "%.5g") + "] | " + unit + " | " +
                  (e.value("at_bound", false) ? "yes" : "no") + " |\n";
         }
+        if (c.contains("interval_method") && c["interval_method"].is_string()) {
+            r += "\nIntervals: " + c["interval_method"].get<std::string>() +
+                 " (the residuals are autocorrelated; Fisher intervals would assume independent rows).\n";
+        }
         r += "\nLoss " + num(c["loss_before"]) + " → " + num(c["loss_after"]) + " in " +
              std::to_string(c.value("evaluations", 0)) + " evaluations (seed " +
              std::to_string(c.value("seed", 0)) + ").\n";
@@ -125,7 +129,18 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
         r += "\nPGRL-CC stability: spectral radius of A " + num(s["spectral_radius_before"]) +
              " before and " + num(s["spectral_radius_after"]) +
              " after the constraint, α = " + num(s["alpha"]) +
-             ", largest eigenvalue of AᵀPA − α²P = " + num(s["certificate_max_eig"]) + " (≤ 0 certifies).\n";
+             ", largest eigenvalue of AᵀPA − α²P = " + num(s["certificate_max_eig"]) + " (≤ 0 certifies)" +
+             (s.value("cholesky_passes", false) ? "; Cholesky of α²P − AᵀPA passes" : "; Cholesky of α²P − AᵀPA FAILS") +
+             ", cond(P) = " + num(s.value("p_condition_number", json())) + ".\n";
+        if (s.contains("training_loss")) {
+            const auto& l = s["training_loss"];
+            const auto& rad = s["spectral_radius"];
+            r += "\nEq. 30 side by side (training loss per unit weight, spectral radius): unconstrained " +
+                 num(l["unconstrained"], "%.6g") + " (" + num(rad["unconstrained"], "%.5f") + "), eigenvalues pulled " +
+                 num(l["eigenvalue_pull"], "%.6g") + " (" + num(rad["eigenvalue_pull"], "%.5f") +
+                 "), constrained as Eq. 30 states " + num(l["eq30_constrained"], "%.6g") + " (" +
+                 num(rad["eq30_constrained"], "%.5f") + "). Multi-step errors of each: the ablation's 30-step column.\n";
+        }
     }
     r += "\n## Ablation (paper Table 3 and three more rows)\n\nChronological held-out 30 %: one step and " +
          std::to_string(ablation->value("multi_step_horizon", 30)) +

@@ -48,7 +48,16 @@ std::string evaluationJson(const evaluation::EvaluationResult& r) {
             j["models"][m.name]["stability"] = {{"spectral_radius_before", m.spectralRadiusBefore},
                                                 {"spectral_radius_after", m.spectralRadiusAfter},
                                                 {"alpha", m.alpha},
-                                                {"certificate_max_eig", m.certificateMaxEig}};
+                                                {"certificate_max_eig", m.certificateMaxEig},
+                                                {"cholesky_passes", m.choleskyPasses},
+                                                {"p_condition_number", m.pConditionNumber}};
+            const auto& c = m.stabilityComparison;
+            j["models"][m.name]["stability"]["training_loss"] = {{"unconstrained", c.lossUnconstrained},
+                                                                 {"eigenvalue_pull", c.lossEigenvaluePull},
+                                                                 {"eq30_constrained", c.lossConstrained}};
+            j["models"][m.name]["stability"]["spectral_radius"] = {{"unconstrained", c.radiusUnconstrained},
+                                                                   {"eigenvalue_pull", c.radiusEigenvaluePull},
+                                                                   {"eq30_constrained", c.radiusConstrained}};
         }
         multi["models"][m.name] = {
             {"moisture", metrics(m.moistureMultiStep)},

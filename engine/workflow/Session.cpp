@@ -454,7 +454,6 @@ Expected<PipelineResult> Session::pipeline(const PipelineOptions& options, const
         return failWith(st.error());
     }
     finishStage("calibrate", {in("model-calibrated.json")});
-    const hybrid::HybridModel calibratedModel = m_model;
 
     auto trained = train(options.train, progress);
     if (!trained) {
@@ -479,9 +478,9 @@ Expected<PipelineResult> Session::pipeline(const PipelineOptions& options, const
     }
     finishStage("evaluate", {in("evaluate.json"), in("diagnostics.json")});
 
-    // The ablation trains its own variants on the calibrated physics model alone.
+    // The ablation trains its own variants on the calibrated physics, from the settings the
+    // training chose (it reads them from the trained PGRL-CC).
     const hybrid::HybridModel trainedModel = m_model;
-    m_model = calibratedModel;
     auto ablated = ablation(progress);
     m_model = trainedModel;
     if (!ablated) {
@@ -493,9 +492,9 @@ Expected<PipelineResult> Session::pipeline(const PipelineOptions& options, const
     }
     finishStage("ablation", {in("ablation.json")});
 
-    // Discovery starts from the calibrated physics model; its extended model is written beside
-    // the others and does not replace the session's.
-    m_model = calibratedModel;
+    // Discovery starts from the calibrated physics model (the trained one has the same physics;
+    // its PGRL-CC settings are reused when discovery retrains on the extended model); the
+    // extended model is written beside the others and does not replace the session's.
     auto discovered = discover(options.discover, progress);
     m_model = trainedModel;
     if (!discovered) {
