@@ -54,6 +54,30 @@ struct LstmBaseline::Impl {
         }
         return t;
     }
+
+    /// Standardised features of every row of a batch for prediction; a missing cell enters as
+    /// its training mean.
+    torch::Tensor batchFeatures(const data::SiBatch& b) const {
+        return torch::nan_to_num(features(b, 0, b.rows()).to(torch::kFloat32), 0.0);
+    }
+
+    /// The cell's state (h, c) after each row, from one stateful pass over the batch.
+    void statesAfterEachRow(const torch::Tensor& f, std::vector<torch::Tensor>& hs,
+                            std::vector<torch::Tensor>& cs) const {
+        const auto n = static_cast<std::size_t>(f.size(1));
+        hs.assign(n, {});
+        cs.assign(n, {});
+        torch::Tensor hState = torch::zeros({1, 1, options.hidden});
+        torch::Tensor cState = torch::zeros({1, 1, options.hidden});
+        for (std::size_t k = 0; k < n; ++k) {
+            auto r = net->lstm->forward(f.slice(1, static_cast<long>(k), static_cast<long>(k) + 1),
+                                        std::make_tuple(hState, cState));
+            hState = std::get<0>(std::get<1>(r));
+            cState = std::get<1>(std::get<1>(r));
+            hs[k] = hState;
+            cs[k] = cState;
+        }
+    }
 };
 
 LstmBaseline::LstmBaseline() : m_impl(std::make_unique<Impl>()) {}
@@ -167,32 +191,12 @@ residual::HybridPrediction LstmBaseline::predictAhead(const residual::BatchView&
     torch::NoGradGuard noGrad;
     const auto& im = *m_impl;
     const std::size_t n = v.batch->rows();
-    residual::HybridPrediction out;
     const std::size_t count = v.rows.size();
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    out.xOutPct.assign(count, nan);
-    out.tOutC.assign(count, nan);
-    out.residualXPct.assign(count, nan);
-    out.residualTC.assign(count, nan);
-    // Features of the whole batch with measured data; the state after each row comes from a
-    // stateful pass below.
-    torch::Tensor f = im.features(*v.batch, 0, n).to(torch::kFloat32);
-    f = torch::nan_to_num(f, 0.0); // a missing cell enters as its training mean
+    residual::HybridPrediction out = residual::HybridPrediction::unknown(count);
+    const torch::Tensor f = im.batchFeatures(*v.batch);
     const auto h = static_cast<std::size_t>(std::max(1, horizon));
-    // States (h, c) after each row, stepping the cell once per row.
-    std::vector<torch::Tensor> hs(n), cs(n);
-    {
-        torch::Tensor hState = torch::zeros({1, 1, im.options.hidden});
-        torch::Tensor cState = torch::zeros({1, 1, im.options.hidden});
-        for (std::size_t k = 0; k < n; ++k) {
-            auto r = im.net->lstm->forward(f.slice(1, static_cast<long>(k), static_cast<long>(k) + 1),
-                                           std::make_tuple(hState, cState));
-            hState = std::get<0>(std::get<1>(r));
-            cState = std::get<1>(std::get<1>(r));
-            hs[k] = hState;
-            cs[k] = cState;
-        }
-    }
+    std::vector<torch::Tensor> hs, cs;
+    im.statesAfterEachRow(f, hs, cs);
     // From each origin k = target − h: one-step output, then feed predictions back (batched).
     std::vector<long> origins, targets;
     for (std::size_t i = 0; i < count; ++i) {
@@ -242,14 +246,7 @@ std::vector<residual::HybridPrediction> LstmBaseline::predictHorizons(const resi
     const auto& im = *m_impl;
     const std::size_t n = v.batch->rows();
     const std::size_t count = v.rows.size();
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    std::vector<residual::HybridPrediction> out(horizons.size());
-    for (auto& p : out) {
-        p.xOutPct.assign(count, nan);
-        p.tOutC.assign(count, nan);
-        p.residualXPct.assign(count, nan);
-        p.residualTC.assign(count, nan);
-    }
+    std::vector<residual::HybridPrediction> out(horizons.size(), residual::HybridPrediction::unknown(count));
     std::size_t hMax = 1;
     for (int h : horizons) {
         hMax = std::max(hMax, static_cast<std::size_t>(std::max(1, h)));
@@ -257,22 +254,11 @@ std::vector<residual::HybridPrediction> LstmBaseline::predictHorizons(const resi
     if (count == 0 || n < 2) {
         return out;
     }
-    torch::Tensor f = im.features(*v.batch, 0, n).to(torch::kFloat32);
-    f = torch::nan_to_num(f, 0.0); // a missing cell enters as its training mean
-    // The state after each row, from one stateful pass.
+    const torch::Tensor f = im.batchFeatures(*v.batch);
     torch::Tensor allH, allC;
     {
-        std::vector<torch::Tensor> hs(n), cs(n);
-        torch::Tensor hState = torch::zeros({1, 1, im.options.hidden});
-        torch::Tensor cState = torch::zeros({1, 1, im.options.hidden});
-        for (std::size_t k = 0; k < n; ++k) {
-            auto r = im.net->lstm->forward(f.slice(1, static_cast<long>(k), static_cast<long>(k) + 1),
-                                           std::make_tuple(hState, cState));
-            hState = std::get<0>(std::get<1>(r));
-            cState = std::get<1>(std::get<1>(r));
-            hs[k] = hState;
-            cs[k] = cState;
-        }
+        std::vector<torch::Tensor> hs, cs;
+        im.statesAfterEachRow(f, hs, cs);
         allH = torch::cat(hs, 1);
         allC = torch::cat(cs, 1);
     }

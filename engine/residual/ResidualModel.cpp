@@ -96,6 +96,15 @@ Status ResidualOptions::validate() const {
     return {};
 }
 
+HybridPrediction HybridPrediction::unknown(std::size_t rows) {
+    HybridPrediction p;
+    p.xOutPct.assign(rows, kNaN);
+    p.tOutC.assign(rows, kNaN);
+    p.residualXPct.assign(rows, kNaN);
+    p.residualTC.assign(rows, kNaN);
+    return p;
+}
+
 bool observedResidual(const data::SiBatch& b, const physics::SimulationResult& pbm, std::size_t k, double& ex,
                       double& et) {
     ex = units::dryToWetPct(b.xOutDb[k]) - units::dryToWetPct(pbm.xOutDb[k]);
@@ -508,11 +517,7 @@ HybridPrediction ResidualModel::predictOneStep(const BatchView& v) const {
 HybridPrediction ResidualModel::predictAhead(const BatchView& v, int horizon) const {
     const std::size_t n = v.batch->rows();
     const std::size_t count = v.rows.size();
-    HybridPrediction out;
-    out.xOutPct.assign(count, kNaN);
-    out.tOutC.assign(count, kNaN);
-    out.residualXPct.assign(count, kNaN);
-    out.residualTC.assign(count, kNaN);
+    HybridPrediction out = HybridPrediction::unknown(count);
     const auto h = static_cast<std::size_t>(std::max(1, horizon));
     // Residuals and exogenous inputs of the rows the predictions need, computed once: from the
     // earliest origin's oldest lag to the end of the view.
@@ -554,16 +559,10 @@ HybridPrediction ResidualModel::predictAhead(const BatchView& v, int horizon) co
 std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
                                                              const std::vector<int>& horizons) const {
     const std::size_t count = v.rows.size();
-    std::vector<HybridPrediction> out(horizons.size());
+    std::vector<HybridPrediction> out(horizons.size(), HybridPrediction::unknown(count));
     int hMax = 1;
     for (int h : horizons) {
         hMax = std::max(hMax, h);
-    }
-    for (auto& p : out) {
-        p.xOutPct.assign(count, kNaN);
-        p.tOutC.assign(count, kNaN);
-        p.residualXPct.assign(count, kNaN);
-        p.residualTC.assign(count, kNaN);
     }
     // Which output slot each horizon fills (a horizon may be asked for twice).
     std::vector<std::vector<std::size_t>> slotsOf(static_cast<std::size_t>(hMax) + 1);
@@ -632,11 +631,7 @@ std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
 
 HybridPrediction ResidualModel::predictFreeRun(const BatchView& v) const {
     const std::size_t count = v.rows.size();
-    HybridPrediction out;
-    out.xOutPct.assign(count, kNaN);
-    out.tOutC.assign(count, kNaN);
-    out.residualXPct.assign(count, kNaN);
-    out.residualTC.assign(count, kNaN);
+    HybridPrediction out = HybridPrediction::unknown(count);
     const Eigen::Index lagPart = kOutputs * m_options.residualLags;
     Eigen::VectorXd x;
     bool running = false;

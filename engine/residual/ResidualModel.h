@@ -77,6 +77,8 @@ struct BatchView {
 
 /// @brief Hybrid predictions (Eq. 21) for the rows of a view; NaN where none can be made.
 struct HybridPrediction {
+    /// @brief A prediction of @p rows rows with nothing predicted yet (all NaN).
+    static HybridPrediction unknown(std::size_t rows);
     std::vector<double> xOutPct;
     std::vector<double> tOutC;
     std::vector<double> residualXPct; ///< ê, % wb

@@ -166,6 +166,23 @@ private Q_SLOTS:
         qInfo("largest |cos(residual, base feature)|: e %.3g, P⊥e %.3g", worstRaw, worstTilde);
         QVERIFY(worstTilde < 1e-6);
         QVERIFY(worstRaw > 0.1);
+        // And ẽ equals Eq. 27's P⊥e = (I − Φ_b(Φ_bᵀΦ_b)⁻¹Φ_bᵀ)e formed here from the raw inputs
+        // (the model uses standardised ones: the same span), applied without the N × N matrix.
+        const auto rows = static_cast<Eigen::Index>(eTilde.size());
+        Eigen::MatrixXd phi(rows, 13);
+        for (int c = 0; c < 13; ++c) {
+            phi.col(c) = Eigen::Map<const Eigen::VectorXd>(inputs[c].data(), rows);
+        }
+        // Column scaling keeps the normal equations well conditioned (kelvin next to kg/s).
+        const Eigen::VectorXd colScale = phi.colwise().norm().transpose();
+        phi = phi * colScale.cwiseInverse().asDiagonal();
+        const Eigen::VectorXd e = Eigen::Map<const Eigen::VectorXd>(eRaw.data(), rows);
+        const Eigen::VectorXd expected = e - phi * (phi.transpose() * phi).ldlt().solve(phi.transpose() * e);
+        const Eigen::VectorXd got = Eigen::Map<const Eigen::VectorXd>(eTilde.data(), rows);
+        qInfo("max |ẽ − P⊥e| = %.3g %% wb (max |e| %.3g)", (got - expected).cwiseAbs().maxCoeff(),
+              e.cwiseAbs().maxCoeff());
+        // 1e-5: projectionCoefficients adds a ridge of 1e-10 of the largest Gram diagonal.
+        QVERIFY((got - expected).cwiseAbs().maxCoeff() < 1e-5 * e.cwiseAbs().maxCoeff());
     }
 
     void stabilityConstraintCertifies() {
