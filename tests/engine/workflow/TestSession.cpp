@@ -399,6 +399,13 @@ private Q_SLOTS:
         const auto ev = nlohmann::json::parse(*readWholeFile(p.outFolder + "/evaluate.json"));
         QCOMPARE(ev["models"]["pgrl_cc"]["moisture"]["mae"].get<double>(),
                  r->evaluate.evaluation.models.back().moisture.mae);
+        // The report shows the horizon curve and says where PGRL-CC loses to a reference, if anywhere.
+        const auto report = readWholeFile(p.outFolder + "/report.md");
+        QVERIFY(report.ok());
+        QVERIFY(report->find("Skill for moisture by horizon") != std::string::npos);
+        QVERIFY(report->find("reference predictors in moisture at") != std::string::npos);
+        QVERIFY(report->find("Eq. 30 side by side") != std::string::npos);
+        QVERIFY(report->find("extrapolation") != std::string::npos);
 
         // A cancelled pipeline keeps the model it started with.
         workflow::Session c;
