@@ -97,11 +97,13 @@ int runInspect(const CommandOptions& o) {
         std::printf("\n");
     }
     if (s.impossibleTotal > 0) {
-        std::printf("\nWARNING: %zu physically impossible value(s); no model should see them (fix the file or "
-                    "the column mapping/units):\n",
-                    s.impossibleTotal);
+        std::printf(
+            "\nWARNING: %zu physically impossible value(s); no model should see them (fix the file or "
+            "the column mapping/units):\n",
+            s.impossibleTotal);
         for (const auto& w : s.impossible) {
-            std::printf("  %s:%d: %s = %g %s\n", w.file.c_str(), w.line, w.column.c_str(), w.value, w.rule.c_str());
+            std::printf("  %s:%d: %s = %g %s\n", w.file.c_str(), w.line, w.column.c_str(), w.value,
+                        w.rule.c_str());
         }
         if (s.impossible.size() < s.impossibleTotal) {
             std::printf("  … and %zu more (the first %zu per column are listed)\n",
@@ -285,7 +287,8 @@ void printCalibration(const workflow::CalibrateResult& result) {
         r.before.loss, r.after.loss, r.before.maeXOutPct, r.after.maeXOutPct, r.before.maeTOutC,
         r.after.maeTOutC);
     if (!r.intervalMethod.empty()) {
-        std::printf("intervals: %s; the Fisher intervals (independent rows assumed) would be", r.intervalMethod.c_str());
+        std::printf("intervals: %s; the Fisher intervals (independent rows assumed) would be",
+                    r.intervalMethod.c_str());
         for (const auto& e : r.estimates) {
             std::printf(" %s %.2gx", std::string(properties::info(e.param).symbol).c_str(),
                         e.standardErrorFisher / e.standardError);
@@ -344,26 +347,29 @@ void printTraining(const workflow::TrainResult& t) {
                 t.lstm->trainingSeconds(),
                 t.lstm->lossHistory().empty() ? std::nan("") : t.lstm->lossHistory().back());
     const auto& cmp = t.pgrlCc->stabilityComparison();
-    std::printf("Eq. 30 training loss (per unit weight): unconstrained %.6g (radius %.5f), eigenvalues pulled "
-                "%.6g (%.5f), constrained %.6g (%.5f; %d ADMM iterations); certificate by Cholesky %s, "
-                "cond(P) %.3g\n",
-                cmp.lossUnconstrained, cmp.radiusUnconstrained, cmp.lossEigenvaluePull, cmp.radiusEigenvaluePull,
-                cmp.lossConstrained, cmp.radiusConstrained, cmp.admmIterations,
-                t.pgrlCc->stability().choleskyPasses ? "passes" : "FAILS", t.pgrlCc->stability().pConditionNumber);
+    std::printf(
+        "Eq. 30 training loss (per unit weight): unconstrained %.6g (radius %.5f), eigenvalues pulled "
+        "%.6g (%.5f), constrained %.6g (%.5f; %d ADMM iterations); certificate by Cholesky %s, "
+        "cond(P) %.3g\n",
+        cmp.lossUnconstrained, cmp.radiusUnconstrained, cmp.lossEigenvaluePull, cmp.radiusEigenvaluePull,
+        cmp.lossConstrained, cmp.radiusConstrained, cmp.admmIterations,
+        t.pgrlCc->stability().choleskyPasses ? "passes" : "FAILS", t.pgrlCc->stability().pConditionNumber);
     if (!t.selection.empty()) {
         std::printf("settings chosen by multi-step validation inside the training part (mean skill over "
                     "horizons and outputs; < 1 beats the references):\n");
         for (const auto& c : t.selection) {
             std::printf("  lags %2d, ridge %.0e, P_perp %-3s  skill %.4f%s\n", c.lags, c.ridge,
-                        c.orthogonalProjection ? "on" : "off", c.validationSkill, c.chosen ? "  <- chosen" : "");
+                        c.orthogonalProjection ? "on" : "off", c.validationSkill,
+                        c.chosen ? "  <- chosen" : "");
         }
     }
 }
 
 void printAblation(const hybrid::AblationResult& a) {
-    std::printf("Ablation (paper Table 3 and more): chronological held-out 30 %% (one step, %d steps) and the "
-                "extrapolation split %s (one step)\n",
-                a.multiStepHorizon, a.regimeSplit.c_str());
+    std::printf(
+        "Ablation (paper Table 3 and more): chronological held-out 30 %% (one step, %d steps) and the "
+        "extrapolation split %s (one step)\n",
+        a.multiStepHorizon, a.regimeSplit.c_str());
     std::printf("%-26s %10s %8s %10s %8s %10s %10s | %10s %8s %10s | %s\n", "variant", "MAE X [%]", "R2 X",
                 "MAE T [C]", "R2 T", "LB p X", "MAE X H", "MAE X [%]", "R2 X", "MAE T [C]", "h_HDT, k_HDT");
     for (const auto& r : a.rows) {

@@ -240,8 +240,8 @@ residual::HybridPrediction LstmBaseline::predictAhead(const residual::BatchView&
     return out;
 }
 
-std::vector<residual::HybridPrediction> LstmBaseline::predictHorizons(const residual::BatchView& v,
-                                                                      const std::vector<int>& horizons) const {
+std::vector<residual::HybridPrediction>
+LstmBaseline::predictHorizons(const residual::BatchView& v, const std::vector<int>& horizons) const {
     torch::NoGradGuard noGrad;
     const auto& im = *m_impl;
     const std::size_t n = v.batch->rows();

@@ -175,7 +175,8 @@ Eigen::MatrixXd fisherInformation(const Residuals& r, std::size_t np) {
 Eigen::MatrixXd hacScoreCovariance(const Residuals& r, std::size_t np, int& bandwidth) {
     const auto npi = static_cast<Eigen::Index>(np);
     Eigen::MatrixXd meat = Eigen::MatrixXd::Zero(npi, npi);
-    const int ruleOfThumb = static_cast<int>(std::floor(4.0 * std::pow(double(r.xOut.size()) / 100.0, 2.0 / 9.0)));
+    const int ruleOfThumb =
+        static_cast<int>(std::floor(4.0 * std::pow(double(r.xOut.size()) / 100.0, 2.0 / 9.0)));
     bandwidth = std::max(ruleOfThumb, diagnostics::bandwidthFromAutocorrelation(
                                           r.xOut, 0.05, std::max(1, static_cast<int>(r.xOut.size()) / 3)));
     const auto addGroup = [&](const std::vector<const std::vector<double>*>& res,
@@ -454,8 +455,8 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
         int bandwidth = 0;
         const Eigen::MatrixXd meat = hacScoreCovariance(at, np, bandwidth);
         cov = fisherCov * meat * fisherCov;
-        result.intervalMethod = "sandwich F^-1 M F^-1, M Newey-West (Bartlett) over " + std::to_string(bandwidth) +
-                                " lags of the calibration rows";
+        result.intervalMethod = "sandwich F^-1 M F^-1, M Newey-West (Bartlett) over " +
+                                std::to_string(bandwidth) + " lags of the calibration rows";
     }
     for (std::size_t i = 0; i < np; ++i) {
         Estimate e;

@@ -54,7 +54,7 @@ struct IterationRecord {
 struct Estimate {
     properties::Param param;
     double value = 0;
-    double standardError = 0; ///< sandwich (HAC) standard error; the interval below uses it
+    double standardError = 0;       ///< sandwich (HAC) standard error; the interval below uses it
     double standardErrorFisher = 0; ///< F⁻¹ alone (independent rows assumed), for comparison
     double ci95Low = 0;
     double ci95High = 0;

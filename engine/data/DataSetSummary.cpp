@@ -1,5 +1,5 @@
-#include <cstdio>
 #include "data/DataSetSummary.h"
+#include <cstdio>
 
 #include <algorithm>
 #include <cmath>
@@ -67,7 +67,8 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
                         if (listed[i] < DataSetSummary::kMaxListedImpossible) {
                             ++listed[i];
                             s.impossible.push_back({b.sourcePath.empty() ? b.id : b.sourcePath,
-                                                    r < b.lineOfRow.size() ? b.lineOfRow[r] : 0, col.fileName, v,
+                                                    r < b.lineOfRow.size() ? b.lineOfRow[r] : 0, col.fileName,
+                                                    v,
                                                     "must lie in [" + formatNumber(low) + ", " +
                                                         formatNumber(high) + "] " + cs.unit});
                         }

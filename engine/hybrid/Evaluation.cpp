@@ -117,8 +117,8 @@ ScoredPredictions scorePredictions(const std::vector<residual::BatchView>& views
 }
 
 std::vector<ScoredPredictions> scoreHorizons(const std::vector<residual::BatchView>& views,
-                                             const HorizonPredictor& predict, const std::vector<int>& horizons,
-                                             int lbLags) {
+                                             const HorizonPredictor& predict,
+                                             const std::vector<int>& horizons, int lbLags) {
     std::vector<Pool> pools(horizons.size());
     for (const auto& v : views) {
         const auto p = predict(v, horizons);
@@ -184,9 +184,7 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
         m.temperatureMultiStep = scored[multiStep].temperature;
         return m;
     };
-    const auto cancelled = [&](double fraction) {
-        return reportProgress(progress, "evaluate", fraction);
-    };
+    const auto cancelled = [&](double fraction) { return reportProgress(progress, "evaluate", fraction); };
 
     // The PBM runs open loop on the inputs: the same prediction at every horizon.
     out.models.push_back(score("pbm", [](const residual::BatchView& v, const std::vector<int>& hs) {
@@ -248,8 +246,8 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
 
         ModelMetrics free;
         free.name = key;
-        const auto s = scorePredictions(test, [rm = rm](const residual::BatchView& v) { return rm->predictFreeRun(v); },
-                                        lags);
+        const auto s = scorePredictions(
+            test, [rm = rm](const residual::BatchView& v) { return rm->predictFreeRun(v); }, lags);
         free.moisture = free.moistureMultiStep = s.moisture;
         free.temperature = free.temperatureMultiStep = s.temperature;
         free.moistureResidual = s.moistureResidual;

@@ -15,7 +15,7 @@ namespace drytwin::evaluation {
 
 /// @brief Options of a held-out evaluation.
 struct EvaluationOptions {
-    int horizonSteps = 30;      ///< multi-step horizon reported beside the one-step error
+    int horizonSteps = 30; ///< multi-step horizon reported beside the one-step error
     /// Horizons of the horizon curve [steps]; 1 and horizonSteps are always added. The line's
     /// transport delay is about 70 s, so the curve runs well past it.
     std::vector<int> horizons{1, 2, 5, 10, 20, 30, 45, 60, 90, 120, 150, 180};
@@ -47,7 +47,7 @@ struct ModelMetrics {
     std::vector<double> skillMoistureByHorizon, skillTemperatureByHorizon;
     bool hasStability = false;
     double spectralRadiusBefore = 0, spectralRadiusAfter = 0, alpha = 0, certificateMaxEig = 0;
-    bool choleskyPasses = false;   ///< α²P − AᵀPA ≻ 0 by Cholesky, checked apart from the solver
+    bool choleskyPasses = false; ///< α²P − AᵀPA ≻ 0 by Cholesky, checked apart from the solver
     double pConditionNumber = 0;
     residual::StabilityComparison stabilityComparison; ///< training loss: unconstrained / pulled / Eq. 30
 };
@@ -92,13 +92,13 @@ ScoredPredictions scorePredictions(const std::vector<residual::BatchView>& views
                                    int lbLags);
 
 /// @brief Makes a model's predictions for the rows of a view at several horizons, one per entry.
-using HorizonPredictor =
-    std::function<std::vector<residual::HybridPrediction>(const residual::BatchView&, const std::vector<int>&)>;
+using HorizonPredictor = std::function<std::vector<residual::HybridPrediction>(const residual::BatchView&,
+                                                                               const std::vector<int>&)>;
 
 /// @brief scorePredictions at each horizon, predicting each view once for all horizons.
 std::vector<ScoredPredictions> scoreHorizons(const std::vector<residual::BatchView>& views,
-                                             const HorizonPredictor& predict, const std::vector<int>& horizons,
-                                             int lbLags);
+                                             const HorizonPredictor& predict,
+                                             const std::vector<int>& horizons, int lbLags);
 
 /// @brief Keys of the reference predictors (CONTRACT.md §3).
 inline constexpr const char* kPersistenceKey = "persistence";

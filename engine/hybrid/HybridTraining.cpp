@@ -92,7 +92,8 @@ innerSplit(const std::vector<residual::BatchView>& views, double validationFract
     std::pair<std::vector<residual::BatchView>, std::vector<residual::BatchView>> out;
     for (const auto& v : views) {
         const auto n = v.rows.size();
-        const auto cut = v.rows.begin + static_cast<std::size_t>(std::round((1.0 - validationFraction) * double(n)));
+        const auto cut =
+            v.rows.begin + static_cast<std::size_t>(std::round((1.0 - validationFraction) * double(n)));
         if (cut > v.rows.begin) {
             out.first.push_back({v.batch, v.pbm, {v.rows.begin, cut}});
         }
@@ -142,8 +143,9 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
                 refT[h] = std::min(refT[h], scored[h].temperature.mae);
             }
         }
-        for (bool projection : selection.tryWithoutProjection ? std::vector<bool>{true, false}
-                                                             : std::vector<bool>{options.orthogonalProjection}) {
+        for (bool projection : selection.tryWithoutProjection
+                                   ? std::vector<bool>{true, false}
+                                   : std::vector<bool>{options.orthogonalProjection}) {
             for (int lags : selection.lags) {
                 for (double ridge : selection.ridge) {
                     candidates.push_back({lags, ridge, projection, 0, false});
@@ -169,7 +171,9 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
             }
             const auto scored = evaluation::scoreHorizons(
                 validation,
-                [&](const residual::BatchView& v, const std::vector<int>& hs) { return m->predictHorizons(v, hs); },
+                [&](const residual::BatchView& v, const std::vector<int>& hs) {
+                    return m->predictHorizons(v, hs);
+                },
                 selection.horizons, 1);
             double skill = 0;
             for (std::size_t h = 0; h < scored.size(); ++h) {
@@ -213,7 +217,8 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
     reportProgress(progress, "train", 1.0, "done");
     TrainingResult r{std::move(*full), std::move(*extModel), std::move(*lstm), std::move(candidates), 0, {}};
     r.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.ending = {Termination::Completed, "PGRL-CC, external-input residual and LSTM trained", r.elapsedSeconds};
+    r.ending = {Termination::Completed, "PGRL-CC, external-input residual and LSTM trained",
+                r.elapsedSeconds};
     return r;
 }
 
@@ -236,7 +241,8 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
     };
     const bool consistent = model.switches.consistentEnergyBalance;
     // The full row is the PGRL-CC the model holds (its settings chosen in training), or the defaults.
-    const residual::ResidualOptions base = model.pgrlCc ? model.pgrlCc->options() : residual::ResidualOptions{};
+    const residual::ResidualOptions base =
+        model.pgrlCc ? model.pgrlCc->options() : residual::ResidualOptions{};
     const bool withProjection = base.orthogonalProjection;
     const std::vector<Variant> variants{
         {"full", "PGRL-CC, all components", Physics::None, Learning::None},
@@ -251,10 +257,11 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
          withProjection ? "4. no orthogonal learning (P_perp)"
                         : "4. with orthogonal learning (P_perp, Eq. 27; the trained model has none)",
          Physics::None, Learning::NoProjection},
-        {"literal_eq27", "4b. Eq. 27 read literally (base part of e dropped from the prediction)", Physics::None,
-         Learning::LiteralEq27},
+        {"literal_eq27", "4b. Eq. 27 read literally (base part of e dropped from the prediction)",
+         Physics::None, Learning::LiteralEq27},
         {"no_cc_weights", "5. no control-consistent weights", Physics::None, Learning::NoWeights},
-        {"no_stability_constraint", "6. no stability constraint (EDMDc-S)", Physics::None, Learning::NoConstraint},
+        {"no_stability_constraint", "6. no stability constraint (EDMDc-S)", Physics::None,
+         Learning::NoConstraint},
         {"eigenvalue_pull", "6b. eigenvalues pulled in after an unconstrained fit instead of Eq. 30",
          Physics::None, Learning::EigenvaluePull},
     };
@@ -327,7 +334,9 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
         const auto test = splitViews(batches, pbm, true);
         const auto scored = evaluation::scoreHorizons(
             test,
-            [&](const residual::BatchView& view, const std::vector<int>& hs) { return m->predictHorizons(view, hs); },
+            [&](const residual::BatchView& view, const std::vector<int>& hs) {
+                return m->predictHorizons(view, hs);
+            },
             {1, result.multiStepHorizon}, 20);
         row.maeMoisture = scored[0].moisture.mae;
         row.r2Moisture = scored[0].moisture.r2;
@@ -341,8 +350,8 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
             return mr.error();
         }
         const auto regime = evaluation::scorePredictions(
-            regimeViews(batches, pbm, true), [&](const residual::BatchView& view) { return mr->predictOneStep(view); },
-            20);
+            regimeViews(batches, pbm, true),
+            [&](const residual::BatchView& view) { return mr->predictOneStep(view); }, 20);
         row.regimeMaeMoisture = regime.moisture.mae;
         row.regimeR2Moisture = regime.moisture.r2;
         row.regimeMaeTemperature = regime.temperature.mae;
@@ -350,7 +359,8 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
         ++done;
     }
     reportProgress(progress, "ablation", 1.0, "done");
-    result.ending = {Termination::Completed, std::to_string(variants.size()) + " variants trained and scored on two splits",
+    result.ending = {Termination::Completed,
+                     std::to_string(variants.size()) + " variants trained and scored on two splits",
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
     return result;
 }

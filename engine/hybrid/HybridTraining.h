@@ -70,7 +70,8 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
                                              const HybridModel& model,
                                              const residual::ResidualOptions& options = {},
                                              const baselines::LstmOptions& lstmOptions = {},
-                                             const Progress& progress = {}, const ModelSelection& selection = {});
+                                             const Progress& progress = {},
+                                             const ModelSelection& selection = {});
 
 /// @brief Puts the trained models into @p model, replacing any it held.
 void storeResidualModels(HybridModel& model, TrainingResult&& trained);

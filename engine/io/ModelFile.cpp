@@ -202,9 +202,10 @@ Expected<HybridModel> parseModelJson(const json& j, const std::string& name) {
                     est.ci95High = bound(e["ci95"][1]);
                 }
                 est.atBound = e.value("at_bound", false);
-                est.standardErrorFisher = e.contains("standard_error_fisher") && e["standard_error_fisher"].is_number()
-                                              ? e["standard_error_fisher"].get<double>()
-                                              : std::nan("");
+                est.standardErrorFisher =
+                    e.contains("standard_error_fisher") && e["standard_error_fisher"].is_number()
+                        ? e["standard_error_fisher"].get<double>()
+                        : std::nan("");
                 m.calibration->estimates.push_back(est);
             }
         }

@@ -133,20 +133,22 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
         if (lostCount == 0) {
             r += "\nPGRL-CC beats both reference predictors in moisture at every horizon of the curve.\n";
         } else {
-            r += "\nPGRL-CC does **not** beat both reference predictors in moisture at " + lost + " steps" +
-                 (heldWins == lostCount
-                      ? ": there the PBM with its last error held is better. Its residual then behaves like a "
-                        "random walk (unmeasured drift), which holding the last error follows exactly and a "
-                        "lifted model under Eq. 30's constraint (α < 1) cannot: its prediction decays towards "
-                        "the mean residual.\n"
-                      : ": there holding the last measurement is better (the outlet changes slower than the "
-                        "model's residual prediction settles).\n");
+            r +=
+                "\nPGRL-CC does **not** beat both reference predictors in moisture at " + lost + " steps" +
+                (heldWins == lostCount
+                     ? ": there the PBM with its last error held is better. Its residual then behaves like a "
+                       "random walk (unmeasured drift), which holding the last error follows exactly and a "
+                       "lifted model under Eq. 30's constraint (α < 1) cannot: its prediction decays towards "
+                       "the mean residual.\n"
+                     : ": there holding the last measurement is better (the outlet changes slower than the "
+                       "model's residual prediction settles).\n");
         }
     }
     if (ev.contains("free_run")) {
-        r += "\nFree run (never sees a measured output; skill against the references at the longest "
-             "horizon):\n\n| model | MAE X | R² X | MAE T | R² T | skill X |\n| --- | --- | --- | --- | --- | "
-             "--- |\n";
+        r +=
+            "\nFree run (never sees a measured output; skill against the references at the longest "
+            "horizon):\n\n| model | MAE X | R² X | MAE T | R² T | skill X |\n| --- | --- | --- | --- | --- | "
+            "--- |\n";
         for (const auto& [name, m] : ev["free_run"].items()) {
             r += "| " + name + " | " + num(m["moisture"]["mae"]) + " | " + num(m["moisture"]["r2"]) + " | " +
                  num(m["temperature"]["mae"]) + " | " + num(m["temperature"]["r2"]) + " | " +
@@ -159,33 +161,38 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
              " before and " + num(s["spectral_radius_after"]) +
              " after the constraint, α = " + num(s["alpha"]) +
              ", largest eigenvalue of AᵀPA − α²P = " + num(s["certificate_max_eig"]) + " (≤ 0 certifies)" +
-             (s.value("cholesky_passes", false) ? "; Cholesky of α²P − AᵀPA passes" : "; Cholesky of α²P − AᵀPA FAILS") +
+             (s.value("cholesky_passes", false) ? "; Cholesky of α²P − AᵀPA passes"
+                                                : "; Cholesky of α²P − AᵀPA FAILS") +
              ", cond(P) = " + num(s.value("p_condition_number", json())) + ".\n";
         if (s.contains("training_loss")) {
             const auto& l = s["training_loss"];
             const auto& rad = s["spectral_radius"];
             r += "\nEq. 30 side by side (training loss per unit weight, spectral radius): unconstrained " +
-                 num(l["unconstrained"], "%.6g") + " (" + num(rad["unconstrained"], "%.5f") + "), eigenvalues pulled " +
-                 num(l["eigenvalue_pull"], "%.6g") + " (" + num(rad["eigenvalue_pull"], "%.5f") +
-                 "), constrained as Eq. 30 states " + num(l["eq30_constrained"], "%.6g") + " (" +
-                 num(rad["eq30_constrained"], "%.5f") + "). Multi-step errors of each: the ablation's 30-step column.\n";
+                 num(l["unconstrained"], "%.6g") + " (" + num(rad["unconstrained"], "%.5f") +
+                 "), eigenvalues pulled " + num(l["eigenvalue_pull"], "%.6g") + " (" +
+                 num(rad["eigenvalue_pull"], "%.5f") + "), constrained as Eq. 30 states " +
+                 num(l["eq30_constrained"], "%.6g") + " (" + num(rad["eq30_constrained"], "%.5f") +
+                 "). Multi-step errors of each: the ablation's 30-step column.\n";
         }
     }
     r += "\n## Ablation (paper Table 3 and three more rows)\n\nChronological held-out 30 %: one step and " +
-         std::to_string(ablation->value("multi_step_horizon", 30)) +
-         " steps ahead; extrapolation split `" + ablation->value("regime_split", std::string()) +
-         "` (trained on the cooler batches, tested on the warmest 30 % by mean ambient temperature): one step. "
+         std::to_string(ablation->value("multi_step_horizon", 30)) + " steps ahead; extrapolation split `" +
+         ablation->value("regime_split", std::string()) +
+         "` (trained on the cooler batches, tested on the warmest 30 % by mean ambient temperature): one "
+         "step. "
          "Physics variants refit h_HDT and k_HDT first.\n\n"
-         "| variant | MAE X | R² X | MAE T | R² T | LB p X | multi-step MAE X | extrapolation MAE X | extrapolation R² X | "
+         "| variant | MAE X | R² X | MAE T | R² T | LB p X | multi-step MAE X | extrapolation MAE X | "
+         "extrapolation R² X | "
          "extrapolation MAE T |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const auto& v : (*ablation)["variants"]) {
         const json none;
         const auto& g = v.contains("regime") ? v["regime"] : none;
         r += "| " + v.value("description", std::string()) + " | " + num(v["mae_moisture"]) + " | " +
              num(v["r2_moisture"]) + " | " + num(v["mae_temperature"]) + " | " + num(v["r2_temperature"]) +
-             " | " + num(v["ljung_box_p_moisture"], "%.3g") + " | " + num(v.value("mae_moisture_multi_step", json())) +
-             " | " + num(g.value("mae_moisture", json())) + " | " + num(g.value("r2_moisture", json())) + " | " +
-             num(g.value("mae_temperature", json())) + " |\n";
+             " | " + num(v["ljung_box_p_moisture"], "%.3g") + " | " +
+             num(v.value("mae_moisture_multi_step", json())) + " | " + num(g.value("mae_moisture", json())) +
+             " | " + num(g.value("r2_moisture", json())) + " | " + num(g.value("mae_temperature", json())) +
+             " |\n";
     }
     r +=
         "\nResidual ACF and PSD of every model and the eigenvalues of A before and after the constraint with "

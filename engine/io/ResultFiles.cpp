@@ -55,9 +55,10 @@ std::string evaluationJson(const evaluation::EvaluationResult& r) {
             j["models"][m.name]["stability"]["training_loss"] = {{"unconstrained", c.lossUnconstrained},
                                                                  {"eigenvalue_pull", c.lossEigenvaluePull},
                                                                  {"eq30_constrained", c.lossConstrained}};
-            j["models"][m.name]["stability"]["spectral_radius"] = {{"unconstrained", c.radiusUnconstrained},
-                                                                   {"eigenvalue_pull", c.radiusEigenvaluePull},
-                                                                   {"eq30_constrained", c.radiusConstrained}};
+            j["models"][m.name]["stability"]["spectral_radius"] = {
+                {"unconstrained", c.radiusUnconstrained},
+                {"eigenvalue_pull", c.radiusEigenvaluePull},
+                {"eq30_constrained", c.radiusConstrained}};
         }
         multi["models"][m.name] = {
             {"moisture", metrics(m.moistureMultiStep)},

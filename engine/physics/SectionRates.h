@@ -30,7 +30,8 @@ template <class T> struct SectionRatesT {
     T heatIn{};         ///< convective heat into the parcel [W per kg dry] (negative = loss)
     T evaporation{};    ///< dm_evap/dt [kg/s per kg dry] (= −dX/dt)
     T heatCapacity{};   ///< M_dry C_p,dry + M_water C_p,w [J/K per kg dry]
-    T vapourEnthalpy{}; ///< energy drawn per kg evaporated: L_v, or the paper's L_v + C_p,w (T − T_ref) [J/kg]
+    T vapourEnthalpy{}; ///< energy drawn per kg evaporated: L_v, or the paper's L_v + C_p,w (T − T_ref)
+                        ///< [J/kg]
     T waterActivity{};
 };
 using SectionRates = SectionRatesT<double>;

@@ -610,7 +610,8 @@ std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
             if (target < h || target - h < first) {
                 break;
             }
-            forced += cPow[static_cast<std::size_t>(m)] * forcing.col(static_cast<Eigen::Index>(target - h - first));
+            forced += cPow[static_cast<std::size_t>(m)] *
+                      forcing.col(static_cast<Eigen::Index>(target - h - first));
             const std::size_t origin = target - h;
             if (slotsOf[h].empty() || !stateOk[origin - first]) {
                 continue;

@@ -37,8 +37,8 @@ struct ResidualOptions {
     /// Base set Φ_base of Eq. 27 by feature name ("1", "T_amb", "X_HDT^2", "X_HDT*T_HDT" …);
     /// empty: the constant and the linear terms. The residual set is every other feature.
     std::vector<std::string> baseFeatures;
-    int residualLags = 8;                 ///< measured residuals e_k … e_{k−L+1} in the lifted state
-    bool orthogonalProjection = true;     ///< P⊥ of Eq. 27 on the residual features
+    int residualLags = 8;             ///< measured residuals e_k … e_{k−L+1} in the lifted state
+    bool orthogonalProjection = true; ///< P⊥ of Eq. 27 on the residual features
     /// Eq. 27 as written: also ẽ = P⊥e (the residual part the base features explain is left to
     /// the physics model and to discovery) and the base features are not inputs (d = [1, Δŷ_mech]).
     /// false with orthogonalProjection: the form of model files before 2026-11-22, where P⊥ only
@@ -52,7 +52,7 @@ struct ResidualOptions {
     bool controlConsistentWeights = true; ///< ω of Eq. 29 (else W = I)
     bool stabilityConstraint = true;      ///< A with a certificate (Eq. 30)
     StabilityMethod stabilityMethod = StabilityMethod::Constrained;
-    double lambdaA = 1e-4;                ///< ridge weights of Eq. 30, per unit of total weight Σω
+    double lambdaA = 1e-4; ///< ridge weights of Eq. 30, per unit of total weight Σω
     double lambdaB = 1e-4;
     double lambdaE = 1e-4;
     double lambdaC = 1e-8; ///< step 15 of Algorithm 1
@@ -104,7 +104,8 @@ public:
     /// @p horizons (each ≥ 1), equal to predictAhead(view, H) for each. Uses the linearity of the
     /// lifted model, ê_{k+H} = C A^H x_k + Σ_{m<H} C A^m (B u_{k+H−1−m} + E d_{k+H−1−m}), so a
     /// horizon curve up to 180 steps costs one pass of 2·n_x per row and step, not n_x².
-    std::vector<HybridPrediction> predictHorizons(const BatchView& view, const std::vector<int>& horizons) const;
+    std::vector<HybridPrediction> predictHorizons(const BatchView& view,
+                                                  const std::vector<int>& horizons) const;
     /// @brief Free run: the lifted state rolled from the batch's first row with inputs and PBM
     /// proxies only, never a measured output (lags start at zero), ê_k = C x_k, for the view's rows.
     HybridPrediction predictFreeRun(const BatchView& view) const;
@@ -150,10 +151,10 @@ private:
     PolynomialDictionary m_dict;
     std::vector<int> m_baseIdx;
     std::vector<int> m_resIdx;
-    Eigen::MatrixXd m_projection;   ///< G of P⊥: Φ̃_res = Φ_res − Φ_base G
+    Eigen::MatrixXd m_projection;         ///< G of P⊥: Φ̃_res = Φ_res − Φ_base G
     Eigen::MatrixXd m_residualProjection; ///< g of P⊥ on e: ẽ = e − Φ_base g (n_base × 2, % wb and °C)
-    Eigen::VectorXd m_featureScale; ///< std of Φ̃_res columns
-    Eigen::Vector2d m_eScale{1, 1}; ///< std of the residual outputs (% wb, °C)
+    Eigen::VectorXd m_featureScale;       ///< std of Φ̃_res columns
+    Eigen::Vector2d m_eScale{1, 1};       ///< std of the residual outputs (% wb, °C)
     double m_uMean = 0, m_uScale = 1;
     Eigen::MatrixXd m_a, m_aFree, m_b, m_e, m_c;
     StabilityCertificate m_cert;

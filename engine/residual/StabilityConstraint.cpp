@@ -34,10 +34,11 @@ StabilityCertificate certify(const Eigen::MatrixXd& a, const Eigen::MatrixXd& p,
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (p + p.transpose()), Eigen::EigenvaluesOnly);
     c.pMinEig = es.eigenvalues().minCoeff();
     // Relative round-off allowance: the certificate is a difference of O(‖P‖) terms.
-    c.pConditionNumber = c.pMinEig > 0 ? es.eigenvalues().maxCoeff() / c.pMinEig
-                                         : std::numeric_limits<double>::infinity();
+    c.pConditionNumber =
+        c.pMinEig > 0 ? es.eigenvalues().maxCoeff() / c.pMinEig : std::numeric_limits<double>::infinity();
     const Eigen::MatrixXd margin = alpha * alpha * p - a.transpose() * p * a;
-    c.choleskyPasses = Eigen::LLT<Eigen::MatrixXd>(0.5 * (margin + margin.transpose())).info() == Eigen::Success;
+    c.choleskyPasses =
+        Eigen::LLT<Eigen::MatrixXd>(0.5 * (margin + margin.transpose())).info() == Eigen::Success;
     c.certified = alpha < 1 && c.pMinEig > 0 && c.certificateMaxEig <= 1e-12 * p.norm();
     return c;
 }
@@ -165,9 +166,9 @@ private:
 
 } // namespace
 
-ConstrainedFit fitUnderStabilityConstraint(const RidgeNormalEquations& prob, const Eigen::MatrixXd& thetaStart,
-                                           const Eigen::MatrixXd& pStart, double alpha, int maxOuter,
-                                           int maxAdmm) {
+ConstrainedFit fitUnderStabilityConstraint(const RidgeNormalEquations& prob,
+                                           const Eigen::MatrixXd& thetaStart, const Eigen::MatrixXd& pStart,
+                                           double alpha, int maxOuter, int maxAdmm) {
     const Eigen::Index nx = prob.stateSize;
     const Eigen::Index np = prob.gram.rows();
     ConstrainedFit best;
@@ -186,7 +187,8 @@ ConstrainedFit fitUnderStabilityConstraint(const RidgeNormalEquations& prob, con
         }
         const Eigen::MatrixXd l = llt.matrixL();
         const Eigen::MatrixXd lt = l.transpose();
-        const Eigen::MatrixXd ltInv = lt.triangularView<Eigen::Upper>().solve(Eigen::MatrixXd::Identity(nx, nx));
+        const Eigen::MatrixXd ltInv =
+            lt.triangularView<Eigen::Upper>().solve(Eigen::MatrixXd::Identity(nx, nx));
         Eigen::MatrixXd t = Eigen::MatrixXd::Identity(np, np);
         t.topLeftCorner(nx, nx) = lt;
         const Eigen::MatrixXd gT = t * prob.gram * t.transpose();
@@ -199,7 +201,8 @@ ConstrainedFit fitUnderStabilityConstraint(const RidgeNormalEquations& prob, con
         const Eigen::VectorXd lq = eq.eigenvalues().cwiseMax(0);
         const Eigen::VectorXd lg = eg.eigenvalues().cwiseMax(0);
         // ρ near the geometric middle of the curvature spectrum balances the two ADMM residuals.
-        double rho = 2.0 * std::sqrt(lq.maxCoeff() * lq.minCoeff()) * std::sqrt(lg.maxCoeff() * std::max(lg.minCoeff(), 1e-12 * lg.maxCoeff()));
+        double rho = 2.0 * std::sqrt(lq.maxCoeff() * lq.minCoeff()) *
+                     std::sqrt(lg.maxCoeff() * std::max(lg.minCoeff(), 1e-12 * lg.maxCoeff()));
         const Eigen::MatrixXd rhsFixed = uq.transpose() * (2.0 * q * hT) * ug;
 
         // Start: the best feasible Θ so far, in the new coordinates (feasible here too, below).

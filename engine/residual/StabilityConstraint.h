@@ -24,8 +24,8 @@ struct StabilityCertificate {
 /// the loss tr(Θ G Θᵀ) − 2 tr(H Θᵀ) + c, where G = RᵀWR + Λ (regressors [x, u, d] per snapshot,
 /// ridge on the diagonal) and H = X₊ᵀWR. The first @p stateSize columns of Θ are A.
 struct RidgeNormalEquations {
-    Eigen::MatrixXd gram;  ///< G, p × p
-    Eigen::MatrixXd cross; ///< H, n_x × p
+    Eigen::MatrixXd gram;    ///< G, p × p
+    Eigen::MatrixXd cross;   ///< H, n_x × p
     double targetEnergy = 0; ///< c = ‖W^½X₊‖², so that the loss is the weighted squared error
     Eigen::Index stateSize = 0;
     double loss(const Eigen::MatrixXd& theta) const;
@@ -33,11 +33,11 @@ struct RidgeNormalEquations {
 
 /// @brief Result of the constrained fit of Eq. (30).
 struct ConstrainedFit {
-    Eigen::MatrixXd theta;     ///< [A B E] with AᵀPA ⪯ α²P
+    Eigen::MatrixXd theta; ///< [A B E] with AᵀPA ⪯ α²P
     StabilityCertificate certificate;
-    int outerIterations = 0;   ///< P updates
-    int admmIterations = 0;    ///< in total
-    bool converged = false;    ///< the last ADMM met its tolerance
+    int outerIterations = 0; ///< P updates
+    int admmIterations = 0;  ///< in total
+    bool converged = false;  ///< the last ADMM met its tolerance
 };
 
 /// @brief Eq. (30) as the paper states it: A, B, E minimise the weighted ridge loss subject to
@@ -50,9 +50,9 @@ struct ConstrainedFit {
 /// Hand-written because the packaged SDP solvers (CSDP, DSDP) take the LMI in P but not the
 /// least-squares objective in A jointly, and an SDP of this size (n_x ≈ 100, so ~10⁴ variables)
 /// would be far slower than the 5 s training budget.
-ConstrainedFit fitUnderStabilityConstraint(const RidgeNormalEquations& problem, const Eigen::MatrixXd& thetaStart,
-                                           const Eigen::MatrixXd& pStart, double alpha, int maxOuter = 3,
-                                           int maxAdmm = 250);
+ConstrainedFit fitUnderStabilityConstraint(const RidgeNormalEquations& problem,
+                                           const Eigen::MatrixXd& thetaStart, const Eigen::MatrixXd& pStart,
+                                           double alpha, int maxOuter = 3, int maxAdmm = 250);
 
 /// @brief Solves the scaled discrete Lyapunov equation (A/α)ᵀP(A/α) − P = −I by the doubling
 /// algorithm (exact for ρ(A) < α; then AᵀPA − α²P = −α²I).

@@ -254,9 +254,8 @@ Expected<CalibrateResult> Session::calibrate(const CalibrateOptions& options, co
     result.startParameters = m_model.parameters;
     hybrid::CalibrationRecord rec;
     for (const auto& e : r->estimates) {
-        rec.estimates.push_back(
-            {std::string(properties::info(e.param).symbol), e.value, e.ci95Low, e.ci95High, e.atBound,
-             e.standardErrorFisher});
+        rec.estimates.push_back({std::string(properties::info(e.param).symbol), e.value, e.ci95Low,
+                                 e.ci95High, e.atBound, e.standardErrorFisher});
     }
     rec.intervalMethod = r->intervalMethod;
     rec.lossBefore = r->before.loss;
@@ -283,8 +282,8 @@ Expected<TrainResult> Session::train(const TrainOptions& options, const Progress
     if (auto st = ready(options, "train"); !st) {
         return st.error();
     }
-    auto trained =
-        hybrid::trainResidualModels(m_si, m_model, options.residual, options.lstm, progress, options.selection);
+    auto trained = hybrid::trainResidualModels(m_si, m_model, options.residual, options.lstm, progress,
+                                               options.selection);
     if (!trained) {
         return trained.error();
     }
@@ -356,8 +355,8 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
                 return sims.error();
             }
             // The settings the session's PGRL-CC was trained with (chosen by validation there).
-            const residual::ResidualOptions settings = m_model.pgrlCc ? m_model.pgrlCc->options()
-                                                                      : residual::ResidualOptions{};
+            const residual::ResidualOptions settings =
+                m_model.pgrlCc ? m_model.pgrlCc->options() : residual::ResidualOptions{};
             auto trained = residual::ResidualModel::train(hybrid::splitViews(m_si, *sims, false), settings);
             if (!trained) {
                 return trained.error();

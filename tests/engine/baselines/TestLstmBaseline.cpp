@@ -60,8 +60,8 @@ private Q_SLOTS:
         const auto p12 = m->predictAhead(test[0], 12);
         int compared = 0;
         for (std::size_t i = 0; i < p1.xOutPct.size(); ++i) {
-            for (const auto& [got, want] : {std::pair{&many[0], &p5}, std::pair{&many[1], &p1},
-                                            std::pair{&many[2], &p12}}) {
+            for (const auto& [got, want] :
+                 {std::pair{&many[0], &p5}, std::pair{&many[1], &p1}, std::pair{&many[2], &p12}}) {
                 QCOMPARE(std::isnan(got->xOutPct[i]), std::isnan(want->xOutPct[i]));
                 if (std::isfinite(want->xOutPct[i])) {
                     QVERIFY(std::abs(got->xOutPct[i] - want->xOutPct[i]) < 1e-4);

@@ -74,8 +74,8 @@ private Q_SLOTS:
         auto r = calibration::calibrate(drifting, plant::PlantOptions::defaultTruth(), co);
         QVERIFY2(r.ok(), r.ok() ? "" : r.error().message().c_str());
         for (const auto& e : r->estimates) {
-            qInfo("%s: sandwich SE %.4g, Fisher SE %.4g", properties::info(e.param).symbol.data(), e.standardError,
-                  e.standardErrorFisher);
+            qInfo("%s: sandwich SE %.4g, Fisher SE %.4g", properties::info(e.param).symbol.data(),
+                  e.standardError, e.standardErrorFisher);
             QVERIFY(e.standardError > 2 * e.standardErrorFisher);
             QCOMPARE(e.ci95High - e.ci95Low, 2 * 1.96 * e.standardError);
         }

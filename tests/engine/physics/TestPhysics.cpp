@@ -56,7 +56,8 @@ struct Closure {
 };
 
 template <class Rates>
-Closure integrateClosure(double x0, double t0, double duration, Rates rates, const ParameterSet* p = nullptr) {
+Closure integrateClosure(double x0, double t0, double duration, Rates rates,
+                         const ParameterSet* p = nullptr) {
     struct Ctx {
         Rates* rates;
     } ctx{&rates};
@@ -160,9 +161,10 @@ private Q_SLOTS:
                 0.28, 298.15, 6.0, [&](double x, double t) { return tubeRates(x, t, env, m_p, sw); }, &m_p);
             const double dH = materialEnthalpy(c.x1, c.t1, m_p) - materialEnthalpy(c.x0, c.t0, m_p);
             const double imbalance = dH - (c.heatIn - c.vapourEnthalpyOut);
-            qInfo("%s form: dH %.1f J/kg, Q %.1f, vapour out %.1f, imbalance %.2f J/kg (%.2f %% of vapour out)",
-                  consistent ? "consistent" : "paper's", dH, c.heatIn, c.vapourEnthalpyOut, imbalance,
-                  100 * imbalance / c.vapourEnthalpyOut);
+            qInfo(
+                "%s form: dH %.1f J/kg, Q %.1f, vapour out %.1f, imbalance %.2f J/kg (%.2f %% of vapour out)",
+                consistent ? "consistent" : "paper's", dH, c.heatIn, c.vapourEnthalpyOut, imbalance,
+                100 * imbalance / c.vapourEnthalpyOut);
             if (consistent) {
                 QVERIFY(std::abs(imbalance) < 1e-4 * c.vapourEnthalpyOut);
             } else {
@@ -295,7 +297,8 @@ private Q_SLOTS:
         SimulationOptions tight;
         tight.relTol = 1e-9;
         auto t = simulateLine(in, m_p, tight, rows);
-        QVERIFY2(maxAbsDiff(t->xOutDb, slow->xOutDb) < 1e-7, qPrintable(QString::number(maxAbsDiff(t->xOutDb, slow->xOutDb))));
+        QVERIFY2(maxAbsDiff(t->xOutDb, slow->xOutDb) < 1e-7,
+                 qPrintable(QString::number(maxAbsDiff(t->xOutDb, slow->xOutDb))));
         // Subsets give the same values as the full run at those rows.
         auto all = simulateLine(in, m_p, tight);
         for (std::size_t j = 0; j < rows.size(); ++j) {

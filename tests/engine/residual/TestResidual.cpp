@@ -139,9 +139,18 @@ private Q_SLOTS:
                 eRaw.push_back(rx[k]);
                 const auto& p = *v.pbm;
                 const auto& b = *v.batch;
-                const double z[13] = {1.0,           p.proxyXHdtDb[k], p.proxyTHdtK[k],  p.proxyXConvDb[k],
-                                      p.proxyTConvK[k], p.proxyXMixDb[k], p.proxyTMixK[k], b.tHotK[k],
-                                      b.feedKgPerS[k],  b.xInDb[k],       b.tInK[k],       b.tAmbK[k],
+                const double z[13] = {1.0,
+                                      p.proxyXHdtDb[k],
+                                      p.proxyTHdtK[k],
+                                      p.proxyXConvDb[k],
+                                      p.proxyTConvK[k],
+                                      p.proxyXMixDb[k],
+                                      p.proxyTMixK[k],
+                                      b.tHotK[k],
+                                      b.feedKgPerS[k],
+                                      b.xInDb[k],
+                                      b.tInK[k],
+                                      b.tAmbK[k],
                                       b.rhAmb[k]};
                 for (int i = 0; i < 13; ++i) {
                     inputs[i].push_back(z[i]);
@@ -267,14 +276,16 @@ private Q_SLOTS:
         Eigen::MatrixXd aPulled = free.leftCols(nx);
         const auto pulled = enforceStability(aPulled, 0.999, 0.995);
         Eigen::MatrixXd thetaPulled(nx, nx + 1);
-        thetaPulled << aPulled, (prob.cross.col(nx) - aPulled * prob.gram.block(0, nx, nx, 1)) / prob.gram(nx, nx);
+        thetaPulled << aPulled,
+            (prob.cross.col(nx) - aPulled * prob.gram.block(0, nx, nx, 1)) / prob.gram(nx, nx);
         const auto fit = fitUnderStabilityConstraint(prob, thetaPulled, pulled.p, 0.999);
         const Eigen::MatrixXd aFit = fit.theta.leftCols(nx);
         qInfo("loss: free %.3f, pulled %.3f, Eq. 30 %.3f; radius %.4f; %d ADMM its; cond(P) %.3g",
-              prob.loss(free), prob.loss(thetaPulled), prob.loss(fit.theta), diagnostics::spectralRadius(aFit),
-              fit.admmIterations, fit.certificate.pConditionNumber);
+              prob.loss(free), prob.loss(thetaPulled), prob.loss(fit.theta),
+              diagnostics::spectralRadius(aFit), fit.admmIterations, fit.certificate.pConditionNumber);
         QVERIFY(prob.loss(fit.theta) <= prob.loss(thetaPulled) + 1e-9);
-        QVERIFY(prob.loss(fit.theta) < prob.loss(thetaPulled) - 1e-3 * (prob.loss(thetaPulled) - prob.loss(free)));
+        QVERIFY(prob.loss(fit.theta) <
+                prob.loss(thetaPulled) - 1e-3 * (prob.loss(thetaPulled) - prob.loss(free)));
         QVERIFY(prob.loss(fit.theta) >= prob.loss(free) - 1e-9);
         QVERIFY(diagnostics::spectralRadius(aFit) < 0.999);
         const auto check = certify(aFit, fit.certificate.p, 0.999);

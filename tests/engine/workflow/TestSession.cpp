@@ -6,8 +6,8 @@
 #include "workflow/Session.h"
 
 #include <QTemporaryDir>
-#include <algorithm>
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -176,7 +176,8 @@ private Q_SLOTS:
         QCOMPARE(e.horizons.back(), 180);
         QVERIFY(std::count(e.horizons.begin(), e.horizons.end(), e.multiStepHorizon) == 1);
         for (std::size_t h = 0; h < e.horizons.size(); ++h) {
-            const double best = std::min(e.models[1].skillMoistureByHorizon[h], e.models[2].skillMoistureByHorizon[h]);
+            const double best =
+                std::min(e.models[1].skillMoistureByHorizon[h], e.models[2].skillMoistureByHorizon[h]);
             QVERIFY(std::abs(best - 1.0) < 1e-12);
         }
         for (const auto& m : e.models) {
