@@ -215,11 +215,13 @@ Eigen::Vector2d ResidualModel::restoredBasePart(const BatchView& v, std::size_t 
 bool ResidualModel::stateAt(const BatchView& v, std::size_t k, const std::vector<double>& ex,
                             const std::vector<double>& et, Eigen::VectorXd& x, double& u,
                             Eigen::VectorXd& d) const {
-    const int lags = m_options.residualLags;
     Eigen::VectorXd z;
-    if (!features(v, k, z, u, d)) {
-        return false;
-    }
+    return features(v, k, z, u, d) && stateFrom(z, k, ex, et, x);
+}
+
+bool ResidualModel::stateFrom(const Eigen::VectorXd& z, std::size_t k, const std::vector<double>& ex,
+                              const std::vector<double>& et, Eigen::VectorXd& x) const {
+    const int lags = m_options.residualLags;
     const Eigen::VectorXd phi = liftedResidualFeatures(z);
     x.resize(kOutputs * lags + phi.size());
     for (int l = 0; l < lags; ++l) {
@@ -585,12 +587,13 @@ std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
         const auto col = static_cast<Eigen::Index>(k - first);
         Eigen::VectorXd z, d, x;
         double u = 0;
-        if (features(v, k, z, u, d)) {
-            forcing.col(col) = m_b.col(0) * u + m_e * d;
-        } else {
+        // One feature evaluation per row serves both the forcing and the state.
+        if (!features(v, k, z, u, d)) {
             forcing.col(col).setConstant(kNaN);
+            continue;
         }
-        if (stateAt(v, k, ex, et, x, u, d)) {
+        forcing.col(col) = m_b.col(0) * u + m_e * d;
+        if (stateFrom(z, k, ex, et, x)) {
             states.col(col) = x;
             stateOk[k - first] = 1;
         }

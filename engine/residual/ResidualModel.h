@@ -146,6 +146,9 @@ private:
     Eigen::VectorXd liftedResidualFeatures(const Eigen::VectorXd& z) const;
     bool stateAt(const BatchView& v, std::size_t k, const std::vector<double>& ex,
                  const std::vector<double>& et, Eigen::VectorXd& x, double& u, Eigen::VectorXd& d) const;
+    /// The lifted state at row k from its already formed inputs @p z; false when a lag is unmeasured.
+    bool stateFrom(const Eigen::VectorXd& z, std::size_t k, const std::vector<double>& ex,
+                   const std::vector<double>& et, Eigen::VectorXd& x) const;
 
     ResidualOptions m_options;
     PolynomialDictionary m_dict;
