@@ -68,6 +68,16 @@ residual::HybridPrediction referencePrediction(const residual::BatchView& v, int
     return p;
 }
 
+HorizonPredictor referencePredictor(bool holdPbmError) {
+    return [holdPbmError](const residual::BatchView& v, const std::vector<int>& horizons) {
+        std::vector<residual::HybridPrediction> p;
+        for (int h : horizons) {
+            p.push_back(referencePrediction(v, h, holdPbmError));
+        }
+        return p;
+    };
+}
+
 residual::HybridPrediction pbmPrediction(const residual::BatchView& v) {
     residual::HybridPrediction p;
     for (std::size_t k = v.rows.begin; k < v.rows.end; ++k) {
@@ -198,13 +208,7 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
     // The two predictors every forecast must beat (CONTRACT.md §3).
     for (const char* name : {kPersistenceKey, kPbmResidualHoldKey}) {
         const bool hold = std::string(name) == kPbmResidualHoldKey;
-        out.models.push_back(score(name, [hold](const residual::BatchView& v, const std::vector<int>& hs) {
-            std::vector<residual::HybridPrediction> p;
-            for (int h : hs) {
-                p.push_back(referencePrediction(v, h, hold));
-            }
-            return p;
-        }));
+        out.models.push_back(score(name, referencePredictor(hold)));
     }
     if (cancelled(0.3)) {
         return cancelledError("evaluate");

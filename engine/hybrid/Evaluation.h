@@ -110,6 +110,9 @@ inline constexpr const char* kPbmResidualHoldKey = "pbm_residual_hold";
 residual::HybridPrediction referencePrediction(const residual::BatchView& view, int horizon,
                                                bool holdPbmError);
 
+/// @brief A reference predictor as a HorizonPredictor: referencePrediction at each horizon.
+HorizonPredictor referencePredictor(bool holdPbmError);
+
 /// @brief The PBM's own predictions of a view's rows (% wb, °C).
 residual::HybridPrediction pbmPrediction(const residual::BatchView& view);
 

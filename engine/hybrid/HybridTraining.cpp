@@ -128,16 +128,8 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
         std::vector<double> refX(selection.horizons.size(), std::numeric_limits<double>::infinity());
         std::vector<double> refT = refX;
         for (bool hold : {false, true}) {
-            const auto scored = evaluation::scoreHorizons(
-                validation,
-                [hold](const residual::BatchView& v, const std::vector<int>& hs) {
-                    std::vector<residual::HybridPrediction> p;
-                    for (int h : hs) {
-                        p.push_back(evaluation::referencePrediction(v, h, hold));
-                    }
-                    return p;
-                },
-                selection.horizons, 1);
+            const auto scored = evaluation::scoreHorizons(validation, evaluation::referencePredictor(hold),
+                                                          selection.horizons, 1);
             for (std::size_t h = 0; h < scored.size(); ++h) {
                 refX[h] = std::min(refX[h], scored[h].moisture.mae);
                 refT[h] = std::min(refT[h], scored[h].temperature.mae);
