@@ -17,6 +17,9 @@ struct PlantOptions {
     int batches = 10;
     int samples = 6300; ///< per batch, 1 s apart
     std::map<Mechanism, double> effects;
+    /// Time from which a mechanism acts [s since the batch start]; absent: from the start. A
+    /// fouling that sets in grows from its onset; the others switch on at it (what-if scenarios).
+    std::map<Mechanism, double> effectOnsetS;
     /// Unmeasured slow drift of the leaf's drying behaviour (k_HDT wanders ±5 %), as in the demo.
     bool unmeasuredDrift = false;
     double targetXOutPct = 13.0; ///< setpoint of the plant's own moisture controller
