@@ -165,9 +165,13 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     auto* mpc = app.add_subcommand("mpc", "closed-loop what-if scenario, one row per controller model");
     addData(mpc);
     mpc->add_option("--model", o.modelPath, "model file")->required();
-    mpc->add_option("--scenario", o.scenarioPath, "scenario file");
+    mpc->add_option("--scenario", o.scenarioPath,
+                    "scenario file (docs/mpc.md); default: the bundled paper_like_1000, or a bundled name");
+    mpc->add_option("--controllers", o.controllers,
+                    "comma-separated subset of pbm, ext_input_residual, lstm, pgrl_cc, pi (default: all)")
+        ->delimiter(',');
     mpc->add_option("--json", o.jsonPath, "write the results as JSON");
-    reg(mpc, [](const CommandOptions&) { return notImplemented("mpc"); });
+    reg(mpc, runMpc);
 
     auto* ablation = app.add_subcommand("ablation", "the ablation table of the paper's Table 3");
     addData(ablation);

@@ -19,6 +19,7 @@ struct CommandOptions {
     std::string diagnosticsPath; ///< evaluate: residual ACF, PSD and eigenvalues as JSON
     std::string truthPath;
     std::string scenarioPath;
+    std::vector<std::string> controllers; ///< mpc: a subset of the controllers
     unsigned seed = 1;
     int batches = 10;
     int samples = 6300;
@@ -53,5 +54,6 @@ int runTrain(const CommandOptions& o);
 int runAblation(const CommandOptions& o);
 int runDiscover(const CommandOptions& o);
 int runPipeline(const CommandOptions& o);
+int runMpc(const CommandOptions& o);
 
 } // namespace drytwin::app

@@ -304,6 +304,85 @@ LstmBaseline::predictHorizons(const residual::BatchView& v, const std::vector<in
     return out;
 }
 
+struct LstmBaseline::Follower::State {
+    torch::Tensor h, c;
+    std::size_t last = static_cast<std::size_t>(-1);
+};
+
+LstmBaseline::Follower::Follower(const LstmBaseline& model)
+    : m_model(&model), m_state(std::make_unique<State>()) {
+    m_state->h = torch::zeros({1, 1, model.m_impl->options.hidden});
+    m_state->c = torch::zeros({1, 1, model.m_impl->options.hidden});
+}
+LstmBaseline::Follower::~Follower() = default;
+LstmBaseline::Follower::Follower(Follower&&) noexcept = default;
+
+std::size_t LstmBaseline::Follower::lastRow() const {
+    return m_state->last;
+}
+
+void LstmBaseline::Follower::advanceTo(const data::SiBatch& record, std::size_t row) {
+    torch::NoGradGuard noGrad;
+    const auto& im = *m_model->m_impl;
+    auto& st = *m_state;
+    const std::size_t from = st.last == static_cast<std::size_t>(-1) ? 0 : st.last + 1;
+    if (row < from || row >= record.rows()) {
+        return;
+    }
+    const torch::Tensor f = torch::nan_to_num(im.features(record, from, row + 1).to(torch::kFloat32), 0.0);
+    auto r = im.net->lstm->forward(f, std::make_tuple(st.h, st.c));
+    st.h = std::get<0>(std::get<1>(r));
+    st.c = std::get<1>(std::get<1>(r));
+    st.last = row;
+}
+
+std::vector<residual::HybridPrediction>
+LstmBaseline::Follower::forecast(const std::vector<const data::SiBatch*>& candidates, int horizon) const {
+    torch::NoGradGuard noGrad;
+    const auto& im = *m_model->m_impl;
+    const auto count = static_cast<std::size_t>(std::max(0, horizon));
+    std::vector<residual::HybridPrediction> out(candidates.size(), residual::HybridPrediction::unknown(count));
+    const std::size_t origin = m_state->last;
+    if (candidates.empty() || count == 0 || origin == static_cast<std::size_t>(-1)) {
+        return out;
+    }
+    std::size_t rows = count;
+    for (const auto* c : candidates) {
+        rows = std::min(rows, c->rows() > origin + 1 ? c->rows() - origin - 1 : std::size_t{0});
+    }
+    // Inputs of every candidate's rows origin+1 … origin+rows−1, batched over the candidates.
+    std::vector<torch::Tensor> inputs;
+    for (const auto* c : candidates) {
+        inputs.push_back(torch::nan_to_num(im.features(*c, origin + 1, origin + std::max<std::size_t>(rows, 1))
+                                               .to(torch::kFloat32),
+                                           0.0));
+    }
+    const auto nc = static_cast<long>(candidates.size());
+    const torch::Tensor f = rows > 1 ? torch::cat(inputs, 0) : torch::Tensor(); // [candidates, rows−1, inputs]
+    torch::Tensor hState = m_state->h.expand({1, nc, im.options.hidden}).contiguous();
+    torch::Tensor cState = m_state->c.expand({1, nc, im.options.hidden}).contiguous();
+    torch::Tensor y = im.net->head->forward(hState.squeeze(0)); // row origin+1, standardised
+    for (std::size_t step = 0; step < rows; ++step) {
+        const auto acc = y.to(torch::kFloat64).contiguous();
+        const auto a = acc.accessor<double, 2>();
+        for (long c = 0; c < nc; ++c) {
+            out[static_cast<std::size_t>(c)].xOutPct[step] = a[c][0] * im.scale[6] + im.mean[6];
+            out[static_cast<std::size_t>(c)].tOutC[step] = a[c][1] * im.scale[7] + im.mean[7];
+        }
+        if (step + 1 == rows) {
+            break;
+        }
+        // Inputs of the next row, outputs replaced by the model's own prediction.
+        torch::Tensor in = f.slice(1, static_cast<long>(step), static_cast<long>(step) + 1).clone();
+        in.slice(2, kInputs - kOutputs, kInputs) = y.unsqueeze(1);
+        auto r = im.net->lstm->forward(in, std::make_tuple(hState, cState));
+        hState = std::get<0>(std::get<1>(r));
+        cState = std::get<1>(std::get<1>(r));
+        y = im.net->head->forward(hState.squeeze(0));
+    }
+    return out;
+}
+
 std::string LstmBaseline::toJson() const {
     const auto& im = *m_impl;
     nlohmann::json j;

@@ -42,6 +42,31 @@ public:
     std::vector<residual::HybridPrediction> predictHorizons(const residual::BatchView& view,
                                                             const std::vector<int>& horizons) const;
 
+    /// @brief Carries the network's state along a growing record one row at a time and forecasts
+    /// from its end, so that a closed loop costs one cell step per sample instead of a pass over
+    /// the whole record at every decision. Starts, like predictAhead, from a zero state at row 0.
+    class Follower {
+    public:
+        explicit Follower(const LstmBaseline& model);
+        ~Follower();
+        Follower(Follower&&) noexcept;
+        Follower& operator=(Follower&&) = delete;
+        /// @brief Feeds rows up to and including @p row of @p record (inputs and measured outputs).
+        void advanceTo(const data::SiBatch& record, std::size_t row);
+        /// @brief Forecasts rows origin+1 … origin+horizon for each candidate, where origin is the
+        /// last row fed and each candidate is the record with the inputs a plan would give after
+        /// it (outputs there are not read). Entry [c] of the result belongs to candidate c.
+        std::vector<residual::HybridPrediction> forecast(const std::vector<const data::SiBatch*>& candidates,
+                                                         int horizon) const;
+        /// @brief The last row fed (npos before the first).
+        std::size_t lastRow() const;
+
+    private:
+        struct State;
+        const LstmBaseline* m_model;
+        std::unique_ptr<State> m_state;
+    };
+
     std::string toJson() const;
     static Expected<LstmBaseline> fromJson(const std::string& json);
     double trainingSeconds() const;

@@ -117,6 +117,53 @@ std::string ablationJson(const hybrid::AblationResult& result) {
     return j.dump(2) + "\n";
 }
 
+std::string mpcJson(const control::ClosedLoopResult& result) {
+    json j;
+    const auto& sc = result.scenario;
+    j["steps"] = sc.lengthS;
+    j["scenario"] = {{"name", sc.name},
+                     {"description", sc.description},
+                     {"seed", sc.seed},
+                     {"warmup_s", sc.warmupS},
+                     {"control_interval_s", sc.controlIntervalS},
+                     {"band_pct", sc.bandPct}};
+    j["units"] = {{"iae", "% wb * s"},       {"effort", "K^2"}, {"violation_pct", "% of steps"},
+                  {"solve_ms", "ms"},        {"x_out", "% wb"}, {"t_hot", "°C"},
+                  {"time", "s from the start of the scored part"}};
+    j["termination"] = terminationName(result.ending.termination);
+    j["controllers"] = json::object();
+    for (const auto& r : result.runs) {
+        const std::string name = control::controllerName(r.kind);
+        if (!r.ran) {
+            j["skipped"][name] = r.skippedReason;
+            continue;
+        }
+        const auto& m = r.metrics;
+        j["controllers"][name] = {{"iae", m.iaePctS},
+                                  {"effort", m.effortK2},
+                                  {"violation_pct", m.violationPct},
+                                  {"solve_ms_median", m.solveMsMedian},
+                                  {"solve_ms_max", m.solveMsMax},
+                                  {"model_ms_median", m.modelMsMedian},
+                                  {"decisions", m.decisions},
+                                  {"fallbacks", m.fallbacks},
+                                  {"last_fallback_reason", m.lastFallbackReason},
+                                  {"elapsed_s", r.elapsedSeconds}};
+        json t;
+        t["time_s"] = r.timeS;
+        t["x_out_measured"] = r.xOutMeasuredPct;
+        t["x_out_true"] = r.xOutTruePct;
+        t["setpoint"] = r.setpointPct;
+        t["t_hot_setpoint"] = r.hotAirSetpointC;
+        t["t_hot"] = r.hotAirC;
+        for (const auto& p : r.predictions) {
+            t["predictions"].push_back({{"at_s", p.atS}, {"x_out", p.xOutPct}});
+        }
+        j["trajectories"][name] = t;
+    }
+    return j.dump(1) + "\n";
+}
+
 std::string residualDiagnosticsJson(const hybrid::ResidualDiagnostics& d) {
     json j;
     j["units"] = {{"moisture_residual", "% wb"}, {"psd", "(% wb)^2/Hz"}, {"frequency", "Hz"}};

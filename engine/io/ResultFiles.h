@@ -1,5 +1,7 @@
 #pragma once
 
+#include "control/ClosedLoop.h"
+
 #include "data/DataSetSummary.h"
 #include "data/SiBatch.h"
 #include "discovery/Discovery.h"
@@ -17,6 +19,10 @@ std::string evaluationJson(const evaluation::EvaluationResult& result);
 
 /// @brief The ablation table (paper Table 3) as JSON.
 std::string ablationJson(const hybrid::AblationResult& result);
+
+/// @brief `mpc --json` (CONTRACT.md §3): metrics per controller, plus the scenario, the
+/// trajectories of the scored part and the predicted horizons kept for plots.
+std::string mpcJson(const control::ClosedLoopResult& result);
 
 /// @brief Residual ACF, PSD and eigenvalues (paper Figs. 4 and 6) as JSON.
 std::string residualDiagnosticsJson(const hybrid::ResidualDiagnostics& diagnostics);

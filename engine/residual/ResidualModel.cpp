@@ -633,6 +633,42 @@ std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
     return out;
 }
 
+HybridPrediction ResidualModel::forecastFrom(const BatchView& v, std::size_t origin, int horizon) const {
+    const auto count = static_cast<std::size_t>(std::max(0, horizon));
+    HybridPrediction out = HybridPrediction::unknown(count);
+    const std::size_t n = v.batch->rows();
+    if (origin >= n || count == 0) {
+        return out;
+    }
+    const auto lags = static_cast<std::size_t>(m_options.residualLags);
+    const std::size_t first = origin + 1 > lags ? origin + 1 - lags : 0;
+    std::vector<double> ex(n, kNaN), et(n, kNaN);
+    residualsOf(v, first, origin + 1, ex, et);
+    Eigen::VectorXd x, d;
+    double u = 0;
+    if (!stateAt(v, origin, ex, et, x, u, d)) {
+        return out;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t target = origin + 1 + i;
+        if (target >= n) {
+            break;
+        }
+        x = m_a * x + m_b.col(0) * u + m_e * d;
+        const Eigen::Vector2d e = m_c * x;
+        const Eigen::Vector2d base = restoredBasePart(v, target);
+        out.residualXPct[i] = e(0) * m_eScale(0) + base(0);
+        out.residualTC[i] = e(1) * m_eScale(1) + base(1);
+        out.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[target]) + out.residualXPct[i]; // Eq. (21)
+        out.tOutC[i] = v.pbm->tOutK[target] - units::kKelvinOffset + out.residualTC[i];
+        Eigen::VectorXd z;
+        if (!features(v, target, z, u, d)) {
+            break; // inputs missing: nothing further can be forecast
+        }
+    }
+    return out;
+}
+
 HybridPrediction ResidualModel::predictFreeRun(const BatchView& v) const {
     const std::size_t count = v.rows.size();
     HybridPrediction out = HybridPrediction::unknown(count);

@@ -106,6 +106,11 @@ public:
     /// horizon curve up to 180 steps costs one pass of 2·n_x per row and step, not n_x².
     std::vector<HybridPrediction> predictHorizons(const BatchView& view,
                                                   const std::vector<int>& horizons) const;
+    /// @brief The forecast from one origin: entry h−1 predicts row origin + h (h = 1 … @p horizon)
+    /// from the residuals measured up to @p origin and the view's inputs and PBM proxies after it
+    /// (for MPC: the batch holds the candidate inputs and the PBM was run on them). Equal to
+    /// predictAhead(view, h) at row origin + h. NaN where the lags or inputs are missing.
+    HybridPrediction forecastFrom(const BatchView& view, std::size_t origin, int horizon) const;
     /// @brief Free run: the lifted state rolled from the batch's first row with inputs and PBM
     /// proxies only, never a measured output (lags start at zero), ê_k = C x_k, for the view's rows.
     HybridPrediction predictFreeRun(const BatchView& view) const;

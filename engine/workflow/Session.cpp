@@ -1,5 +1,7 @@
 #include "workflow/Session.h"
 
+#include "control/BundledScenarios.h"
+
 #include "common/AtomicFile.h"
 #include "common/Units.h"
 #include "data/BatchReader.h"
@@ -392,6 +394,35 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
     result.discovery = std::move(*found);
     m_latest.discover = result;
     return result;
+}
+
+Expected<MpcResult> Session::mpc(const MpcOptions& options, const Progress& progress) {
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    Expected<control::Scenario> scenario = Error{ErrorKind::Usage, "mpc", "no scenario"};
+    if (!options.scenarioPath.empty()) {
+        scenario = control::loadScenario(options.scenarioPath);
+    } else {
+        const auto& bundled = control::bundledScenarios();
+        const auto it = bundled.find(options.bundledScenario);
+        if (it == bundled.end()) {
+            return Error{ErrorKind::Usage, "scenario", "no bundled scenario named " + options.bundledScenario};
+        }
+        scenario = control::parseScenario(it->second, "resources/scenarios/" + it->first + ".json");
+    }
+    if (!scenario) {
+        return scenario.error();
+    }
+    auto run = control::runScenario(*scenario, m_model, options.closedLoop, progress);
+    if (!run) {
+        return run.error();
+    }
+    MpcResult out;
+    out.ending = run->ending;
+    out.closedLoop = std::move(*run);
+    m_latest.mpc = out;
+    return out;
 }
 
 Expected<hybrid::AblationResult> Session::ablation(const Progress& progress) {

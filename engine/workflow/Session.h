@@ -6,6 +6,7 @@
 #include "data/Batch.h"
 #include "data/Cleaning.h"
 #include "data/DataSetSummary.h"
+#include "control/ClosedLoop.h"
 #include "data/SiBatch.h"
 #include "discovery/Discovery.h"
 #include "hybrid/Evaluation.h"
@@ -136,6 +137,19 @@ struct DiscoverResult {
     Ending ending;
 };
 
+/// @brief A closed-loop what-if scenario against the virtual plant (CONTRACT.md §2 `mpc`).
+struct MpcOptions {
+    std::string scenarioPath;             ///< a scenario file; empty: the bundled one named below
+    std::string bundledScenario = "paper_like_1000";
+    control::ClosedLoopOptions closedLoop;
+    Status validate() const { return closedLoop.validate(); }
+};
+
+struct MpcResult {
+    control::ClosedLoopResult closedLoop;
+    Ending ending;
+};
+
 /// @brief Everything in order into a folder, with a report (CONTRACT.md §2 `pipeline`).
 struct PipelineOptions {
     std::string outFolder;
@@ -173,6 +187,7 @@ struct LatestResults {
     std::optional<EvaluateResult> evaluate;
     std::optional<hybrid::AblationResult> ablation;
     std::optional<DiscoverResult> discover;
+    std::optional<MpcResult> mpc;
 };
 
 /// @brief What a user does with DryTwin, one method per action, called alike by the command
@@ -206,6 +221,9 @@ public:
     Expected<DiscoverResult> discover(const DiscoverOptions& options = {}, const Progress& progress = {});
     /// @brief The ablation table (paper Table 3) on the current physics parameters.
     Expected<hybrid::AblationResult> ablation(const Progress& progress = {});
+    /// @brief Runs a what-if scenario once per controller (an MPC on each prediction model the
+    /// session's model holds, and the plant's PI loop). Needs no data: the plant makes its own.
+    Expected<MpcResult> mpc(const MpcOptions& options, const Progress& progress = {});
     /// @brief inspect, calibrate, train, evaluate, ablation and discover in order, each result written to
     /// the folder as it is done, then report.md. A failed or cancelled stage keeps the files
     /// of the stages before it.

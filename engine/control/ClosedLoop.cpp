@@ -1,0 +1,325 @@
+#include "control/ClosedLoop.h"
+
+#include "common/Units.h"
+#include "plant/PlantLine.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace drytwin::control {
+
+namespace {
+
+double median(std::vector<double> v) {
+    if (v.empty()) {
+        return 0;
+    }
+    const auto mid = v.begin() + static_cast<long>(v.size() / 2);
+    std::nth_element(v.begin(), mid, v.end());
+    return *mid;
+}
+
+/// Value of a scenario input at time t of the scored part: the initial level moved by the
+/// steps and ramps up to t.
+double levelAt(const Scenario& s, ScenarioInput input, double initial, double t) {
+    double level = initial;
+    for (const auto& c : s.inputChanges) {
+        if (c.input != input || t < c.atS) {
+            continue;
+        }
+        const double from = level;
+        const double w = c.durationS > 0 ? std::min(1.0, (t - c.atS) / c.durationS) : 1.0;
+        level = from + w * (c.to - from);
+    }
+    return level;
+}
+
+/// The true disturbances of a scenario run: levels from the scenario, with small random
+/// fluctuations of the plant's own kinds (seeded, the same for every controller).
+plant::PlantDisturbances scenarioDisturbances(const Scenario& s, std::mt19937_64& rng) {
+    const auto n = static_cast<std::size_t>(s.warmupS + s.lengthS + 1);
+    plant::PlantDisturbances d;
+    for (auto* v : {&d.feedKgPerS, &d.xInDb, &d.tInK, &d.tAmbK, &d.rhAmb, &d.airSpeedMPerS}) {
+        v->resize(n);
+    }
+    d.kDrift.assign(n, 1.0);
+    std::normal_distribution<double> unit(0, 1);
+    // Ornstein-Uhlenbeck fluctuations as in the plant's own batches, scaled by the scenario.
+    struct Ou {
+        double a, s, x = 0;
+        double next(std::mt19937_64& g, std::normal_distribution<double>& u) { return x = a * x + s * u(g); }
+    };
+    const auto ou = [&](double tau, double sigma) {
+        const double a = std::exp(-1.0 / tau);
+        return Ou{a, s.fluctuation * sigma * std::sqrt(1 - a * a)};
+    };
+    Ou feed = ou(120, 25), xIn = ou(900, 0.0045), tIn = ou(600, 0.8), tAmb = ou(1800, 0.6), rh = ou(1200, 0.03),
+       air = ou(60, 0.1);
+    Ou drift{std::exp(-1.0 / 2400), 0.05 * std::sqrt(1 - std::exp(-2.0 / 2400))};
+    for (std::size_t k = 0; k < n; ++k) {
+        const double t = static_cast<double>(k) - s.warmupS;
+        d.feedKgPerS[k] = units::kgPerHourToKgPerS(levelAt(s, ScenarioInput::Feed, s.feedKgH, t) + feed.next(rng, unit));
+        const double xWb = std::clamp(levelAt(s, ScenarioInput::InletMoisture, s.xInPct, t) / 100 + xIn.next(rng, unit),
+                                      0.12, 0.32);
+        d.xInDb[k] = xWb / (1 - xWb);
+        d.tInK[k] = units::kKelvinOffset + s.tInC + tIn.next(rng, unit);
+        d.tAmbK[k] = units::kKelvinOffset + levelAt(s, ScenarioInput::Ambient, s.tAmbC, t) + tAmb.next(rng, unit);
+        d.rhAmb[k] =
+            std::clamp(levelAt(s, ScenarioInput::Humidity, s.rhPct, t) / 100 + rh.next(rng, unit), 0.05, 0.95);
+        d.airSpeedMPerS[k] = s.airSpeedMPerS + air.next(rng, unit);
+        if (s.unmeasuredDrift) {
+            d.kDrift[k] = 1.0 + drift.next(rng, unit);
+        }
+    }
+    return d;
+}
+
+/// The record of the run so far as the controller's batch (SI, dry basis).
+void appendOutputs(data::SiBatch& b, const plant::PlantSample& s) {
+    b.xOutDb.push_back(units::wetPctToDry(s.xOutPct));
+    b.tOutK.push_back(s.tOutK);
+    b.xHdtDb.push_back(units::wetPctToDry(s.xHdtPct));
+    b.tHdtK.push_back(s.tHdtK);
+    b.keep.push_back(1);
+}
+
+void appendInputs(data::SiBatch& b, const plant::PlantBatch& rec, std::size_t k) {
+    b.timeS.push_back(static_cast<double>(k));
+    b.tHotSpK.push_back(rec.tHotSpK[k]);
+    b.tHotK.push_back(rec.tHotK[k]);
+    b.airSpeedMPerS.push_back(rec.airSpeedMPerS[k]);
+    b.feedKgPerS.push_back(rec.feedKgPerS[k]);
+    b.xInDb.push_back(rec.xInDb[k]);
+    b.tInK.push_back(rec.tInK[k]);
+    b.tAmbK.push_back(rec.tAmbK[k]);
+    b.rhAmb.push_back(rec.rhAmb[k]);
+}
+
+std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybrid::HybridModel& m,
+                                                std::string& missing) {
+    switch (kind) {
+    case ControllerKind::Pbm:
+        return pbmForecaster(m.parameters, m.simulationOptions());
+    case ControllerKind::PgrlCc:
+        if (!m.pgrlCc) {
+            missing = "the model file holds no PGRL-CC residual model (run train)";
+            return nullptr;
+        }
+        return residualForecaster(m.parameters, m.simulationOptions(), m.pgrlCc);
+    case ControllerKind::ExtInputResidual:
+        if (!m.extInput) {
+            missing = "the model file holds no external-input residual model (run train)";
+            return nullptr;
+        }
+        return residualForecaster(m.parameters, m.simulationOptions(), m.extInput);
+    case ControllerKind::Lstm:
+        if (!m.lstm) {
+            missing = "the model file holds no LSTM (run train; needs libtorch)";
+            return nullptr;
+        }
+        return lstmForecaster(m.lstm);
+    case ControllerKind::Pi:
+        break;
+    }
+    return nullptr;
+}
+
+} // namespace
+
+const char* controllerName(ControllerKind k) {
+    switch (k) {
+    case ControllerKind::Pbm:
+        return "pbm";
+    case ControllerKind::ExtInputResidual:
+        return "ext_input_residual";
+    case ControllerKind::Lstm:
+        return "lstm";
+    case ControllerKind::PgrlCc:
+        return "pgrl_cc";
+    case ControllerKind::Pi:
+        return "pi";
+    }
+    return "pi";
+}
+
+std::optional<ControllerKind> controllerByName(const std::string& name) {
+    for (auto k : {ControllerKind::Pbm, ControllerKind::ExtInputResidual, ControllerKind::Lstm, ControllerKind::PgrlCc,
+                   ControllerKind::Pi}) {
+        if (name == controllerName(k)) {
+            return k;
+        }
+    }
+    return std::nullopt;
+}
+
+ClosedLoopMetrics trajectoryMetrics(const std::vector<double>& x, const std::vector<double>& sp,
+                                    const std::vector<double>& u, double band, double uBefore) {
+    ClosedLoopMetrics m;
+    const std::size_t n = std::min({x.size(), sp.size(), u.size()});
+    std::size_t outside = 0;
+    double prev = uBefore;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double e = x[k] - sp[k];
+        m.iaePctS += std::abs(e); // samples are 1 s apart
+        if (std::abs(e) > band) {
+            ++outside;
+        }
+        m.effortK2 += (u[k] - prev) * (u[k] - prev);
+        prev = u[k];
+    }
+    m.violationPct = n > 0 ? 100.0 * static_cast<double>(outside) / static_cast<double>(n) : 0.0;
+    return m;
+}
+
+plant::PlantOptions scenarioPlantOptions(const Scenario& s) {
+    plant::PlantOptions o;
+    o.seed = s.seed;
+    o.batches = 1;
+    o.samples = s.warmupS + s.lengthS + 1;
+    o.noiseScale = s.noiseScale;
+    o.unmeasuredDrift = s.unmeasuredDrift;
+    o.targetXOutPct = s.setpointPct;
+    for (const auto& m : s.mechanisms) {
+        o.effects[m.mechanism] = m.strength;
+        if (m.atS > 0) {
+            o.effectOnsetS[m.mechanism] = s.warmupS + m.atS;
+        }
+    }
+    return o;
+}
+
+Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::HybridModel& model,
+                                       const ClosedLoopOptions& options, const Progress& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    if (auto st = scenario.validate(); !st) {
+        return st.error();
+    }
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    const plant::PlantOptions plantOptions = scenarioPlantOptions(scenario);
+    if (auto st = plantOptions.validate(); !st) {
+        return st.error();
+    }
+    std::vector<double> snapshotTimes = options.predictionTimesS;
+    if (snapshotTimes.empty()) {
+        snapshotTimes.push_back(60);
+        for (const auto& step : scenario.setpointSteps) {
+            snapshotTimes.push_back(step.atS + 60);
+        }
+    }
+    ClosedLoopResult result;
+    result.scenario = scenario;
+    const auto warm = static_cast<std::size_t>(scenario.warmupS);
+    const std::size_t total = warm + static_cast<std::size_t>(scenario.lengthS);
+    const double tauAct = model.parameters[properties::Param::tau_act];
+    bool stopped = false;
+    for (std::size_t c = 0; c < options.controllers.size() && !stopped; ++c) {
+        const ControllerKind kind = options.controllers[c];
+        const auto runStart = std::chrono::steady_clock::now();
+        ControllerRun run;
+        run.kind = kind;
+        std::unique_ptr<MpcController> mpc;
+        if (kind != ControllerKind::Pi) {
+            std::string missing;
+            auto f = forecasterFor(kind, model, missing);
+            if (!f) {
+                run.skippedReason = missing;
+                result.runs.push_back(std::move(run));
+                continue;
+            }
+            mpc = std::make_unique<MpcController>(std::move(f), options.mpc, tauAct);
+            if (mpc->historyNeeded() > warm) {
+                return Error{ErrorKind::BadInput, "scenario " + scenario.name,
+                             "warmup_s must be at least " + std::to_string(mpc->historyNeeded()) +
+                                 " s: the " + controllerName(kind) + " model needs that much history"};
+            }
+        }
+        // Every run sees the same disturbances and noise: fresh generators from the same seed.
+        std::mt19937_64 disturbanceRng(scenario.seed);
+        plant::PlantRandom random(scenario.seed + 1);
+        const double initialSp = units::kKelvinOffset + 170 + 8.0 * (scenario.xInPct - 22.0);
+        plant::PlantLine line(plantOptions, scenarioDisturbances(scenario, disturbanceRng), initialSp, random);
+        plant::PlantPiController pi;
+        data::SiBatch record;
+        record.id = scenario.name;
+        record.hasXHdt = record.hasTHdt = true;
+        double lastSp = initialSp;
+        std::vector<double> solveMs, modelMs;
+        std::size_t nextSnapshot = 0;
+        std::sort(snapshotTimes.begin(), snapshotTimes.end());
+        for (std::size_t k = 0; k < total; ++k) {
+            const plant::PlantSample s = line.measure();
+            appendOutputs(record, s);
+            const double t = static_cast<double>(k) - static_cast<double>(warm);
+            const double target = k < warm ? scenario.setpointPct : scenario.setpointAt(t);
+            double sp = lastSp;
+            if (kind == ControllerKind::Pi || k < warm) {
+                sp = pi.next(s.xOutPct, s.xInTruePct, target);
+            } else if ((k - warm) % static_cast<std::size_t>(scenario.controlIntervalS) == 0) {
+                const MpcDecision d =
+                    mpc->decide(DecisionPoint{&record, k}, lastSp, target, scenario.bandPct, scenario.controlIntervalS);
+                sp = d.setpointK;
+                ++run.metrics.decisions;
+                solveMs.push_back(1e3 * d.solveSeconds);
+                modelMs.push_back(1e3 * d.modelSeconds);
+                if (d.fallback) {
+                    ++run.metrics.fallbacks;
+                    run.metrics.lastFallbackReason = d.fallbackReason;
+                }
+                if (nextSnapshot < snapshotTimes.size() && t >= snapshotTimes[nextSnapshot] && !d.predictedXPct.empty()) {
+                    run.predictions.push_back({t, d.predictedXPct});
+                    while (nextSnapshot < snapshotTimes.size() && t >= snapshotTimes[nextSnapshot]) {
+                        ++nextSnapshot;
+                    }
+                }
+            }
+            if (k >= warm) {
+                run.timeS.push_back(t);
+                run.xOutMeasuredPct.push_back(s.xOutPct);
+                run.xOutTruePct.push_back(s.xOutTruePct);
+                run.setpointPct.push_back(target);
+                run.hotAirSetpointC.push_back(units::kelvinToCelsius(sp));
+                run.hotAirC.push_back(units::kelvinToCelsius(line.hotAirK()));
+            }
+            line.apply(sp);
+            appendInputs(record, line.record(), k);
+            lastSp = sp;
+            if (k % 50 == 0 &&
+                reportProgress(progress, "mpc",
+                               (static_cast<double>(c) + static_cast<double>(k) / static_cast<double>(total)) /
+                                   static_cast<double>(options.controllers.size()),
+                               std::string(controllerName(kind)) + ", step " + std::to_string(k) + "/" +
+                                   std::to_string(total))) {
+                stopped = true;
+                break;
+            }
+        }
+        // Metrics over the scored samples.
+        // Moves in °C equal moves in K.
+        const double beforeC = warm > 0 ? units::kelvinToCelsius(line.record().tHotSpK[warm - 1]) : units::kelvinToCelsius(initialSp);
+        const ClosedLoopMetrics m =
+            trajectoryMetrics(run.xOutTruePct, run.setpointPct, run.hotAirSetpointC, scenario.bandPct, beforeC);
+        run.metrics.iaePctS = m.iaePctS;
+        run.metrics.effortK2 = m.effortK2;
+        run.metrics.violationPct = m.violationPct;
+        run.metrics.solveMsMedian = median(solveMs);
+        run.metrics.solveMsMax = solveMs.empty() ? 0 : *std::max_element(solveMs.begin(), solveMs.end());
+        run.metrics.modelMsMedian = median(modelMs);
+        run.ran = true;
+        run.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
+        result.runs.push_back(std::move(run));
+    }
+    result.ending.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (stopped) {
+        result.ending.termination = Termination::StoppedKeptBest;
+        result.ending.message = "stopped by the user; the runs so far are kept, the last one is partial";
+    } else {
+        result.ending.message = "scenario " + scenario.name + ": " + std::to_string(result.runs.size()) +
+                                " controllers, " + std::to_string(scenario.lengthS) + " scored steps";
+    }
+    return result;
+}
+
+} // namespace drytwin::control

@@ -1,0 +1,88 @@
+#pragma once
+
+#include "common/Error.h"
+#include "common/Progress.h"
+#include "control/Mpc.h"
+#include "control/Scenario.h"
+#include "hybrid/HybridModel.h"
+#include "plant/VirtualPlant.h"
+
+#include <optional>
+
+#include <string>
+#include <vector>
+
+namespace drytwin::control {
+
+/// @brief The controllers a scenario can compare: an MPC on each prediction model, and the
+/// plant's own PI loop. Names are the model keys of CONTRACT.md §3.
+enum class ControllerKind { Pbm, ExtInputResidual, Lstm, PgrlCc, Pi };
+const char* controllerName(ControllerKind k);
+std::optional<ControllerKind> controllerByName(const std::string& name);
+
+/// @brief Closed-loop metrics over the scored part (paper Table 2).
+struct ClosedLoopMetrics {
+    double iaePctS = 0;       ///< Σ |X_out − setpoint| · 1 s over the product's true outlet moisture [%·s]
+    double effortK2 = 0;      ///< Σ Δu² of the hot-air setpoint, one term per sample [K²]
+    double violationPct = 0;  ///< share of samples with the true X_out outside setpoint ± band [%]
+    double solveMsMedian = 0; ///< Ipopt time per decision [ms]
+    double solveMsMax = 0;
+    double modelMsMedian = 0; ///< forecasts and linearisation per decision [ms]
+    int decisions = 0;
+    int fallbacks = 0;
+    std::string lastFallbackReason;
+};
+
+/// @brief The computed metrics of a trajectory: X_out true [% wb], setpoint [% wb] and the
+/// applied hot-air setpoint [K] per sample (1 s), the band half-width, and the setpoint applied
+/// before the first sample (for the first Δu).
+ClosedLoopMetrics trajectoryMetrics(const std::vector<double>& xOutPct, const std::vector<double>& setpointPct,
+                                    const std::vector<double>& hotAirSetpointK, double bandPct,
+                                    double setpointBeforeK);
+
+/// @brief The horizon a controller predicted at one decision.
+struct PredictionSnapshot {
+    double atS = 0;                 ///< time of the decision in the scored part
+    std::vector<double> xOutPct;    ///< rows at … at+horizon
+};
+
+/// @brief One controller's run.
+struct ControllerRun {
+    ControllerKind kind = ControllerKind::Pi;
+    bool ran = false;               ///< false when the model holds no such prediction model
+    std::string skippedReason;
+    ClosedLoopMetrics metrics;
+    // Trajectories of the scored part, one entry per second.
+    std::vector<double> timeS, xOutMeasuredPct, xOutTruePct, setpointPct, hotAirSetpointC, hotAirC;
+    std::vector<PredictionSnapshot> predictions;
+    double elapsedSeconds = 0;
+};
+
+struct ClosedLoopOptions {
+    MpcSettings mpc;
+    std::vector<ControllerKind> controllers = {ControllerKind::Pbm, ControllerKind::ExtInputResidual,
+                                               ControllerKind::Lstm, ControllerKind::PgrlCc, ControllerKind::Pi};
+    /// Times in the scored part [s] whose predicted horizons are kept for plots (empty: one
+    /// minute after each setpoint step and at the start).
+    std::vector<double> predictionTimesS;
+    Status validate() const { return mpc.validate(); }
+};
+
+struct ClosedLoopResult {
+    Scenario scenario;
+    std::vector<ControllerRun> runs;
+    Ending ending;
+};
+
+/// @brief Runs the scenario once per controller against the virtual plant, each run seeing the
+/// same disturbances and instrument noise. The plant carries the scenario's mechanisms in its
+/// own forms and true parameters (plant::PlantOptions::defaultTruth), never the controller's
+/// model. Cancel (Stop) ends after the current sample with the runs done so far and the
+/// current one's scored steps (Ending says so).
+Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::HybridModel& model,
+                                       const ClosedLoopOptions& options, const Progress& progress = {});
+
+/// @brief The plant options and disturbances a scenario implies (for the GUI and tests).
+plant::PlantOptions scenarioPlantOptions(const Scenario& scenario);
+
+} // namespace drytwin::control

@@ -1,0 +1,199 @@
+#include "control/Forecasters.h"
+
+#include "common/Units.h"
+
+#include <cmath>
+#include <limits>
+
+namespace drytwin::control {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// Rows before the first row a forecast reads that the PBM needs as input history: the parcel
+/// leaving at a row entered the line the total transport delay earlier.
+std::size_t pbmLead(const properties::ParameterSet& p) {
+    return static_cast<std::size_t>(std::ceil(physics::totalDelay(p))) + 3;
+}
+
+class PbmForecaster : public OutletForecaster {
+public:
+    PbmForecaster(properties::ParameterSet p, physics::SimulationOptions o) : m_p(std::move(p)), m_o(std::move(o)) {}
+
+    std::size_t historyNeeded() const override { return pbmLead(m_p); }
+
+    Expected<std::vector<std::vector<double>>> forecast(const DecisionPoint& at,
+                                                        const std::vector<std::vector<double>>& plans,
+                                                        int horizon) override {
+        const std::size_t lead = pbmLead(m_p);
+        const std::size_t from = at.now > lead ? at.now - lead : 0;
+        std::vector<std::size_t> rows;
+        for (std::size_t r = at.now; r <= at.now + static_cast<std::size_t>(horizon); ++r) {
+            rows.push_back(r - from);
+        }
+        std::vector<std::vector<double>> out;
+        for (const auto& plan : plans) {
+            const data::SiBatch w = planWindow(at, from, plan, horizon);
+            auto sim = physics::simulateLine(physics::toLineInputs(w), m_p, m_o, rows);
+            if (!sim) {
+                return sim.error();
+            }
+            std::vector<double> x(rows.size());
+            for (std::size_t i = 0; i < rows.size(); ++i) {
+                x[i] = units::dryToWetPct(sim->xOutDb[i]);
+            }
+            out.push_back(std::move(x));
+        }
+        return out;
+    }
+
+private:
+    properties::ParameterSet m_p;
+    physics::SimulationOptions m_o;
+};
+
+class ResidualForecaster : public OutletForecaster {
+public:
+    ResidualForecaster(properties::ParameterSet p, physics::SimulationOptions o,
+                       std::shared_ptr<const residual::ResidualModel> m)
+        : m_p(std::move(p)), m_o(std::move(o)), m_model(std::move(m)) {}
+
+    std::size_t historyNeeded() const override { return pbmLead(m_p) + lags(); }
+
+    Expected<std::vector<std::vector<double>>> forecast(const DecisionPoint& at,
+                                                        const std::vector<std::vector<double>>& plans,
+                                                        int horizon) override {
+        // The view starts where the residual model's lags (and the PBM-change features) begin;
+        // the PBM's input history reaches a transport delay further back.
+        const std::size_t back = lags();
+        const std::size_t viewFrom = at.now > back ? at.now - back : 0;
+        const std::size_t lead = pbmLead(m_p);
+        const std::size_t from = viewFrom > lead ? viewFrom - lead : 0;
+        if (at.now < 1) {
+            return Error{ErrorKind::Numerical, "residual forecast", "needs at least one recorded row"};
+        }
+        std::vector<std::vector<double>> out;
+        for (const auto& plan : plans) {
+            const data::SiBatch w = planWindow(at, from, plan, horizon);
+            std::vector<std::size_t> rows;
+            for (std::size_t r = viewFrom; r < w.rows() + from; ++r) {
+                rows.push_back(r - from);
+            }
+            auto sim = physics::simulateLine(physics::toLineInputs(w), m_p, m_o, rows);
+            if (!sim) {
+                return sim.error();
+            }
+            // The view's batch: the window's rows from viewFrom, aligned with the simulation.
+            const data::SiBatch v = planWindow(at, viewFrom, plan, horizon);
+            residual::BatchView view{&v, &*sim, {0, v.rows()}};
+            const std::size_t origin = at.now - 1 - viewFrom;
+            const auto p = m_model->forecastFrom(view, origin, horizon + 1);
+            out.push_back(p.xOutPct);
+        }
+        return out;
+    }
+
+private:
+    std::size_t lags() const { return static_cast<std::size_t>(m_model->options().residualLags) + 4; }
+    properties::ParameterSet m_p;
+    physics::SimulationOptions m_o;
+    std::shared_ptr<const residual::ResidualModel> m_model;
+};
+
+class LstmForecaster : public OutletForecaster {
+public:
+    explicit LstmForecaster(std::shared_ptr<const baselines::LstmBaseline> m)
+        : m_model(std::move(m)), m_follower(*m_model) {}
+
+    std::size_t historyNeeded() const override { return 2; }
+
+    Expected<std::vector<std::vector<double>>> forecast(const DecisionPoint& at,
+                                                        const std::vector<std::vector<double>>& plans,
+                                                        int horizon) override {
+        if (at.now < 1) {
+            return Error{ErrorKind::Numerical, "LSTM forecast", "needs at least one recorded row"};
+        }
+        // The network is carried to row now−1, whose inputs and outputs are both recorded.
+        m_follower.advanceTo(*at.record, at.now - 1);
+        std::vector<data::SiBatch> windows;
+        windows.reserve(plans.size());
+        for (const auto& plan : plans) {
+            windows.push_back(planWindow(at, 0, plan, horizon));
+        }
+        std::vector<const data::SiBatch*> ptrs;
+        for (const auto& w : windows) {
+            ptrs.push_back(&w);
+        }
+        const auto p = m_follower.forecast(ptrs, horizon + 1);
+        std::vector<std::vector<double>> out;
+        for (const auto& one : p) {
+            out.push_back(one.xOutPct);
+        }
+        return out;
+    }
+
+private:
+    std::shared_ptr<const baselines::LstmBaseline> m_model;
+    baselines::LstmBaseline::Follower m_follower;
+};
+
+} // namespace
+
+data::SiBatch planWindow(const DecisionPoint& at, std::size_t from, const std::vector<double>& plan, int horizon) {
+    const data::SiBatch& r = *at.record;
+    const std::size_t end = at.now + static_cast<std::size_t>(horizon) + 1;
+    const std::size_t known = std::min(at.now, r.tHotK.size()); // rows with recorded inputs
+    data::SiBatch w;
+    w.id = r.id;
+    w.hasXHdt = r.hasXHdt;
+    w.hasTHdt = r.hasTHdt;
+    const std::size_t n = end - from;
+    for (auto* v : {&w.timeS, &w.tHotSpK, &w.tHotK, &w.airSpeedMPerS, &w.feedKgPerS, &w.xInDb, &w.tInK, &w.tAmbK,
+                    &w.rhAmb, &w.xHdtDb, &w.tHdtK, &w.xOutDb, &w.tOutK}) {
+        v->assign(n, kNaN);
+    }
+    w.keep.assign(n, 1);
+    const std::size_t last = known > 0 ? known - 1 : 0;
+    for (std::size_t k = from; k < end; ++k) {
+        const std::size_t i = k - from;
+        const std::size_t src = std::min(k, last); // disturbances held at their last recorded value
+        w.timeS[i] = static_cast<double>(k);
+        w.airSpeedMPerS[i] = r.airSpeedMPerS[src];
+        w.feedKgPerS[i] = r.feedKgPerS[src];
+        w.xInDb[i] = r.xInDb[src];
+        w.tInK[i] = r.tInK[src];
+        w.tAmbK[i] = r.tAmbK[src];
+        w.rhAmb[i] = r.rhAmb[src];
+        if (k < at.now) {
+            w.tHotK[i] = r.tHotK[k];
+            w.tHotSpK[i] = r.tHotSpK[k];
+        } else {
+            const std::size_t j = std::min(k - at.now, plan.size() - 1);
+            w.tHotK[i] = w.tHotSpK[i] = plan[j];
+        }
+        if (k <= at.now && k < r.xOutDb.size()) {
+            w.xOutDb[i] = r.xOutDb[k];
+            w.tOutK[i] = r.tOutK[k];
+            w.xHdtDb[i] = r.xHdtDb[k];
+            w.tHdtK[i] = r.tHdtK[k];
+        }
+    }
+    return w;
+}
+
+std::unique_ptr<OutletForecaster> pbmForecaster(properties::ParameterSet params, physics::SimulationOptions options) {
+    return std::make_unique<PbmForecaster>(std::move(params), std::move(options));
+}
+
+std::unique_ptr<OutletForecaster> residualForecaster(properties::ParameterSet params,
+                                                     physics::SimulationOptions options,
+                                                     std::shared_ptr<const residual::ResidualModel> model) {
+    return std::make_unique<ResidualForecaster>(std::move(params), std::move(options), std::move(model));
+}
+
+std::unique_ptr<OutletForecaster> lstmForecaster(std::shared_ptr<const baselines::LstmBaseline> model) {
+    return std::make_unique<LstmForecaster>(std::move(model));
+}
+
+} // namespace drytwin::control
