@@ -627,8 +627,8 @@ int runMpc(const CommandOptions& o) {
     std::printf("Scenario %s: %d scored steps of 1 s after %d s of PI warm-up, MPC every %d s, band ±%.2f %% wb\n",
                 r.scenario.name.c_str(), r.scenario.lengthS, r.scenario.warmupS, r.scenario.controlIntervalS,
                 r.scenario.bandPct);
-    std::printf("\n%-20s %12s %12s %10s %11s %11s %11s %9s\n", "controller", "IAE [%*s]", "effort [K^2]",
-                "viol. [%]", "solve med", "solve max", "model med", "fallback");
+    std::printf("\n%-20s %12s %12s %10s %11s %11s %11s %9s %12s\n", "controller", "IAE [%*s]", "effort [K^2]",
+                "viol. [%]", "solve med", "solve max", "model med", "fallback", "gain [%/K]");
     for (const auto& run : r.runs) {
         if (!run.ran) {
             std::printf("%-20s skipped: %s\n", control::controllerName(run.kind), run.skippedReason.c_str());
@@ -639,17 +639,38 @@ int runMpc(const CommandOptions& o) {
             std::printf("%-20s %12.1f %12.1f %10.1f %11s %11s %11s %9s\n", "pi (plant's own)", m.iaePctS, m.effortK2,
                         m.violationPct, "-", "-", "-", "-");
         } else {
-            std::printf("%-20s %12.1f %12.1f %10.1f %8.2f ms %8.2f ms %8.2f ms %4d/%-4d\n",
+            std::printf("%-20s %12.1f %12.1f %10.1f %8.2f ms %8.2f ms %8.2f ms %4d/%-4d %12.4f\n",
                         control::controllerName(run.kind), m.iaePctS, m.effortK2, m.violationPct, m.solveMsMedian,
-                        m.solveMsMax, m.modelMsMedian, m.fallbacks, m.decisions);
+                        m.solveMsMax, m.modelMsMedian, m.fallbacks, m.decisions, m.gainPctPerKMedian);
         }
         if (m.fallbacks > 0) {
             std::printf("%-20s last fallback: %s\n", "", m.lastFallbackReason.c_str());
         }
     }
     std::printf("\nIAE and violations on the product's true outlet moisture; solve = Ipopt per decision, model = "
-                "forecasts and linearisation. %.1f s\n",
-                result->ending.elapsedSeconds);
+                "forecasts and linearisation; gain = the model's steady dX_out/dT_hot (the plant's: %.4f %%/K).\n",
+                r.plantGainPctPerK);
+    std::printf("\nWhy the ranking: each model forecasting the PI run as its MPC would (disturbances held, same "
+                "update), MAE of X_out [%% wb]\n%-20s", "model");
+    bool header = false;
+    for (const auto& run : r.runs) {
+        if (!run.forecastCheck) {
+            continue;
+        }
+        if (!header) {
+            for (int h : run.forecastCheck->horizonsS) {
+                std::printf(" %9d s", h);
+            }
+            std::printf("\n");
+            header = true;
+        }
+        std::printf("%-20s", control::controllerName(run.kind));
+        for (double m : run.forecastCheck->maePct) {
+            std::printf(" %11.4f", m);
+        }
+        std::printf("\n");
+    }
+    std::printf("\n%.1f s\n", result->ending.elapsedSeconds);
     if (result->ending.termination == Termination::StoppedKeptBest) {
         std::printf("%s\n", result->ending.message.c_str());
     }

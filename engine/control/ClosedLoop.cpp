@@ -125,6 +125,73 @@ std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybri
     return nullptr;
 }
 
+/// The plant's steady gain: two runs at fixed setpoints 2 K apart, without noise or
+/// fluctuation, compared after the line has settled.
+double plantGain(const Scenario& scenario, const plant::PlantOptions& plantOptions, double setpointK) {
+    Scenario calm = scenario;
+    calm.fluctuation = 0;
+    calm.unmeasuredDrift = false;
+    calm.lengthS = 10;
+    plant::PlantOptions o = plantOptions;
+    o.noiseScale = 0;
+    o.unmeasuredDrift = false;
+    o.samples = calm.warmupS + calm.lengthS + 1;
+    double x[2] = {0, 0};
+    for (int i = 0; i < 2; ++i) {
+        std::mt19937_64 rng(scenario.seed);
+        plant::PlantRandom random(scenario.seed + 1);
+        const double sp = setpointK + 2.0 * i;
+        plant::PlantLine line(o, scenarioDisturbances(calm, rng), sp, random);
+        for (std::size_t k = 0; k < line.size(); ++k) {
+            x[i] = line.measure().xOutTruePct;
+            line.apply(sp);
+        }
+    }
+    return (x[1] - x[0]) / 2.0;
+}
+
+/// Forecasts of a model along a recorded run with the hot air that was applied, scored like
+/// the MPC would use them.
+ForecastCheck checkForecasts(OutletForecaster& model, const data::SiBatch& record, std::size_t from, int horizon,
+                             int stride) {
+    ForecastCheck c;
+    c.maePct.assign(c.horizonsS.size(), 0.0);
+    std::vector<int> counts(c.horizonsS.size(), 0);
+    const std::size_t n = record.rows();
+    for (std::size_t k = std::max<std::size_t>(from, 1); k + static_cast<std::size_t>(horizon) < n;
+         k += static_cast<std::size_t>(stride)) {
+        std::vector<double> plan(record.tHotK.begin() + static_cast<long>(k),
+                                 record.tHotK.begin() + static_cast<long>(k) + horizon + 1);
+        // The decision at row k knows outputs up to k and inputs before k.
+        data::SiBatch known = record;
+        for (auto* v : {&known.timeS, &known.tHotSpK, &known.tHotK, &known.airSpeedMPerS, &known.feedKgPerS,
+                        &known.xInDb, &known.tInK, &known.tAmbK, &known.rhAmb}) {
+            v->resize(k);
+        }
+        for (auto* v : {&known.xOutDb, &known.tOutK, &known.xHdtDb, &known.tHdtK}) {
+            v->resize(k + 1);
+        }
+        const auto f = model.forecast(DecisionPoint{&known, k}, {plan}, horizon);
+        if (!f || (*f)[0].size() != static_cast<std::size_t>(horizon) + 1 || !std::isfinite((*f)[0][0])) {
+            continue;
+        }
+        const auto& x = (*f)[0];
+        const double d = units::dryToWetPct(record.xOutDb[k]) - x[0];
+        for (std::size_t i = 0; i < c.horizonsS.size(); ++i) {
+            const auto h = static_cast<std::size_t>(c.horizonsS[i]);
+            if (h < x.size() && std::isfinite(x[h])) {
+                c.maePct[i] += std::abs(x[h] + d - units::dryToWetPct(record.xOutDb[k + h]));
+                ++counts[i];
+            }
+        }
+        ++c.origins;
+    }
+    for (std::size_t i = 0; i < c.maePct.size(); ++i) {
+        c.maePct[i] = counts[i] > 0 ? c.maePct[i] / counts[i] : std::nan("");
+    }
+    return c;
+}
+
 } // namespace
 
 const char* controllerName(ControllerKind k) {
@@ -176,7 +243,7 @@ plant::PlantOptions scenarioPlantOptions(const Scenario& s) {
     plant::PlantOptions o;
     o.seed = s.seed;
     o.batches = 1;
-    o.samples = s.warmupS + s.lengthS + 1;
+    o.samples = std::max(200, s.warmupS + s.lengthS + 1); // the plant's own lower limit; the line runs as long as the scenario
     o.noiseScale = s.noiseScale;
     o.unmeasuredDrift = s.unmeasuredDrift;
     o.targetXOutPct = s.setpointPct;
@@ -215,6 +282,7 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
     const std::size_t total = warm + static_cast<std::size_t>(scenario.lengthS);
     const double tauAct = model.parameters[properties::Param::tau_act];
     bool stopped = false;
+    std::optional<data::SiBatch> piRecord;
     for (std::size_t c = 0; c < options.controllers.size() && !stopped; ++c) {
         const ControllerKind kind = options.controllers[c];
         const auto runStart = std::chrono::steady_clock::now();
@@ -246,7 +314,7 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         record.id = scenario.name;
         record.hasXHdt = record.hasTHdt = true;
         double lastSp = initialSp;
-        std::vector<double> solveMs, modelMs;
+        std::vector<double> solveMs, modelMs, gains;
         std::size_t nextSnapshot = 0;
         std::sort(snapshotTimes.begin(), snapshotTimes.end());
         for (std::size_t k = 0; k < total; ++k) {
@@ -264,6 +332,9 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
                 ++run.metrics.decisions;
                 solveMs.push_back(1e3 * d.solveSeconds);
                 modelMs.push_back(1e3 * d.modelSeconds);
+                if (!d.fallback) {
+                    gains.push_back(d.gainPctPerK);
+                }
                 if (d.fallback) {
                     ++run.metrics.fallbacks;
                     run.metrics.lastFallbackReason = d.fallbackReason;
@@ -307,9 +378,27 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         run.metrics.solveMsMedian = median(solveMs);
         run.metrics.solveMsMax = solveMs.empty() ? 0 : *std::max_element(solveMs.begin(), solveMs.end());
         run.metrics.modelMsMedian = median(modelMs);
+        run.metrics.gainPctPerKMedian = median(gains);
         run.ran = true;
+        if (kind == ControllerKind::Pi && !stopped) {
+            piRecord = record;
+        }
         run.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
         result.runs.push_back(std::move(run));
+    }
+    result.plantGainPctPerK = plantGain(scenario, plantOptions, units::kKelvinOffset + 170 + 8.0 * (scenario.xInPct - 22.0));
+    // The model error behind the ranking: each MPC's model forecasting the PI run.
+    for (auto& run : result.runs) {
+        if (stopped || !piRecord || !run.ran || run.kind == ControllerKind::Pi) {
+            continue;
+        }
+        std::string missing;
+        if (auto f = forecasterFor(run.kind, model, missing)) {
+            run.forecastCheck = checkForecasts(*f, *piRecord, warm, options.mpc.horizonS, 10);
+        }
+        if (reportProgress(progress, "mpc", 1.0, std::string("forecast check ") + controllerName(run.kind))) {
+            stopped = true;
+        }
     }
     result.ending.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (stopped) {

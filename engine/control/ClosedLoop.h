@@ -28,6 +28,7 @@ struct ClosedLoopMetrics {
     double solveMsMedian = 0; ///< Ipopt time per decision [ms]
     double solveMsMax = 0;
     double modelMsMedian = 0; ///< forecasts and linearisation per decision [ms]
+    double gainPctPerKMedian = 0; ///< the model's steady gain dX_out/dT_hot,sp per decision [% wb/K]
     int decisions = 0;
     int fallbacks = 0;
     std::string lastFallbackReason;
@@ -39,6 +40,15 @@ struct ClosedLoopMetrics {
 ClosedLoopMetrics trajectoryMetrics(const std::vector<double>& xOutPct, const std::vector<double>& setpointPct,
                                     const std::vector<double>& hotAirSetpointK, double bandPct,
                                     double setpointBeforeK);
+
+/// @brief How well a prediction model forecasts this scenario, as its MPC uses it (disturbances
+/// held, the same output-disturbance update), measured on the PI run's record with the hot air
+/// that was actually applied: the model error behind a controller's ranking.
+struct ForecastCheck {
+    std::vector<int> horizonsS = {30, 90, 150};
+    std::vector<double> maePct; ///< MAE of the measured X_out per horizon [% wb]
+    int origins = 0;
+};
 
 /// @brief The horizon a controller predicted at one decision.
 struct PredictionSnapshot {
@@ -55,6 +65,7 @@ struct ControllerRun {
     // Trajectories of the scored part, one entry per second.
     std::vector<double> timeS, xOutMeasuredPct, xOutTruePct, setpointPct, hotAirSetpointC, hotAirC;
     std::vector<PredictionSnapshot> predictions;
+    std::optional<ForecastCheck> forecastCheck; ///< MPC rows, when the PI loop ran too
     double elapsedSeconds = 0;
 };
 
@@ -70,6 +81,9 @@ struct ClosedLoopOptions {
 
 struct ClosedLoopResult {
     Scenario scenario;
+    /// The plant's true steady gain of X_out to the hot-air setpoint at the scenario's start
+    /// [% wb per K], from two noise-free runs 2 K apart: what each model's gain is compared with.
+    double plantGainPctPerK = 0;
     std::vector<ControllerRun> runs;
     Ending ending;
 };

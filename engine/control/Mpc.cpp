@@ -102,6 +102,7 @@ MpcDecision MpcController::decide(const DecisionPoint& at, double lastSetpointK,
     for (std::size_t i = 0; i < rows; ++i) {
         response[i] = (f1[i] - f0[i]) / s.perturbationK;
     }
+    out.gainPctPerK = response.back();
     const auto blocks = static_cast<Eigen::Index>(s.blockStartsS.size());
     double gainMax = 0;
     for (double g : response) {

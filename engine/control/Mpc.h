@@ -41,6 +41,9 @@ struct MpcDecision {
     /// (linearised, with the output-disturbance update); empty after a failed forecast.
     std::vector<double> predictedXPct;
     std::vector<double> planK; ///< the setpoint plan for rows now … now+horizon
+    /// The model's response of X_out at the end of the horizon to a held setpoint step [% wb per K]:
+    /// the process gain the controller believes (the plant's is about −0.06).
+    double gainPctPerK = 0;
 };
 
 /// @brief MPC of the outlet moisture by the hot-air setpoint (paper §IV.D). At each decision

@@ -181,6 +181,7 @@ IpoptQpSolver& IpoptQpSolver::operator=(IpoptQpSolver&&) noexcept = default;
 QpSolution IpoptQpSolver::solve(const DenseQp& qp, const Eigen::VectorXd& start) {
     auto& im = *m_impl;
     const auto t0 = std::chrono::steady_clock::now();
+    // Warm start: the demo scenario's median solve falls from 3.8 to 3.1 ms (docs/mpc.md).
     const bool warm = im.haveWarm && im.zLow.size() == qp.f.size() && im.lambda.size() == qp.a.rows();
     im.app->Options()->SetStringValue("warm_start_init_point", warm ? "yes" : "no");
     Ipopt::SmartPtr<QpNlp> nlp = new QpNlp(qp, start, warm ? &im.zLow : nullptr, warm ? &im.zHigh : nullptr,

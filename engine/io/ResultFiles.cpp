@@ -131,6 +131,7 @@ std::string mpcJson(const control::ClosedLoopResult& result) {
                   {"solve_ms", "ms"},        {"x_out", "% wb"}, {"t_hot", "°C"},
                   {"time", "s from the start of the scored part"}};
     j["termination"] = terminationName(result.ending.termination);
+    j["plant_gain_pct_per_k"] = result.plantGainPctPerK;
     j["controllers"] = json::object();
     for (const auto& r : result.runs) {
         const std::string name = control::controllerName(r.kind);
@@ -145,10 +146,16 @@ std::string mpcJson(const control::ClosedLoopResult& result) {
                                   {"solve_ms_median", m.solveMsMedian},
                                   {"solve_ms_max", m.solveMsMax},
                                   {"model_ms_median", m.modelMsMedian},
+                                  {"gain_pct_per_k_median", m.gainPctPerKMedian},
                                   {"decisions", m.decisions},
                                   {"fallbacks", m.fallbacks},
                                   {"last_fallback_reason", m.lastFallbackReason},
                                   {"elapsed_s", r.elapsedSeconds}};
+        if (r.forecastCheck) {
+            j["controllers"][name]["forecast_check"] = {{"horizons_s", r.forecastCheck->horizonsS},
+                                                       {"mae_pct", r.forecastCheck->maePct},
+                                                       {"origins", r.forecastCheck->origins}};
+        }
         json t;
         t["time_s"] = r.timeS;
         t["x_out_measured"] = r.xOutMeasuredPct;
