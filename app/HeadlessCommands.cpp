@@ -721,10 +721,17 @@ int runPipeline(const CommandOptions& o) {
         }
         std::printf("\n");
     }
-    std::printf("\n== not in this version ==\nmpc is not implemented yet; the report says so.\n");
+    std::printf("\n== mpc (%s) ==\n", r.mpc.closedLoop.scenario.name.c_str());
+    for (const auto& run : r.mpc.closedLoop.runs) {
+        if (run.ran) {
+            std::printf("%-20s IAE %8.1f %%*s, effort %8.1f K^2, violations %5.1f %%\n",
+                        control::controllerName(run.kind), run.metrics.iaePctS, run.metrics.effortK2,
+                        run.metrics.violationPct);
+        }
+    }
     std::printf(
         "\nreport %s, with inspect.json, model-calibrated.json, model.json, evaluate.json, ablation.json, "
-        "diagnostics.json, discover.json and model-extended.json beside it\n",
+        "diagnostics.json, discover.json, model-extended.json and mpc.json beside it\n",
         r.reportPath.c_str());
     return 0;
 }

@@ -362,16 +362,8 @@ LstmBaseline::Follower::forecast(const std::vector<const data::SiBatch*>& candid
     torch::Tensor hState = m_state->h.expand({1, nc, im.options.hidden}).contiguous();
     torch::Tensor cState = m_state->c.expand({1, nc, im.options.hidden}).contiguous();
     torch::Tensor y = im.net->head->forward(hState.squeeze(0)); // row origin+1, standardised
-    for (std::size_t step = 0; step < rows; ++step) {
-        const auto acc = y.to(torch::kFloat64).contiguous();
-        const auto a = acc.accessor<double, 2>();
-        for (long c = 0; c < nc; ++c) {
-            out[static_cast<std::size_t>(c)].xOutPct[step] = a[c][0] * im.scale[6] + im.mean[6];
-            out[static_cast<std::size_t>(c)].tOutC[step] = a[c][1] * im.scale[7] + im.mean[7];
-        }
-        if (step + 1 == rows) {
-            break;
-        }
+    std::vector<torch::Tensor> ys{y};
+    for (std::size_t step = 0; step + 1 < rows; ++step) {
         // Inputs of the next row, outputs replaced by the model's own prediction.
         torch::Tensor in = f.slice(1, static_cast<long>(step), static_cast<long>(step) + 1).clone();
         in.slice(2, kInputs - kOutputs, kInputs) = y.unsqueeze(1);
@@ -379,6 +371,16 @@ LstmBaseline::Follower::forecast(const std::vector<const data::SiBatch*>& candid
         hState = std::get<0>(std::get<1>(r));
         cState = std::get<1>(std::get<1>(r));
         y = im.net->head->forward(hState.squeeze(0));
+        ys.push_back(y);
+    }
+    // One conversion at the end instead of one per step: [rows, candidates, outputs].
+    const auto all = torch::stack(ys, 0).to(torch::kFloat64).contiguous();
+    const auto a = all.accessor<double, 3>();
+    for (std::size_t step = 0; step < rows; ++step) {
+        for (long c = 0; c < nc; ++c) {
+            out[static_cast<std::size_t>(c)].xOutPct[step] = a[static_cast<long>(step)][c][0] * im.scale[6] + im.mean[6];
+            out[static_cast<std::size_t>(c)].tOutC[step] = a[static_cast<long>(step)][c][1] * im.scale[7] + im.mean[7];
+        }
     }
     return out;
 }

@@ -394,7 +394,7 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         }
         std::string missing;
         if (auto f = forecasterFor(run.kind, model, missing)) {
-            run.forecastCheck = checkForecasts(*f, *piRecord, warm, options.mpc.horizonS, 10);
+            run.forecastCheck = checkForecasts(*f, *piRecord, warm, options.mpc.horizonS, 20);
         }
         if (reportProgress(progress, "mpc", 1.0, std::string("forecast check ") + controllerName(run.kind))) {
             stopped = true;

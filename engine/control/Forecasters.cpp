@@ -73,7 +73,10 @@ public:
         if (at.now < 1) {
             return Error{ErrorKind::Numerical, "residual forecast", "needs at least one recorded row"};
         }
-        std::vector<std::vector<double>> out;
+        std::vector<data::SiBatch> batches;
+        std::vector<physics::SimulationResult> sims;
+        batches.reserve(plans.size());
+        sims.reserve(plans.size());
         for (const auto& plan : plans) {
             const data::SiBatch w = planWindow(at, from, plan, horizon);
             std::vector<std::size_t> rows;
@@ -85,11 +88,17 @@ public:
                 return sim.error();
             }
             // The view's batch: the window's rows from viewFrom, aligned with the simulation.
-            const data::SiBatch v = planWindow(at, viewFrom, plan, horizon);
-            residual::BatchView view{&v, &*sim, {0, v.rows()}};
-            const std::size_t origin = at.now - 1 - viewFrom;
-            const auto p = m_model->forecastFrom(view, origin, horizon + 1);
-            out.push_back(p.xOutPct);
+            batches.push_back(planWindow(at, viewFrom, plan, horizon));
+            sims.push_back(std::move(*sim));
+        }
+        std::vector<residual::BatchView> views;
+        for (std::size_t c = 0; c < plans.size(); ++c) {
+            views.push_back({&batches[c], &sims[c], {0, batches[c].rows()}});
+        }
+        const auto p = m_model->forecastFrom(views, at.now - 1 - viewFrom, horizon + 1);
+        std::vector<std::vector<double>> out;
+        for (const auto& one : p) {
+            out.push_back(one.xOutPct);
         }
         return out;
     }

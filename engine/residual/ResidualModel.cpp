@@ -634,36 +634,64 @@ std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
 }
 
 HybridPrediction ResidualModel::forecastFrom(const BatchView& v, std::size_t origin, int horizon) const {
+    return forecastFrom(std::vector<BatchView>{v}, origin, horizon).front();
+}
+
+std::vector<HybridPrediction> ResidualModel::forecastFrom(const std::vector<BatchView>& views, std::size_t origin,
+                                                          int horizon) const {
     const auto count = static_cast<std::size_t>(std::max(0, horizon));
-    HybridPrediction out = HybridPrediction::unknown(count);
-    const std::size_t n = v.batch->rows();
-    if (origin >= n || count == 0) {
+    std::vector<HybridPrediction> out(views.size(), HybridPrediction::unknown(count));
+    const auto nv = static_cast<Eigen::Index>(views.size());
+    if (views.empty() || count == 0) {
         return out;
     }
     const auto lags = static_cast<std::size_t>(m_options.residualLags);
     const std::size_t first = origin + 1 > lags ? origin + 1 - lags : 0;
-    std::vector<double> ex(n, kNaN), et(n, kNaN);
-    residualsOf(v, first, origin + 1, ex, et);
-    Eigen::VectorXd x, d;
-    double u = 0;
-    if (!stateAt(v, origin, ex, et, x, u, d)) {
-        return out;
-    }
-    for (std::size_t i = 0; i < count; ++i) {
-        const std::size_t target = origin + 1 + i;
-        if (target >= n) {
-            break;
+    Eigen::MatrixXd x(m_a.rows(), nv), forcing(m_a.rows(), nv);
+    std::size_t steps = count;
+    for (Eigen::Index c = 0; c < nv; ++c) {
+        const BatchView& v = views[static_cast<std::size_t>(c)];
+        const std::size_t n = v.batch->rows();
+        if (origin >= n) {
+            return out;
         }
-        x = m_a * x + m_b.col(0) * u + m_e * d;
-        const Eigen::Vector2d e = m_c * x;
-        const Eigen::Vector2d base = restoredBasePart(v, target);
-        out.residualXPct[i] = e(0) * m_eScale(0) + base(0);
-        out.residualTC[i] = e(1) * m_eScale(1) + base(1);
-        out.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[target]) + out.residualXPct[i]; // Eq. (21)
-        out.tOutC[i] = v.pbm->tOutK[target] - units::kKelvinOffset + out.residualTC[i];
-        Eigen::VectorXd z;
-        if (!features(v, target, z, u, d)) {
-            break; // inputs missing: nothing further can be forecast
+        steps = std::min(steps, n - origin - 1);
+        std::vector<double> ex(n, kNaN), et(n, kNaN);
+        residualsOf(v, first, origin + 1, ex, et);
+        Eigen::VectorXd xc, d;
+        double u = 0;
+        if (!stateAt(v, origin, ex, et, xc, u, d)) {
+            return out;
+        }
+        x.col(c) = xc;
+        forcing.col(c) = m_b.col(0) * u + m_e * d;
+    }
+    Eigen::VectorXd next(m_a.rows());
+    for (std::size_t i = 0; i < steps; ++i) {
+        const std::size_t target = origin + 1 + i;
+        // One matrix-vector product per candidate: a GEMM would repack A at every step for just
+        // two columns (a quarter of the MPC's time in a profile).
+        for (Eigen::Index c = 0; c < nv; ++c) {
+            next.noalias() = m_a * x.col(c);
+            x.col(c) = next + forcing.col(c);
+        }
+        const Eigen::MatrixXd e = m_c * x;
+        for (Eigen::Index c = 0; c < nv; ++c) {
+            const BatchView& v = views[static_cast<std::size_t>(c)];
+            auto& o = out[static_cast<std::size_t>(c)];
+            const Eigen::Vector2d base = restoredBasePart(v, target);
+            o.residualXPct[i] = e(0, c) * m_eScale(0) + base(0);
+            o.residualTC[i] = e(1, c) * m_eScale(1) + base(1);
+            o.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[target]) + o.residualXPct[i]; // Eq. (21)
+            o.tOutC[i] = v.pbm->tOutK[target] - units::kKelvinOffset + o.residualTC[i];
+            Eigen::VectorXd z, d;
+            double u = 0;
+            if (i + 1 < steps && !features(v, target, z, u, d)) {
+                return out; // inputs missing: nothing further can be forecast
+            }
+            if (i + 1 < steps) {
+                forcing.col(c) = m_b.col(0) * u + m_e * d;
+            }
         }
     }
     return out;

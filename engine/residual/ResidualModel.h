@@ -111,6 +111,10 @@ public:
     /// (for MPC: the batch holds the candidate inputs and the PBM was run on them). Equal to
     /// predictAhead(view, h) at row origin + h. NaN where the lags or inputs are missing.
     HybridPrediction forecastFrom(const BatchView& view, std::size_t origin, int horizon) const;
+    /// @brief forecastFrom for several views at once (candidate plans of an MPC): the lifted
+    /// states are rolled together, one matrix product per step instead of one per view.
+    std::vector<HybridPrediction> forecastFrom(const std::vector<BatchView>& views, std::size_t origin,
+                                               int horizon) const;
     /// @brief Free run: the lifted state rolled from the batch's first row with inputs and PBM
     /// proxies only, never a measured output (lags start at zero), ê_k = C x_k, for the view's rows.
     HybridPrediction predictFreeRun(const BatchView& view) const;

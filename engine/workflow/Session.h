@@ -157,6 +157,7 @@ struct PipelineOptions {
     TrainOptions train;
     EvaluateOptions evaluate;
     DiscoverOptions discover;
+    MpcOptions mpc; ///< the bundled paper-like scenario with the trained model
     Status validate() const;
 };
 
@@ -174,6 +175,7 @@ struct PipelineResult {
     EvaluateResult evaluate;
     hybrid::AblationResult ablation;
     DiscoverResult discover;
+    MpcResult mpc;
     std::string reportPath;
     std::vector<PipelineStage> stages;
     Ending ending;
@@ -224,7 +226,7 @@ public:
     /// @brief Runs a what-if scenario once per controller (an MPC on each prediction model the
     /// session's model holds, and the plant's PI loop). Needs no data: the plant makes its own.
     Expected<MpcResult> mpc(const MpcOptions& options, const Progress& progress = {});
-    /// @brief inspect, calibrate, train, evaluate, ablation and discover in order, each result written to
+    /// @brief inspect, calibrate, train, evaluate, ablation, discover and mpc in order, each result written to
     /// the folder as it is done, then report.md. A failed or cancelled stage keeps the files
     /// of the stages before it.
     Expected<PipelineResult> pipeline(const PipelineOptions& options, const Progress& progress = {});

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 using namespace drytwin;
@@ -372,6 +373,11 @@ private Q_SLOTS:
         p.outFolder = m_dir.filePath("report").toStdString();
         p.calibrate = quickCalibration();
         p.train = quickTraining();
+        // A one-minute closed loop instead of the bundled 1,000 steps (that one is benchmarked).
+        const std::string scenario = m_dir.filePath("short-scenario.json").toStdString();
+        std::ofstream(scenario) << R"({"name": "short", "length_s": 60, "warmup_s": 150, "seed": 2,
+                                       "setpoint_steps": [{"at_s": 10, "to_pct": 12.6}]})";
+        p.mpc.scenarioPath = scenario;
         auto r = s.pipeline(p);
         QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
         QStringList stages;
@@ -381,7 +387,7 @@ private Q_SLOTS:
                 QVERIFY2(std::filesystem::exists(f), f.c_str());
             }
         }
-        QCOMPARE(stages, QStringList({"inspect", "calibrate", "train", "evaluate", "ablation", "discover",
+        QCOMPARE(stages, QStringList({"inspect", "calibrate", "train", "evaluate", "ablation", "discover", "mpc",
                                       "report"}));
         // Table 3's seven rows and three more: the other energy balance, Eq. 27 literally, the pull.
         QCOMPARE(r->ablation.rows.size(), std::size_t(10));
@@ -407,6 +413,12 @@ private Q_SLOTS:
         QVERIFY(report->find("reference predictors in moisture at") != std::string::npos);
         QVERIFY(report->find("Eq. 30 side by side") != std::string::npos);
         QVERIFY(report->find("extrapolation") != std::string::npos);
+        // The closed loop: mpc.json holds the run's numbers and the report its Table 2.
+        const auto mpc = nlohmann::json::parse(*readWholeFile(p.outFolder + "/mpc.json"));
+        QCOMPARE(mpc["steps"].get<int>(), 60);
+        QCOMPARE(mpc["controllers"]["pbm"]["iae"].get<double>(), r->mpc.closedLoop.runs.front().metrics.iaePctS);
+        QVERIFY(mpc["controllers"].contains("pi") && mpc["controllers"].contains("pgrl_cc"));
+        QVERIFY(report->find("Closed-loop MPC (paper Table 2)") != std::string::npos);
 
         // A cancelled pipeline keeps the model it started with.
         workflow::Session c;
