@@ -3,24 +3,51 @@
 #include "MainWindow.h"
 
 #include <QApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QSettings>
 #include <QSurfaceFormat>
 #include <QTimer>
+#include <QTranslator>
 #include <QVTKOpenGLNativeWidget.h>
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 
 namespace {
 
-int runGui(int argc, char** argv, const QString& dataPath, const QString& screenshotPath) {
+/// Loads DryTwin's and Qt's own translations for @p language (en: none needed).
+void installTranslations(QApplication& app, const QString& language) {
+    if (language.isEmpty() || language == QLatin1String("en")) {
+        return;
+    }
+    auto* ours = new QTranslator(&app);
+    const QStringList places{QCoreApplication::applicationDirPath() + QStringLiteral("/../widgets"),
+                             QCoreApplication::applicationDirPath() + QStringLiteral("/translations"),
+                             QCoreApplication::applicationDirPath() + QStringLiteral("/../share/drytwin/translations"),
+                             QStringLiteral(DRYTWIN_QM_DIR)};
+    for (const auto& place : places) {
+        if (ours->load(QStringLiteral("drytwin_") + language, place)) {
+            app.installTranslator(ours);
+            break;
+        }
+    }
+    auto* qt = new QTranslator(&app);
+    if (qt->load(QStringLiteral("qtbase_") + language, QLibraryInfo::location(QLibraryInfo::TranslationsPath))) {
+        app.installTranslator(qt);
+    }
+}
+
+int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed) {
     const bool platformGiven =
         qEnvironmentVariableIsSet("QT_QPA_PLATFORM") ||
         std::any_of(argv, argv + argc, [](const char* a) { return std::strcmp(a, "-platform") == 0; });
-    if (!platformGiven && !qEnvironmentVariableIsSet("DISPLAY") &&
-        !qEnvironmentVariableIsSet("WAYLAND_DISPLAY")) {
-        std::fprintf(stderr,
-                     "drytwin: no display for the GUI (DISPLAY is not set); run a subcommand headless, "
-                     "e.g. drytwin pipeline --data DIR --out DIR, or see drytwin --help\n");
+    if (!platformGiven && !qEnvironmentVariableIsSet("DISPLAY") && !qEnvironmentVariableIsSet("WAYLAND_DISPLAY")) {
+        std::fprintf(stderr, "drytwin: no display for the GUI (DISPLAY is not set); run a subcommand headless, "
+                             "e.g. drytwin pipeline --data DIR --out DIR, or see drytwin --help\n");
         return 2;
     }
     // Must precede QApplication for the VTK view (PLATFORM-NOTES.md).
@@ -28,30 +55,77 @@ int runGui(int argc, char** argv, const QString& dataPath, const QString& screen
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("DryTwin"));
     QApplication::setOrganizationName(QStringLiteral("DryTwin"));
+    QString language = QString::fromStdString(parsed.language);
+    if (language.isEmpty()) {
+        language = QSettings().value(QStringLiteral("language")).toString();
+    }
+    if (language.isEmpty()) {
+        language = QLocale::system().name().startsWith(QLatin1String("zh")) ? QStringLiteral("zh_CN") : QStringLiteral("en");
+    }
+    installTranslations(app, language);
     drytwin::widgets::MainWindow window;
     window.show();
-    if (!screenshotPath.isEmpty()) {
-        auto save = [&window, screenshotPath] {
-            const bool ok = window.grab().save(screenshotPath);
-            std::fprintf(stderr, ok ? "drytwin: saved %s\n" : "drytwin: could not save %s\n",
-                         qPrintable(screenshotPath));
-            QApplication::exit(ok ? 0 : 3);
+    const QString screenshot = QString::fromStdString(parsed.screenshotPath);
+    const QString dataPath = QString::fromStdString(parsed.guiDataPath);
+    const QString projectPath = QString::fromStdString(parsed.projectPath);
+    if (!screenshot.isEmpty()) {
+        auto save = [&window, screenshot] {
+            int rc = 0;
+            if (screenshot.endsWith(QLatin1String(".png"), Qt::CaseInsensitive)) {
+                const bool ok = window.grab().save(screenshot);
+                std::fprintf(stderr, ok ? "drytwin: saved %s\n" : "drytwin: could not save %s\n", qPrintable(screenshot));
+                rc = ok ? 0 : 3;
+            } else {
+                const QStringList files = window.saveTabScreenshots(screenshot);
+                for (const auto& f : files) {
+                    std::fprintf(stderr, "drytwin: saved %s\n", qPrintable(f));
+                }
+                rc = files.size() == window.tabs()->count() ? 0 : 3;
+            }
+            QApplication::exit(rc);
         };
-        if (dataPath.isEmpty()) {
+        // Once the work the window started is done (data loaded and simulated), or at once
+        // when the data was rejected or there was nothing to load.
+        auto whenIdle = [&window, save] {
+            // Idle for a whole second (three polls in a row): every queued action and what its
+            // results started have finished drawing.
+            auto* poll = new QTimer(&window);
+            auto idlePolls = std::make_shared<int>(0);
+            QObject::connect(poll, &QTimer::timeout, &window, [&window, save, poll, idlePolls] {
+                const bool idle = !window.jobs().busy() && !window.hasPendingActions();
+                *idlePolls = idle ? *idlePolls + 1 : 0;
+                if (*idlePolls >= 3) {
+                    poll->stop();
+                    save();
+                }
+            });
+            poll->start(350);
+        };
+        if (dataPath.isEmpty() && projectPath.isEmpty()) {
             QTimer::singleShot(500, &window, save);
         } else {
-            // After the model's predictions are drawn, or at once when the data was rejected.
-            QObject::connect(&window, &drytwin::widgets::MainWindow::simulationShown, &window,
-                             [save] { QTimer::singleShot(300, save); });
-            QObject::connect(&window, &drytwin::widgets::MainWindow::loadFinished, &window, [save](bool ok) {
+            QObject::connect(&window, &drytwin::widgets::MainWindow::simulationShown, &window, whenIdle);
+            QObject::connect(&window, &drytwin::widgets::MainWindow::loadFinished, &window, [whenIdle](bool ok) {
                 if (!ok) {
-                    QTimer::singleShot(300, save);
+                    whenIdle();
                 }
             });
         }
     }
-    if (!dataPath.isEmpty()) {
+    if (!projectPath.isEmpty()) {
+        QString error;
+        if (!window.openProject(projectPath, &error)) {
+            std::fprintf(stderr, "drytwin: error: %s\n", qPrintable(error));
+            return 3;
+        }
+    } else if (!dataPath.isEmpty()) {
+        if (!parsed.modelPath.empty()) {
+            window.workbench().openModel(QString::fromStdString(parsed.modelPath));
+        }
         window.openDataSet(dataPath);
+    }
+    if (!parsed.runActions.empty()) {
+        window.runAfterLoad(QString::fromStdString(parsed.runActions).split(QLatin1Char(','), Qt::SkipEmptyParts));
     }
     return QApplication::exec();
 }
@@ -65,8 +139,7 @@ int main(int argc, char** argv) {
         return parsed.exitCode;
     }
     if (parsed.gui) {
-        return runGui(argc, argv, QString::fromStdString(parsed.guiDataPath),
-                      QString::fromStdString(parsed.screenshotPath));
+        return runGui(argc, argv, parsed);
     }
     return commandLine.run();
 }

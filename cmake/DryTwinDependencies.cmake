@@ -28,7 +28,7 @@ pkg_check_modules(QWT REQUIRED IMPORTED_TARGET Qt5Qwt6)
 # VTK's MPI dependency must be found first (PLATFORM-NOTES.md).
 find_package(MPI REQUIRED COMPONENTS C)
 find_package(VTK REQUIRED COMPONENTS GUISupportQt RenderingOpenGL2 InteractionStyle
-             RenderingFreeType FiltersSources RenderingAnnotation CommonCore)
+             RenderingFreeType FiltersSources FiltersGeneral RenderingAnnotation CommonCore)
 
 if(DRYTWIN_BUILD_BENCH)
   find_package(benchmark REQUIRED)

@@ -1,30 +1,40 @@
 #include "MainWindow.h"
 
+#include "calibration/CalibrationPanel.h"
 #include "common/ErrorText.h"
 #include "common/LibraryVersions.h"
-#include "common/Units.h"
+#include "common/PlotStack.h"
+#include "data/DataPanel.h"
+#include "diagnostics/DiagnosticsPanel.h"
+#include "discovery/DiscoverPanel.h"
+#include "model/ModelPanel.h"
+#include "mpc/MpcPanel.h"
+#include "residual/ResidualPanel.h"
+#include "view3d/LineView3D.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
 #include <QFileDialog>
-#include <QHeaderView>
+#include <QFileInfo>
 #include <QIcon>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
-#include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSplitter>
+#include <QSaveFile>
+#include <QSettings>
 #include <QStatusBar>
 #include <QTabWidget>
-#include <QTreeWidget>
-#include <QVBoxLayout>
+#include <QTableWidget>
 #include <qwt_global.h>
-#include <qwt_legend.h>
-#include <qwt_plot.h>
-#include <qwt_plot_curve.h>
-#include <qwt_plot_grid.h>
+#include <utility>
 #include <vtkVersion.h>
 
 // The widgets are a static library: its resources (window icon) must be registered by hand,
@@ -36,69 +46,34 @@ static void initDryTwinResources() {
 namespace drytwin::widgets {
 
 namespace {
-
-QwtPlotCurve* addModelCurve(QwtPlot* plot, const QString& title, const QColor& colour) {
-    auto* curve = new QwtPlotCurve(title);
-    curve->setPen(colour, 1.6, Qt::DashLine);
-    curve->setRenderHint(QwtPlotItem::RenderAntialiased);
-    curve->attach(plot);
-    return curve;
-}
-
-QwtPlot* makePlot(const QString& yTitle, QwtPlotCurve*& curve, const QColor& colour, QWidget* parent) {
-    auto* plot = new QwtPlot(parent);
-    plot->setCanvasBackground(Qt::white);
-    plot->setAxisTitle(QwtPlot::xBottom, QObject::tr("time [s]"));
-    plot->setAxisTitle(QwtPlot::yLeft, yTitle);
-    auto* grid = new QwtPlotGrid;
-    grid->setMajorPen(QColor(220, 220, 220), 0, Qt::DotLine);
-    grid->attach(plot);
-    curve = new QwtPlotCurve(QObject::tr("measured"));
-    curve->setPen(colour, 1.2);
-    curve->setRenderHint(QwtPlotItem::RenderAntialiased);
-    curve->attach(plot);
-    return plot;
-}
-
+constexpr int kMaxRecent = 8;
+const char* kTabKeys[] = {"data", "model", "calibrate", "residual", "diagnostics", "discover", "mpc", "line3d"};
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowTitle(tr("DryTwin"));
     initDryTwinResources();
     setWindowIcon(QIcon(QStringLiteral(":/icons/drytwin.svg")));
-    resize(1200, 760);
+    resize(1280, 800);
 
-    m_batchList = new QListWidget;
-    m_batchList->setMinimumWidth(180);
-    m_columnTable = new QTreeWidget;
-    m_columnTable->setHeaderLabels(
-        {tr("Column"), tr("Unit"), tr("Min"), tr("Max"), tr("Mean"), tr("Missing")});
-    m_columnTable->setRootIsDecorated(false);
-
-    auto* plots = new QWidget;
-    auto* plotLayout = new QVBoxLayout(plots);
-    m_moisturePlot =
-        makePlot(tr("outlet moisture X_out [% wb]"), m_moistureCurve, QColor(31, 119, 180), plots);
-    m_temperaturePlot =
-        makePlot(tr("outlet temperature T_out [°C]"), m_temperatureCurve, QColor(214, 39, 40), plots);
-    m_moistureModelCurve = addModelCurve(m_moisturePlot, tr("physics model (default parameters)"), Qt::black);
-    m_temperatureModelCurve =
-        addModelCurve(m_temperaturePlot, tr("physics model (default parameters)"), Qt::black);
-    for (auto* plot : {m_moisturePlot, m_temperaturePlot}) {
-        plot->insertLegend(new QwtLegend, QwtPlot::TopLegend);
-    }
-    plotLayout->addWidget(m_moisturePlot);
-    plotLayout->addWidget(m_temperaturePlot);
-
-    auto* tabs = new QTabWidget;
-    tabs->addTab(plots, tr("Batch plots"));
-    tabs->addTab(m_columnTable, tr("Columns"));
-
-    auto* splitter = new QSplitter;
-    splitter->addWidget(m_batchList);
-    splitter->addWidget(tabs);
-    splitter->setStretchFactor(1, 1);
-    setCentralWidget(splitter);
+    m_tabs = new QTabWidget;
+    m_data = new DataPanel(m_workbench);
+    m_model = new ModelPanel(m_workbench);
+    m_calibration = new CalibrationPanel(m_workbench);
+    m_residual = new ResidualPanel(m_workbench);
+    m_diagnostics = new DiagnosticsPanel(m_workbench);
+    m_discover = new DiscoverPanel(m_workbench);
+    m_mpc = new MpcPanel(m_workbench);
+    m_view3d = new LineView3D(m_workbench);
+    m_tabs->addTab(m_data, tr("Data"));
+    m_tabs->addTab(m_model, tr("Model"));
+    m_tabs->addTab(m_calibration, tr("Calibrate"));
+    m_tabs->addTab(m_residual, tr("Residual model"));
+    m_tabs->addTab(m_diagnostics, tr("Diagnostics"));
+    m_tabs->addTab(m_discover, tr("Discover"));
+    m_tabs->addTab(m_mpc, tr("What-if MPC"));
+    m_tabs->addTab(m_view3d, tr("3D line"));
+    setCentralWidget(m_tabs);
 
     m_statusLabel = new QLabel(tr("No data loaded. File ▸ Open data set…"));
     m_progressBar = new QProgressBar;
@@ -109,28 +84,152 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     statusBar()->addPermanentWidget(m_progressBar);
     statusBar()->addPermanentWidget(m_cancelButton);
     setBusy(false);
-
     createMenus();
 
-    connect(&m_jobs, &JobRunner::progress, this, &MainWindow::onProgress);
-    connect(&m_jobs, &JobRunner::busyChanged, this, &MainWindow::setBusy);
-    connect(m_cancelButton, &QPushButton::clicked, this, [this] { m_jobs.cancelAll(); });
-    connect(m_batchList, &QListWidget::currentRowChanged, this, &MainWindow::onBatchSelected);
+    auto& jobs = m_workbench.jobs();
+    connect(&jobs, &JobRunner::busyChanged, this, &MainWindow::setBusy);
+    connect(&jobs, &JobRunner::progress, this, [this](JobId, const QString& stage, double fraction, const QString& detail) {
+        m_progressBar->setValue(static_cast<int>(fraction * 100));
+        m_progressBar->setFormat(QStringLiteral("%1 %p%").arg(stage));
+        if (!detail.isEmpty()) {
+            m_statusLabel->setText(QStringLiteral("%1: %2").arg(stage, detail));
+        }
+    });
+    connect(m_cancelButton, &QPushButton::clicked, &m_workbench, &Workbench::cancelAll);
+    connect(&m_workbench, &Workbench::status, m_statusLabel, &QLabel::setText);
+    connect(&m_workbench, &Workbench::dataChanged, this, [this] {
+        Q_EMIT loadFinished(true);
+        m_workbench.simulate();
+        if (!m_pendingModel.isEmpty()) {
+            m_workbench.openModel(m_pendingModel);
+            m_workbench.simulate(); // again, with the project's model
+            m_pendingModel.clear();
+        }
+        startActions();
+    });
+    connect(&m_workbench, &Workbench::simulated, this, [this] {
+        Q_EMIT simulationShown();
+        if (m_pendingTab >= 0) {
+            m_tabs->setCurrentIndex(m_pendingTab);
+            m_pendingTab = -1;
+        }
+        if (!m_workbench.jobs().busy()) {
+            Q_EMIT projectReady(true);
+        }
+    });
+    connect(&m_workbench, &Workbench::dataLoadFailed, this, [this] { Q_EMIT loadFinished(false); });
+    connect(&m_workbench, &Workbench::failed, this, [this](const QString& action, const QString& message, bool cancelled) {
+        if (!cancelled) {
+            showError(action, message);
+        }
+    });
+    // One time cursor for the 3D view and every time plot.
+    const auto shareTime = [this](double t) {
+        for (auto* stack : {m_data->plots(), m_model->plots()}) {
+            stack->setTimeCursor(t);
+        }
+    };
+    connect(m_view3d, &LineView3D::timeChanged, this, shareTime);
+    for (auto* stack : {m_data->plots(), m_model->plots()}) {
+        connect(stack, &PlotStack::timeCursorMoved, this, [this, shareTime](double t) {
+            shareTime(t);
+            m_view3d->setTime(t);
+        });
+    }
+    QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
 }
 
 // The job runner's destructor cancels every job and waits for the engine thread.
 MainWindow::~MainWindow() = default;
 
+void MainWindow::closeEvent(QCloseEvent* event) {
+    // Closing mid-run cancels cleanly: the running job is told to stop, queued ones never start.
+    m_workbench.cancelAll();
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    event->accept();
+}
+
 void MainWindow::createMenus() {
     auto* file = menuBar()->addMenu(tr("&File"));
-    auto* openFile = file->addAction(tr("&Open batch file…"), this, &MainWindow::chooseFile);
+    auto* openFile = file->addAction(tr("&Open batch file…"), this, [this] {
+        const QString p = QFileDialog::getOpenFileName(this, tr("Open batch file"), {}, tr("Batch files (*.csv)"));
+        if (!p.isEmpty()) {
+            openDataSet(p);
+        }
+    });
     openFile->setShortcut(QKeySequence::Open);
-    file->addAction(tr("Open data set &folder…"), this, &MainWindow::chooseFolder);
+    file->addAction(tr("Open data set &folder…"), this, [this] {
+        const QString p = QFileDialog::getExistingDirectory(this, tr("Open data set folder"));
+        if (!p.isEmpty()) {
+            openDataSet(p);
+        }
+    });
+    file->addAction(tr("Open &model…"), this, [this] {
+        const QString p = QFileDialog::getOpenFileName(this, tr("Open model"), {}, tr("Model files (*.json)"));
+        if (!p.isEmpty()) {
+            m_workbench.openModel(p);
+        }
+    });
+    file->addAction(tr("Save model &as…"), this, [this] {
+        const QString p = QFileDialog::getSaveFileName(this, tr("Save model"), QStringLiteral("model.json"),
+                                                       tr("Model files (*.json)"));
+        if (!p.isEmpty()) {
+            m_workbench.saveModel(p);
+        }
+    });
+    file->addSeparator();
+    file->addAction(tr("Open &project…"), this, [this] {
+        const QString p = QFileDialog::getOpenFileName(this, tr("Open project"), {}, tr("DryTwin projects (*.drytwin)"));
+        QString error;
+        if (!p.isEmpty() && !openProject(p, &error)) {
+            showError(tr("Open project"), error);
+        }
+    });
+    auto* save = file->addAction(tr("&Save project"), this, [this] {
+        QString p = m_projectPath;
+        if (p.isEmpty()) {
+            p = QFileDialog::getSaveFileName(this, tr("Save project"), QStringLiteral("project.drytwin"),
+                                             tr("DryTwin projects (*.drytwin)"));
+        }
+        QString error;
+        if (!p.isEmpty() && !saveProject(p, &error)) {
+            showError(tr("Save project"), error);
+        }
+    });
+    save->setShortcut(QKeySequence::Save);
+    file->addAction(tr("Save project as…"), this, [this] {
+        const QString p = QFileDialog::getSaveFileName(this, tr("Save project"), QStringLiteral("project.drytwin"),
+                                                       tr("DryTwin projects (*.drytwin)"));
+        QString error;
+        if (!p.isEmpty() && !saveProject(p, &error)) {
+            showError(tr("Save project"), error);
+        }
+    });
+    m_recent = file->addMenu(tr("Recent projects"));
+    fillRecent();
     file->addSeparator();
     auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
+
+    auto* view = menuBar()->addMenu(tr("&View"));
+    auto* language = view->addMenu(tr("&Language"));
+    auto* group = new QActionGroup(this);
+    const QString current = QSettings().value(QStringLiteral("language")).toString();
+    for (const auto& [code, name] : {std::pair<QString, QString>{QStringLiteral("en"), QStringLiteral("English")},
+                                     std::pair<QString, QString>{QStringLiteral("zh_CN"), QStringLiteral("简体中文")}}) {
+        auto* a = language->addAction(name);
+        a->setCheckable(true);
+        a->setChecked(current == code || (current.isEmpty() && code == QLatin1String("en")));
+        group->addAction(a);
+        connect(a, &QAction::triggered, this, [this, code = code] {
+            QSettings().setValue(QStringLiteral("language"), code);
+            m_statusLabel->setText(tr("The language changes when DryTwin is started again."));
+        });
+    }
     auto* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About DryTwin"), this, &MainWindow::showAbout);
+    help->addAction(tr("&About DryTwin"), this, [this] { QMessageBox::about(this, tr("About DryTwin"), aboutText()); });
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
 }
 
@@ -139,8 +238,7 @@ QString MainWindow::aboutText() {
                       "implementing the PGRL-CC method.</p><table>")
                        .arg(QString::fromStdString(dryTwinVersion()));
     auto row = [&](const QString& name, const QString& version) {
-        html += QStringLiteral("<tr><td>%1</td><td>&nbsp;%2</td></tr>")
-                    .arg(name.toHtmlEscaped(), version.toHtmlEscaped());
+        html += QStringLiteral("<tr><td>%1</td><td>&nbsp;%2</td></tr>").arg(name.toHtmlEscaped(), version.toHtmlEscaped());
     };
     row(QStringLiteral("Qt"), QString::fromLatin1(qVersion()));
     row(QStringLiteral("Qwt"), QStringLiteral(QWT_VERSION_STR));
@@ -152,42 +250,8 @@ QString MainWindow::aboutText() {
     return html;
 }
 
-void MainWindow::showAbout() {
-    QMessageBox::about(this, tr("About DryTwin"), aboutText());
-}
-
-void MainWindow::chooseFile() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open batch file"), {}, tr("Batch files (*.csv)"));
-    if (!path.isEmpty()) {
-        openDataSet(path);
-    }
-}
-
-void MainWindow::chooseFolder() {
-    const QString path = QFileDialog::getExistingDirectory(this, tr("Open data set folder"));
-    if (!path.isEmpty()) {
-        openDataSet(path);
-    }
-}
-
 void MainWindow::openDataSet(const QString& path) {
-    m_statusLabel->setText(tr("Loading %1…").arg(path));
-    workflow::OpenOptions options;
-    options.dataPath = path.toStdString();
-    m_jobs.submit<workflow::OpenResult>(
-        tr("Load %1").arg(path),
-        [options](workflow::Session& session, const Progress& progress) {
-            return session.open(options, progress);
-        },
-        this,
-        [this, path](const Expected<workflow::OpenResult>& result) {
-            if (result) {
-                onDataLoaded(path, *result);
-            } else {
-                onLoadFailed(path, result.error());
-            }
-        });
+    m_workbench.openData(path);
 }
 
 void MainWindow::setBusy(bool busy) {
@@ -198,143 +262,161 @@ void MainWindow::setBusy(bool busy) {
     }
 }
 
-void MainWindow::onProgress(JobId, const QString& stage, double fraction, const QString& detail) {
-    m_progressBar->setValue(static_cast<int>(fraction * 100));
-    if (!detail.isEmpty()) {
-        const QString what = stage == QLatin1String("simulate") ? tr("Simulating %1…") : tr("Loading %1…");
-        m_statusLabel->setText(what.arg(detail));
-    }
-}
-
-void MainWindow::onDataLoaded(const QString& path, const workflow::OpenResult& result) {
-    const auto& summary = result.summary;
-    m_data = result.dataSet;
-    m_batchList->clear();
-    for (const auto& b : summary.batches) {
-        m_batchList->addItem(tr("%1  (%2 rows)").arg(QString::fromStdString(b.id)).arg(b.rows));
-    }
-    m_columnTable->clear();
-    for (const auto& c : summary.columns) {
-        auto* item = new QTreeWidgetItem(m_columnTable);
-        item->setText(0, QString::fromStdString(c.name));
-        item->setText(1, QString::fromStdString(c.unit));
-        if (c.present) {
-            item->setText(2, QString::number(c.min, 'g', 5));
-            item->setText(3, QString::number(c.max, 'g', 5));
-            item->setText(4, QString::number(c.mean, 'g', 5));
-            item->setText(5, QString::number(c.missing));
-        } else {
-            item->setText(2, tr("absent"));
-        }
-    }
-    m_columnTable->header()->resizeSections(QHeaderView::ResizeToContents);
-    m_dataStatus = tr("%1: %2 batches, %3 rows, %4 missing cells; cleaning keeps %5 rows")
-                       .arg(path)
-                       .arg(summary.batches.size())
-                       .arg(summary.rows)
-                       .arg(summary.missing)
-                       .arg(summary.cleaning.kept);
-    m_statusLabel->setText(m_dataStatus);
-    m_modelX.clear();
-    m_modelT.clear();
-    if (m_batchList->count() > 0) {
-        m_batchList->setCurrentRow(0);
-    }
-    Q_EMIT loadFinished(true);
-    simulate();
-}
-
-void MainWindow::onLoadFailed(const QString& path, const Error& error) {
-    if (error.kind == ErrorKind::Cancelled) {
-        m_statusLabel->setText(tr("Loading cancelled; the data shown before is unchanged."));
-        Q_EMIT loadFinished(false);
+void MainWindow::showError(const QString& title, const QString& message) {
+    m_statusLabel->setText(message);
+    if (qEnvironmentVariableIsSet("DRYTWIN_NO_MODAL")) {
         return;
     }
-    m_statusLabel->setText(tr("Could not load %1; the data shown before is unchanged.").arg(path));
-    QStringList errors;
-    for (const auto& cause : error.causes) {
-        errors << errorText(cause);
-    }
-    if (errors.isEmpty()) {
-        errors << errorText(error);
-    }
-    QMessageBox box(QMessageBox::Warning, tr("Data set rejected"),
-                    tr("%n file(s) could not be read. Nothing was loaded or changed.", nullptr,
-                       static_cast<int>(errors.size())),
-                    QMessageBox::Ok, this);
-    box.setDetailedText(errors.join(QLatin1Char('\n')));
-    box.setInformativeText(errors.value(0));
-    if (!qEnvironmentVariableIsSet("DRYTWIN_NO_MODAL")) {
-        box.exec();
-    }
-    Q_EMIT loadFinished(false);
+    QMessageBox::warning(this, title, message);
 }
 
-void MainWindow::simulate() {
-    m_jobs.submit<workflow::SimulateResult>(
-        tr("Simulate"),
-        [](workflow::Session& session, const Progress& progress) { return session.simulate({}, progress); },
-        this,
-        [this](const Expected<workflow::SimulateResult>& result) {
-            if (result) {
-                onSimulated(*result);
-            } else if (result.error().kind == ErrorKind::Cancelled) {
-                m_statusLabel->setText(m_dataStatus + tr("; simulation cancelled"));
-            } else {
-                m_statusLabel->setText(
-                    tr("The physics model failed on this data: %1").arg(errorText(result.error())));
+bool MainWindow::saveProject(const QString& path, QString* error) {
+    QString modelPath = m_workbench.modelPath();
+    if (modelPath.isEmpty() || m_workbench.model().calibration || m_workbench.model().hasResidualModels()) {
+        // The session's model as it is now, beside the project.
+        // The session writes it (atomically) on the engine thread, queued before anything else the
+        // user starts; a project whose model file is missing opens with the data alone.
+        modelPath = path + QStringLiteral(".model.json");
+        m_workbench.saveModel(modelPath);
+    }
+    QJsonObject o;
+    o[QStringLiteral("format")] = QStringLiteral("drytwin-project");
+    o[QStringLiteral("format_version")] = 1;
+    const QDir base = QFileInfo(path).absoluteDir();
+    o[QStringLiteral("data_path")] = m_workbench.dataPath().isEmpty() ? QString() : base.relativeFilePath(m_workbench.dataPath());
+    o[QStringLiteral("model_path")] = base.relativeFilePath(modelPath);
+    o[QStringLiteral("tab")] = QString::fromLatin1(kTabKeys[std::max(0, m_tabs->currentIndex())]);
+    QJsonArray batches;
+    for (const auto& r : m_data->batchTable()->selectionModel()->selectedRows()) {
+        batches.append(r.row());
+    }
+    o[QStringLiteral("selected_batches")] = batches;
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) {
+        if (error) {
+            *error = tr("cannot write %1: %2").arg(path, f.errorString());
+        }
+        return false;
+    }
+    f.write(QJsonDocument(o).toJson());
+    if (!f.commit()) {
+        if (error) {
+            *error = tr("cannot write %1: %2").arg(path, f.errorString());
+        }
+        return false;
+    }
+    m_projectPath = path;
+    rememberRecent(path);
+    m_statusLabel->setText(tr("Project saved to %1").arg(path));
+    return true;
+}
+
+bool MainWindow::openProject(const QString& path, QString* error) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        if (error) {
+            *error = tr("cannot open %1: %2").arg(path, f.errorString());
+        }
+        return false;
+    }
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &parseError);
+    if (doc.isNull() || !doc.isObject() || doc.object().value(QStringLiteral("format")).toString() != QLatin1String("drytwin-project")) {
+        if (error) {
+            *error = tr("%1 is not a DryTwin project (%2)").arg(path, parseError.errorString());
+        }
+        return false;
+    }
+    const QJsonObject o = doc.object();
+    const QDir base = QFileInfo(path).absoluteDir();
+    const QString data = o.value(QStringLiteral("data_path")).toString();
+    const QString model = o.value(QStringLiteral("model_path")).toString();
+    m_pendingTab = -1;
+    const QString tab = o.value(QStringLiteral("tab")).toString();
+    for (int i = 0; i < 8; ++i) {
+        if (tab == QLatin1String(kTabKeys[i])) {
+            m_pendingTab = i;
+        }
+    }
+    m_projectPath = path;
+    rememberRecent(path);
+    if (!model.isEmpty() && QFileInfo::exists(base.filePath(model))) {
+        m_pendingModel = base.filePath(model);
+    }
+    if (!data.isEmpty()) {
+        openDataSet(base.filePath(data));
+    } else if (!m_pendingModel.isEmpty()) {
+        m_workbench.openModel(m_pendingModel);
+        m_pendingModel.clear();
+    }
+    return true;
+}
+
+void MainWindow::rememberRecent(const QString& path) {
+    QSettings settings;
+    QStringList recent = settings.value(QStringLiteral("recentProjects")).toStringList();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kMaxRecent) {
+        recent.removeLast();
+    }
+    settings.setValue(QStringLiteral("recentProjects"), recent);
+    fillRecent();
+}
+
+void MainWindow::fillRecent() {
+    m_recent->clear();
+    const QStringList recent = QSettings().value(QStringLiteral("recentProjects")).toStringList();
+    for (const auto& p : recent) {
+        m_recent->addAction(p, this, [this, p] {
+            QString error;
+            if (!openProject(p, &error)) {
+                showError(tr("Open project"), error);
             }
         });
+    }
+    m_recent->setEnabled(!recent.isEmpty());
 }
 
-void MainWindow::onSimulated(const workflow::SimulateResult& result) {
-    // Outlet predictions in the file units the plots show (% wb, °C).
-    m_modelX.clear();
-    m_modelT.clear();
-    for (const auto& r : result.simulations) {
-        QVector<double> xb, tb;
-        xb.reserve(static_cast<int>(r.xOutDb.size()));
-        tb.reserve(static_cast<int>(r.tOutK.size()));
-        for (std::size_t k = 0; k < r.xOutDb.size(); ++k) {
-            xb.push_back(units::dryToWetPct(r.xOutDb[k]));
-            tb.push_back(units::kelvinToCelsius(r.tOutK[k]));
+void MainWindow::runAfterLoad(const QStringList& actions) {
+    m_pendingActions = actions;
+    if (m_workbench.hasData()) {
+        startActions();
+    }
+}
+
+void MainWindow::startActions() {
+    // Each is queued on the engine thread behind the one before; the panels show the results.
+    for (const auto& a : std::exchange(m_pendingActions, {})) {
+        if (a == QLatin1String("calibrate")) {
+            m_calibration->run();
+            m_workbench.simulate();
+        } else if (a == QLatin1String("train")) {
+            m_residual->train();
+        } else if (a == QLatin1String("evaluate")) {
+            m_workbench.evaluate();
+        } else if (a == QLatin1String("discover")) {
+            m_workbench.discover();
+        } else if (a == QLatin1String("mpc")) {
+            m_mpc->run();
         }
-        m_modelX.push_back(xb);
-        m_modelT.push_back(tb);
     }
-    m_statusLabel->setText(m_dataStatus + tr("; physics model (default parameters) shown dashed"));
-    showBatch(m_batchList->currentRow());
-    Q_EMIT simulationShown();
 }
 
-void MainWindow::onBatchSelected(int row) {
-    showBatch(row);
-}
-
-void MainWindow::showBatch(int row) {
-    if (!m_data || row < 0 || static_cast<std::size_t>(row) >= m_data->batches.size()) {
-        return;
+QStringList MainWindow::saveTabScreenshots(const QString& folder) {
+    QDir().mkpath(folder);
+    QStringList files;
+    for (int i = 0; i < m_tabs->count(); ++i) {
+        m_tabs->setCurrentIndex(i);
+        for (int k = 0; k < 5; ++k) {
+            QApplication::processEvents();
+        }
+        const QString file = QDir(folder).filePath(QStringLiteral("%1-%2.png").arg(i + 1, 2, 10, QLatin1Char('0')).arg(QLatin1String(kTabKeys[i])));
+        if (grab().save(file)) {
+            files << file;
+        }
     }
-    const auto& b = m_data->batches[static_cast<std::size_t>(row)];
-    const auto* t = b.values(data::Column::Time);
-    const auto* x = b.values(data::Column::XOut);
-    const auto* temp = b.values(data::Column::TOut);
-    if (t && x) {
-        m_moistureCurve->setSamples(t->data(), x->data(), static_cast<int>(t->size()));
-    }
-    if (t && temp) {
-        m_temperatureCurve->setSamples(t->data(), temp->data(), static_cast<int>(t->size()));
-    }
-    const auto r = static_cast<int>(row);
-    if (t && r < m_modelX.size() && m_modelX[r].size() == static_cast<int>(t->size())) {
-        m_moistureModelCurve->setSamples(t->data(), m_modelX[r].constData(), m_modelX[r].size());
-        m_temperatureModelCurve->setSamples(t->data(), m_modelT[r].constData(), m_modelT[r].size());
-    } else {
-        m_moistureModelCurve->setSamples(QVector<QPointF>());
-        m_temperatureModelCurve->setSamples(QVector<QPointF>());
-    }
-    m_moisturePlot->replot();
-    m_temperaturePlot->replot();
+    return files;
 }
 
 } // namespace drytwin::widgets

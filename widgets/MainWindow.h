@@ -1,37 +1,64 @@
 #pragma once
 
-#include "common/JobRunner.h"
+#include "common/Workbench.h"
 #include "data/Batch.h"
-#include "data/DataSetSummary.h"
 
 #include <QMainWindow>
-#include <QVector>
+#include <QStringList>
 #include <memory>
 
 class QLabel;
-class QListWidget;
+class QMenu;
 class QProgressBar;
 class QPushButton;
-class QwtPlot;
-class QwtPlotCurve;
-class QTreeWidget;
+class QTabWidget;
 
 namespace drytwin::widgets {
 
-/// @brief DryTwin's main window: menus, a batch list, plots of the selected batch, a status bar.
-/// Engine work runs on a worker thread; the window only shows and edits.
+class CalibrationPanel;
+class DataPanel;
+class DiagnosticsPanel;
+class DiscoverPanel;
+class LineView3D;
+class ModelPanel;
+class MpcPanel;
+class ResidualPanel;
+
+/// @brief DryTwin's workbench: one tab per task (Data, Model, Calibrate, Residual model,
+/// Diagnostics, Discover, What-if MPC, 3D line), menus, projects, a status bar with progress
+/// and cancel. Engine work runs on the engine thread through the Workbench; the window only shows
+/// and edits. Closing it mid-run cancels cleanly.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    /// @brief Starts loading a batch file or folder on the engine thread.
+    /// @brief Starts loading a batch file or folder; the physics model is simulated after it.
     void openDataSet(const QString& path);
+    /// @brief Opens a project file: data, model and view (errors go to the status bar and a box).
+    bool openProject(const QString& path, QString* error = nullptr);
+    /// @brief Writes the project atomically (the model beside it when it has no file yet).
+    bool saveProject(const QString& path, QString* error = nullptr);
     /// @brief The data set shown now (empty before the first successful load).
-    const data::DataSet& dataSet() const { return m_data ? *m_data : m_noData; }
-    /// @brief The runner of engine jobs (for tests and scripting).
-    JobRunner& jobs() { return m_jobs; }
+    const data::DataSet& dataSet() const { return m_workbench.dataSet() ? *m_workbench.dataSet() : m_noData; }
+    Workbench& workbench() { return m_workbench; }
+    JobRunner& jobs() { return m_workbench.jobs(); }
+    QTabWidget* tabs() const { return m_tabs; }
+    DataPanel* dataPanel() const { return m_data; }
+    ModelPanel* modelPanel() const { return m_model; }
+    CalibrationPanel* calibrationPanel() const { return m_calibration; }
+    ResidualPanel* residualPanel() const { return m_residual; }
+    DiagnosticsPanel* diagnosticsPanel() const { return m_diagnostics; }
+    DiscoverPanel* discoverPanel() const { return m_discover; }
+    MpcPanel* mpcPanel() const { return m_mpc; }
+    LineView3D* lineView() const { return m_view3d; }
+    /// @brief Runs actions once the data is loaded, in order, as if their buttons were pressed:
+    /// "calibrate", "train", "evaluate", "discover", "extend", "mpc" (demos, screenshots, training).
+    void runAfterLoad(const QStringList& actions);
+    bool hasPendingActions() const { return !m_pendingActions.isEmpty(); }
+    /// @brief Saves one PNG per tab into @p folder (NN-name.png); returns the files written.
+    QStringList saveTabScreenshots(const QString& folder);
     /// @brief HTML of the About box: DryTwin's version and every library's.
     static QString aboutText();
 
@@ -40,40 +67,39 @@ Q_SIGNALS:
     void simulationShown();
     /// @brief Emitted after a load attempt finished, successful or not (for tests and scripting).
     void loadFinished(bool ok);
+    /// @brief A project finished opening (data loaded and simulated, model opened).
+    void projectReady(bool ok);
 
-private Q_SLOTS:
-    void onProgress(drytwin::widgets::JobId id, const QString& stage, double fraction, const QString& detail);
-    void onBatchSelected(int row);
-    void showAbout();
-    void chooseFile();
-    void chooseFolder();
+protected:
+    void closeEvent(QCloseEvent* event) override;
 
 private:
     void createMenus();
-    void showBatch(int row);
+    void startActions();
     void setBusy(bool busy);
-    void onDataLoaded(const QString& path, const workflow::OpenResult& result);
-    void onLoadFailed(const QString& path, const Error& error);
-    void simulate();
-    void onSimulated(const workflow::SimulateResult& result);
+    void rememberRecent(const QString& path);
+    void fillRecent();
+    void showError(const QString& title, const QString& message);
 
-    JobRunner m_jobs;
-    std::shared_ptr<const data::DataSet> m_data;
+    Workbench m_workbench;
     data::DataSet m_noData;
-    QListWidget* m_batchList = nullptr;
-    QTreeWidget* m_columnTable = nullptr;
-    QwtPlot* m_moisturePlot = nullptr;
-    QwtPlot* m_temperaturePlot = nullptr;
-    QwtPlotCurve* m_moistureCurve = nullptr;
-    QwtPlotCurve* m_temperatureCurve = nullptr;
-    QwtPlotCurve* m_moistureModelCurve = nullptr;
-    QwtPlotCurve* m_temperatureModelCurve = nullptr;
-    QVector<QVector<double>> m_modelX;
-    QVector<QVector<double>> m_modelT;
-    QString m_dataStatus; ///< what the status bar says about the loaded data
+    QTabWidget* m_tabs = nullptr;
+    DataPanel* m_data = nullptr;
+    ModelPanel* m_model = nullptr;
+    CalibrationPanel* m_calibration = nullptr;
+    ResidualPanel* m_residual = nullptr;
+    DiagnosticsPanel* m_diagnostics = nullptr;
+    DiscoverPanel* m_discover = nullptr;
+    MpcPanel* m_mpc = nullptr;
+    LineView3D* m_view3d = nullptr;
+    QMenu* m_recent = nullptr;
     QLabel* m_statusLabel = nullptr;
     QProgressBar* m_progressBar = nullptr;
     QPushButton* m_cancelButton = nullptr;
+    QString m_projectPath;
+    QString m_pendingModel; ///< a project's model, opened once its data is in
+    QStringList m_pendingActions;
+    int m_pendingTab = -1;
 };
 
 } // namespace drytwin::widgets

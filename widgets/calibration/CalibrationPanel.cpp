@@ -1,0 +1,186 @@
+#include "calibration/CalibrationPanel.h"
+
+#include "common/PlotStack.h"
+#include "common/Workbench.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <qwt_plot_curve.h>
+
+namespace drytwin::widgets {
+
+namespace {
+QString sv(std::string_view s) {
+    return QString::fromUtf8(s.data(), static_cast<int>(s.size()));
+}
+} // namespace
+
+CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
+    m_free = new QTableWidget(0, 4);
+    m_free->setHorizontalHeaderLabels({tr("Free"), tr("Lower"), tr("Upper"), tr("Unit")});
+    m_free->verticalHeader()->hide();
+    int row = 0;
+    for (const auto& info : properties::parameterTable()) {
+        if (info.fixed || info.duration) {
+            continue;
+        }
+        m_free->insertRow(row);
+        auto* name = new QTableWidgetItem(sv(info.symbol));
+        name->setFlags(Qt::ItemIsUserCheckable | Qt::ItemIsEnabled);
+        const bool byDefault = info.id == properties::Param::h_HDT || info.id == properties::Param::k_HDT;
+        name->setCheckState(byDefault ? Qt::Checked : Qt::Unchecked);
+        name->setData(Qt::UserRole, static_cast<int>(info.id));
+        m_free->setItem(row, 0, name);
+        m_free->setItem(row, 1, new QTableWidgetItem(QString::number(info.lower, 'g', 5)));
+        m_free->setItem(row, 2, new QTableWidgetItem(QString::number(info.upper, 'g', 5)));
+        auto* unit = new QTableWidgetItem(sv(info.unit));
+        unit->setFlags(Qt::ItemIsEnabled);
+        m_free->setItem(row, 3, unit);
+        ++row;
+    }
+    m_free->resizeColumnsToContents();
+    m_budget = new QSpinBox;
+    m_budget->setRange(20, 100000);
+    m_budget->setValue(2000);
+    m_budget->setSuffix(tr(" evaluations"));
+    m_run = new QPushButton(tr("Calibrate"));
+    m_stop = new QPushButton(tr("Stop, keep best"));
+    m_stop->setEnabled(false);
+    m_estimates = new QTableWidget(0, 6);
+    m_estimates->setHorizontalHeaderLabels(
+        {tr("Parameter"), tr("Estimate"), tr("95 % interval"), tr("Unit"), tr("Fisher SE"), tr("At bound")});
+    m_estimates->verticalHeader()->hide();
+    m_estimates->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_fit = new QLabel(tr("Fits the free parameters to the calibration rows (every 10th kept row, the first 300) "
+                          "with NLopt: a global search, then BOBYQA."));
+    m_fit->setWordWrap(true);
+    m_loss = new PlotStack;
+    m_loss->addPlot(tr("best loss [-]"));
+    m_loss->setXTitle(tr("share of the evaluation budget used [-]"));
+
+    auto* left = new QWidget;
+    auto* ll = new QVBoxLayout(left);
+    ll->addWidget(new QLabel(tr("Free parameters and their search bounds:")));
+    ll->addWidget(m_free, 1);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_budget);
+    buttons->addWidget(m_run);
+    buttons->addWidget(m_stop);
+    ll->addLayout(buttons);
+    auto* right = new QWidget;
+    auto* rl = new QVBoxLayout(right);
+    rl->addWidget(m_loss, 2);
+    rl->addWidget(m_fit);
+    rl->addWidget(m_estimates, 1);
+    auto* split = new QSplitter;
+    split->addWidget(left);
+    split->addWidget(right);
+    split->setStretchFactor(1, 1);
+    auto* layout = new QHBoxLayout(this);
+    layout->addWidget(split);
+
+    connect(m_run, &QPushButton::clicked, this, &CalibrationPanel::run);
+    connect(m_stop, &QPushButton::clicked, &m_workbench, &Workbench::stopKeepBest);
+    connect(&m_workbench, &Workbench::calibrationProgress, this, [this](double fraction, double loss) {
+        m_lossX << fraction;
+        m_lossY << loss;
+        m_loss->clearCurves();
+        m_loss->addCurve(0, tr("best loss so far"), m_lossX, m_lossY, QColor(214, 39, 40));
+        m_loss->rescale();
+    });
+    connect(&m_workbench, &Workbench::calibrated, this, &CalibrationPanel::showResult);
+    const auto idle = [this] {
+        m_run->setEnabled(true);
+        m_stop->setEnabled(false);
+    };
+    connect(&m_workbench, &Workbench::calibrated, this, idle);
+    connect(&m_workbench, &Workbench::failed, this, idle);
+}
+
+void CalibrationPanel::setBudget(int evaluations) {
+    m_budget->setValue(evaluations);
+}
+
+void CalibrationPanel::run() {
+    workflow::CalibrateOptions o;
+    o.calibration.freeParameters.clear();
+    for (int r = 0; r < m_free->rowCount(); ++r) {
+        auto* name = m_free->item(r, 0);
+        if (name->checkState() != Qt::Checked) {
+            continue;
+        }
+        const auto p = static_cast<properties::Param>(name->data(Qt::UserRole).toInt());
+        o.calibration.freeParameters.push_back(p);
+        bool okLo = false, okHi = false;
+        const double lo = m_free->item(r, 1)->text().toDouble(&okLo);
+        const double hi = m_free->item(r, 2)->text().toDouble(&okHi);
+        if (okLo && okHi) {
+            o.calibration.bounds[p] = {lo, hi};
+        }
+    }
+    o.calibration.maxEvaluations = m_budget->value();
+    o.calibration.globalEvaluations = std::min(m_budget->value() / 2, 60 * static_cast<int>(o.calibration.freeParameters.size()));
+    if (auto st = o.validate(); !st) {
+        m_fit->setText(tr("Cannot calibrate: %1").arg(QString::fromStdString(st.error().message())));
+        return;
+    }
+    m_lossX.clear();
+    m_lossY.clear();
+    m_run->setEnabled(false);
+    m_stop->setEnabled(true);
+    m_fit->setText(tr("Calibrating…"));
+    m_workbench.calibrate(o);
+}
+
+void CalibrationPanel::showResult() {
+    const auto& r = m_workbench.latest().calibrate;
+    if (!r) {
+        return;
+    }
+    const auto& c = r->calibration;
+    m_estimates->setRowCount(static_cast<int>(c.estimates.size()));
+    for (std::size_t i = 0; i < c.estimates.size(); ++i) {
+        const auto& e = c.estimates[i];
+        const auto& info = properties::info(e.param);
+        const QStringList cells{sv(info.symbol), QString::number(e.value, 'g', 5),
+                                QStringLiteral("[%1, %2]").arg(e.ci95Low, 0, 'g', 5).arg(e.ci95High, 0, 'g', 5),
+                                sv(info.unit), QString::number(e.standardErrorFisher, 'g', 3),
+                                e.atBound ? tr("yes") : tr("no")};
+        for (int col = 0; col < cells.size(); ++col) {
+            m_estimates->setItem(static_cast<int>(i), col, new QTableWidgetItem(cells[col]));
+        }
+    }
+    m_estimates->resizeColumnsToContents();
+    m_fit->setText(tr("%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. "
+                      "Intervals: %10.")
+                       .arg(QString::fromLatin1(terminationName(r->ending.termination)))
+                       .arg(c.evaluations)
+                       .arg(c.elapsedSeconds, 0, 'f', 1)
+                       .arg(c.before.loss, 0, 'g', 4)
+                       .arg(c.after.loss, 0, 'g', 4)
+                       .arg(c.before.maeXOutPct, 0, 'f', 3)
+                       .arg(c.after.maeXOutPct, 0, 'f', 3)
+                       .arg(c.before.maeTOutC, 0, 'f', 3)
+                       .arg(c.after.maeTOutC, 0, 'f', 3)
+                       .arg(QString::fromStdString(c.intervalMethod)));
+    // The whole history as the final curve (every evaluation, not only the progress reports).
+    QVector<double> x, y;
+    for (const auto& h : c.history) {
+        x << h.evaluation;
+        y << h.bestLoss;
+    }
+    if (!x.isEmpty()) {
+        m_loss->clearCurves();
+        m_loss->setXTitle(tr("loss evaluations [-]"));
+        m_loss->addCurve(0, tr("best loss"), x, y, QColor(214, 39, 40));
+        m_loss->rescale();
+    }
+}
+
+} // namespace drytwin::widgets

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <QVector>
+#include <QWidget>
+
+class QLabel;
+class QPushButton;
+class QSpinBox;
+class QTableWidget;
+
+namespace drytwin::widgets {
+
+class PlotStack;
+class Workbench;
+
+/// @brief The Calibrate panel: free parameters and their bounds, a live loss curve, progress,
+/// Stop (keeping the best so far) and Cancel, then the estimates with their intervals and the fit
+/// before and after.
+class CalibrationPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit CalibrationPanel(Workbench& workbench, QWidget* parent = nullptr);
+    QPushButton* runButton() const { return m_run; }
+    QPushButton* stopButton() const { return m_stop; }
+    QTableWidget* estimates() const { return m_estimates; }
+    QTableWidget* freeParameters() const { return m_free; }
+    PlotStack* lossPlot() const { return m_loss; }
+    /// @brief Sets the evaluation budget (tests use a small one).
+    void setBudget(int evaluations);
+    void run();
+
+private:
+    void showResult();
+
+    Workbench& m_workbench;
+    QTableWidget* m_free = nullptr;
+    QSpinBox* m_budget = nullptr;
+    QPushButton* m_run = nullptr;
+    QPushButton* m_stop = nullptr;
+    QTableWidget* m_estimates = nullptr;
+    QLabel* m_fit = nullptr;
+    PlotStack* m_loss = nullptr;
+    QVector<double> m_lossX, m_lossY;
+};
+
+} // namespace drytwin::widgets

@@ -1,0 +1,447 @@
+#include "common/PlotStack.h"
+
+#include <QEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QImage>
+#include <QLabel>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QPushButton>
+#include <QSvgGenerator>
+#include <QVBoxLayout>
+#include <cmath>
+#include <limits>
+#include <qwt_legend.h>
+#include <qwt_legend_label.h>
+#include <qwt_plot.h>
+#include <qwt_plot_canvas.h>
+#include <qwt_plot_curve.h>
+#include <qwt_plot_grid.h>
+#include <qwt_plot_marker.h>
+#include <qwt_plot_panner.h>
+#include <qwt_plot_renderer.h>
+#include <qwt_plot_zoomer.h>
+#include <qwt_scale_draw.h>
+#include <qwt_scale_engine.h>
+#include <qwt_scale_widget.h>
+#include <qwt_symbol.h>
+
+namespace drytwin::widgets {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+QwtPlotMarker* verticalLine(QwtPlot* plot, const QColor& colour, Qt::PenStyle style) {
+    auto* m = new QwtPlotMarker;
+    m->setLineStyle(QwtPlotMarker::VLine);
+    m->setLinePen(colour, 1.2, style);
+    m->setItemAttribute(QwtPlotItem::Legend, false);
+    m->setZ(50);
+    m->setVisible(false);
+    m->attach(plot);
+    return m;
+}
+
+/// Value of the first visible curve of a plot at x (linear interpolation), NaN outside.
+double valueAt(const QwtPlot* plot, double x) {
+    for (const auto* item : plot->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+        const auto* c = static_cast<const QwtPlotCurve*>(item);
+        if (!c->isVisible() || c->dataSize() < 2) {
+            continue;
+        }
+        const auto* d = c->data();
+        const std::size_t n = d->size();
+        if (x < d->sample(0).x() || x > d->sample(n - 1).x()) {
+            continue;
+        }
+        std::size_t lo = 0, hi = n - 1;
+        while (hi - lo > 1) {
+            const std::size_t mid = (lo + hi) / 2;
+            (d->sample(mid).x() <= x ? lo : hi) = mid;
+        }
+        const QPointF a = d->sample(lo), b = d->sample(hi);
+        const double w = b.x() > a.x() ? (x - a.x()) / (b.x() - a.x()) : 0.0;
+        return a.y() + w * (b.y() - a.y());
+    }
+    return kNaN;
+}
+
+} // namespace
+
+PlotStack::PlotStack(QWidget* parent) : QWidget(parent), m_cursor{kNaN, kNaN}, m_timeCursor(kNaN) {
+    m_layout = new QVBoxLayout(this);
+    m_layout->setContentsMargins(0, 0, 0, 0);
+    m_layout->setSpacing(2);
+    auto* bottom = new QHBoxLayout;
+    m_readout = new QLabel(tr("Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to "
+                              "zoom, right click to zoom out, middle drag to pan"));
+    m_readout->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_readout->setWordWrap(true);
+    auto* exportButton = new QPushButton(tr("Export…"));
+    exportButton->setToolTip(tr("Save these plots as PNG, SVG or PDF"));
+    connect(exportButton, &QPushButton::clicked, this, &PlotStack::exportDialog);
+    bottom->addWidget(m_readout, 1);
+    bottom->addWidget(exportButton);
+    m_layout->addLayout(bottom);
+}
+
+int PlotStack::addPlot(const QString& yTitle) {
+    auto* plot = new QwtPlot(this);
+    plot->setCanvasBackground(Qt::white);
+    plot->setAxisTitle(QwtPlot::yLeft, yTitle);
+    auto* grid = new QwtPlotGrid;
+    grid->setMajorPen(QColor(220, 220, 220), 0, Qt::DotLine);
+    grid->attach(plot);
+    // Compact axes, so that many plots fit one above the other and their titles stay whole.
+    QFont titleFont = plot->axisTitle(QwtPlot::yLeft).font();
+    titleFont.setPointSizeF(8.5);
+    titleFont.setBold(false);
+    QwtText title(yTitle);
+    title.setFont(titleFont);
+    plot->setAxisTitle(QwtPlot::yLeft, title);
+    plot->setAxisMaxMajor(QwtPlot::yLeft, 4);
+    QFont tickFont = plot->axisFont(QwtPlot::yLeft);
+    tickFont.setPointSizeF(8);
+    plot->setAxisFont(QwtPlot::yLeft, tickFont);
+    plot->setAxisFont(QwtPlot::xBottom, tickFont);
+    // One legend, on the top plot: its items toggle the curves of that name in every plot.
+    if (m_plots.empty()) {
+        auto* legend = new QwtLegend;
+        legend->setDefaultItemMode(QwtLegendData::Checkable);
+        legend->setMaxColumns(8);
+        plot->insertLegend(legend, QwtPlot::TopLegend);
+        connect(legend, &QwtLegend::checked, this, [this, plot](const QVariant& info, bool on, int) {
+            auto* item = plot->infoToItem(info);
+            if (!item) {
+                return;
+            }
+            const QString name = item->title().text();
+            for (auto* p : m_plots) {
+                for (auto* other : p->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+                    if (other->title().text() == name) {
+                        other->setVisible(on);
+                    }
+                }
+                p->replot();
+            }
+        });
+    }
+    // Only the bottom plot labels the shared time axis.
+    for (auto* p : m_plots) {
+        p->setAxisTitle(QwtPlot::xBottom, QString());
+        p->enableAxis(QwtPlot::xBottom, false);
+    }
+    auto* zoomer = new QwtPlotZoomer(plot->canvas());
+    zoomer->setRubberBandPen(QPen(Qt::darkGray, 1, Qt::DashLine));
+    zoomer->setTrackerMode(QwtPicker::AlwaysOn);
+    zoomer->setTrackerPen(QPen(Qt::darkBlue));
+    auto* panner = new QwtPlotPanner(plot->canvas());
+    panner->setMouseButton(Qt::MiddleButton);
+    connect(plot->axisWidget(QwtPlot::xBottom), &QwtScaleWidget::scaleDivChanged, this,
+            [this, plot] { linkXFrom(plot); });
+    plot->canvas()->installEventFilter(this); // after the zoomer: modifier clicks come here first
+    m_timeMarkers.push_back(verticalLine(plot, QColor(230, 120, 0), Qt::SolidLine));
+    m_cursorMarkers[0].push_back(verticalLine(plot, QColor(40, 40, 40), Qt::DashLine));
+    m_cursorMarkers[1].push_back(verticalLine(plot, QColor(120, 0, 160), Qt::DashLine));
+    m_plots.push_back(plot);
+    m_zoomers.push_back(zoomer);
+    m_layout->insertWidget(static_cast<int>(m_plots.size()) - 1, plot, 4);
+    plot->setMinimumHeight(110);
+    // The bottom plot also holds the time axis: a little more room keeps its canvas as tall.
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        m_layout->setStretch(static_cast<int>(i), i + 1 == m_plots.size() ? 5 : 4);
+    }
+    setXTitle(tr("time [s]"));
+    return static_cast<int>(m_plots.size()) - 1;
+}
+
+void PlotStack::setXTitle(const QString& title) {
+    if (!m_plots.empty()) {
+        QwtText t(title);
+        QFont f = t.font();
+        f.setPointSizeF(8.5);
+        t.setFont(f);
+        m_plots.back()->setAxisTitle(QwtPlot::xBottom, t);
+    }
+}
+
+QwtPlotCurve* PlotStack::addCurve(int index, const QString& name, const QVector<double>& x,
+                                  const QVector<double>& y, const QColor& colour, Qt::PenStyle style, double width) {
+    auto* plot = m_plots.at(static_cast<std::size_t>(index));
+    auto* c = new QwtPlotCurve(name);
+    c->setPen(colour, width, style);
+    // Long series: drop points that fall on the same pixel, clip to the canvas.
+    c->setPaintAttribute(QwtPlotCurve::FilterPoints, true);
+    c->setPaintAttribute(QwtPlotCurve::ClipPolygons, true);
+    c->setSamples(x, y);
+    c->attach(plot);
+    // One legend entry per name, on the top plot; curves elsewhere share it.
+    bool named = false;
+    for (auto* p : m_plots) {
+        for (auto* other : p->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+            named = named || (other != c && other->title().text() == name && other->testItemAttribute(QwtPlotItem::Legend));
+        }
+    }
+    c->setItemAttribute(QwtPlotItem::Legend, !named && !name.isEmpty());
+    if (plot != m_plots.front() && !named && !name.isEmpty()) {
+        // Its entry goes on the top plot's legend: a stand-in there, without data.
+        auto* standIn = new QwtPlotCurve(name);
+        standIn->setPen(c->pen());
+        standIn->setStyle(c->style());
+        standIn->attach(m_plots.front());
+        c->setItemAttribute(QwtPlotItem::Legend, false);
+        m_plots.front()->updateLegend();
+        if (auto* legend = qobject_cast<QwtLegend*>(m_plots.front()->legend())) {
+            if (auto* label = qobject_cast<QwtLegendLabel*>(legend->legendWidget(m_plots.front()->itemToInfo(standIn)))) {
+                label->setChecked(true);
+            }
+        }
+    }
+    plot->updateLegend();
+    if (auto* legend = qobject_cast<QwtLegend*>(plot->legend())) {
+        if (auto* label = qobject_cast<QwtLegendLabel*>(legend->legendWidget(plot->itemToInfo(c)))) {
+            label->setChecked(true);
+        }
+    }
+    return c;
+}
+
+QwtPlotCurve* PlotStack::addDots(int index, const QString& name, const QVector<double>& x, const QVector<double>& y,
+                                 const QColor& colour) {
+    auto* c = addCurve(index, name, x, y, colour);
+    c->setStyle(QwtPlotCurve::Dots);
+    c->setPen(colour, 3.0);
+    return c;
+}
+
+void PlotStack::clearCurves() {
+    for (auto* plot : m_plots) {
+        plot->detachItems(QwtPlotItem::Rtti_PlotCurve, true);
+        plot->updateLegend();
+    }
+}
+
+int PlotStack::curveCount(int index) const {
+    int n = 0;
+    for (const auto* item : m_plots.at(static_cast<std::size_t>(index))->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+        n += static_cast<const QwtPlotCurve*>(item)->dataSize() > 0 ? 1 : 0; // not the legend stand-ins
+    }
+    return n;
+}
+
+void PlotStack::rescale() {
+    m_linking = true;
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        auto* plot = m_plots[i];
+        plot->setAxisAutoScale(QwtPlot::xBottom, true);
+        plot->setAxisAutoScale(QwtPlot::yLeft, true);
+        plot->updateAxes();
+        plot->replot();
+        m_zoomers[i]->setZoomBase(true);
+    }
+    m_linking = false;
+    alignAxes();
+}
+
+void PlotStack::setXRange(double lo, double hi) {
+    m_linking = true;
+    for (auto* plot : m_plots) {
+        plot->setAxisScale(QwtPlot::xBottom, lo, hi);
+        plot->replot();
+    }
+    m_linking = false;
+}
+
+void PlotStack::setLogScale(int index, bool logX, bool logY) {
+    auto* plot = m_plots.at(static_cast<std::size_t>(index));
+    if (logX) {
+        plot->setAxisScaleEngine(QwtPlot::xBottom, new QwtLogScaleEngine);
+    }
+    if (logY) {
+        plot->setAxisScaleEngine(QwtPlot::yLeft, new QwtLogScaleEngine);
+    }
+}
+
+void PlotStack::linkXFrom(QwtPlot* source) {
+    if (m_linking) {
+        return;
+    }
+    m_linking = true;
+    const QwtScaleDiv div = source->axisScaleDiv(QwtPlot::xBottom);
+    for (auto* plot : m_plots) {
+        if (plot != source) {
+            plot->setAxisScale(QwtPlot::xBottom, div.lowerBound(), div.upperBound());
+            plot->replot();
+        }
+    }
+    m_linking = false;
+}
+
+void PlotStack::alignAxes() {
+    // Equal y-axis widths, so that the plot areas (and the time axes) line up.
+    double extent = 0;
+    for (auto* plot : m_plots) {
+        auto* sw = plot->axisWidget(QwtPlot::yLeft);
+        sw->scaleDraw()->setMinimumExtent(0);
+        extent = std::max(extent, sw->scaleDraw()->extent(sw->font()));
+    }
+    for (auto* plot : m_plots) {
+        plot->axisWidget(QwtPlot::yLeft)->scaleDraw()->setMinimumExtent(extent);
+        plot->updateLayout();
+        plot->replot();
+    }
+}
+
+void PlotStack::setTimeCursor(double t) {
+    m_timeCursor = t;
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        m_timeMarkers[i]->setXValue(t);
+        m_timeMarkers[i]->setVisible(std::isfinite(t));
+        m_plots[i]->replot();
+    }
+    updateReadout();
+}
+
+void PlotStack::setMeasuringCursor(int which, double x) {
+    m_cursor[which] = x;
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        m_cursorMarkers[which][i]->setXValue(x);
+        m_cursorMarkers[which][i]->setVisible(std::isfinite(x));
+        m_plots[i]->replot();
+    }
+    updateReadout();
+}
+
+QString PlotStack::readout() const {
+    return m_readout->text();
+}
+
+void PlotStack::updateReadout() {
+    QStringList parts;
+    const auto fmt = [](double v) { return std::isfinite(v) ? QString::number(v, 'g', 5) : QStringLiteral("–"); };
+    if (std::isfinite(m_cursor[0])) {
+        parts << tr("A %1").arg(fmt(m_cursor[0]));
+    }
+    if (std::isfinite(m_cursor[1])) {
+        parts << tr("B %1").arg(fmt(m_cursor[1]));
+    }
+    if (std::isfinite(m_cursor[0]) && std::isfinite(m_cursor[1])) {
+        parts << tr("Δx %1").arg(fmt(m_cursor[1] - m_cursor[0]));
+        for (auto* plot : m_plots) {
+            const double a = valueAt(plot, m_cursor[0]);
+            const double b = valueAt(plot, m_cursor[1]);
+            parts << tr("%1: Δ %2").arg(plot->axisTitle(QwtPlot::yLeft).text(), fmt(b - a));
+        }
+    }
+    if (std::isfinite(m_timeCursor)) {
+        parts << tr("time cursor %1 s").arg(fmt(m_timeCursor));
+    }
+    if (!parts.isEmpty()) {
+        m_readout->setText(parts.join(QStringLiteral("   ")));
+    }
+}
+
+bool PlotStack::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::MouseButtonPress) {
+        auto* me = static_cast<QMouseEvent*>(event);
+        const auto mods = me->modifiers();
+        if (me->button() == Qt::LeftButton && (mods & (Qt::ControlModifier | Qt::ShiftModifier | Qt::AltModifier))) {
+            for (auto* plot : m_plots) {
+                if (plot->canvas() == watched) {
+                    const double x = plot->invTransform(QwtPlot::xBottom, me->pos().x());
+                    if (mods & Qt::AltModifier) {
+                        setTimeCursor(x);
+                        Q_EMIT timeCursorMoved(x);
+                    } else {
+                        setMeasuringCursor((mods & Qt::ControlModifier) ? 0 : 1, x);
+                    }
+                    return true;
+                }
+            }
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+bool PlotStack::exportTo(const QString& path, QString* error) const {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    const QSize size(std::max(width(), 800), std::max(height(), 200 * static_cast<int>(m_plots.size())));
+    QwtPlotRenderer renderer;
+    renderer.setDiscardFlag(QwtPlotRenderer::DiscardBackground, false);
+    const auto paint = [&](QPainter& painter, const QRectF& area) {
+        double total = 0;
+        for (auto* plot : m_plots) {
+            total += plot->height() > 0 ? plot->height() : 1;
+        }
+        double y = area.top();
+        for (auto* plot : m_plots) {
+            const double h = area.height() * (plot->height() > 0 ? plot->height() : 1) / total;
+            renderer.render(plot, &painter, QRectF(area.left(), y, area.width(), h));
+            y += h;
+        }
+    };
+    if (suffix == QLatin1String("png")) {
+        QImage image(size * 2, QImage::Format_ARGB32);
+        image.fill(Qt::white);
+        QPainter painter(&image);
+        painter.scale(2, 2);
+        paint(painter, QRectF(QPointF(0, 0), size));
+        painter.end();
+        if (!image.save(path)) {
+            if (error) {
+                *error = tr("cannot write %1").arg(path);
+            }
+            return false;
+        }
+        return true;
+    }
+    if (suffix == QLatin1String("svg")) {
+        QSvgGenerator svg;
+        svg.setFileName(path);
+        svg.setSize(size);
+        svg.setViewBox(QRect(QPoint(0, 0), size));
+        svg.setTitle(tr("DryTwin plots"));
+        QPainter painter(&svg);
+        paint(painter, QRectF(QPointF(0, 0), size));
+        return painter.end();
+    }
+    if (suffix == QLatin1String("pdf")) {
+        QPdfWriter pdf(path);
+        pdf.setPageSize(QPageSize(QPageSize::A4));
+        pdf.setPageOrientation(QPageLayout::Landscape);
+        pdf.setResolution(96);
+        QPainter painter(&pdf);
+        if (!painter.isActive()) {
+            if (error) {
+                *error = tr("cannot write %1").arg(path);
+            }
+            return false;
+        }
+        paint(painter, QRectF(QPointF(0, 0), QSizeF(pdf.width(), pdf.height())));
+        return painter.end();
+    }
+    if (error) {
+        *error = tr("unknown format '%1': use .png, .svg or .pdf").arg(suffix);
+    }
+    return false;
+}
+
+void PlotStack::exportDialog() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export plots"), QStringLiteral("plots.png"),
+                                                      tr("PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)"));
+    if (path.isEmpty()) {
+        return;
+    }
+    QString error;
+    if (!exportTo(path, &error)) {
+        m_readout->setText(tr("Export failed: %1").arg(error));
+    } else {
+        m_readout->setText(tr("Saved %1").arg(path));
+    }
+}
+
+} // namespace drytwin::widgets

@@ -1,0 +1,84 @@
+#pragma once
+
+#include <QColor>
+#include <QString>
+#include <QVector>
+#include <QWidget>
+#include <vector>
+
+class QLabel;
+class QVBoxLayout;
+class QwtPlot;
+class QwtPlotCurve;
+class QwtPlotMarker;
+class QwtPlotZoomer;
+
+namespace drytwin::widgets {
+
+/// @brief A column of Qwt plots on one linked time axis, as PlotJuggler and OMEdit users expect:
+/// plot areas lined up, zoom (left drag, right click back) and pan (middle drag) on one plot
+/// move them all, a picker readout, two measuring cursors (Ctrl+click: A, Shift+click: B) with a
+/// delta readout, a shared time cursor (Alt+click, or setTimeCursor), legend items that toggle
+/// curves, and export of the whole stack to PNG, SVG or PDF. Long series (63,000 samples) are
+/// drawn with Qwt's point filtering, so redraws stay smooth.
+class PlotStack : public QWidget {
+    Q_OBJECT
+public:
+    explicit PlotStack(QWidget* parent = nullptr);
+
+    /// @brief Appends a plot with a y-axis title (with its unit); returns its index.
+    int addPlot(const QString& yTitle);
+    int plotCount() const { return static_cast<int>(m_plots.size()); }
+    QwtPlot* plot(int index) const { return m_plots.at(static_cast<std::size_t>(index)); }
+    /// @brief The x-axis title of the bottom plot (default "time [s]").
+    void setXTitle(const QString& title);
+    /// @brief Adds a curve to plot @p index; returns it (owned by the plot).
+    QwtPlotCurve* addCurve(int index, const QString& name, const QVector<double>& x, const QVector<double>& y,
+                           const QColor& colour, Qt::PenStyle style = Qt::SolidLine, double width = 1.2);
+    /// @brief Adds dots (scatter) instead of a line.
+    QwtPlotCurve* addDots(int index, const QString& name, const QVector<double>& x, const QVector<double>& y,
+                          const QColor& colour);
+    /// @brief Removes every curve (keeps plots, grids and cursors).
+    void clearCurves();
+    /// @brief Number of curves in plot @p index.
+    int curveCount(int index) const;
+    /// @brief Rescales every plot to its data and redraws (call after adding curves).
+    void rescale();
+    /// @brief Moves the shared time cursor (drawn in every plot); NaN hides it.
+    void setTimeCursor(double t);
+    double timeCursor() const { return m_timeCursor; }
+    /// @brief Places measuring cursor A (0) or B (1) at @p x, updating the readout.
+    void setMeasuringCursor(int which, double x);
+    /// @brief The readout under the plots ("A … B … Δ …").
+    QString readout() const;
+    /// @brief Writes the whole stack to @p path; the format follows the suffix (png, svg, pdf).
+    bool exportTo(const QString& path, QString* error = nullptr) const;
+    /// @brief Shows the x range [lo, hi] in every plot.
+    void setXRange(double lo, double hi);
+    /// @brief Log scale on the x and/or y axis of plot @p index (PSD plots).
+    void setLogScale(int index, bool logX, bool logY);
+
+Q_SIGNALS:
+    void timeCursorMoved(double t);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    void linkXFrom(QwtPlot* source);
+    void alignAxes();
+    void updateReadout();
+    void exportDialog();
+
+    QVBoxLayout* m_layout = nullptr;
+    QLabel* m_readout = nullptr;
+    std::vector<QwtPlot*> m_plots;
+    std::vector<QwtPlotZoomer*> m_zoomers;
+    std::vector<QwtPlotMarker*> m_timeMarkers;
+    std::vector<QwtPlotMarker*> m_cursorMarkers[2];
+    double m_cursor[2];
+    double m_timeCursor;
+    bool m_linking = false;
+};
+
+} // namespace drytwin::widgets

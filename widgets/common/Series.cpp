@@ -1,0 +1,46 @@
+#include "common/Series.h"
+
+#include "common/Units.h"
+
+#include <QCoreApplication>
+
+namespace drytwin::widgets {
+
+const std::vector<SeriesInfo>& batchSeries() {
+    using namespace units;
+    const auto tr = [](const char* s) { return QCoreApplication::translate("drytwin::widgets::Series", s); };
+    static const std::vector<SeriesInfo> s{
+        {tr("T_hot [°C]"), [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tHotK[k]); }},
+        {tr("feed [kg/h]"), [](const data::SiBatch& b, std::size_t k) { return kgPerSToKgPerHour(b.feedKgPerS[k]); }},
+        {tr("X_in [% wb]"), [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xInDb[k]); }},
+        {tr("T_amb [°C]"), [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tAmbK[k]); }},
+        {tr("RH [%]"), [](const data::SiBatch& b, std::size_t k) { return fractionToPercent(b.rhAmb[k]); }},
+        {tr("X_HDT [% wb]"), [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xHdtDb[k]); }},
+        {tr("X_out [% wb]"), [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xOutDb[k]); }},
+        {tr("T_out [°C]"), [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tOutK[k]); }},
+    };
+    return s;
+}
+
+QVector<double> timeOf(const data::SiBatch& b) {
+    QVector<double> t(static_cast<int>(b.rows()));
+    const double t0 = b.rows() > 0 ? b.timeS.front() : 0.0;
+    for (std::size_t k = 0; k < b.rows(); ++k) {
+        t[static_cast<int>(k)] = b.timeS[k] - t0;
+    }
+    return t;
+}
+
+QVector<double> valuesOf(const data::SiBatch& b, const SeriesInfo& s) {
+    QVector<double> v(static_cast<int>(b.rows()));
+    for (std::size_t k = 0; k < b.rows(); ++k) {
+        v[static_cast<int>(k)] = s.value(b, k);
+    }
+    return v;
+}
+
+QVector<double> toQVector(const std::vector<double>& v) {
+    return QVector<double>(v.begin(), v.end());
+}
+
+} // namespace drytwin::widgets

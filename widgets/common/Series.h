@@ -1,0 +1,28 @@
+#pragma once
+
+#include "data/SiBatch.h"
+
+#include <QString>
+#include <QVector>
+#include <functional>
+#include <vector>
+
+namespace drytwin::widgets {
+
+/// @brief A series of a batch as the plots show it: file units (°C, % wb, kg/h, %).
+struct SeriesInfo {
+    QString title; ///< axis title with its unit
+    std::function<double(const data::SiBatch&, std::size_t)> value;
+};
+
+/// @brief Every column of a batch file the Data panel plots, in the order of the file.
+const std::vector<SeriesInfo>& batchSeries();
+
+/// @brief Seconds since the batch start of each row.
+QVector<double> timeOf(const data::SiBatch& b);
+/// @brief Values of a series over every row (NaN where missing).
+QVector<double> valuesOf(const data::SiBatch& b, const SeriesInfo& s);
+/// @brief A std::vector as a QVector.
+QVector<double> toQVector(const std::vector<double>& v);
+
+} // namespace drytwin::widgets

@@ -1,0 +1,174 @@
+#include "data/DataPanel.h"
+
+#include "common/PlotStack.h"
+#include "common/Series.h"
+#include "common/Units.h"
+#include "common/Workbench.h"
+
+#include <QComboBox>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMimeData>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace drytwin::widgets {
+
+namespace {
+const QColor kPalette[] = {QColor(31, 119, 180), QColor(214, 39, 40), QColor(44, 160, 44), QColor(148, 103, 189),
+                           QColor(255, 127, 14), QColor(140, 86, 75), QColor(227, 119, 194), QColor(127, 127, 127),
+                           QColor(188, 189, 34), QColor(23, 190, 207)};
+}
+
+DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
+    setAcceptDrops(true);
+    auto* openFile = new QPushButton(tr("Open file…"));
+    auto* openFolder = new QPushButton(tr("Open folder…"));
+    m_arrangement = new QComboBox;
+    m_arrangement->addItems({tr("Batches overlaid"), tr("Batches one after another")});
+    m_table = new QTableWidget(0, 6);
+    m_table->setHorizontalHeaderLabels({tr("Batch"), tr("Rows"), tr("Kept"), tr("Length [min]"),
+                                        tr("Mean X_out [% wb]"), tr("Mean T_hot [°C]")});
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->verticalHeader()->hide();
+    m_table->setMinimumWidth(320);
+    m_plots = new PlotStack;
+    for (const auto& s : batchSeries()) {
+        m_plots->addPlot(s.title);
+    }
+    auto* left = new QWidget;
+    auto* leftLayout = new QVBoxLayout(left);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(openFile);
+    buttons->addWidget(openFolder);
+    leftLayout->addLayout(buttons);
+    leftLayout->addWidget(new QLabel(tr("Batches (select several to overlay; drop files here):")));
+    leftLayout->addWidget(m_table, 1);
+    leftLayout->addWidget(m_arrangement);
+    // Eight plots one above the other: scroll rather than squeeze them.
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(m_plots);
+    scroll->setWidgetResizable(true);
+    m_plots->setMinimumHeight(8 * 125);
+    auto* split = new QSplitter;
+    split->addWidget(left);
+    split->addWidget(scroll);
+    split->setStretchFactor(1, 1);
+    auto* layout = new QHBoxLayout(this);
+    layout->addWidget(split);
+
+    connect(openFile, &QPushButton::clicked, this, [this] {
+        const QString p = QFileDialog::getOpenFileName(this, tr("Open batch file"), {}, tr("Batch files (*.csv)"));
+        if (!p.isEmpty()) {
+            m_workbench.openData(p);
+        }
+    });
+    connect(openFolder, &QPushButton::clicked, this, [this] {
+        const QString p = QFileDialog::getExistingDirectory(this, tr("Open data set folder"));
+        if (!p.isEmpty()) {
+            m_workbench.openData(p);
+        }
+    });
+    connect(&m_workbench, &Workbench::dataChanged, this, &DataPanel::fill);
+    connect(m_table, &QTableWidget::itemSelectionChanged, this, &DataPanel::redraw);
+    connect(m_arrangement, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &DataPanel::redraw);
+}
+
+void DataPanel::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasUrls()) {
+        event->acceptProposedAction();
+    }
+}
+
+void DataPanel::dropEvent(QDropEvent* event) {
+    const auto urls = event->mimeData()->urls();
+    if (!urls.isEmpty() && urls.front().isLocalFile()) {
+        m_workbench.openData(urls.front().toLocalFile());
+    }
+}
+
+void DataPanel::fill() {
+    const auto& si = m_workbench.siBatches();
+    const auto& summary = m_workbench.summary();
+    m_table->blockSignals(true);
+    m_table->setRowCount(static_cast<int>(si.size()));
+    for (std::size_t i = 0; i < si.size(); ++i) {
+        const auto& b = si[i];
+        std::size_t kept = 0;
+        double x = 0, h = 0;
+        for (std::size_t k = 0; k < b.rows(); ++k) {
+            kept += b.keep[k];
+            x += units::dryToWetPct(b.xOutDb[k]) / static_cast<double>(b.rows());
+            h += units::kelvinToCelsius(b.tHotK[k]) / static_cast<double>(b.rows());
+        }
+        const double minutes = b.rows() > 1 ? (b.timeS.back() - b.timeS.front()) / 60.0 : 0.0;
+        const QStringList cells{QString::fromStdString(i < summary.batches.size() ? summary.batches[i].id : b.id),
+                                QString::number(b.rows()),
+                                QString::number(kept),
+                                QString::number(minutes, 'f', 1),
+                                QString::number(x, 'f', 3),
+                                QString::number(h, 'f', 1)};
+        for (int c = 0; c < cells.size(); ++c) {
+            m_table->setItem(static_cast<int>(i), c, new QTableWidgetItem(cells[c]));
+        }
+    }
+    m_table->resizeColumnsToContents();
+    m_table->blockSignals(false);
+    if (!si.empty()) {
+        selectBatches({0});
+    }
+}
+
+void DataPanel::selectBatches(const QList<int>& rows) {
+    m_table->blockSignals(true);
+    m_table->clearSelection();
+    for (int r : rows) {
+        m_table->selectRow(r);
+    }
+    m_table->blockSignals(false);
+    redraw();
+}
+
+void DataPanel::redraw() {
+    const auto& si = m_workbench.siBatches();
+    QList<int> rows;
+    for (const auto& range : m_table->selectedRanges()) {
+        for (int r = range.topRow(); r <= range.bottomRow(); ++r) {
+            rows << r;
+        }
+    }
+    std::sort(rows.begin(), rows.end());
+    m_plots->clearCurves();
+    const bool sequential = m_arrangement->currentIndex() == 1;
+    double offset = 0;
+    for (int n = 0; n < rows.size(); ++n) {
+        if (rows[n] < 0 || static_cast<std::size_t>(rows[n]) >= si.size()) {
+            continue;
+        }
+        const auto& b = si[static_cast<std::size_t>(rows[n])];
+        QVector<double> t = timeOf(b);
+        if (sequential) {
+            for (auto& v : t) {
+                v += offset;
+            }
+            offset = t.isEmpty() ? offset : t.back() + 1;
+        }
+        const QColor colour = kPalette[n % 10];
+        for (std::size_t s = 0; s < batchSeries().size(); ++s) {
+            m_plots->addCurve(static_cast<int>(s), QString::fromStdString(b.id), t, valuesOf(b, batchSeries()[s]),
+                              colour);
+        }
+    }
+    m_plots->rescale();
+}
+
+} // namespace drytwin::widgets

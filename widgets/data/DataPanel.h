@@ -1,0 +1,38 @@
+#pragma once
+
+#include <QWidget>
+
+class QComboBox;
+class QTableWidget;
+
+namespace drytwin::widgets {
+
+class PlotStack;
+class Workbench;
+
+/// @brief The Data panel: open files or folders (also by drag and drop), the batches with their
+/// counts, and every column plotted with the selected batches overlaid or one after another.
+class DataPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit DataPanel(Workbench& workbench, QWidget* parent = nullptr);
+    PlotStack* plots() const { return m_plots; }
+    QTableWidget* batchTable() const { return m_table; }
+    /// @brief Selects batches by row (for tests and projects) and redraws.
+    void selectBatches(const QList<int>& rows);
+
+protected:
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    void fill();
+    void redraw();
+
+    Workbench& m_workbench;
+    QTableWidget* m_table = nullptr;
+    QComboBox* m_arrangement = nullptr;
+    PlotStack* m_plots = nullptr;
+};
+
+} // namespace drytwin::widgets

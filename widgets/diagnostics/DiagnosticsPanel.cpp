@@ -1,0 +1,120 @@
+#include "diagnostics/DiagnosticsPanel.h"
+
+#include "common/PlotStack.h"
+#include "common/Workbench.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSplitter>
+#include <QVBoxLayout>
+#include <cmath>
+
+namespace drytwin::widgets {
+
+namespace {
+const QColor kColours[] = {QColor(127, 127, 127), QColor(188, 189, 34), QColor(140, 86, 75),
+                           QColor(148, 103, 189), QColor(44, 160, 44), QColor(214, 39, 40)};
+}
+
+DiagnosticsPanel::DiagnosticsPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
+    m_models = new QListWidget;
+    m_models->setMaximumWidth(240);
+    auto* evaluate = new QPushButton(tr("Evaluate"));
+    m_tests = new QLabel(tr("Evaluate a trained model to see its residuals."));
+    m_tests->setWordWrap(true);
+    m_acf = new PlotStack;
+    m_acf->addPlot(tr("ACF of the X_out residual [-]"));
+    m_acf->setXTitle(tr("lag [s]"));
+    m_psd = new PlotStack;
+    m_psd->addPlot(tr("PSD [(% wb)²/Hz]"));
+    m_psd->setXTitle(tr("frequency [Hz]"));
+    m_psd->setLogScale(0, true, true);
+    auto* left = new QWidget;
+    auto* ll = new QVBoxLayout(left);
+    ll->addWidget(evaluate);
+    ll->addWidget(new QLabel(tr("Models shown (tick to overlay):")));
+    ll->addWidget(m_models, 1);
+    ll->addWidget(m_tests);
+    auto* right = new QSplitter(Qt::Vertical);
+    right->addWidget(m_acf);
+    right->addWidget(m_psd);
+    auto* split = new QSplitter;
+    split->addWidget(left);
+    split->addWidget(right);
+    split->setStretchFactor(1, 1);
+    auto* layout = new QHBoxLayout(this);
+    layout->addWidget(split);
+    connect(evaluate, &QPushButton::clicked, &m_workbench, &Workbench::evaluate);
+    connect(&m_workbench, &Workbench::evaluated, this, &DiagnosticsPanel::fill);
+    connect(m_models, &QListWidget::itemChanged, this, &DiagnosticsPanel::redraw);
+}
+
+void DiagnosticsPanel::fill() {
+    const auto& ev = m_workbench.latest().evaluate;
+    if (!ev) {
+        return;
+    }
+    m_models->blockSignals(true);
+    m_models->clear();
+    for (const auto& m : ev->diagnostics.models) {
+        auto* item = new QListWidgetItem(QString::fromStdString(m.name), m_models);
+        item->setFlags(Qt::ItemIsUserCheckable | Qt::ItemIsEnabled);
+        item->setCheckState(m.name == "pbm" || m.name == "pgrl_cc" ? Qt::Checked : Qt::Unchecked);
+    }
+    m_models->blockSignals(false);
+    QStringList lines;
+    for (const auto& m : ev->evaluation.models) {
+        double mean = 0;
+        for (double r : m.moistureResidual) {
+            mean += r / static_cast<double>(std::max<std::size_t>(1, m.moistureResidual.size()));
+        }
+        lines << tr("%1: Ljung-Box p %2, residual mean %3 % wb")
+                     .arg(QString::fromStdString(m.name))
+                     .arg(m.moisture.ljungBoxP, 0, 'g', 3)
+                     .arg(mean, 0, 'f', 4);
+    }
+    m_tests->setText(lines.join(QLatin1Char('\n')));
+    redraw();
+}
+
+void DiagnosticsPanel::redraw() {
+    const auto& ev = m_workbench.latest().evaluate;
+    m_acf->clearCurves();
+    m_psd->clearCurves();
+    if (!ev) {
+        return;
+    }
+    const double band = 1.96 / std::sqrt(std::max<double>(1.0, static_cast<double>(ev->evaluation.testRows)));
+    for (std::size_t i = 0; i < ev->diagnostics.models.size(); ++i) {
+        const auto& m = ev->diagnostics.models[i];
+        const auto* item = m_models->item(static_cast<int>(i));
+        if (!item || item->checkState() != Qt::Checked) {
+            continue;
+        }
+        QVector<double> lag, acf;
+        for (std::size_t k = 0; k < m.acf.size(); ++k) {
+            lag << static_cast<double>(k);
+            acf << m.acf[k];
+        }
+        m_acf->addCurve(0, QString::fromStdString(m.name), lag, acf, kColours[i % 6], Qt::SolidLine, 1.6);
+        if (m.hasPsd) {
+            QVector<double> f, p;
+            for (std::size_t k = 1; k < m.psdFrequencyHz.size(); ++k) { // k = 0 is f = 0 (log axis)
+                f << m.psdFrequencyHz[k];
+                p << std::max(1e-12, m.psdDensity[k]);
+            }
+            m_psd->addCurve(0, tr("%1 (%2 % below 0.01 Hz)")
+                                   .arg(QString::fromStdString(m.name))
+                                   .arg(100 * m.lowFrequencyShareBelow0p01Hz, 0, 'f', 0),
+                            f, p, kColours[i % 6]);
+        }
+    }
+    m_acf->addCurve(0, tr("95 % band of white noise"), {0, 40}, {band, band}, Qt::black, Qt::DotLine, 1.0);
+    m_acf->addCurve(0, QString(), {0, 40}, {-band, -band}, Qt::black, Qt::DotLine, 1.0);
+    m_acf->rescale();
+    m_psd->rescale();
+}
+
+} // namespace drytwin::widgets

@@ -1,0 +1,163 @@
+#include "discovery/DiscoverPanel.h"
+
+#include "common/PlotStack.h"
+#include "common/Workbench.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+
+namespace drytwin::widgets {
+
+DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
+    auto* run = new QPushButton(tr("Discover"));
+    run->setToolTip(tr("What does the simulation get wrong, and why? (score tests, fits, held-out gain)"));
+    m_extend = new QPushButton(tr("Extend the model"));
+    m_extend->setEnabled(false);
+    m_extend->setToolTip(tr("Make the extended model (named causes, refitted h_HDT and k_HDT, residual models "
+                            "retrained) the session's model"));
+    m_verdict = new QLabel(tr("Run discovery on the loaded data with the current model."));
+    m_verdict->setWordWrap(true);
+    m_ranking = new QTableWidget(0, 5);
+    m_ranking->setHorizontalHeaderLabels({tr("Cause"), tr("Score z"), tr("p (Holm)"), tr("Fitted"), tr("Loss")});
+    m_ranking->verticalHeader()->hide();
+    m_ranking->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_gains = new QTableWidget(0, 4);
+    m_gains->setHorizontalHeaderLabels({tr("Held-out"), tr("Before"), tr("After"), tr("Unit")});
+    m_gains->verticalHeader()->hide();
+    m_gains->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_evidence = new QTextBrowser;
+    m_plots = new PlotStack;
+    m_plots->addPlot(tr("X_out residual [% wb]"));
+    m_plots->addPlot(tr("T_out residual [°C]"));
+    m_plots->setXTitle(tr("time, batches one after another [h]"));
+
+    auto* left = new QWidget;
+    auto* ll = new QVBoxLayout(left);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(run);
+    buttons->addWidget(m_extend);
+    ll->addLayout(buttons);
+    ll->addWidget(m_verdict);
+    ll->addWidget(new QLabel(tr("Candidate causes, first round:")));
+    ll->addWidget(m_ranking, 1);
+    ll->addWidget(new QLabel(tr("Gain on the held-out part:")));
+    ll->addWidget(m_gains, 1);
+    auto* right = new QSplitter(Qt::Vertical);
+    right->addWidget(m_evidence);
+    right->addWidget(m_plots);
+    right->setStretchFactor(1, 2);
+    auto* split = new QSplitter;
+    split->addWidget(left);
+    split->addWidget(right);
+    split->setStretchFactor(1, 1);
+    auto* layout = new QHBoxLayout(this);
+    layout->addWidget(split);
+    connect(run, &QPushButton::clicked, &m_workbench, &Workbench::discover);
+    connect(m_extend, &QPushButton::clicked, this, [this] {
+        if (const auto& d = m_workbench.latest().discover) {
+            m_workbench.setModel(d->extendedModel);
+            m_extend->setEnabled(false);
+            m_verdict->setText(m_verdict->text() + tr(" The model is extended."));
+        }
+    });
+    connect(&m_workbench, &Workbench::discovered, this, &DiscoverPanel::show);
+}
+
+void DiscoverPanel::show() {
+    const auto& r = m_workbench.latest().discover;
+    if (!r) {
+        return;
+    }
+    const auto& d = r->discovery;
+    QStringList named;
+    for (const auto& f : d.findings) {
+        named << QString::fromStdString(f.cause);
+    }
+    m_verdict->setText(d.findings.empty()
+                           ? tr("Verdict: %1. No mechanism is named.").arg(QString::fromStdString(d.verdict))
+                           : tr("Verdict: %1. Named: %2.").arg(QString::fromStdString(d.verdict), named.join(", ")));
+    m_extend->setEnabled(!d.findings.empty());
+    m_ranking->setRowCount(static_cast<int>(d.ranking.size()));
+    for (std::size_t i = 0; i < d.ranking.size(); ++i) {
+        const auto& c = d.ranking[i];
+        const QStringList cells{QString::fromStdString(c.cause), QString::number(c.score, 'f', 2),
+                                QString::number(c.pHolm, 'g', 3), c.fitted ? tr("yes") : tr("no"),
+                                c.fitted ? QStringLiteral("%1 → %2").arg(c.fitLossBefore, 0, 'g', 4).arg(c.fitLossAfter, 0, 'g', 4)
+                                         : QStringLiteral("–")};
+        for (int col = 0; col < cells.size(); ++col) {
+            m_ranking->setItem(static_cast<int>(i), col, new QTableWidgetItem(cells[col]));
+        }
+    }
+    m_ranking->resizeColumnsToContents();
+    QString html;
+    for (const auto& f : d.findings) {
+        html += QStringLiteral("<h4>%1 = %2 [%3, %4]</h4><p>%5</p>")
+                    .arg(QString::fromStdString(f.cause).toHtmlEscaped())
+                    .arg(f.value, 0, 'g', 4)
+                    .arg(f.ci95Low, 0, 'g', 4)
+                    .arg(f.ci95High, 0, 'g', 4)
+                    .arg(QString::fromStdString(f.evidence).toHtmlEscaped());
+    }
+    for (const auto& u : d.unexplained) {
+        html += tr("<p><b>Unexplained</b> (%1): %2</p>")
+                    .arg(QString::fromStdString(u.output).toHtmlEscaped(), QString::fromStdString(u.type));
+    }
+    for (const auto& n : d.notes) {
+        html += QStringLiteral("<p><i>%1</i></p>").arg(QString::fromStdString(n).toHtmlEscaped());
+    }
+    m_evidence->setHtml(html.isEmpty() ? tr("<p>No structure that a mechanism explains.</p>") : html);
+    m_gains->setRowCount(0);
+    if (!d.findings.empty()) {
+        const auto& g = d.findings.back().gain;
+        const auto row = [&](const QString& what, double before, double after, const QString& unit) {
+            const int r2 = m_gains->rowCount();
+            m_gains->insertRow(r2);
+            const QStringList cells{what, QString::number(before, 'g', 4), QString::number(after, 'g', 4), unit};
+            for (int c = 0; c < cells.size(); ++c) {
+                m_gains->setItem(r2, c, new QTableWidgetItem(cells[c]));
+            }
+        };
+        row(tr("MAE X_out (physics)"), d.findings.front().gain.maeMoistureBefore, g.maeMoistureAfter, tr("% wb"));
+        row(tr("MAE T_out (physics)"), d.findings.front().gain.maeTemperatureBefore, g.maeTemperatureAfter, tr("°C"));
+        row(tr("R² X_out"), d.findings.front().gain.r2MoistureBefore, g.r2MoistureAfter, QString());
+        row(tr("low-frequency share"), d.findings.front().gain.lowFrequencyShareBefore, g.lowFrequencyShareAfter,
+            QString());
+        if (r->hasHybrid) {
+            row(tr("MAE X_out (PGRL-CC)"), r->hybridMaeMoistureBefore, r->hybridMaeMoistureAfter, tr("% wb"));
+        }
+        m_gains->resizeColumnsToContents();
+    }
+    m_plots->clearCurves();
+    const auto curve = [&](const std::vector<discovery::OutputResidual>& rs, const QColor& colour,
+                           const QString& name) {
+        for (const auto& o : rs) {
+            const int plot = o.output == "X_out" ? 0 : (o.output == "T_out" ? 1 : -1);
+            if (plot < 0 || o.seriesValue.empty()) {
+                continue;
+            }
+            // Batches one after another, each from its own start, every 60 s.
+            QVector<double> x, y;
+            double offset = 0, last = 0;
+            for (std::size_t k = 0; k < o.seriesValue.size(); ++k) {
+                if (k > 0 && o.seriesBatch[k] != o.seriesBatch[k - 1]) {
+                    offset += last + 60;
+                }
+                last = o.seriesTimeS[k];
+                x << (offset + o.seriesTimeS[k]) / 3600.0;
+                y << o.seriesValue[k];
+            }
+            m_plots->addDots(plot, name, x, y, colour);
+        }
+    };
+    curve(d.residuals, QColor(214, 39, 40), tr("starting model"));
+    curve(d.residualsAfter, QColor(31, 119, 180), tr("extended model"));
+    m_plots->rescale();
+}
+
+} // namespace drytwin::widgets

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <QWidget>
+
+class QLabel;
+class QPushButton;
+class QTableWidget;
+class QTextBrowser;
+
+namespace drytwin::widgets {
+
+class PlotStack;
+class Workbench;
+
+/// @brief The Discover panel: what the simulation gets wrong, the ranked causes with their
+/// evidence, "Extend the model" in one click, and the before/after table and plots.
+class DiscoverPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit DiscoverPanel(Workbench& workbench, QWidget* parent = nullptr);
+    QTableWidget* ranking() const { return m_ranking; }
+    QTableWidget* gains() const { return m_gains; }
+    QPushButton* extendButton() const { return m_extend; }
+    QLabel* verdict() const { return m_verdict; }
+    PlotStack* plots() const { return m_plots; }
+
+private:
+    void show();
+
+    Workbench& m_workbench;
+    QLabel* m_verdict = nullptr;
+    QTableWidget* m_ranking = nullptr;
+    QTableWidget* m_gains = nullptr;
+    QTextBrowser* m_evidence = nullptr;
+    QPushButton* m_extend = nullptr;
+    PlotStack* m_plots = nullptr;
+};
+
+} // namespace drytwin::widgets

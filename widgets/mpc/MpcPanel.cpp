@@ -1,0 +1,216 @@
+#include "mpc/MpcPanel.h"
+
+#include "common/PlotStack.h"
+#include "common/Workbench.h"
+#include "control/BundledScenarios.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSplitter>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace drytwin::widgets {
+
+namespace {
+const control::ControllerKind kKinds[] = {control::ControllerKind::Pbm, control::ControllerKind::ExtInputResidual,
+                                          control::ControllerKind::Lstm, control::ControllerKind::PgrlCc,
+                                          control::ControllerKind::Pi};
+const QColor kColours[] = {QColor(127, 127, 127), QColor(188, 189, 34), QColor(140, 86, 75), QColor(214, 39, 40),
+                           QColor(31, 119, 180)};
+} // namespace
+
+MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
+    m_scenario = new QComboBox;
+    for (const auto& [name, text] : control::bundledScenarios()) {
+        m_scenario->addItem(QString::fromStdString(name));
+    }
+    m_scenario->setCurrentText(QString::fromLatin1(control::kDefaultScenario));
+    auto* openFile = new QPushButton(tr("Open scenario…"));
+    m_editor = new QPlainTextEdit;
+    m_editor->setLineWrapMode(QPlainTextEdit::NoWrap);
+    m_editor->setToolTip(tr("The scenario as JSON (schema in docs/mpc.md): setpoint steps, input steps and ramps, "
+                            "hidden mechanisms switched on mid-run, noise. Edits are checked when you run."));
+    auto* controllers = new QHBoxLayout;
+    for (int i = 0; i < 5; ++i) {
+        m_controllers[i] = new QCheckBox(QString::fromLatin1(control::controllerName(kKinds[i])));
+        m_controllers[i]->setChecked(true);
+        controllers->addWidget(m_controllers[i]);
+    }
+    auto* run = new QPushButton(tr("Run scenario"));
+    m_prediction = new QComboBox;
+    m_prediction->setToolTip(tr("Show the horizon the controllers predicted at this decision"));
+    m_note = new QLabel(tr("Runs the scenario against the virtual plant once per controller."));
+    m_note->setWordWrap(true);
+    m_table = new QTableWidget(0, 7);
+    m_table->setHorizontalHeaderLabels({tr("Controller"), tr("IAE [%·s]"), tr("Effort [K²]"), tr("Violations [%]"),
+                                        tr("Solve median [ms]"), tr("Fallbacks"), tr("Model gain [%/K]")});
+    m_table->verticalHeader()->hide();
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_plots = new PlotStack;
+    m_plots->addPlot(tr("X_out, true [% wb]"));
+    m_plots->addPlot(tr("T_hot setpoint [°C]"));
+
+    auto* left = new QWidget;
+    auto* ll = new QVBoxLayout(left);
+    auto* top = new QHBoxLayout;
+    top->addWidget(m_scenario, 1);
+    top->addWidget(openFile);
+    ll->addLayout(top);
+    ll->addWidget(m_editor, 2);
+    ll->addLayout(controllers);
+    auto* runRow = new QHBoxLayout;
+    runRow->addWidget(run);
+    runRow->addWidget(new QLabel(tr("prediction at")));
+    runRow->addWidget(m_prediction, 1);
+    ll->addLayout(runRow);
+    ll->addWidget(m_note);
+    ll->addWidget(m_table, 1);
+    auto* split = new QSplitter;
+    split->addWidget(left);
+    split->addWidget(m_plots);
+    split->setStretchFactor(1, 1);
+    auto* layout = new QHBoxLayout(this);
+    layout->addWidget(split);
+
+    const auto load = [this] {
+        const auto& all = control::bundledScenarios();
+        const auto it = all.find(m_scenario->currentText().toStdString());
+        if (it != all.end()) {
+            m_editor->setPlainText(QString::fromStdString(it->second));
+        }
+    };
+    connect(m_scenario, &QComboBox::currentTextChanged, this, load);
+    load();
+    connect(openFile, &QPushButton::clicked, this, [this] {
+        const QString p = QFileDialog::getOpenFileName(this, tr("Open scenario"), {}, tr("Scenarios (*.json)"));
+        QFile f(p);
+        if (!p.isEmpty() && f.open(QIODevice::ReadOnly)) {
+            m_editor->setPlainText(QString::fromUtf8(f.readAll()));
+        }
+    });
+    connect(run, &QPushButton::clicked, this, &MpcPanel::run);
+    connect(m_prediction, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &MpcPanel::show);
+    connect(&m_workbench, &Workbench::mpcFinished, this, [this] {
+        m_prediction->blockSignals(true);
+        m_prediction->clear();
+        if (const auto& r = m_workbench.latest().mpc) {
+            for (const auto& run : r->closedLoop.runs) {
+                for (const auto& p : run.predictions) {
+                    if (m_prediction->findData(p.atS) < 0) {
+                        m_prediction->addItem(tr("%1 s").arg(p.atS), p.atS);
+                    }
+                }
+            }
+        }
+        m_prediction->blockSignals(false);
+        show();
+    });
+}
+
+void MpcPanel::run() {
+    // The editor's text goes through the engine's own scenario parser (errors name the line).
+    const QString dir = QStandardPaths::writableLocation(QStandardPaths::TempLocation);
+    m_tempScenario = QDir(dir).filePath(QStringLiteral("drytwin-scenario-%1.json").arg(QCoreApplication::applicationPid()));
+    QFile f(m_tempScenario);
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+        m_note->setText(tr("Cannot write %1").arg(m_tempScenario));
+        return;
+    }
+    f.write(m_editor->toPlainText().toUtf8());
+    f.close();
+    workflow::MpcOptions o;
+    o.scenarioPath = m_tempScenario.toStdString();
+    o.closedLoop.controllers.clear();
+    for (int i = 0; i < 5; ++i) {
+        if (m_controllers[i]->isChecked()) {
+            o.closedLoop.controllers.push_back(kKinds[i]);
+        }
+    }
+    if (o.closedLoop.controllers.empty()) {
+        m_note->setText(tr("Choose at least one controller."));
+        return;
+    }
+    m_note->setText(tr("Running…"));
+    m_workbench.runMpc(o);
+}
+
+void MpcPanel::show() {
+    const auto& r = m_workbench.latest().mpc;
+    if (!r) {
+        return;
+    }
+    const auto& cl = r->closedLoop;
+    m_table->setRowCount(0);
+    m_plots->clearCurves();
+    const double at = m_prediction->currentData().toDouble();
+    bool setpointDrawn = false;
+    for (const auto& run : cl.runs) {
+        const int row = m_table->rowCount();
+        m_table->insertRow(row);
+        const auto& m = run.metrics;
+        const bool pi = run.kind == control::ControllerKind::Pi;
+        const QStringList cells{
+            QString::fromLatin1(control::controllerName(run.kind)),
+            run.ran ? QString::number(m.iaePctS, 'f', 1) : tr("skipped"),
+            run.ran ? QString::number(m.effortK2, 'f', 1) : QString::fromStdString(run.skippedReason),
+            run.ran ? QString::number(m.violationPct, 'f', 1) : QString(),
+            run.ran && !pi ? QString::number(m.solveMsMedian, 'f', 2) : QStringLiteral("–"),
+            run.ran && !pi ? QStringLiteral("%1 / %2").arg(m.fallbacks).arg(m.decisions) : QStringLiteral("–"),
+            run.ran && !pi ? QString::number(m.gainPctPerKMedian, 'f', 4) : QStringLiteral("–")};
+        for (int c = 0; c < cells.size(); ++c) {
+            m_table->setItem(row, c, new QTableWidgetItem(cells[c]));
+        }
+        if (!run.ran) {
+            continue;
+        }
+        const int k = static_cast<int>(run.kind);
+        const QColor colour = kColours[k % 5];
+        const QVector<double> t(run.timeS.begin(), run.timeS.end());
+        if (!setpointDrawn) {
+            m_plots->addCurve(0, tr("setpoint"), t, QVector<double>(run.setpointPct.begin(), run.setpointPct.end()),
+                              Qt::black, Qt::DashLine, 1.4);
+            QVector<double> hi, lo;
+            for (double s : run.setpointPct) {
+                hi << s + cl.scenario.bandPct;
+                lo << s - cl.scenario.bandPct;
+            }
+            m_plots->addCurve(0, tr("band"), t, hi, Qt::gray, Qt::DotLine, 1.0);
+            m_plots->addCurve(0, QString(), t, lo, Qt::gray, Qt::DotLine, 1.0);
+            setpointDrawn = true;
+        }
+        const QString name = QString::fromLatin1(control::controllerName(run.kind));
+        m_plots->addCurve(0, name, t, QVector<double>(run.xOutTruePct.begin(), run.xOutTruePct.end()), colour,
+                          Qt::SolidLine, run.kind == control::ControllerKind::PgrlCc ? 1.8 : 1.1);
+        m_plots->addCurve(1, name, t, QVector<double>(run.hotAirSetpointC.begin(), run.hotAirSetpointC.end()), colour);
+        for (const auto& p : run.predictions) {
+            if (p.atS == at) {
+                QVector<double> pt, px;
+                for (std::size_t i = 0; i < p.xOutPct.size(); ++i) {
+                    pt << p.atS + static_cast<double>(i);
+                    px << p.xOutPct[i];
+                }
+                m_plots->addCurve(0, tr("%1 predicted at %2 s").arg(name).arg(at), pt, px, colour, Qt::DashDotLine, 1.6);
+            }
+        }
+    }
+    m_table->resizeColumnsToContents();
+    m_plots->rescale();
+    m_plots->setTimeCursor(at > 0 ? at : NAN);
+    m_note->setText(tr("%1. IAE and violations on the product's true outlet moisture; the plant's own gain is %2 % "
+                       "wb/K.")
+                        .arg(QString::fromStdString(r->ending.message))
+                        .arg(cl.plantGainPctPerK, 0, 'f', 4));
+}
+
+} // namespace drytwin::widgets

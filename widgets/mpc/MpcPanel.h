@@ -1,0 +1,44 @@
+#pragma once
+
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QPlainTextEdit;
+class QSpinBox;
+class QTableWidget;
+
+namespace drytwin::widgets {
+
+class PlotStack;
+class Workbench;
+
+/// @brief The What-if MPC panel: a scenario (bundled, from a file, or edited here as JSON with
+/// its schema checked), the controllers to compare, Run; every controller's trajectory together
+/// with the horizon it predicted at a chosen decision; the Table 2 metrics.
+class MpcPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit MpcPanel(Workbench& workbench, QWidget* parent = nullptr);
+    PlotStack* plots() const { return m_plots; }
+    QTableWidget* table() const { return m_table; }
+    QPlainTextEdit* editor() const { return m_editor; }
+    QComboBox* scenarios() const { return m_scenario; }
+    void run();
+
+private:
+    void show();
+
+    Workbench& m_workbench;
+    QComboBox* m_scenario = nullptr;
+    QPlainTextEdit* m_editor = nullptr;
+    QCheckBox* m_controllers[5] = {};
+    QComboBox* m_prediction = nullptr;
+    QTableWidget* m_table = nullptr;
+    PlotStack* m_plots = nullptr;
+    QLabel* m_note = nullptr;
+    QString m_tempScenario;
+};
+
+} // namespace drytwin::widgets

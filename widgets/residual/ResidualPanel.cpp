@@ -1,0 +1,176 @@
+#include "residual/ResidualPanel.h"
+
+#include "common/PlotStack.h"
+#include "common/Workbench.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <cmath>
+#include <qwt_plot.h>
+#include <qwt_plot_curve.h>
+#include <qwt_plot_rescaler.h>
+#include <qwt_symbol.h>
+
+namespace drytwin::widgets {
+
+namespace {
+const QColor kModelColour[] = {QColor(127, 127, 127), QColor(188, 189, 34), QColor(140, 86, 75),
+                               QColor(148, 103, 189), QColor(44, 160, 44), QColor(214, 39, 40)};
+}
+
+ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
+    m_lags = new QComboBox;
+    m_lags->addItems({tr("chosen by validation (16, 32, 60)"), QStringLiteral("8"), QStringLiteral("16"),
+                      QStringLiteral("32"), QStringLiteral("60")});
+    m_stability = new QComboBox;
+    m_stability->addItems({tr("Eq. 30: constrained fit with certificate"), tr("eigenvalues pulled in after the fit")});
+    m_projection = new QCheckBox(tr("orthogonal projection P⊥ (Eq. 27)"));
+    m_projection->setChecked(true);
+    auto* train = new QPushButton(tr("Train PGRL-CC and the baselines"));
+    auto* form = new QFormLayout;
+    form->addRow(tr("residual lags"), m_lags);
+    form->addRow(tr("stability"), m_stability);
+    form->addRow(QString(), m_projection);
+    form->addRow(QString(), train);
+    m_note = new QLabel(tr("Trains on the chronological 70 % and evaluates on the rest; settings are chosen inside "
+                           "the training part."));
+    m_note->setWordWrap(true);
+    m_metrics = new QTableWidget(0, 6);
+    m_metrics->setHorizontalHeaderLabels({tr("Model"), tr("MAE X_out [% wb]"), tr("R² X_out"),
+                                          tr("MAE T_out [°C]"), tr("skill 1 step"), tr("skill 30 steps")});
+    m_metrics->verticalHeader()->hide();
+    m_metrics->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_eigen = new PlotStack;
+    m_eigen->addPlot(tr("imaginary part"));
+    m_eigen->setXTitle(tr("real part"));
+    // One unit on both axes: the unit circle stays a circle however the window is shaped.
+    auto* rescaler = new QwtPlotRescaler(m_eigen->plot(0)->canvas(), QwtPlot::xBottom, QwtPlotRescaler::Fixed);
+    rescaler->setAspectRatio(QwtPlot::yLeft, 1.0);
+    rescaler->setExpandingDirection(QwtPlotRescaler::ExpandBoth);
+    m_skill = new PlotStack;
+    m_skill->addPlot(tr("skill: MAE over the better reference [-]"));
+    m_skill->setXTitle(tr("forecast horizon [steps of 1 s]"));
+    m_skill->setLogScale(0, true, false);
+
+    auto* left = new QWidget;
+    auto* ll = new QVBoxLayout(left);
+    ll->addLayout(form);
+    ll->addWidget(m_note);
+    ll->addWidget(m_metrics, 1);
+    auto* right = new QSplitter(Qt::Vertical);
+    right->addWidget(m_eigen);
+    right->addWidget(m_skill);
+    auto* split = new QSplitter;
+    split->addWidget(left);
+    split->addWidget(right);
+    split->setStretchFactor(1, 1);
+    auto* layout = new QHBoxLayout(this);
+    layout->addWidget(split);
+    connect(train, &QPushButton::clicked, this, &ResidualPanel::train);
+    connect(&m_workbench, &Workbench::evaluated, this, &ResidualPanel::showEvaluation);
+}
+
+void ResidualPanel::train() {
+    workflow::TrainOptions o;
+    if (m_lags->currentIndex() > 0) {
+        o.selection.enabled = false;
+        o.residual.residualLags = m_lags->currentText().toInt();
+    }
+    o.residual.orthogonalProjection = m_projection->isChecked();
+    o.residual.stabilityMethod =
+        m_stability->currentIndex() == 0 ? residual::StabilityMethod::Constrained : residual::StabilityMethod::EigenvaluePull;
+    if (m_quick) {
+        o.lstm.epochs = 2;
+        o.lstm.hidden = 8;
+        o.selection.lags = {4, 8};
+    }
+    m_note->setText(tr("Training…"));
+    m_workbench.train(o);
+}
+
+void ResidualPanel::showEvaluation() {
+    const auto& ev = m_workbench.latest().evaluate;
+    if (!ev) {
+        return;
+    }
+    const auto& e = ev->evaluation;
+    m_metrics->setRowCount(static_cast<int>(e.models.size()));
+    std::size_t h30 = 0;
+    for (std::size_t i = 0; i < e.horizons.size(); ++i) {
+        if (e.horizons[i] == 30) {
+            h30 = i;
+        }
+    }
+    m_skill->clearCurves();
+    for (std::size_t i = 0; i < e.models.size(); ++i) {
+        const auto& m = e.models[i];
+        const double s30 = h30 < m.skillMoistureByHorizon.size() ? m.skillMoistureByHorizon[h30] : NAN;
+        const QStringList cells{QString::fromStdString(m.name),       QString::number(m.moisture.mae, 'f', 4),
+                                QString::number(m.moisture.r2, 'f', 3), QString::number(m.temperature.mae, 'f', 4),
+                                QString::number(m.skillMoisture, 'f', 3), QString::number(s30, 'f', 3)};
+        for (int c = 0; c < cells.size(); ++c) {
+            m_metrics->setItem(static_cast<int>(i), c, new QTableWidgetItem(cells[c]));
+        }
+        QVector<double> h, s;
+        for (std::size_t k = 0; k < e.horizons.size() && k < m.skillMoistureByHorizon.size(); ++k) {
+            h << e.horizons[k];
+            s << m.skillMoistureByHorizon[k];
+        }
+        const bool reference = m.name == "persistence" || m.name == "pbm_residual_hold";
+        m_skill->addCurve(0, QString::fromStdString(m.name), h, s, kModelColour[i % 6],
+                          reference ? Qt::DashLine : Qt::SolidLine, m.name == "pgrl_cc" ? 2.2 : 1.3);
+    }
+    m_metrics->resizeColumnsToContents();
+    m_skill->addCurve(0, tr("skill 1 (ties the better reference)"), {1, 180}, {1, 1}, Qt::black, Qt::DotLine, 1.0);
+    m_skill->rescale();
+
+    m_eigen->clearCurves();
+    QVector<double> cx, cy;
+    for (int i = 0; i <= 180; ++i) {
+        cx << std::cos(2 * M_PI * i / 180);
+        cy << std::sin(2 * M_PI * i / 180);
+    }
+    m_eigen->addCurve(0, tr("unit circle"), cx, cy, Qt::black, Qt::DotLine, 1.0);
+    const auto& d = ev->diagnostics;
+    if (d.hasPgrlCcEigenvalues) {
+        QVector<double> bx, by, ax, ay;
+        for (const auto& l : d.pgrlCcBefore.eigenvalues) {
+            bx << l.real();
+            by << l.imag();
+        }
+        for (const auto& l : d.pgrlCcAfter.eigenvalues) {
+            ax << l.real();
+            ay << l.imag();
+        }
+        // Open rings before, filled dots after: where the constraint moved nothing they nest.
+        auto* before = m_eigen->addDots(0, tr("A unconstrained (ρ = %1)").arg(d.pgrlCcBefore.spectralRadius, 0, 'f', 4),
+                                        bx, by, QColor(255, 127, 14));
+        before->setStyle(QwtPlotCurve::NoCurve);
+        before->setSymbol(new QwtSymbol(QwtSymbol::Ellipse, Qt::NoBrush, QPen(QColor(255, 127, 14), 1.3), QSize(9, 9)));
+        auto* after = m_eigen->addDots(0, tr("A with Eq. 30 (ρ = %1)").arg(d.pgrlCcAfter.spectralRadius, 0, 'f', 4), ax,
+                                       ay, QColor(31, 119, 180));
+        after->setStyle(QwtPlotCurve::NoCurve);
+        after->setSymbol(new QwtSymbol(QwtSymbol::Ellipse, QBrush(QColor(31, 119, 180)), Qt::NoPen, QSize(4, 4)));
+    }
+    m_eigen->rescale();
+    m_eigen->plot(0)->setAxisScale(QwtPlot::xBottom, -1.1, 1.1);
+    m_eigen->plot(0)->setAxisScale(QwtPlot::yLeft, -1.1, 1.1);
+    m_eigen->plot(0)->replot();
+    // The curves start at 1 step; the open-loop PBM's skill (about 10) would flatten the rest.
+    m_skill->plot(0)->setAxisScale(QwtPlot::xBottom, 1, 200);
+    m_skill->plot(0)->setAxisScale(QwtPlot::yLeft, 0, 2.5);
+    m_skill->plot(0)->replot();
+    m_note->setText(tr("Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last "
+                       "measurement held, and the PBM with its last error held).")
+                        .arg(e.testRows));
+}
+
+} // namespace drytwin::widgets

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QTableWidget;
+
+namespace drytwin::widgets {
+
+class PlotStack;
+class Workbench;
+
+/// @brief The Residual model panel: PGRL-CC settings and Train; the eigenvalues of A in the
+/// complex plane with the unit circle, before and after the stability constraint (paper Fig. 6);
+/// the held-out metrics of every model; the horizon/skill curve beside the reference predictors.
+class ResidualPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit ResidualPanel(Workbench& workbench, QWidget* parent = nullptr);
+    QTableWidget* metrics() const { return m_metrics; }
+    PlotStack* eigenvalues() const { return m_eigen; }
+    PlotStack* skill() const { return m_skill; }
+    void train();
+    /// @brief A quick training for tests (2 LSTM epochs, small grid).
+    void setQuick(bool quick) { m_quick = quick; }
+
+private:
+    void showEvaluation();
+
+    Workbench& m_workbench;
+    QComboBox* m_lags = nullptr;
+    QComboBox* m_stability = nullptr;
+    QCheckBox* m_projection = nullptr;
+    QTableWidget* m_metrics = nullptr;
+    PlotStack* m_eigen = nullptr;
+    PlotStack* m_skill = nullptr;
+    QLabel* m_note = nullptr;
+    bool m_quick = false;
+};
+
+} // namespace drytwin::widgets
