@@ -1,76 +1,272 @@
+// The workbench driven through its widgets, offscreen: open data, edit a parameter (validated,
+// undoable), simulate, calibrate with stop-and-keep-best, train, discover and extend, run a
+// scenario, save and reopen a project; and what the plots and tables show after each.
 #include "MainWindow.h"
+#include "calibration/CalibrationPanel.h"
+#include "common/PlotStack.h"
+#include "data/DataPanel.h"
+#include "discovery/DiscoverPanel.h"
+#include "model/ModelPanel.h"
+#include "mpc/MpcPanel.h"
+#include "residual/ResidualPanel.h"
+#include "view3d/LineView3D.h"
+#include "workflow/Session.h"
 
-#include <QListWidget>
+#include <QLabel>
 #include <QMenuBar>
+#include <QPlainTextEdit>
+#include <QPushButton>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QStatusBar>
+#include <QTabWidget>
+#include <QTableWidget>
 #include <QTemporaryDir>
+#include <QUndoStack>
 #include <QtTest>
 #include <fstream>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
 
+using namespace drytwin;
 using drytwin::widgets::MainWindow;
 
 namespace {
+
 void writeText(const QString& path, const std::string& text) {
     std::ofstream out(path.toStdString(), std::ios::binary);
     out << text;
 }
-const char* kGood =
-    "time_s,T_hot_C,feed_kg_h,X_in_pct,T_amb_C,RH_amb_pct,X_out_pct,T_out_C\n"
-    "0,170,6000,22,20,50,12.5,55\n1,171,6000,22,20,50,12.6,55.1\n2,171,6000,22,20,50,12.7,55.3\n";
+
+const char* kGood = "time_s,T_hot_C,feed_kg_h,X_in_pct,T_amb_C,RH_amb_pct,X_out_pct,T_out_C\n"
+                    "0,170,6000,22,20,50,12.5,55\n1,171,6000,22,20,50,12.6,55.1\n2,171,6000,22,20,50,12.7,55.3\n";
+
+/// Waits until the window's engine queue is empty (every queued action and its follow-ups done).
+bool waitIdle(MainWindow& w, int ms = 120000) {
+    QElapsedTimer t;
+    t.start();
+    int idle = 0;
+    while (t.elapsed() < ms) {
+        QTest::qWait(50);
+        idle = w.jobs().busy() ? 0 : idle + 1;
+        if (idle >= 4) {
+            return true;
+        }
+    }
+    return false;
+}
+
+int curvesWithData(QwtPlot* plot) {
+    int n = 0;
+    for (auto* item : plot->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+        n += static_cast<QwtPlotCurve*>(item)->dataSize() > 0 ? 1 : 0;
+    }
+    return n;
+}
+
 } // namespace
 
 class TestMainWindow : public QObject {
     Q_OBJECT
+    QTemporaryDir m_dir;
+    QString m_data;
+
 private Q_SLOTS:
-    void hasMenusAndAbout() {
+    void initTestCase() {
+        QVERIFY(m_dir.isValid());
+        m_data = m_dir.filePath("plant");
+        workflow::GenerateOptions g;
+        g.plant = plant::PlantOptions::demo(7);
+        g.plant.batches = 2;
+        g.plant.samples = 1500;
+        g.outFolder = m_data.toStdString();
+        QVERIFY(workflow::Session().generate(g).ok());
+    }
+
+    void hasMenusTabsAndAbout() {
         MainWindow w;
         QStringList menus;
         for (auto* a : w.menuBar()->actions()) {
             menus << a->text();
         }
-        QVERIFY(menus.contains("&File"));
-        QVERIFY(menus.contains("&Help"));
+        QVERIFY(menus.contains("&File") && menus.contains("&View") && menus.contains("&Help"));
+        QCOMPARE(w.tabs()->count(), 8);
         const QString about = MainWindow::aboutText();
         for (const char* lib : {"Qt", "Qwt", "VTK", "SUNDIALS", "NLopt", "Ipopt", "Eigen"}) {
             QVERIFY2(about.contains(lib), lib);
         }
-        QVERIFY(w.statusBar() != nullptr);
     }
 
-    void loadsOnWorkerAndKeepsDataOnRejectedFile() {
+    void rejectedFileKeepsWhatWasLoaded() {
         QTemporaryDir dir;
         writeText(dir.filePath("good.csv"), kGood);
         writeText(dir.filePath("bad.csv"), "time_s;T_hot_C\n0;1\n");
         MainWindow w;
-        QSignalSpy spy(&w, &MainWindow::loadFinished);
-        QSignalSpy shown(&w, &MainWindow::simulationShown);
+        QSignalSpy loaded(&w, &MainWindow::loadFinished);
         w.openDataSet(dir.filePath("good.csv"));
-        QVERIFY(spy.wait(10000));
-        QCOMPARE(spy.takeFirst().at(0).toBool(), true);
+        QVERIFY(loaded.wait(10000));
+        QCOMPARE(loaded.takeFirst().at(0).toBool(), true);
+        QVERIFY(waitIdle(w));
         QCOMPARE(w.dataSet().batches.size(), std::size_t(1));
-        auto* list = w.findChild<QListWidget*>();
-        QCOMPARE(list->count(), 1);
-        // The physics model's predictions follow on the worker thread and are drawn dashed.
-        QVERIFY(shown.count() > 0 || shown.wait(20000));
+        QCOMPARE(w.dataPanel()->batchTable()->rowCount(), 1);
+        // The physics model's predictions are drawn on the Model tab (three rows of one batch).
         bool modelDrawn = false;
-        for (auto* plot : w.findChildren<QwtPlot*>()) {
-            for (auto* item : plot->itemList(QwtPlotItem::Rtti_PlotCurve)) {
-                auto* curve = static_cast<QwtPlotCurve*>(item);
-                modelDrawn =
-                    modelDrawn || (curve->title().text().contains("model") && curve->dataSize() == 3);
-            }
+        for (auto* item : w.modelPanel()->plots()->plot(0)->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+            auto* c = static_cast<QwtPlotCurve*>(item);
+            modelDrawn = modelDrawn || (c->title().text().contains("model") && c->dataSize() == 3);
         }
         QVERIFY(modelDrawn);
-
         w.openDataSet(dir.filePath("bad.csv"));
-        QVERIFY(spy.wait(10000));
-        QCOMPARE(spy.takeFirst().at(0).toBool(), false);
-        // The rejected file changed nothing.
-        QCOMPARE(w.dataSet().batches.size(), std::size_t(1));
-        QCOMPARE(list->count(), 1);
+        QVERIFY(loaded.wait(10000));
+        QCOMPARE(loaded.takeFirst().at(0).toBool(), false);
+        QCOMPARE(w.dataSet().batches.size(), std::size_t(1)); // nothing lost
+        QCOMPARE(w.dataPanel()->batchTable()->rowCount(), 1);
+        QVERIFY(w.statusBar()->findChild<QLabel*>()->text().contains("bad.csv"));
+    }
+
+    void mainFlowsThroughTheWidgets() {
+        MainWindow w;
+        w.show();
+        w.openDataSet(m_data);
+        QVERIFY(waitIdle(w));
+        // Data: both batches listed, every column plotted for the selected one.
+        QCOMPARE(w.dataPanel()->batchTable()->rowCount(), 2);
+        auto* dataPlots = w.dataPanel()->plots();
+        QCOMPARE(dataPlots->plotCount(), 8);
+        for (int i = 0; i < dataPlots->plotCount(); ++i) {
+            QCOMPARE(dataPlots->curveCount(i), 1);
+        }
+        w.dataPanel()->selectBatches({0, 1});
+        QCOMPARE(dataPlots->curveCount(6), 2); // overlaid
+        // Measuring cursors: the readout gives the difference between them.
+        dataPlots->setMeasuringCursor(0, 100);
+        dataPlots->setMeasuringCursor(1, 400);
+        QVERIFY(dataPlots->readout().contains(QStringLiteral("Δx 300")));
+        // Export of the whole stack in the three formats.
+        for (const char* ext : {"png", "svg", "pdf"}) {
+            const QString file = m_dir.filePath(QStringLiteral("plots.%1").arg(ext));
+            QVERIFY2(dataPlots->exportTo(file), ext);
+            QVERIFY(QFileInfo(file).size() > 1000);
+        }
+
+        // Model: an out-of-bounds value is refused, a valid one is set and can be undone.
+        auto* model = w.modelPanel();
+        int hRow = -1;
+        for (int r = 0; r < model->parameterTable()->rowCount(); ++r) {
+            if (model->parameterTable()->item(r, 0)->text() == "h_HDT") {
+                hRow = r;
+            }
+        }
+        QVERIFY(hRow >= 0);
+        const double hBefore = w.workbench().model().parameters[properties::Param::h_HDT];
+        QVERIFY(!model->editParameter(hRow, 1e6));
+        QVERIFY(model->editParameter(hRow, 80.0));
+        QVERIFY(waitIdle(w));
+        QCOMPARE(w.workbench().model().parameters[properties::Param::h_HDT], 80.0);
+        QCOMPARE(model->parameterTable()->item(hRow, 1)->text(), QString("80"));
+        model->undoStack()->undo();
+        QVERIFY(waitIdle(w));
+        QCOMPARE(w.workbench().model().parameters[properties::Param::h_HDT], hBefore);
+        // Simulate: measured and model curves in the four output plots.
+        QSignalSpy simulated(&w.workbench(), &widgets::Workbench::simulated);
+        w.workbench().simulate();
+        QVERIFY(simulated.count() > 0 || simulated.wait(30000));
+        QVERIFY(curvesWithData(model->plots()->plot(0)) >= 2);
+
+        // Calibrate, stopped early with the best so far.
+        auto* cal = w.calibrationPanel();
+        cal->setBudget(400);
+        QSignalSpy calibrated(&w.workbench(), &widgets::Workbench::calibrated);
+        QTest::mouseClick(cal->runButton(), Qt::LeftButton);
+        QVERIFY(cal->stopButton()->isEnabled());
+        QTest::qWait(1500);
+        QTest::mouseClick(cal->stopButton(), Qt::LeftButton);
+        QVERIFY(calibrated.count() > 0 || calibrated.wait(60000));
+        QVERIFY(waitIdle(w));
+        QCOMPARE(cal->estimates()->rowCount(), 2); // h_HDT, k_HDT with intervals
+        QVERIFY(cal->estimates()->item(0, 2)->text().startsWith("["));
+        QVERIFY(w.workbench().model().calibration.has_value());
+        QVERIFY(curvesWithData(cal->lossPlot()->plot(0)) >= 1);
+
+        // Train (a quick setting), then the metrics, eigenvalues and skill curve are shown.
+        w.residualPanel()->setQuick(true);
+        w.residualPanel()->train();
+        QVERIFY(waitIdle(w, 180000));
+        QVERIFY(w.workbench().model().pgrlCc != nullptr);
+        QVERIFY(w.residualPanel()->metrics()->rowCount() >= 4);
+        QVERIFY(curvesWithData(w.residualPanel()->eigenvalues()->plot(0)) >= 2);
+        QVERIFY(curvesWithData(w.residualPanel()->skill()->plot(0)) >= 4);
+
+        // Discover, then extend the model in one click.
+        auto* disc = w.discoverPanel();
+        w.workbench().discover();
+        QVERIFY(waitIdle(w, 240000));
+        QVERIFY(w.workbench().latest().discover.has_value());
+        QVERIFY(disc->ranking()->rowCount() == 8);
+        QVERIFY(disc->verdict()->text().startsWith("Verdict"));
+        if (disc->extendButton()->isEnabled()) {
+            const auto k = w.workbench().latest().discover->extendedModel.parameters[properties::Param::k_HDT];
+            QTest::mouseClick(disc->extendButton(), Qt::LeftButton);
+            QVERIFY(waitIdle(w));
+            QCOMPARE(w.workbench().model().parameters[properties::Param::k_HDT], k);
+        }
+
+        // A short what-if scenario typed into the editor, two controllers.
+        auto* mpc = w.mpcPanel();
+        mpc->editor()->setPlainText(R"({"name": "gui", "length_s": 60, "warmup_s": 150, "seed": 4,
+                                        "setpoint_steps": [{"at_s": 10, "to_pct": 12.6}]})");
+        mpc->run();
+        QVERIFY(waitIdle(w, 120000));
+        QVERIFY(w.workbench().latest().mpc.has_value());
+        QCOMPARE(mpc->table()->rowCount(), 5);
+        QVERIFY(curvesWithData(mpc->plots()->plot(0)) >= 3);
+        // A wrong scenario names its line and changes nothing.
+        mpc->editor()->setPlainText("{\n \"name\": \"x\",\n \"band_pct\": -4\n}");
+        mpc->run();
+        QVERIFY(waitIdle(w));
+        QVERIFY(w.statusBar()->findChild<QLabel*>()->text().contains(":3:"));
+        QVERIFY(w.workbench().latest().mpc.has_value());
+
+        // The 3D line: parcels drawn, the slider moves the shared time cursor.
+        w.tabs()->setCurrentWidget(w.lineView());
+        QTest::qWait(200);
+        w.lineView()->slider()->setValue(300);
+        QVERIFY(w.lineView()->parcelCount() > 50);
+        QCOMPARE(w.dataPanel()->plots()->timeCursor(), 300.0);
+        const auto range = w.lineView()->colourRange();
+        QVERIFY(range.first < range.second);
+
+        // Save the project and open it in a new window: data, model and tab come back.
+        const QString project = m_dir.filePath("p.drytwin");
+        w.tabs()->setCurrentIndex(6);
+        QString error;
+        QVERIFY2(w.saveProject(project, &error), qPrintable(error));
+        QVERIFY(waitIdle(w));
+        const double kSaved = w.workbench().model().parameters[properties::Param::k_HDT];
+        MainWindow reopened;
+        QSignalSpy ready(&reopened, &MainWindow::projectReady);
+        QVERIFY(reopened.openProject(project, &error));
+        QVERIFY(waitIdle(reopened));
+        QCOMPARE(reopened.dataPanel()->batchTable()->rowCount(), 2);
+        QCOMPARE(reopened.workbench().model().parameters[properties::Param::k_HDT], kSaved);
+        QVERIFY(reopened.workbench().model().pgrlCc != nullptr);
+        QCOMPARE(reopened.tabs()->currentIndex(), 6);
+        QVERIFY(!reopened.openProject(m_dir.filePath("plant/B01.csv"), &error)); // not a project
+        QVERIFY(error.contains("not a DryTwin project"));
+    }
+
+    void closingMidRunCancelsCleanly() {
+        auto* w = new MainWindow;
+        w->openDataSet(m_data);
+        QVERIFY(waitIdle(*w));
+        w->residualPanel()->train(); // long: the full setting
+        QTest::qWait(300);
+        QVERIFY(w->jobs().busy());
+        QElapsedTimer t;
+        t.start();
+        w->close();
+        delete w; // cancels and joins the engine thread
+        QVERIFY(t.elapsed() < 30000);
     }
 };
 

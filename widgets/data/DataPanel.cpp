@@ -11,6 +11,7 @@
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QItemSelectionModel>
 #include <QLabel>
 #include <QMimeData>
 #include <QPushButton>
@@ -132,7 +133,10 @@ void DataPanel::selectBatches(const QList<int>& rows) {
     m_table->blockSignals(true);
     m_table->clearSelection();
     for (int r : rows) {
-        m_table->selectRow(r);
+        if (r >= 0 && r < m_table->rowCount()) {
+            m_table->selectionModel()->select(m_table->model()->index(r, 0),
+                                              QItemSelectionModel::Select | QItemSelectionModel::Rows);
+        }
     }
     m_table->blockSignals(false);
     redraw();
