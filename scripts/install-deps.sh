@@ -17,8 +17,8 @@ PACKAGES=(
   nlohmann-json3-dev libcli11-dev libcsv-dev libfftw3-dev libboost-dev
   # tests and benchmarks
   libbenchmark-dev
-  # screenshots of the GUI and headless GUI tests
-  xvfb xauth
+  # screenshots of the GUI and headless GUI tests; a CJK font for the Chinese interface
+  xvfb xauth fonts-wqy-zenhei
 )
 
 SUDO=""

@@ -8,16 +8,15 @@ namespace drytwin::widgets {
 
 const std::vector<SeriesInfo>& batchSeries() {
     using namespace units;
-    const auto tr = [](const char* s) { return QCoreApplication::translate("drytwin::widgets::Series", s); };
     static const std::vector<SeriesInfo> s{
-        {tr("T_hot [°C]"), [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tHotK[k]); }},
-        {tr("feed [kg/h]"), [](const data::SiBatch& b, std::size_t k) { return kgPerSToKgPerHour(b.feedKgPerS[k]); }},
-        {tr("X_in [% wb]"), [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xInDb[k]); }},
-        {tr("T_amb [°C]"), [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tAmbK[k]); }},
-        {tr("RH [%]"), [](const data::SiBatch& b, std::size_t k) { return fractionToPercent(b.rhAmb[k]); }},
-        {tr("X_HDT [% wb]"), [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xHdtDb[k]); }},
-        {tr("X_out [% wb]"), [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xOutDb[k]); }},
-        {tr("T_out [°C]"), [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tOutK[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "T_hot [°C]"), [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tHotK[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "feed [kg/h]"), [](const data::SiBatch& b, std::size_t k) { return kgPerSToKgPerHour(b.feedKgPerS[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "X_in [% wb]"), [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xInDb[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "T_amb [°C]"), [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tAmbK[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "RH [%]"), [](const data::SiBatch& b, std::size_t k) { return fractionToPercent(b.rhAmb[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "X_HDT [% wb]"), [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xHdtDb[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "X_out [% wb]"), [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xOutDb[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "T_out [°C]"), [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tOutK[k]); }},
     };
     return s;
 }

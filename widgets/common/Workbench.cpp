@@ -22,7 +22,7 @@ Workbench::Workbench(QObject* parent) : QObject(parent) {
 template <class R, class Work, class Done>
 JobId Workbench::start(const QString& action, Work work, Done done, std::function<void(const QString&)> onFailure) {
     if (m_jobs.busy()) {
-        Q_EMIT status(tr("%1 is queued behind the running job").arg(action));
+        Q_EMIT status(Workbench::tr("%1 is queued behind the running job").arg(action));
     }
     return m_jobs.submit<R>(
         action, std::function<Expected<R>(workflow::Session&, const Progress&)>(std::move(work)), this,
@@ -33,8 +33,8 @@ JobId Workbench::start(const QString& action, Work work, Done done, std::functio
                 return;
             }
             const QString message = r.error().kind == ErrorKind::Cancelled
-                                        ? tr("%1 was cancelled; nothing changed.").arg(action)
-                                        : tr("%1 failed: %2").arg(action, errorText(r.error()));
+                                        ? Workbench::tr("%1 was cancelled; nothing changed.").arg(action)
+                                        : Workbench::tr("%1 failed: %2").arg(action, errorText(r.error()));
             Q_EMIT status(message);
             if (onFailure) {
                 onFailure(message);

@@ -1,0 +1,1375 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>QObject</name>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="35"/>
+        <source>set %1 to %2</source>
+        <translation>将 %1 设为 %2</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::CalibrationPanel</name>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
+        <source>Free</source>
+        <translation>自由</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
+        <source>Lower</source>
+        <translation>下限</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
+        <source>Upper</source>
+        <translation>上限</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="51"/>
+        <source> evaluations</source>
+        <translation> 次评估</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="52"/>
+        <source>Calibrate</source>
+        <translation>标定</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="53"/>
+        <source>Stop, keep best</source>
+        <translation>停止并保留最优</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <source>Estimate</source>
+        <translation>估计值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <source>95 % interval</source>
+        <translation>95 % 区间</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <source>Fisher SE</source>
+        <translation>Fisher 标准误</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <source>At bound</source>
+        <translation>触及边界</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="60"/>
+        <source>Fits the free parameters to the calibration rows (every 10th kept row, the first 300) with NLopt: a global search, then BOBYQA.</source>
+        <translation>用 NLopt 将自由参数拟合到标定行（保留行中每隔 10 行取一行，取前 300 行）：先全局搜索，再用 BOBYQA。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
+        <source>best loss [-]</source>
+        <translation>最优损失 [-]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
+        <source>share of the evaluation budget used [-]</source>
+        <translation>已用评估预算比例 [-]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="69"/>
+        <source>Free parameters and their search bounds:</source>
+        <translation>自由参数及其搜索范围：</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="94"/>
+        <source>best loss so far</source>
+        <translation>迄今最优损失</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="130"/>
+        <source>Cannot calibrate: %1</source>
+        <translation>无法标定：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="137"/>
+        <source>Calibrating…</source>
+        <translation>正在标定…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="154"/>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="154"/>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="160"/>
+        <source>%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. Intervals: %10.</source>
+        <translation>%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口 MAE %6 → %7 % 湿基，%8 → %9 °C。区间：%10。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="180"/>
+        <source>loss evaluations [-]</source>
+        <translation>损失评估次数 [-]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="181"/>
+        <source>best loss</source>
+        <translation>最优损失</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::DataPanel</name>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="33"/>
+        <source>Open file…</source>
+        <translation>打开文件…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="34"/>
+        <source>Open folder…</source>
+        <translation>打开文件夹…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="36"/>
+        <source>Batches overlaid</source>
+        <translation>批次叠加</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="36"/>
+        <source>Batches one after another</source>
+        <translation>批次首尾相接</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <source>Batch</source>
+        <translation>批次</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <source>Rows</source>
+        <translation>行数</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <source>Kept</source>
+        <translation>保留</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <source>Length [min]</source>
+        <translation>时长 [min]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <source>Mean X_out [% wb]</source>
+        <translation>平均 X_out [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <source>Mean T_hot [°C]</source>
+        <translation>平均 T_hot [°C]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="55"/>
+        <source>Batches (select several to overlay; drop files here):</source>
+        <translation>批次（多选可叠加；可将文件拖放到此处）：</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="71"/>
+        <source>Open batch file</source>
+        <translation>打开批次文件</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="71"/>
+        <source>Batch files (*.csv)</source>
+        <translation>批次文件 (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="77"/>
+        <source>Open data set folder</source>
+        <translation>打开数据集文件夹</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::DiagnosticsPanel</name>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="24"/>
+        <source>Evaluate</source>
+        <translation>评估</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="25"/>
+        <source>Evaluate a trained model to see its residuals.</source>
+        <translation>评估已训练的模型以查看其残差。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="28"/>
+        <source>ACF of the X_out residual [-]</source>
+        <translation>X_out 残差的自相关 [-]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="29"/>
+        <source>lag [s]</source>
+        <translation>滞后 [s]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="31"/>
+        <source>PSD [(% wb)²/Hz]</source>
+        <translation>功率谱密度 [(% 湿基)²/Hz]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="32"/>
+        <source>frequency [Hz]</source>
+        <translation>频率 [Hz]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="37"/>
+        <source>Models shown (tick to overlay):</source>
+        <translation>显示的模型（勾选以叠加）：</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="73"/>
+        <source>%1: Ljung-Box p %2, residual mean %3 % wb</source>
+        <translation>%1：Ljung-Box p = %2，残差均值 %3 % 湿基</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="108"/>
+        <source>%1 (%2 % below 0.01 Hz)</source>
+        <translation>%1（%2 % 低于 0.01 Hz）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="114"/>
+        <source>95 % band of white noise</source>
+        <translation>白噪声 95 % 置信带</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::DiscoverPanel</name>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="18"/>
+        <source>Discover</source>
+        <translation>发现</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="19"/>
+        <source>What does the simulation get wrong, and why? (score tests, fits, held-out gain)</source>
+        <translation>仿真哪里出错，为什么？（得分检验、拟合、留出数据上的改进）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="20"/>
+        <source>Extend the model</source>
+        <translation>扩展模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="22"/>
+        <source>Make the extended model (named causes, refitted h_HDT and k_HDT, residual models retrained) the session&apos;s model</source>
+        <translation>将扩展后的模型（已命名的原因、重新拟合的 h_HDT 与 k_HDT、重新训练的残差模型）设为当前模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="24"/>
+        <source>Run discovery on the loaded data with the current model.</source>
+        <translation>用当前模型在已加载的数据上运行发现。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
+        <source>Cause</source>
+        <translation>原因</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
+        <source>Score z</source>
+        <translation>得分 z</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
+        <source>p (Holm)</source>
+        <translation>p（Holm）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
+        <source>Fitted</source>
+        <translation>已拟合</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
+        <source>Loss</source>
+        <translation>损失</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <source>Held-out</source>
+        <translation>留出数据</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <source>Before</source>
+        <translation>之前</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <source>After</source>
+        <translation>之后</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
+        <source>X_out residual [% wb]</source>
+        <translation>X_out 残差 [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="37"/>
+        <source>T_out residual [°C]</source>
+        <translation>T_out 残差 [°C]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
+        <source>time, batches one after another [h]</source>
+        <translation>时间，批次首尾相接 [h]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="47"/>
+        <source>Candidate causes, first round:</source>
+        <translation>候选原因（第一轮）：</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
+        <source>Gain on the held-out part:</source>
+        <translation>留出数据上的改进：</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="66"/>
+        <source> The model is extended.</source>
+        <translation> 模型已扩展。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="83"/>
+        <source>Verdict: %1. No mechanism is named.</source>
+        <translation>结论：%1。未命名任何机理。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="84"/>
+        <source>Verdict: %1. Named: %2.</source>
+        <translation>结论：%1。已命名：%2。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="108"/>
+        <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="114"/>
+        <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="126"/>
+        <source>MAE X_out (physics)</source>
+        <translation>MAE X_out（机理）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="126"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="132"/>
+        <source>% wb</source>
+        <translation>% 湿基</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="127"/>
+        <source>MAE T_out (physics)</source>
+        <translation>MAE T_out（机理）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="127"/>
+        <source>°C</source>
+        <translation>°C</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="128"/>
+        <source>R² X_out</source>
+        <translation>R² X_out</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="129"/>
+        <source>low-frequency share</source>
+        <translation>低频占比</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="132"/>
+        <source>MAE X_out (PGRL-CC)</source>
+        <translation>MAE X_out（PGRL-CC）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="158"/>
+        <source>starting model</source>
+        <translation>初始模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="159"/>
+        <source>extended model</source>
+        <translation>扩展后的模型</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::ErrorText</name>
+    <message>
+        <location filename="../widgets/common/ErrorText.cpp" line="16"/>
+        <source>%1: no such file or folder</source>
+        <translation>%1：文件或文件夹不存在</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/ErrorText.cpp" line="21"/>
+        <source>%1: the required column &apos;%2&apos; is missing</source>
+        <translation>%1：缺少必需的列“%2”</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/ErrorText.cpp" line="26"/>
+        <source>%1, line %2, column %3: text &apos;%4&apos; in the numeric column &apos;%5&apos;</source>
+        <translation>%1，第 %2 行，第 %3 列：数值列“%5”中出现文本“%4”</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/ErrorText.cpp" line="32"/>
+        <source>%1, line %2, column %3: time does not increase</source>
+        <translation>%1，第 %2 行，第 %3 列：时间未递增</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/ErrorText.cpp" line="37"/>
+        <source>%1, line %2, column %3: %4</source>
+        <translation>%1，第 %2 行，第 %3 列：%4</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/ErrorText.cpp" line="42"/>
+        <source>Parameter %1 = %2 lies outside its range [%3, %4]</source>
+        <translation>参数 %1 = %2 超出其范围 [%3, %4]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/ErrorText.cpp" line="46"/>
+        <source>No data loaded; open a batch file or folder first.</source>
+        <translation>未加载数据；请先打开批次文件或文件夹。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/ErrorText.cpp" line="48"/>
+        <source>Cancelled by the user.</source>
+        <translation>已被用户取消。</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::LineView3D</name>
+    <message>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="71"/>
+        <source>moisture [% wb]</source>
+        <translation>含水率 [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="71"/>
+        <source>temperature [°C]</source>
+        <translation>温度 [°C]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="74"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="96"/>
+        <source>Play</source>
+        <translation>播放</translation>
+    </message>
+    <message>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="76"/>
+        <source>Simulate the model to see the parcels.</source>
+        <translation>运行模型仿真以查看物料团。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="80"/>
+        <source>Batch</source>
+        <translation>批次</translation>
+    </message>
+    <message>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="96"/>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="270"/>
+        <source>%1 s of %2</source>
+        <translation>%1 s / %2</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::MainWindow</name>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="54"/>
+        <source>DryTwin</source>
+        <translation>DryTwin</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="68"/>
+        <source>Data</source>
+        <translation>数据</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="69"/>
+        <source>Model</source>
+        <translation>模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="70"/>
+        <source>Calibrate</source>
+        <translation>标定</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="71"/>
+        <source>Residual model</source>
+        <translation>残差模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="72"/>
+        <source>Diagnostics</source>
+        <translation>诊断</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="73"/>
+        <source>Discover</source>
+        <translation>发现</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="74"/>
+        <source>What-if MPC</source>
+        <translation>假设分析 MPC</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="75"/>
+        <source>3D line</source>
+        <translation>三维产线</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="78"/>
+        <source>No data loaded. File ▸ Open data set…</source>
+        <translation>未加载数据。文件 ▸ 打开数据集…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="82"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="155"/>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="156"/>
+        <source>&amp;Open batch file…</source>
+        <translation>打开批次文件(&amp;O)…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="157"/>
+        <source>Open batch file</source>
+        <translation>打开批次文件</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="157"/>
+        <source>Batch files (*.csv)</source>
+        <translation>批次文件 (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="163"/>
+        <source>Open data set &amp;folder…</source>
+        <translation>打开数据集文件夹(&amp;F)…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="164"/>
+        <source>Open data set folder</source>
+        <translation>打开数据集文件夹</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="169"/>
+        <source>Open &amp;model…</source>
+        <translation>打开模型(&amp;M)…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="170"/>
+        <source>Open model</source>
+        <translation>打开模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="170"/>
+        <location filename="../widgets/MainWindow.cpp" line="177"/>
+        <source>Model files (*.json)</source>
+        <translation>模型文件 (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="175"/>
+        <source>Save model &amp;as…</source>
+        <translation>模型另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="176"/>
+        <source>Save model</source>
+        <translation>保存模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="183"/>
+        <source>Open &amp;project…</source>
+        <translation>打开项目(&amp;P)…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="184"/>
+        <location filename="../widgets/MainWindow.cpp" line="187"/>
+        <location filename="../widgets/MainWindow.cpp" line="374"/>
+        <source>Open project</source>
+        <translation>打开项目</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="184"/>
+        <location filename="../widgets/MainWindow.cpp" line="194"/>
+        <location filename="../widgets/MainWindow.cpp" line="204"/>
+        <source>DryTwin projects (*.drytwin)</source>
+        <translation>DryTwin 项目 (*.drytwin)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="190"/>
+        <source>&amp;Save project</source>
+        <translation>保存项目(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="193"/>
+        <location filename="../widgets/MainWindow.cpp" line="198"/>
+        <location filename="../widgets/MainWindow.cpp" line="203"/>
+        <location filename="../widgets/MainWindow.cpp" line="207"/>
+        <source>Save project</source>
+        <translation>保存项目</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="202"/>
+        <source>Save project as…</source>
+        <translation>项目另存为…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="210"/>
+        <source>Recent projects</source>
+        <translation>最近的项目</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="213"/>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="216"/>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="217"/>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="228"/>
+        <source>The language changes when DryTwin is started again.</source>
+        <translation>语言将在 DryTwin 重新启动后生效。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="231"/>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="232"/>
+        <source>&amp;About DryTwin</source>
+        <translation>关于 DryTwin(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="232"/>
+        <source>About DryTwin</source>
+        <translation>关于 DryTwin</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="233"/>
+        <source>About &amp;Qt</source>
+        <translation>关于 Qt(&amp;Q)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="237"/>
+        <source>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;Digital-twin workbench for pneumatic drying lines, implementing the PGRL-CC method.&lt;/p&gt;&lt;table&gt;</source>
+        <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="297"/>
+        <location filename="../widgets/MainWindow.cpp" line="304"/>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="310"/>
+        <source>Project saved to %1</source>
+        <translation>项目已保存到 %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="318"/>
+        <source>cannot open %1: %2</source>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="326"/>
+        <source>%1 is not a DryTwin project (%2)</source>
+        <translation>%1 不是 DryTwin 项目（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::ModelPanel</name>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <source>Value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <source>Lower</source>
+        <translation>下限</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <source>Upper</source>
+        <translation>上限</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <source>Source</source>
+        <translation>来源</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <source>Meaning</source>
+        <translation>含义</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="55"/>
+        <source>Undo</source>
+        <translation>撤销</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="56"/>
+        <source>Redo</source>
+        <translation>重做</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="64"/>
+        <source>Physics switches</source>
+        <translation>物理开关</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="66"/>
+        <source>clamp water activity (Eq. 2)</source>
+        <translation>限制水分活度（式 2）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="66"/>
+        <source>bound-water latent heat (Eq. 4)</source>
+        <translation>结合水潜热（式 4）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="67"/>
+        <source>moisture-dependent heat capacity (Eq. 3)</source>
+        <translation>随含水率变化的比热（式 3）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="68"/>
+        <source>consistent energy balance (Eqs. 12, 14, 19; off: as printed)</source>
+        <translation>一致的能量平衡（式 12、14、19；关闭：按原文）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="84"/>
+        <source>Simulate</source>
+        <translation>仿真</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="85"/>
+        <source>Run the physics model over every batch with these parameters</source>
+        <translation>用这些参数对每个批次运行机理模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="92"/>
+        <source>Double-click a value to edit it; it is checked against its bounds.</source>
+        <translation>双击数值进行编辑；将按其上下限检查。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="102"/>
+        <source>Batch:</source>
+        <translation>批次：</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="106"/>
+        <source>X_out [% wb]</source>
+        <translation>X_out [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="107"/>
+        <source>T_out [°C]</source>
+        <translation>T_out [°C]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="108"/>
+        <source>X_HDT [% wb]</source>
+        <translation>X_HDT [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="109"/>
+        <source>T_HDT [°C]</source>
+        <translation>T_HDT [°C]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="146"/>
+        <source>%1 must lie in [%2, %3] %4; it stays %5.</source>
+        <translation>%1 必须在 [%2, %3] %4 之内；保持为 %5。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="202"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="209"/>
+        <source>measured</source>
+        <translation>实测</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ModelPanel.cpp" line="221"/>
+        <source>physics model</source>
+        <translation>机理模型</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::MpcPanel</name>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="39"/>
+        <source>Open scenario…</source>
+        <translation>打开情景…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="42"/>
+        <source>The scenario as JSON (schema in docs/mpc.md): setpoint steps, input steps and ramps, hidden mechanisms switched on mid-run, noise. Edits are checked when you run.</source>
+        <translation>以 JSON 表示的情景（格式见 docs/mpc.md）：设定值阶跃、输入阶跃与斜坡、运行中途开启的隐藏机理、噪声。运行时检查修改。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="50"/>
+        <source>Run scenario</source>
+        <translation>运行情景</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="52"/>
+        <source>Show the horizon the controllers predicted at this decision</source>
+        <translation>显示控制器在此决策时刻预测的时域</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="53"/>
+        <source>Runs the scenario against the virtual plant once per controller.</source>
+        <translation>对虚拟装置逐个控制器运行该情景。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <source>Controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <source>IAE [%·s]</source>
+        <translation>IAE [%·s]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <source>Effort [K²]</source>
+        <translation>控制量 [K²]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <source>Violations [%]</source>
+        <translation>越限 [%]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
+        <source>Solve median [ms]</source>
+        <translation>求解时间中位数 [ms]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
+        <source>Fallbacks</source>
+        <translation>回退次数</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
+        <source>Model gain [%/K]</source>
+        <translation>模型增益 [%/K]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="61"/>
+        <source>X_out, true [% wb]</source>
+        <translation>X_out 真实值 [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
+        <source>T_hot setpoint [°C]</source>
+        <translation>T_hot 设定值 [°C]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="74"/>
+        <source>prediction at</source>
+        <translation>预测时刻</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="96"/>
+        <source>Open scenario</source>
+        <translation>打开情景</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="96"/>
+        <source>Scenarios (*.json)</source>
+        <translation>情景 (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="111"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="127"/>
+        <source>Cannot write %1</source>
+        <translation>无法写入 %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="141"/>
+        <source>Choose at least one controller.</source>
+        <translation>请至少选择一个控制器。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="144"/>
+        <source>Running…</source>
+        <translation>正在运行…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="165"/>
+        <source>skipped</source>
+        <translation>已跳过</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="181"/>
+        <source>setpoint</source>
+        <translation>设定值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="188"/>
+        <source>band</source>
+        <translation>允许带</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="203"/>
+        <source>%1 predicted at %2 s</source>
+        <translation>%1 在 %2 s 时的预测</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="210"/>
+        <source>%1. IAE and violations on the product&apos;s true outlet moisture; the plant&apos;s own gain is %2 % wb/K.</source>
+        <translation>%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::PlotStack</name>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="80"/>
+        <source>Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click to zoom out, middle drag to pan</source>
+        <translation>Ctrl+单击：游标 A，Shift+单击：游标 B，Alt+单击：时间游标；拖动放大，右键缩小，中键拖动平移</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="84"/>
+        <source>Export…</source>
+        <translation>导出…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="85"/>
+        <source>Save these plots as PNG, SVG or PDF</source>
+        <translation>将这些图表保存为 PNG、SVG 或 PDF</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="158"/>
+        <source>time [s]</source>
+        <translation>时间 [s]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="327"/>
+        <source>A %1</source>
+        <translation>A %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="330"/>
+        <source>B %1</source>
+        <translation>B %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="333"/>
+        <source>Δx %1</source>
+        <translation>Δx %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="337"/>
+        <source>%1: Δ %2</source>
+        <translation>%1：Δ %2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="341"/>
+        <source>time cursor %1 s</source>
+        <translation>时间游标 %1 s</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="396"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="420"/>
+        <source>cannot write %1</source>
+        <translation>无法写入 %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="407"/>
+        <source>DryTwin plots</source>
+        <translation>DryTwin 图表</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="428"/>
+        <source>unknown format &apos;%1&apos;: use .png, .svg or .pdf</source>
+        <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="434"/>
+        <source>Export plots</source>
+        <translation>导出图表</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="435"/>
+        <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)</source>
+        <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="441"/>
+        <source>Export failed: %1</source>
+        <translation>导出失败：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="443"/>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::ResidualPanel</name>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="31"/>
+        <source>chosen by validation (16, 32, 60)</source>
+        <translation>由验证选择（16、32、60）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="34"/>
+        <source>Eq. 30: constrained fit with certificate</source>
+        <translation>式 30：带证书的约束拟合</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="34"/>
+        <source>eigenvalues pulled in after the fit</source>
+        <translation>拟合后将特征值收缩</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="35"/>
+        <source>orthogonal projection P⊥ (Eq. 27)</source>
+        <translation>正交投影 P⊥（式 27）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="37"/>
+        <source>Train PGRL-CC and the baselines</source>
+        <translation>训练 PGRL-CC 及基线模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="39"/>
+        <source>residual lags</source>
+        <translation>残差滞后阶数</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="40"/>
+        <source>stability</source>
+        <translation>稳定性</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="43"/>
+        <source>Trains on the chronological 70 % and evaluates on the rest; settings are chosen inside the training part.</source>
+        <translation>按时间顺序用前 70 % 训练，其余部分评估；设置在训练部分内选定。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <source>Model</source>
+        <translation>模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <source>MAE X_out [% wb]</source>
+        <translation>MAE X_out [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <source>R² X_out</source>
+        <translation>R² X_out</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="48"/>
+        <source>MAE T_out [°C]</source>
+        <translation>MAE T_out [°C]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="48"/>
+        <source>skill 1 step</source>
+        <translation>1 步技能值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="48"/>
+        <source>skill 30 steps</source>
+        <translation>30 步技能值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="52"/>
+        <source>imaginary part</source>
+        <translation>虚部</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="53"/>
+        <source>real part</source>
+        <translation>实部</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="59"/>
+        <source>skill: MAE over the better reference [-]</source>
+        <translation>技能值：MAE 与较优参考之比 [-]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
+        <source>forecast horizon [steps of 1 s]</source>
+        <translation>预测步长 [1 s 步]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="95"/>
+        <source>Training…</source>
+        <translation>正在训练…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="132"/>
+        <source>skill 1 (ties the better reference)</source>
+        <translation>技能值 1（与较优参考持平）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="141"/>
+        <source>unit circle</source>
+        <translation>单位圆</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="154"/>
+        <source>A unconstrained (ρ = %1)</source>
+        <translation>无约束 A（ρ = %1）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="158"/>
+        <source>A with Eq. 30 (ρ = %1)</source>
+        <translation>式 30 约束后的 A（ρ = %1）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="171"/>
+        <source>Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).</source>
+        <translation>留出部分：%1 行。技能值低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::Series</name>
+    <message>
+        <location filename="../widgets/common/Series.cpp" line="12"/>
+        <source>T_hot [°C]</source>
+        <translation>T_hot [°C]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Series.cpp" line="13"/>
+        <source>feed [kg/h]</source>
+        <translation>进料 [kg/h]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Series.cpp" line="14"/>
+        <source>X_in [% wb]</source>
+        <translation>X_in [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Series.cpp" line="15"/>
+        <source>T_amb [°C]</source>
+        <translation>T_amb [°C]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Series.cpp" line="16"/>
+        <source>RH [%]</source>
+        <translation>相对湿度 [%]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Series.cpp" line="17"/>
+        <source>X_HDT [% wb]</source>
+        <translation>X_HDT [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Series.cpp" line="18"/>
+        <source>X_out [% wb]</source>
+        <translation>X_out [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Series.cpp" line="19"/>
+        <source>T_out [°C]</source>
+        <translation>T_out [°C]</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::Workbench</name>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="25"/>
+        <source>%1 is queued behind the running job</source>
+        <translation>%1 已排队，等待当前任务完成</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="36"/>
+        <source>%1 was cancelled; nothing changed.</source>
+        <translation>%1 已取消；未作任何更改。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="37"/>
+        <source>%1 failed: %2</source>
+        <translation>%1 失败：%2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="49"/>
+        <source>Read the model</source>
+        <translation>读取模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="58"/>
+        <source>Loading %1…</source>
+        <translation>正在加载 %1…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="66"/>
+        <source>Load %1</source>
+        <translation>加载 %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="80"/>
+        <source>%1: %2 batches, %3 rows, %4 missing cells; the cleaning keeps %5 rows</source>
+        <translation>%1：%2 个批次，%3 行，%4 个缺失值；清洗后保留 %5 行</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="95"/>
+        <source>Open model %1</source>
+        <translation>打开模型 %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="99"/>
+        <source>Model %1 opened</source>
+        <translation>已打开模型 %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="106"/>
+        <source>Save model</source>
+        <translation>保存模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="115"/>
+        <source>Model saved to %1</source>
+        <translation>模型已保存到 %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="121"/>
+        <source>Set %1</source>
+        <translation>设置 %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="137"/>
+        <source>Set the model</source>
+        <translation>设置模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="150"/>
+        <source>Simulate</source>
+        <translation>仿真</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="157"/>
+        <source>Simulated %1 batches; mean outlet-moisture MAE %2 % wb</source>
+        <translation>已仿真 %1 个批次；出口含水率平均 MAE %2 % 湿基</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="166"/>
+        <source>Calibrate</source>
+        <translation>标定</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="169"/>
+        <source>Calibration %1: loss %2 → %3</source>
+        <translation>标定 %1：损失 %2 → %3</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="186"/>
+        <source>Train</source>
+        <translation>训练</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="189"/>
+        <source>Trained PGRL-CC and the baselines</source>
+        <translation>已训练 PGRL-CC 及基线模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="198"/>
+        <source>Evaluate</source>
+        <translation>评估</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="207"/>
+        <source>Discover</source>
+        <translation>发现</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="210"/>
+        <source>Discovery: %1</source>
+        <translation>发现：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="217"/>
+        <source>What-if scenario</source>
+        <translation>假设情景</translation>
+    </message>
+</context>
+</TS>
