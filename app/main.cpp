@@ -4,6 +4,7 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QLibraryInfo>
 #include <QLocale>
@@ -63,8 +64,19 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
         language = QLocale::system().name().startsWith(QLatin1String("zh")) ? QStringLiteral("zh_CN") : QStringLiteral("en");
     }
     installTranslations(app, language);
+    QElapsedTimer sinceStart;
+    sinceStart.start();
     drytwin::widgets::MainWindow window;
     window.show();
+    // How long until the data and the physics model are on screen (scripts/measure-gui.sh).
+    QObject::connect(&window, &drytwin::widgets::MainWindow::simulationShown, &window, [&sinceStart] {
+        static bool once = false;
+        if (!once) {
+            once = true;
+            std::fprintf(stderr, "drytwin: data loaded, simulated and drawn %.2f s after start\n",
+                         sinceStart.elapsed() / 1000.0);
+        }
+    });
     const QString screenshot = QString::fromStdString(parsed.screenshotPath);
     const QString dataPath = QString::fromStdString(parsed.guiDataPath);
     const QString projectPath = QString::fromStdString(parsed.projectPath);

@@ -134,76 +134,155 @@
     </message>
 </context>
 <context>
+    <name>drytwin::widgets::ColumnMappingDialog</name>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="26"/>
+        <source>Column mapping</source>
+        <translation>列映射</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="43"/>
+        <source>Could not read the headers of %1.</source>
+        <translation>无法读取 %1 的表头。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="44"/>
+        <source>Choose, for each column DryTwin needs, the header your files use. The values must be in the unit shown; required columns are marked *.</source>
+        <translation>为 DryTwin 需要的每一列选择您文件中使用的表头。数值必须采用所示单位；必需的列标有 *。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="49"/>
+        <source>DryTwin column</source>
+        <translation>DryTwin 列</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="49"/>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="49"/>
+        <source>Header in your file</source>
+        <translation>您文件中的表头</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="49"/>
+        <source>Meaning</source>
+        <translation>含义</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="62"/>
+        <source>(not in the file)</source>
+        <translation>（文件中没有）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="118"/>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
     <name>drytwin::widgets::DataPanel</name>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="33"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="35"/>
         <source>Open file…</source>
         <translation>打开文件…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="34"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="36"/>
         <source>Open folder…</source>
         <translation>打开文件夹…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="36"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="37"/>
+        <source>Column mapping…</source>
+        <translation>列映射…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <source>Files with other column names: map them onto DryTwin&apos;s columns, then load</source>
+        <translation>列名不同的文件：先映射到 DryTwin 的列，再加载</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="42"/>
         <source>Batches overlaid</source>
         <translation>批次叠加</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="36"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="42"/>
         <source>Batches one after another</source>
         <translation>批次首尾相接</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="44"/>
         <source>Batch</source>
         <translation>批次</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="44"/>
         <source>Rows</source>
         <translation>行数</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="44"/>
         <source>Kept</source>
         <translation>保留</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="44"/>
         <source>Length [min]</source>
         <translation>时长 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="45"/>
         <source>Mean X_out [% wb]</source>
         <translation>平均 X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="45"/>
         <source>Mean T_hot [°C]</source>
         <translation>平均 T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="55"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="61"/>
         <source>Batches (select several to overlay; drop files here):</source>
         <translation>批次（多选可叠加；可将文件拖放到此处）：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="71"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="79"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="71"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="79"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="92"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="77"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="85"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="91"/>
+        <source>A batch file with your column names</source>
+        <translation>一个使用您的列名的批次文件</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="100"/>
+        <source>Save the column mapping</source>
+        <translation>保存列映射</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="101"/>
+        <source>Mappings (*.json)</source>
+        <translation>映射 (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="166"/>
+        <source>Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.</source>
+        <translation>清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。</translation>
     </message>
 </context>
 <context>
@@ -1091,122 +1170,122 @@
 <context>
     <name>drytwin::widgets::ResidualPanel</name>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="31"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="30"/>
         <source>chosen by validation (16, 32, 60)</source>
         <translation>由验证选择（16、32、60）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="34"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="33"/>
         <source>Eq. 30: constrained fit with certificate</source>
         <translation>式 30：带证书的约束拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="34"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="33"/>
         <source>eigenvalues pulled in after the fit</source>
         <translation>拟合后将特征值收缩</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="35"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="34"/>
         <source>orthogonal projection P⊥ (Eq. 27)</source>
         <translation>正交投影 P⊥（式 27）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="37"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="36"/>
         <source>Train PGRL-CC and the baselines</source>
         <translation>训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="39"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="38"/>
         <source>residual lags</source>
         <translation>残差滞后阶数</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="40"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="39"/>
         <source>stability</source>
         <translation>稳定性</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="43"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="42"/>
         <source>Trains on the chronological 70 % and evaluates on the rest; settings are chosen inside the training part.</source>
         <translation>按时间顺序用前 70 % 训练，其余部分评估；设置在训练部分内选定。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="46"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="46"/>
         <source>MAE X_out [% wb]</source>
         <translation>MAE X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="46"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="48"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
         <source>MAE T_out [°C]</source>
         <translation>MAE T_out [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="48"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
         <source>skill 1 step</source>
         <translation>1 步技能值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="48"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
         <source>skill 30 steps</source>
         <translation>30 步技能值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="52"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="51"/>
         <source>imaginary part</source>
         <translation>虚部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="53"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="52"/>
         <source>real part</source>
         <translation>实部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="59"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="54"/>
         <source>skill: MAE over the better reference [-]</source>
         <translation>技能值：MAE 与较优参考之比 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="55"/>
         <source>forecast horizon [steps of 1 s]</source>
         <translation>预测步长 [1 s 步]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="95"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="90"/>
         <source>Training…</source>
         <translation>正在训练…</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="132"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="127"/>
         <source>skill 1 (ties the better reference)</source>
         <translation>技能值 1（与较优参考持平）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="141"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="136"/>
         <source>unit circle</source>
         <translation>单位圆</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="154"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="149"/>
         <source>A unconstrained (ρ = %1)</source>
         <translation>无约束 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="158"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="153"/>
         <source>A with Eq. 30 (ρ = %1)</source>
         <translation>式 30 约束后的 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="171"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="169"/>
         <source>Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).</source>
         <translation>留出部分：%1 行。技能值低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
     </message>
@@ -1282,92 +1361,92 @@
         <translation>正在加载 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="66"/>
+        <location filename="../widgets/common/Workbench.cpp" line="67"/>
         <source>Load %1</source>
         <translation>加载 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="80"/>
+        <location filename="../widgets/common/Workbench.cpp" line="82"/>
         <source>%1: %2 batches, %3 rows, %4 missing cells; the cleaning keeps %5 rows</source>
         <translation>%1：%2 个批次，%3 行，%4 个缺失值；清洗后保留 %5 行</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="95"/>
+        <location filename="../widgets/common/Workbench.cpp" line="97"/>
         <source>Open model %1</source>
         <translation>打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="99"/>
+        <location filename="../widgets/common/Workbench.cpp" line="101"/>
         <source>Model %1 opened</source>
         <translation>已打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="106"/>
+        <location filename="../widgets/common/Workbench.cpp" line="108"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="115"/>
+        <location filename="../widgets/common/Workbench.cpp" line="117"/>
         <source>Model saved to %1</source>
         <translation>模型已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="121"/>
+        <location filename="../widgets/common/Workbench.cpp" line="123"/>
         <source>Set %1</source>
         <translation>设置 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="137"/>
+        <location filename="../widgets/common/Workbench.cpp" line="139"/>
         <source>Set the model</source>
         <translation>设置模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="150"/>
+        <location filename="../widgets/common/Workbench.cpp" line="152"/>
         <source>Simulate</source>
         <translation>仿真</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="157"/>
+        <location filename="../widgets/common/Workbench.cpp" line="159"/>
         <source>Simulated %1 batches; mean outlet-moisture MAE %2 % wb</source>
         <translation>已仿真 %1 个批次；出口含水率平均 MAE %2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="166"/>
+        <location filename="../widgets/common/Workbench.cpp" line="168"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="169"/>
+        <location filename="../widgets/common/Workbench.cpp" line="171"/>
         <source>Calibration %1: loss %2 → %3</source>
         <translation>标定 %1：损失 %2 → %3</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="186"/>
+        <location filename="../widgets/common/Workbench.cpp" line="188"/>
         <source>Train</source>
         <translation>训练</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="189"/>
+        <location filename="../widgets/common/Workbench.cpp" line="191"/>
         <source>Trained PGRL-CC and the baselines</source>
         <translation>已训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="198"/>
+        <location filename="../widgets/common/Workbench.cpp" line="200"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="207"/>
+        <location filename="../widgets/common/Workbench.cpp" line="209"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="210"/>
+        <location filename="../widgets/common/Workbench.cpp" line="212"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="217"/>
+        <location filename="../widgets/common/Workbench.cpp" line="219"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>

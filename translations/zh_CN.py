@@ -259,6 +259,20 @@ ZH = {
     "yes": "是",
     "°C": "°C",
     "Δx %1": "Δx %1",
+    "Column mapping": "列映射",
+    "Could not read the headers of %1.": "无法读取 %1 的表头。",
+    "Choose, for each column DryTwin needs, the header your files use. The values must be in the unit shown; required columns are marked *.":
+        "为 DryTwin 需要的每一列选择您文件中使用的表头。数值必须采用所示单位；必需的列标有 *。",
+    "DryTwin column": "DryTwin 列",
+    "Header in your file": "您文件中的表头",
+    "(not in the file)": "（文件中没有）",
+    "Column mapping…": "列映射…",
+    "Files with other column names: map them onto DryTwin's columns, then load": "列名不同的文件：先映射到 DryTwin 的列，再加载",
+    "A batch file with your column names": "一个使用您的列名的批次文件",
+    "Save the column mapping": "保存列映射",
+    "Mappings (*.json)": "映射 (*.json)",
+    "Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.":
+        "清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。",
 }
 
 

@@ -4,6 +4,7 @@
 #include "MainWindow.h"
 #include "calibration/CalibrationPanel.h"
 #include "common/PlotStack.h"
+#include "data/ColumnMappingDialog.h"
 #include "data/DataPanel.h"
 #include "discovery/DiscoverPanel.h"
 #include "model/ModelPanel.h"
@@ -122,6 +123,35 @@ private Q_SLOTS:
         QCOMPARE(w.dataSet().batches.size(), std::size_t(1)); // nothing lost
         QCOMPARE(w.dataPanel()->batchTable()->rowCount(), 1);
         QVERIFY(w.statusBar()->findChild<QLabel*>()->text().contains("bad.csv"));
+    }
+
+    void foreignColumnNamesAreMappedAndLoaded() {
+        QTemporaryDir dir;
+        writeText(dir.filePath("plant.csv"),
+                  "Zeit,Heissluft,Durchsatz,Feuchte_ein,Umgebung,RF,Feuchte_aus,Temp_aus\n"
+                  "0,170,6000,22,20,50,12.5,55\n1,171,6000,22,20,50,12.6,55.1\n2,171,6000,22,20,50,12.7,55.3\n");
+        widgets::ColumnMappingDialog dialog(dir.filePath("plant.csv"));
+        QCOMPARE(dialog.headers().size(), 8);
+        const QStringList contract{"time_s", "T_hot_C", "feed_kg_h", "X_in_pct", "T_amb_C", "RH_amb_pct",
+                                   "X_out_pct", "T_out_C"};
+        for (int i = 0; i < contract.size(); ++i) {
+            QVERIFY2(dialog.choose(contract[i], dialog.headers()[i]), qPrintable(contract[i]));
+        }
+        QVERIFY(!dialog.choose("no_such_column", "Zeit"));
+        const QString mapping = dir.filePath("mapping.json");
+        QVERIFY(dialog.save(mapping));
+        MainWindow w;
+        QSignalSpy loaded(&w, &MainWindow::loadFinished);
+        w.workbench().openData(dir.filePath("plant.csv"), mapping);
+        QVERIFY(loaded.wait(10000));
+        QCOMPARE(loaded.takeFirst().at(0).toBool(), true);
+        QCOMPARE(w.dataSet().batches.size(), std::size_t(1));
+        QVERIFY(w.dataPanel()->cleaningSummary()->text().contains("3 of 3 rows kept"));
+        // Without the mapping the same file is rejected, naming a missing column.
+        w.workbench().openData(dir.filePath("plant.csv"));
+        QVERIFY(loaded.wait(10000));
+        QCOMPARE(loaded.takeFirst().at(0).toBool(), false);
+        QCOMPARE(w.dataSet().batches.size(), std::size_t(1));
     }
 
     void mainFlowsThroughTheWidgets() {

@@ -54,10 +54,11 @@ void Workbench::fetchModel() {
         });
 }
 
-void Workbench::openData(const QString& path) {
+void Workbench::openData(const QString& path, const QString& mappingPath) {
     Q_EMIT status(tr("Loading %1…").arg(path));
     workflow::OpenOptions o;
     o.dataPath = path.toStdString();
+    o.mappingPath = mappingPath.toStdString();
     struct Loaded {
         workflow::OpenResult open;
         std::vector<data::SiBatch> si;
@@ -71,7 +72,8 @@ void Workbench::openData(const QString& path) {
             }
             return Loaded{*r, s.siBatches()};
         },
-        [this, path](const Loaded& l) {
+        [this, path, mappingPath](const Loaded& l) {
+            m_mappingPath = mappingPath;
             m_dataSet = l.open.dataSet;
             m_summary = l.open.summary;
             m_si = l.si;

@@ -30,8 +30,10 @@ public:
     const workflow::LatestResults& latest() const { return m_latest; }
     QString dataPath() const { return m_dataPath; }
     QString modelPath() const { return m_modelPath; }
+    QString mappingPath() const { return m_mappingPath; }
 
-    void openData(const QString& path);
+    /// @brief Loads data; @p mappingPath: a column mapping file (empty: the contract's names).
+    void openData(const QString& path, const QString& mappingPath = {});
     void openModel(const QString& path);
     void saveModel(const QString& path);
     /// @brief Sets a physics parameter (checked against its bounds on the engine thread).
@@ -81,7 +83,7 @@ private:
     data::DataSetSummary m_summary;
     hybrid::HybridModel m_model;
     workflow::LatestResults m_latest;
-    QString m_dataPath, m_modelPath;
+    QString m_dataPath, m_modelPath, m_mappingPath;
     JobId m_calibrationJob = 0;
 };
 

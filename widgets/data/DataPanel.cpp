@@ -1,6 +1,7 @@
 #include "data/DataPanel.h"
 
 #include "common/PlotStack.h"
+#include "data/ColumnMappingDialog.h"
 #include "common/Series.h"
 #include "common/Units.h"
 #include "common/Workbench.h"
@@ -9,6 +10,7 @@
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QItemSelectionModel>
@@ -32,6 +34,10 @@ DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m
     setAcceptDrops(true);
     auto* openFile = new QPushButton(tr("Open file…"));
     auto* openFolder = new QPushButton(tr("Open folder…"));
+    auto* mapping = new QPushButton(tr("Column mapping…"));
+    mapping->setToolTip(tr("Files with other column names: map them onto DryTwin's columns, then load"));
+    m_cleaning = new QLabel;
+    m_cleaning->setWordWrap(true);
     m_arrangement = new QComboBox;
     m_arrangement->addItems({tr("Batches overlaid"), tr("Batches one after another")});
     m_table = new QTableWidget(0, 6);
@@ -54,6 +60,8 @@ DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m
     leftLayout->addLayout(buttons);
     leftLayout->addWidget(new QLabel(tr("Batches (select several to overlay; drop files here):")));
     leftLayout->addWidget(m_table, 1);
+    leftLayout->addWidget(m_cleaning);
+    leftLayout->addWidget(mapping);
     leftLayout->addWidget(m_arrangement);
     // Eight plots one above the other: scroll rather than squeeze them.
     auto* scroll = new QScrollArea;
@@ -78,6 +86,25 @@ DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m
         if (!p.isEmpty()) {
             m_workbench.openData(p);
         }
+    });
+    connect(mapping, &QPushButton::clicked, this, [this] {
+        const QString file = QFileDialog::getOpenFileName(this, tr("A batch file with your column names"), {},
+                                                          tr("Batch files (*.csv)"));
+        if (file.isEmpty()) {
+            return;
+        }
+        ColumnMappingDialog dialog(file, this);
+        if (dialog.exec() != QDialog::Accepted) {
+            return;
+        }
+        const QString saveTo = QFileDialog::getSaveFileName(this, tr("Save the column mapping"),
+                                                            QStringLiteral("mapping.json"), tr("Mappings (*.json)"));
+        QString error;
+        if (saveTo.isEmpty() || !dialog.save(saveTo, &error)) {
+            m_cleaning->setText(error);
+            return;
+        }
+        m_workbench.openData(QFileInfo(file).absolutePath(), saveTo);
     });
     connect(&m_workbench, &Workbench::dataChanged, this, &DataPanel::fill);
     connect(m_table, &QTableWidget::itemSelectionChanged, this, &DataPanel::redraw);
@@ -124,6 +151,30 @@ void DataPanel::fill() {
     }
     m_table->resizeColumnsToContents();
     m_table->blockSignals(false);
+    const auto& c = summary.cleaning;
+    // The chronological split of paper §IV.A over the rows in file order.
+    std::vector<std::size_t> rowsPerBatch;
+    for (const auto& b : si) {
+        rowsPerBatch.push_back(b.rows());
+    }
+    const auto split = data::chronologicalSplit(rowsPerBatch);
+    std::size_t train = 0, test = 0;
+    for (std::size_t i = 0; i < split.train.size(); ++i) {
+        train += split.train[i].size();
+        test += split.test[i].size();
+    }
+    m_cleaning->setText(tr("Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, "
+                           "missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 "
+                           "test.")
+                            .arg(c.kept)
+                            .arg(c.rows)
+                            .arg(c.droppedXhdt)
+                            .arg(c.droppedThdt)
+                            .arg(c.droppedFeed)
+                            .arg(c.droppedMissing)
+                            .arg(c.droppedImpossible)
+                            .arg(train)
+                            .arg(test));
     if (!si.empty()) {
         selectBatches({0});
     }

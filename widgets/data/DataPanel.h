@@ -3,6 +3,7 @@
 #include <QWidget>
 
 class QComboBox;
+class QLabel;
 class QTableWidget;
 
 namespace drytwin::widgets {
@@ -18,6 +19,8 @@ public:
     explicit DataPanel(Workbench& workbench, QWidget* parent = nullptr);
     PlotStack* plots() const { return m_plots; }
     QTableWidget* batchTable() const { return m_table; }
+    /// @brief The cleaning rules' counts and the split under the table.
+    QLabel* cleaningSummary() const { return m_cleaning; }
     /// @brief Selects batches by row (for tests and projects) and redraws.
     void selectBatches(const QList<int>& rows);
 
@@ -32,6 +35,7 @@ private:
     Workbench& m_workbench;
     QTableWidget* m_table = nullptr;
     QComboBox* m_arrangement = nullptr;
+    QLabel* m_cleaning = nullptr;
     PlotStack* m_plots = nullptr;
 };
 

@@ -16,7 +16,6 @@
 #include <cmath>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
-#include <qwt_plot_rescaler.h>
 #include <qwt_symbol.h>
 
 namespace drytwin::widgets {
@@ -51,10 +50,6 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent) : QWidget(pa
     m_eigen = new PlotStack;
     m_eigen->addPlot(tr("imaginary part"));
     m_eigen->setXTitle(tr("real part"));
-    // One unit on both axes: the unit circle stays a circle however the window is shaped.
-    auto* rescaler = new QwtPlotRescaler(m_eigen->plot(0)->canvas(), QwtPlot::xBottom, QwtPlotRescaler::Fixed);
-    rescaler->setAspectRatio(QwtPlot::yLeft, 1.0);
-    rescaler->setExpandingDirection(QwtPlotRescaler::ExpandBoth);
     m_skill = new PlotStack;
     m_skill->addPlot(tr("skill: MAE over the better reference [-]"));
     m_skill->setXTitle(tr("forecast horizon [steps of 1 s]"));
@@ -161,8 +156,11 @@ void ResidualPanel::showEvaluation() {
         after->setSymbol(new QwtSymbol(QwtSymbol::Ellipse, QBrush(QColor(31, 119, 180)), Qt::NoPen, QSize(4, 4)));
     }
     m_eigen->rescale();
-    m_eigen->plot(0)->setAxisScale(QwtPlot::xBottom, -1.1, 1.1);
-    m_eigen->plot(0)->setAxisScale(QwtPlot::yLeft, -1.1, 1.1);
+    // One unit the same length on both axes, so the unit circle is drawn as a circle.
+    const QWidget* canvas = m_eigen->plot(0)->canvas();
+    const double aspect = canvas->height() > 0 ? static_cast<double>(canvas->width()) / canvas->height() : 1.0;
+    m_eigen->plot(0)->setAxisScale(QwtPlot::xBottom, -1.15 * std::max(1.0, aspect), 1.15 * std::max(1.0, aspect));
+    m_eigen->plot(0)->setAxisScale(QwtPlot::yLeft, -1.15 * std::max(1.0, 1.0 / aspect), 1.15 * std::max(1.0, 1.0 / aspect));
     m_eigen->plot(0)->replot();
     // The curves start at 1 step; the open-loop PBM's skill (about 10) would flatten the rest.
     m_skill->plot(0)->setAxisScale(QwtPlot::xBottom, 1, 200);

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Screenshots of every tab of the real program under Xvfb, with the bundled demo loaded and the
+# main actions run (calibrate from the paper's parameters, train, discover, the paper-like MPC
+# scenario), in English and Simplified Chinese: docs/screenshots/<lang>/NN-<tab>.png.
+#   bash scripts/screenshots.sh [BUILD_DIR] [OUT_DIR]
+set -euo pipefail
+here="$(cd "$(dirname "$0")/.." && pwd)"
+build="${1:-$here/build}"
+out="${2:-$here/docs/screenshots}"
+drytwin="$build/app/drytwin"
+demo="$build/demo-data"
+if [ ! -d "$demo" ]; then
+  "$drytwin" generate --demo --seed 2025 --out "$demo" -q
+fi
+for lang in en zh_CN; do
+  rm -rf "$out/$lang"
+  xvfb-run -a -s "-screen 0 1280x800x24" "$drytwin" --lang "$lang" --data "$demo" \
+    --run calibrate,train,discover,mpc --screenshot "$out/$lang"
+done
+ls "$out"/*/
