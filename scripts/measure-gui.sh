@@ -8,7 +8,7 @@ here="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$here/build}"
 drytwin="$build/app/drytwin"
 demo="$build/demo-data"
-[ -d "$demo" ] || "$drytwin" generate --demo --seed 2025 --out "$demo" -q
+[ -d "$demo" ] || "$drytwin" -q generate --demo --seed 2025 --out "$demo"
 out="$(mktemp -d)"
 xvfb-run -a -s "-screen 0 1280x800x24" "$drytwin" --data "$demo" --screenshot "$out/plot.png" 2>&1 |
   grep "drawn"

@@ -10,7 +10,7 @@ out="${2:-$here/docs/screenshots}"
 drytwin="$build/app/drytwin"
 demo="$build/demo-data"
 if [ ! -d "$demo" ]; then
-  "$drytwin" generate --demo --seed 2025 --out "$demo" -q
+  "$drytwin" -q generate --demo --seed 2025 --out "$demo"
 fi
 for lang in en zh_CN; do
   rm -rf "$out/$lang"
