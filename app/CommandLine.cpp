@@ -44,15 +44,17 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     app.allow_extras(); // Qt's own GUI options (-platform, -style ...) pass through
     app.add_option("--data", m_impl->options.dataPath, "GUI: open this batch file or folder at start");
     app.add_flag("-q,--quiet", m_impl->quiet, "no progress on stderr");
-    app.add_option("--screenshot", m_impl->screenshotPath,
-                   "GUI: once the window's work is done, save it to PATH.png, or one PNG per tab into the folder "
-                   "PATH, then quit");
+    app.add_option(
+        "--screenshot", m_impl->screenshotPath,
+        "GUI: once the window's work is done, save it to PATH.png, or one PNG per tab into the folder "
+        "PATH, then quit");
     app.add_option("--project", m_impl->projectPath, "GUI: open this project file at start");
     app.add_option("--model", m_impl->guiModelPath, "GUI: open this model file with the data");
     app.add_option("--run", m_impl->runActions,
                    "GUI: after loading, run these actions in order, e.g. calibrate,train,discover,mpc");
-    app.add_option("--lang", m_impl->language, "GUI: language, en or zh_CN (default: as chosen before, else the "
-                                                "system's)");
+    app.add_option("--lang", m_impl->language,
+                   "GUI: language, en or zh_CN (default: as chosen before, else the "
+                   "system's)");
     app.require_subcommand(0, 1);
     app.footer("Exit codes: 0 done; 2 wrong usage; 3 bad input data or model file; 4 numerical failure; "
                "130 cancelled.");

@@ -28,7 +28,8 @@ void installTranslations(QApplication& app, const QString& language) {
     auto* ours = new QTranslator(&app);
     const QStringList places{QCoreApplication::applicationDirPath() + QStringLiteral("/../widgets"),
                              QCoreApplication::applicationDirPath() + QStringLiteral("/translations"),
-                             QCoreApplication::applicationDirPath() + QStringLiteral("/../share/drytwin/translations"),
+                             QCoreApplication::applicationDirPath() +
+                                 QStringLiteral("/../share/drytwin/translations"),
                              QStringLiteral(DRYTWIN_QM_DIR)};
     for (const auto& place : places) {
         if (ours->load(QStringLiteral("drytwin_") + language, place)) {
@@ -37,7 +38,8 @@ void installTranslations(QApplication& app, const QString& language) {
         }
     }
     auto* qt = new QTranslator(&app);
-    if (qt->load(QStringLiteral("qtbase_") + language, QLibraryInfo::location(QLibraryInfo::TranslationsPath))) {
+    if (qt->load(QStringLiteral("qtbase_") + language,
+                 QLibraryInfo::location(QLibraryInfo::TranslationsPath))) {
         app.installTranslator(qt);
     }
 }
@@ -46,9 +48,11 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
     const bool platformGiven =
         qEnvironmentVariableIsSet("QT_QPA_PLATFORM") ||
         std::any_of(argv, argv + argc, [](const char* a) { return std::strcmp(a, "-platform") == 0; });
-    if (!platformGiven && !qEnvironmentVariableIsSet("DISPLAY") && !qEnvironmentVariableIsSet("WAYLAND_DISPLAY")) {
-        std::fprintf(stderr, "drytwin: no display for the GUI (DISPLAY is not set); run a subcommand headless, "
-                             "e.g. drytwin pipeline --data DIR --out DIR, or see drytwin --help\n");
+    if (!platformGiven && !qEnvironmentVariableIsSet("DISPLAY") &&
+        !qEnvironmentVariableIsSet("WAYLAND_DISPLAY")) {
+        std::fprintf(stderr,
+                     "drytwin: no display for the GUI (DISPLAY is not set); run a subcommand headless, "
+                     "e.g. drytwin pipeline --data DIR --out DIR, or see drytwin --help\n");
         return 2;
     }
     // Must precede QApplication for the VTK view (PLATFORM-NOTES.md).
@@ -61,7 +65,8 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
         language = QSettings().value(QStringLiteral("language")).toString();
     }
     if (language.isEmpty()) {
-        language = QLocale::system().name().startsWith(QLatin1String("zh")) ? QStringLiteral("zh_CN") : QStringLiteral("en");
+        language = QLocale::system().name().startsWith(QLatin1String("zh")) ? QStringLiteral("zh_CN")
+                                                                            : QStringLiteral("en");
     }
     installTranslations(app, language);
     QElapsedTimer sinceStart;
@@ -85,7 +90,8 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
             int rc = 0;
             if (screenshot.endsWith(QLatin1String(".png"), Qt::CaseInsensitive)) {
                 const bool ok = window.grab().save(screenshot);
-                std::fprintf(stderr, ok ? "drytwin: saved %s\n" : "drytwin: could not save %s\n", qPrintable(screenshot));
+                std::fprintf(stderr, ok ? "drytwin: saved %s\n" : "drytwin: could not save %s\n",
+                             qPrintable(screenshot));
                 rc = ok ? 0 : 3;
             } else {
                 const QStringList files = window.saveTabScreenshots(screenshot);
@@ -117,11 +123,12 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
             QTimer::singleShot(500, &window, save);
         } else {
             QObject::connect(&window, &drytwin::widgets::MainWindow::simulationShown, &window, whenIdle);
-            QObject::connect(&window, &drytwin::widgets::MainWindow::loadFinished, &window, [whenIdle](bool ok) {
-                if (!ok) {
-                    whenIdle();
-                }
-            });
+            QObject::connect(&window, &drytwin::widgets::MainWindow::loadFinished, &window,
+                             [whenIdle](bool ok) {
+                                 if (!ok) {
+                                     whenIdle();
+                                 }
+                             });
         }
     }
     if (!projectPath.isEmpty()) {
@@ -137,7 +144,8 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
         window.openDataSet(dataPath);
     }
     if (!parsed.runActions.empty()) {
-        window.runAfterLoad(QString::fromStdString(parsed.runActions).split(QLatin1Char(','), Qt::SkipEmptyParts));
+        window.runAfterLoad(
+            QString::fromStdString(parsed.runActions).split(QLatin1Char(','), Qt::SkipEmptyParts));
     }
     return QApplication::exec();
 }

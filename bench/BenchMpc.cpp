@@ -56,11 +56,12 @@ int main(int argc, char** argv) {
             iae[name].push_back(run.metrics.iaePctS);
             viol[name].push_back(run.metrics.violationPct);
             if (i == 0 || run.kind != control::ControllerKind::Pi) {
-                std::printf("  %-20s IAE %7.1f  effort %7.1f  viol %5.1f %%  solve median %.2f ms, max %.2f ms, "
-                            "model median %.2f ms, fallbacks %d/%d, run %.1f s\n",
-                            name.c_str(), run.metrics.iaePctS, run.metrics.effortK2, run.metrics.violationPct,
-                            run.metrics.solveMsMedian, run.metrics.solveMsMax, run.metrics.modelMsMedian,
-                            run.metrics.fallbacks, run.metrics.decisions, run.elapsedSeconds);
+                std::printf(
+                    "  %-20s IAE %7.1f  effort %7.1f  viol %5.1f %%  solve median %.2f ms, max %.2f ms, "
+                    "model median %.2f ms, fallbacks %d/%d, run %.1f s\n",
+                    name.c_str(), run.metrics.iaePctS, run.metrics.effortK2, run.metrics.violationPct,
+                    run.metrics.solveMsMedian, run.metrics.solveMsMax, run.metrics.modelMsMedian,
+                    run.metrics.fallbacks, run.metrics.decisions, run.elapsedSeconds);
             }
         }
         if (m.count("pgrl_cc") && m.count("pbm")) {
@@ -68,7 +69,8 @@ int main(int argc, char** argv) {
             pgrlFewerViolations += m["pgrl_cc"].violationPct < m["pbm"].violationPct;
         }
         for (const auto& [name, x] : m) {
-            if (name != "pi" && m.count("pi") && x.iaePctS < m["pi"].iaePctS && x.violationPct <= m["pi"].violationPct) {
+            if (name != "pi" && m.count("pi") && x.iaePctS < m["pi"].iaePctS &&
+                x.violationPct <= m["pi"].violationPct) {
                 ++mpcBeatsPi;
                 break;
             }
@@ -88,8 +90,9 @@ int main(int argc, char** argv) {
         }
         std::printf("  %-20s IAE %7.1f (%5.1f)   violations %5.1f\n", name.c_str(), mean, std::sqrt(var), vm);
     }
-    std::printf("PGRL-CC lower IAE than PBM in %d of %d seeds, fewer violations in %d; an MPC beats PI on IAE "
-                "with no more violations in %d\n",
-                pgrlBeatsPbmIae, seeds, pgrlFewerViolations, mpcBeatsPi);
+    std::printf(
+        "PGRL-CC lower IAE than PBM in %d of %d seeds, fewer violations in %d; an MPC beats PI on IAE "
+        "with no more violations in %d\n",
+        pgrlBeatsPbmIae, seeds, pgrlFewerViolations, mpcBeatsPi);
     return 0;
 }

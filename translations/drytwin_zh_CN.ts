@@ -84,51 +84,56 @@
     </message>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
+        <source>parameter / its final value [-]</source>
+        <translation>参数 / 其最终值 [-]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="66"/>
         <source>share of the evaluation budget used [-]</source>
         <translation>已用评估预算比例 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="69"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="70"/>
         <source>Free parameters and their search bounds:</source>
         <translation>自由参数及其搜索范围：</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="94"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="95"/>
         <source>best loss so far</source>
         <translation>迄今最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="130"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="131"/>
         <source>Cannot calibrate: %1</source>
         <translation>无法标定：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="137"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="138"/>
         <source>Calibrating…</source>
         <translation>正在标定…</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="154"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="155"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="154"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="155"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="160"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="161"/>
         <source>%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. Intervals: %10.</source>
         <translation>%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口 MAE %6 → %7 % 湿基，%8 → %9 °C。区间：%10。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="180"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="188"/>
         <source>loss evaluations [-]</source>
         <translation>损失评估次数 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="181"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="189"/>
         <source>best loss</source>
         <translation>最优损失</translation>
     </message>
@@ -720,7 +725,7 @@
     <message>
         <location filename="../widgets/MainWindow.cpp" line="184"/>
         <location filename="../widgets/MainWindow.cpp" line="187"/>
-        <location filename="../widgets/MainWindow.cpp" line="374"/>
+        <location filename="../widgets/MainWindow.cpp" line="377"/>
         <source>Open project</source>
         <translation>打开项目</translation>
     </message>
@@ -800,23 +805,23 @@
         <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="297"/>
-        <location filename="../widgets/MainWindow.cpp" line="304"/>
+        <location filename="../widgets/MainWindow.cpp" line="299"/>
+        <location filename="../widgets/MainWindow.cpp" line="306"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="310"/>
+        <location filename="../widgets/MainWindow.cpp" line="312"/>
         <source>Project saved to %1</source>
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="318"/>
+        <location filename="../widgets/MainWindow.cpp" line="320"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="326"/>
+        <location filename="../widgets/MainWindow.cpp" line="328"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
@@ -1285,7 +1290,12 @@
         <translation>式 30 约束后的 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="169"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="176"/>
+        <source> Slowest contraction of A: %1 per step (half-life %2 s).</source>
+        <translation> A 的最慢收缩：每步 %1（半衰期 %2 s）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="180"/>
         <source>Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).</source>
         <translation>留出部分：%1 行。技能值低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
     </message>

@@ -260,6 +260,8 @@ ZH = {
     "°C": "°C",
     "Δx %1": "Δx %1",
     "Column mapping": "列映射",
+    "parameter / its final value [-]": "参数 / 其最终值 [-]",
+    " Slowest contraction of A: %1 per step (half-life %2 s).": " A 的最慢收缩：每步 %1（半衰期 %2 s）。",
     "Could not read the headers of %1.": "无法读取 %1 的表头。",
     "Choose, for each column DryTwin needs, the header your files use. The values must be in the unit shown; required columns are marked *.":
         "为 DryTwin 需要的每一列选择您文件中使用的表头。数值必须采用所示单位；必需的列标有 *。",

@@ -47,7 +47,8 @@ namespace drytwin::widgets {
 
 namespace {
 constexpr int kMaxRecent = 8;
-const char* kTabKeys[] = {"data", "model", "calibrate", "residual", "diagnostics", "discover", "mpc", "line3d"};
+const char* kTabKeys[] = {"data",        "model",    "calibrate", "residual",
+                          "diagnostics", "discover", "mpc",       "line3d"};
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
@@ -88,13 +89,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     auto& jobs = m_workbench.jobs();
     connect(&jobs, &JobRunner::busyChanged, this, &MainWindow::setBusy);
-    connect(&jobs, &JobRunner::progress, this, [this](JobId, const QString& stage, double fraction, const QString& detail) {
-        m_progressBar->setValue(static_cast<int>(fraction * 100));
-        m_progressBar->setFormat(QStringLiteral("%1 %p%").arg(stage));
-        if (!detail.isEmpty()) {
-            m_statusLabel->setText(QStringLiteral("%1: %2").arg(stage, detail));
-        }
-    });
+    connect(&jobs, &JobRunner::progress, this,
+            [this](JobId, const QString& stage, double fraction, const QString& detail) {
+                m_progressBar->setValue(static_cast<int>(fraction * 100));
+                m_progressBar->setFormat(QStringLiteral("%1 %p%").arg(stage));
+                if (!detail.isEmpty()) {
+                    m_statusLabel->setText(QStringLiteral("%1: %2").arg(stage, detail));
+                }
+            });
     connect(m_cancelButton, &QPushButton::clicked, &m_workbench, &Workbench::cancelAll);
     connect(&m_workbench, &Workbench::status, m_statusLabel, &QLabel::setText);
     connect(&m_workbench, &Workbench::dataChanged, this, [this] {
@@ -118,11 +120,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         }
     });
     connect(&m_workbench, &Workbench::dataLoadFailed, this, [this] { Q_EMIT loadFinished(false); });
-    connect(&m_workbench, &Workbench::failed, this, [this](const QString& action, const QString& message, bool cancelled) {
-        if (!cancelled) {
-            showError(action, message);
-        }
-    });
+    connect(&m_workbench, &Workbench::failed, this,
+            [this](const QString& action, const QString& message, bool cancelled) {
+                if (!cancelled) {
+                    showError(action, message);
+                }
+            });
     // One time cursor for the 3D view and every time plot.
     const auto shareTime = [this](double t) {
         for (auto* stack : {m_data->plots(), m_model->plots()}) {
@@ -154,7 +157,8 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 void MainWindow::createMenus() {
     auto* file = menuBar()->addMenu(tr("&File"));
     auto* openFile = file->addAction(tr("&Open batch file…"), this, [this] {
-        const QString p = QFileDialog::getOpenFileName(this, tr("Open batch file"), {}, tr("Batch files (*.csv)"));
+        const QString p =
+            QFileDialog::getOpenFileName(this, tr("Open batch file"), {}, tr("Batch files (*.csv)"));
         if (!p.isEmpty()) {
             openDataSet(p);
         }
@@ -167,7 +171,8 @@ void MainWindow::createMenus() {
         }
     });
     file->addAction(tr("Open &model…"), this, [this] {
-        const QString p = QFileDialog::getOpenFileName(this, tr("Open model"), {}, tr("Model files (*.json)"));
+        const QString p =
+            QFileDialog::getOpenFileName(this, tr("Open model"), {}, tr("Model files (*.json)"));
         if (!p.isEmpty()) {
             m_workbench.openModel(p);
         }
@@ -181,7 +186,8 @@ void MainWindow::createMenus() {
     });
     file->addSeparator();
     file->addAction(tr("Open &project…"), this, [this] {
-        const QString p = QFileDialog::getOpenFileName(this, tr("Open project"), {}, tr("DryTwin projects (*.drytwin)"));
+        const QString p =
+            QFileDialog::getOpenFileName(this, tr("Open project"), {}, tr("DryTwin projects (*.drytwin)"));
         QString error;
         if (!p.isEmpty() && !openProject(p, &error)) {
             showError(tr("Open project"), error);
@@ -200,8 +206,8 @@ void MainWindow::createMenus() {
     });
     save->setShortcut(QKeySequence::Save);
     file->addAction(tr("Save project as…"), this, [this] {
-        const QString p = QFileDialog::getSaveFileName(this, tr("Save project"), QStringLiteral("project.drytwin"),
-                                                       tr("DryTwin projects (*.drytwin)"));
+        const QString p = QFileDialog::getSaveFileName(
+            this, tr("Save project"), QStringLiteral("project.drytwin"), tr("DryTwin projects (*.drytwin)"));
         QString error;
         if (!p.isEmpty() && !saveProject(p, &error)) {
             showError(tr("Save project"), error);
@@ -217,8 +223,9 @@ void MainWindow::createMenus() {
     auto* language = view->addMenu(tr("&Language"));
     auto* group = new QActionGroup(this);
     const QString current = QSettings().value(QStringLiteral("language")).toString();
-    for (const auto& [code, name] : {std::pair<QString, QString>{QStringLiteral("en"), QStringLiteral("English")},
-                                     std::pair<QString, QString>{QStringLiteral("zh_CN"), QStringLiteral("简体中文")}}) {
+    for (const auto& [code, name] :
+         {std::pair<QString, QString>{QStringLiteral("en"), QStringLiteral("English")},
+          std::pair<QString, QString>{QStringLiteral("zh_CN"), QStringLiteral("简体中文")}}) {
         auto* a = language->addAction(name);
         a->setCheckable(true);
         a->setChecked(current == code || (current.isEmpty() && code == QLatin1String("en")));
@@ -229,7 +236,8 @@ void MainWindow::createMenus() {
         });
     }
     auto* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About DryTwin"), this, [this] { QMessageBox::about(this, tr("About DryTwin"), aboutText()); });
+    help->addAction(tr("&About DryTwin"), this,
+                    [this] { QMessageBox::about(this, tr("About DryTwin"), aboutText()); });
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
 }
 
@@ -238,7 +246,8 @@ QString MainWindow::aboutText() {
                       "implementing the PGRL-CC method.</p><table>")
                        .arg(QString::fromStdString(dryTwinVersion()));
     auto row = [&](const QString& name, const QString& version) {
-        html += QStringLiteral("<tr><td>%1</td><td>&nbsp;%2</td></tr>").arg(name.toHtmlEscaped(), version.toHtmlEscaped());
+        html += QStringLiteral("<tr><td>%1</td><td>&nbsp;%2</td></tr>")
+                    .arg(name.toHtmlEscaped(), version.toHtmlEscaped());
     };
     row(QStringLiteral("Qt"), QString::fromLatin1(qVersion()));
     row(QStringLiteral("Qwt"), QStringLiteral(QWT_VERSION_STR));
@@ -283,8 +292,11 @@ bool MainWindow::saveProject(const QString& path, QString* error) {
     o[QStringLiteral("format")] = QStringLiteral("drytwin-project");
     o[QStringLiteral("format_version")] = 1;
     const QDir base = QFileInfo(path).absoluteDir();
-    o[QStringLiteral("data_path")] = m_workbench.dataPath().isEmpty() ? QString() : base.relativeFilePath(m_workbench.dataPath());
+    o[QStringLiteral("data_path")] =
+        m_workbench.dataPath().isEmpty() ? QString() : base.relativeFilePath(m_workbench.dataPath());
     o[QStringLiteral("model_path")] = base.relativeFilePath(modelPath);
+    o[QStringLiteral("mapping_path")] =
+        m_workbench.mappingPath().isEmpty() ? QString() : base.relativeFilePath(m_workbench.mappingPath());
     o[QStringLiteral("tab")] = QString::fromLatin1(kTabKeys[std::max(0, m_tabs->currentIndex())]);
     QJsonArray batches;
     for (const auto& r : m_data->batchTable()->selectionModel()->selectedRows()) {
@@ -321,7 +333,8 @@ bool MainWindow::openProject(const QString& path, QString* error) {
     }
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &parseError);
-    if (doc.isNull() || !doc.isObject() || doc.object().value(QStringLiteral("format")).toString() != QLatin1String("drytwin-project")) {
+    if (doc.isNull() || !doc.isObject() ||
+        doc.object().value(QStringLiteral("format")).toString() != QLatin1String("drytwin-project")) {
         if (error) {
             *error = tr("%1 is not a DryTwin project (%2)").arg(path, parseError.errorString());
         }
@@ -343,8 +356,9 @@ bool MainWindow::openProject(const QString& path, QString* error) {
     if (!model.isEmpty() && QFileInfo::exists(base.filePath(model))) {
         m_pendingModel = base.filePath(model);
     }
+    const QString mapping = o.value(QStringLiteral("mapping_path")).toString();
     if (!data.isEmpty()) {
-        openDataSet(base.filePath(data));
+        m_workbench.openData(base.filePath(data), mapping.isEmpty() ? QString() : base.filePath(mapping));
     } else if (!m_pendingModel.isEmpty()) {
         m_workbench.openModel(m_pendingModel);
         m_pendingModel.clear();
@@ -411,7 +425,8 @@ QStringList MainWindow::saveTabScreenshots(const QString& folder) {
         for (int k = 0; k < 5; ++k) {
             QApplication::processEvents();
         }
-        const QString file = QDir(folder).filePath(QStringLiteral("%1-%2.png").arg(i + 1, 2, 10, QLatin1Char('0')).arg(QLatin1String(kTabKeys[i])));
+        const QString file = QDir(folder).filePath(
+            QStringLiteral("%1-%2.png").arg(i + 1, 2, 10, QLatin1Char('0')).arg(QLatin1String(kTabKeys[i])));
         if (grab().save(file)) {
             files << file;
         }

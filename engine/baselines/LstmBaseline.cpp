@@ -341,7 +341,8 @@ LstmBaseline::Follower::forecast(const std::vector<const data::SiBatch*>& candid
     torch::NoGradGuard noGrad;
     const auto& im = *m_model->m_impl;
     const auto count = static_cast<std::size_t>(std::max(0, horizon));
-    std::vector<residual::HybridPrediction> out(candidates.size(), residual::HybridPrediction::unknown(count));
+    std::vector<residual::HybridPrediction> out(candidates.size(),
+                                                residual::HybridPrediction::unknown(count));
     const std::size_t origin = m_state->last;
     if (candidates.empty() || count == 0 || origin == static_cast<std::size_t>(-1)) {
         return out;
@@ -353,12 +354,12 @@ LstmBaseline::Follower::forecast(const std::vector<const data::SiBatch*>& candid
     // Inputs of every candidate's rows origin+1 … origin+rows−1, batched over the candidates.
     std::vector<torch::Tensor> inputs;
     for (const auto* c : candidates) {
-        inputs.push_back(torch::nan_to_num(im.features(*c, origin + 1, origin + std::max<std::size_t>(rows, 1))
-                                               .to(torch::kFloat32),
-                                           0.0));
+        inputs.push_back(torch::nan_to_num(
+            im.features(*c, origin + 1, origin + std::max<std::size_t>(rows, 1)).to(torch::kFloat32), 0.0));
     }
     const auto nc = static_cast<long>(candidates.size());
-    const torch::Tensor f = rows > 1 ? torch::cat(inputs, 0) : torch::Tensor(); // [candidates, rows−1, inputs]
+    const torch::Tensor f =
+        rows > 1 ? torch::cat(inputs, 0) : torch::Tensor(); // [candidates, rows−1, inputs]
     torch::Tensor hState = m_state->h.expand({1, nc, im.options.hidden}).contiguous();
     torch::Tensor cState = m_state->c.expand({1, nc, im.options.hidden}).contiguous();
     torch::Tensor y = im.net->head->forward(hState.squeeze(0)); // row origin+1, standardised
@@ -378,8 +379,10 @@ LstmBaseline::Follower::forecast(const std::vector<const data::SiBatch*>& candid
     const auto a = all.accessor<double, 3>();
     for (std::size_t step = 0; step < rows; ++step) {
         for (long c = 0; c < nc; ++c) {
-            out[static_cast<std::size_t>(c)].xOutPct[step] = a[static_cast<long>(step)][c][0] * im.scale[6] + im.mean[6];
-            out[static_cast<std::size_t>(c)].tOutC[step] = a[static_cast<long>(step)][c][1] * im.scale[7] + im.mean[7];
+            out[static_cast<std::size_t>(c)].xOutPct[step] =
+                a[static_cast<long>(step)][c][0] * im.scale[6] + im.mean[6];
+            out[static_cast<std::size_t>(c)].tOutC[step] =
+                a[static_cast<long>(step)][c][1] * im.scale[7] + im.mean[7];
         }
     }
     return out;

@@ -54,19 +54,21 @@ plant::PlantDisturbances scenarioDisturbances(const Scenario& s, std::mt19937_64
         const double a = std::exp(-1.0 / tau);
         return Ou{a, s.fluctuation * sigma * std::sqrt(1 - a * a)};
     };
-    Ou feed = ou(120, 25), xIn = ou(900, 0.0045), tIn = ou(600, 0.8), tAmb = ou(1800, 0.6), rh = ou(1200, 0.03),
-       air = ou(60, 0.1);
+    Ou feed = ou(120, 25), xIn = ou(900, 0.0045), tIn = ou(600, 0.8), tAmb = ou(1800, 0.6),
+       rh = ou(1200, 0.03), air = ou(60, 0.1);
     Ou drift{std::exp(-1.0 / 2400), 0.05 * std::sqrt(1 - std::exp(-2.0 / 2400))};
     for (std::size_t k = 0; k < n; ++k) {
         const double t = static_cast<double>(k) - s.warmupS;
-        d.feedKgPerS[k] = units::kgPerHourToKgPerS(levelAt(s, ScenarioInput::Feed, s.feedKgH, t) + feed.next(rng, unit));
-        const double xWb = std::clamp(levelAt(s, ScenarioInput::InletMoisture, s.xInPct, t) / 100 + xIn.next(rng, unit),
-                                      0.12, 0.32);
+        d.feedKgPerS[k] =
+            units::kgPerHourToKgPerS(levelAt(s, ScenarioInput::Feed, s.feedKgH, t) + feed.next(rng, unit));
+        const double xWb = std::clamp(
+            levelAt(s, ScenarioInput::InletMoisture, s.xInPct, t) / 100 + xIn.next(rng, unit), 0.12, 0.32);
         d.xInDb[k] = xWb / (1 - xWb);
         d.tInK[k] = units::kKelvinOffset + s.tInC + tIn.next(rng, unit);
-        d.tAmbK[k] = units::kKelvinOffset + levelAt(s, ScenarioInput::Ambient, s.tAmbC, t) + tAmb.next(rng, unit);
-        d.rhAmb[k] =
-            std::clamp(levelAt(s, ScenarioInput::Humidity, s.rhPct, t) / 100 + rh.next(rng, unit), 0.05, 0.95);
+        d.tAmbK[k] =
+            units::kKelvinOffset + levelAt(s, ScenarioInput::Ambient, s.tAmbC, t) + tAmb.next(rng, unit);
+        d.rhAmb[k] = std::clamp(levelAt(s, ScenarioInput::Humidity, s.rhPct, t) / 100 + rh.next(rng, unit),
+                                0.05, 0.95);
         d.airSpeedMPerS[k] = s.airSpeedMPerS + air.next(rng, unit);
         if (s.unmeasuredDrift) {
             d.kDrift[k] = 1.0 + drift.next(rng, unit);
@@ -152,8 +154,8 @@ double plantGain(const Scenario& scenario, const plant::PlantOptions& plantOptio
 
 /// Forecasts of a model along a recorded run with the hot air that was applied, scored like
 /// the MPC would use them.
-ForecastCheck checkForecasts(OutletForecaster& model, const data::SiBatch& record, std::size_t from, int horizon,
-                             int stride) {
+ForecastCheck checkForecasts(OutletForecaster& model, const data::SiBatch& record, std::size_t from,
+                             int horizon, int stride) {
     ForecastCheck c;
     c.maePct.assign(c.horizonsS.size(), 0.0);
     std::vector<int> counts(c.horizonsS.size(), 0);
@@ -211,8 +213,8 @@ const char* controllerName(ControllerKind k) {
 }
 
 std::optional<ControllerKind> controllerByName(const std::string& name) {
-    for (auto k : {ControllerKind::Pbm, ControllerKind::ExtInputResidual, ControllerKind::Lstm, ControllerKind::PgrlCc,
-                   ControllerKind::Pi}) {
+    for (auto k : {ControllerKind::Pbm, ControllerKind::ExtInputResidual, ControllerKind::Lstm,
+                   ControllerKind::PgrlCc, ControllerKind::Pi}) {
         if (name == controllerName(k)) {
             return k;
         }
@@ -243,7 +245,8 @@ plant::PlantOptions scenarioPlantOptions(const Scenario& s) {
     plant::PlantOptions o;
     o.seed = s.seed;
     o.batches = 1;
-    o.samples = std::max(200, s.warmupS + s.lengthS + 1); // the plant's own lower limit; the line runs as long as the scenario
+    o.samples = std::max(200, s.warmupS + s.lengthS +
+                                  1); // the plant's own lower limit; the line runs as long as the scenario
     o.noiseScale = s.noiseScale;
     o.unmeasuredDrift = s.unmeasuredDrift;
     o.targetXOutPct = s.setpointPct;
@@ -308,7 +311,8 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         std::mt19937_64 disturbanceRng(scenario.seed);
         plant::PlantRandom random(scenario.seed + 1);
         const double initialSp = units::kKelvinOffset + 170 + 8.0 * (scenario.xInPct - 22.0);
-        plant::PlantLine line(plantOptions, scenarioDisturbances(scenario, disturbanceRng), initialSp, random);
+        plant::PlantLine line(plantOptions, scenarioDisturbances(scenario, disturbanceRng), initialSp,
+                              random);
         plant::PlantPiController pi;
         data::SiBatch record;
         record.id = scenario.name;
@@ -326,8 +330,8 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
             if (kind == ControllerKind::Pi || k < warm) {
                 sp = pi.next(s.xOutPct, s.xInTruePct, target);
             } else if ((k - warm) % static_cast<std::size_t>(scenario.controlIntervalS) == 0) {
-                const MpcDecision d =
-                    mpc->decide(DecisionPoint{&record, k}, lastSp, target, scenario.bandPct, scenario.controlIntervalS);
+                const MpcDecision d = mpc->decide(DecisionPoint{&record, k}, lastSp, target, scenario.bandPct,
+                                                  scenario.controlIntervalS);
                 sp = d.setpointK;
                 ++run.metrics.decisions;
                 solveMs.push_back(1e3 * d.solveSeconds);
@@ -339,7 +343,8 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
                     ++run.metrics.fallbacks;
                     run.metrics.lastFallbackReason = d.fallbackReason;
                 }
-                if (nextSnapshot < snapshotTimes.size() && t >= snapshotTimes[nextSnapshot] && !d.predictedXPct.empty()) {
+                if (nextSnapshot < snapshotTimes.size() && t >= snapshotTimes[nextSnapshot] &&
+                    !d.predictedXPct.empty()) {
                     run.predictions.push_back({t, d.predictedXPct});
                     while (nextSnapshot < snapshotTimes.size() && t >= snapshotTimes[nextSnapshot]) {
                         ++nextSnapshot;
@@ -357,21 +362,22 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
             line.apply(sp);
             appendInputs(record, line.record(), k);
             lastSp = sp;
-            if (k % 50 == 0 &&
-                reportProgress(progress, "mpc",
-                               (static_cast<double>(c) + static_cast<double>(k) / static_cast<double>(total)) /
-                                   static_cast<double>(options.controllers.size()),
-                               std::string(controllerName(kind)) + ", step " + std::to_string(k) + "/" +
-                                   std::to_string(total))) {
+            if (k % 50 == 0 && reportProgress(progress, "mpc",
+                                              (static_cast<double>(c) +
+                                               static_cast<double>(k) / static_cast<double>(total)) /
+                                                  static_cast<double>(options.controllers.size()),
+                                              std::string(controllerName(kind)) + ", step " +
+                                                  std::to_string(k) + "/" + std::to_string(total))) {
                 stopped = true;
                 break;
             }
         }
         // Metrics over the scored samples.
         // Moves in °C equal moves in K.
-        const double beforeC = warm > 0 ? units::kelvinToCelsius(line.record().tHotSpK[warm - 1]) : units::kelvinToCelsius(initialSp);
-        const ClosedLoopMetrics m =
-            trajectoryMetrics(run.xOutTruePct, run.setpointPct, run.hotAirSetpointC, scenario.bandPct, beforeC);
+        const double beforeC = warm > 0 ? units::kelvinToCelsius(line.record().tHotSpK[warm - 1])
+                                        : units::kelvinToCelsius(initialSp);
+        const ClosedLoopMetrics m = trajectoryMetrics(run.xOutTruePct, run.setpointPct, run.hotAirSetpointC,
+                                                      scenario.bandPct, beforeC);
         run.metrics.iaePctS = m.iaePctS;
         run.metrics.effortK2 = m.effortK2;
         run.metrics.violationPct = m.violationPct;
@@ -383,10 +389,12 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         if (kind == ControllerKind::Pi && !stopped) {
             piRecord = record;
         }
-        run.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
+        run.elapsedSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
         result.runs.push_back(std::move(run));
     }
-    result.plantGainPctPerK = plantGain(scenario, plantOptions, units::kKelvinOffset + 170 + 8.0 * (scenario.xInPct - 22.0));
+    result.plantGainPctPerK =
+        plantGain(scenario, plantOptions, units::kKelvinOffset + 170 + 8.0 * (scenario.xInPct - 22.0));
     // The model error behind the ranking: each MPC's model forecasting the PI run.
     for (auto& run : result.runs) {
         if (stopped || !piRecord || !run.ran || run.kind == ControllerKind::Pi) {
@@ -400,7 +408,8 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
             stopped = true;
         }
     }
-    result.ending.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.ending.elapsedSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (stopped) {
         result.ending.termination = Termination::StoppedKeptBest;
         result.ending.message = "stopped by the user; the runs so far are kept, the last one is partial";

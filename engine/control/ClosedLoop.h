@@ -22,12 +22,12 @@ std::optional<ControllerKind> controllerByName(const std::string& name);
 
 /// @brief Closed-loop metrics over the scored part (paper Table 2).
 struct ClosedLoopMetrics {
-    double iaePctS = 0;       ///< Σ |X_out − setpoint| · 1 s over the product's true outlet moisture [%·s]
-    double effortK2 = 0;      ///< Σ Δu² of the hot-air setpoint, one term per sample [K²]
+    double iaePctS = 0;  ///< Σ |X_out − setpoint| · 1 s over the product's true outlet moisture [%·s]
+    double effortK2 = 0; ///< Σ Δu² of the hot-air setpoint, one term per sample [K²]
     double violationPct = 0;  ///< share of samples with the true X_out outside setpoint ± band [%]
     double solveMsMedian = 0; ///< Ipopt time per decision [ms]
     double solveMsMax = 0;
-    double modelMsMedian = 0; ///< forecasts and linearisation per decision [ms]
+    double modelMsMedian = 0;     ///< forecasts and linearisation per decision [ms]
     double gainPctPerKMedian = 0; ///< the model's steady gain dX_out/dT_hot,sp per decision [% wb/K]
     int decisions = 0;
     int fallbacks = 0;
@@ -37,7 +37,8 @@ struct ClosedLoopMetrics {
 /// @brief The computed metrics of a trajectory: X_out true [% wb], setpoint [% wb] and the
 /// applied hot-air setpoint [K] per sample (1 s), the band half-width, and the setpoint applied
 /// before the first sample (for the first Δu).
-ClosedLoopMetrics trajectoryMetrics(const std::vector<double>& xOutPct, const std::vector<double>& setpointPct,
+ClosedLoopMetrics trajectoryMetrics(const std::vector<double>& xOutPct,
+                                    const std::vector<double>& setpointPct,
                                     const std::vector<double>& hotAirSetpointK, double bandPct,
                                     double setpointBeforeK);
 
@@ -52,14 +53,14 @@ struct ForecastCheck {
 
 /// @brief The horizon a controller predicted at one decision.
 struct PredictionSnapshot {
-    double atS = 0;                 ///< time of the decision in the scored part
-    std::vector<double> xOutPct;    ///< rows at … at+horizon
+    double atS = 0;              ///< time of the decision in the scored part
+    std::vector<double> xOutPct; ///< rows at … at+horizon
 };
 
 /// @brief One controller's run.
 struct ControllerRun {
     ControllerKind kind = ControllerKind::Pi;
-    bool ran = false;               ///< false when the model holds no such prediction model
+    bool ran = false; ///< false when the model holds no such prediction model
     std::string skippedReason;
     ClosedLoopMetrics metrics;
     // Trajectories of the scored part, one entry per second.
@@ -72,7 +73,8 @@ struct ControllerRun {
 struct ClosedLoopOptions {
     MpcSettings mpc;
     std::vector<ControllerKind> controllers = {ControllerKind::Pbm, ControllerKind::ExtInputResidual,
-                                               ControllerKind::Lstm, ControllerKind::PgrlCc, ControllerKind::Pi};
+                                               ControllerKind::Lstm, ControllerKind::PgrlCc,
+                                               ControllerKind::Pi};
     /// Times in the scored part [s] whose predicted horizons are kept for plots (empty: one
     /// minute after each setpoint step and at the start).
     std::vector<double> predictionTimesS;

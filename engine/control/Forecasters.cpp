@@ -19,13 +19,13 @@ std::size_t pbmLead(const properties::ParameterSet& p) {
 
 class PbmForecaster : public OutletForecaster {
 public:
-    PbmForecaster(properties::ParameterSet p, physics::SimulationOptions o) : m_p(std::move(p)), m_o(std::move(o)) {}
+    PbmForecaster(properties::ParameterSet p, physics::SimulationOptions o)
+        : m_p(std::move(p)), m_o(std::move(o)) {}
 
     std::size_t historyNeeded() const override { return pbmLead(m_p); }
 
-    Expected<std::vector<std::vector<double>>> forecast(const DecisionPoint& at,
-                                                        const std::vector<std::vector<double>>& plans,
-                                                        int horizon) override {
+    Expected<std::vector<std::vector<double>>>
+    forecast(const DecisionPoint& at, const std::vector<std::vector<double>>& plans, int horizon) override {
         const std::size_t lead = pbmLead(m_p);
         const std::size_t from = at.now > lead ? at.now - lead : 0;
         std::vector<std::size_t> rows;
@@ -61,9 +61,8 @@ public:
 
     std::size_t historyNeeded() const override { return pbmLead(m_p) + lags(); }
 
-    Expected<std::vector<std::vector<double>>> forecast(const DecisionPoint& at,
-                                                        const std::vector<std::vector<double>>& plans,
-                                                        int horizon) override {
+    Expected<std::vector<std::vector<double>>>
+    forecast(const DecisionPoint& at, const std::vector<std::vector<double>>& plans, int horizon) override {
         // The view starts where the residual model's lags (and the PBM-change features) begin;
         // the PBM's input history reaches a transport delay further back.
         const std::size_t back = lags();
@@ -117,9 +116,8 @@ public:
 
     std::size_t historyNeeded() const override { return 2; }
 
-    Expected<std::vector<std::vector<double>>> forecast(const DecisionPoint& at,
-                                                        const std::vector<std::vector<double>>& plans,
-                                                        int horizon) override {
+    Expected<std::vector<std::vector<double>>>
+    forecast(const DecisionPoint& at, const std::vector<std::vector<double>>& plans, int horizon) override {
         if (at.now < 1) {
             return Error{ErrorKind::Numerical, "LSTM forecast", "needs at least one recorded row"};
         }
@@ -149,7 +147,8 @@ private:
 
 } // namespace
 
-data::SiBatch planWindow(const DecisionPoint& at, std::size_t from, const std::vector<double>& plan, int horizon) {
+data::SiBatch planWindow(const DecisionPoint& at, std::size_t from, const std::vector<double>& plan,
+                         int horizon) {
     const data::SiBatch& r = *at.record;
     const std::size_t end = at.now + static_cast<std::size_t>(horizon) + 1;
     const std::size_t known = std::min(at.now, r.tHotK.size()); // rows with recorded inputs
@@ -158,8 +157,8 @@ data::SiBatch planWindow(const DecisionPoint& at, std::size_t from, const std::v
     w.hasXHdt = r.hasXHdt;
     w.hasTHdt = r.hasTHdt;
     const std::size_t n = end - from;
-    for (auto* v : {&w.timeS, &w.tHotSpK, &w.tHotK, &w.airSpeedMPerS, &w.feedKgPerS, &w.xInDb, &w.tInK, &w.tAmbK,
-                    &w.rhAmb, &w.xHdtDb, &w.tHdtK, &w.xOutDb, &w.tOutK}) {
+    for (auto* v : {&w.timeS, &w.tHotSpK, &w.tHotK, &w.airSpeedMPerS, &w.feedKgPerS, &w.xInDb, &w.tInK,
+                    &w.tAmbK, &w.rhAmb, &w.xHdtDb, &w.tHdtK, &w.xOutDb, &w.tOutK}) {
         v->assign(n, kNaN);
     }
     w.keep.assign(n, 1);
@@ -191,7 +190,8 @@ data::SiBatch planWindow(const DecisionPoint& at, std::size_t from, const std::v
     return w;
 }
 
-std::unique_ptr<OutletForecaster> pbmForecaster(properties::ParameterSet params, physics::SimulationOptions options) {
+std::unique_ptr<OutletForecaster> pbmForecaster(properties::ParameterSet params,
+                                                physics::SimulationOptions options) {
     return std::make_unique<PbmForecaster>(std::move(params), std::move(options));
 }
 

@@ -37,7 +37,8 @@ public:
 };
 
 /// @brief The calibrated PBM alone (Eqs. 1–19).
-std::unique_ptr<OutletForecaster> pbmForecaster(properties::ParameterSet params, physics::SimulationOptions options);
+std::unique_ptr<OutletForecaster> pbmForecaster(properties::ParameterSet params,
+                                                physics::SimulationOptions options);
 /// @brief PBM + a residual model (PGRL-CC or the external-input baseline), Eq. 21.
 std::unique_ptr<OutletForecaster> residualForecaster(properties::ParameterSet params,
                                                      physics::SimulationOptions options,

@@ -16,27 +16,32 @@ constexpr double kInfinity = 1e19; // Ipopt's "no bound"
 Status MpcSettings::validate() const {
     if (horizonS < 10 || horizonS > 1200 || blockStartsS.empty() || blockStartsS.front() != 0 ||
         outputStrideS < 1 || outputStrideS > horizonS) {
-        return Error{ErrorKind::Usage, "MPC settings",
-                     "need a horizon in [10, 1200] s, blocks starting at 0 and an output stride within the horizon"};
+        return Error{
+            ErrorKind::Usage, "MPC settings",
+            "need a horizon in [10, 1200] s, blocks starting at 0 and an output stride within the horizon"};
     }
     for (std::size_t j = 1; j < blockStartsS.size(); ++j) {
         if (blockStartsS[j] <= blockStartsS[j - 1] || blockStartsS[j] >= horizonS) {
-            return Error{ErrorKind::Usage, "MPC settings", "block starts must increase and lie within the horizon"};
+            return Error{ErrorKind::Usage, "MPC settings",
+                         "block starts must increase and lie within the horizon"};
         }
     }
     if (!(trackingWeight > 0) || !(moveWeight >= 0) || !(violationLinear >= 0) || !(violationQuadratic > 0) ||
-        !(setpointLowC < setpointHighC) || !(rateLimitKPerS > 0) || !(perturbationK > 0) || maxIterations < 1) {
-        return Error{ErrorKind::Usage, "MPC settings", "weights must be positive and the setpoint bounds ordered"};
+        !(setpointLowC < setpointHighC) || !(rateLimitKPerS > 0) || !(perturbationK > 0) ||
+        maxIterations < 1) {
+        return Error{ErrorKind::Usage, "MPC settings",
+                     "weights must be positive and the setpoint bounds ordered"};
     }
     return {};
 }
 
-MpcController::MpcController(std::unique_ptr<OutletForecaster> model, MpcSettings settings, double actuatorTauS)
+MpcController::MpcController(std::unique_ptr<OutletForecaster> model, MpcSettings settings,
+                             double actuatorTauS)
     : m_model(std::move(model)), m_settings(std::move(settings)), m_actuatorTauS(actuatorTauS),
       m_solver(m_settings.maxIterations) {}
 
-MpcDecision MpcController::decide(const DecisionPoint& at, double lastSetpointK, double targetPct, double bandPct,
-                                  int controlIntervalS) {
+MpcDecision MpcController::decide(const DecisionPoint& at, double lastSetpointK, double targetPct,
+                                  double bandPct, int controlIntervalS) {
     const auto& s = m_settings;
     const auto t0 = std::chrono::steady_clock::now();
     const int n = s.horizonS;
@@ -110,7 +115,8 @@ MpcDecision MpcController::decide(const DecisionPoint& at, double lastSetpointK,
     }
     // Output points: every stride-th row the moves can reach.
     std::vector<std::size_t> points;
-    for (std::size_t i = static_cast<std::size_t>(s.outputStrideS); i < rows; i += static_cast<std::size_t>(s.outputStrideS)) {
+    for (std::size_t i = static_cast<std::size_t>(s.outputStrideS); i < rows;
+         i += static_cast<std::size_t>(s.outputStrideS)) {
         if (std::abs(response[i]) > 0.02 * gainMax) {
             points.push_back(i);
         }
@@ -135,10 +141,12 @@ MpcDecision MpcController::decide(const DecisionPoint& at, double lastSetpointK,
         const auto start = static_cast<std::size_t>(s.blockStartsS[static_cast<std::size_t>(j)]);
         nominalLevel(j) = nominal[start];
         const double before =
-            j == 0 ? lastSetpointK : nominal[static_cast<std::size_t>(s.blockStartsS[static_cast<std::size_t>(j) - 1])];
+            j == 0 ? lastSetpointK
+                   : nominal[static_cast<std::size_t>(s.blockStartsS[static_cast<std::size_t>(j) - 1])];
         nominalMove(j) = nominal[start] - before;
         const double span = j == 0 ? std::max(1, controlIntervalS)
-                                   : s.blockStartsS[static_cast<std::size_t>(j)] - s.blockStartsS[static_cast<std::size_t>(j) - 1];
+                                   : s.blockStartsS[static_cast<std::size_t>(j)] -
+                                         s.blockStartsS[static_cast<std::size_t>(j) - 1];
         moveLimit(j) = s.rateLimitKPerS * span;
     }
     // QP in x = [δ (block deviations), slack per output point].
@@ -147,8 +155,8 @@ MpcDecision MpcController::decide(const DecisionPoint& at, double lastSetpointK,
     qp.h = Eigen::MatrixXd::Zero(nx, nx);
     qp.f = Eigen::VectorXd::Zero(nx);
     const Eigen::VectorXd trackErr = free.array() - targetPct;
-    qp.h.topLeftCorner(blocks, blocks) =
-        2 * s.trackingWeight * g.transpose() * g + 2 * s.moveWeight * Eigen::MatrixXd::Identity(blocks, blocks);
+    qp.h.topLeftCorner(blocks, blocks) = 2 * s.trackingWeight * g.transpose() * g +
+                                         2 * s.moveWeight * Eigen::MatrixXd::Identity(blocks, blocks);
     qp.f.head(blocks) = 2 * s.trackingWeight * g.transpose() * trackErr + 2 * s.moveWeight * nominalMove;
     qp.h.bottomRightCorner(np, np) = 2 * s.violationQuadratic * Eigen::MatrixXd::Identity(np, np);
     qp.f.tail(np).setConstant(s.violationLinear);
@@ -199,7 +207,8 @@ MpcDecision MpcController::decide(const DecisionPoint& at, double lastSetpointK,
     double shiftSum = 0;
     std::size_t jNext = 0;
     for (std::size_t m = 0; m < rows; ++m) {
-        while (jNext < static_cast<std::size_t>(blocks) && static_cast<std::size_t>(s.blockStartsS[jNext]) <= m) {
+        while (jNext < static_cast<std::size_t>(blocks) &&
+               static_cast<std::size_t>(s.blockStartsS[jNext]) <= m) {
             shiftSum += sol.x(static_cast<Eigen::Index>(jNext));
             ++jNext;
         }

@@ -16,26 +16,26 @@ struct MpcSettings {
     int horizonS = 180;
     /// Starts of the blocks the setpoint moves in [s from now]; held after the last.
     std::vector<int> blockStartsS = {0, 10, 30, 60};
-    int outputStrideS = 5;          ///< the tracking cost reads every this many seconds of the horizon
-    double trackingWeight = 1.0;    ///< per (% wb)² at each output point
-    double moveWeight = 0.01;       ///< per K² of setpoint move
-    double violationLinear = 20.0;  ///< per % wb outside the band at each output point
+    int outputStrideS = 5;         ///< the tracking cost reads every this many seconds of the horizon
+    double trackingWeight = 1.0;   ///< per (% wb)² at each output point
+    double moveWeight = 0.01;      ///< per K² of setpoint move
+    double violationLinear = 20.0; ///< per % wb outside the band at each output point
     double violationQuadratic = 200.0;
-    double setpointLowC = 140;      ///< hard bounds on the hot-air setpoint [°C]
+    double setpointLowC = 140; ///< hard bounds on the hot-air setpoint [°C]
     double setpointHighC = 200;
-    double rateLimitKPerS = 1.0;    ///< hard limit on setpoint moves [K/s]
-    double perturbationK = 2.0;     ///< size of the step that linearises the model [K]
-    int maxIterations = 100;        ///< Ipopt's limit (a test sets 1 to force the fallback)
+    double rateLimitKPerS = 1.0; ///< hard limit on setpoint moves [K/s]
+    double perturbationK = 2.0;  ///< size of the step that linearises the model [K]
+    int maxIterations = 100;     ///< Ipopt's limit (a test sets 1 to force the fallback)
     Status validate() const;
 };
 
 /// @brief One decision and how it was reached.
 struct MpcDecision {
     double setpointK = 0;
-    bool fallback = false;    ///< the solve or the forecast failed: the previous plan shifted (or a hold)
+    bool fallback = false; ///< the solve or the forecast failed: the previous plan shifted (or a hold)
     std::string fallbackReason;
-    double solveSeconds = 0;  ///< Ipopt alone
-    double modelSeconds = 0;  ///< forecasts and linearisation
+    double solveSeconds = 0; ///< Ipopt alone
+    double modelSeconds = 0; ///< forecasts and linearisation
     int iterations = 0;
     /// X_out [% wb] the controller expects at rows now … now+horizon under the plan it chose
     /// (linearised, with the output-disturbance update); empty after a failed forecast.

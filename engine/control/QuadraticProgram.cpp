@@ -96,8 +96,8 @@ public:
         }
         return true;
     }
-    bool eval_h(Index n, const Number*, bool, Number objFactor, Index, const Number*, bool, Index, Index* rows,
-                Index* cols, Number* values) override {
+    bool eval_h(Index n, const Number*, bool, Number objFactor, Index, const Number*, bool, Index,
+                Index* rows, Index* cols, Number* values) override {
         Index k = 0;
         for (Index i = 0; i < n; ++i) {
             for (Index j = 0; j <= i; ++j, ++k) {

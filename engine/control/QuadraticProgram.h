@@ -19,10 +19,10 @@ struct DenseQp {
 struct QpSolution {
     Eigen::VectorXd x;
     double objective = 0;
-    bool solved = false;  ///< Ipopt reported an optimal (or acceptable) point
-    std::string status;   ///< Ipopt's return status in words
+    bool solved = false; ///< Ipopt reported an optimal (or acceptable) point
+    std::string status;  ///< Ipopt's return status in words
     int iterations = 0;
-    double seconds = 0;   ///< wall time of the solve
+    double seconds = 0; ///< wall time of the solve
 };
 
 /// @brief Solves a sequence of QPs of the same shape with Ipopt (interior point, MUMPS),

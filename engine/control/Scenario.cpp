@@ -45,7 +45,8 @@ struct Reader {
     const std::string& text;
     const std::string& place;
 
-    Error error(const std::string& section, int index, const std::string& key, const std::string& reason) const {
+    Error error(const std::string& section, int index, const std::string& key,
+                const std::string& reason) const {
         const std::string where = section.empty() ? key : section + "[" + std::to_string(index) + "]." + key;
         return Error{ErrorKind::BadInput, place + ":" + std::to_string(lineOf(text, section, index, key)),
                      where + ": " + reason};
@@ -75,7 +76,8 @@ struct Reader {
         return x;
     }
 
-    Status onlyKeys(const json& j, const std::set<std::string>& known, const std::string& section, int index) const {
+    Status onlyKeys(const json& j, const std::set<std::string>& known, const std::string& section,
+                    int index) const {
         for (auto it = j.begin(); it != j.end(); ++it) {
             if (!known.count(it.key())) {
                 return error(section, index, it.key(), "unknown key (docs/mpc.md lists the schema)");
@@ -85,13 +87,13 @@ struct Reader {
     }
 };
 
-#define DT_TRY_ASSIGN(target, expr)                                                                            \
-    do {                                                                                                       \
-        auto dtValue = (expr);                                                                                 \
-        if (!dtValue) {                                                                                        \
-            return dtValue.error();                                                                            \
-        }                                                                                                      \
-        (target) = *dtValue;                                                                                   \
+#define DT_TRY_ASSIGN(target, expr)                                                                          \
+    do {                                                                                                     \
+        auto dtValue = (expr);                                                                               \
+        if (!dtValue) {                                                                                      \
+            return dtValue.error();                                                                          \
+        }                                                                                                    \
+        (target) = *dtValue;                                                                                 \
     } while (0)
 
 } // namespace
@@ -108,7 +110,8 @@ double Scenario::setpointAt(double t) const {
 
 Status Scenario::validate() const {
     if (lengthS < 10 || lengthS > 200000 || warmupS < 0 || warmupS > 20000) {
-        return Error{ErrorKind::BadInput, "scenario " + name, "length_s must lie in [10, 200000], warmup_s in [0, 20000]"};
+        return Error{ErrorKind::BadInput, "scenario " + name,
+                     "length_s must lie in [10, 200000], warmup_s in [0, 20000]"};
     }
     if (controlIntervalS < 1 || controlIntervalS > 60) {
         return Error{ErrorKind::BadInput, "scenario " + name, "control_interval_s must lie in [1, 60]"};
@@ -126,7 +129,8 @@ Expected<Scenario> parseScenario(const std::string& text, const std::string& pla
     try {
         j = json::parse(text);
     } catch (const json::parse_error& e) {
-        return Error{ErrorKind::BadInput, place + ":" + std::to_string(lineAt(text, e.byte > 0 ? e.byte - 1 : 0)),
+        return Error{ErrorKind::BadInput,
+                     place + ":" + std::to_string(lineAt(text, e.byte > 0 ? e.byte - 1 : 0)),
                      "not valid JSON (" + std::string(e.what()) + ")"};
     }
     if (!j.is_object()) {
@@ -174,10 +178,9 @@ Expected<Scenario> parseScenario(const std::string& text, const std::string& pla
         if (!in.is_object()) {
             return r.error({}, 0, "initial", "must be an object");
         }
-        if (auto st = r.onlyKeys(in,
-                                 {"setpoint_pct", "feed_kg_h", "x_in_pct", "t_in_c", "t_amb_c", "rh_pct",
-                                  "air_speed_m_s"},
-                                 {}, 0);
+        if (auto st = r.onlyKeys(
+                in, {"setpoint_pct", "feed_kg_h", "x_in_pct", "t_in_c", "t_amb_c", "rh_pct", "air_speed_m_s"},
+                {}, 0);
             !st) {
             return st.error();
         }
@@ -270,7 +273,8 @@ Expected<Scenario> parseScenario(const std::string& text, const std::string& pla
             const std::string name = e.value("mechanism", std::string());
             const auto id = plant::mechanismByName(name);
             if (!id) {
-                return r.error("mechanisms", i, "mechanism", "\"" + name + "\" is not a mechanism of CONTRACT.md §4");
+                return r.error("mechanisms", i, "mechanism",
+                               "\"" + name + "\" is not a mechanism of CONTRACT.md §4");
             }
             m.mechanism = *id;
             const auto& inf = plant::info(*id);
@@ -294,7 +298,8 @@ Expected<Scenario> parseScenario(const std::string& text, const std::string& pla
 Expected<Scenario> loadScenario(const std::string& path) {
     std::ifstream f(path, std::ios::binary);
     if (!f) {
-        return Error{ErrorKind::BadInput, path, "cannot open the scenario file", ErrorCode::FileNotFound, {path}};
+        return Error{
+            ErrorKind::BadInput, path, "cannot open the scenario file", ErrorCode::FileNotFound, {path}};
     }
     std::ostringstream ss;
     ss << f.rdbuf();

@@ -40,19 +40,19 @@ struct Scenario {
     std::string name;
     std::string description;
     unsigned seed = 1;
-    int lengthS = 1000;         ///< scored steps (1 s each)
-    int warmupS = 300;          ///< PI warm-up before the scored part (gives models their history)
-    int controlIntervalS = 2;   ///< an MPC decides every this many seconds and holds in between
-    double setpointPct = 13.0;  ///< initial outlet-moisture setpoint [% wb]
-    double bandPct = 0.5;       ///< the product is in specification within setpoint ± band [% wb]
-    double feedKgH = 6200;      ///< initial levels of the measured inputs
+    int lengthS = 1000;        ///< scored steps (1 s each)
+    int warmupS = 300;         ///< PI warm-up before the scored part (gives models their history)
+    int controlIntervalS = 2;  ///< an MPC decides every this many seconds and holds in between
+    double setpointPct = 13.0; ///< initial outlet-moisture setpoint [% wb]
+    double bandPct = 0.5;      ///< the product is in specification within setpoint ± band [% wb]
+    double feedKgH = 6200;     ///< initial levels of the measured inputs
     double xInPct = 22.0;
     double tInC = 25.0;
     double tAmbC = 22.0;
     double rhPct = 50.0;
     double airSpeedMPerS = 16.0;
-    double fluctuation = 1.0;   ///< scale of the inputs' random fluctuations (0: none)
-    double noiseScale = 1.0;    ///< scale of the instruments' noise (0: ideal)
+    double fluctuation = 1.0; ///< scale of the inputs' random fluctuations (0: none)
+    double noiseScale = 1.0;  ///< scale of the instruments' noise (0: ideal)
     bool unmeasuredDrift = true;
     std::vector<SetpointStep> setpointSteps;
     std::vector<InputChange> inputChanges;

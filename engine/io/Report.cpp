@@ -40,21 +40,25 @@ std::string mpcSection(const json& m) {
     const auto& sc = m["scenario"];
     r += "Scenario `" + sc.value("name", std::string()) + "`: " + std::to_string(m.value("steps", 0)) +
          " steps of 1 s after " + std::to_string(sc.value("warmup_s", 0)) +
-         " s under the plant's PI loop; an MPC decides every " + std::to_string(sc.value("control_interval_s", 0)) +
-         " s. " + sc.value("description", std::string()) +
+         " s under the plant's PI loop; an MPC decides every " +
+         std::to_string(sc.value("control_interval_s", 0)) + " s. " + sc.value("description", std::string()) +
          " IAE and violations (outside the setpoint ± " + num(sc["band_pct"], "%.2g") +
          " % wb) are scored on the product's true outlet moisture; one MPC tuning for every model.\n\n";
-    r += "| controller | IAE [%·s] | effort Σ Δu² [K²] | violations [%] | solve median / max [ms] | fallbacks | "
+    r += "| controller | IAE [%·s] | effort Σ Δu² [K²] | violations [%] | solve median / max [ms] | "
+         "fallbacks | "
          "model gain [%/K] |\n| --- | --- | --- | --- | --- | --- | --- |\n";
     std::string best;
     double bestIae = 1e300;
     for (const auto& [name, c] : m["controllers"].items()) {
         const bool pi = name == "pi";
-        r += "| " + (pi ? std::string("pi (the plant's own loop)") : name) + " | " + num(c["iae"], "%.1f") + " | " +
-             num(c["effort"], "%.1f") + " | " + num(c["violation_pct"], "%.1f") + " | " +
-             (pi ? std::string("–") : num(c["solve_ms_median"], "%.2f") + " / " + num(c["solve_ms_max"], "%.2f")) +
-             " | " + (pi ? std::string("–") : std::to_string(c.value("fallbacks", 0)) + " of " +
-                                                  std::to_string(c.value("decisions", 0))) +
+        r += "| " + (pi ? std::string("pi (the plant's own loop)") : name) + " | " + num(c["iae"], "%.1f") +
+             " | " + num(c["effort"], "%.1f") + " | " + num(c["violation_pct"], "%.1f") + " | " +
+             (pi ? std::string("–")
+                 : num(c["solve_ms_median"], "%.2f") + " / " + num(c["solve_ms_max"], "%.2f")) +
+             " | " +
+             (pi ? std::string("–")
+                 : std::to_string(c.value("fallbacks", 0)) + " of " +
+                       std::to_string(c.value("decisions", 0))) +
              " | " + (pi ? std::string("–") : num(c["gain_pct_per_k_median"], "%.4f")) + " |\n";
         if (c["iae"].is_number() && c["iae"].get<double>() < bestIae) {
             bestIae = c["iae"].get<double>();
@@ -64,7 +68,8 @@ std::string mpcSection(const json& m) {
     r += "\nThe plant's true steady gain is " + num(m["plant_gain_pct_per_k"], "%.4f") +
          " % wb per K of hot air. Lowest IAE: " + best + ".\n\n";
     r += "Why the ranking: each model forecasting the PI run as its MPC would (disturbances held, the same "
-         "output-disturbance update), MAE of the measured X_out [% wb]:\n\n| model | 30 s | 90 s | 150 s |\n| --- | "
+         "output-disturbance update), MAE of the measured X_out [% wb]:\n\n| model | 30 s | 90 s | 150 s "
+         "|\n| --- | "
          "--- | --- | --- |\n";
     for (const auto& [name, c] : m["controllers"].items()) {
         if (c.contains("forecast_check")) {
@@ -80,10 +85,12 @@ std::string mpcSection(const json& m) {
         const double gPbm = cs["pbm"].value("gain_pct_per_k_median", 0.0);
         const bool pgrlWins = cs["pgrl_cc"].value("iae", 0.0) < cs["pbm"].value("iae", 0.0);
         r += "\nPGRL-CC against the PBM: IAE " + num(cs["pgrl_cc"]["iae"], "%.1f") + " vs " +
-             num(cs["pbm"]["iae"], "%.1f") + " %·s, violations " + num(cs["pgrl_cc"]["violation_pct"], "%.1f") +
-             " vs " + num(cs["pbm"]["violation_pct"], "%.1f") + " %. ";
+             num(cs["pbm"]["iae"], "%.1f") + " %·s, violations " +
+             num(cs["pgrl_cc"]["violation_pct"], "%.1f") + " vs " + num(cs["pbm"]["violation_pct"], "%.1f") +
+             " %. ";
         // Does PGRL-CC forecast better than the PBM at every horizon of the forecast check?
-        bool forecastsBetter = cs["pgrl_cc"].contains("forecast_check") && cs["pbm"].contains("forecast_check");
+        bool forecastsBetter =
+            cs["pgrl_cc"].contains("forecast_check") && cs["pbm"].contains("forecast_check");
         if (forecastsBetter) {
             const auto& a = cs["pgrl_cc"]["forecast_check"]["mae_pct"];
             const auto& b = cs["pbm"]["forecast_check"]["mae_pct"];
@@ -93,17 +100,19 @@ std::string mpcSection(const json& m) {
         }
         const bool gainWorse = std::abs(gPgrl - gPlant) > std::abs(gPbm - gPlant);
         if (!pgrlWins && gainWorse) {
-            r += std::string("The paper's ordering on IAE does not hold here. PGRL-CC forecasts the outlet ") +
-                 (forecastsBetter ? "better at every horizon" : "about as well") +
-                 ", but the gain its MPC believes (" +
-                 num(gPgrl, "%.4f") + " %/K) is further from the plant's (" + num(gPlant, "%.4f") +
-                 ") than the PBM's (" + num(gPbm, "%.4f") +
-                 "): the residual model learnt part of its dependence on the hot air from data recorded under "
-                 "the plant's PI loop, where the hot air reacts to the very errors it is learning, so its "
-                 "input-to-output effect is biased. The tuning was not changed per controller.\n";
+            r +=
+                std::string("The paper's ordering on IAE does not hold here. PGRL-CC forecasts the outlet ") +
+                (forecastsBetter ? "better at every horizon" : "about as well") +
+                ", but the gain its MPC believes (" + num(gPgrl, "%.4f") +
+                " %/K) is further from the plant's (" + num(gPlant, "%.4f") + ") than the PBM's (" +
+                num(gPbm, "%.4f") +
+                "): the residual model learnt part of its dependence on the hot air from data recorded under "
+                "the plant's PI loop, where the hot air reacts to the very errors it is learning, so its "
+                "input-to-output effect is biased. The tuning was not changed per controller.\n";
         } else if (!pgrlWins) {
-            r += "The paper's ordering on IAE does not hold here; the forecast check above shows which model "
-                 "errs more at the horizons the controller uses. The tuning was not changed per controller.\n";
+            r +=
+                "The paper's ordering on IAE does not hold here; the forecast check above shows which model "
+                "errs more at the horizons the controller uses. The tuning was not changed per controller.\n";
         } else {
             r += "The paper's ordering on IAE holds.\n";
         }

@@ -127,8 +127,12 @@ std::string mpcJson(const control::ClosedLoopResult& result) {
                      {"warmup_s", sc.warmupS},
                      {"control_interval_s", sc.controlIntervalS},
                      {"band_pct", sc.bandPct}};
-    j["units"] = {{"iae", "% wb * s"},       {"effort", "K^2"}, {"violation_pct", "% of steps"},
-                  {"solve_ms", "ms"},        {"x_out", "% wb"}, {"t_hot", "°C"},
+    j["units"] = {{"iae", "% wb * s"},
+                  {"effort", "K^2"},
+                  {"violation_pct", "% of steps"},
+                  {"solve_ms", "ms"},
+                  {"x_out", "% wb"},
+                  {"t_hot", "°C"},
                   {"time", "s from the start of the scored part"}};
     j["termination"] = terminationName(result.ending.termination);
     j["plant_gain_pct_per_k"] = result.plantGainPctPerK;
@@ -153,8 +157,8 @@ std::string mpcJson(const control::ClosedLoopResult& result) {
                                   {"elapsed_s", r.elapsedSeconds}};
         if (r.forecastCheck) {
             j["controllers"][name]["forecast_check"] = {{"horizons_s", r.forecastCheck->horizonsS},
-                                                       {"mae_pct", r.forecastCheck->maePct},
-                                                       {"origins", r.forecastCheck->origins}};
+                                                        {"mae_pct", r.forecastCheck->maePct},
+                                                        {"origins", r.forecastCheck->origins}};
         }
         json t;
         t["time_s"] = r.timeS;

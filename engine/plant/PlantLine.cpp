@@ -207,60 +207,64 @@ struct PlantLine::Impl {
         double y[4] = {xIn[j], dist.tInK[j], hotAt(tEntry), p0[Param::w]}; // X, T, gas T, gas humidity
         // Deposits grow towards an asymptotic loss of h; cleaning between batches resets them.
         const double foulingFactor =
-            1.0 - fouling * (1.0 - std::exp(-(tEntry - onset(Mechanism::HeatTransferFouling)) / kFoulingTimeS));
+            1.0 -
+            fouling * (1.0 - std::exp(-(tEntry - onset(Mechanism::HeatTransferFouling)) / kFoulingTimeS));
         const double gasFlow = 0.8 * at(air, when(tEntry)) * kTubeAreaM2; // kg/s of hot air
         const double loadRatio = at(feed, when(tEntry)) / (1.0 + xIn[j]) / gasFlow;
-        rk4<4>(y, 0.0, tauH, static_cast<int>(std::ceil(tauH / 0.25)), [&](double s, const double* v, double* d) {
-            const double t = when(tEntry + s);
-            const double tHotNow = hotAt(t);
-            ph::TubeEnvironment env;
-            // Gas around the parcel: the inlet air (less the wall loss) minus the cooling by
-            // the material so far, carried in v[2] relative to the inlet temperature.
-            // The wall takes heat along the tube: the gas approaches ambient exponentially
-            // with the distance travelled, faster at low air speed (less turbulent
-            // transport to the wall is outweighed by the longer contact per kg of air).
-            double tWallGas = tHotNow;
-            if (wallLoss > 0) {
-                const double ntu =
-                    wallLoss * (s / tauH) * std::pow(kNominalAirSpeed / std::max(4.0, at(air, t)), 0.8);
-                tWallGas = at(tAmb, t) + (tHotNow - at(tAmb, t)) * std::exp(-ntu);
-            }
-            env.tGasK = tWallGas + (v[2] - hotAt(tEntry));
-            if (o.hiddenAmplitudeK > 0) {
-                env.tGasK += o.hiddenAmplitudeK * std::sin(2 * M_PI * t / o.hiddenPeriodS);
-            }
-            env.wGas = v[3];
-            env.h = p0[Param::h_HDT] * foulingFactor;
-            env.k = p0[Param::k_HDT] * at(dist.kDrift, t);
-            if (fallingRate > 0) {
-                const double xe = properties::equilibriumMoisture(v[1], 1e-6, p0);
-                const double depth = std::clamp((kCriticalMoisture - v[0]) / (kCriticalMoisture - xe), 0.0, 1.0);
-                env.dryingFactor = 1.0 - fallingRate * std::pow(depth, 0.7);
-            }
-            const auto r = ph::tubeRates(v[0], v[1], env, p0, sw);
-            d[0] = r.dXdt;
-            d[1] = r.dTdt;
-            // Co-current gas phase: energy and vapour balances per kg of air.
-            d[2] = -gasCoupling * loadRatio * r.heatIn / kAirHeatCapacity;
-            d[3] = gasCoupling * loadRatio * r.evaporation;
-        });
+        rk4<4>(y, 0.0, tauH, static_cast<int>(std::ceil(tauH / 0.25)),
+               [&](double s, const double* v, double* d) {
+                   const double t = when(tEntry + s);
+                   const double tHotNow = hotAt(t);
+                   ph::TubeEnvironment env;
+                   // Gas around the parcel: the inlet air (less the wall loss) minus the cooling by
+                   // the material so far, carried in v[2] relative to the inlet temperature.
+                   // The wall takes heat along the tube: the gas approaches ambient exponentially
+                   // with the distance travelled, faster at low air speed (less turbulent
+                   // transport to the wall is outweighed by the longer contact per kg of air).
+                   double tWallGas = tHotNow;
+                   if (wallLoss > 0) {
+                       const double ntu = wallLoss * (s / tauH) *
+                                          std::pow(kNominalAirSpeed / std::max(4.0, at(air, t)), 0.8);
+                       tWallGas = at(tAmb, t) + (tHotNow - at(tAmb, t)) * std::exp(-ntu);
+                   }
+                   env.tGasK = tWallGas + (v[2] - hotAt(tEntry));
+                   if (o.hiddenAmplitudeK > 0) {
+                       env.tGasK += o.hiddenAmplitudeK * std::sin(2 * M_PI * t / o.hiddenPeriodS);
+                   }
+                   env.wGas = v[3];
+                   env.h = p0[Param::h_HDT] * foulingFactor;
+                   env.k = p0[Param::k_HDT] * at(dist.kDrift, t);
+                   if (fallingRate > 0) {
+                       const double xe = properties::equilibriumMoisture(v[1], 1e-6, p0);
+                       const double depth =
+                           std::clamp((kCriticalMoisture - v[0]) / (kCriticalMoisture - xe), 0.0, 1.0);
+                       env.dryingFactor = 1.0 - fallingRate * std::pow(depth, 0.7);
+                   }
+                   const auto r = ph::tubeRates(v[0], v[1], env, p0, sw);
+                   d[0] = r.dXdt;
+                   d[1] = r.dTdt;
+                   // Co-current gas phase: energy and vapour balances per kg of air.
+                   d[2] = -gasCoupling * loadRatio * r.heatIn / kAirHeatCapacity;
+                   d[3] = gasCoupling * loadRatio * r.evaporation;
+               });
         ParcelOutcome out;
         out.xHdt = y[0];
         out.tHdt = y[1];
         const double tConvIn = tEntry + tauH;
         double c[2] = {y[0], y[1]};
-        rk4<2>(c, 0.0, tauC, static_cast<int>(std::ceil(tauC / 2.0)), [&](double s, const double* v, double* d) {
-            const double t = when(tConvIn + s);
-            // Humid air loads the surface faster than linearly in RH, and a drier leaf
-            // takes up more.
-            const double rhNow = at(rh, t);
-            const double uptake =
-                reabsorption * 1e-4 * rhNow * std::exp(3.0 * (rhNow - 0.5)) * std::max(0.0, 1.0 - v[0] / 0.35);
-            ph::AmbientEnvironment env{at(tAmb, t), rhNow, uptake};
-            const auto r = ph::conveyorRates(v[0], v[1], env, p0, sw);
-            d[0] = r.dXdt;
-            d[1] = r.dTdt;
-        });
+        rk4<2>(c, 0.0, tauC, static_cast<int>(std::ceil(tauC / 2.0)),
+               [&](double s, const double* v, double* d) {
+                   const double t = when(tConvIn + s);
+                   // Humid air loads the surface faster than linearly in RH, and a drier leaf
+                   // takes up more.
+                   const double rhNow = at(rh, t);
+                   const double uptake = reabsorption * 1e-4 * rhNow * std::exp(3.0 * (rhNow - 0.5)) *
+                                         std::max(0.0, 1.0 - v[0] / 0.35);
+                   ph::AmbientEnvironment env{at(tAmb, t), rhNow, uptake};
+                   const auto r = ph::conveyorRates(v[0], v[1], env, p0, sw);
+                   d[0] = r.dXdt;
+                   d[1] = r.dTdt;
+               });
         const ph::MixState mix = ph::winnowerInletMix(c[0], c[1], y[0], y[1], p0, sw);
         const double tWinIn = tConvIn + tauC;
         double w[2] = {mix.xDb, mix.tK};
@@ -280,7 +284,9 @@ struct PlantLine::Impl {
     // between neighbouring parcels (the instrument sees a blend of adjacent material).
     ParcelOutcome outcomeAt(double t, double delay) const {
         const double e = t - delay;
-        const auto parcelAt = [&](double j) { return j < 0 ? preStart : parcel[static_cast<std::size_t>(j)]; };
+        const auto parcelAt = [&](double j) {
+            return j < 0 ? preStart : parcel[static_cast<std::size_t>(j)];
+        };
         const double j0 = std::floor(e);
         const double w = e - j0;
         const ParcelOutcome a = parcelAt(j0);
@@ -417,10 +423,20 @@ void PlantLine::apply(double setpointK) {
     ++im.k;
 }
 
-std::size_t PlantLine::sample() const { return m_impl->k; }
-std::size_t PlantLine::size() const { return m_impl->n; }
-double PlantLine::hotAirK() const { return m_impl->tHot[std::min(m_impl->k, m_impl->n - 1)]; }
-const PlantBatch& PlantLine::record() const { return m_impl->record; }
-PlantBatch& PlantLine::record() { return m_impl->record; }
+std::size_t PlantLine::sample() const {
+    return m_impl->k;
+}
+std::size_t PlantLine::size() const {
+    return m_impl->n;
+}
+double PlantLine::hotAirK() const {
+    return m_impl->tHot[std::min(m_impl->k, m_impl->n - 1)];
+}
+const PlantBatch& PlantLine::record() const {
+    return m_impl->record;
+}
+PlantBatch& PlantLine::record() {
+    return m_impl->record;
+}
 
 } // namespace drytwin::plant

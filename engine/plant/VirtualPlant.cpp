@@ -14,7 +14,6 @@ namespace drytwin::plant {
 using properties::Param;
 using properties::ParameterSet;
 
-
 ParameterSet PlantOptions::defaultTruth() {
     ParameterSet p;
     p[Param::h_HDT] = 72.0;

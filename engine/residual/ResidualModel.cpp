@@ -637,8 +637,8 @@ HybridPrediction ResidualModel::forecastFrom(const BatchView& v, std::size_t ori
     return forecastFrom(std::vector<BatchView>{v}, origin, horizon).front();
 }
 
-std::vector<HybridPrediction> ResidualModel::forecastFrom(const std::vector<BatchView>& views, std::size_t origin,
-                                                          int horizon) const {
+std::vector<HybridPrediction> ResidualModel::forecastFrom(const std::vector<BatchView>& views,
+                                                          std::size_t origin, int horizon) const {
     const auto count = static_cast<std::size_t>(std::max(0, horizon));
     std::vector<HybridPrediction> out(views.size(), HybridPrediction::unknown(count));
     const auto nv = static_cast<Eigen::Index>(views.size());

@@ -407,7 +407,8 @@ Expected<MpcResult> Session::mpc(const MpcOptions& options, const Progress& prog
         const auto& bundled = control::bundledScenarios();
         const auto it = bundled.find(options.bundledScenario);
         if (it == bundled.end()) {
-            return Error{ErrorKind::Usage, "scenario", "no bundled scenario named " + options.bundledScenario};
+            return Error{ErrorKind::Usage, "scenario",
+                         "no bundled scenario named " + options.bundledScenario};
         }
         scenario = control::parseScenario(it->second, "resources/scenarios/" + it->first + ".json");
     }

@@ -3,10 +3,10 @@
 #include "calibration/Calibration.h"
 #include "common/Error.h"
 #include "common/Progress.h"
+#include "control/ClosedLoop.h"
 #include "data/Batch.h"
 #include "data/Cleaning.h"
 #include "data/DataSetSummary.h"
-#include "control/ClosedLoop.h"
 #include "data/SiBatch.h"
 #include "discovery/Discovery.h"
 #include "hybrid/Evaluation.h"
@@ -139,7 +139,7 @@ struct DiscoverResult {
 
 /// @brief A closed-loop what-if scenario against the virtual plant (CONTRACT.md §2 `mpc`).
 struct MpcOptions {
-    std::string scenarioPath;             ///< a scenario file; empty: the bundled one named below
+    std::string scenarioPath; ///< a scenario file; empty: the bundled one named below
     std::string bundledScenario = "paper_like_1000";
     control::ClosedLoopOptions closedLoop;
     Status validate() const { return closedLoop.validate(); }
@@ -226,9 +226,9 @@ public:
     /// @brief Runs a what-if scenario once per controller (an MPC on each prediction model the
     /// session's model holds, and the plant's PI loop). Needs no data: the plant makes its own.
     Expected<MpcResult> mpc(const MpcOptions& options, const Progress& progress = {});
-    /// @brief inspect, calibrate, train, evaluate, ablation, discover and mpc in order, each result written to
-    /// the folder as it is done, then report.md. A failed or cancelled stage keeps the files
-    /// of the stages before it.
+    /// @brief inspect, calibrate, train, evaluate, ablation, discover and mpc in order, each result written
+    /// to the folder as it is done, then report.md. A failed or cancelled stage keeps the files of the stages
+    /// before it.
     Expected<PipelineResult> pipeline(const PipelineOptions& options, const Progress& progress = {});
 
     /// @brief Saves the current model as a model file (atomically).

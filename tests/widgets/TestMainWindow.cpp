@@ -39,8 +39,9 @@ void writeText(const QString& path, const std::string& text) {
     out << text;
 }
 
-const char* kGood = "time_s,T_hot_C,feed_kg_h,X_in_pct,T_amb_C,RH_amb_pct,X_out_pct,T_out_C\n"
-                    "0,170,6000,22,20,50,12.5,55\n1,171,6000,22,20,50,12.6,55.1\n2,171,6000,22,20,50,12.7,55.3\n";
+const char* kGood =
+    "time_s,T_hot_C,feed_kg_h,X_in_pct,T_amb_C,RH_amb_pct,X_out_pct,T_out_C\n"
+    "0,170,6000,22,20,50,12.5,55\n1,171,6000,22,20,50,12.6,55.1\n2,171,6000,22,20,50,12.7,55.3\n";
 
 /// Waits until the window's engine queue is empty (every queued action and its follow-ups done).
 bool waitIdle(MainWindow& w, int ms = 120000) {
@@ -127,13 +128,14 @@ private Q_SLOTS:
 
     void foreignColumnNamesAreMappedAndLoaded() {
         QTemporaryDir dir;
-        writeText(dir.filePath("plant.csv"),
-                  "Zeit,Heissluft,Durchsatz,Feuchte_ein,Umgebung,RF,Feuchte_aus,Temp_aus\n"
-                  "0,170,6000,22,20,50,12.5,55\n1,171,6000,22,20,50,12.6,55.1\n2,171,6000,22,20,50,12.7,55.3\n");
+        writeText(
+            dir.filePath("plant.csv"),
+            "Zeit,Heissluft,Durchsatz,Feuchte_ein,Umgebung,RF,Feuchte_aus,Temp_aus\n"
+            "0,170,6000,22,20,50,12.5,55\n1,171,6000,22,20,50,12.6,55.1\n2,171,6000,22,20,50,12.7,55.3\n");
         widgets::ColumnMappingDialog dialog(dir.filePath("plant.csv"));
         QCOMPARE(dialog.headers().size(), 8);
-        const QStringList contract{"time_s", "T_hot_C", "feed_kg_h", "X_in_pct", "T_amb_C", "RH_amb_pct",
-                                   "X_out_pct", "T_out_C"};
+        const QStringList contract{"time_s",  "T_hot_C",    "feed_kg_h", "X_in_pct",
+                                   "T_amb_C", "RH_amb_pct", "X_out_pct", "T_out_C"};
         for (int i = 0; i < contract.size(); ++i) {
             QVERIFY2(dialog.choose(contract[i], dialog.headers()[i]), qPrintable(contract[i]));
         }
@@ -235,7 +237,8 @@ private Q_SLOTS:
         QVERIFY(disc->ranking()->rowCount() == 8);
         QVERIFY(disc->verdict()->text().startsWith("Verdict"));
         if (disc->extendButton()->isEnabled()) {
-            const auto k = w.workbench().latest().discover->extendedModel.parameters[properties::Param::k_HDT];
+            const auto k =
+                w.workbench().latest().discover->extendedModel.parameters[properties::Param::k_HDT];
             QTest::mouseClick(disc->extendButton(), Qt::LeftButton);
             QVERIFY(waitIdle(w));
             QCOMPARE(w.workbench().model().parameters[properties::Param::k_HDT], k);

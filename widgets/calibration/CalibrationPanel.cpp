@@ -21,7 +21,8 @@ QString sv(std::string_view s) {
 }
 } // namespace
 
-CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
+CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
+    : QWidget(parent), m_workbench(workbench) {
     m_free = new QTableWidget(0, 4);
     m_free->setHorizontalHeaderLabels({tr("Free"), tr("Lower"), tr("Upper"), tr("Unit")});
     m_free->verticalHeader()->hide();
@@ -57,11 +58,13 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent) : QWid
         {tr("Parameter"), tr("Estimate"), tr("95 % interval"), tr("Unit"), tr("Fisher SE"), tr("At bound")});
     m_estimates->verticalHeader()->hide();
     m_estimates->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_fit = new QLabel(tr("Fits the free parameters to the calibration rows (every 10th kept row, the first 300) "
-                          "with NLopt: a global search, then BOBYQA."));
+    m_fit =
+        new QLabel(tr("Fits the free parameters to the calibration rows (every 10th kept row, the first 300) "
+                      "with NLopt: a global search, then BOBYQA."));
     m_fit->setWordWrap(true);
     m_loss = new PlotStack;
     m_loss->addPlot(tr("best loss [-]"));
+    m_loss->addPlot(tr("parameter / its final value [-]"));
     m_loss->setXTitle(tr("share of the evaluation budget used [-]"));
 
     auto* left = new QWidget;
@@ -125,7 +128,8 @@ void CalibrationPanel::run() {
         }
     }
     o.calibration.maxEvaluations = m_budget->value();
-    o.calibration.globalEvaluations = std::min(m_budget->value() / 2, 60 * static_cast<int>(o.calibration.freeParameters.size()));
+    o.calibration.globalEvaluations =
+        std::min(m_budget->value() / 2, 60 * static_cast<int>(o.calibration.freeParameters.size()));
     if (auto st = o.validate(); !st) {
         m_fit->setText(tr("Cannot calibrate: %1").arg(QString::fromStdString(st.error().message())));
         return;
@@ -148,10 +152,13 @@ void CalibrationPanel::showResult() {
     for (std::size_t i = 0; i < c.estimates.size(); ++i) {
         const auto& e = c.estimates[i];
         const auto& info = properties::info(e.param);
-        const QStringList cells{sv(info.symbol), QString::number(e.value, 'g', 5),
-                                QStringLiteral("[%1, %2]").arg(e.ci95Low, 0, 'g', 5).arg(e.ci95High, 0, 'g', 5),
-                                sv(info.unit), QString::number(e.standardErrorFisher, 'g', 3),
-                                e.atBound ? tr("yes") : tr("no")};
+        const QStringList cells{
+            sv(info.symbol),
+            QString::number(e.value, 'g', 5),
+            QStringLiteral("[%1, %2]").arg(e.ci95Low, 0, 'g', 5).arg(e.ci95High, 0, 'g', 5),
+            sv(info.unit),
+            QString::number(e.standardErrorFisher, 'g', 3),
+            e.atBound ? tr("yes") : tr("no")};
         for (int col = 0; col < cells.size(); ++col) {
             m_estimates->setItem(static_cast<int>(i), col, new QTableWidgetItem(cells[col]));
         }
@@ -169,16 +176,29 @@ void CalibrationPanel::showResult() {
                        .arg(c.before.maeTOutC, 0, 'f', 3)
                        .arg(c.after.maeTOutC, 0, 'f', 3)
                        .arg(QString::fromStdString(c.intervalMethod)));
-    // The whole history as the final curve (every evaluation, not only the progress reports).
+    // The whole history as the final curves (every evaluation, not only the progress reports):
+    // the best loss, and each free parameter's trace relative to where it ended.
     QVector<double> x, y;
+    std::vector<QVector<double>> traces(c.estimates.size());
     for (const auto& h : c.history) {
         x << h.evaluation;
         y << h.bestLoss;
+        for (std::size_t i = 0; i < traces.size() && i < h.values.size(); ++i) {
+            traces[i] << (c.estimates[i].value != 0 ? h.values[i] / c.estimates[i].value : h.values[i]);
+        }
     }
     if (!x.isEmpty()) {
+        static const QColor colours[] = {QColor(31, 119, 180), QColor(44, 160, 44), QColor(148, 103, 189),
+                                         QColor(255, 127, 14)};
         m_loss->clearCurves();
         m_loss->setXTitle(tr("loss evaluations [-]"));
         m_loss->addCurve(0, tr("best loss"), x, y, QColor(214, 39, 40));
+        for (std::size_t i = 0; i < traces.size(); ++i) {
+            if (traces[i].size() == x.size()) {
+                m_loss->addDots(1, sv(properties::info(c.estimates[i].param).symbol), x, traces[i],
+                                colours[i % 4]);
+            }
+        }
         m_loss->rescale();
     }
 }

@@ -13,37 +13,47 @@ QString errorText(const Error& e) {
     switch (e.code) {
     case ErrorCode::FileNotFound:
         if (has(1)) {
-            return QCoreApplication::translate("drytwin::widgets::ErrorText", "%1: no such file or folder").arg(a[0]);
+            return QCoreApplication::translate("drytwin::widgets::ErrorText", "%1: no such file or folder")
+                .arg(a[0]);
         }
         break;
     case ErrorCode::MissingColumn:
         if (has(2)) {
-            return QCoreApplication::translate("drytwin::widgets::ErrorText", "%1: the required column '%2' is missing").arg(a[0], a[1]);
+            return QCoreApplication::translate("drytwin::widgets::ErrorText",
+                                               "%1: the required column '%2' is missing")
+                .arg(a[0], a[1]);
         }
         break;
     case ErrorCode::TextInNumber:
         if (has(5)) {
-            return QCoreApplication::translate("drytwin::widgets::ErrorText", "%1, line %2, column %3: text '%4' in the numeric column '%5'")
+            return QCoreApplication::translate("drytwin::widgets::ErrorText",
+                                               "%1, line %2, column %3: text '%4' in the numeric column '%5'")
                 .arg(a[0], a[1], a[2], a[3], a[4]);
         }
         break;
     case ErrorCode::TimeNotIncreasing:
         if (has(3)) {
-            return QCoreApplication::translate("drytwin::widgets::ErrorText", "%1, line %2, column %3: time does not increase").arg(a[0], a[1], a[2]);
+            return QCoreApplication::translate("drytwin::widgets::ErrorText",
+                                               "%1, line %2, column %3: time does not increase")
+                .arg(a[0], a[1], a[2]);
         }
         break;
     case ErrorCode::DataFileFormat:
         if (has(4)) {
-            return QCoreApplication::translate("drytwin::widgets::ErrorText", "%1, line %2, column %3: %4").arg(a[0], a[1], a[2], a[3]);
+            return QCoreApplication::translate("drytwin::widgets::ErrorText", "%1, line %2, column %3: %4")
+                .arg(a[0], a[1], a[2], a[3]);
         }
         break;
     case ErrorCode::ParameterOutOfRange:
         if (has(4)) {
-            return QCoreApplication::translate("drytwin::widgets::ErrorText", "Parameter %1 = %2 lies outside its range [%3, %4]").arg(a[0], a[1], a[2], a[3]);
+            return QCoreApplication::translate("drytwin::widgets::ErrorText",
+                                               "Parameter %1 = %2 lies outside its range [%3, %4]")
+                .arg(a[0], a[1], a[2], a[3]);
         }
         break;
     case ErrorCode::NoDataLoaded:
-        return QCoreApplication::translate("drytwin::widgets::ErrorText", "No data loaded; open a batch file or folder first.");
+        return QCoreApplication::translate("drytwin::widgets::ErrorText",
+                                           "No data loaded; open a batch file or folder first.");
     case ErrorCode::Cancelled:
         return QCoreApplication::translate("drytwin::widgets::ErrorText", "Cancelled by the user.");
     default:

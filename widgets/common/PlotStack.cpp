@@ -170,7 +170,8 @@ void PlotStack::setXTitle(const QString& title) {
 }
 
 QwtPlotCurve* PlotStack::addCurve(int index, const QString& name, const QVector<double>& x,
-                                  const QVector<double>& y, const QColor& colour, Qt::PenStyle style, double width) {
+                                  const QVector<double>& y, const QColor& colour, Qt::PenStyle style,
+                                  double width) {
     auto* plot = m_plots.at(static_cast<std::size_t>(index));
     auto* c = new QwtPlotCurve(name);
     c->setPen(colour, width, style);
@@ -183,7 +184,8 @@ QwtPlotCurve* PlotStack::addCurve(int index, const QString& name, const QVector<
     bool named = false;
     for (auto* p : m_plots) {
         for (auto* other : p->itemList(QwtPlotItem::Rtti_PlotCurve)) {
-            named = named || (other != c && other->title().text() == name && other->testItemAttribute(QwtPlotItem::Legend));
+            named = named || (other != c && other->title().text() == name &&
+                              other->testItemAttribute(QwtPlotItem::Legend));
         }
     }
     c->setItemAttribute(QwtPlotItem::Legend, !named && !name.isEmpty());
@@ -196,7 +198,8 @@ QwtPlotCurve* PlotStack::addCurve(int index, const QString& name, const QVector<
         c->setItemAttribute(QwtPlotItem::Legend, false);
         m_plots.front()->updateLegend();
         if (auto* legend = qobject_cast<QwtLegend*>(m_plots.front()->legend())) {
-            if (auto* label = qobject_cast<QwtLegendLabel*>(legend->legendWidget(m_plots.front()->itemToInfo(standIn)))) {
+            if (auto* label = qobject_cast<QwtLegendLabel*>(
+                    legend->legendWidget(m_plots.front()->itemToInfo(standIn)))) {
                 label->setChecked(true);
             }
         }
@@ -210,8 +213,8 @@ QwtPlotCurve* PlotStack::addCurve(int index, const QString& name, const QVector<
     return c;
 }
 
-QwtPlotCurve* PlotStack::addDots(int index, const QString& name, const QVector<double>& x, const QVector<double>& y,
-                                 const QColor& colour) {
+QwtPlotCurve* PlotStack::addDots(int index, const QString& name, const QVector<double>& x,
+                                 const QVector<double>& y, const QColor& colour) {
     auto* c = addCurve(index, name, x, y, colour);
     c->setStyle(QwtPlotCurve::Dots);
     c->setPen(colour, 3.0);
@@ -227,7 +230,8 @@ void PlotStack::clearCurves() {
 
 int PlotStack::curveCount(int index) const {
     int n = 0;
-    for (const auto* item : m_plots.at(static_cast<std::size_t>(index))->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+    for (const auto* item :
+         m_plots.at(static_cast<std::size_t>(index))->itemList(QwtPlotItem::Rtti_PlotCurve)) {
         n += static_cast<const QwtPlotCurve*>(item)->dataSize() > 0 ? 1 : 0; // not the legend stand-ins
     }
     return n;
@@ -322,7 +326,9 @@ QString PlotStack::readout() const {
 
 void PlotStack::updateReadout() {
     QStringList parts;
-    const auto fmt = [](double v) { return std::isfinite(v) ? QString::number(v, 'g', 5) : QStringLiteral("–"); };
+    const auto fmt = [](double v) {
+        return std::isfinite(v) ? QString::number(v, 'g', 5) : QStringLiteral("–");
+    };
     if (std::isfinite(m_cursor[0])) {
         parts << tr("A %1").arg(fmt(m_cursor[0]));
     }
@@ -349,7 +355,8 @@ bool PlotStack::eventFilter(QObject* watched, QEvent* event) {
     if (event->type() == QEvent::MouseButtonPress) {
         auto* me = static_cast<QMouseEvent*>(event);
         const auto mods = me->modifiers();
-        if (me->button() == Qt::LeftButton && (mods & (Qt::ControlModifier | Qt::ShiftModifier | Qt::AltModifier))) {
+        if (me->button() == Qt::LeftButton &&
+            (mods & (Qt::ControlModifier | Qt::ShiftModifier | Qt::AltModifier))) {
             for (auto* plot : m_plots) {
                 if (plot->canvas() == watched) {
                     const double x = plot->invTransform(QwtPlot::xBottom, me->pos().x());
@@ -431,8 +438,9 @@ bool PlotStack::exportTo(const QString& path, QString* error) const {
 }
 
 void PlotStack::exportDialog() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export plots"), QStringLiteral("plots.png"),
-                                                      tr("PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)"));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export plots"), QStringLiteral("plots.png"),
+                                     tr("PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)"));
     if (path.isEmpty()) {
         return;
     }

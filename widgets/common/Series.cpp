@@ -9,14 +9,22 @@ namespace drytwin::widgets {
 const std::vector<SeriesInfo>& batchSeries() {
     using namespace units;
     static const std::vector<SeriesInfo> s{
-        {QCoreApplication::translate("drytwin::widgets::Series", "T_hot [°C]"), [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tHotK[k]); }},
-        {QCoreApplication::translate("drytwin::widgets::Series", "feed [kg/h]"), [](const data::SiBatch& b, std::size_t k) { return kgPerSToKgPerHour(b.feedKgPerS[k]); }},
-        {QCoreApplication::translate("drytwin::widgets::Series", "X_in [% wb]"), [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xInDb[k]); }},
-        {QCoreApplication::translate("drytwin::widgets::Series", "T_amb [°C]"), [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tAmbK[k]); }},
-        {QCoreApplication::translate("drytwin::widgets::Series", "RH [%]"), [](const data::SiBatch& b, std::size_t k) { return fractionToPercent(b.rhAmb[k]); }},
-        {QCoreApplication::translate("drytwin::widgets::Series", "X_HDT [% wb]"), [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xHdtDb[k]); }},
-        {QCoreApplication::translate("drytwin::widgets::Series", "X_out [% wb]"), [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xOutDb[k]); }},
-        {QCoreApplication::translate("drytwin::widgets::Series", "T_out [°C]"), [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tOutK[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "T_hot [°C]"),
+         [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tHotK[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "feed [kg/h]"),
+         [](const data::SiBatch& b, std::size_t k) { return kgPerSToKgPerHour(b.feedKgPerS[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "X_in [% wb]"),
+         [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xInDb[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "T_amb [°C]"),
+         [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tAmbK[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "RH [%]"),
+         [](const data::SiBatch& b, std::size_t k) { return fractionToPercent(b.rhAmb[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "X_HDT [% wb]"),
+         [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xHdtDb[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "X_out [% wb]"),
+         [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xOutDb[k]); }},
+        {QCoreApplication::translate("drytwin::widgets::Series", "T_out [°C]"),
+         [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tOutK[k]); }},
     };
     return s;
 }

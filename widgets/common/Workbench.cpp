@@ -20,7 +20,8 @@ Workbench::Workbench(QObject* parent) : QObject(parent) {
 }
 
 template <class R, class Work, class Done>
-JobId Workbench::start(const QString& action, Work work, Done done, std::function<void(const QString&)> onFailure) {
+JobId Workbench::start(const QString& action, Work work, Done done,
+                       std::function<void(const QString&)> onFailure) {
     if (m_jobs.busy()) {
         Q_EMIT status(Workbench::tr("%1 is queued behind the running job").arg(action));
     }
@@ -94,8 +95,7 @@ void Workbench::openModel(const QString& path) {
     workflow::OpenOptions o;
     o.modelPath = path.toStdString();
     start<workflow::OpenResult>(
-        tr("Open model %1").arg(path),
-        [o](workflow::Session& s, const Progress& p) { return s.open(o, p); },
+        tr("Open model %1").arg(path), [o](workflow::Session& s, const Progress& p) { return s.open(o, p); },
         [this, path](const workflow::OpenResult&) {
             m_modelPath = path;
             Q_EMIT status(tr("Model %1 opened").arg(path));
@@ -165,7 +165,8 @@ void Workbench::simulate() {
 
 void Workbench::calibrate(const workflow::CalibrateOptions& options) {
     m_calibrationJob = start<workflow::CalibrateResult>(
-        tr("Calibrate"), [options](workflow::Session& s, const Progress& p) { return s.calibrate(options, p); },
+        tr("Calibrate"),
+        [options](workflow::Session& s, const Progress& p) { return s.calibrate(options, p); },
         [this](const workflow::CalibrateResult& r) {
             m_latest.calibrate = r;
             Q_EMIT status(tr("Calibration %1: loss %2 → %3")
@@ -216,7 +217,8 @@ void Workbench::discover() {
 
 void Workbench::runMpc(const workflow::MpcOptions& options) {
     start<workflow::MpcResult>(
-        tr("What-if scenario"), [options](workflow::Session& s, const Progress& p) { return s.mpc(options, p); },
+        tr("What-if scenario"),
+        [options](workflow::Session& s, const Progress& p) { return s.mpc(options, p); },
         [this](const workflow::MpcResult& r) {
             m_latest.mpc = r;
             Q_EMIT status(QString::fromStdString(r.ending.message));

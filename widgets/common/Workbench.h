@@ -73,7 +73,8 @@ Q_SIGNALS:
 
 private:
     template <class R, class Work, class Done>
-    JobId start(const QString& action, Work work, Done done, std::function<void(const QString&)> onFailure = {});
+    JobId start(const QString& action, Work work, Done done,
+                std::function<void(const QString&)> onFailure = {});
     /// Refreshes the GUI copy of the model after an action that may change it.
     void fetchModel();
 

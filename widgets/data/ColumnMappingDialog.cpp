@@ -39,14 +39,16 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* pare
             break;
         }
     }
-    m_note = new QLabel(m_headers.isEmpty()
-                            ? tr("Could not read the headers of %1.").arg(batchFile)
-                            : tr("Choose, for each column DryTwin needs, the header your files use. The values must "
-                                 "be in the unit shown; required columns are marked *."));
+    m_note = new QLabel(
+        m_headers.isEmpty()
+            ? tr("Could not read the headers of %1.").arg(batchFile)
+            : tr("Choose, for each column DryTwin needs, the header your files use. The values must "
+                 "be in the unit shown; required columns are marked *."));
     m_note->setWordWrap(true);
     const auto& specs = data::columnSpecs();
     m_table = new QTableWidget(static_cast<int>(specs.size()), 4);
-    m_table->setHorizontalHeaderLabels({tr("DryTwin column"), tr("Unit"), tr("Header in your file"), tr("Meaning")});
+    m_table->setHorizontalHeaderLabels(
+        {tr("DryTwin column"), tr("Unit"), tr("Header in your file"), tr("Meaning")});
     m_table->verticalHeader()->hide();
     for (std::size_t i = 0; i < specs.size(); ++i) {
         const auto& s = specs[i];

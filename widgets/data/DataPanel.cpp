@@ -1,10 +1,10 @@
 #include "data/DataPanel.h"
 
 #include "common/PlotStack.h"
-#include "data/ColumnMappingDialog.h"
 #include "common/Series.h"
 #include "common/Units.h"
 #include "common/Workbench.h"
+#include "data/ColumnMappingDialog.h"
 
 #include <QComboBox>
 #include <QDragEnterEvent>
@@ -25,9 +25,10 @@
 namespace drytwin::widgets {
 
 namespace {
-const QColor kPalette[] = {QColor(31, 119, 180), QColor(214, 39, 40), QColor(44, 160, 44), QColor(148, 103, 189),
-                           QColor(255, 127, 14), QColor(140, 86, 75), QColor(227, 119, 194), QColor(127, 127, 127),
-                           QColor(188, 189, 34), QColor(23, 190, 207)};
+const QColor kPalette[] = {QColor(31, 119, 180),  QColor(214, 39, 40),   QColor(44, 160, 44),
+                           QColor(148, 103, 189), QColor(255, 127, 14),  QColor(140, 86, 75),
+                           QColor(227, 119, 194), QColor(127, 127, 127), QColor(188, 189, 34),
+                           QColor(23, 190, 207)};
 }
 
 DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
@@ -76,7 +77,8 @@ DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m
     layout->addWidget(split);
 
     connect(openFile, &QPushButton::clicked, this, [this] {
-        const QString p = QFileDialog::getOpenFileName(this, tr("Open batch file"), {}, tr("Batch files (*.csv)"));
+        const QString p =
+            QFileDialog::getOpenFileName(this, tr("Open batch file"), {}, tr("Batch files (*.csv)"));
         if (!p.isEmpty()) {
             m_workbench.openData(p);
         }
@@ -97,8 +99,8 @@ DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m
         if (dialog.exec() != QDialog::Accepted) {
             return;
         }
-        const QString saveTo = QFileDialog::getSaveFileName(this, tr("Save the column mapping"),
-                                                            QStringLiteral("mapping.json"), tr("Mappings (*.json)"));
+        const QString saveTo = QFileDialog::getSaveFileName(
+            this, tr("Save the column mapping"), QStringLiteral("mapping.json"), tr("Mappings (*.json)"));
         QString error;
         if (saveTo.isEmpty() || !dialog.save(saveTo, &error)) {
             m_cleaning->setText(error);
@@ -139,12 +141,13 @@ void DataPanel::fill() {
             h += units::kelvinToCelsius(b.tHotK[k]) / static_cast<double>(b.rows());
         }
         const double minutes = b.rows() > 1 ? (b.timeS.back() - b.timeS.front()) / 60.0 : 0.0;
-        const QStringList cells{QString::fromStdString(i < summary.batches.size() ? summary.batches[i].id : b.id),
-                                QString::number(b.rows()),
-                                QString::number(kept),
-                                QString::number(minutes, 'f', 1),
-                                QString::number(x, 'f', 3),
-                                QString::number(h, 'f', 1)};
+        const QStringList cells{
+            QString::fromStdString(i < summary.batches.size() ? summary.batches[i].id : b.id),
+            QString::number(b.rows()),
+            QString::number(kept),
+            QString::number(minutes, 'f', 1),
+            QString::number(x, 'f', 3),
+            QString::number(h, 'f', 1)};
         for (int c = 0; c < cells.size(); ++c) {
             m_table->setItem(static_cast<int>(i), c, new QTableWidgetItem(cells[c]));
         }
@@ -163,18 +166,19 @@ void DataPanel::fill() {
         train += split.train[i].size();
         test += split.test[i].size();
     }
-    m_cleaning->setText(tr("Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, "
-                           "missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 "
-                           "test.")
-                            .arg(c.kept)
-                            .arg(c.rows)
-                            .arg(c.droppedXhdt)
-                            .arg(c.droppedThdt)
-                            .arg(c.droppedFeed)
-                            .arg(c.droppedMissing)
-                            .arg(c.droppedImpossible)
-                            .arg(train)
-                            .arg(test));
+    m_cleaning->setText(
+        tr("Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, "
+           "missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 "
+           "test.")
+            .arg(c.kept)
+            .arg(c.rows)
+            .arg(c.droppedXhdt)
+            .arg(c.droppedThdt)
+            .arg(c.droppedFeed)
+            .arg(c.droppedMissing)
+            .arg(c.droppedImpossible)
+            .arg(train)
+            .arg(test));
     if (!si.empty()) {
         selectBatches({0});
     }
@@ -219,8 +223,8 @@ void DataPanel::redraw() {
         }
         const QColor colour = kPalette[n % 10];
         for (std::size_t s = 0; s < batchSeries().size(); ++s) {
-            m_plots->addCurve(static_cast<int>(s), QString::fromStdString(b.id), t, valuesOf(b, batchSeries()[s]),
-                              colour);
+            m_plots->addCurve(static_cast<int>(s), QString::fromStdString(b.id), t,
+                              valuesOf(b, batchSeries()[s]), colour);
         }
     }
     m_plots->rescale();

@@ -15,10 +15,11 @@ namespace drytwin::widgets {
 
 namespace {
 const QColor kColours[] = {QColor(127, 127, 127), QColor(188, 189, 34), QColor(140, 86, 75),
-                           QColor(148, 103, 189), QColor(44, 160, 44), QColor(214, 39, 40)};
+                           QColor(148, 103, 189), QColor(44, 160, 44),  QColor(214, 39, 40)};
 }
 
-DiagnosticsPanel::DiagnosticsPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
+DiagnosticsPanel::DiagnosticsPanel(Workbench& workbench, QWidget* parent)
+    : QWidget(parent), m_workbench(workbench) {
     m_models = new QListWidget;
     m_models->setMaximumWidth(240);
     auto* evaluate = new QPushButton(tr("Evaluate"));
@@ -105,9 +106,10 @@ void DiagnosticsPanel::redraw() {
                 f << m.psdFrequencyHz[k];
                 p << std::max(1e-12, m.psdDensity[k]);
             }
-            m_psd->addCurve(0, tr("%1 (%2 % below 0.01 Hz)")
-                                   .arg(QString::fromStdString(m.name))
-                                   .arg(100 * m.lowFrequencyShareBelow0p01Hz, 0, 'f', 0),
+            m_psd->addCurve(0,
+                            tr("%1 (%2 % below 0.01 Hz)")
+                                .arg(QString::fromStdString(m.name))
+                                .arg(100 * m.lowFrequencyShareBelow0p01Hz, 0, 'f', 0),
                             f, p, kColours[i % 6]);
         }
     }

@@ -14,17 +14,20 @@
 
 namespace drytwin::widgets {
 
-DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
+DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
+    : QWidget(parent), m_workbench(workbench) {
     auto* run = new QPushButton(tr("Discover"));
     run->setToolTip(tr("What does the simulation get wrong, and why? (score tests, fits, held-out gain)"));
     m_extend = new QPushButton(tr("Extend the model"));
     m_extend->setEnabled(false);
-    m_extend->setToolTip(tr("Make the extended model (named causes, refitted h_HDT and k_HDT, residual models "
-                            "retrained) the session's model"));
+    m_extend->setToolTip(
+        tr("Make the extended model (named causes, refitted h_HDT and k_HDT, residual models "
+           "retrained) the session's model"));
     m_verdict = new QLabel(tr("Run discovery on the loaded data with the current model."));
     m_verdict->setWordWrap(true);
     m_ranking = new QTableWidget(0, 5);
-    m_ranking->setHorizontalHeaderLabels({tr("Cause"), tr("Score z"), tr("p (Holm)"), tr("Fitted"), tr("Loss")});
+    m_ranking->setHorizontalHeaderLabels(
+        {tr("Cause"), tr("Score z"), tr("p (Holm)"), tr("Fitted"), tr("Loss")});
     m_ranking->verticalHeader()->hide();
     m_ranking->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_gains = new QTableWidget(0, 4);
@@ -79,17 +82,20 @@ void DiscoverPanel::show() {
     for (const auto& f : d.findings) {
         named << QString::fromStdString(f.cause);
     }
-    m_verdict->setText(d.findings.empty()
-                           ? tr("Verdict: %1. No mechanism is named.").arg(QString::fromStdString(d.verdict))
-                           : tr("Verdict: %1. Named: %2.").arg(QString::fromStdString(d.verdict), named.join(", ")));
+    m_verdict->setText(
+        d.findings.empty()
+            ? tr("Verdict: %1. No mechanism is named.").arg(QString::fromStdString(d.verdict))
+            : tr("Verdict: %1. Named: %2.").arg(QString::fromStdString(d.verdict), named.join(", ")));
     m_extend->setEnabled(!d.findings.empty());
     m_ranking->setRowCount(static_cast<int>(d.ranking.size()));
     for (std::size_t i = 0; i < d.ranking.size(); ++i) {
         const auto& c = d.ranking[i];
-        const QStringList cells{QString::fromStdString(c.cause), QString::number(c.score, 'f', 2),
-                                QString::number(c.pHolm, 'g', 3), c.fitted ? tr("yes") : tr("no"),
-                                c.fitted ? QStringLiteral("%1 → %2").arg(c.fitLossBefore, 0, 'g', 4).arg(c.fitLossAfter, 0, 'g', 4)
-                                         : QStringLiteral("–")};
+        const QStringList cells{
+            QString::fromStdString(c.cause), QString::number(c.score, 'f', 2),
+            QString::number(c.pHolm, 'g', 3), c.fitted ? tr("yes") : tr("no"),
+            c.fitted
+                ? QStringLiteral("%1 → %2").arg(c.fitLossBefore, 0, 'g', 4).arg(c.fitLossAfter, 0, 'g', 4)
+                : QStringLiteral("–")};
         for (int col = 0; col < cells.size(); ++col) {
             m_ranking->setItem(static_cast<int>(i), col, new QTableWidgetItem(cells[col]));
         }
@@ -118,16 +124,19 @@ void DiscoverPanel::show() {
         const auto row = [&](const QString& what, double before, double after, const QString& unit) {
             const int r2 = m_gains->rowCount();
             m_gains->insertRow(r2);
-            const QStringList cells{what, QString::number(before, 'g', 4), QString::number(after, 'g', 4), unit};
+            const QStringList cells{what, QString::number(before, 'g', 4), QString::number(after, 'g', 4),
+                                    unit};
             for (int c = 0; c < cells.size(); ++c) {
                 m_gains->setItem(r2, c, new QTableWidgetItem(cells[c]));
             }
         };
-        row(tr("MAE X_out (physics)"), d.findings.front().gain.maeMoistureBefore, g.maeMoistureAfter, tr("% wb"));
-        row(tr("MAE T_out (physics)"), d.findings.front().gain.maeTemperatureBefore, g.maeTemperatureAfter, tr("°C"));
+        row(tr("MAE X_out (physics)"), d.findings.front().gain.maeMoistureBefore, g.maeMoistureAfter,
+            tr("% wb"));
+        row(tr("MAE T_out (physics)"), d.findings.front().gain.maeTemperatureBefore, g.maeTemperatureAfter,
+            tr("°C"));
         row(tr("R² X_out"), d.findings.front().gain.r2MoistureBefore, g.r2MoistureAfter, QString());
-        row(tr("low-frequency share"), d.findings.front().gain.lowFrequencyShareBefore, g.lowFrequencyShareAfter,
-            QString());
+        row(tr("low-frequency share"), d.findings.front().gain.lowFrequencyShareBefore,
+            g.lowFrequencyShareAfter, QString());
         if (r->hasHybrid) {
             row(tr("MAE X_out (PGRL-CC)"), r->hybridMaeMoistureBefore, r->hybridMaeMoistureAfter, tr("% wb"));
         }

@@ -152,7 +152,8 @@ bool ModelPanel::editParameter(int row, double value) {
         Q_EMIT m_workbench.status(msg);
         return false;
     }
-    m_undo->push(new SetParameterCommand(m_workbench, info.id, m_workbench.model().parameters[info.id], value));
+    m_undo->push(
+        new SetParameterCommand(m_workbench, info.id, m_workbench.model().parameters[info.id], value));
     return true;
 }
 
@@ -163,9 +164,13 @@ void ModelPanel::fillTable() {
     const auto& p = m_workbench.model().parameters;
     for (std::size_t i = 0; i < table.size(); ++i) {
         const auto& info = table[i];
-        const QStringList cells{sv(info.symbol), QString::number(p[info.id], 'g', 6), sv(info.unit),
-                                QString::number(info.lower, 'g', 4), QString::number(info.upper, 'g', 4),
-                                sv(info.source), sv(info.meaning)};
+        const QStringList cells{sv(info.symbol),
+                                QString::number(p[info.id], 'g', 6),
+                                sv(info.unit),
+                                QString::number(info.lower, 'g', 4),
+                                QString::number(info.upper, 'g', 4),
+                                sv(info.source),
+                                sv(info.meaning)};
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
             if (c != 1 || info.fixed) {
@@ -199,7 +204,8 @@ void ModelPanel::redraw() {
     const int measured[4] = {6, 7, 5, -1};
     for (int i = 0; i < 4; ++i) {
         if (measured[i] >= 0) {
-            m_plots->addCurve(i, tr("measured"), t, valuesOf(batch, series[static_cast<std::size_t>(measured[i])]),
+            m_plots->addCurve(i, tr("measured"), t,
+                              valuesOf(batch, series[static_cast<std::size_t>(measured[i])]),
                               QColor(31, 119, 180));
         } else if (batch.hasTHdt) {
             QVector<double> v(static_cast<int>(batch.rows()));

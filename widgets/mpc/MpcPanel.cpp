@@ -23,11 +23,11 @@
 namespace drytwin::widgets {
 
 namespace {
-const control::ControllerKind kKinds[] = {control::ControllerKind::Pbm, control::ControllerKind::ExtInputResidual,
-                                          control::ControllerKind::Lstm, control::ControllerKind::PgrlCc,
-                                          control::ControllerKind::Pi};
-const QColor kColours[] = {QColor(127, 127, 127), QColor(188, 189, 34), QColor(140, 86, 75), QColor(214, 39, 40),
-                           QColor(31, 119, 180)};
+const control::ControllerKind kKinds[] = {
+    control::ControllerKind::Pbm, control::ControllerKind::ExtInputResidual, control::ControllerKind::Lstm,
+    control::ControllerKind::PgrlCc, control::ControllerKind::Pi};
+const QColor kColours[] = {QColor(127, 127, 127), QColor(188, 189, 34), QColor(140, 86, 75),
+                           QColor(214, 39, 40), QColor(31, 119, 180)};
 } // namespace
 
 MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
@@ -39,8 +39,9 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     auto* openFile = new QPushButton(tr("Open scenario…"));
     m_editor = new QPlainTextEdit;
     m_editor->setLineWrapMode(QPlainTextEdit::NoWrap);
-    m_editor->setToolTip(tr("The scenario as JSON (schema in docs/mpc.md): setpoint steps, input steps and ramps, "
-                            "hidden mechanisms switched on mid-run, noise. Edits are checked when you run."));
+    m_editor->setToolTip(
+        tr("The scenario as JSON (schema in docs/mpc.md): setpoint steps, input steps and ramps, "
+           "hidden mechanisms switched on mid-run, noise. Edits are checked when you run."));
     auto* controllers = new QHBoxLayout;
     for (int i = 0; i < 5; ++i) {
         m_controllers[i] = new QCheckBox(QString::fromLatin1(control::controllerName(kKinds[i])));
@@ -53,8 +54,9 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     m_note = new QLabel(tr("Runs the scenario against the virtual plant once per controller."));
     m_note->setWordWrap(true);
     m_table = new QTableWidget(0, 7);
-    m_table->setHorizontalHeaderLabels({tr("Controller"), tr("IAE [%·s]"), tr("Effort [K²]"), tr("Violations [%]"),
-                                        tr("Solve median [ms]"), tr("Fallbacks"), tr("Model gain [%/K]")});
+    m_table->setHorizontalHeaderLabels({tr("Controller"), tr("IAE [%·s]"), tr("Effort [K²]"),
+                                        tr("Violations [%]"), tr("Solve median [ms]"), tr("Fallbacks"),
+                                        tr("Model gain [%/K]")});
     m_table->verticalHeader()->hide();
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_plots = new PlotStack;
@@ -93,7 +95,8 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     connect(m_scenario, &QComboBox::currentTextChanged, this, load);
     load();
     connect(openFile, &QPushButton::clicked, this, [this] {
-        const QString p = QFileDialog::getOpenFileName(this, tr("Open scenario"), {}, tr("Scenarios (*.json)"));
+        const QString p =
+            QFileDialog::getOpenFileName(this, tr("Open scenario"), {}, tr("Scenarios (*.json)"));
         QFile f(p);
         if (!p.isEmpty() && f.open(QIODevice::ReadOnly)) {
             m_editor->setPlainText(QString::fromUtf8(f.readAll()));
@@ -121,7 +124,8 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
 void MpcPanel::run() {
     // The editor's text goes through the engine's own scenario parser (errors name the line).
     const QString dir = QStandardPaths::writableLocation(QStandardPaths::TempLocation);
-    m_tempScenario = QDir(dir).filePath(QStringLiteral("drytwin-scenario-%1.json").arg(QCoreApplication::applicationPid()));
+    m_tempScenario = QDir(dir).filePath(
+        QStringLiteral("drytwin-scenario-%1.json").arg(QCoreApplication::applicationPid()));
     QFile f(m_tempScenario);
     if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
         m_note->setText(tr("Cannot write %1").arg(m_tempScenario));
@@ -166,7 +170,8 @@ void MpcPanel::show() {
             run.ran ? QString::number(m.effortK2, 'f', 1) : QString::fromStdString(run.skippedReason),
             run.ran ? QString::number(m.violationPct, 'f', 1) : QString(),
             run.ran && !pi ? QString::number(m.solveMsMedian, 'f', 2) : QStringLiteral("–"),
-            run.ran && !pi ? QStringLiteral("%1 / %2").arg(m.fallbacks).arg(m.decisions) : QStringLiteral("–"),
+            run.ran && !pi ? QStringLiteral("%1 / %2").arg(m.fallbacks).arg(m.decisions)
+                           : QStringLiteral("–"),
             run.ran && !pi ? QString::number(m.gainPctPerKMedian, 'f', 4) : QStringLiteral("–")};
         for (int c = 0; c < cells.size(); ++c) {
             m_table->setItem(row, c, new QTableWidgetItem(cells[c]));
@@ -178,8 +183,9 @@ void MpcPanel::show() {
         const QColor colour = kColours[k % 5];
         const QVector<double> t(run.timeS.begin(), run.timeS.end());
         if (!setpointDrawn) {
-            m_plots->addCurve(0, tr("setpoint"), t, QVector<double>(run.setpointPct.begin(), run.setpointPct.end()),
-                              Qt::black, Qt::DashLine, 1.4);
+            m_plots->addCurve(0, tr("setpoint"), t,
+                              QVector<double>(run.setpointPct.begin(), run.setpointPct.end()), Qt::black,
+                              Qt::DashLine, 1.4);
             QVector<double> hi, lo;
             for (double s : run.setpointPct) {
                 hi << s + cl.scenario.bandPct;
@@ -192,7 +198,8 @@ void MpcPanel::show() {
         const QString name = QString::fromLatin1(control::controllerName(run.kind));
         m_plots->addCurve(0, name, t, QVector<double>(run.xOutTruePct.begin(), run.xOutTruePct.end()), colour,
                           Qt::SolidLine, run.kind == control::ControllerKind::PgrlCc ? 1.8 : 1.1);
-        m_plots->addCurve(1, name, t, QVector<double>(run.hotAirSetpointC.begin(), run.hotAirSetpointC.end()), colour);
+        m_plots->addCurve(1, name, t, QVector<double>(run.hotAirSetpointC.begin(), run.hotAirSetpointC.end()),
+                          colour);
         for (const auto& p : run.predictions) {
             if (p.atS == at) {
                 QVector<double> pt, px;
@@ -200,17 +207,19 @@ void MpcPanel::show() {
                     pt << p.atS + static_cast<double>(i);
                     px << p.xOutPct[i];
                 }
-                m_plots->addCurve(0, tr("%1 predicted at %2 s").arg(name).arg(at), pt, px, colour, Qt::DashDotLine, 1.6);
+                m_plots->addCurve(0, tr("%1 predicted at %2 s").arg(name).arg(at), pt, px, colour,
+                                  Qt::DashDotLine, 1.6);
             }
         }
     }
     m_table->resizeColumnsToContents();
     m_plots->rescale();
     m_plots->setTimeCursor(at > 0 ? at : NAN);
-    m_note->setText(tr("%1. IAE and violations on the product's true outlet moisture; the plant's own gain is %2 % "
-                       "wb/K.")
-                        .arg(QString::fromStdString(r->ending.message))
-                        .arg(cl.plantGainPctPerK, 0, 'f', 4));
+    m_note->setText(
+        tr("%1. IAE and violations on the product's true outlet moisture; the plant's own gain is %2 % "
+           "wb/K.")
+            .arg(QString::fromStdString(r->ending.message))
+            .arg(cl.plantGainPctPerK, 0, 'f', 4));
 }
 
 } // namespace drytwin::widgets

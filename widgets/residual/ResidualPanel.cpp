@@ -22,15 +22,17 @@ namespace drytwin::widgets {
 
 namespace {
 const QColor kModelColour[] = {QColor(127, 127, 127), QColor(188, 189, 34), QColor(140, 86, 75),
-                               QColor(148, 103, 189), QColor(44, 160, 44), QColor(214, 39, 40)};
+                               QColor(148, 103, 189), QColor(44, 160, 44),  QColor(214, 39, 40)};
 }
 
-ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
+ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
+    : QWidget(parent), m_workbench(workbench) {
     m_lags = new QComboBox;
     m_lags->addItems({tr("chosen by validation (16, 32, 60)"), QStringLiteral("8"), QStringLiteral("16"),
                       QStringLiteral("32"), QStringLiteral("60")});
     m_stability = new QComboBox;
-    m_stability->addItems({tr("Eq. 30: constrained fit with certificate"), tr("eigenvalues pulled in after the fit")});
+    m_stability->addItems(
+        {tr("Eq. 30: constrained fit with certificate"), tr("eigenvalues pulled in after the fit")});
     m_projection = new QCheckBox(tr("orthogonal projection P⊥ (Eq. 27)"));
     m_projection->setChecked(true);
     auto* train = new QPushButton(tr("Train PGRL-CC and the baselines"));
@@ -39,8 +41,9 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent) : QWidget(pa
     form->addRow(tr("stability"), m_stability);
     form->addRow(QString(), m_projection);
     form->addRow(QString(), train);
-    m_note = new QLabel(tr("Trains on the chronological 70 % and evaluates on the rest; settings are chosen inside "
-                           "the training part."));
+    m_note = new QLabel(
+        tr("Trains on the chronological 70 % and evaluates on the rest; settings are chosen inside "
+           "the training part."));
     m_note->setWordWrap(true);
     m_metrics = new QTableWidget(0, 6);
     m_metrics->setHorizontalHeaderLabels({tr("Model"), tr("MAE X_out [% wb]"), tr("R² X_out"),
@@ -80,8 +83,8 @@ void ResidualPanel::train() {
         o.residual.residualLags = m_lags->currentText().toInt();
     }
     o.residual.orthogonalProjection = m_projection->isChecked();
-    o.residual.stabilityMethod =
-        m_stability->currentIndex() == 0 ? residual::StabilityMethod::Constrained : residual::StabilityMethod::EigenvaluePull;
+    o.residual.stabilityMethod = m_stability->currentIndex() == 0 ? residual::StabilityMethod::Constrained
+                                                                  : residual::StabilityMethod::EigenvaluePull;
     if (m_quick) {
         o.lstm.epochs = 2;
         o.lstm.hidden = 8;
@@ -108,9 +111,10 @@ void ResidualPanel::showEvaluation() {
     for (std::size_t i = 0; i < e.models.size(); ++i) {
         const auto& m = e.models[i];
         const double s30 = h30 < m.skillMoistureByHorizon.size() ? m.skillMoistureByHorizon[h30] : NAN;
-        const QStringList cells{QString::fromStdString(m.name),       QString::number(m.moisture.mae, 'f', 4),
-                                QString::number(m.moisture.r2, 'f', 3), QString::number(m.temperature.mae, 'f', 4),
-                                QString::number(m.skillMoisture, 'f', 3), QString::number(s30, 'f', 3)};
+        const QStringList cells{
+            QString::fromStdString(m.name),           QString::number(m.moisture.mae, 'f', 4),
+            QString::number(m.moisture.r2, 'f', 3),   QString::number(m.temperature.mae, 'f', 4),
+            QString::number(m.skillMoisture, 'f', 3), QString::number(s30, 'f', 3)};
         for (int c = 0; c < cells.size(); ++c) {
             m_metrics->setItem(static_cast<int>(i), c, new QTableWidgetItem(cells[c]));
         }
@@ -124,7 +128,8 @@ void ResidualPanel::showEvaluation() {
                           reference ? Qt::DashLine : Qt::SolidLine, m.name == "pgrl_cc" ? 2.2 : 1.3);
     }
     m_metrics->resizeColumnsToContents();
-    m_skill->addCurve(0, tr("skill 1 (ties the better reference)"), {1, 180}, {1, 1}, Qt::black, Qt::DotLine, 1.0);
+    m_skill->addCurve(0, tr("skill 1 (ties the better reference)"), {1, 180}, {1, 1}, Qt::black, Qt::DotLine,
+                      1.0);
     m_skill->rescale();
 
     m_eigen->clearCurves();
@@ -146,29 +151,48 @@ void ResidualPanel::showEvaluation() {
             ay << l.imag();
         }
         // Open rings before, filled dots after: where the constraint moved nothing they nest.
-        auto* before = m_eigen->addDots(0, tr("A unconstrained (ρ = %1)").arg(d.pgrlCcBefore.spectralRadius, 0, 'f', 4),
-                                        bx, by, QColor(255, 127, 14));
+        auto* before =
+            m_eigen->addDots(0, tr("A unconstrained (ρ = %1)").arg(d.pgrlCcBefore.spectralRadius, 0, 'f', 4),
+                             bx, by, QColor(255, 127, 14));
         before->setStyle(QwtPlotCurve::NoCurve);
-        before->setSymbol(new QwtSymbol(QwtSymbol::Ellipse, Qt::NoBrush, QPen(QColor(255, 127, 14), 1.3), QSize(9, 9)));
-        auto* after = m_eigen->addDots(0, tr("A with Eq. 30 (ρ = %1)").arg(d.pgrlCcAfter.spectralRadius, 0, 'f', 4), ax,
-                                       ay, QColor(31, 119, 180));
+        before->setSymbol(
+            new QwtSymbol(QwtSymbol::Ellipse, Qt::NoBrush, QPen(QColor(255, 127, 14), 1.3), QSize(9, 9)));
+        auto* after =
+            m_eigen->addDots(0, tr("A with Eq. 30 (ρ = %1)").arg(d.pgrlCcAfter.spectralRadius, 0, 'f', 4), ax,
+                             ay, QColor(31, 119, 180));
         after->setStyle(QwtPlotCurve::NoCurve);
-        after->setSymbol(new QwtSymbol(QwtSymbol::Ellipse, QBrush(QColor(31, 119, 180)), Qt::NoPen, QSize(4, 4)));
+        after->setSymbol(
+            new QwtSymbol(QwtSymbol::Ellipse, QBrush(QColor(31, 119, 180)), Qt::NoPen, QSize(4, 4)));
     }
     m_eigen->rescale();
     // One unit the same length on both axes, so the unit circle is drawn as a circle.
     const QWidget* canvas = m_eigen->plot(0)->canvas();
-    const double aspect = canvas->height() > 0 ? static_cast<double>(canvas->width()) / canvas->height() : 1.0;
-    m_eigen->plot(0)->setAxisScale(QwtPlot::xBottom, -1.15 * std::max(1.0, aspect), 1.15 * std::max(1.0, aspect));
-    m_eigen->plot(0)->setAxisScale(QwtPlot::yLeft, -1.15 * std::max(1.0, 1.0 / aspect), 1.15 * std::max(1.0, 1.0 / aspect));
+    const double aspect =
+        canvas->height() > 0 ? static_cast<double>(canvas->width()) / canvas->height() : 1.0;
+    m_eigen->plot(0)->setAxisScale(QwtPlot::xBottom, -1.15 * std::max(1.0, aspect),
+                                   1.15 * std::max(1.0, aspect));
+    m_eigen->plot(0)->setAxisScale(QwtPlot::yLeft, -1.15 * std::max(1.0, 1.0 / aspect),
+                                   1.15 * std::max(1.0, 1.0 / aspect));
     m_eigen->plot(0)->replot();
     // The curves start at 1 step; the open-loop PBM's skill (about 10) would flatten the rest.
     m_skill->plot(0)->setAxisScale(QwtPlot::xBottom, 1, 200);
     m_skill->plot(0)->setAxisScale(QwtPlot::yLeft, 0, 2.5);
     m_skill->plot(0)->replot();
+    QString rates;
+    if (d.hasPgrlCcEigenvalues && !d.pgrlCcAfter.contractionRatePerStep.empty()) {
+        // The slowest mode decides how long a disturbance of the residual lingers.
+        double slowest = d.pgrlCcAfter.contractionRatePerStep.front();
+        for (double r : d.pgrlCcAfter.contractionRatePerStep) {
+            slowest = std::min(slowest, r);
+        }
+        rates = tr(" Slowest contraction of A: %1 per step (half-life %2 s).")
+                    .arg(slowest, 0, 'g', 3)
+                    .arg(slowest > 0 ? std::log(2.0) / slowest : INFINITY, 0, 'f', 0);
+    }
     m_note->setText(tr("Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last "
                        "measurement held, and the PBM with its last error held).")
-                        .arg(e.testRows));
+                        .arg(e.testRows) +
+                    rates);
 }
 
 } // namespace drytwin::widgets

@@ -44,8 +44,8 @@ constexpr double kTubeLength = 25.0, kTubeRadius = 0.3;
 constexpr double kBeltLength = 30.0, kBeltWidth = 1.2;
 constexpr double kWinnowerLength = 3.0;
 
-vtkSmartPointer<vtkActor> boxActor(double x0, double x1, double width, double height, double z, const double rgb[3],
-                                   double opacity) {
+vtkSmartPointer<vtkActor> boxActor(double x0, double x1, double width, double height, double z,
+                                   const double rgb[3], double opacity) {
     auto box = vtkSmartPointer<vtkCubeSource>::New();
     box->SetBounds(x0, x1, -width / 2, width / 2, z, z + height);
     auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
@@ -100,7 +100,8 @@ LineView3D::LineView3D(Workbench& workbench, QWidget* parent) : QWidget(parent),
         const int next = m_slider->value() + 10;
         m_slider->setValue(next > m_slider->maximum() ? 0 : next);
     });
-    connect(m_quantity, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &LineView3D::updateParcels);
+    connect(m_quantity, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+            &LineView3D::updateParcels);
     connect(m_batch, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
         const auto& si = m_workbench.siBatches();
         const int b = m_batch->currentIndex();
@@ -142,8 +143,8 @@ void LineView3D::buildScene() {
     const double belt[3] = {0.35, 0.35, 0.38};
     m_renderer->AddActor(boxActor(kTubeLength, kTubeLength + kBeltLength, kBeltWidth, 0.1, 0.0, belt, 1.0));
     const double winnower[3] = {0.55, 0.65, 0.75};
-    m_renderer->AddActor(boxActor(kTubeLength + kBeltLength, kTubeLength + kBeltLength + kWinnowerLength, 2.0, 2.0,
-                                  0.0, winnower, 0.3));
+    m_renderer->AddActor(boxActor(kTubeLength + kBeltLength, kTubeLength + kBeltLength + kWinnowerLength, 2.0,
+                                  2.0, 0.0, winnower, 0.3));
 
     m_parcels = vtkSmartPointer<vtkPolyData>::New();
     m_lut = vtkSmartPointer<vtkLookupTable>::New();
@@ -220,7 +221,8 @@ void LineView3D::updateParcels() {
     auto points = vtkSmartPointer<vtkPoints>::New();
     auto values = vtkSmartPointer<vtkDoubleArray>::New();
     values->SetName("value");
-    if (sim && b >= 0 && static_cast<std::size_t>(b) < si.size() && static_cast<std::size_t>(b) < sim->simulations.size()) {
+    if (sim && b >= 0 && static_cast<std::size_t>(b) < si.size() &&
+        static_cast<std::size_t>(b) < sim->simulations.size()) {
         const auto& batch = si[static_cast<std::size_t>(b)];
         const auto& r = sim->simulations[static_cast<std::size_t>(b)];
         const auto& p = m_workbench.model().parameters;
@@ -230,7 +232,9 @@ void LineView3D::updateParcels() {
         const double total = tauH + tauC + tW;
         const bool moisture = m_quantity->currentIndex() == 0;
         const auto n = static_cast<long>(batch.rows());
-        const auto clampRow = [n](double k) { return static_cast<std::size_t>(std::clamp<long>(std::lround(k), 0, n - 1)); };
+        const auto clampRow = [n](double k) {
+            return static_cast<std::size_t>(std::clamp<long>(std::lround(k), 0, n - 1));
+        };
         // One parcel per second of residence: the one that entered s seconds ago.
         for (double s = 0; s < total; s += 1.0) {
             const std::size_t entry = clampRow(m_time - s);
@@ -238,10 +242,14 @@ void LineView3D::updateParcels() {
             if (r.proxyXHdtDb.size() <= leaves) {
                 continue;
             }
-            const double in = moisture ? units::dryToWetPct(batch.xInDb[entry]) : units::kelvinToCelsius(batch.tInK[entry]);
-            const double hdt = moisture ? units::dryToWetPct(r.proxyXHdtDb[leaves]) : units::kelvinToCelsius(r.proxyTHdtK[leaves]);
-            const double conv = moisture ? units::dryToWetPct(r.proxyXConvDb[leaves]) : units::kelvinToCelsius(r.proxyTConvK[leaves]);
-            const double out = moisture ? units::dryToWetPct(r.xOutDb[leaves]) : units::kelvinToCelsius(r.tOutK[leaves]);
+            const double in =
+                moisture ? units::dryToWetPct(batch.xInDb[entry]) : units::kelvinToCelsius(batch.tInK[entry]);
+            const double hdt = moisture ? units::dryToWetPct(r.proxyXHdtDb[leaves])
+                                        : units::kelvinToCelsius(r.proxyTHdtK[leaves]);
+            const double conv = moisture ? units::dryToWetPct(r.proxyXConvDb[leaves])
+                                         : units::kelvinToCelsius(r.proxyTConvK[leaves]);
+            const double out =
+                moisture ? units::dryToWetPct(r.xOutDb[leaves]) : units::kelvinToCelsius(r.tOutK[leaves]);
             double x = 0, y = 0, z = 0, v = 0;
             // A little spread across the section so the parcels do not hide each other.
             const double lateral = 0.25 * std::sin(s * 2.3);

@@ -52,7 +52,8 @@ public:
         }
         std::vector<std::vector<double>> out;
         for (const auto& plan : plans) {
-            std::vector<double> hot(at.record->tHotK.begin(), at.record->tHotK.begin() + static_cast<long>(at.now));
+            std::vector<double> hot(at.record->tHotK.begin(),
+                                    at.record->tHotK.begin() + static_cast<long>(at.now));
             hot.insert(hot.end(), plan.begin(), plan.end());
             const auto x = m_p.response(hot);
             out.emplace_back(x.begin() + static_cast<long>(at.now),
@@ -81,7 +82,8 @@ void appendRow(data::SiBatch& b, double hotK, double spK) {
 }
 
 std::string scenarioText(const std::string& extra) {
-    return "{\n  \"name\": \"t\",\n  \"length_s\": 60,\n  \"warmup_s\": 120,\n" + extra + "  \"seed\": 3\n}\n";
+    return "{\n  \"name\": \"t\",\n  \"length_s\": 60,\n  \"warmup_s\": 120,\n" + extra +
+           "  \"seed\": 3\n}\n";
 }
 
 } // namespace
@@ -116,8 +118,8 @@ private Q_SLOTS:
 
     void metricsByHand() {
         // |e| = 0, 0.6, 0.8, 0.5 → IAE 1.9 %·s; outside ±0.5: 2 of 4; Δu = 0, 2, 0, −3 → 13 K².
-        const auto m = control::trajectoryMetrics({13, 13.6, 12.2, 13}, {13, 13, 13, 12.5}, {160, 162, 162, 159},
-                                                  0.5, 160);
+        const auto m = control::trajectoryMetrics({13, 13.6, 12.2, 13}, {13, 13, 13, 12.5},
+                                                  {160, 162, 162, 159}, 0.5, 160);
         QVERIFY(std::abs(m.iaePctS - 1.9) < 1e-12);
         QVERIFY(std::abs(m.violationPct - 50.0) < 1e-12);
         QVERIFY(std::abs(m.effortK2 - 13.0) < 1e-12);
@@ -128,7 +130,8 @@ private Q_SLOTS:
             const auto s = control::parseScenario(text, name);
             QVERIFY2(s.ok(), s ? "" : s.error().message().c_str());
         }
-        const auto paper = control::parseScenario(control::bundledScenarios().at(control::kDefaultScenario), "p");
+        const auto paper =
+            control::parseScenario(control::bundledScenarios().at(control::kDefaultScenario), "p");
         QVERIFY(paper.ok());
         QCOMPARE(paper->lengthS, 1000);
         QVERIFY(!paper->setpointSteps.empty() && !paper->inputChanges.empty());
@@ -152,7 +155,8 @@ private Q_SLOTS:
         QVERIFY(range.error().reason.find("setpoint_steps[1].to_pct") != std::string::npos);
 
         const auto mech = control::parseScenario(
-            scenarioText("  \"mechanisms\": [{\"mechanism\": \"boiler_explosion\", \"strength\": 1}],\n"), "m.json");
+            scenarioText("  \"mechanisms\": [{\"mechanism\": \"boiler_explosion\", \"strength\": 1}],\n"),
+            "m.json");
         QVERIFY(!mech.ok());
         QVERIFY(mech.error().reason.find("boiler_explosion") != std::string::npos);
 
@@ -184,11 +188,12 @@ private Q_SLOTS:
             const double target = k < 400 ? 12.5 : 13.2;
             double next = lastSp;
             if (k >= 1 && k % 2 == 0) {
-                const auto d = mpc.decide(control::DecisionPoint{&record, static_cast<std::size_t>(k)}, lastSp,
-                                          target, 0.5, 2);
+                const auto d = mpc.decide(control::DecisionPoint{&record, static_cast<std::size_t>(k)},
+                                          lastSp, target, 0.5, 2);
                 fallbacks += d.fallback ? 1 : 0;
                 next = d.setpointK;
-                QVERIFY(std::abs(d.gainPctPerK - p.gain) < 0.01 * std::abs(p.gain)); // the step response, settled
+                QVERIFY(std::abs(d.gainPctPerK - p.gain) <
+                        0.01 * std::abs(p.gain)); // the step response, settled
             }
             QVERIFY(next >= units::kKelvinOffset + settings.setpointLowC - 1e-9);
             QVERIFY(next <= units::kKelvinOffset + settings.setpointHighC + 1e-9);

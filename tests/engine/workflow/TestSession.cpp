@@ -387,8 +387,8 @@ private Q_SLOTS:
                 QVERIFY2(std::filesystem::exists(f), f.c_str());
             }
         }
-        QCOMPARE(stages, QStringList({"inspect", "calibrate", "train", "evaluate", "ablation", "discover", "mpc",
-                                      "report"}));
+        QCOMPARE(stages, QStringList({"inspect", "calibrate", "train", "evaluate", "ablation", "discover",
+                                      "mpc", "report"}));
         // Table 3's seven rows and three more: the other energy balance, Eq. 27 literally, the pull.
         QCOMPARE(r->ablation.rows.size(), std::size_t(10));
         for (const auto& row : r->ablation.rows) {
@@ -416,7 +416,8 @@ private Q_SLOTS:
         // The closed loop: mpc.json holds the run's numbers and the report its Table 2.
         const auto mpc = nlohmann::json::parse(*readWholeFile(p.outFolder + "/mpc.json"));
         QCOMPARE(mpc["steps"].get<int>(), 60);
-        QCOMPARE(mpc["controllers"]["pbm"]["iae"].get<double>(), r->mpc.closedLoop.runs.front().metrics.iaePctS);
+        QCOMPARE(mpc["controllers"]["pbm"]["iae"].get<double>(),
+                 r->mpc.closedLoop.runs.front().metrics.iaePctS);
         QVERIFY(mpc["controllers"].contains("pi") && mpc["controllers"].contains("pgrl_cc"));
         QVERIFY(report->find("Closed-loop MPC (paper Table 2)") != std::string::npos);
 
