@@ -12,128 +12,128 @@
 <context>
     <name>drytwin::widgets::CalibrationPanel</name>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="27"/>
         <source>Free</source>
         <translation>自由</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="27"/>
         <source>Lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="27"/>
         <source>Upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="27"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="58"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="51"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="52"/>
         <source> evaluations</source>
         <translation> 次评估</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="52"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="53"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="53"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="54"/>
         <source>Stop, keep best</source>
         <translation>停止并保留最优</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="58"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="58"/>
         <source>Estimate</source>
         <translation>估计值</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="58"/>
         <source>95 % interval</source>
         <translation>95 % 区间</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="58"/>
         <source>Fisher SE</source>
         <translation>Fisher 标准误</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="58"/>
         <source>At bound</source>
         <translation>触及边界</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="60"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="62"/>
         <source>Fits the free parameters to the calibration rows (every 10th kept row, the first 300) with NLopt: a global search, then BOBYQA.</source>
         <translation>用 NLopt 将自由参数拟合到标定行（保留行中每隔 10 行取一行，取前 300 行）：先全局搜索，再用 BOBYQA。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="66"/>
         <source>best loss [-]</source>
         <translation>最优损失 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="67"/>
         <source>parameter / its final value [-]</source>
         <translation>参数 / 其最终值 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="66"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="68"/>
         <source>share of the evaluation budget used [-]</source>
         <translation>已用评估预算比例 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="70"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="72"/>
         <source>Free parameters and their search bounds:</source>
         <translation>自由参数及其搜索范围：</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="95"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="97"/>
         <source>best loss so far</source>
         <translation>迄今最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="131"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="134"/>
         <source>Cannot calibrate: %1</source>
         <translation>无法标定：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="138"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="141"/>
         <source>Calibrating…</source>
         <translation>正在标定…</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="155"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="161"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="155"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="161"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="161"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="167"/>
         <source>%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. Intervals: %10.</source>
         <translation>%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口 MAE %6 → %7 % 湿基，%8 → %9 °C。区间：%10。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="188"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="194"/>
         <source>loss evaluations [-]</source>
         <translation>损失评估次数 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="189"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="195"/>
         <source>best loss</source>
         <translation>最优损失</translation>
     </message>
@@ -146,42 +146,42 @@
         <translation>列映射</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="43"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="44"/>
         <source>Could not read the headers of %1.</source>
         <translation>无法读取 %1 的表头。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="44"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="45"/>
         <source>Choose, for each column DryTwin needs, the header your files use. The values must be in the unit shown; required columns are marked *.</source>
         <translation>为 DryTwin 需要的每一列选择您文件中使用的表头。数值必须采用所示单位；必需的列标有 *。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="49"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="51"/>
         <source>DryTwin column</source>
         <translation>DryTwin 列</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="49"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="51"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="49"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="51"/>
         <source>Header in your file</source>
         <translation>您文件中的表头</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="49"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="51"/>
         <source>Meaning</source>
         <translation>含义</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="62"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="64"/>
         <source>(not in the file)</source>
         <translation>（文件中没有）</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="118"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="120"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -189,103 +189,103 @@
 <context>
     <name>drytwin::widgets::DataPanel</name>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="35"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="36"/>
         <source>Open file…</source>
         <translation>打开文件…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="36"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="37"/>
         <source>Open folder…</source>
         <translation>打开文件夹…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="37"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
         <source>Column mapping…</source>
         <translation>列映射…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
         <source>Files with other column names: map them onto DryTwin&apos;s columns, then load</source>
         <translation>列名不同的文件：先映射到 DryTwin 的列，再加载</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="42"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="43"/>
         <source>Batches overlaid</source>
         <translation>批次叠加</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="42"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="43"/>
         <source>Batches one after another</source>
         <translation>批次首尾相接</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="44"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="45"/>
         <source>Batch</source>
         <translation>批次</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="44"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="45"/>
         <source>Rows</source>
         <translation>行数</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="44"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="45"/>
         <source>Kept</source>
         <translation>保留</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="44"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="45"/>
         <source>Length [min]</source>
         <translation>时长 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="45"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="46"/>
         <source>Mean X_out [% wb]</source>
         <translation>平均 X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="45"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="46"/>
         <source>Mean T_hot [°C]</source>
         <translation>平均 T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="61"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="62"/>
         <source>Batches (select several to overlay; drop files here):</source>
         <translation>批次（多选可叠加；可将文件拖放到此处）：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="79"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="81"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="79"/>
-        <location filename="../widgets/data/DataPanel.cpp" line="92"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="81"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="94"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="85"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="87"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="91"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="93"/>
         <source>A batch file with your column names</source>
         <translation>一个使用您的列名的批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="100"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="103"/>
         <source>Save the column mapping</source>
         <translation>保存列映射</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="101"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="103"/>
         <source>Mappings (*.json)</source>
         <translation>映射 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="166"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="170"/>
         <source>Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.</source>
         <translation>清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。</translation>
     </message>
@@ -293,231 +293,261 @@
 <context>
     <name>drytwin::widgets::DiagnosticsPanel</name>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="24"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="29"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="25"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="30"/>
         <source>Evaluate a trained model to see its residuals.</source>
         <translation>评估已训练的模型以查看其残差。</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="28"/>
-        <source>ACF of the X_out residual [-]</source>
-        <translation>X_out 残差的自相关 [-]</translation>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="33"/>
+        <source>ACF [-]</source>
+        <translation>自相关 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="29"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="34"/>
         <source>lag [s]</source>
         <translation>滞后 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="31"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="36"/>
         <source>PSD [(% wb)²/Hz]</source>
         <translation>功率谱密度 [(% 湿基)²/Hz]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="32"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="37"/>
         <source>frequency [Hz]</source>
         <translation>频率 [Hz]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="37"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="42"/>
         <source>Models shown (tick to overlay):</source>
         <translation>显示的模型（勾选以叠加）：</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="73"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="46"/>
+        <source>error [% wb]</source>
+        <translation>误差 [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="62"/>
+        <source>Physics model&apos;s error against</source>
+        <translation>机理模型误差相对于</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="102"/>
         <source>%1: Ljung-Box p %2, residual mean %3 % wb</source>
         <translation>%1：Ljung-Box p = %2，残差均值 %3 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="108"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="138"/>
         <source>%1 (%2 % below 0.01 Hz)</source>
         <translation>%1（%2 % 低于 0.01 Hz）</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="114"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="144"/>
         <source>95 % band of white noise</source>
         <translation>白噪声 95 % 置信带</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="184"/>
+        <source>every 10th kept row</source>
+        <translation>保留行中每隔 10 行</translation>
     </message>
 </context>
 <context>
     <name>drytwin::widgets::DiscoverPanel</name>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="18"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="19"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="19"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="20"/>
         <source>What does the simulation get wrong, and why? (score tests, fits, held-out gain)</source>
         <translation>仿真哪里出错，为什么？（得分检验、拟合、留出数据上的改进）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="20"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="21"/>
         <source>Extend the model</source>
         <translation>扩展模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="22"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="24"/>
         <source>Make the extended model (named causes, refitted h_HDT and k_HDT, residual models retrained) the session&apos;s model</source>
         <translation>将扩展后的模型（已命名的原因、重新拟合的 h_HDT 与 k_HDT、重新训练的残差模型）设为当前模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="24"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="26"/>
         <source>Run discovery on the loaded data with the current model.</source>
         <translation>用当前模型在已加载的数据上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
         <source>p (Holm)</source>
         <translation>p（Holm）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
         <source>Fitted</source>
         <translation>已拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
         <source>Loss</source>
         <translation>损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>Held-out</source>
         <translation>留出数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>Before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>After</source>
         <translation>之后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
         <source>X_out residual [% wb]</source>
         <translation>X_out 残差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="37"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="40"/>
         <source>T_out residual [°C]</source>
         <translation>T_out 残差 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
         <source>time, batches one after another [h]</source>
         <translation>时间，批次首尾相接 [h]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="47"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="50"/>
         <source>Candidate causes, first round:</source>
         <translation>候选原因（第一轮）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="66"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="69"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="83"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="87"/>
         <source>Verdict: %1. No mechanism is named.</source>
         <translation>结论：%1。未命名任何机理。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="84"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="88"/>
         <source>Verdict: %1. Named: %2.</source>
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="108"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="118"/>
+        <source>%1 at %2 s (ccf %3%4)</source>
+        <translation>%1，滞后 %2 s（互相关 %3%4）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="122"/>
+        <source>, significant</source>
+        <translation>，显著</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="125"/>
+        <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="130"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="114"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="136"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="126"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="149"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="126"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="132"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="150"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="127"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="151"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="127"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="152"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="128"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="153"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="129"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="154"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="132"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="158"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="183"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="159"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="184"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -530,37 +560,37 @@
         <translation>%1：文件或文件夹不存在</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="21"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="22"/>
         <source>%1: the required column &apos;%2&apos; is missing</source>
         <translation>%1：缺少必需的列“%2”</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="26"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="29"/>
         <source>%1, line %2, column %3: text &apos;%4&apos; in the numeric column &apos;%5&apos;</source>
         <translation>%1，第 %2 行，第 %3 列：数值列“%5”中出现文本“%4”</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="32"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="36"/>
         <source>%1, line %2, column %3: time does not increase</source>
         <translation>%1，第 %2 行，第 %3 列：时间未递增</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="37"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="43"/>
         <source>%1, line %2, column %3: %4</source>
         <translation>%1，第 %2 行，第 %3 列：%4</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="42"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="49"/>
         <source>Parameter %1 = %2 lies outside its range [%3, %4]</source>
         <translation>参数 %1 = %2 超出其范围 [%3, %4]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="46"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="55"/>
         <source>No data loaded; open a batch file or folder first.</source>
         <translation>未加载数据；请先打开批次文件或文件夹。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="48"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="58"/>
         <source>Cancelled by the user.</source>
         <translation>已被用户取消。</translation>
     </message>
@@ -599,7 +629,7 @@
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="270"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="278"/>
         <source>%1 s of %2</source>
         <translation>%1 s / %2</translation>
     </message>
@@ -607,221 +637,221 @@
 <context>
     <name>drytwin::widgets::MainWindow</name>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="54"/>
+        <location filename="../widgets/MainWindow.cpp" line="55"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="68"/>
+        <location filename="../widgets/MainWindow.cpp" line="69"/>
         <source>Data</source>
         <translation>数据</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="69"/>
+        <location filename="../widgets/MainWindow.cpp" line="70"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="70"/>
+        <location filename="../widgets/MainWindow.cpp" line="71"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="71"/>
+        <location filename="../widgets/MainWindow.cpp" line="72"/>
         <source>Residual model</source>
         <translation>残差模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="72"/>
+        <location filename="../widgets/MainWindow.cpp" line="73"/>
         <source>Diagnostics</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="73"/>
+        <location filename="../widgets/MainWindow.cpp" line="74"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="74"/>
+        <location filename="../widgets/MainWindow.cpp" line="75"/>
         <source>What-if MPC</source>
         <translation>假设分析 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="75"/>
+        <location filename="../widgets/MainWindow.cpp" line="76"/>
         <source>3D line</source>
         <translation>三维产线</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="78"/>
+        <location filename="../widgets/MainWindow.cpp" line="79"/>
         <source>No data loaded. File ▸ Open data set…</source>
         <translation>未加载数据。文件 ▸ 打开数据集…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="82"/>
+        <location filename="../widgets/MainWindow.cpp" line="83"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="155"/>
+        <location filename="../widgets/MainWindow.cpp" line="158"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="156"/>
+        <location filename="../widgets/MainWindow.cpp" line="159"/>
         <source>&amp;Open batch file…</source>
         <translation>打开批次文件(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="157"/>
+        <location filename="../widgets/MainWindow.cpp" line="161"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="157"/>
+        <location filename="../widgets/MainWindow.cpp" line="161"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="163"/>
+        <location filename="../widgets/MainWindow.cpp" line="167"/>
         <source>Open data set &amp;folder…</source>
         <translation>打开数据集文件夹(&amp;F)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="164"/>
+        <location filename="../widgets/MainWindow.cpp" line="168"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="169"/>
+        <location filename="../widgets/MainWindow.cpp" line="173"/>
         <source>Open &amp;model…</source>
         <translation>打开模型(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="170"/>
+        <location filename="../widgets/MainWindow.cpp" line="175"/>
         <source>Open model</source>
         <translation>打开模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="170"/>
-        <location filename="../widgets/MainWindow.cpp" line="177"/>
+        <location filename="../widgets/MainWindow.cpp" line="175"/>
+        <location filename="../widgets/MainWindow.cpp" line="182"/>
         <source>Model files (*.json)</source>
         <translation>模型文件 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="175"/>
+        <location filename="../widgets/MainWindow.cpp" line="180"/>
         <source>Save model &amp;as…</source>
         <translation>模型另存为(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="176"/>
+        <location filename="../widgets/MainWindow.cpp" line="181"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="183"/>
+        <location filename="../widgets/MainWindow.cpp" line="188"/>
         <source>Open &amp;project…</source>
         <translation>打开项目(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="184"/>
-        <location filename="../widgets/MainWindow.cpp" line="187"/>
-        <location filename="../widgets/MainWindow.cpp" line="377"/>
+        <location filename="../widgets/MainWindow.cpp" line="190"/>
+        <location filename="../widgets/MainWindow.cpp" line="193"/>
+        <location filename="../widgets/MainWindow.cpp" line="388"/>
         <source>Open project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="184"/>
-        <location filename="../widgets/MainWindow.cpp" line="194"/>
-        <location filename="../widgets/MainWindow.cpp" line="204"/>
+        <location filename="../widgets/MainWindow.cpp" line="190"/>
+        <location filename="../widgets/MainWindow.cpp" line="200"/>
+        <location filename="../widgets/MainWindow.cpp" line="210"/>
         <source>DryTwin projects (*.drytwin)</source>
         <translation>DryTwin 项目 (*.drytwin)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="190"/>
+        <location filename="../widgets/MainWindow.cpp" line="196"/>
         <source>&amp;Save project</source>
         <translation>保存项目(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="193"/>
-        <location filename="../widgets/MainWindow.cpp" line="198"/>
-        <location filename="../widgets/MainWindow.cpp" line="203"/>
-        <location filename="../widgets/MainWindow.cpp" line="207"/>
+        <location filename="../widgets/MainWindow.cpp" line="199"/>
+        <location filename="../widgets/MainWindow.cpp" line="204"/>
+        <location filename="../widgets/MainWindow.cpp" line="210"/>
+        <location filename="../widgets/MainWindow.cpp" line="213"/>
         <source>Save project</source>
         <translation>保存项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="202"/>
+        <location filename="../widgets/MainWindow.cpp" line="208"/>
         <source>Save project as…</source>
         <translation>项目另存为…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="210"/>
+        <location filename="../widgets/MainWindow.cpp" line="216"/>
         <source>Recent projects</source>
         <translation>最近的项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="213"/>
+        <location filename="../widgets/MainWindow.cpp" line="219"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="216"/>
+        <location filename="../widgets/MainWindow.cpp" line="222"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="217"/>
+        <location filename="../widgets/MainWindow.cpp" line="223"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="228"/>
+        <location filename="../widgets/MainWindow.cpp" line="235"/>
         <source>The language changes when DryTwin is started again.</source>
         <translation>语言将在 DryTwin 重新启动后生效。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="231"/>
+        <location filename="../widgets/MainWindow.cpp" line="238"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="232"/>
+        <location filename="../widgets/MainWindow.cpp" line="239"/>
         <source>&amp;About DryTwin</source>
         <translation>关于 DryTwin(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="232"/>
+        <location filename="../widgets/MainWindow.cpp" line="240"/>
         <source>About DryTwin</source>
         <translation>关于 DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="233"/>
+        <location filename="../widgets/MainWindow.cpp" line="241"/>
         <source>About &amp;Qt</source>
         <translation>关于 Qt(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="237"/>
+        <location filename="../widgets/MainWindow.cpp" line="245"/>
         <source>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;Digital-twin workbench for pneumatic drying lines, implementing the PGRL-CC method.&lt;/p&gt;&lt;table&gt;</source>
         <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="299"/>
-        <location filename="../widgets/MainWindow.cpp" line="306"/>
+        <location filename="../widgets/MainWindow.cpp" line="309"/>
+        <location filename="../widgets/MainWindow.cpp" line="316"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="312"/>
+        <location filename="../widgets/MainWindow.cpp" line="322"/>
         <source>Project saved to %1</source>
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="320"/>
+        <location filename="../widgets/MainWindow.cpp" line="330"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="328"/>
+        <location filename="../widgets/MainWindow.cpp" line="339"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
@@ -944,13 +974,13 @@
         <translation>%1 必须在 [%2, %3] %4 之内；保持为 %5。</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="202"/>
-        <location filename="../widgets/model/ModelPanel.cpp" line="209"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="207"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="215"/>
         <source>measured</source>
         <translation>实测</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="221"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="227"/>
         <source>physics model</source>
         <translation>机理模型</translation>
     </message>
@@ -963,127 +993,127 @@
         <translation>打开情景…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="42"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="43"/>
         <source>The scenario as JSON (schema in docs/mpc.md): setpoint steps, input steps and ramps, hidden mechanisms switched on mid-run, noise. Edits are checked when you run.</source>
         <translation>以 JSON 表示的情景（格式见 docs/mpc.md）：设定值阶跃、输入阶跃与斜坡、运行中途开启的隐藏机理、噪声。运行时检查修改。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="50"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="51"/>
         <source>Run scenario</source>
         <translation>运行情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="52"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="53"/>
         <source>Show the horizon the controllers predicted at this decision</source>
         <translation>显示控制器在此决策时刻预测的时域</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="53"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="54"/>
         <source>Runs the scenario against the virtual plant once per controller.</source>
         <translation>对虚拟装置逐个控制器运行该情景。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
         <source>IAE [%·s]</source>
         <translation>IAE [%·s]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
         <source>Effort [K²]</source>
         <translation>控制量 [K²]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="58"/>
         <source>Violations [%]</source>
         <translation>越限 [%]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="58"/>
         <source>Solve median [ms]</source>
         <translation>求解时间中位数 [ms]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="58"/>
         <source>Fallbacks</source>
         <translation>回退次数</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="59"/>
         <source>Model gain [%/K]</source>
         <translation>模型增益 [%/K]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="61"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
         <source>X_out, true [% wb]</source>
         <translation>X_out 真实值 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="64"/>
         <source>T_hot setpoint [°C]</source>
         <translation>T_hot 设定值 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="74"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="76"/>
         <source>prediction at</source>
         <translation>预测时刻</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="96"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="99"/>
         <source>Open scenario</source>
         <translation>打开情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="96"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="99"/>
         <source>Scenarios (*.json)</source>
         <translation>情景 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="111"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="114"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="127"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="131"/>
         <source>Cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="141"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="145"/>
         <source>Choose at least one controller.</source>
         <translation>请至少选择一个控制器。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="144"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="148"/>
         <source>Running…</source>
         <translation>正在运行…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="165"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="169"/>
         <source>skipped</source>
         <translation>已跳过</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="181"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="186"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="188"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="194"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="203"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="210"/>
         <source>%1 predicted at %2 s</source>
         <translation>%1 在 %2 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="210"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="219"/>
         <source>%1. IAE and violations on the product&apos;s true outlet moisture; the plant&apos;s own gain is %2 % wb/K.</source>
         <translation>%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。</translation>
     </message>
@@ -1111,63 +1141,63 @@
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="327"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="333"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="330"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="336"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="333"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="339"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="337"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="343"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="341"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="347"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="396"/>
-        <location filename="../widgets/common/PlotStack.cpp" line="420"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="403"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="427"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="407"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="414"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="428"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="435"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg or .pdf</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="434"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="442"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="435"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="443"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="441"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="449"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="443"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="451"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
@@ -1175,127 +1205,127 @@
 <context>
     <name>drytwin::widgets::ResidualPanel</name>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="30"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="31"/>
         <source>chosen by validation (16, 32, 60)</source>
         <translation>由验证选择（16、32、60）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="33"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="35"/>
         <source>Eq. 30: constrained fit with certificate</source>
         <translation>式 30：带证书的约束拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="33"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="35"/>
         <source>eigenvalues pulled in after the fit</source>
         <translation>拟合后将特征值收缩</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="34"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="36"/>
         <source>orthogonal projection P⊥ (Eq. 27)</source>
         <translation>正交投影 P⊥（式 27）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="36"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="38"/>
         <source>Train PGRL-CC and the baselines</source>
         <translation>训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="38"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="40"/>
         <source>residual lags</source>
         <translation>残差滞后阶数</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="39"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="41"/>
         <source>stability</source>
         <translation>稳定性</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="42"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
         <source>Trains on the chronological 70 % and evaluates on the rest; settings are chosen inside the training part.</source>
         <translation>按时间顺序用前 70 % 训练，其余部分评估；设置在训练部分内选定。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="46"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="49"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="46"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="49"/>
         <source>MAE X_out [% wb]</source>
         <translation>MAE X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="46"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="49"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
         <source>MAE T_out [°C]</source>
         <translation>MAE T_out [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
         <source>skill 1 step</source>
         <translation>1 步技能值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
         <source>skill 30 steps</source>
         <translation>30 步技能值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="51"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="54"/>
         <source>imaginary part</source>
         <translation>虚部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="52"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="55"/>
         <source>real part</source>
         <translation>实部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="54"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="57"/>
         <source>skill: MAE over the better reference [-]</source>
         <translation>技能值：MAE 与较优参考之比 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="55"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="58"/>
         <source>forecast horizon [steps of 1 s]</source>
         <translation>预测步长 [1 s 步]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="90"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="93"/>
         <source>Training…</source>
         <translation>正在训练…</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="127"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="131"/>
         <source>skill 1 (ties the better reference)</source>
         <translation>技能值 1（与较优参考持平）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="136"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="141"/>
         <source>unit circle</source>
         <translation>单位圆</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="149"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="155"/>
         <source>A unconstrained (ρ = %1)</source>
         <translation>无约束 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="153"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="161"/>
         <source>A with Eq. 30 (ρ = %1)</source>
         <translation>式 30 约束后的 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="176"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="188"/>
         <source> Slowest contraction of A: %1 per step (half-life %2 s).</source>
         <translation> A 的最慢收缩：每步 %1（半衰期 %2 s）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="180"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="192"/>
         <source>Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).</source>
         <translation>留出部分：%1 行。技能值低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
     </message>
@@ -1308,37 +1338,37 @@
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="13"/>
+        <location filename="../widgets/common/Series.cpp" line="14"/>
         <source>feed [kg/h]</source>
         <translation>进料 [kg/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="14"/>
+        <location filename="../widgets/common/Series.cpp" line="16"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="15"/>
+        <location filename="../widgets/common/Series.cpp" line="18"/>
         <source>T_amb [°C]</source>
         <translation>T_amb [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="16"/>
+        <location filename="../widgets/common/Series.cpp" line="20"/>
         <source>RH [%]</source>
         <translation>相对湿度 [%]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="17"/>
+        <location filename="../widgets/common/Series.cpp" line="22"/>
         <source>X_HDT [% wb]</source>
         <translation>X_HDT [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="18"/>
+        <location filename="../widgets/common/Series.cpp" line="24"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="19"/>
+        <location filename="../widgets/common/Series.cpp" line="26"/>
         <source>T_out [°C]</source>
         <translation>T_out [°C]</translation>
     </message>
@@ -1346,42 +1376,42 @@
 <context>
     <name>drytwin::widgets::Workbench</name>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="25"/>
+        <location filename="../widgets/common/Workbench.cpp" line="26"/>
         <source>%1 is queued behind the running job</source>
         <translation>%1 已排队，等待当前任务完成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="36"/>
+        <location filename="../widgets/common/Workbench.cpp" line="37"/>
         <source>%1 was cancelled; nothing changed.</source>
         <translation>%1 已取消；未作任何更改。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="37"/>
+        <location filename="../widgets/common/Workbench.cpp" line="38"/>
         <source>%1 failed: %2</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="49"/>
+        <location filename="../widgets/common/Workbench.cpp" line="50"/>
         <source>Read the model</source>
         <translation>读取模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="58"/>
+        <location filename="../widgets/common/Workbench.cpp" line="59"/>
         <source>Loading %1…</source>
         <translation>正在加载 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="67"/>
+        <location filename="../widgets/common/Workbench.cpp" line="68"/>
         <source>Load %1</source>
         <translation>加载 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="82"/>
+        <location filename="../widgets/common/Workbench.cpp" line="83"/>
         <source>%1: %2 batches, %3 rows, %4 missing cells; the cleaning keeps %5 rows</source>
         <translation>%1：%2 个批次，%3 行，%4 个缺失值；清洗后保留 %5 行</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="97"/>
+        <location filename="../widgets/common/Workbench.cpp" line="98"/>
         <source>Open model %1</source>
         <translation>打开模型 %1</translation>
     </message>
@@ -1426,37 +1456,37 @@
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="171"/>
+        <location filename="../widgets/common/Workbench.cpp" line="172"/>
         <source>Calibration %1: loss %2 → %3</source>
         <translation>标定 %1：损失 %2 → %3</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="188"/>
+        <location filename="../widgets/common/Workbench.cpp" line="189"/>
         <source>Train</source>
         <translation>训练</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="191"/>
+        <location filename="../widgets/common/Workbench.cpp" line="192"/>
         <source>Trained PGRL-CC and the baselines</source>
         <translation>已训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="200"/>
+        <location filename="../widgets/common/Workbench.cpp" line="201"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="209"/>
+        <location filename="../widgets/common/Workbench.cpp" line="210"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="212"/>
+        <location filename="../widgets/common/Workbench.cpp" line="213"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="219"/>
+        <location filename="../widgets/common/Workbench.cpp" line="220"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>

@@ -6,6 +6,7 @@
 #include "common/PlotStack.h"
 #include "data/ColumnMappingDialog.h"
 #include "data/DataPanel.h"
+#include "diagnostics/DiagnosticsPanel.h"
 #include "discovery/DiscoverPanel.h"
 #include "model/ModelPanel.h"
 #include "mpc/MpcPanel.h"
@@ -204,6 +205,8 @@ private Q_SLOTS:
         w.workbench().simulate();
         QVERIFY(simulated.count() > 0 || simulated.wait(30000));
         QVERIFY(curvesWithData(model->plots()->plot(0)) >= 2);
+        // The physics model's error against an operating variable, on the Diagnostics tab.
+        QVERIFY(curvesWithData(w.diagnosticsPanel()->scatter()->plot(0)) == 1);
 
         // Calibrate, stopped early with the best so far.
         auto* cal = w.calibrationPanel();

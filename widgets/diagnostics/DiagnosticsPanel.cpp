@@ -1,8 +1,11 @@
 #include "diagnostics/DiagnosticsPanel.h"
 
 #include "common/PlotStack.h"
+#include "common/Series.h"
+#include "common/Units.h"
 #include "common/Workbench.h"
 
+#include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
@@ -10,6 +13,7 @@
 #include <QSplitter>
 #include <QVBoxLayout>
 #include <cmath>
+#include <qwt_plot.h>
 
 namespace drytwin::widgets {
 
@@ -26,7 +30,7 @@ DiagnosticsPanel::DiagnosticsPanel(Workbench& workbench, QWidget* parent)
     m_tests = new QLabel(tr("Evaluate a trained model to see its residuals."));
     m_tests->setWordWrap(true);
     m_acf = new PlotStack;
-    m_acf->addPlot(tr("ACF of the X_out residual [-]"));
+    m_acf->addPlot(tr("ACF [-]"));
     m_acf->setXTitle(tr("lag [s]"));
     m_psd = new PlotStack;
     m_psd->addPlot(tr("PSD [(% wb)²/Hz]"));
@@ -38,9 +42,31 @@ DiagnosticsPanel::DiagnosticsPanel(Workbench& workbench, QWidget* parent)
     ll->addWidget(new QLabel(tr("Models shown (tick to overlay):")));
     ll->addWidget(m_models, 1);
     ll->addWidget(m_tests);
+    m_scatter = new PlotStack;
+    m_scatter->addPlot(tr("error [% wb]"));
+    m_operating = new QComboBox;
+    for (const auto& series : batchSeries()) {
+        if (!series.title.startsWith(QLatin1String("X_out")) && !series.title.startsWith(QLatin1String("T_out")) &&
+            !series.title.startsWith(QLatin1String("X_HDT"))) {
+            m_operating->addItem(series.title);
+        }
+    }
+    // Sensible empty axes until there is something to show (log axes would autoscale to 1e-100).
+    m_acf->setXRange(0, 40);
+    m_acf->plot(0)->setAxisScale(QwtPlot::yLeft, -0.5, 1.0);
+    m_psd->setXRange(1e-3, 1.0);
+    m_psd->plot(0)->setAxisScale(QwtPlot::yLeft, 1e-4, 1.0);
+    auto* scatterBox = new QWidget;
+    auto* sb = new QVBoxLayout(scatterBox);
+    auto* pick = new QHBoxLayout;
+    pick->addWidget(new QLabel(tr("Physics model's error against")));
+    pick->addWidget(m_operating, 1);
+    sb->addLayout(pick);
+    sb->addWidget(m_scatter, 1);
     auto* right = new QSplitter(Qt::Vertical);
     right->addWidget(m_acf);
     right->addWidget(m_psd);
+    right->addWidget(scatterBox);
     auto* split = new QSplitter;
     split->addWidget(left);
     split->addWidget(right);
@@ -50,6 +76,8 @@ DiagnosticsPanel::DiagnosticsPanel(Workbench& workbench, QWidget* parent)
     connect(evaluate, &QPushButton::clicked, &m_workbench, &Workbench::evaluate);
     connect(&m_workbench, &Workbench::evaluated, this, &DiagnosticsPanel::fill);
     connect(m_models, &QListWidget::itemChanged, this, &DiagnosticsPanel::redraw);
+    connect(&m_workbench, &Workbench::simulated, this, &DiagnosticsPanel::redrawScatter);
+    connect(m_operating, &QComboBox::currentTextChanged, this, &DiagnosticsPanel::redrawScatter);
 }
 
 void DiagnosticsPanel::fill() {
@@ -82,11 +110,11 @@ void DiagnosticsPanel::fill() {
 
 void DiagnosticsPanel::redraw() {
     const auto& ev = m_workbench.latest().evaluate;
-    m_acf->clearCurves();
-    m_psd->clearCurves();
     if (!ev) {
         return;
     }
+    m_acf->clearCurves();
+    m_psd->clearCurves();
     const double band = 1.96 / std::sqrt(std::max<double>(1.0, static_cast<double>(ev->evaluation.testRows)));
     for (std::size_t i = 0; i < ev->diagnostics.models.size(); ++i) {
         const auto& m = ev->diagnostics.models[i];
@@ -117,6 +145,45 @@ void DiagnosticsPanel::redraw() {
     m_acf->addCurve(0, QString(), {0, 40}, {-band, -band}, Qt::black, Qt::DotLine, 1.0);
     m_acf->rescale();
     m_psd->rescale();
+}
+
+} // namespace drytwin::widgets
+
+namespace drytwin::widgets {
+
+void DiagnosticsPanel::redrawScatter() {
+    // Where in the operating range does the physics model err? Every 10th kept row of every
+    // batch: the measured outlet moisture minus the simulated one, against the chosen input.
+    const auto& sim = m_workbench.latest().simulate;
+    const auto& si = m_workbench.siBatches();
+    m_scatter->clearCurves();
+    const SeriesInfo* chosen = nullptr;
+    for (const auto& series : batchSeries()) {
+        if (series.title == m_operating->currentText()) {
+            chosen = &series;
+        }
+    }
+    if (!sim || !chosen) {
+        return;
+    }
+    QVector<double> x, y;
+    for (std::size_t b = 0; b < si.size() && b < sim->simulations.size(); ++b) {
+        const auto& batch = si[b];
+        const auto& r = sim->simulations[b];
+        for (std::size_t k = 0; k < batch.rows() && k < r.xOutDb.size(); k += 10) {
+            if (!batch.keep[k]) {
+                continue;
+            }
+            const double e = units::dryToWetPct(batch.xOutDb[k]) - units::dryToWetPct(r.xOutDb[k]);
+            if (std::isfinite(e)) {
+                x << chosen->value(batch, k);
+                y << e;
+            }
+        }
+    }
+    m_scatter->addDots(0, tr("every 10th kept row"), x, y, QColor(31, 119, 180));
+    m_scatter->setXTitle(chosen->title);
+    m_scatter->rescale();
 }
 
 } // namespace drytwin::widgets

@@ -110,6 +110,22 @@ void DiscoverPanel::show() {
                     .arg(f.ci95High, 0, 'g', 4)
                     .arg(QString::fromStdString(f.evidence).toHtmlEscaped());
     }
+    // What the error moves with: the strongest cross-correlations of the differenced residuals
+    // with the differenced inputs and proxies (lags 0–300 s), as the analysis found them.
+    for (const auto& o : d.residuals) {
+        QStringList items;
+        for (const auto& c : o.correlates) {
+            items << tr("%1 at %2 s (ccf %3%4)")
+                         .arg(QString::fromStdString(c.column))
+                         .arg(c.lagS, 0, 'f', 0)
+                         .arg(c.ccf, 0, 'f', 2)
+                         .arg(c.significant ? tr(", significant") : QString());
+        }
+        if (!items.isEmpty()) {
+            html += tr("<p><b>%1</b> error moves with: %2</p>")
+                        .arg(QString::fromStdString(o.output).toHtmlEscaped(), items.join(QStringLiteral("; ")).toHtmlEscaped());
+        }
+    }
     for (const auto& u : d.unexplained) {
         html += tr("<p><b>Unexplained</b> (%1): %2</p>")
                     .arg(QString::fromStdString(u.output).toHtmlEscaped(), QString::fromStdString(u.type));
