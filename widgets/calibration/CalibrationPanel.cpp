@@ -1,6 +1,7 @@
 #include "calibration/CalibrationPanel.h"
 
 #include "common/PlotStack.h"
+#include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 
 #include <QHBoxLayout>
@@ -15,11 +16,7 @@
 
 namespace drytwin::widgets {
 
-namespace {
-QString sv(std::string_view s) {
-    return QString::fromUtf8(s.data(), static_cast<int>(s.size()));
-}
-} // namespace
+namespace {} // namespace
 
 CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
     : QWidget(parent), m_workbench(workbench) {
@@ -32,7 +29,7 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
             continue;
         }
         m_free->insertRow(row);
-        auto* name = new QTableWidgetItem(sv(info.symbol));
+        auto* name = new QTableWidgetItem(fromView(info.symbol));
         name->setFlags(Qt::ItemIsUserCheckable | Qt::ItemIsEnabled);
         const bool byDefault = info.id == properties::Param::h_HDT || info.id == properties::Param::k_HDT;
         name->setCheckState(byDefault ? Qt::Checked : Qt::Unchecked);
@@ -40,7 +37,7 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
         m_free->setItem(row, 0, name);
         m_free->setItem(row, 1, new QTableWidgetItem(QString::number(info.lower, 'g', 5)));
         m_free->setItem(row, 2, new QTableWidgetItem(QString::number(info.upper, 'g', 5)));
-        auto* unit = new QTableWidgetItem(sv(info.unit));
+        auto* unit = new QTableWidgetItem(fromView(info.unit));
         unit->setFlags(Qt::ItemIsEnabled);
         m_free->setItem(row, 3, unit);
         ++row;
@@ -153,15 +150,13 @@ void CalibrationPanel::showResult() {
         const auto& e = c.estimates[i];
         const auto& info = properties::info(e.param);
         const QStringList cells{
-            sv(info.symbol),
+            fromView(info.symbol),
             QString::number(e.value, 'g', 5),
             QStringLiteral("[%1, %2]").arg(e.ci95Low, 0, 'g', 5).arg(e.ci95High, 0, 'g', 5),
-            sv(info.unit),
+            fromView(info.unit),
             QString::number(e.standardErrorFisher, 'g', 3),
             e.atBound ? tr("yes") : tr("no")};
-        for (int col = 0; col < cells.size(); ++col) {
-            m_estimates->setItem(static_cast<int>(i), col, new QTableWidgetItem(cells[col]));
-        }
+        setTableRow(m_estimates, static_cast<int>(i), cells);
     }
     m_estimates->resizeColumnsToContents();
     m_fit->setText(tr("%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. "
@@ -188,15 +183,13 @@ void CalibrationPanel::showResult() {
         }
     }
     if (!x.isEmpty()) {
-        static const QColor colours[] = {QColor(31, 119, 180), QColor(44, 160, 44), QColor(148, 103, 189),
-                                         QColor(255, 127, 14)};
         m_loss->clearCurves();
         m_loss->setXTitle(tr("loss evaluations [-]"));
         m_loss->addCurve(0, tr("best loss"), x, y, QColor(214, 39, 40));
         for (std::size_t i = 0; i < traces.size(); ++i) {
             if (traces[i].size() == x.size()) {
-                m_loss->addDots(1, sv(properties::info(c.estimates[i].param).symbol), x, traces[i],
-                                colours[i % 4]);
+                m_loss->addDots(1, fromView(properties::info(c.estimates[i].param).symbol), x, traces[i],
+                                seriesColour(static_cast<int>(i)));
             }
         }
         m_loss->rescale();

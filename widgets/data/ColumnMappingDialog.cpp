@@ -1,5 +1,6 @@
 #include "data/ColumnMappingDialog.h"
 
+#include "common/WidgetHelpers.h"
 #include "data/Columns.h"
 
 #include <QComboBox>
@@ -16,11 +17,7 @@
 
 namespace drytwin::widgets {
 
-namespace {
-QString sv(std::string_view s) {
-    return QString::fromUtf8(s.data(), static_cast<int>(s.size()));
-}
-} // namespace
+namespace {} // namespace
 
 ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* parent) : QDialog(parent) {
     setWindowTitle(tr("Column mapping"));
@@ -53,11 +50,11 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* pare
     for (std::size_t i = 0; i < specs.size(); ++i) {
         const auto& s = specs[i];
         const int row = static_cast<int>(i);
-        auto* name = new QTableWidgetItem(sv(s.name) + (s.required ? QStringLiteral(" *") : QString()));
-        name->setData(Qt::UserRole, sv(s.name));
+        auto* name = new QTableWidgetItem(fromView(s.name) + (s.required ? QStringLiteral(" *") : QString()));
+        name->setData(Qt::UserRole, fromView(s.name));
         name->setFlags(Qt::ItemIsEnabled);
         m_table->setItem(row, 0, name);
-        auto* unit = new QTableWidgetItem(sv(s.unit));
+        auto* unit = new QTableWidgetItem(fromView(s.unit));
         unit->setFlags(Qt::ItemIsEnabled);
         m_table->setItem(row, 1, unit);
         auto* combo = new QComboBox;
@@ -67,12 +64,12 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* pare
         }
         // Same name or a case-insensitive match is preselected.
         for (int k = 1; k < combo->count(); ++k) {
-            if (combo->itemData(k).toString().compare(sv(s.name), Qt::CaseInsensitive) == 0) {
+            if (combo->itemData(k).toString().compare(fromView(s.name), Qt::CaseInsensitive) == 0) {
                 combo->setCurrentIndex(k);
             }
         }
         m_table->setCellWidget(row, 2, combo);
-        auto* meaning = new QTableWidgetItem(sv(s.meaning));
+        auto* meaning = new QTableWidgetItem(fromView(s.meaning));
         meaning->setFlags(Qt::ItemIsEnabled);
         m_table->setItem(row, 3, meaning);
     }

@@ -3,6 +3,7 @@
 #include "common/PlotStack.h"
 #include "common/Series.h"
 #include "common/Units.h"
+#include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 #include "data/ColumnMappingDialog.h"
 
@@ -23,13 +24,6 @@
 #include <QVBoxLayout>
 
 namespace drytwin::widgets {
-
-namespace {
-const QColor kPalette[] = {QColor(31, 119, 180),  QColor(214, 39, 40),   QColor(44, 160, 44),
-                           QColor(148, 103, 189), QColor(255, 127, 14),  QColor(140, 86, 75),
-                           QColor(227, 119, 194), QColor(127, 127, 127), QColor(188, 189, 34),
-                           QColor(23, 190, 207)};
-}
 
 DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
     setAcceptDrops(true);
@@ -148,9 +142,7 @@ void DataPanel::fill() {
             QString::number(minutes, 'f', 1),
             QString::number(x, 'f', 3),
             QString::number(h, 'f', 1)};
-        for (int c = 0; c < cells.size(); ++c) {
-            m_table->setItem(static_cast<int>(i), c, new QTableWidgetItem(cells[c]));
-        }
+        setTableRow(m_table, static_cast<int>(i), cells);
     }
     m_table->resizeColumnsToContents();
     m_table->blockSignals(false);
@@ -221,7 +213,7 @@ void DataPanel::redraw() {
             }
             offset = t.isEmpty() ? offset : t.back() + 1;
         }
-        const QColor colour = kPalette[n % 10];
+        const QColor colour = seriesColour(n);
         for (std::size_t s = 0; s < batchSeries().size(); ++s) {
             m_plots->addCurve(static_cast<int>(s), QString::fromStdString(b.id), t,
                               valuesOf(b, batchSeries()[s]), colour);

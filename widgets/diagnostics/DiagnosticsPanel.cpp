@@ -3,6 +3,7 @@
 #include "common/PlotStack.h"
 #include "common/Series.h"
 #include "common/Units.h"
+#include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 
 #include <QComboBox>
@@ -16,11 +17,6 @@
 #include <qwt_plot.h>
 
 namespace drytwin::widgets {
-
-namespace {
-const QColor kColours[] = {QColor(127, 127, 127), QColor(188, 189, 34), QColor(140, 86, 75),
-                           QColor(148, 103, 189), QColor(44, 160, 44),  QColor(214, 39, 40)};
-}
 
 DiagnosticsPanel::DiagnosticsPanel(Workbench& workbench, QWidget* parent)
     : QWidget(parent), m_workbench(workbench) {
@@ -46,7 +42,8 @@ DiagnosticsPanel::DiagnosticsPanel(Workbench& workbench, QWidget* parent)
     m_scatter->addPlot(tr("error [% wb]"));
     m_operating = new QComboBox;
     for (const auto& series : batchSeries()) {
-        if (!series.title.startsWith(QLatin1String("X_out")) && !series.title.startsWith(QLatin1String("T_out")) &&
+        if (!series.title.startsWith(QLatin1String("X_out")) &&
+            !series.title.startsWith(QLatin1String("T_out")) &&
             !series.title.startsWith(QLatin1String("X_HDT"))) {
             m_operating->addItem(series.title);
         }
@@ -127,7 +124,7 @@ void DiagnosticsPanel::redraw() {
             lag << static_cast<double>(k);
             acf << m.acf[k];
         }
-        m_acf->addCurve(0, QString::fromStdString(m.name), lag, acf, kColours[i % 6], Qt::SolidLine, 1.6);
+        m_acf->addCurve(0, QString::fromStdString(m.name), lag, acf, modelColour(m.name), Qt::SolidLine, 1.6);
         if (m.hasPsd) {
             QVector<double> f, p;
             for (std::size_t k = 1; k < m.psdFrequencyHz.size(); ++k) { // k = 0 is f = 0 (log axis)
@@ -138,7 +135,7 @@ void DiagnosticsPanel::redraw() {
                             tr("%1 (%2 % below 0.01 Hz)")
                                 .arg(QString::fromStdString(m.name))
                                 .arg(100 * m.lowFrequencyShareBelow0p01Hz, 0, 'f', 0),
-                            f, p, kColours[i % 6]);
+                            f, p, modelColour(m.name));
         }
     }
     m_acf->addCurve(0, tr("95 % band of white noise"), {0, 40}, {band, band}, Qt::black, Qt::DotLine, 1.0);

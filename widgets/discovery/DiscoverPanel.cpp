@@ -1,6 +1,7 @@
 #include "discovery/DiscoverPanel.h"
 
 #include "common/PlotStack.h"
+#include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 
 #include <QHBoxLayout>
@@ -96,9 +97,7 @@ void DiscoverPanel::show() {
             c.fitted
                 ? QStringLiteral("%1 → %2").arg(c.fitLossBefore, 0, 'g', 4).arg(c.fitLossAfter, 0, 'g', 4)
                 : QStringLiteral("–")};
-        for (int col = 0; col < cells.size(); ++col) {
-            m_ranking->setItem(static_cast<int>(i), col, new QTableWidgetItem(cells[col]));
-        }
+        setTableRow(m_ranking, static_cast<int>(i), cells);
     }
     m_ranking->resizeColumnsToContents();
     QString html;
@@ -123,7 +122,8 @@ void DiscoverPanel::show() {
         }
         if (!items.isEmpty()) {
             html += tr("<p><b>%1</b> error moves with: %2</p>")
-                        .arg(QString::fromStdString(o.output).toHtmlEscaped(), items.join(QStringLiteral("; ")).toHtmlEscaped());
+                        .arg(QString::fromStdString(o.output).toHtmlEscaped(),
+                             items.join(QStringLiteral("; ")).toHtmlEscaped());
         }
     }
     for (const auto& u : d.unexplained) {
@@ -142,9 +142,7 @@ void DiscoverPanel::show() {
             m_gains->insertRow(r2);
             const QStringList cells{what, QString::number(before, 'g', 4), QString::number(after, 'g', 4),
                                     unit};
-            for (int c = 0; c < cells.size(); ++c) {
-                m_gains->setItem(r2, c, new QTableWidgetItem(cells[c]));
-            }
+            setTableRow(m_gains, r2, cells);
         };
         row(tr("MAE X_out (physics)"), d.findings.front().gain.maeMoistureBefore, g.maeMoistureAfter,
             tr("% wb"));

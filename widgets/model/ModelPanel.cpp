@@ -3,6 +3,7 @@
 #include "common/PlotStack.h"
 #include "common/Series.h"
 #include "common/Units.h"
+#include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 
 #include <QCheckBox>
@@ -23,16 +24,12 @@ namespace drytwin::widgets {
 
 namespace {
 
-QString sv(std::string_view s) {
-    return QString::fromUtf8(s.data(), static_cast<int>(s.size()));
-}
-
 /// One parameter edit: redo sets the new value through the Session, undo the old one.
 class SetParameterCommand : public QUndoCommand {
 public:
     SetParameterCommand(Workbench& w, properties::Param p, double before, double after)
         : m_w(w), m_p(p), m_before(before), m_after(after) {
-        setText(QObject::tr("set %1 to %2").arg(sv(properties::info(p).symbol)).arg(after));
+        setText(QObject::tr("set %1 to %2").arg(fromView(properties::info(p).symbol)).arg(after));
     }
     void redo() override { m_w.setParameter(m_p, m_after); }
     void undo() override { m_w.setParameter(m_p, m_before); }
@@ -144,10 +141,10 @@ bool ModelPanel::editParameter(int row, double value) {
     const auto& info = properties::parameterTable()[static_cast<std::size_t>(row)];
     if (!(value >= info.lower && value <= info.upper)) {
         const QString msg = tr("%1 must lie in [%2, %3] %4; it stays %5.")
-                                .arg(sv(info.symbol))
+                                .arg(fromView(info.symbol))
                                 .arg(info.lower)
                                 .arg(info.upper)
-                                .arg(sv(info.unit))
+                                .arg(fromView(info.unit))
                                 .arg(m_workbench.model().parameters[info.id]);
         Q_EMIT m_workbench.status(msg);
         return false;
@@ -164,13 +161,13 @@ void ModelPanel::fillTable() {
     const auto& p = m_workbench.model().parameters;
     for (std::size_t i = 0; i < table.size(); ++i) {
         const auto& info = table[i];
-        const QStringList cells{sv(info.symbol),
+        const QStringList cells{fromView(info.symbol),
                                 QString::number(p[info.id], 'g', 6),
-                                sv(info.unit),
+                                fromView(info.unit),
                                 QString::number(info.lower, 'g', 4),
                                 QString::number(info.upper, 'g', 4),
-                                sv(info.source),
-                                sv(info.meaning)};
+                                fromView(info.source),
+                                fromView(info.meaning)};
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
             if (c != 1 || info.fixed) {

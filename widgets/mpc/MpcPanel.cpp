@@ -1,6 +1,7 @@
 #include "mpc/MpcPanel.h"
 
 #include "common/PlotStack.h"
+#include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 #include "control/BundledScenarios.h"
 
@@ -26,8 +27,6 @@ namespace {
 const control::ControllerKind kKinds[] = {
     control::ControllerKind::Pbm, control::ControllerKind::ExtInputResidual, control::ControllerKind::Lstm,
     control::ControllerKind::PgrlCc, control::ControllerKind::Pi};
-const QColor kColours[] = {QColor(127, 127, 127), QColor(188, 189, 34), QColor(140, 86, 75),
-                           QColor(214, 39, 40), QColor(31, 119, 180)};
 } // namespace
 
 MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
@@ -173,14 +172,11 @@ void MpcPanel::show() {
             run.ran && !pi ? QStringLiteral("%1 / %2").arg(m.fallbacks).arg(m.decisions)
                            : QStringLiteral("–"),
             run.ran && !pi ? QString::number(m.gainPctPerKMedian, 'f', 4) : QStringLiteral("–")};
-        for (int c = 0; c < cells.size(); ++c) {
-            m_table->setItem(row, c, new QTableWidgetItem(cells[c]));
-        }
+        setTableRow(m_table, row, cells);
         if (!run.ran) {
             continue;
         }
-        const int k = static_cast<int>(run.kind);
-        const QColor colour = kColours[k % 5];
+        const QColor colour = modelColour(control::controllerName(run.kind));
         const QVector<double> t(run.timeS.begin(), run.timeS.end());
         if (!setpointDrawn) {
             m_plots->addCurve(0, tr("setpoint"), t,

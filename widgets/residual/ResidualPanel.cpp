@@ -1,6 +1,7 @@
 #include "residual/ResidualPanel.h"
 
 #include "common/PlotStack.h"
+#include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 
 #include <QCheckBox>
@@ -19,11 +20,6 @@
 #include <qwt_symbol.h>
 
 namespace drytwin::widgets {
-
-namespace {
-const QColor kModelColour[] = {QColor(127, 127, 127), QColor(188, 189, 34), QColor(140, 86, 75),
-                               QColor(148, 103, 189), QColor(44, 160, 44),  QColor(214, 39, 40)};
-}
 
 ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     : QWidget(parent), m_workbench(workbench) {
@@ -115,16 +111,14 @@ void ResidualPanel::showEvaluation() {
             QString::fromStdString(m.name),           QString::number(m.moisture.mae, 'f', 4),
             QString::number(m.moisture.r2, 'f', 3),   QString::number(m.temperature.mae, 'f', 4),
             QString::number(m.skillMoisture, 'f', 3), QString::number(s30, 'f', 3)};
-        for (int c = 0; c < cells.size(); ++c) {
-            m_metrics->setItem(static_cast<int>(i), c, new QTableWidgetItem(cells[c]));
-        }
+        setTableRow(m_metrics, static_cast<int>(i), cells);
         QVector<double> h, s;
         for (std::size_t k = 0; k < e.horizons.size() && k < m.skillMoistureByHorizon.size(); ++k) {
             h << e.horizons[k];
             s << m.skillMoistureByHorizon[k];
         }
         const bool reference = m.name == "persistence" || m.name == "pbm_residual_hold";
-        m_skill->addCurve(0, QString::fromStdString(m.name), h, s, kModelColour[i % 6],
+        m_skill->addCurve(0, QString::fromStdString(m.name), h, s, modelColour(m.name),
                           reference ? Qt::DashLine : Qt::SolidLine, m.name == "pgrl_cc" ? 2.2 : 1.3);
     }
     m_metrics->resizeColumnsToContents();

@@ -1,0 +1,41 @@
+#include "common/WidgetHelpers.h"
+
+#include <QTableWidget>
+#include <map>
+
+namespace drytwin::widgets {
+
+QString fromView(std::string_view text) {
+    return QString::fromUtf8(text.data(), static_cast<int>(text.size()));
+}
+
+void setTableRow(QTableWidget* table, int row, const QStringList& cells) {
+    for (int c = 0; c < cells.size() && c < table->columnCount(); ++c) {
+        auto* item = new QTableWidgetItem(cells[c]);
+        item->setFlags(item->flags() & ~Qt::ItemIsEditable);
+        table->setItem(row, c, item);
+    }
+}
+
+QColor modelColour(const std::string& key) {
+    // The two reference predictors in muted tones, the learnt models in stronger ones, PGRL-CC red.
+    static const std::map<std::string, QColor> colours{{"pbm", QColor(127, 127, 127)},
+                                                       {"persistence", QColor(188, 189, 34)},
+                                                       {"pbm_residual_hold", QColor(140, 86, 75)},
+                                                       {"lstm", QColor(148, 103, 189)},
+                                                       {"ext_input_residual", QColor(44, 160, 44)},
+                                                       {"pgrl_cc", QColor(214, 39, 40)},
+                                                       {"pi", QColor(31, 119, 180)}};
+    const auto it = colours.find(key);
+    return it == colours.end() ? QColor(23, 190, 207) : it->second;
+}
+
+QColor seriesColour(int i) {
+    static const QColor palette[] = {QColor(31, 119, 180),  QColor(214, 39, 40),   QColor(44, 160, 44),
+                                     QColor(148, 103, 189), QColor(255, 127, 14),  QColor(140, 86, 75),
+                                     QColor(227, 119, 194), QColor(127, 127, 127), QColor(188, 189, 34),
+                                     QColor(23, 190, 207)};
+    return palette[((i % 10) + 10) % 10];
+}
+
+} // namespace drytwin::widgets
