@@ -4,7 +4,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="35"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="32"/>
         <source>set %1 to %2</source>
         <translation>将 %1 设为 %2</translation>
     </message>
@@ -12,176 +12,196 @@
 <context>
     <name>drytwin::widgets::CalibrationPanel</name>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="27"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
         <source>Free</source>
         <translation>自由</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="27"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
         <source>Lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="27"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
         <source>Upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="27"/>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="58"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="52"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="51"/>
         <source> evaluations</source>
         <translation> 次评估</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="53"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="52"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="54"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="53"/>
         <source>Stop, keep best</source>
         <translation>停止并保留最优</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="58"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="58"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
         <source>Estimate</source>
         <translation>估计值</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="58"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
         <source>95 % interval</source>
         <translation>95 % 区间</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="58"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
         <source>Fisher SE</source>
         <translation>Fisher 标准误</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="58"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
         <source>At bound</source>
         <translation>触及边界</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="62"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="61"/>
         <source>Fits the free parameters to the calibration rows (every 10th kept row, the first 300) with NLopt: a global search, then BOBYQA.</source>
         <translation>用 NLopt 将自由参数拟合到标定行（保留行中每隔 10 行取一行，取前 300 行）：先全局搜索，再用 BOBYQA。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="66"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
         <source>best loss [-]</source>
         <translation>最优损失 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="67"/>
-        <source>parameter / its final value [-]</source>
-        <translation>参数 / 其最终值 [-]</translation>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="66"/>
+        <source>θ / θ final [-]</source>
+        <translation>θ / θ 最终值 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="68"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="67"/>
         <source>share of the evaluation budget used [-]</source>
         <translation>已用评估预算比例 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="72"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="71"/>
         <source>Free parameters and their search bounds:</source>
         <translation>自由参数及其搜索范围：</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="97"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="81"/>
+        <source>X_out [% wb]</source>
+        <translation>X_out [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="101"/>
         <source>best loss so far</source>
         <translation>迄今最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="134"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="149"/>
         <source>Cannot calibrate: %1</source>
         <translation>无法标定：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="141"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="157"/>
         <source>Calibrating…</source>
         <translation>正在标定…</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="161"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="177"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="161"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="177"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="167"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="181"/>
         <source>%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. Intervals: %10.</source>
         <translation>%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口 MAE %6 → %7 % 湿基，%8 → %9 °C。区间：%10。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="194"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="206"/>
         <source>loss evaluations [-]</source>
         <translation>损失评估次数 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="195"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="207"/>
         <source>best loss</source>
         <translation>最优损失</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="239"/>
+        <source>measured %1</source>
+        <translation>实测 %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="242"/>
+        <source>before</source>
+        <translation>之前</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="245"/>
+        <source>after</source>
+        <translation>之后</translation>
     </message>
 </context>
 <context>
     <name>drytwin::widgets::ColumnMappingDialog</name>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="26"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="23"/>
         <source>Column mapping</source>
         <translation>列映射</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="44"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="41"/>
         <source>Could not read the headers of %1.</source>
         <translation>无法读取 %1 的表头。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="45"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="42"/>
         <source>Choose, for each column DryTwin needs, the header your files use. The values must be in the unit shown; required columns are marked *.</source>
         <translation>为 DryTwin 需要的每一列选择您文件中使用的表头。数值必须采用所示单位；必需的列标有 *。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="51"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="48"/>
         <source>DryTwin column</source>
         <translation>DryTwin 列</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="51"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="48"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="51"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="48"/>
         <source>Header in your file</source>
         <translation>您文件中的表头</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="51"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="48"/>
         <source>Meaning</source>
         <translation>含义</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="64"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="61"/>
         <source>(not in the file)</source>
         <translation>（文件中没有）</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="120"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="117"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -189,103 +209,103 @@
 <context>
     <name>drytwin::widgets::DataPanel</name>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="36"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="30"/>
         <source>Open file…</source>
         <translation>打开文件…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="37"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="31"/>
         <source>Open folder…</source>
         <translation>打开文件夹…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="32"/>
         <source>Column mapping…</source>
         <translation>列映射…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="33"/>
         <source>Files with other column names: map them onto DryTwin&apos;s columns, then load</source>
         <translation>列名不同的文件：先映射到 DryTwin 的列，再加载</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="43"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="37"/>
         <source>Batches overlaid</source>
         <translation>批次叠加</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="43"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="37"/>
         <source>Batches one after another</source>
         <translation>批次首尾相接</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="45"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
         <source>Batch</source>
         <translation>批次</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="45"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
         <source>Rows</source>
         <translation>行数</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="45"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
         <source>Kept</source>
         <translation>保留</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="45"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
         <source>Length [min]</source>
         <translation>时长 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="46"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="40"/>
         <source>Mean X_out [% wb]</source>
         <translation>平均 X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="46"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="40"/>
         <source>Mean T_hot [°C]</source>
         <translation>平均 T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="62"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="56"/>
         <source>Batches (select several to overlay; drop files here):</source>
         <translation>批次（多选可叠加；可将文件拖放到此处）：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="81"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="75"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="81"/>
-        <location filename="../widgets/data/DataPanel.cpp" line="94"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="75"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="88"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="87"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="81"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="93"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="87"/>
         <source>A batch file with your column names</source>
         <translation>一个使用您的列名的批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="103"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="97"/>
         <source>Save the column mapping</source>
         <translation>保存列映射</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="103"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="97"/>
         <source>Mappings (*.json)</source>
         <translation>映射 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="170"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="162"/>
         <source>Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.</source>
         <translation>清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。</translation>
     </message>
@@ -293,205 +313,220 @@
 <context>
     <name>drytwin::widgets::DiagnosticsPanel</name>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="29"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="26"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="30"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="27"/>
         <source>Evaluate a trained model to see its residuals.</source>
         <translation>评估已训练的模型以查看其残差。</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="33"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="30"/>
         <source>ACF [-]</source>
         <translation>自相关 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="34"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="31"/>
         <source>lag [s]</source>
         <translation>滞后 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="36"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="33"/>
         <source>PSD [(% wb)²/Hz]</source>
         <translation>功率谱密度 [(% 湿基)²/Hz]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="37"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="34"/>
         <source>frequency [Hz]</source>
         <translation>频率 [Hz]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="42"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="39"/>
         <source>Models shown (tick to overlay):</source>
         <translation>显示的模型（勾选以叠加）：</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="46"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="43"/>
         <source>error [% wb]</source>
         <translation>误差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="62"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="60"/>
         <source>Physics model&apos;s error against</source>
         <translation>机理模型误差相对于</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="102"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="65"/>
+        <source>CCF [-]</source>
+        <translation>互相关 [-]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="66"/>
+        <source>lag of the input [s] (run Discover)</source>
+        <translation>输入的滞后 [s]（请运行发现）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="108"/>
         <source>%1: Ljung-Box p %2, residual mean %3 % wb</source>
         <translation>%1：Ljung-Box p = %2，残差均值 %3 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="138"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="144"/>
         <source>%1 (%2 % below 0.01 Hz)</source>
         <translation>%1（%2 % 低于 0.01 Hz）</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="144"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="150"/>
         <source>95 % band of white noise</source>
         <translation>白噪声 95 % 置信带</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="184"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="190"/>
         <source>every 10th kept row</source>
         <translation>保留行中每隔 10 行</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="218"/>
+        <source>lag of the input [s]</source>
+        <translation>输入的滞后 [s]</translation>
     </message>
 </context>
 <context>
     <name>drytwin::widgets::DiscoverPanel</name>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="19"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="20"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="20"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="21"/>
         <source>What does the simulation get wrong, and why? (score tests, fits, held-out gain)</source>
         <translation>仿真哪里出错，为什么？（得分检验、拟合、留出数据上的改进）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="21"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="22"/>
         <source>Extend the model</source>
         <translation>扩展模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="24"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="25"/>
         <source>Make the extended model (named causes, refitted h_HDT and k_HDT, residual models retrained) the session&apos;s model</source>
         <translation>将扩展后的模型（已命名的原因、重新拟合的 h_HDT 与 k_HDT、重新训练的残差模型）设为当前模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="26"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
         <source>Run discovery on the loaded data with the current model.</source>
         <translation>用当前模型在已加载的数据上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>p (Holm)</source>
         <translation>p（Holm）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>Fitted</source>
         <translation>已拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>Loss</source>
         <translation>损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
         <source>Held-out</source>
         <translation>留出数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
         <source>Before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
         <source>After</source>
         <translation>之后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="40"/>
         <source>X_out residual [% wb]</source>
         <translation>X_out 残差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="40"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
         <source>T_out residual [°C]</source>
         <translation>T_out 残差 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="42"/>
         <source>time, batches one after another [h]</source>
         <translation>时间，批次首尾相接 [h]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="50"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="51"/>
         <source>Candidate causes, first round:</source>
         <translation>候选原因（第一轮）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="53"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="69"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="70"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="87"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="88"/>
         <source>Verdict: %1. No mechanism is named.</source>
         <translation>结论：%1。未命名任何机理。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="88"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="89"/>
         <source>Verdict: %1. Named: %2.</source>
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="118"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="117"/>
         <source>%1 at %2 s (ccf %3%4)</source>
         <translation>%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="122"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="121"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="125"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="124"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
@@ -506,48 +541,48 @@
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="149"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="147"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="150"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="148"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="155"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="151"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="149"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="152"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="150"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="153"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="151"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="154"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="152"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="155"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="183"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="181"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="184"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="182"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -859,128 +894,128 @@
 <context>
     <name>drytwin::widgets::ModelPanel</name>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="49"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="49"/>
         <source>Value</source>
         <translation>数值</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="49"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="49"/>
         <source>Lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="49"/>
         <source>Upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="49"/>
         <source>Source</source>
         <translation>来源</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="49"/>
         <source>Meaning</source>
         <translation>含义</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="55"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
         <source>Undo</source>
         <translation>撤销</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="56"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="53"/>
         <source>Redo</source>
         <translation>重做</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="64"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="61"/>
         <source>Physics switches</source>
         <translation>物理开关</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="66"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="63"/>
         <source>clamp water activity (Eq. 2)</source>
         <translation>限制水分活度（式 2）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="66"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="63"/>
         <source>bound-water latent heat (Eq. 4)</source>
         <translation>结合水潜热（式 4）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="67"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="64"/>
         <source>moisture-dependent heat capacity (Eq. 3)</source>
         <translation>随含水率变化的比热（式 3）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="68"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="65"/>
         <source>consistent energy balance (Eqs. 12, 14, 19; off: as printed)</source>
         <translation>一致的能量平衡（式 12、14、19；关闭：按原文）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="84"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="81"/>
         <source>Simulate</source>
         <translation>仿真</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="85"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="82"/>
         <source>Run the physics model over every batch with these parameters</source>
         <translation>用这些参数对每个批次运行机理模型</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="92"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="89"/>
         <source>Double-click a value to edit it; it is checked against its bounds.</source>
         <translation>双击数值进行编辑；将按其上下限检查。</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="102"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="99"/>
         <source>Batch:</source>
         <translation>批次：</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="106"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="103"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="107"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="104"/>
         <source>T_out [°C]</source>
         <translation>T_out [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="108"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="105"/>
         <source>X_HDT [% wb]</source>
         <translation>X_HDT [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="109"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="106"/>
         <source>T_HDT [°C]</source>
         <translation>T_HDT [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="146"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="143"/>
         <source>%1 must lie in [%2, %3] %4; it stays %5.</source>
         <translation>%1 必须在 [%2, %3] %4 之内；保持为 %5。</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="207"/>
-        <location filename="../widgets/model/ModelPanel.cpp" line="215"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="204"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="212"/>
         <source>measured</source>
         <translation>实测</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="227"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="224"/>
         <source>physics model</source>
         <translation>机理模型</translation>
     </message>
@@ -988,132 +1023,132 @@
 <context>
     <name>drytwin::widgets::MpcPanel</name>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="39"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="38"/>
         <source>Open scenario…</source>
         <translation>打开情景…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="43"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="42"/>
         <source>The scenario as JSON (schema in docs/mpc.md): setpoint steps, input steps and ramps, hidden mechanisms switched on mid-run, noise. Edits are checked when you run.</source>
         <translation>以 JSON 表示的情景（格式见 docs/mpc.md）：设定值阶跃、输入阶跃与斜坡、运行中途开启的隐藏机理、噪声。运行时检查修改。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="51"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="50"/>
         <source>Run scenario</source>
         <translation>运行情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="53"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="52"/>
         <source>Show the horizon the controllers predicted at this decision</source>
         <translation>显示控制器在此决策时刻预测的时域</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="54"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="53"/>
         <source>Runs the scenario against the virtual plant once per controller.</source>
         <translation>对虚拟装置逐个控制器运行该情景。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
         <source>IAE [%·s]</source>
         <translation>IAE [%·s]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
         <source>Effort [K²]</source>
         <translation>控制量 [K²]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="58"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
         <source>Violations [%]</source>
         <translation>越限 [%]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="58"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
         <source>Solve median [ms]</source>
         <translation>求解时间中位数 [ms]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="58"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
         <source>Fallbacks</source>
         <translation>回退次数</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="59"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="58"/>
         <source>Model gain [%/K]</source>
         <translation>模型增益 [%/K]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
         <source>X_out, true [% wb]</source>
         <translation>X_out 真实值 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="64"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
         <source>T_hot setpoint [°C]</source>
         <translation>T_hot 设定值 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="76"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="75"/>
         <source>prediction at</source>
         <translation>预测时刻</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="99"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="98"/>
         <source>Open scenario</source>
         <translation>打开情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="99"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="98"/>
         <source>Scenarios (*.json)</source>
         <translation>情景 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="114"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="113"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="131"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="130"/>
         <source>Cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="145"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="144"/>
         <source>Choose at least one controller.</source>
         <translation>请至少选择一个控制器。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="148"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="147"/>
         <source>Running…</source>
         <translation>正在运行…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="169"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="168"/>
         <source>skipped</source>
         <translation>已跳过</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="186"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="182"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="194"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="190"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="210"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="206"/>
         <source>%1 predicted at %2 s</source>
         <translation>%1 在 %2 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="219"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="215"/>
         <source>%1. IAE and violations on the product&apos;s true outlet moisture; the plant&apos;s own gain is %2 % wb/K.</source>
         <translation>%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。</translation>
     </message>
@@ -1205,127 +1240,127 @@
 <context>
     <name>drytwin::widgets::ResidualPanel</name>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="31"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="27"/>
         <source>chosen by validation (16, 32, 60)</source>
         <translation>由验证选择（16、32、60）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="35"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="31"/>
         <source>Eq. 30: constrained fit with certificate</source>
         <translation>式 30：带证书的约束拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="35"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="31"/>
         <source>eigenvalues pulled in after the fit</source>
         <translation>拟合后将特征值收缩</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="36"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="32"/>
         <source>orthogonal projection P⊥ (Eq. 27)</source>
         <translation>正交投影 P⊥（式 27）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="38"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="34"/>
         <source>Train PGRL-CC and the baselines</source>
         <translation>训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="40"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="36"/>
         <source>residual lags</source>
         <translation>残差滞后阶数</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="41"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="37"/>
         <source>stability</source>
         <translation>稳定性</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="41"/>
         <source>Trains on the chronological 70 % and evaluates on the rest; settings are chosen inside the training part.</source>
         <translation>按时间顺序用前 70 % 训练，其余部分评估；设置在训练部分内选定。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="49"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="49"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
         <source>MAE X_out [% wb]</source>
         <translation>MAE X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="49"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="46"/>
         <source>MAE T_out [°C]</source>
         <translation>MAE T_out [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="46"/>
         <source>skill 1 step</source>
         <translation>1 步技能值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="46"/>
         <source>skill 30 steps</source>
         <translation>30 步技能值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="54"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
         <source>imaginary part</source>
         <translation>虚部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="55"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="51"/>
         <source>real part</source>
         <translation>实部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="57"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="53"/>
         <source>skill: MAE over the better reference [-]</source>
         <translation>技能值：MAE 与较优参考之比 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="58"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="54"/>
         <source>forecast horizon [steps of 1 s]</source>
         <translation>预测步长 [1 s 步]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="93"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="89"/>
         <source>Training…</source>
         <translation>正在训练…</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="131"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="125"/>
         <source>skill 1 (ties the better reference)</source>
         <translation>技能值 1（与较优参考持平）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="141"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="135"/>
         <source>unit circle</source>
         <translation>单位圆</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="155"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="149"/>
         <source>A unconstrained (ρ = %1)</source>
         <translation>无约束 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="161"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="155"/>
         <source>A with Eq. 30 (ρ = %1)</source>
         <translation>式 30 约束后的 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="188"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="182"/>
         <source> Slowest contraction of A: %1 per step (half-life %2 s).</source>
         <translation> A 的最慢收缩：每步 %1（半衰期 %2 s）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="192"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="186"/>
         <source>Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).</source>
         <translation>留出部分：%1 行。技能值低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
     </message>

@@ -222,6 +222,7 @@ private Q_SLOTS:
         QVERIFY(cal->estimates()->item(0, 2)->text().startsWith("["));
         QVERIFY(w.workbench().model().calibration.has_value());
         QVERIFY(curvesWithData(cal->lossPlot()->plot(0)) >= 1);
+        QVERIFY(curvesWithData(cal->fitPlot()->plot(0)) == 3); // measured, before, after
 
         // Train (a quick setting), then the metrics, eigenvalues and skill curve are shown.
         w.residualPanel()->setQuick(true);
@@ -239,6 +240,7 @@ private Q_SLOTS:
         QVERIFY(w.workbench().latest().discover.has_value());
         QVERIFY(disc->ranking()->rowCount() == 8);
         QVERIFY(disc->verdict()->text().startsWith("Verdict"));
+        QVERIFY(curvesWithData(w.diagnosticsPanel()->crossCorrelation()->plot(0)) >= 1);
         if (disc->extendButton()->isEnabled()) {
             const auto k =
                 w.workbench().latest().discover->extendedModel.parameters[properties::Param::k_HDT];

@@ -1,6 +1,8 @@
 #include "calibration/CalibrationPanel.h"
 
 #include "common/PlotStack.h"
+#include "common/Series.h"
+#include "common/Units.h"
 #include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 
@@ -61,7 +63,7 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
     m_fit->setWordWrap(true);
     m_loss = new PlotStack;
     m_loss->addPlot(tr("best loss [-]"));
-    m_loss->addPlot(tr("parameter / its final value [-]"));
+    m_loss->addPlot(tr("θ / θ final [-]"));
     m_loss->setXTitle(tr("share of the evaluation budget used [-]"));
 
     auto* left = new QWidget;
@@ -75,9 +77,14 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
     ll->addLayout(buttons);
     auto* right = new QWidget;
     auto* rl = new QVBoxLayout(right);
+    m_fitPlot = new PlotStack;
+    m_fitPlot->addPlot(tr("X_out [% wb]"));
     rl->addWidget(m_loss, 2);
     rl->addWidget(m_fit);
-    rl->addWidget(m_estimates, 1);
+    auto* bottom = new QSplitter;
+    bottom->addWidget(m_estimates);
+    bottom->addWidget(m_fitPlot);
+    rl->addWidget(bottom, 2);
     auto* split = new QSplitter;
     split->addWidget(left);
     split->addWidget(right);
@@ -94,7 +101,18 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
         m_loss->addCurve(0, tr("best loss so far"), m_lossX, m_lossY, QColor(214, 39, 40));
         m_loss->rescale();
     });
-    connect(&m_workbench, &Workbench::calibrated, this, &CalibrationPanel::showResult);
+    connect(&m_workbench, &Workbench::calibrated, this, [this] {
+        showResult();
+        // The same batches simulated with the new parameters, for the before/after plot.
+        m_awaitingAfter = true;
+        m_workbench.simulate();
+    });
+    connect(&m_workbench, &Workbench::simulated, this, [this] {
+        if (m_awaitingAfter) {
+            m_awaitingAfter = false;
+            showBeforeAfter();
+        }
+    });
     const auto idle = [this] {
         m_run->setEnabled(true);
         m_stop->setEnabled(false);
@@ -133,6 +151,7 @@ void CalibrationPanel::run() {
     }
     m_lossX.clear();
     m_lossY.clear();
+    m_before = m_workbench.latest().simulate; // what the parameters gave before (if simulated)
     m_run->setEnabled(false);
     m_stop->setEnabled(true);
     m_fit->setText(tr("Calibrating…"));
@@ -194,6 +213,37 @@ void CalibrationPanel::showResult() {
         }
         m_loss->rescale();
     }
+}
+
+} // namespace drytwin::widgets
+
+namespace drytwin::widgets {
+
+void CalibrationPanel::showBeforeAfter() {
+    const auto& si = m_workbench.siBatches();
+    const auto& after = m_workbench.latest().simulate;
+    m_fitPlot->clearCurves();
+    if (si.empty() || !after || after->simulations.empty()) {
+        return;
+    }
+    // The first batch: measured, and the model before and after.
+    const auto& b = si.front();
+    const QVector<double> t = timeOf(b);
+    const auto outlet = [](const physics::SimulationResult& r) {
+        QVector<double> x;
+        for (double v : r.xOutDb) {
+            x << units::dryToWetPct(v);
+        }
+        return x;
+    };
+    m_fitPlot->addCurve(0, tr("measured %1").arg(QString::fromStdString(b.id)), t,
+                        valuesOf(b, batchSeries()[kSeriesXOut]), QColor(31, 119, 180));
+    if (m_before && !m_before->simulations.empty()) {
+        m_fitPlot->addCurve(0, tr("before"), t, outlet(m_before->simulations.front()), QColor(127, 127, 127),
+                            Qt::DashLine);
+    }
+    m_fitPlot->addCurve(0, tr("after"), t, outlet(after->simulations.front()), QColor(214, 39, 40));
+    m_fitPlot->rescale();
 }
 
 } // namespace drytwin::widgets

@@ -1,7 +1,11 @@
 #pragma once
 
 #include <QVector>
+
+#include "workflow/Session.h"
+
 #include <QWidget>
+#include <optional>
 
 class QLabel;
 class QPushButton;
@@ -25,12 +29,15 @@ public:
     QTableWidget* estimates() const { return m_estimates; }
     QTableWidget* freeParameters() const { return m_free; }
     PlotStack* lossPlot() const { return m_loss; }
+    /// @brief Measured outlet moisture with the simulation before and after the last calibration.
+    PlotStack* fitPlot() const { return m_fitPlot; }
     /// @brief Sets the evaluation budget (tests use a small one).
     void setBudget(int evaluations);
     void run();
 
 private:
     void showResult();
+    void showBeforeAfter();
 
     Workbench& m_workbench;
     QTableWidget* m_free = nullptr;
@@ -40,6 +47,9 @@ private:
     QTableWidget* m_estimates = nullptr;
     QLabel* m_fit = nullptr;
     PlotStack* m_loss = nullptr;
+    PlotStack* m_fitPlot = nullptr;
+    std::optional<workflow::SimulateResult> m_before; ///< the simulation when the calibration started
+    bool m_awaitingAfter = false;
     QVector<double> m_lossX, m_lossY;
 };
 

@@ -15,6 +15,9 @@ struct SeriesInfo {
     std::function<double(const data::SiBatch&, std::size_t)> value;
 };
 
+/// @brief Positions of the outputs in batchSeries().
+inline constexpr std::size_t kSeriesXHdt = 5, kSeriesXOut = 6, kSeriesTOut = 7;
+
 /// @brief Every column of a batch file the Data panel plots, in the order of the file.
 const std::vector<SeriesInfo>& batchSeries();
 

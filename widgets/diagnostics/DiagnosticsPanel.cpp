@@ -15,6 +15,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 #include <qwt_plot.h>
+#include <qwt_plot_curve.h>
 
 namespace drytwin::widgets {
 
@@ -60,10 +61,17 @@ DiagnosticsPanel::DiagnosticsPanel(Workbench& workbench, QWidget* parent)
     pick->addWidget(m_operating, 1);
     sb->addLayout(pick);
     sb->addWidget(m_scatter, 1);
+    m_ccf = new PlotStack;
+    m_ccf->addPlot(tr("CCF [-]"));
+    m_ccf->setXTitle(tr("lag of the input [s] (run Discover)"));
+    m_ccf->setXRange(0, 300);
+    auto* lower = new QSplitter;
+    lower->addWidget(scatterBox);
+    lower->addWidget(m_ccf);
     auto* right = new QSplitter(Qt::Vertical);
     right->addWidget(m_acf);
     right->addWidget(m_psd);
-    right->addWidget(scatterBox);
+    right->addWidget(lower);
     auto* split = new QSplitter;
     split->addWidget(left);
     split->addWidget(right);
@@ -75,6 +83,7 @@ DiagnosticsPanel::DiagnosticsPanel(Workbench& workbench, QWidget* parent)
     connect(m_models, &QListWidget::itemChanged, this, &DiagnosticsPanel::redraw);
     connect(&m_workbench, &Workbench::simulated, this, &DiagnosticsPanel::redrawScatter);
     connect(m_operating, &QComboBox::currentTextChanged, this, &DiagnosticsPanel::redrawScatter);
+    connect(&m_workbench, &Workbench::discovered, this, &DiagnosticsPanel::redrawCrossCorrelation);
 }
 
 void DiagnosticsPanel::fill() {
@@ -181,6 +190,33 @@ void DiagnosticsPanel::redrawScatter() {
     m_scatter->addDots(0, tr("every 10th kept row"), x, y, QColor(31, 119, 180));
     m_scatter->setXTitle(chosen->title);
     m_scatter->rescale();
+}
+
+} // namespace drytwin::widgets
+
+namespace drytwin::widgets {
+
+void DiagnosticsPanel::redrawCrossCorrelation() {
+    // The cross-correlations of the physics model's differenced outlet-moisture error with the
+    // differenced inputs and proxies that discovery found strongest, at their lags.
+    const auto& d = m_workbench.latest().discover;
+    m_ccf->clearCurves();
+    if (!d) {
+        return;
+    }
+    int i = 0;
+    for (const auto& o : d->discovery.residuals) {
+        if (o.output != "X_out") {
+            continue;
+        }
+        for (const auto& c : o.correlates) {
+            auto* curve = m_ccf->addCurve(0, QString::fromStdString(c.column), {c.lagS, c.lagS}, {0.0, c.ccf},
+                                          seriesColour(i++), Qt::SolidLine, 4.0);
+            curve->setStyle(QwtPlotCurve::Lines);
+        }
+    }
+    m_ccf->setXTitle(tr("lag of the input [s]"));
+    m_ccf->rescale();
 }
 
 } // namespace drytwin::widgets

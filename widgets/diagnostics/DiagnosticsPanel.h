@@ -22,17 +22,20 @@ public:
     PlotStack* psd() const { return m_psd; }
     QListWidget* models() const { return m_models; }
     PlotStack* scatter() const { return m_scatter; }
+    PlotStack* crossCorrelation() const { return m_ccf; }
 
 private:
     void fill();
     void redraw();
     void redrawScatter();
+    void redrawCrossCorrelation();
 
     Workbench& m_workbench;
     QListWidget* m_models = nullptr;
     PlotStack* m_acf = nullptr;
     PlotStack* m_psd = nullptr;
     PlotStack* m_scatter = nullptr;
+    PlotStack* m_ccf = nullptr;
     QComboBox* m_operating = nullptr;
     QLabel* m_tests = nullptr;
 };

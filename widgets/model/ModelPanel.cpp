@@ -198,7 +198,7 @@ void ModelPanel::redraw() {
     const auto& batch = si[static_cast<std::size_t>(b)];
     const QVector<double> t = timeOf(batch);
     const auto& series = batchSeries();
-    const int measured[4] = {6, 7, 5, -1};
+    const int measured[4] = {kSeriesXOut, kSeriesTOut, kSeriesXHdt, -1}; // T_HDT is not a batch-file plot
     for (int i = 0; i < 4; ++i) {
         if (measured[i] >= 0) {
             m_plots->addCurve(i, tr("measured"), t,
