@@ -238,6 +238,15 @@ ParsedCommandLine CommandLine::parse(int argc, char** argv) {
     return result;
 }
 
+void CommandLine::setReportRenderer(
+    std::function<std::vector<std::string>(const workflow::PipelineResult&, const workflow::Session&,
+                                           const std::string&, std::string&)>
+        renderer,
+    std::string commandLine) {
+    m_impl->options.renderReport = std::move(renderer);
+    m_impl->options.commandLine = std::move(commandLine);
+}
+
 int CommandLine::run() {
     if (!m_impl->selected) {
         return 2;

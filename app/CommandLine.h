@@ -1,6 +1,13 @@
 #pragma once
 
+#include <functional>
 #include <string>
+#include <vector>
+
+namespace drytwin::workflow {
+struct PipelineResult;
+class Session;
+} // namespace drytwin::workflow
 
 namespace drytwin::app {
 
@@ -28,6 +35,12 @@ public:
     ParsedCommandLine parse(int argc, char** argv);
     /// @brief Runs the parsed subcommand headless; returns the contract's exit code.
     int run();
+    /// @brief Hooks for the subcommands that need the GUI's code (the pipeline's HTML/PDF report).
+    void setReportRenderer(
+        std::function<std::vector<std::string>(const workflow::PipelineResult&, const workflow::Session&,
+                                               const std::string&, std::string&)>
+            renderer,
+        std::string commandLine);
 
 private:
     struct Impl;

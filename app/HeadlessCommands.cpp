@@ -9,6 +9,7 @@
 
 #include "common/AtomicFile.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -740,6 +741,20 @@ int runPipeline(const CommandOptions& o) {
         "\nreport %s, with inspect.json, model-calibrated.json, model.json, evaluate.json, ablation.json, "
         "diagnostics.json, discover.json, model-extended.json and mpc.json beside it\n",
         r.reportPath.c_str());
+    if (o.renderReport) {
+        const auto t0 = std::chrono::steady_clock::now();
+        std::string error;
+        const auto files = o.renderReport(r, session, o.outPath, error);
+        if (!error.empty()) {
+            return fail(Error{ErrorKind::BadInput, o.outPath, "the HTML/PDF report: " + error});
+        }
+        for (const auto& f : files) {
+            std::printf("report %s", f.c_str());
+            std::printf("\n");
+        }
+        std::printf("HTML and PDF report with figures: %.1f s\n",
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
     return 0;
 }
 

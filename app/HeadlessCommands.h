@@ -4,8 +4,14 @@
 #include "data/Cleaning.h"
 #include "discovery/Discovery.h"
 
+#include <functional>
 #include <string>
 #include <vector>
+
+namespace drytwin::workflow {
+struct PipelineResult;
+class Session;
+} // namespace drytwin::workflow
 
 namespace drytwin::app {
 
@@ -43,6 +49,12 @@ struct CommandOptions {
     data::CleaningOptions cleaning;
     bool quiet = false;
     Progress progress;
+    /// pipeline: writes report.html and report.pdf from the run's results (set by main, which has
+    /// the GUI's plot code); returns the files written, or an error message.
+    std::function<std::vector<std::string>(const workflow::PipelineResult&, const workflow::Session&,
+                                           const std::string& folder, std::string& error)>
+        renderReport;
+    std::string commandLine; ///< the exact command, for the report's reproducibility block
 };
 
 int runInspect(const CommandOptions& o);

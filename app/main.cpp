@@ -1,6 +1,8 @@
 // drytwin: the GUI without a subcommand, a headless subcommand otherwise (CONTRACT.md §2).
 #include "CommandLine.h"
 #include "MainWindow.h"
+#include "report/ReportWriter.h"
+#include "workflow/Session.h"
 
 #include <QApplication>
 #include <QDir>
@@ -152,8 +154,52 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
 
 } // namespace
 
+/// The pipeline's HTML/PDF report, drawn by the GUI's plot code on Qt's offscreen platform when
+/// there is no display.
+std::vector<std::string> renderReport(int argc, char** argv, const drytwin::workflow::PipelineResult& result,
+                                      const drytwin::workflow::Session& session, const std::string& folder,
+                                      const std::string& command, std::string& error) {
+    if (!QCoreApplication::instance()) {
+        if (!qEnvironmentVariableIsSet("DISPLAY") && !qEnvironmentVariableIsSet("QT_QPA_PLATFORM")) {
+            qputenv("QT_QPA_PLATFORM", "offscreen");
+        }
+        static int qtArgc = 1;
+        static char* qtArgv[] = {argv[0], nullptr};
+        (void)argc;
+        new QApplication(qtArgc, qtArgv); // lives until exit: the report's widgets need it
+    }
+    drytwin::widgets::ReportContext context;
+    context.command = QString::fromStdString(command);
+    if (const auto data = session.dataSet()) {
+        for (const auto& b : data->batches) {
+            context.dataFiles.push_back(b.sourcePath);
+        }
+    }
+    auto files = drytwin::widgets::writeHtmlPdfReport(result, session.siBatches(), context,
+                                                      QString::fromStdString(folder));
+    if (!files) {
+        error = files.error().message();
+        return {};
+    }
+    std::vector<std::string> out;
+    for (const auto& f : *files) {
+        out.push_back(f.toStdString());
+    }
+    return out;
+}
+
 int main(int argc, char** argv) {
     drytwin::app::CommandLine commandLine;
+    std::string command;
+    for (int i = 0; i < argc; ++i) {
+        command += (i ? " " : "") + std::string(argv[i]);
+    }
+    commandLine.setReportRenderer(
+        [argc, argv, command](const drytwin::workflow::PipelineResult& r, const drytwin::workflow::Session& s,
+                              const std::string& folder, std::string& error) {
+            return renderReport(argc, argv, r, s, folder, command, error);
+        },
+        command);
     const auto parsed = commandLine.parse(argc, argv);
     if (parsed.exitNow) {
         return parsed.exitCode;

@@ -1,6 +1,8 @@
 #include "common/PlotStack.h"
 
+#include <QBuffer>
 #include <QEvent>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -374,47 +376,60 @@ bool PlotStack::eventFilter(QObject* watched, QEvent* event) {
     return QWidget::eventFilter(watched, event);
 }
 
+void PlotStack::paintStack(QPainter& painter, const QRectF& area) const {
+    QwtPlotRenderer renderer;
+    renderer.setDiscardFlag(QwtPlotRenderer::DiscardBackground, false);
+    double total = 0;
+    for (auto* plot : m_plots) {
+        total += plot->height() > 0 ? plot->height() : 1;
+    }
+    double y = area.top();
+    for (auto* plot : m_plots) {
+        const double h = area.height() * (plot->height() > 0 ? plot->height() : 1) / total;
+        renderer.render(plot, &painter, QRectF(area.left(), y, area.width(), h));
+        y += h;
+    }
+}
+
+QByteArray PlotStack::renderSvg(const QSize& size) const {
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
+    QSvgGenerator svg;
+    svg.setOutputDevice(&buffer);
+    svg.setSize(size);
+    svg.setViewBox(QRect(QPoint(0, 0), size));
+    svg.setTitle(tr("DryTwin plots"));
+    QPainter painter(&svg);
+    paintStack(painter, QRectF(QPointF(0, 0), size));
+    painter.end();
+    return buffer.data();
+}
+
+QImage PlotStack::renderImage(const QSize& size, double scale) const {
+    QImage image(size * scale, QImage::Format_ARGB32);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    painter.scale(scale, scale);
+    paintStack(painter, QRectF(QPointF(0, 0), size));
+    painter.end();
+    return image;
+}
+
 bool PlotStack::exportTo(const QString& path, QString* error) const {
     const QString suffix = QFileInfo(path).suffix().toLower();
     const QSize size(std::max(width(), 800), std::max(height(), 200 * static_cast<int>(m_plots.size())));
-    QwtPlotRenderer renderer;
-    renderer.setDiscardFlag(QwtPlotRenderer::DiscardBackground, false);
-    const auto paint = [&](QPainter& painter, const QRectF& area) {
-        double total = 0;
-        for (auto* plot : m_plots) {
-            total += plot->height() > 0 ? plot->height() : 1;
+    const auto fail = [&] {
+        if (error) {
+            *error = tr("cannot write %1").arg(path);
         }
-        double y = area.top();
-        for (auto* plot : m_plots) {
-            const double h = area.height() * (plot->height() > 0 ? plot->height() : 1) / total;
-            renderer.render(plot, &painter, QRectF(area.left(), y, area.width(), h));
-            y += h;
-        }
+        return false;
     };
     if (suffix == QLatin1String("png")) {
-        QImage image(size * 2, QImage::Format_ARGB32);
-        image.fill(Qt::white);
-        QPainter painter(&image);
-        painter.scale(2, 2);
-        paint(painter, QRectF(QPointF(0, 0), size));
-        painter.end();
-        if (!image.save(path)) {
-            if (error) {
-                *error = tr("cannot write %1").arg(path);
-            }
-            return false;
-        }
-        return true;
+        return renderImage(size).save(path) || fail();
     }
     if (suffix == QLatin1String("svg")) {
-        QSvgGenerator svg;
-        svg.setFileName(path);
-        svg.setSize(size);
-        svg.setViewBox(QRect(QPoint(0, 0), size));
-        svg.setTitle(tr("DryTwin plots"));
-        QPainter painter(&svg);
-        paint(painter, QRectF(QPointF(0, 0), size));
-        return painter.end();
+        QFile f(path);
+        return (f.open(QIODevice::WriteOnly) && f.write(renderSvg(size)) > 0) || fail();
     }
     if (suffix == QLatin1String("pdf")) {
         QPdfWriter pdf(path);
@@ -423,12 +438,9 @@ bool PlotStack::exportTo(const QString& path, QString* error) const {
         pdf.setResolution(96);
         QPainter painter(&pdf);
         if (!painter.isActive()) {
-            if (error) {
-                *error = tr("cannot write %1").arg(path);
-            }
-            return false;
+            return fail();
         }
-        paint(painter, QRectF(QPointF(0, 0), QSizeF(pdf.width(), pdf.height())));
+        paintStack(painter, QRectF(QPointF(0, 0), QSizeF(pdf.width(), pdf.height())));
         return painter.end();
     }
     if (error) {

@@ -7,6 +7,8 @@
 #include <vector>
 
 class QLabel;
+class QPainter;
+class QImage;
 class QVBoxLayout;
 class QwtPlot;
 class QwtPlotCurve;
@@ -51,6 +53,10 @@ public:
     void setMeasuringCursor(int which, double x);
     /// @brief The readout under the plots ("A … B … Δ …").
     QString readout() const;
+    /// @brief The whole stack drawn at @p size as SVG text (reports embed it inline).
+    QByteArray renderSvg(const QSize& size) const;
+    /// @brief The whole stack drawn at @p size (pixels, times @p scale for sharpness).
+    QImage renderImage(const QSize& size, double scale = 2.0) const;
     /// @brief Writes the whole stack to @p path; the format follows the suffix (png, svg, pdf).
     bool exportTo(const QString& path, QString* error = nullptr) const;
     /// @brief Shows the x range [lo, hi] in every plot.
@@ -69,6 +75,7 @@ private:
     void alignAxes();
     void updateReadout();
     void exportDialog();
+    void paintStack(QPainter& painter, const QRectF& area) const;
 
     QVBoxLayout* m_layout = nullptr;
     QLabel* m_readout = nullptr;

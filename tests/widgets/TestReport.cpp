@@ -1,0 +1,74 @@
+// The pipeline's HTML/PDF report: built from the run's result structs with the GUI's plot code,
+// and its numbers are the ones in the JSON files written beside it.
+#include "report/ReportWriter.h"
+#include "workflow/Session.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+using namespace drytwin;
+
+class TestReport : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void reportMatchesTheJsonFiles() {
+        QTemporaryDir dir;
+        workflow::GenerateOptions g;
+        g.plant = plant::PlantOptions::demo(6);
+        g.plant.batches = 2;
+        g.plant.samples = 1500;
+        g.outFolder = dir.filePath("plant").toStdString();
+        QVERIFY(workflow::Session().generate(g).ok());
+        workflow::Session s;
+        workflow::OpenOptions o;
+        o.dataPath = g.outFolder;
+        QVERIFY(s.open(o).ok());
+        workflow::PipelineOptions p;
+        p.outFolder = dir.filePath("out").toStdString();
+        p.calibrate.calibration.maxEvaluations = 60;
+        p.calibrate.calibration.globalEvaluations = 20;
+        p.train.lstm.epochs = 2;
+        p.train.lstm.hidden = 8;
+        p.train.selection.lags = {4, 8};
+        const std::string scenario = dir.filePath("s.json").toStdString();
+        std::ofstream(scenario) << R"({"name": "r", "length_s": 60, "warmup_s": 150, "seed": 3})";
+        p.mpc.scenarioPath = scenario;
+        auto r = s.pipeline(p);
+        QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
+        widgets::ReportContext context;
+        context.command = QStringLiteral("drytwin pipeline --data plant --out out");
+        for (const auto& b : s.dataSet()->batches) {
+            context.dataFiles.push_back(b.sourcePath);
+        }
+        auto files = widgets::writeHtmlPdfReport(*r, s.siBatches(), context, dir.filePath("out"));
+        QVERIFY2(files.ok(), files ? "" : files.error().message().c_str());
+        QCOMPARE(files->size(), 2);
+        QFile html(files->at(0));
+        QVERIFY(html.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(html.readAll());
+        QCOMPARE(text.count(QStringLiteral("<svg")), 8); // every figure inline
+        QVERIFY(text.contains(QStringLiteral("Paper Fig. 5")));
+        // Numbers equal to the JSON beside it, in the report's own formatting.
+        const auto json = [&](const char* name) {
+            QFile f(dir.filePath(QStringLiteral("out/%1").arg(name)));
+            f.open(QIODevice::ReadOnly);
+            return nlohmann::json::parse(f.readAll().toStdString());
+        };
+        const double iae = json("mpc.json")["controllers"]["pbm"]["iae"].get<double>();
+        QVERIFY(text.contains(QStringLiteral("<td>pbm</td><td>%1</td>").arg(iae, 0, 'f', 1)));
+        const double mae = json("evaluate.json")["models"]["pgrl_cc"]["moisture"]["mae"].get<double>();
+        QVERIFY(text.contains(QStringLiteral("<td>pgrl_cc</td><td>%1</td>").arg(mae, 0, 'f', 4)));
+        // The reproducibility block hashes every data file.
+        QVERIFY(text.contains(QString::fromStdString(context.dataFiles.front())));
+        QFile pdf(files->at(1));
+        QVERIFY(pdf.open(QIODevice::ReadOnly));
+        QVERIFY(pdf.read(5) == "%PDF-");
+        QVERIFY(pdf.size() > 50000);
+    }
+};
+
+QTEST_MAIN(TestReport)
+#include "TestReport.moc"

@@ -1,0 +1,416 @@
+#include "report/ReportWriter.h"
+
+#include "common/LibraryVersions.h"
+#include "common/PlotStack.h"
+#include "common/Series.h"
+#include "common/Units.h"
+#include "common/WidgetHelpers.h"
+
+#include <QBuffer>
+#include <QCryptographicHash>
+#include <QDateTime>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <QLayout>
+#include <QPdfWriter>
+#include <QSaveFile>
+#include <QTextDocument>
+#include <QUrl>
+#include <cmath>
+#include <qwt_plot.h>
+#include <qwt_plot_curve.h>
+#include <qwt_symbol.h>
+
+namespace drytwin::widgets {
+
+namespace {
+
+/// A number as the report and its tests write it.
+QString num(double v, int decimals = 4) {
+    return std::isfinite(v) ? QString::number(v, 'f', decimals) : QStringLiteral("–");
+}
+
+QString esc(const std::string& s) {
+    return QString::fromStdString(s).toHtmlEscaped();
+}
+
+/// Figures in two forms: inline SVG for the HTML, PNG images for the PDF.
+struct Figures {
+    QString html;                                   ///< figure markup for the HTML (inline SVG)
+    QString pdf;                                    ///< the same figure as an <img> for the PDF
+    std::vector<std::pair<QString, QImage>> images; ///< for the PDF, added once its text is set
+    int count = 0;
+
+    void add(const PlotStack& stack, const QString& caption, QSize size = QSize(900, 0)) {
+        if (size.height() == 0) {
+            size.setHeight(230 * stack.plotCount() + 60);
+        }
+        ++count;
+        const QString name = QStringLiteral("figure%1.png").arg(count);
+        QString svg = QString::fromUtf8(stack.renderSvg(size));
+        svg.remove(QRegExp(QStringLiteral("^<\\?xml[^>]*>")));
+        const QString label = QStringLiteral("Figure %1. %2").arg(count).arg(caption.toHtmlEscaped());
+        html = QStringLiteral("<figure>%1<figcaption>%2</figcaption></figure>\n").arg(svg, label);
+        images.emplace_back(name, stack.renderImage(size, 1.5));
+        pdf = QStringLiteral("<p><img src=\"%1\" width=\"640\"><br><i>%2</i></p>\n").arg(name, label);
+    }
+};
+
+/// A plot stack laid out at report size, offscreen.
+std::unique_ptr<PlotStack> stack(const QStringList& yTitles, const QString& xTitle) {
+    auto s = std::make_unique<PlotStack>();
+    for (const auto& t : yTitles) {
+        s->addPlot(t);
+    }
+    s->setXTitle(xTitle);
+    s->resize(900, 230 * static_cast<int>(yTitles.size()) + 60);
+    s->layout()->activate();
+    return s;
+}
+
+QString sha256(const std::string& path) {
+    QFile f(QString::fromStdString(path));
+    if (!f.open(QIODevice::ReadOnly)) {
+        return QStringLiteral("(unreadable)");
+    }
+    QCryptographicHash h(QCryptographicHash::Sha256);
+    h.addData(&f);
+    return QString::fromLatin1(h.result().toHex());
+}
+
+} // namespace
+
+Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
+                                         const std::vector<data::SiBatch>& batches,
+                                         const ReportContext& context, const QString& folder) {
+    QTextDocument pdfDoc;
+    // Two bodies, one text: sections are appended to both, figures differ by form.
+    QString html, pdf;
+    const auto both = [&](const QString& s) {
+        html += s;
+        pdf += s;
+    };
+    Figures fig;
+    const auto figure = [&](const PlotStack& s, const QString& caption, QSize size = QSize(900, 0)) {
+        fig.add(s, caption, size);
+        html += fig.html;
+        pdf += fig.pdf;
+    };
+
+    both(QStringLiteral("<h1>DryTwin pipeline report</h1><p>%1</p>")
+             .arg(QDateTime::currentDateTimeUtc().toString(Qt::ISODate)));
+
+    // Data overview.
+    const auto& in = r.inspect;
+    both(QStringLiteral(
+             "<h2>Data</h2><p>%1 batches, %2 rows, %3 missing cells; the cleaning rules of §IV.A keep "
+             "%4 rows.</p>")
+             .arg(in.batches.size())
+             .arg(in.rows)
+             .arg(in.missing)
+             .arg(in.cleaning.kept));
+    {
+        auto s =
+            stack({QStringLiteral("X_out [% wb]"), QStringLiteral("T_hot [°C]")}, QStringLiteral("time [s]"));
+        for (std::size_t b = 0; b < batches.size(); ++b) {
+            const QVector<double> t = timeOf(batches[b]);
+            s->addCurve(0, QString::fromStdString(batches[b].id), t,
+                        valuesOf(batches[b], batchSeries()[kSeriesXOut]), seriesColour(static_cast<int>(b)),
+                        Qt::SolidLine, 0.8);
+            s->addCurve(1, QString::fromStdString(batches[b].id), t, valuesOf(batches[b], batchSeries()[0]),
+                        seriesColour(static_cast<int>(b)), Qt::SolidLine, 0.8);
+        }
+        s->rescale();
+        figure(*s, QStringLiteral("Outlet moisture and hot-air temperature of every batch, overlaid."));
+    }
+
+    // Calibration.
+    const auto& c = r.calibrate.calibration;
+    both(QStringLiteral(
+             "<h2>Calibration</h2><p>%1, %2 evaluations; loss %3 → %4; outlet MAE %5 → %6 % wb. Intervals: "
+             "%7.</p><table border=\"1\" cellpadding=\"3\"><tr><th>parameter</th><th>estimate</th>"
+             "<th>95 % interval</th><th>unit</th></tr>")
+             .arg(QString::fromLatin1(terminationName(r.calibrate.ending.termination)))
+             .arg(c.evaluations)
+             .arg(num(c.before.loss, 5), num(c.after.loss, 5), num(c.before.maeXOutPct, 3),
+                  num(c.after.maeXOutPct, 3))
+             .arg(esc(c.intervalMethod)));
+    for (const auto& e : c.estimates) {
+        const auto& info = properties::info(e.param);
+        both(QStringLiteral("<tr><td>%1</td><td>%2</td><td>[%3, %4]</td><td>%5</td></tr>")
+                 .arg(fromView(info.symbol), QString::number(e.value, 'g', 6),
+                      QString::number(e.ci95Low, 'g', 6), QString::number(e.ci95High, 'g', 6),
+                      fromView(info.unit)));
+    }
+    both(QStringLiteral("</table>"));
+    if (!c.history.empty()) {
+        auto s = stack({QStringLiteral("best loss [-]")}, QStringLiteral("loss evaluations [-]"));
+        QVector<double> x, y;
+        for (const auto& h : c.history) {
+            x << h.evaluation;
+            y << h.bestLoss;
+        }
+        s->addCurve(0, QStringLiteral("best loss"), x, y, QColor(214, 39, 40));
+        s->rescale();
+        figure(*s, QStringLiteral("Calibration: best loss over the evaluations (CRS2-LM, then BOBYQA)."));
+    }
+
+    // Held-out metrics.
+    const auto& ev = r.evaluate.evaluation;
+    both(QStringLiteral(
+             "<h2>Held-out accuracy</h2><p>Split %1, %2 test rows; skill = MAE over the better of the two "
+             "reference predictors at the same horizon (below 1 beats both).</p><table border=\"1\" "
+             "cellpadding=\"3\"><tr><th>model</th><th>MAE X_out [% wb]</th><th>R² X_out</th><th>MAE T_out "
+             "[°C]</th><th>skill, 1 step</th></tr>")
+             .arg(esc(ev.split))
+             .arg(ev.testRows));
+    for (const auto& m : ev.models) {
+        both(QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td></tr>")
+                 .arg(esc(m.name), num(m.moisture.mae), num(m.moisture.r2, 3), num(m.temperature.mae),
+                      num(m.skillMoisture, 3)));
+    }
+    both(QStringLiteral("</table>"));
+    {
+        auto s = stack({QStringLiteral("X_out error [% wb]")}, QStringLiteral("held-out row [-]"));
+        for (const auto& m : ev.models) {
+            if (m.name != "pbm" && m.name != "pgrl_cc") {
+                continue;
+            }
+            QVector<double> x, y;
+            for (std::size_t k = 0; k < m.moistureResidual.size() && k < 3000; ++k) {
+                x << static_cast<double>(k);
+                y << m.moistureResidual[k];
+            }
+            s->addCurve(0, QString::fromStdString(m.name), x, y, modelColour(m.name), Qt::SolidLine, 0.8);
+        }
+        s->rescale();
+        figure(*s, QStringLiteral(
+                       "Paper Fig. 3: the outlet-moisture error of the calibrated PBM and of the hybrid "
+                       "PGRL-CC one step ahead, first 3,000 held-out rows."));
+    }
+    {
+        auto s = stack({QStringLiteral("ACF [-]"), QStringLiteral("PSD [(% wb)²/Hz]")},
+                       QStringLiteral("lag [s] / frequency [Hz]"));
+        s->setLogScale(1, true, true);
+        for (const auto& m : r.evaluate.diagnostics.models) {
+            if (m.name != "pbm" && m.name != "pgrl_cc") {
+                continue;
+            }
+            QVector<double> lag, acf, f, p;
+            for (std::size_t k = 0; k < m.acf.size(); ++k) {
+                lag << static_cast<double>(k);
+                acf << m.acf[k];
+            }
+            for (std::size_t k = 1; k < m.psdFrequencyHz.size(); ++k) {
+                f << m.psdFrequencyHz[k];
+                p << std::max(1e-12, m.psdDensity[k]);
+            }
+            s->addCurve(0, QString::fromStdString(m.name), lag, acf, modelColour(m.name));
+            s->addCurve(1, QString::fromStdString(m.name), f, p, modelColour(m.name));
+        }
+        s->rescale();
+        figure(
+            *s,
+            QStringLiteral(
+                "Paper Fig. 4: residual ACF (lags 0–40 s) and Welch PSD before (PBM) and after (PGRL-CC)."));
+    }
+    {
+        auto s = stack({QStringLiteral("skill [-]")}, QStringLiteral("forecast horizon [steps of 1 s]"));
+        s->setLogScale(0, true, false);
+        for (const auto& m : ev.models) {
+            QVector<double> h, k;
+            for (std::size_t i = 0; i < ev.horizons.size() && i < m.skillMoistureByHorizon.size(); ++i) {
+                h << ev.horizons[i];
+                k << m.skillMoistureByHorizon[i];
+            }
+            s->addCurve(0, QString::fromStdString(m.name), h, k, modelColour(m.name));
+        }
+        s->rescale();
+        s->plot(0)->setAxisScale(QwtPlot::yLeft, 0, 2.5);
+        s->plot(0)->replot(); // the renderer reads the scales replot computes
+        figure(*s,
+               QStringLiteral("The horizon curve: moisture skill of every predictor, 1 to 180 steps ahead."));
+    }
+    const auto& d = r.evaluate.diagnostics;
+    if (d.hasPgrlCcEigenvalues) {
+        auto s = stack({QStringLiteral("imaginary part")}, QStringLiteral("real part"));
+        QVector<double> cx, cy, ax, ay;
+        for (int i = 0; i <= 180; ++i) {
+            cx << std::cos(2 * M_PI * i / 180);
+            cy << std::sin(2 * M_PI * i / 180);
+        }
+        for (const auto& l : d.pgrlCcAfter.eigenvalues) {
+            ax << l.real();
+            ay << l.imag();
+        }
+        s->addCurve(0, QStringLiteral("unit circle"), cx, cy, Qt::black, Qt::DotLine, 1.0);
+        auto* dots =
+            s->addDots(0, QStringLiteral("eigenvalues of A (ρ = %1)").arg(num(d.pgrlCcAfter.spectralRadius)),
+                       ax, ay, QColor(31, 119, 180));
+        dots->setStyle(QwtPlotCurve::NoCurve);
+        dots->setSymbol(
+            new QwtSymbol(QwtSymbol::Ellipse, QBrush(QColor(31, 119, 180)), Qt::NoPen, QSize(5, 5)));
+        s->rescale();
+        s->plot(0)->setAxisScale(QwtPlot::xBottom, -2.6, 2.6);
+        s->plot(0)->setAxisScale(QwtPlot::yLeft, -1.1, 1.1);
+        s->plot(0)->replot();
+        figure(*s,
+               QStringLiteral("Paper Fig. 6: eigenvalues of the PGRL-CC state matrix with the unit circle."),
+               QSize(900, 400));
+    }
+
+    // Ablation (Table 3).
+    both(QStringLiteral(
+             "<h2>Ablation (paper Table 3)</h2><table border=\"1\" cellpadding=\"3\"><tr><th>variant</th>"
+             "<th>MAE X_out</th><th>R² X_out</th><th>MAE T_out</th><th>MAE X_out, %1 steps</th><th>MAE "
+             "X_out, extrapolation</th></tr>")
+             .arg(r.ablation.multiStepHorizon));
+    for (const auto& a : r.ablation.rows) {
+        both(QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td><td>%6</td></tr>")
+                 .arg(esc(a.variant), num(a.maeMoisture), num(a.r2Moisture, 3), num(a.maeTemperature),
+                      num(a.maeMoistureMultiStep), num(a.regimeMaeMoisture)));
+    }
+    both(QStringLiteral("</table>"));
+
+    // Discovery.
+    const auto& disc = r.discover.discovery;
+    both(QStringLiteral("<h2>Discovery</h2><p>Verdict: %1.</p>").arg(esc(disc.verdict)));
+    for (const auto& f : disc.findings) {
+        both(QStringLiteral("<p><b>%1</b> = %2 [%3, %4]: %5</p>")
+                 .arg(esc(f.cause), QString::number(f.value, 'g', 4), QString::number(f.ci95Low, 'g', 4),
+                      QString::number(f.ci95High, 'g', 4), esc(f.evidence)));
+    }
+    {
+        auto s = stack({QStringLiteral("X_out error [% wb]")},
+                       QStringLiteral("time, batches one after another [h]"));
+        const auto series = [&](const std::vector<discovery::OutputResidual>& rs, const QString& name,
+                                const QColor& col) {
+            for (const auto& o : rs) {
+                if (o.output != "X_out") {
+                    continue;
+                }
+                QVector<double> x, y;
+                double offset = 0, last = 0;
+                for (std::size_t k = 0; k < o.seriesValue.size(); ++k) {
+                    if (k > 0 && o.seriesBatch[k] != o.seriesBatch[k - 1]) {
+                        offset += last + 60;
+                    }
+                    last = o.seriesTimeS[k];
+                    x << (offset + o.seriesTimeS[k]) / 3600.0;
+                    y << o.seriesValue[k];
+                }
+                s->addDots(0, name, x, y, col);
+            }
+        };
+        series(disc.residuals, QStringLiteral("starting model"), QColor(214, 39, 40));
+        series(disc.residualsAfter, QStringLiteral("extended model"), QColor(31, 119, 180));
+        s->rescale();
+        figure(
+            *s,
+            QStringLiteral(
+                "Discovery: the physics model's outlet-moisture error before and after the named causes."));
+    }
+
+    // Closed loop (Table 2, Fig. 5).
+    const auto& cl = r.mpc.closedLoop;
+    both(QStringLiteral(
+             "<h2>Closed-loop MPC (paper Table 2)</h2><p>Scenario %1, %2 steps; plant gain %3 % wb/K.</p>"
+             "<table border=\"1\" cellpadding=\"3\"><tr><th>controller</th><th>IAE [%·s]</th><th>effort "
+             "[K²]</th><th>violations [%]</th><th>solve median [ms]</th><th>believed gain [%/K]</th></tr>")
+             .arg(esc(cl.scenario.name))
+             .arg(cl.scenario.lengthS)
+             .arg(num(cl.plantGainPctPerK)));
+    for (const auto& run : cl.runs) {
+        if (!run.ran) {
+            continue;
+        }
+        const bool pi = run.kind == control::ControllerKind::Pi;
+        both(QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td><td>%6</td></tr>")
+                 .arg(QString::fromLatin1(control::controllerName(run.kind)), num(run.metrics.iaePctS, 1),
+                      num(run.metrics.effortK2, 1), num(run.metrics.violationPct, 1),
+                      pi ? QStringLiteral("–") : num(run.metrics.solveMsMedian, 2),
+                      pi ? QStringLiteral("–") : num(run.metrics.gainPctPerKMedian)));
+    }
+    both(QStringLiteral("</table>"));
+    {
+        auto s = stack({QStringLiteral("X_out, true [% wb]"), QStringLiteral("T_hot setpoint [°C]")},
+                       QStringLiteral("time [s]"));
+        bool setpoint = false;
+        for (const auto& run : cl.runs) {
+            if (!run.ran || run.kind == control::ControllerKind::Lstm ||
+                run.kind == control::ControllerKind::ExtInputResidual) {
+                continue;
+            }
+            const QVector<double> t(run.timeS.begin(), run.timeS.end());
+            if (!setpoint) {
+                s->addCurve(0, QStringLiteral("setpoint"), t,
+                            QVector<double>(run.setpointPct.begin(), run.setpointPct.end()), Qt::black,
+                            Qt::DashLine);
+                setpoint = true;
+            }
+            const QString name = QString::fromLatin1(control::controllerName(run.kind));
+            s->addCurve(0, name, t, QVector<double>(run.xOutTruePct.begin(), run.xOutTruePct.end()),
+                        modelColour(control::controllerName(run.kind)));
+            s->addCurve(1, name, t, QVector<double>(run.hotAirSetpointC.begin(), run.hotAirSetpointC.end()),
+                        modelColour(control::controllerName(run.kind)));
+        }
+        s->rescale();
+        figure(*s, QStringLiteral(
+                       "Paper Fig. 5: closed-loop outlet moisture and hot-air setpoint under the PGRL-CC "
+                       "MPC, the PBM MPC and the plant's PI loop."));
+    }
+
+    // Reproducibility.
+    both(QStringLiteral("<h2>Reproducibility</h2><p>Command: <code>%1</code></p><p>DryTwin %2; Qt %3")
+             .arg(context.command.toHtmlEscaped(), QString::fromStdString(dryTwinVersion()),
+                  QString::fromLatin1(qVersion())));
+    for (const auto& [name, version] : engineLibraryVersions()) {
+        both(QStringLiteral("; %1 %2").arg(esc(name), esc(version)));
+    }
+    both(QStringLiteral(
+             ".</p><p>Closed-loop scenario seed %1; every other random choice uses the options' fixed "
+             "seeds, so the same command on the same files gives the same numbers.</p><table border=\"1\" "
+             "cellpadding=\"3\"><tr><th>data file</th><th>SHA-256</th></tr>")
+             .arg(cl.scenario.seed));
+    for (const auto& f : context.dataFiles) {
+        both(QStringLiteral("<tr><td>%1</td><td><code>%2</code></td></tr>").arg(esc(f), sha256(f)));
+    }
+    both(QStringLiteral("</table>"));
+
+    const QString htmlPath = QDir(folder).filePath(QStringLiteral("report.html"));
+    const QString pdfPath = QDir(folder).filePath(QStringLiteral("report.pdf"));
+    QSaveFile out(htmlPath);
+    const QByteArray page =
+        QStringLiteral("<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>DryTwin report</title>"
+                       "<style>body{font-family:sans-serif;max-width:1000px;margin:auto}table{"
+                       "border-collapse:collapse}figure{margin:1em 0}figcaption{font-style:italic}"
+                       "</style></head><body>%1</body></html>\n")
+            .arg(html)
+            .toUtf8();
+    if (!out.open(QIODevice::WriteOnly) || out.write(page) < 0 || !out.commit()) {
+        return Error{ErrorKind::BadInput, htmlPath.toStdString(),
+                     "cannot write the report: " + out.errorString().toStdString()};
+    }
+    // The PDF: the same text with the figures as images, printed page by page.
+    const QString pdfTemp = pdfPath + QStringLiteral(".part");
+    {
+        QPdfWriter writer(pdfTemp);
+        writer.setPageSize(QPageSize(QPageSize::A4));
+        writer.setResolution(110);
+        writer.setTitle(QStringLiteral("DryTwin pipeline report"));
+        pdfDoc.setHtml(pdf); // clears resources: the images go in after it
+        for (const auto& [name, image] : fig.images) {
+            pdfDoc.addResource(QTextDocument::ImageResource, QUrl(name), image);
+        }
+        pdfDoc.print(&writer);
+    }
+    QFile::remove(pdfPath);
+    if (!QFile::rename(pdfTemp, pdfPath)) {
+        return Error{ErrorKind::BadInput, pdfPath.toStdString(), "cannot write the PDF report"};
+    }
+    return QStringList{htmlPath, pdfPath};
+}
+
+} // namespace drytwin::widgets
