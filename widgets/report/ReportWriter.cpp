@@ -385,7 +385,7 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
     const QByteArray page =
         QStringLiteral("<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>DryTwin report</title>"
                        "<style>body{font-family:sans-serif;max-width:1000px;margin:auto}table{"
-                       "border-collapse:collapse}figure{margin:1em 0}figcaption{font-style:italic}"
+                       "border-collapse:collapse}figure{margin:1em 0}figure svg{max-width:100%;height:auto}figcaption{font-style:italic}"
                        "</style></head><body>%1</body></html>\n")
             .arg(html)
             .toUtf8();
