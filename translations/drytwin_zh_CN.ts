@@ -172,8 +172,8 @@
     </message>
     <message>
         <location filename="../widgets/data/ColumnMappingDialog.cpp" line="42"/>
-        <source>Choose, for each column DryTwin needs, the header your files use. The values must be in the unit shown; required columns are marked *.</source>
-        <translation>为 DryTwin 需要的每一列选择您文件中使用的表头。数值必须采用所示单位；必需的列标有 *。</translation>
+        <source>Choose, for each column DryTwin needs, the header your files use and the unit its values are in (converted when read); required columns are marked *.</source>
+        <translation>为 DryTwin 需要的每一列选择您文件中使用的表头及其数值的单位（读取时换算）；必需的列标有 *。</translation>
     </message>
     <message>
         <location filename="../widgets/data/ColumnMappingDialog.cpp" line="48"/>
@@ -196,12 +196,17 @@
         <translation>含义</translation>
     </message>
     <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="48"/>
+        <source>Unit in your file</source>
+        <translation>您文件中的单位</translation>
+    </message>
+    <message>
         <location filename="../widgets/data/ColumnMappingDialog.cpp" line="61"/>
         <source>(not in the file)</source>
         <translation>（文件中没有）</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="117"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="142"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -1156,83 +1161,82 @@
 <context>
     <name>drytwin::widgets::PlotStack</name>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="80"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="82"/>
         <source>Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click to zoom out, middle drag to pan</source>
         <translation>Ctrl+单击：游标 A，Shift+单击：游标 B，Alt+单击：时间游标；拖动放大，右键缩小，中键拖动平移</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="84"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="86"/>
         <source>Export…</source>
         <translation>导出…</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="85"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="87"/>
         <source>Save these plots as PNG, SVG or PDF</source>
         <translation>将这些图表保存为 PNG、SVG 或 PDF</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="158"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="160"/>
         <source>time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="333"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="335"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="336"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="338"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="339"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="341"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="343"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="345"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="347"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="349"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="403"/>
-        <location filename="../widgets/common/PlotStack.cpp" line="427"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="423"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="414"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="401"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="435"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="447"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg or .pdf</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="442"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="454"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="443"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="455"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="449"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="461"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="451"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="463"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>

@@ -260,6 +260,7 @@ ZH = {
     "°C": "°C",
     "Δx %1": "Δx %1",
     "Column mapping": "列映射",
+    "Unit in your file": "您文件中的单位",
     "CCF [-]": "互相关 [-]",
     "lag of the input [s] (run Discover)": "输入的滞后 [s]（请运行发现）",
     "lag of the input [s]": "输入的滞后 [s]",
@@ -276,8 +277,8 @@ ZH = {
     "θ / θ final [-]": "θ / θ 最终值 [-]",
     " Slowest contraction of A: %1 per step (half-life %2 s).": " A 的最慢收缩：每步 %1（半衰期 %2 s）。",
     "Could not read the headers of %1.": "无法读取 %1 的表头。",
-    "Choose, for each column DryTwin needs, the header your files use. The values must be in the unit shown; required columns are marked *.":
-        "为 DryTwin 需要的每一列选择您文件中使用的表头。数值必须采用所示单位；必需的列标有 *。",
+    "Choose, for each column DryTwin needs, the header your files use and the unit its values are in (converted when read); required columns are marked *.":
+        "为 DryTwin 需要的每一列选择您文件中使用的表头及其数值的单位（读取时换算）；必需的列标有 *。",
     "DryTwin column": "DryTwin 列",
     "Header in your file": "您文件中的表头",
     "(not in the file)": "（文件中没有）",

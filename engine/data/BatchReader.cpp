@@ -345,6 +345,8 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
             } else if (!std::isfinite(v)) {
                 return badInput(file, row.line, static_cast<int>(c) + 1,
                                 "infinite value '" + cell + "' in column '" + col.fileName + "'");
+            } else {
+                v = options.mapping.toContractUnit(col.id, v); // a plant's own unit, when mapped
             }
             col.values.push_back(v);
         }

@@ -3,6 +3,7 @@
 #include "common/AtomicFile.h"
 #include "data/Columns.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -22,7 +23,99 @@ std::string ColumnMapping::contractNameFor(const std::string& fileHeader) const 
     return {};
 }
 
+namespace {
+
+enum class Quantity { Time, Temperature, Moisture, Feed, Humidity, Speed };
+
+Quantity quantityOf(Column c) {
+    switch (c) {
+    case Column::Time:
+        return Quantity::Time;
+    case Column::XIn:
+    case Column::XHdt:
+    case Column::XOut:
+        return Quantity::Moisture;
+    case Column::Feed:
+        return Quantity::Feed;
+    case Column::RHAmb:
+        return Quantity::Humidity;
+    case Column::AirSpeed:
+        return Quantity::Speed;
+    default:
+        return Quantity::Temperature;
+    }
+}
+
+} // namespace
+
+std::vector<std::string> unitsFor(Column column) {
+    switch (quantityOf(column)) {
+    case Quantity::Time:
+        return {"s", "min"};
+    case Quantity::Temperature:
+        return {"degC", "degF", "K"};
+    case Quantity::Moisture:
+        return {"% wb", "% db", "fraction wb"};
+    case Quantity::Feed:
+        return {"kg/h", "kg/s", "kg/min", "t/h"};
+    case Quantity::Humidity:
+        return {"%", "fraction"};
+    case Quantity::Speed:
+        return {"m/s"};
+    }
+    return {};
+}
+
+double ColumnMapping::toContractUnit(Column column, double v) const {
+    const auto it = contractToUnit.find(std::string(spec(column).name));
+    if (it == contractToUnit.end()) {
+        return v;
+    }
+    const std::string& u = it->second;
+    if (u == "degF") {
+        return (v - 32.0) * 5.0 / 9.0;
+    }
+    if (u == "K") {
+        return v - 273.15;
+    }
+    if (u == "% db") {
+        return 100.0 * v / (100.0 + v); // dry basis to wet basis
+    }
+    if (u == "fraction wb" || u == "fraction") {
+        return 100.0 * v;
+    }
+    if (u == "kg/s") {
+        return 3600.0 * v;
+    }
+    if (u == "kg/min") {
+        return 60.0 * v;
+    }
+    if (u == "t/h") {
+        return 1000.0 * v;
+    }
+    if (u == "min") {
+        return 60.0 * v;
+    }
+    return v; // the contract's own unit
+}
+
 Status ColumnMapping::validate() const {
+    for (const auto& [contract, unit] : contractToUnit) {
+        const auto id = columnByName(contract);
+        if (!id) {
+            return Error{ErrorKind::BadInput, "column mapping",
+                         "'" + contract + "' is not a column of the batch format (CONTRACT.md §1)"};
+        }
+        const auto units = unitsFor(*id);
+        if (std::find(units.begin(), units.end(), unit) == units.end()) {
+            std::string list;
+            for (const auto& u : units) {
+                list += (list.empty() ? "" : ", ") + u;
+            }
+            return Error{ErrorKind::BadInput, "column mapping",
+                         "unit '" + unit + "' of '" + contract + "' is not one of " + list};
+        }
+    }
     std::set<std::string> used;
     for (const auto& [contract, file] : contractToFile) {
         if (!columnByName(contract)) {
@@ -52,8 +145,20 @@ Expected<ColumnMapping> readColumnMapping(const std::string& path) {
             return Error{ErrorKind::BadInput, path, "a column mapping must be a JSON object"};
         }
         for (const auto& [key, value] : j.items()) {
+            if (value.is_object() && value.contains("header") && value["header"].is_string()) {
+                mapping.contractToFile[key] = value["header"].get<std::string>();
+                if (value.contains("unit")) {
+                    if (!value["unit"].is_string()) {
+                        return Error{ErrorKind::BadInput, path,
+                                     "the unit for '" + key + "' must be a string"};
+                    }
+                    mapping.contractToUnit[key] = value["unit"].get<std::string>();
+                }
+                continue;
+            }
             if (!value.is_string()) {
-                return Error{ErrorKind::BadInput, path, "the value for '" + key + "' must be a string"};
+                return Error{ErrorKind::BadInput, path,
+                             "the value for '" + key + "' must be a header or {\"header\": …, \"unit\": …}"};
             }
             mapping.contractToFile[key] = value.get<std::string>();
         }

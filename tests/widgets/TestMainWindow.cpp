@@ -129,10 +129,10 @@ private Q_SLOTS:
 
     void foreignColumnNamesAreMappedAndLoaded() {
         QTemporaryDir dir;
-        writeText(
-            dir.filePath("plant.csv"),
-            "Zeit,Heissluft,Durchsatz,Feuchte_ein,Umgebung,RF,Feuchte_aus,Temp_aus\n"
-            "0,170,6000,22,20,50,12.5,55\n1,171,6000,22,20,50,12.6,55.1\n2,171,6000,22,20,50,12.7,55.3\n");
+        writeText(dir.filePath("plant.csv"),
+                  "Zeit,Heissluft,Durchsatz,Feuchte_ein,Umgebung,RF,Feuchte_aus,Temp_aus\n"
+                  "0,338,6000,22,20,50,12.5,55\n1,339.8,6000,22,20,50,12.6,55.1\n2,339.8,6000,22,20,50,12.7,"
+                  "55.3\n");
         widgets::ColumnMappingDialog dialog(dir.filePath("plant.csv"));
         QCOMPARE(dialog.headers().size(), 8);
         const QStringList contract{"time_s",  "T_hot_C",    "feed_kg_h", "X_in_pct",
@@ -141,6 +141,8 @@ private Q_SLOTS:
             QVERIFY2(dialog.choose(contract[i], dialog.headers()[i]), qPrintable(contract[i]));
         }
         QVERIFY(!dialog.choose("no_such_column", "Zeit"));
+        QVERIFY(dialog.chooseUnit("T_hot_C", "degF")); // this plant logs the hot air in °F
+        QVERIFY(!dialog.chooseUnit("T_hot_C", "kg/h"));
         const QString mapping = dir.filePath("mapping.json");
         QVERIFY(dialog.save(mapping));
         MainWindow w;
@@ -150,6 +152,8 @@ private Q_SLOTS:
         QCOMPARE(loaded.takeFirst().at(0).toBool(), true);
         QCOMPARE(w.dataSet().batches.size(), std::size_t(1));
         QVERIFY(w.dataPanel()->cleaningSummary()->text().contains("3 of 3 rows kept"));
+        // 338 °F is 170 °C.
+        QVERIFY(std::abs((*w.dataSet().batches[0].values(data::Column::THot))[0] - 170.0) < 1e-9);
         // Without the mapping the same file is rejected, naming a missing column.
         w.workbench().openData(dir.filePath("plant.csv"));
         QVERIFY(loaded.wait(10000));

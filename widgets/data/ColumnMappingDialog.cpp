@@ -1,6 +1,7 @@
 #include "data/ColumnMappingDialog.h"
 
 #include "common/WidgetHelpers.h"
+#include "data/ColumnMapping.h"
 #include "data/Columns.h"
 
 #include <QComboBox>
@@ -36,16 +37,16 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* pare
             break;
         }
     }
-    m_note = new QLabel(
-        m_headers.isEmpty()
-            ? tr("Could not read the headers of %1.").arg(batchFile)
-            : tr("Choose, for each column DryTwin needs, the header your files use. The values must "
-                 "be in the unit shown; required columns are marked *."));
+    m_note =
+        new QLabel(m_headers.isEmpty()
+                       ? tr("Could not read the headers of %1.").arg(batchFile)
+                       : tr("Choose, for each column DryTwin needs, the header your files use and the unit "
+                            "its values are in (converted when read); required columns are marked *."));
     m_note->setWordWrap(true);
     const auto& specs = data::columnSpecs();
-    m_table = new QTableWidget(static_cast<int>(specs.size()), 4);
-    m_table->setHorizontalHeaderLabels(
-        {tr("DryTwin column"), tr("Unit"), tr("Header in your file"), tr("Meaning")});
+    m_table = new QTableWidget(static_cast<int>(specs.size()), 5);
+    m_table->setHorizontalHeaderLabels({tr("DryTwin column"), tr("Unit"), tr("Header in your file"),
+                                        tr("Unit in your file"), tr("Meaning")});
     m_table->verticalHeader()->hide();
     for (std::size_t i = 0; i < specs.size(); ++i) {
         const auto& s = specs[i];
@@ -69,9 +70,14 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* pare
             }
         }
         m_table->setCellWidget(row, 2, combo);
+        auto* unitCombo = new QComboBox;
+        for (const auto& u : data::unitsFor(s.id)) {
+            unitCombo->addItem(QString::fromStdString(u));
+        }
+        m_table->setCellWidget(row, 3, unitCombo);
         auto* meaning = new QTableWidgetItem(fromView(s.meaning));
         meaning->setFlags(Qt::ItemIsEnabled);
-        m_table->setItem(row, 3, meaning);
+        m_table->setItem(row, 4, meaning);
     }
     m_table->resizeColumnsToContents();
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
@@ -98,12 +104,33 @@ bool ColumnMappingDialog::choose(const QString& contractName, const QString& hea
     return false;
 }
 
+bool ColumnMappingDialog::chooseUnit(const QString& contractName, const QString& unit) {
+    for (int r = 0; r < m_table->rowCount(); ++r) {
+        if (m_table->item(r, 0)->data(Qt::UserRole).toString() == contractName) {
+            auto* combo = qobject_cast<QComboBox*>(m_table->cellWidget(r, 3));
+            const int k = combo->findText(unit);
+            if (k >= 0) {
+                combo->setCurrentIndex(k);
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
 QByteArray ColumnMappingDialog::mappingJson() const {
     QJsonObject o;
     for (int r = 0; r < m_table->rowCount(); ++r) {
         const QString name = m_table->item(r, 0)->data(Qt::UserRole).toString();
         const QString header = qobject_cast<QComboBox*>(m_table->cellWidget(r, 2))->currentData().toString();
-        if (!header.isEmpty() && header != name) {
+        const auto* unit = qobject_cast<QComboBox*>(m_table->cellWidget(r, 3));
+        if (header.isEmpty()) {
+            continue;
+        }
+        if (unit->currentIndex() > 0) { // not the contract's own unit: converted when read
+            o[name] = QJsonObject{{QStringLiteral("header"), header},
+                                  {QStringLiteral("unit"), unit->currentText()}};
+        } else if (header != name) {
             o[name] = header;
         }
     }

@@ -202,6 +202,34 @@ private Q_SLOTS:
         QVERIFY(!bad.validate().ok());
     }
 
+    void columnMappingConvertsUnits() {
+        // A plant logging °F, moisture on dry basis, feed in t/h and RH as a fraction.
+        ColumnMapping m;
+        m.contractToFile["T_hot_C"] = "HotAir_F";
+        m.contractToUnit["T_hot_C"] = "degF";
+        m.contractToFile["X_out_pct"] = "Moist_db";
+        m.contractToUnit["X_out_pct"] = "% db";
+        m.contractToUnit["feed_kg_h"] = "t/h";
+        m.contractToUnit["RH_amb_pct"] = "fraction";
+        QVERIFY(m.validate().ok());
+        ReadOptions ro;
+        ro.mapping = m;
+        auto b = parseBatchText("time_s,HotAir_F,feed_kg_h,X_in_pct,T_amb_C,RH_amb_pct,Moist_db,T_out_C\n"
+                                "0,338,6.2,22,20,0.5,15,55\n",
+                                "u.csv", ro);
+        QVERIFY2(b.ok(), b.ok() ? "" : b.error().message().c_str());
+        QVERIFY(std::abs((*b->values(Column::THot))[0] - 170.0) < 1e-12);          // (338 − 32)·5/9
+        QVERIFY(std::abs((*b->values(Column::XOut))[0] - 1500.0 / 115.0) < 1e-12); // 15 % db → 13.04 % wb
+        QVERIFY(std::abs((*b->values(Column::Feed))[0] - 6200.0) < 1e-9);
+        QVERIFY(std::abs((*b->values(Column::RHAmb))[0] - 50.0) < 1e-12);
+        QCOMPARE((*b->values(Column::XIn))[0], 22.0); // unmapped columns as they are
+        // A unit the column's quantity does not have is refused, naming the choices.
+        ColumnMapping wrong;
+        wrong.contractToUnit["feed_kg_h"] = "degF";
+        QVERIFY(!wrong.validate().ok());
+        QVERIFY(wrong.validate().error().reason.find("kg/h") != std::string::npos);
+    }
+
     void roundTripIsLossless() {
         std::string s = goodFile(3);
         s += "3,170,169.5,16,6200,22,25,24,55,14,58,0.1000000000000000055511151231257827,55.2\n";
