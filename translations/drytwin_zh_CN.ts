@@ -161,17 +161,17 @@
 <context>
     <name>drytwin::widgets::ColumnMappingDialog</name>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="23"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="24"/>
         <source>Column mapping</source>
         <translation>列映射</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="41"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="42"/>
         <source>Could not read the headers of %1.</source>
         <translation>无法读取 %1 的表头。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="42"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="43"/>
         <source>Choose, for each column DryTwin needs, the header your files use and the unit its values are in (converted when read); required columns are marked *.</source>
         <translation>为 DryTwin 需要的每一列选择您文件中使用的表头及其数值的单位（读取时换算）；必需的列标有 *。</translation>
     </message>
@@ -191,22 +191,22 @@
         <translation>您文件中的表头</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="48"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="49"/>
         <source>Meaning</source>
         <translation>含义</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="48"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="49"/>
         <source>Unit in your file</source>
         <translation>您文件中的单位</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="61"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="62"/>
         <source>(not in the file)</source>
         <translation>（文件中没有）</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="142"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="144"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -763,135 +763,145 @@
     </message>
     <message>
         <location filename="../widgets/MainWindow.cpp" line="173"/>
+        <source>&amp;Generate virtual-plant data…</source>
+        <translation>生成虚拟装置数据(&amp;G)…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="174"/>
+        <source>Folder for the virtual plant&apos;s batches</source>
+        <translation>虚拟装置批次的文件夹</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="183"/>
         <source>Open &amp;model…</source>
         <translation>打开模型(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="175"/>
+        <location filename="../widgets/MainWindow.cpp" line="185"/>
         <source>Open model</source>
         <translation>打开模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="175"/>
-        <location filename="../widgets/MainWindow.cpp" line="182"/>
+        <location filename="../widgets/MainWindow.cpp" line="185"/>
+        <location filename="../widgets/MainWindow.cpp" line="192"/>
         <source>Model files (*.json)</source>
         <translation>模型文件 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="180"/>
+        <location filename="../widgets/MainWindow.cpp" line="190"/>
         <source>Save model &amp;as…</source>
         <translation>模型另存为(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="181"/>
+        <location filename="../widgets/MainWindow.cpp" line="191"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="188"/>
+        <location filename="../widgets/MainWindow.cpp" line="198"/>
         <source>Open &amp;project…</source>
         <translation>打开项目(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="190"/>
-        <location filename="../widgets/MainWindow.cpp" line="193"/>
-        <location filename="../widgets/MainWindow.cpp" line="388"/>
+        <location filename="../widgets/MainWindow.cpp" line="200"/>
+        <location filename="../widgets/MainWindow.cpp" line="203"/>
+        <location filename="../widgets/MainWindow.cpp" line="398"/>
         <source>Open project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="190"/>
         <location filename="../widgets/MainWindow.cpp" line="200"/>
         <location filename="../widgets/MainWindow.cpp" line="210"/>
+        <location filename="../widgets/MainWindow.cpp" line="220"/>
         <source>DryTwin projects (*.drytwin)</source>
         <translation>DryTwin 项目 (*.drytwin)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="196"/>
+        <location filename="../widgets/MainWindow.cpp" line="206"/>
         <source>&amp;Save project</source>
         <translation>保存项目(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="199"/>
-        <location filename="../widgets/MainWindow.cpp" line="204"/>
-        <location filename="../widgets/MainWindow.cpp" line="210"/>
-        <location filename="../widgets/MainWindow.cpp" line="213"/>
+        <location filename="../widgets/MainWindow.cpp" line="209"/>
+        <location filename="../widgets/MainWindow.cpp" line="214"/>
+        <location filename="../widgets/MainWindow.cpp" line="220"/>
+        <location filename="../widgets/MainWindow.cpp" line="223"/>
         <source>Save project</source>
         <translation>保存项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="208"/>
+        <location filename="../widgets/MainWindow.cpp" line="218"/>
         <source>Save project as…</source>
         <translation>项目另存为…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="216"/>
+        <location filename="../widgets/MainWindow.cpp" line="226"/>
         <source>Recent projects</source>
         <translation>最近的项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="219"/>
+        <location filename="../widgets/MainWindow.cpp" line="229"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="222"/>
+        <location filename="../widgets/MainWindow.cpp" line="232"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="223"/>
+        <location filename="../widgets/MainWindow.cpp" line="233"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="235"/>
+        <location filename="../widgets/MainWindow.cpp" line="245"/>
         <source>The language changes when DryTwin is started again.</source>
         <translation>语言将在 DryTwin 重新启动后生效。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="238"/>
+        <location filename="../widgets/MainWindow.cpp" line="248"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="239"/>
+        <location filename="../widgets/MainWindow.cpp" line="249"/>
         <source>&amp;About DryTwin</source>
         <translation>关于 DryTwin(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="240"/>
+        <location filename="../widgets/MainWindow.cpp" line="250"/>
         <source>About DryTwin</source>
         <translation>关于 DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="241"/>
+        <location filename="../widgets/MainWindow.cpp" line="251"/>
         <source>About &amp;Qt</source>
         <translation>关于 Qt(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="245"/>
+        <location filename="../widgets/MainWindow.cpp" line="255"/>
         <source>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;Digital-twin workbench for pneumatic drying lines, implementing the PGRL-CC method.&lt;/p&gt;&lt;table&gt;</source>
         <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="309"/>
-        <location filename="../widgets/MainWindow.cpp" line="316"/>
+        <location filename="../widgets/MainWindow.cpp" line="319"/>
+        <location filename="../widgets/MainWindow.cpp" line="326"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="322"/>
+        <location filename="../widgets/MainWindow.cpp" line="332"/>
         <source>Project saved to %1</source>
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="330"/>
+        <location filename="../widgets/MainWindow.cpp" line="340"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="339"/>
+        <location filename="../widgets/MainWindow.cpp" line="349"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
@@ -1290,16 +1300,19 @@
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
         <source>MAE X_out [% wb]</source>
         <translation>MAE X_out [% 湿基]</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="46"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
         <source>MAE T_out [°C]</source>
         <translation>MAE T_out [°C]</translation>
     </message>
@@ -1334,37 +1347,57 @@
         <translation>预测步长 [1 s 步]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="89"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="57"/>
+        <source>Ablation (paper Table 3)</source>
+        <translation>消融实验（论文表 3）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="58"/>
+        <source>Train and evaluate every variant of Table 3 on this model (a few minutes)</source>
+        <translation>在此模型上训练并评估表 3 的每个变体（需几分钟）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
+        <source>Variant</source>
+        <translation>变体</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="61"/>
+        <source>MAE X_out, extrapolation</source>
+        <translation>MAE X_out（外推）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="100"/>
         <source>Training…</source>
         <translation>正在训练…</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="125"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="136"/>
         <source>skill 1 (ties the better reference)</source>
         <translation>技能值 1（与较优参考持平）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="135"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="146"/>
         <source>unit circle</source>
         <translation>单位圆</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="149"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="160"/>
         <source>A unconstrained (ρ = %1)</source>
         <translation>无约束 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="155"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="166"/>
         <source>A with Eq. 30 (ρ = %1)</source>
         <translation>式 30 约束后的 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="182"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="193"/>
         <source> Slowest contraction of A: %1 per step (half-life %2 s).</source>
         <translation> A 的最慢收缩：每步 %1（半衰期 %2 s）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="186"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="197"/>
         <source>Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).</source>
         <translation>留出部分：%1 行。技能值低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
     </message>
@@ -1528,6 +1561,26 @@
         <location filename="../widgets/common/Workbench.cpp" line="220"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="235"/>
+        <source>Ablation</source>
+        <translation>消融实验</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="238"/>
+        <source>Ablation: %1 variants trained and evaluated</source>
+        <translation>消融实验：已训练并评估 %1 个变体</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="245"/>
+        <source>Generate</source>
+        <translation>生成</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="247"/>
+        <source>Wrote %1 virtual-plant batches to %2</source>
+        <translation>已将 %1 个虚拟装置批次写入 %2</translation>
     </message>
 </context>
 </TS>

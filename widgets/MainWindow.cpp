@@ -170,6 +170,17 @@ void MainWindow::createMenus() {
             openDataSet(p);
         }
     });
+    file->addAction(tr("&Generate virtual-plant data…"), this, [this] {
+        const QString folder =
+            QFileDialog::getExistingDirectory(this, tr("Folder for the virtual plant's batches"));
+        if (folder.isEmpty()) {
+            return;
+        }
+        workflow::GenerateOptions g;
+        g.plant = plant::PlantOptions::demo(2025); // the bundled demo: its mechanisms and drift
+        g.outFolder = folder.toStdString();
+        m_workbench.generate(g);
+    });
     file->addAction(tr("Open &model…"), this, [this] {
         const QString p =
             QFileDialog::getOpenFileName(this, tr("Open model"), {}, tr("Model files (*.json)"));

@@ -297,6 +297,22 @@ private Q_SLOTS:
         QVERIFY(error.contains("not a DryTwin project"));
     }
 
+    void generatedPlantDataIsOpened() {
+        QTemporaryDir dir;
+        MainWindow w;
+        QSignalSpy loaded(&w, &MainWindow::loadFinished);
+        workflow::GenerateOptions g;
+        g.plant = plant::PlantOptions::demo(3);
+        g.plant.batches = 2;
+        g.plant.samples = 1200;
+        g.outFolder = dir.filePath("gen").toStdString();
+        w.workbench().generate(g);
+        QVERIFY(loaded.wait(30000));
+        QCOMPARE(loaded.takeFirst().at(0).toBool(), true);
+        QCOMPARE(w.dataPanel()->batchTable()->rowCount(), 2);
+        QCOMPARE(w.workbench().dataPath(), dir.filePath("gen"));
+    }
+
     void closingMidRunCancelsCleanly() {
         auto* w = new MainWindow;
         w->openDataSet(m_data);

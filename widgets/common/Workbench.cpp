@@ -52,6 +52,10 @@ void Workbench::fetchModel() {
         [this](const hybrid::HybridModel& m) {
             m_model = m;
             Q_EMIT modelChanged();
+            // A model with learnt parts opened on loaded data: show how it does on the held-out part.
+            if (m_model.hasResidualModels() && hasData() && !m_latest.evaluate) {
+                evaluate();
+            }
         });
 }
 
@@ -87,6 +91,9 @@ void Workbench::openData(const QString& path, const QString& mappingPath) {
                               .arg(m_summary.missing)
                               .arg(m_summary.cleaning.kept));
             Q_EMIT dataChanged();
+            if (m_model.hasResidualModels()) {
+                evaluate(); // the model's held-out metrics on the new data
+            }
         },
         [this](const QString& message) { Q_EMIT dataLoadFailed(message); });
 }
@@ -223,6 +230,29 @@ void Workbench::runMpc(const workflow::MpcOptions& options) {
             m_latest.mpc = r;
             Q_EMIT status(QString::fromStdString(r.ending.message));
             Q_EMIT mpcFinished();
+        });
+}
+
+} // namespace drytwin::widgets
+
+namespace drytwin::widgets {
+
+void Workbench::ablation() {
+    start<hybrid::AblationResult>(
+        tr("Ablation"), [](workflow::Session& s, const Progress& p) { return s.ablation(p); },
+        [this](const hybrid::AblationResult& r) {
+            m_latest.ablation = r;
+            Q_EMIT status(tr("Ablation: %1 variants trained and evaluated").arg(r.rows.size()));
+            Q_EMIT ablationFinished();
+        });
+}
+
+void Workbench::generate(const workflow::GenerateOptions& options) {
+    start<workflow::GenerateResult>(
+        tr("Generate"), [options](workflow::Session& s, const Progress& p) { return s.generate(options, p); },
+        [this, folder = QString::fromStdString(options.outFolder)](const workflow::GenerateResult& r) {
+            Q_EMIT status(tr("Wrote %1 virtual-plant batches to %2").arg(r.files.size()).arg(folder));
+            openData(folder);
         });
 }
 

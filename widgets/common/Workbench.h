@@ -48,6 +48,10 @@ public:
     void evaluate();
     void discover();
     void runMpc(const workflow::MpcOptions& options);
+    /// @brief The ablation table (paper Table 3) on the session's model.
+    void ablation();
+    /// @brief Writes virtual-plant batches into a folder and opens them.
+    void generate(const workflow::GenerateOptions& options);
     /// @brief Cancels everything queued or running.
     void cancelAll() { m_jobs.cancelAll(); }
 
@@ -62,6 +66,7 @@ Q_SIGNALS:
     void evaluated();
     void discovered();
     void mpcFinished();
+    void ablationFinished();
     /// @brief An action failed or was cancelled; @p message is worded for the user.
     void failed(const QString& action, const QString& message, bool cancelled);
     /// @brief Loading data failed; what was loaded before is unchanged.

@@ -54,11 +54,25 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     m_skill->setXTitle(tr("forecast horizon [steps of 1 s]"));
     m_skill->setLogScale(0, true, false);
 
+    auto* runAblation = new QPushButton(tr("Ablation (paper Table 3)"));
+    runAblation->setToolTip(tr("Train and evaluate every variant of Table 3 on this model (a few minutes)"));
+    m_ablation = new QTableWidget(0, 5);
+    m_ablation->setHorizontalHeaderLabels({tr("Variant"), tr("MAE X_out [% wb]"), tr("R² X_out"),
+                                           tr("MAE T_out [°C]"), tr("MAE X_out, extrapolation")});
+    m_ablation->verticalHeader()->hide();
+    m_ablation->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    // Sensible empty axes until a model is evaluated (a log axis would autoscale to 1e-100).
+    m_eigen->plot(0)->setAxisScale(QwtPlot::xBottom, -2.5, 2.5);
+    m_eigen->plot(0)->setAxisScale(QwtPlot::yLeft, -1.1, 1.1);
+    m_skill->plot(0)->setAxisScale(QwtPlot::xBottom, 1, 200);
+    m_skill->plot(0)->setAxisScale(QwtPlot::yLeft, 0, 2.5);
     auto* left = new QWidget;
     auto* ll = new QVBoxLayout(left);
     ll->addLayout(form);
     ll->addWidget(m_note);
     ll->addWidget(m_metrics, 1);
+    ll->addWidget(runAblation);
+    ll->addWidget(m_ablation, 1);
     auto* right = new QSplitter(Qt::Vertical);
     right->addWidget(m_eigen);
     right->addWidget(m_skill);
@@ -70,6 +84,8 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     layout->addWidget(split);
     connect(train, &QPushButton::clicked, this, &ResidualPanel::train);
     connect(&m_workbench, &Workbench::evaluated, this, &ResidualPanel::showEvaluation);
+    connect(runAblation, &QPushButton::clicked, &m_workbench, &Workbench::ablation);
+    connect(&m_workbench, &Workbench::ablationFinished, this, &ResidualPanel::showAblation);
 }
 
 void ResidualPanel::train() {
@@ -187,6 +203,26 @@ void ResidualPanel::showEvaluation() {
                        "measurement held, and the PBM with its last error held).")
                         .arg(e.testRows) +
                     rates);
+}
+
+} // namespace drytwin::widgets
+
+namespace drytwin::widgets {
+
+void ResidualPanel::showAblation() {
+    const auto& a = m_workbench.latest().ablation;
+    if (!a) {
+        return;
+    }
+    m_ablation->setRowCount(static_cast<int>(a->rows.size()));
+    for (std::size_t i = 0; i < a->rows.size(); ++i) {
+        const auto& r = a->rows[i];
+        setTableRow(m_ablation, static_cast<int>(i),
+                    {QString::fromStdString(r.variant), QString::number(r.maeMoisture, 'f', 4),
+                     QString::number(r.r2Moisture, 'f', 3), QString::number(r.maeTemperature, 'f', 4),
+                     QString::number(r.regimeMaeMoisture, 'f', 4)});
+    }
+    m_ablation->resizeColumnsToContents();
 }
 
 } // namespace drytwin::widgets

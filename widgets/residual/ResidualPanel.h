@@ -20,6 +20,7 @@ class ResidualPanel : public QWidget {
 public:
     explicit ResidualPanel(Workbench& workbench, QWidget* parent = nullptr);
     QTableWidget* metrics() const { return m_metrics; }
+    QTableWidget* ablation() const { return m_ablation; }
     PlotStack* eigenvalues() const { return m_eigen; }
     PlotStack* skill() const { return m_skill; }
     void train();
@@ -28,12 +29,14 @@ public:
 
 private:
     void showEvaluation();
+    void showAblation();
 
     Workbench& m_workbench;
     QComboBox* m_lags = nullptr;
     QComboBox* m_stability = nullptr;
     QCheckBox* m_projection = nullptr;
     QTableWidget* m_metrics = nullptr;
+    QTableWidget* m_ablation = nullptr;
     PlotStack* m_eigen = nullptr;
     PlotStack* m_skill = nullptr;
     QLabel* m_note = nullptr;
