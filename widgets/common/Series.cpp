@@ -46,6 +46,22 @@ QVector<double> valuesOf(const data::SiBatch& b, const SeriesInfo& s) {
     return v;
 }
 
+void residualSeriesInHours(const std::vector<std::string>& batchOfPoint, const std::vector<double>& timeS,
+                           const std::vector<double>& residual, QVector<double>& hours,
+                           QVector<double>& values) {
+    hours.clear();
+    values.clear();
+    double offset = 0, last = 0;
+    for (std::size_t k = 0; k < residual.size() && k < timeS.size() && k < batchOfPoint.size(); ++k) {
+        if (k > 0 && batchOfPoint[k] != batchOfPoint[k - 1]) {
+            offset += last + 60; // the next batch starts a sample after the last one shown
+        }
+        last = timeS[k];
+        hours << (offset + timeS[k]) / 3600.0;
+        values << residual[k];
+    }
+}
+
 QVector<double> toQVector(const std::vector<double>& v) {
     return QVector<double>(v.begin(), v.end());
 }

@@ -5,6 +5,7 @@
 #include <QString>
 #include <QVector>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace drytwin::widgets {
@@ -25,6 +26,12 @@ const std::vector<SeriesInfo>& batchSeries();
 QVector<double> timeOf(const data::SiBatch& b);
 /// @brief Values of a series over every row (NaN where missing).
 QVector<double> valuesOf(const data::SiBatch& b, const SeriesInfo& s);
+/// @brief Discovery's residual series (every 60 s of every batch) with the batches laid one after
+/// another: time [h] in @p hours, the residual in @p values.
+void residualSeriesInHours(const std::vector<std::string>& batchOfPoint, const std::vector<double>& timeS,
+                           const std::vector<double>& residual, QVector<double>& hours,
+                           QVector<double>& values);
+
 /// @brief A std::vector as a QVector.
 QVector<double> toQVector(const std::vector<double>& v);
 

@@ -1,6 +1,7 @@
 #include "discovery/DiscoverPanel.h"
 
 #include "common/PlotStack.h"
+#include "common/Series.h"
 #include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 
@@ -164,17 +165,8 @@ void DiscoverPanel::show() {
             if (plot < 0 || o.seriesValue.empty()) {
                 continue;
             }
-            // Batches one after another, each from its own start, every 60 s.
             QVector<double> x, y;
-            double offset = 0, last = 0;
-            for (std::size_t k = 0; k < o.seriesValue.size(); ++k) {
-                if (k > 0 && o.seriesBatch[k] != o.seriesBatch[k - 1]) {
-                    offset += last + 60;
-                }
-                last = o.seriesTimeS[k];
-                x << (offset + o.seriesTimeS[k]) / 3600.0;
-                y << o.seriesValue[k];
-            }
+            residualSeriesInHours(o.seriesBatch, o.seriesTimeS, o.seriesValue, x, y);
             m_plots->addDots(plot, name, x, y, colour);
         }
     };

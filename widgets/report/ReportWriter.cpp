@@ -299,15 +299,7 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
                     continue;
                 }
                 QVector<double> x, y;
-                double offset = 0, last = 0;
-                for (std::size_t k = 0; k < o.seriesValue.size(); ++k) {
-                    if (k > 0 && o.seriesBatch[k] != o.seriesBatch[k - 1]) {
-                        offset += last + 60;
-                    }
-                    last = o.seriesTimeS[k];
-                    x << (offset + o.seriesTimeS[k]) / 3600.0;
-                    y << o.seriesValue[k];
-                }
+                residualSeriesInHours(o.seriesBatch, o.seriesTimeS, o.seriesValue, x, y);
                 s->addDots(0, name, x, y, col);
             }
         };
