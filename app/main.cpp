@@ -156,7 +156,7 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
 
 /// The pipeline's HTML/PDF report, drawn by the GUI's plot code on Qt's offscreen platform when
 /// there is no display.
-std::vector<std::string> renderReport(int argc, char** argv, const drytwin::workflow::PipelineResult& result,
+std::vector<std::string> renderReport(char** argv, const drytwin::workflow::PipelineResult& result,
                                       const drytwin::workflow::Session& session, const std::string& folder,
                                       const std::string& command, std::string& error) {
     if (!QCoreApplication::instance()) {
@@ -165,7 +165,6 @@ std::vector<std::string> renderReport(int argc, char** argv, const drytwin::work
         }
         static int qtArgc = 1;
         static char* qtArgv[] = {argv[0], nullptr};
-        (void)argc;
         new QApplication(qtArgc, qtArgv); // lives until exit: the report's widgets need it
     }
     drytwin::widgets::ReportContext context;
@@ -195,10 +194,9 @@ int main(int argc, char** argv) {
         command += (i ? " " : "") + std::string(argv[i]);
     }
     commandLine.setReportRenderer(
-        [argc, argv, command](const drytwin::workflow::PipelineResult& r, const drytwin::workflow::Session& s,
-                              const std::string& folder, std::string& error) {
-            return renderReport(argc, argv, r, s, folder, command, error);
-        },
+        [argv, command](const drytwin::workflow::PipelineResult& r, const drytwin::workflow::Session& s,
+                        const std::string& folder,
+                        std::string& error) { return renderReport(argv, r, s, folder, command, error); },
         command);
     const auto parsed = commandLine.parse(argc, argv);
     if (parsed.exitNow) {

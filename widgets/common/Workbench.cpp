@@ -1,6 +1,7 @@
 #include "common/Workbench.h"
 
 #include "common/ErrorText.h"
+#include "common/WidgetHelpers.h"
 
 #include <QRegularExpression>
 
@@ -127,8 +128,7 @@ void Workbench::saveModel(const QString& path) {
 
 void Workbench::setParameter(properties::Param param, double value) {
     start<hybrid::HybridModel>(
-        tr("Set %1").arg(QString::fromUtf8(properties::info(param).symbol.data(),
-                                           static_cast<int>(properties::info(param).symbol.size()))),
+        tr("Set %1").arg(fromView(properties::info(param).symbol)),
         [param, value](workflow::Session& s, const Progress&) -> Expected<hybrid::HybridModel> {
             if (auto st = s.setParameter(param, value); !st) {
                 return st.error();
