@@ -35,98 +35,6 @@ double levelAt(const Scenario& s, ScenarioInput input, double initial, double t)
     return level;
 }
 
-/// The true disturbances of a scenario run: levels from the scenario, with small random
-/// fluctuations of the plant's own kinds (seeded, the same for every controller).
-plant::PlantDisturbances scenarioDisturbances(const Scenario& s, std::mt19937_64& rng) {
-    const auto n = static_cast<std::size_t>(s.warmupS + s.lengthS + 1);
-    plant::PlantDisturbances d;
-    for (auto* v : {&d.feedKgPerS, &d.xInDb, &d.tInK, &d.tAmbK, &d.rhAmb, &d.airSpeedMPerS}) {
-        v->resize(n);
-    }
-    d.kDrift.assign(n, 1.0);
-    std::normal_distribution<double> unit(0, 1);
-    // Ornstein-Uhlenbeck fluctuations as in the plant's own batches, scaled by the scenario.
-    struct Ou {
-        double a, s, x = 0;
-        double next(std::mt19937_64& g, std::normal_distribution<double>& u) { return x = a * x + s * u(g); }
-    };
-    const auto ou = [&](double tau, double sigma) {
-        const double a = std::exp(-1.0 / tau);
-        return Ou{a, s.fluctuation * sigma * std::sqrt(1 - a * a)};
-    };
-    Ou feed = ou(120, 25), xIn = ou(900, 0.0045), tIn = ou(600, 0.8), tAmb = ou(1800, 0.6),
-       rh = ou(1200, 0.03), air = ou(60, 0.1);
-    Ou drift{std::exp(-1.0 / 2400), 0.05 * std::sqrt(1 - std::exp(-2.0 / 2400))};
-    for (std::size_t k = 0; k < n; ++k) {
-        const double t = static_cast<double>(k) - s.warmupS;
-        d.feedKgPerS[k] =
-            units::kgPerHourToKgPerS(levelAt(s, ScenarioInput::Feed, s.feedKgH, t) + feed.next(rng, unit));
-        const double xWb = std::clamp(
-            levelAt(s, ScenarioInput::InletMoisture, s.xInPct, t) / 100 + xIn.next(rng, unit), 0.12, 0.32);
-        d.xInDb[k] = xWb / (1 - xWb);
-        d.tInK[k] = units::kKelvinOffset + s.tInC + tIn.next(rng, unit);
-        d.tAmbK[k] =
-            units::kKelvinOffset + levelAt(s, ScenarioInput::Ambient, s.tAmbC, t) + tAmb.next(rng, unit);
-        d.rhAmb[k] = std::clamp(levelAt(s, ScenarioInput::Humidity, s.rhPct, t) / 100 + rh.next(rng, unit),
-                                0.05, 0.95);
-        d.airSpeedMPerS[k] = s.airSpeedMPerS + air.next(rng, unit);
-        if (s.unmeasuredDrift) {
-            d.kDrift[k] = 1.0 + drift.next(rng, unit);
-        }
-    }
-    return d;
-}
-
-/// The record of the run so far as the controller's batch (SI, dry basis).
-void appendOutputs(data::SiBatch& b, const plant::PlantSample& s) {
-    b.xOutDb.push_back(units::wetPctToDry(s.xOutPct));
-    b.tOutK.push_back(s.tOutK);
-    b.xHdtDb.push_back(units::wetPctToDry(s.xHdtPct));
-    b.tHdtK.push_back(s.tHdtK);
-    b.keep.push_back(1);
-}
-
-void appendInputs(data::SiBatch& b, const plant::PlantBatch& rec, std::size_t k) {
-    b.timeS.push_back(static_cast<double>(k));
-    b.tHotSpK.push_back(rec.tHotSpK[k]);
-    b.tHotK.push_back(rec.tHotK[k]);
-    b.airSpeedMPerS.push_back(rec.airSpeedMPerS[k]);
-    b.feedKgPerS.push_back(rec.feedKgPerS[k]);
-    b.xInDb.push_back(rec.xInDb[k]);
-    b.tInK.push_back(rec.tInK[k]);
-    b.tAmbK.push_back(rec.tAmbK[k]);
-    b.rhAmb.push_back(rec.rhAmb[k]);
-}
-
-std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybrid::HybridModel& m,
-                                                std::string& missing) {
-    switch (kind) {
-    case ControllerKind::Pbm:
-        return pbmForecaster(m.parameters, m.simulationOptions());
-    case ControllerKind::PgrlCc:
-        if (!m.pgrlCc) {
-            missing = "the model file holds no PGRL-CC residual model (run train)";
-            return nullptr;
-        }
-        return residualForecaster(m.parameters, m.simulationOptions(), m.pgrlCc);
-    case ControllerKind::ExtInputResidual:
-        if (!m.extInput) {
-            missing = "the model file holds no external-input residual model (run train)";
-            return nullptr;
-        }
-        return residualForecaster(m.parameters, m.simulationOptions(), m.extInput);
-    case ControllerKind::Lstm:
-        if (!m.lstm) {
-            missing = "the model file holds no LSTM (run train; needs libtorch)";
-            return nullptr;
-        }
-        return lstmForecaster(m.lstm);
-    case ControllerKind::Pi:
-        break;
-    }
-    return nullptr;
-}
-
 /// The plant's steady gain: two runs at fixed setpoints 2 K apart, without noise or
 /// fluctuation, compared after the line has settled.
 double plantGain(const Scenario& scenario, const plant::PlantOptions& plantOptions, double setpointK) {
@@ -195,6 +103,99 @@ ForecastCheck checkForecasts(OutletForecaster& model, const data::SiBatch& recor
 }
 
 } // namespace
+
+plant::PlantDisturbances scenarioDisturbances(const Scenario& s, std::mt19937_64& rng) {
+    const auto n = static_cast<std::size_t>(s.warmupS + s.lengthS + 1);
+    plant::PlantDisturbances d;
+    for (auto* v : {&d.feedKgPerS, &d.xInDb, &d.tInK, &d.tAmbK, &d.rhAmb, &d.airSpeedMPerS}) {
+        v->resize(n);
+    }
+    d.kDrift.assign(n, 1.0);
+    std::normal_distribution<double> unit(0, 1);
+    // Ornstein-Uhlenbeck fluctuations as in the plant's own batches, scaled by the scenario.
+    struct Ou {
+        double a, s, x = 0;
+        double next(std::mt19937_64& g, std::normal_distribution<double>& u) { return x = a * x + s * u(g); }
+    };
+    const auto ou = [&](double tau, double sigma) {
+        const double a = std::exp(-1.0 / tau);
+        return Ou{a, s.fluctuation * sigma * std::sqrt(1 - a * a)};
+    };
+    Ou feed = ou(120, 25), xIn = ou(900, 0.0045), tIn = ou(600, 0.8), tAmb = ou(1800, 0.6),
+       rh = ou(1200, 0.03), air = ou(60, 0.1);
+    Ou drift{std::exp(-1.0 / 2400), 0.05 * std::sqrt(1 - std::exp(-2.0 / 2400))};
+    for (std::size_t k = 0; k < n; ++k) {
+        const double t = static_cast<double>(k) - s.warmupS;
+        d.feedKgPerS[k] =
+            units::kgPerHourToKgPerS(levelAt(s, ScenarioInput::Feed, s.feedKgH, t) + feed.next(rng, unit));
+        const double xWb = std::clamp(
+            levelAt(s, ScenarioInput::InletMoisture, s.xInPct, t) / 100 + xIn.next(rng, unit), 0.12, 0.32);
+        d.xInDb[k] = xWb / (1 - xWb);
+        d.tInK[k] = units::kKelvinOffset + s.tInC + tIn.next(rng, unit);
+        d.tAmbK[k] =
+            units::kKelvinOffset + levelAt(s, ScenarioInput::Ambient, s.tAmbC, t) + tAmb.next(rng, unit);
+        d.rhAmb[k] = std::clamp(levelAt(s, ScenarioInput::Humidity, s.rhPct, t) / 100 + rh.next(rng, unit),
+                                0.05, 0.95);
+        d.airSpeedMPerS[k] = s.airSpeedMPerS + air.next(rng, unit);
+        if (s.unmeasuredDrift) {
+            d.kDrift[k] = 1.0 + drift.next(rng, unit);
+        }
+    }
+    return d;
+}
+
+std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybrid::HybridModel& m,
+                                                std::string& missing) {
+    switch (kind) {
+    case ControllerKind::Pbm:
+        return pbmForecaster(m.parameters, m.simulationOptions());
+    case ControllerKind::PgrlCc:
+        if (!m.pgrlCc) {
+            missing = "the model file holds no PGRL-CC residual model (run train)";
+            return nullptr;
+        }
+        return residualForecaster(m.parameters, m.simulationOptions(), m.pgrlCc);
+    case ControllerKind::ExtInputResidual:
+        if (!m.extInput) {
+            missing = "the model file holds no external-input residual model (run train)";
+            return nullptr;
+        }
+        return residualForecaster(m.parameters, m.simulationOptions(), m.extInput);
+    case ControllerKind::Lstm:
+        if (!m.lstm) {
+            missing = "the model file holds no LSTM (run train; needs libtorch)";
+            return nullptr;
+        }
+        return lstmForecaster(m.lstm);
+    case ControllerKind::Pi:
+        break;
+    }
+    return nullptr;
+}
+
+void appendMeasuredOutputs(data::SiBatch& b, const plant::PlantSample& s) {
+    b.xOutDb.push_back(units::wetPctToDry(s.xOutPct));
+    b.tOutK.push_back(s.tOutK);
+    b.xHdtDb.push_back(units::wetPctToDry(s.xHdtPct));
+    b.tHdtK.push_back(s.tHdtK);
+    b.keep.push_back(1);
+}
+
+void appendAppliedInputs(data::SiBatch& b, const plant::PlantBatch& rec, std::size_t k) {
+    b.timeS.push_back(static_cast<double>(k));
+    b.tHotSpK.push_back(rec.tHotSpK[k]);
+    b.tHotK.push_back(rec.tHotK[k]);
+    b.airSpeedMPerS.push_back(rec.airSpeedMPerS[k]);
+    b.feedKgPerS.push_back(rec.feedKgPerS[k]);
+    b.xInDb.push_back(rec.xInDb[k]);
+    b.tInK.push_back(rec.tInK[k]);
+    b.tAmbK.push_back(rec.tAmbK[k]);
+    b.rhAmb.push_back(rec.rhAmb[k]);
+}
+
+double initialSetpointK(const Scenario& s) {
+    return units::kKelvinOffset + 170 + 8.0 * (s.xInPct - 22.0);
+}
 
 const char* controllerName(ControllerKind k) {
     switch (k) {
@@ -310,7 +311,7 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         // Every run sees the same disturbances and noise: fresh generators from the same seed.
         std::mt19937_64 disturbanceRng(scenario.seed);
         plant::PlantRandom random(scenario.seed + 1);
-        const double initialSp = units::kKelvinOffset + 170 + 8.0 * (scenario.xInPct - 22.0);
+        const double initialSp = initialSetpointK(scenario);
         plant::PlantLine line(plantOptions, scenarioDisturbances(scenario, disturbanceRng), initialSp,
                               random);
         plant::PlantPiController pi;
@@ -323,7 +324,7 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         std::sort(snapshotTimes.begin(), snapshotTimes.end());
         for (std::size_t k = 0; k < total; ++k) {
             const plant::PlantSample s = line.measure();
-            appendOutputs(record, s);
+            appendMeasuredOutputs(record, s);
             const double t = static_cast<double>(k) - static_cast<double>(warm);
             const double target = k < warm ? scenario.setpointPct : scenario.setpointAt(t);
             double sp = lastSp;
@@ -360,7 +361,7 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
                 run.hotAirC.push_back(units::kelvinToCelsius(line.hotAirK()));
             }
             line.apply(sp);
-            appendInputs(record, line.record(), k);
+            appendAppliedInputs(record, line.record(), k);
             lastSp = sp;
             if (k % 50 == 0 && reportProgress(progress, "mpc",
                                               (static_cast<double>(c) +
@@ -394,7 +395,7 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         result.runs.push_back(std::move(run));
     }
     result.plantGainPctPerK =
-        plantGain(scenario, plantOptions, units::kKelvinOffset + 170 + 8.0 * (scenario.xInPct - 22.0));
+        plantGain(scenario, plantOptions, initialSetpointK(scenario));
     // The model error behind the ranking: each MPC's model forecasting the PI run.
     for (auto& run : result.runs) {
         if (stopped || !piRecord || !run.ran || run.kind == ControllerKind::Pi) {

@@ -5,6 +5,7 @@
 #include "control/Mpc.h"
 #include "control/Scenario.h"
 #include "hybrid/HybridModel.h"
+#include "plant/PlantLine.h"
 #include "plant/VirtualPlant.h"
 
 #include <optional>
@@ -100,5 +101,24 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
 
 /// @brief The plant options and disturbances a scenario implies (for the GUI and tests).
 plant::PlantOptions scenarioPlantOptions(const Scenario& scenario);
+
+/// @brief The true disturbances of a scenario run, warm-up included: levels from the scenario
+/// with small random fluctuations of the plant's own kinds, drawn from @p rng (seeded with the
+/// scenario's seed, the same for every controller).
+plant::PlantDisturbances scenarioDisturbances(const Scenario& scenario, std::mt19937_64& rng);
+
+/// @brief The hot-air setpoint the line starts at: the PI loop's steady value for the
+/// scenario's inlet moisture [K].
+double initialSetpointK(const Scenario& scenario);
+
+/// @brief Adds what the instruments showed at a sample to a controller's record (SI, dry basis).
+void appendMeasuredOutputs(data::SiBatch& record, const plant::PlantSample& sample);
+/// @brief Adds sample @p k's measured inputs, as the plant recorded them once applied.
+void appendAppliedInputs(data::SiBatch& record, const plant::PlantBatch& plantRecord, std::size_t k);
+
+/// @brief The prediction model an MPC of @p kind uses, or nullptr with @p missing saying why
+/// (the model holds no such part; PI has none).
+std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybrid::HybridModel& model,
+                                                std::string& missing);
 
 } // namespace drytwin::control

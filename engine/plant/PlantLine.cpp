@@ -135,15 +135,27 @@ PlantDisturbances randomDisturbances(const PlantOptions& o, std::mt19937_64& rng
     return d;
 }
 
+namespace {
+constexpr double kPiGain = 2.0;        // K per % wb
+constexpr double kPiIntegralS = 30.0;  // s
+constexpr double kPiFeedforward = 8.0; // K per % wb of inlet moisture
+constexpr double kPiInletRefPct = 22.0;
+constexpr double kPiBiasC = 170.0;
+} // namespace
+
+void PlantPiController::track(double setpointK, double xOutMeasuredPct, double xInPct, double targetPct) {
+    const double e = xOutMeasuredPct - targetPct;
+    const double ff = kPiFeedforward * (xInPct - kPiInletRefPct);
+    m_integral = (setpointK - kKelvin - kPiBiasC - ff) / kPiGain - e - e / kPiIntegralS;
+}
+
 double PlantPiController::next(double xOutMeasuredPct, double xInPct, double targetPct) {
-    const double kc = 2.0;  // K per % wb
-    const double ti = 30.0; // s
-    const double kff = 8.0; // K per % wb of inlet moisture
-    const double xInRefPct = 22.0;
+    const double kc = kPiGain;
+    const double ti = kPiIntegralS;
     const double e = xOutMeasuredPct - targetPct;
     m_integral += e / ti;
-    const double ff = kff * (xInPct - xInRefPct);
-    double sp = kKelvin + 170 + ff + kc * (e + m_integral);
+    const double ff = kPiFeedforward * (xInPct - kPiInletRefPct);
+    double sp = kKelvin + kPiBiasC + ff + kc * (e + m_integral);
     const double lo = kKelvin + kLowC;
     const double hi = kKelvin + kHighC;
     if (sp > hi || sp < lo) {
@@ -159,7 +171,7 @@ struct PlantLine::Impl {
     PlantRandom* random = nullptr;
     ParameterSet p0;
     properties::ModelSwitches sw;
-    double tauH = 0, tauC = 0, tW = 0, tauTotal = 0;
+    double tauH = 0, tW = 0;
     std::size_t n = 0;
     std::size_t k = 0;
     bool measured = false;
@@ -183,6 +195,8 @@ struct PlantLine::Impl {
         const auto on = o.effectOnsetS.find(m);
         return on == o.effectOnsetS.end() || t >= on->second ? it->second : 0.0;
     }
+    /// Belt transport time at time t: the model's plus the transport-delay error once it acts.
+    double conveyorTime(double t) const { return p0[Param::tau_conv] + effectAt(Mechanism::TransportDelayError, t); }
     double onset(Mechanism m) const {
         const auto on = o.effectOnsetS.find(m);
         return on == o.effectOnsetS.end() ? 0.0 : on->second;
@@ -251,6 +265,7 @@ struct PlantLine::Impl {
         out.xHdt = y[0];
         out.tHdt = y[1];
         const double tConvIn = tEntry + tauH;
+        const double tauC = conveyorTime(tConvIn);
         double c[2] = {y[0], y[1]};
         rk4<2>(c, 0.0, tauC, static_cast<int>(std::ceil(tauC / 2.0)),
                [&](double s, const double* v, double* d) {
@@ -312,15 +327,46 @@ PlantLine::PlantLine(const PlantOptions& options, PlantDisturbances disturbances
     im.random = &random;
     im.p0 = options.truth;
     im.tauH = im.p0[Param::tau_HDT];
-    im.tauC = im.p0[Param::tau_conv] + im.effectAt(Mechanism::TransportDelayError, 0.0);
     im.tW = im.p0[Param::t_W];
-    im.tauTotal = im.tauH + im.tauC + im.tW;
     im.n = im.dist.size();
     im.tHot.assign(im.n, 0.0);
     im.tHotSp.assign(im.n, 0.0);
     im.parcel.resize(im.n);
     im.sp = initialSetpointK;
     im.record.timeS.resize(im.n);
+}
+
+PlantLine::PlantLine(std::unique_ptr<Impl> impl) : m_impl(std::move(impl)) {}
+
+PlantLine PlantLine::clone(PlantRandom& random) const {
+    auto copy = std::make_unique<Impl>(*m_impl);
+    copy->random = &random;
+    return PlantLine(std::move(copy));
+}
+
+Status PlantLine::setEffect(Mechanism m, double strength, double onsetS) {
+    auto& im = *m_impl;
+    const auto& mi = info(m);
+    if (!std::isfinite(strength) || strength < 0 || strength > mi.maxStrength) {
+        return Error{ErrorKind::BadInput, std::string(mi.name),
+                     "strength must be within [0, " + std::to_string(mi.maxStrength) + "] " + std::string(mi.unit)};
+    }
+    // Parcels already through the tube keep what they saw: an onset in the past would rewrite them.
+    const double now = static_cast<double>(im.k);
+    if (!std::isfinite(onsetS) || onsetS < now) {
+        return Error{ErrorKind::BadInput, std::string(mi.name),
+                     "the onset must not lie before the line's current time (" + std::to_string(im.k) + " s)"};
+    }
+    if (im.o.effects.count(m) && im.effectAt(m, now) > 0) {
+        return Error{ErrorKind::BadInput, std::string(mi.name), "already acts on the line"};
+    }
+    im.o.effects[m] = strength;
+    im.o.effectOnsetS[m] = onsetS;
+    return Status{};
+}
+
+double PlantLine::effectAt(Mechanism m, double timeS) const {
+    return m_impl->effectAt(m, timeS);
 }
 
 PlantLine::~PlantLine() = default;
@@ -346,8 +392,9 @@ PlantSample PlantLine::measure() {
         ++im.nextParcel;
     }
     const ParcelOutcome hdt = im.outcomeAt(t, im.tauH);
-    ParcelOutcome out = im.outcomeAt(t, im.tauTotal);
-    const double delayError = im.effectAt(Mechanism::TransportDelayError, 0.0);
+    const double tauTotal = im.tauH + im.conveyorTime(t) + im.tW;
+    ParcelOutcome out = im.outcomeAt(t, tauTotal);
+    const double delayError = im.effectAt(Mechanism::TransportDelayError, t);
     if (delayError != 0) {
         // A belt whose transport time is off also spreads the material: the outlet sees
         // a moving average over a window that widens with the error (axial dispersion).
@@ -356,7 +403,7 @@ PlantSample PlantLine::measure() {
         ParcelOutcome sum;
         for (int i = 0; i < points; ++i) {
             const double shift = halfWidth * (2.0 * i / (points - 1) - 1.0);
-            const ParcelOutcome o2 = im.outcomeAt(std::max(0.0, t + shift), im.tauTotal);
+            const ParcelOutcome o2 = im.outcomeAt(std::max(0.0, t + shift), tauTotal);
             sum.xOut += o2.xOut / points;
             sum.tOut += o2.tOut / points;
         }

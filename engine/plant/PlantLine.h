@@ -50,6 +50,9 @@ public:
     static constexpr double kHighC = 200;
     /// @brief The setpoint for the next sample [K].
     double next(double xOutMeasuredPct, double xInPct, double targetPct);
+    /// @brief Sets the integral so that the next call returns @p setpointK for the same
+    /// readings: a bumpless hand-over when the loop takes over from another controller.
+    void track(double setpointK, double xOutMeasuredPct, double xInPct, double targetPct);
 
 private:
     double m_integral = 0;
@@ -78,12 +81,21 @@ public:
     std::size_t size() const;
     /// @brief True hot-air temperature at the current sample [K].
     double hotAirK() const;
+    /// @brief A full copy of the line's state (a snapshot), drawing its noise from @p random,
+    /// which the caller copies alongside and which must outlive the copy.
+    PlantLine clone(PlantRandom& random) const;
+    /// @brief Lets a mechanism act from @p onsetS [s of the line's time, not before now] at
+    /// @p strength (in its unit, within its range). A mechanism already acting cannot be changed.
+    Status setEffect(Mechanism m, double strength, double onsetS);
+    /// @brief The strength of a mechanism at a time of the line (0 before its onset).
+    double effectAt(Mechanism m, double timeS) const;
     /// @brief The record so far (inputs up to the last applied sample, outputs up to the last measured).
     const PlantBatch& record() const;
     PlantBatch& record();
 
 private:
     struct Impl;
+    explicit PlantLine(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> m_impl;
 };
 

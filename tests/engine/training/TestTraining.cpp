@@ -1,0 +1,245 @@
+// Training mode's engine: a live line that snapshots and restores exactly, faults that act from
+// their onset in the plant's own form and stay out of the operator's view, the score by its rule,
+// and scripted sessions that replay to the same recording for the same seed.
+#include "data/BatchWriter.h"
+#include "training/TrainingScript.h"
+#include "training/TrainingSession.h"
+
+#include <QtTest>
+#include <cmath>
+
+using namespace drytwin;
+using plant::Mechanism;
+
+namespace {
+
+control::Scenario shortScenario(unsigned seed = 3) {
+    control::Scenario s;
+    s.name = "training_test";
+    s.seed = seed;
+    s.lengthS = 900;
+    s.warmupS = 300;
+    return s;
+}
+
+training::TrainingSession started(const control::Scenario& s) {
+    auto r = training::TrainingSession::start(s, std::make_shared<hybrid::HybridModel>());
+    if (!r) {
+        qFatal("%s", r.error().message().c_str());
+    }
+    return std::move(*r);
+}
+
+std::string csv(const training::TrainingSession& s) {
+    return data::formatBatch(s.recording("B"));
+}
+
+double meanTrueDeviation(const training::TrainingSession& s, double fromS, double toS) {
+    double sum = 0;
+    int n = 0;
+    for (const auto& x : s.trace()) {
+        if (x.timeS >= fromS && x.timeS < toS) {
+            sum += x.xOutTruePct - x.setpointPct;
+            ++n;
+        }
+    }
+    return n > 0 ? sum / n : std::nan("");
+}
+
+const char* kScript = R"({
+  "scenario": {"name": "scripted", "seed": 5, "length_s": 600, "warmup_s": 300},
+  "end_s": 500,
+  "events": [
+    {"at_s": 20, "type": "setpoint", "value_pct": 13.3},
+    {"at_s": 60, "type": "fault", "cause": "moisture_meter_offset", "strength": 0.6, "onset_s": 100},
+    {"at_s": 80, "type": "snapshot", "label": "before"},
+    {"at_s": 150, "type": "freeze"},
+    {"at_s": 150, "type": "resume"},
+    {"at_s": 200, "type": "restore", "label": "before"},
+    {"at_s": 250, "type": "answer", "cause": "moisture_meter_offset"}
+  ]
+})";
+
+} // namespace
+
+class TestTraining : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void snapshotRestoreContinuesExactly() {
+        auto s = started(shortScenario());
+        QCOMPARE(s.timeS(), 0.0);
+        QCOMPARE(s.advance(100), std::size_t(100));
+        QVERIFY(s.takeSnapshot("a").ok());
+        QVERIFY(s.injectFault(Mechanism::MoistureMeterOffset, 0.5, 150).ok());
+        s.advance(200);
+        const std::string first = csv(s);
+        const auto firstTrace = s.trace();
+        QVERIFY(s.restore("a").ok());
+        QCOMPARE(s.timeS(), 100.0);
+        QVERIFY(s.faults().empty()); // the fault came after the snapshot
+        QCOMPARE(s.trace().size(), std::size_t(100));
+        QVERIFY(s.injectFault(Mechanism::MoistureMeterOffset, 0.5, 150).ok());
+        s.advance(200);
+        // Line, noise generator, controller and record all came back: the same seconds again.
+        QCOMPARE(csv(s), first);
+        QCOMPARE(s.trace().back().xOutPct, firstTrace.back().xOutPct);
+        // Without the fault the same seconds differ after its onset: the snapshot holds no fault.
+        QVERIFY(s.restore("a").ok());
+        s.advance(200);
+        QVERIFY(csv(s) != first);
+        // The log keeps the whole story, the restores included.
+        int restores = 0;
+        for (const auto& e : s.events()) {
+            restores += e.type == training::EventType::Restore ? 1 : 0;
+        }
+        QCOMPARE(restores, 2);
+        QVERIFY(!s.takeSnapshot("a").ok()); // labels are unique
+        QVERIFY(!s.restore("nowhere").ok());
+    }
+
+    void meterOffsetActsFromItsOnsetAndDriesTheProduct() {
+        auto s = started(shortScenario());
+        QVERIFY(s.injectFault(Mechanism::MoistureMeterOffset, 0.6, 200).ok());
+        s.advance(700);
+        // Before the onset the PI loop holds the product at the setpoint ...
+        QVERIFY2(std::abs(meanTrueDeviation(s, 50, 200)) < 0.1, qPrintable(QString::number(meanTrueDeviation(s, 50, 200))));
+        // ... after it, the loop holds the *meter* there: the product is dried by about the offset
+        // (0.6 % wb at 55 °C, 10 % more per 10 K of a warmer product).
+        const double after = meanTrueDeviation(s, 450, 700);
+        QVERIFY2(after < -0.45 && after > -0.85, qPrintable(QString::number(after)));
+        double measured = 0;
+        int n = 0;
+        for (const auto& x : s.trace()) {
+            if (x.timeS >= 450) {
+                measured += x.xOutPct - x.setpointPct;
+                ++n;
+            }
+        }
+        QVERIFY(std::abs(measured / n) < 0.1); // the operator's screen shows nothing wrong
+        // An onset in the past, a strength out of range and a second fault of a kind acting: errors.
+        QVERIFY(!s.injectFault(Mechanism::HeatTransferFouling, 0.2, 100).ok());
+        QVERIFY(!s.injectFault(Mechanism::HeatTransferFouling, 50, 800).ok());
+        QVERIFY(!s.injectFault(Mechanism::MoistureMeterOffset, 0.3, 800).ok());
+    }
+
+    void scoreFollowsItsRule() {
+        auto s = started(shortScenario());
+        QVERIFY(s.answer("no_fault").ok()); // right: nothing acts yet
+        QVERIFY(s.injectFault(Mechanism::MoistureMeterOffset, 0.6, 100).ok());
+        s.advance(50);
+        QVERIFY(s.answer("heat_transfer_fouling").ok()); // wrong
+        s.advance(350);
+        QVERIFY(s.answer("moisture_meter_offset").ok()); // right, 300 s after the onset
+        s.advance(100);
+        QVERIFY(!s.answer("sticky_valve").ok());
+        const auto sc = s.score();
+        QCOMPARE(sc.faults.size(), std::size_t(1));
+        QVERIFY(sc.faults[0].found);
+        QCOMPARE(sc.faults[0].timeToFindS, 300.0);
+        QCOMPARE(sc.wrongAnswers, 1);
+        // By hand from the trace: seconds with the true X_out out of the band, onset to answer.
+        int open = 0, outside = 0, all = 0, allOutside = 0;
+        for (const auto& x : s.trace()) {
+            const bool out = std::abs(x.xOutTruePct - x.setpointPct) > s.scenario().bandPct;
+            ++all;
+            allOutside += out;
+            if (x.timeS >= 100 && x.timeS <= 400) {
+                ++open;
+                outside += out;
+            }
+        }
+        QVERIFY(outside > 0); // the offset pushes the product out of the band at times
+        const double share = 100.0 * outside / open;
+        QCOMPARE(sc.faults[0].offSpecPctWhileOpen, share);
+        const double expected = 60 + 25 * (1 - 300.0 / 1800) + 15 * (1 - share / 100) - 10;
+        QVERIFY(std::abs(sc.points - expected) < 1e-9);
+        QCOMPARE(sc.offSpecPct, 100.0 * allOutside / all);
+        QVERIFY(sc.offSpecKg > 0);
+        QVERIFY(sc.summary.find("1 of 1 faults found") != std::string::npos);
+    }
+
+    void controllersSwitchBumplessly() {
+        auto s = started(shortScenario());
+        QVERIFY(s.setController(control::ControllerKind::Pbm).ok());
+        s.advance(120);
+        QVERIFY(s.setController(control::ControllerKind::Pi).ok());
+        s.advance(30);
+        const auto& t = s.trace();
+        // At the hand-back the PI loop starts from the MPC's last setpoint, not from its own stale state.
+        const double jump = std::abs(t[120].hotAirSetpointC - t[119].hotAirSetpointC);
+        QVERIFY2(jump < 1.5, qPrintable(QString::number(jump)));
+        QVERIFY(std::abs(meanTrueDeviation(s, 60, 150)) < 0.3);
+        // A model without a residual part cannot run PGRL-CC's MPC: a clear error, PI stays in charge.
+        const auto err = s.setController(control::ControllerKind::PgrlCc);
+        QVERIFY(!err.ok());
+        QVERIFY(err.error().message().find("run train") != std::string::npos);
+        QCOMPARE(int(s.controller()), int(control::ControllerKind::Pi));
+        QVERIFY(!s.setSetpoint(42).ok());
+    }
+
+    void scriptReplaysToTheSameRecording() {
+        auto script = training::parseTrainingScript(kScript, "script.json");
+        QVERIFY2(script.ok(), script ? "" : script.error().message().c_str());
+        auto model = std::make_shared<hybrid::HybridModel>();
+        auto a = training::replay(*script, model);
+        auto b = training::replay(*script, model);
+        QVERIFY2(a.ok(), a ? "" : a.error().message().c_str());
+        QVERIFY(b.ok());
+        QCOMPARE(a->timeS(), 500.0);
+        QCOMPARE(csv(*a), csv(*b));
+        QCOMPARE(a->faults().size(), std::size_t(1)); // set before the snapshot, so restored with it
+        QCOMPARE(a->answers().size(), std::size_t(1));
+        QCOMPARE(a->score().wrongAnswers, 0);
+        QVERIFY(a->score().faults.at(0).found);
+        QCOMPARE(a->score().faults.at(0).timeToFindS, 150.0);
+        // The saved session is itself a script: replaying it gives the same recording.
+        const std::string saved = training::sessionJson(script->scenarioJson, *a, {"recording/scripted.csv"});
+        auto again = training::parseTrainingScript(saved, "saved.json");
+        QVERIFY2(again.ok(), again ? "" : again.error().message().c_str());
+        QCOMPARE(again->events.size(), script->events.size());
+        auto c = training::replay(*again, model);
+        QVERIFY2(c.ok(), c ? "" : c.error().message().c_str());
+        QCOMPARE(csv(*c), csv(*a));
+        // Another seed, another line.
+        auto other = *script;
+        other.scenario.seed = 6;
+        auto d = training::replay(other, model);
+        QVERIFY(d.ok());
+        QVERIFY(csv(*d) != csv(*a));
+    }
+
+    void badScriptsNameThePlace() {
+        const auto expectError = [](const std::string& text, const std::string& part) {
+            auto r = training::parseTrainingScript(text, "s.json");
+            QVERIFY(!r.ok());
+            QVERIFY2(r.error().message().find(part) != std::string::npos, r.error().message().c_str());
+        };
+        expectError("{", "s.json: not valid JSON");
+        expectError(R"({"events": []})", "\"scenario\"");
+        expectError(R"({"scenario": "no_such"})", "no bundled scenario named 'no_such'");
+        expectError(R"({"scenario": "training_shift", "events": [{"at_s": 5, "type": "jump"}]})",
+                    "events[0].type: 'jump'");
+        expectError(R"({"scenario": "training_shift", "events": [{"at_s": 5, "type": "fault", "cause": "gremlins", "strength": 1}]})",
+                    "events[0].cause");
+        expectError(R"({"scenario": "training_shift", "events": [{"type": "answer", "cause": "no_fault"}]})",
+                    "events[0].at_s: missing");
+        // Valid JSON, impossible order: a restore of a snapshot never taken.
+        auto script = training::parseTrainingScript(
+            R"({"scenario": {"length_s": 100, "warmup_s": 300}, "events": [{"at_s": 5, "type": "restore", "label": "x"}]})",
+            "s.json");
+        QVERIFY(script.ok());
+        auto r = training::replay(*script, std::make_shared<hybrid::HybridModel>());
+        QVERIFY(!r.ok());
+        QVERIFY2(r.error().message().find("events[0] (restore at 5 s)") != std::string::npos,
+                 r.error().message().c_str());
+        // Cancel mid-replay is a Cancelled error, not a short recording passed off as whole.
+        auto whole = training::parseTrainingScript(R"({"scenario": {"length_s": 400, "warmup_s": 300}})", "s.json");
+        auto cancelled = training::replay(*whole, std::make_shared<hybrid::HybridModel>(),
+                                          [](const ProgressInfo&) { return ProgressAction::Stop; });
+        QVERIFY(!cancelled.ok());
+        QCOMPARE(int(cancelled.error().kind), int(ErrorKind::Cancelled));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestTraining)
+#include "TestTraining.moc"
