@@ -27,16 +27,6 @@ struct CommandLine::Impl {
     std::string runActions;
 };
 
-namespace {
-
-int notImplemented(const char* name) {
-    std::fprintf(stderr, "drytwin %s: not implemented in this version yet (see the README's status table)\n",
-                 name);
-    return 2;
-}
-
-} // namespace
-
 CommandLine::CommandLine() : m_impl(new Impl) {
     auto& app = m_impl->app;
     auto& o = m_impl->options;
@@ -191,6 +181,16 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     ablation->add_option("--model", o.modelPath, "calibrated model file (default: default parameters)");
     ablation->add_option("--json", o.jsonPath, "write the table as JSON");
     reg(ablation, runAblation);
+
+    auto* training =
+        app.add_subcommand("training", "replay a training session file headless (docs/training.md)");
+    training->add_option("--script", o.scriptPath, "session file: events to replay, or a saved session")
+        ->required()
+        ->check(CLI::ExistingFile);
+    training->add_option("--out", o.outPath, "folder for session.json and recording/*.csv")->required();
+    training->add_option("--model", o.modelPath,
+                         "model file for MPC controllers (default: the paper's parameters)");
+    reg(training, runTraining);
 
     auto* pipeline = app.add_subcommand("pipeline", "everything above in order, with a report");
     addData(pipeline);

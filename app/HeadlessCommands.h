@@ -25,6 +25,7 @@ struct CommandOptions {
     std::string diagnosticsPath; ///< evaluate: residual ACF, PSD and eigenvalues as JSON
     std::string truthPath;
     std::string scenarioPath;
+    std::string scriptPath;               ///< training: the session file to replay
     std::vector<std::string> controllers; ///< mpc: a subset of the controllers
     unsigned seed = 1;
     int batches = 10;
@@ -67,5 +68,6 @@ int runAblation(const CommandOptions& o);
 int runDiscover(const CommandOptions& o);
 int runPipeline(const CommandOptions& o);
 int runMpc(const CommandOptions& o);
+int runTraining(const CommandOptions& o);
 
 } // namespace drytwin::app

@@ -394,8 +394,7 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
             std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
         result.runs.push_back(std::move(run));
     }
-    result.plantGainPctPerK =
-        plantGain(scenario, plantOptions, initialSetpointK(scenario));
+    result.plantGainPctPerK = plantGain(scenario, plantOptions, initialSetpointK(scenario));
     // The model error behind the ranking: each MPC's model forecasting the PI run.
     for (auto& run : result.runs) {
         if (stopped || !piRecord || !run.ran || run.kind == ControllerKind::Pi) {

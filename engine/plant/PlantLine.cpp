@@ -196,7 +196,9 @@ struct PlantLine::Impl {
         return on == o.effectOnsetS.end() || t >= on->second ? it->second : 0.0;
     }
     /// Belt transport time at time t: the model's plus the transport-delay error once it acts.
-    double conveyorTime(double t) const { return p0[Param::tau_conv] + effectAt(Mechanism::TransportDelayError, t); }
+    double conveyorTime(double t) const {
+        return p0[Param::tau_conv] + effectAt(Mechanism::TransportDelayError, t);
+    }
     double onset(Mechanism m) const {
         const auto on = o.effectOnsetS.find(m);
         return on == o.effectOnsetS.end() ? 0.0 : on->second;
@@ -349,13 +351,15 @@ Status PlantLine::setEffect(Mechanism m, double strength, double onsetS) {
     const auto& mi = info(m);
     if (!std::isfinite(strength) || strength < 0 || strength > mi.maxStrength) {
         return Error{ErrorKind::BadInput, std::string(mi.name),
-                     "strength must be within [0, " + std::to_string(mi.maxStrength) + "] " + std::string(mi.unit)};
+                     "strength must be within [0, " + std::to_string(mi.maxStrength) + "] " +
+                         std::string(mi.unit)};
     }
     // Parcels already through the tube keep what they saw: an onset in the past would rewrite them.
     const double now = static_cast<double>(im.k);
     if (!std::isfinite(onsetS) || onsetS < now) {
         return Error{ErrorKind::BadInput, std::string(mi.name),
-                     "the onset must not lie before the line's current time (" + std::to_string(im.k) + " s)"};
+                     "the onset must not lie before the line's current time (" + std::to_string(im.k) +
+                         " s)"};
     }
     if (im.o.effects.count(m) && im.effectAt(m, now) > 0) {
         return Error{ErrorKind::BadInput, std::string(mi.name), "already acts on the line"};

@@ -30,7 +30,8 @@ Expected<double> eventNumber(const json& e, const std::string& key, const std::s
     return e[key].get<double>();
 }
 
-Expected<std::string> eventText(const json& e, const std::string& key, const std::string& place, std::size_t i) {
+Expected<std::string> eventText(const json& e, const std::string& key, const std::string& place,
+                                std::size_t i) {
     if (!e.contains(key) || !e[key].is_string() || e[key].get<std::string>().empty()) {
         return eventError(place, i, key, "must be a non-empty string");
     }
@@ -83,13 +84,15 @@ Expected<TrainingScript> parseTrainingScript(const std::string& text, const std:
         const auto& bundled = control::bundledScenarios();
         const auto it = bundled.find(sc.get<std::string>());
         if (it == bundled.end()) {
-            return Error{ErrorKind::BadInput, place, "scenario: no bundled scenario named '" + sc.get<std::string>() + "'"};
+            return Error{ErrorKind::BadInput, place,
+                         "scenario: no bundled scenario named '" + sc.get<std::string>() + "'"};
         }
         script.scenarioJson = it->second;
     } else if (sc.is_object()) {
         script.scenarioJson = sc.dump(2);
     } else {
-        return Error{ErrorKind::BadInput, place, "scenario: must be a bundled scenario's name or a scenario object"};
+        return Error{ErrorKind::BadInput, place,
+                     "scenario: must be a bundled scenario's name or a scenario object"};
     }
     auto scenario = control::parseScenario(script.scenarioJson, place + " (scenario)");
     if (!scenario) {
@@ -136,10 +139,11 @@ Expected<TrainingScript> parseTrainingScript(const std::string& text, const std:
                 }
             }
             if (!known) {
-                return eventError(place, i, "type",
-                                  "'" + *type +
-                                      "' is not one of setpoint, controller, fault, freeze, resume, snapshot, "
-                                      "restore, answer");
+                return eventError(
+                    place, i, "type",
+                    "'" + *type +
+                        "' is not one of setpoint, controller, fault, freeze, resume, snapshot, "
+                        "restore, answer");
             }
             Expected<double> number = 0.0;
             Expected<std::string> word = std::string();
@@ -150,17 +154,21 @@ Expected<TrainingScript> parseTrainingScript(const std::string& text, const std:
             case EventType::Controller:
                 word = eventText(e, "controller", place, i);
                 if (word && !control::controllerByName(*word)) {
-                    return eventError(place, i, "controller", "'" + *word + "' is not a controller (pi, pbm, pgrl_cc, ext_input_residual, lstm)");
+                    return eventError(
+                        place, i, "controller",
+                        "'" + *word + "' is not a controller (pi, pbm, pgrl_cc, ext_input_residual, lstm)");
                 }
                 break;
             case EventType::Fault:
                 word = eventText(e, "cause", place, i);
                 if (word && !plant::mechanismByName(*word)) {
-                    return eventError(place, i, "cause", "'" + *word + "' is not a mechanism of CONTRACT.md §4");
+                    return eventError(place, i, "cause",
+                                      "'" + *word + "' is not a mechanism of CONTRACT.md §4");
                 }
                 if (word) {
                     number = eventNumber(e, "strength", place, i);
-                    auto onset = e.contains("onset_s") ? eventNumber(e, "onset_s", place, i) : Expected<double>(ev.atS);
+                    auto onset = e.contains("onset_s") ? eventNumber(e, "onset_s", place, i)
+                                                       : Expected<double>(ev.atS);
                     if (!onset) {
                         return onset.error();
                     }
@@ -202,8 +210,8 @@ Expected<TrainingScript> loadTrainingScript(const std::string& path) {
     return parseTrainingScript(ss.str(), path);
 }
 
-Expected<TrainingSession> replay(const TrainingScript& script, std::shared_ptr<const hybrid::HybridModel> model,
-                                 const Progress& progress) {
+Expected<TrainingSession> replay(const TrainingScript& script,
+                                 std::shared_ptr<const hybrid::HybridModel> model, const Progress& progress) {
     auto session = TrainingSession::start(script.scenario, std::move(model));
     if (!session) {
         return session.error();
@@ -222,10 +230,12 @@ Expected<TrainingSession> replay(const TrainingScript& script, std::shared_ptr<c
                          "the session is frozen at " + std::to_string(static_cast<long>(session->timeS())) +
                              " s: no time passes before a resume"};
         }
-        if (session->advance(wanted, [&](const ProgressInfo& p) {
-                return progressAction(progress, "training", std::min(1.0, session->timeS() / std::max(1.0, end)),
-                                      p.detail);
-            }) < wanted &&
+        if (session->advance(wanted,
+                             [&](const ProgressInfo& p) {
+                                 return progressAction(progress, "training",
+                                                       std::min(1.0, session->timeS() / std::max(1.0, end)),
+                                                       p.detail);
+                             }) < wanted &&
             !session->finished()) {
             return cancelledError("training");
         }
@@ -344,7 +354,8 @@ Expected<SavedSession> saveSession(const std::string& folder, const std::string&
     }
     saved.recordingFiles.push_back(csv);
     saved.sessionFile = (fs::path(folder) / "session.json").string();
-    if (auto st = writeFileAtomically(saved.sessionFile, sessionJson(scenarioJson, session, {relative})); !st) {
+    if (auto st = writeFileAtomically(saved.sessionFile, sessionJson(scenarioJson, session, {relative}));
+        !st) {
         return st.error();
     }
     return saved;

@@ -28,7 +28,8 @@ Expected<TrainingScript> loadTrainingScript(const std::string& path);
 
 /// @brief Runs a script headless: starts the session, applies each event at its time (no time
 /// passes between a freeze and its resume, as in the live session), then runs to the end.
-Expected<TrainingSession> replay(const TrainingScript& script, std::shared_ptr<const hybrid::HybridModel> model,
+Expected<TrainingSession> replay(const TrainingScript& script,
+                                 std::shared_ptr<const hybrid::HybridModel> model,
                                  const Progress& progress = {});
 
 /// @brief The session file: the scenario, the events (with the faults, answers and snapshots
@@ -39,8 +40,9 @@ std::string sessionJson(const std::string& scenarioJson, const TrainingSession& 
 
 /// @brief The files of a saved session.
 struct SavedSession {
-    std::string sessionFile;                 ///< FOLDER/session.json
-    std::vector<std::string> recordingFiles; ///< FOLDER/recording/<scenario>.csv, a batch file of CONTRACT.md §1
+    std::string sessionFile; ///< FOLDER/session.json
+    std::vector<std::string>
+        recordingFiles; ///< FOLDER/recording/<scenario>.csv, a batch file of CONTRACT.md §1
 };
 
 /// @brief Writes a session into @p folder: the recording first, then session.json atomically

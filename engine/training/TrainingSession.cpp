@@ -92,9 +92,7 @@ struct TrainingSession::Impl {
     std::size_t warm = 0;
     std::size_t total = 0;
 
-    double now() const {
-        return static_cast<double>(state.line->sample()) - static_cast<double>(warm);
-    }
+    double now() const { return static_cast<double>(state.line->sample()) - static_cast<double>(warm); }
 
     void log(EventType type, double value = 0, double onsetS = 0, std::string text = {}) {
         events.push_back({now(), type, value, onsetS, std::move(text)});
@@ -104,7 +102,8 @@ struct TrainingSession::Impl {
         std::string missing;
         auto forecaster = control::forecasterFor(kind, *model, missing);
         if (!forecaster) {
-            return Error{ErrorKind::BadInput, std::string("controller ") + control::controllerName(kind), missing};
+            return Error{ErrorKind::BadInput, std::string("controller ") + control::controllerName(kind),
+                         missing};
         }
         auto mpcNew = std::make_unique<control::MpcController>(std::move(forecaster), control::MpcSettings{},
                                                                model->parameters[properties::Param::tau_act]);
@@ -130,8 +129,9 @@ struct TrainingSession::Impl {
             sp = st.pi.next(s.xOutPct, s.xInTruePct, target);
         } else {
             if ((k - warm) % static_cast<std::size_t>(scenario.controlIntervalS) == 0) {
-                const control::MpcDecision d = mpc->decide(control::DecisionPoint{&st.record, k}, st.lastSetpointK,
-                                                           target, scenario.bandPct, scenario.controlIntervalS);
+                const control::MpcDecision d =
+                    mpc->decide(control::DecisionPoint{&st.record, k}, st.lastSetpointK, target,
+                                scenario.bandPct, scenario.controlIntervalS);
                 sp = d.setpointK;
                 controllerNote = d.fallback ? d.fallbackReason : std::string();
             }
@@ -341,7 +341,8 @@ const std::vector<InjectedFault>& TrainingSession::faults() const {
 
 Status TrainingSession::answer(const std::string& cause) {
     if (cause != "no_fault" && !plant::mechanismByName(cause)) {
-        return Error{ErrorKind::BadInput, "answer", "'" + cause + "' is neither a CONTRACT.md §4 cause nor no_fault"};
+        return Error{ErrorKind::BadInput, "answer",
+                     "'" + cause + "' is neither a CONTRACT.md §4 cause nor no_fault"};
     }
     m_impl->state.answers.push_back({m_impl->now(), cause});
     m_impl->log(EventType::Answer, 0, 0, cause);
@@ -365,7 +366,9 @@ TrainingScore TrainingSession::score() const {
     const auto& trace = im.state.trace;
     const double band = im.scenario.bandPct;
     const double now = im.now();
-    const auto outOfBand = [&](const LiveSample& s) { return std::abs(s.xOutTruePct - s.setpointPct) > band; };
+    const auto outOfBand = [&](const LiveSample& s) {
+        return std::abs(s.xOutTruePct - s.setpointPct) > band;
+    };
     TrainingScore sc;
     std::size_t outside = 0;
     for (const auto& s : trace) {
@@ -374,7 +377,8 @@ TrainingScore TrainingSession::score() const {
             sc.offSpecKg += s.feedKgH / 3600.0; // one second of product
         }
     }
-    sc.offSpecPct = trace.empty() ? 0 : 100.0 * static_cast<double>(outside) / static_cast<double>(trace.size());
+    sc.offSpecPct =
+        trace.empty() ? 0 : 100.0 * static_cast<double>(outside) / static_cast<double>(trace.size());
     // A fault counts once it has acted; an answer is right when it names a fault acting then.
     const auto actingAt = [&](const std::string& cause, double t) {
         return std::any_of(im.state.faults.begin(), im.state.faults.end(), [&](const InjectedFault& f) {
@@ -414,7 +418,8 @@ TrainingScore TrainingSession::score() const {
                 openOutside += outOfBand(s) ? 1 : 0;
             }
         }
-        fs.offSpecPctWhileOpen = open > 0 ? 100.0 * static_cast<double>(openOutside) / static_cast<double>(open) : 0;
+        fs.offSpecPctWhileOpen =
+            open > 0 ? 100.0 * static_cast<double>(openOutside) / static_cast<double>(open) : 0;
         if (fs.found) {
             fs.points = kFoundPoints + kTimePoints * std::max(0.0, 1.0 - fs.timeToFindS / kTimeBonusFadeS);
         }
@@ -438,8 +443,8 @@ TrainingScore TrainingSession::score() const {
         os << found << " of " << sc.faults.size() << " faults found";
     }
     os.precision(1);
-    os << ", " << sc.wrongAnswers << " wrong answer(s), " << sc.offSpecPct << " % of the time out of the band ("
-       << sc.offSpecKg << " kg)";
+    os << ", " << sc.wrongAnswers << " wrong answer(s), " << sc.offSpecPct
+       << " % of the time out of the band (" << sc.offSpecKg << " kg)";
     sc.summary = os.str();
     return sc;
 }

@@ -22,9 +22,9 @@ const char* eventTypeName(EventType t);
 struct SessionEvent {
     double atS = 0;
     EventType type = EventType::Setpoint;
-    double value = 0;   ///< setpoint [% wb] or fault strength (in the mechanism's unit)
-    double onsetS = 0;  ///< fault: when it starts to act [session s]
-    std::string text;   ///< controller name, cause, or snapshot label
+    double value = 0;  ///< setpoint [% wb] or fault strength (in the mechanism's unit)
+    double onsetS = 0; ///< fault: when it starts to act [session s]
+    std::string text;  ///< controller name, cause, or snapshot label
 };
 
 /// @brief A fault the instructor set, hidden from the trainee's view.
@@ -58,9 +58,9 @@ struct LiveSample {
 struct FaultScore {
     InjectedFault fault;
     bool found = false;
-    double timeToFindS = 0;          ///< from the onset to the first right answer (found only)
-    double offSpecPctWhileOpen = 0;  ///< share of seconds out of the band from onset to the answer (or now)
-    double points = 0;               ///< of 100
+    double timeToFindS = 0;         ///< from the onset to the first right answer (found only)
+    double offSpecPctWhileOpen = 0; ///< share of seconds out of the band from onset to the answer (or now)
+    double points = 0;              ///< of 100
 };
 
 /// @brief The session's score (docs/training.md gives the rule).

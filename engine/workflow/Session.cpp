@@ -426,6 +426,43 @@ Expected<MpcResult> Session::mpc(const MpcOptions& options, const Progress& prog
     return out;
 }
 
+Status TrainingOptions::validate() const {
+    if (scriptPath.empty()) {
+        return invalidOption("--script", "a session file is needed");
+    }
+    if (outFolder.empty()) {
+        return invalidOption("--out", "an output folder is needed");
+    }
+    return {};
+}
+
+Expected<TrainingResult> Session::training(const TrainingOptions& options, const Progress& progress) const {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    auto script = training::loadTrainingScript(options.scriptPath);
+    if (!script) {
+        return script.error();
+    }
+    // Nothing is written unless the whole replay succeeds.
+    auto session = training::replay(*script, std::make_shared<hybrid::HybridModel>(m_model), progress);
+    if (!session) {
+        return session.error();
+    }
+    auto saved = training::saveSession(options.outFolder, script->scenarioJson, *session);
+    if (!saved) {
+        return saved.error();
+    }
+    TrainingResult result;
+    result.files = *saved;
+    result.score = session->score();
+    result.endS = session->timeS();
+    result.events = session->events().size();
+    result.ending = {Termination::Completed, result.score.summary, secondsSince(t0)};
+    return result;
+}
+
 Expected<hybrid::AblationResult> Session::ablation(const Progress& progress) {
     if (auto st = requireData("ablation"); !st) {
         return st.error();

@@ -14,6 +14,7 @@
 #include "hybrid/HybridTraining.h"
 #include "hybrid/ResidualDiagnostics.h"
 #include "plant/VirtualPlant.h"
+#include "training/TrainingScript.h"
 
 #include <memory>
 #include <optional>
@@ -150,6 +151,21 @@ struct MpcResult {
     Ending ending;
 };
 
+/// @brief A scripted training session run headless (CONTRACT.md §2 `training`, docs/training.md).
+struct TrainingOptions {
+    std::string scriptPath; ///< a session file; a saved session is one
+    std::string outFolder;  ///< gets session.json and recording/<scenario>.csv
+    Status validate() const;
+};
+
+struct TrainingResult {
+    training::SavedSession files;
+    training::TrainingScore score;
+    double endS = 0; ///< the session time the replay ran to
+    std::size_t events = 0;
+    Ending ending;
+};
+
 /// @brief Everything in order into a folder, with a report (CONTRACT.md §2 `pipeline`).
 struct PipelineOptions {
     std::string outFolder;
@@ -226,6 +242,9 @@ public:
     /// @brief Runs a what-if scenario once per controller (an MPC on each prediction model the
     /// session's model holds, and the plant's PI loop). Needs no data: the plant makes its own.
     Expected<MpcResult> mpc(const MpcOptions& options, const Progress& progress = {});
+    /// @brief Replays a training session file with the session's model (its MPC controllers)
+    /// and writes the session and its recording. Needs no data: the plant makes its own.
+    Expected<TrainingResult> training(const TrainingOptions& options, const Progress& progress = {}) const;
     /// @brief inspect, calibrate, train, evaluate, ablation, discover and mpc in order, each result written
     /// to the folder as it is done, then report.md. A failed or cancelled stage keeps the files of the stages
     /// before it.

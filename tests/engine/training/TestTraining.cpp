@@ -102,7 +102,8 @@ private Q_SLOTS:
         QVERIFY(s.injectFault(Mechanism::MoistureMeterOffset, 0.6, 200).ok());
         s.advance(700);
         // Before the onset the PI loop holds the product at the setpoint ...
-        QVERIFY2(std::abs(meanTrueDeviation(s, 50, 200)) < 0.1, qPrintable(QString::number(meanTrueDeviation(s, 50, 200))));
+        QVERIFY2(std::abs(meanTrueDeviation(s, 50, 200)) < 0.1,
+                 qPrintable(QString::number(meanTrueDeviation(s, 50, 200))));
         // ... after it, the loop holds the *meter* there: the product is dried by about the offset
         // (0.6 % wb at 55 °C, 10 % more per 10 K of a warmer product).
         const double after = meanTrueDeviation(s, 450, 700);
@@ -219,8 +220,9 @@ private Q_SLOTS:
         expectError(R"({"scenario": "no_such"})", "no bundled scenario named 'no_such'");
         expectError(R"({"scenario": "training_shift", "events": [{"at_s": 5, "type": "jump"}]})",
                     "events[0].type: 'jump'");
-        expectError(R"({"scenario": "training_shift", "events": [{"at_s": 5, "type": "fault", "cause": "gremlins", "strength": 1}]})",
-                    "events[0].cause");
+        expectError(
+            R"({"scenario": "training_shift", "events": [{"at_s": 5, "type": "fault", "cause": "gremlins", "strength": 1}]})",
+            "events[0].cause");
         expectError(R"({"scenario": "training_shift", "events": [{"type": "answer", "cause": "no_fault"}]})",
                     "events[0].at_s: missing");
         // Valid JSON, impossible order: a restore of a snapshot never taken.
@@ -233,7 +235,8 @@ private Q_SLOTS:
         QVERIFY2(r.error().message().find("events[0] (restore at 5 s)") != std::string::npos,
                  r.error().message().c_str());
         // Cancel mid-replay is a Cancelled error, not a short recording passed off as whole.
-        auto whole = training::parseTrainingScript(R"({"scenario": {"length_s": 400, "warmup_s": 300}})", "s.json");
+        auto whole =
+            training::parseTrainingScript(R"({"scenario": {"length_s": 400, "warmup_s": 300}})", "s.json");
         auto cancelled = training::replay(*whole, std::make_shared<hybrid::HybridModel>(),
                                           [](const ProgressInfo&) { return ProgressAction::Stop; });
         QVERIFY(!cancelled.ok());
