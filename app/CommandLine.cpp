@@ -25,6 +25,7 @@ struct CommandLine::Impl {
     std::string language;
     std::string guiModelPath;
     std::string runActions;
+    std::string trainingSession;
 };
 
 CommandLine::CommandLine() : m_impl(new Impl) {
@@ -40,6 +41,8 @@ CommandLine::CommandLine() : m_impl(new Impl) {
         "PATH, then quit");
     app.add_option("--project", m_impl->projectPath, "GUI: open this project file at start");
     app.add_option("--model", m_impl->guiModelPath, "GUI: open this model file with the data");
+    app.add_option("--training", m_impl->trainingSession,
+                   "GUI: reopen this saved training session on the Training tab");
     app.add_option("--run", m_impl->runActions,
                    "GUI: after loading, run these actions in order, e.g. calibrate,train,discover,mpc");
     app.add_option("--lang", m_impl->language,
@@ -233,6 +236,7 @@ ParsedCommandLine CommandLine::parse(int argc, char** argv) {
         result.language = m_impl->language;
         result.modelPath = m_impl->guiModelPath;
         result.runActions = m_impl->runActions;
+        result.trainingSession = m_impl->trainingSession;
     }
     m_impl->options.quiet = m_impl->quiet;
     return result;

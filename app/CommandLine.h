@@ -17,11 +17,12 @@ struct ParsedCommandLine {
     int exitCode = 0;
     bool gui = false; ///< no subcommand: open the main window
     std::string guiDataPath;
-    std::string screenshotPath; ///< GUI: save a PNG of the window once the data is shown, then quit
-    std::string projectPath;    ///< GUI: open this project at start
-    std::string language;       ///< GUI: "en" or "zh_CN" (empty: the saved choice, else the locale)
-    std::string modelPath;      ///< GUI: open this model file with the data
-    std::string runActions;     ///< GUI: comma-separated actions to run after loading
+    std::string screenshotPath;  ///< GUI: save a PNG of the window once the data is shown, then quit
+    std::string projectPath;     ///< GUI: open this project at start
+    std::string language;        ///< GUI: "en" or "zh_CN" (empty: the saved choice, else the locale)
+    std::string modelPath;       ///< GUI: open this model file with the data
+    std::string runActions;      ///< GUI: comma-separated actions to run after loading
+    std::string trainingSession; ///< GUI: a saved training session to reopen
 };
 
 /// @brief The `drytwin` command line (CONTRACT.md §2), built on CLI11.

@@ -100,7 +100,7 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
                 for (const auto& f : files) {
                     std::fprintf(stderr, "drytwin: saved %s\n", qPrintable(f));
                 }
-                rc = files.size() == window.tabs()->count() ? 0 : 3;
+                rc = files.size() > window.tabs()->count() ? 0 : 3; // every tab, the training tab twice
             }
             QApplication::exit(rc);
         };
@@ -122,7 +122,7 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
             poll->start(350);
         };
         if (dataPath.isEmpty() && projectPath.isEmpty()) {
-            QTimer::singleShot(500, &window, save);
+            QTimer::singleShot(500, &window, whenIdle);
         } else {
             QObject::connect(&window, &drytwin::widgets::MainWindow::simulationShown, &window, whenIdle);
             QObject::connect(&window, &drytwin::widgets::MainWindow::loadFinished, &window,
@@ -144,6 +144,9 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
             window.workbench().openModel(QString::fromStdString(parsed.modelPath));
         }
         window.openDataSet(dataPath);
+    }
+    if (!parsed.trainingSession.empty()) {
+        window.openTrainingSession(QString::fromStdString(parsed.trainingSession));
     }
     if (!parsed.runActions.empty()) {
         window.runAfterLoad(

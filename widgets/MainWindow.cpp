@@ -10,6 +10,7 @@
 #include "model/ModelPanel.h"
 #include "mpc/MpcPanel.h"
 #include "residual/ResidualPanel.h"
+#include "training/TrainingPanel.h"
 #include "view3d/LineView3D.h"
 
 #include <QAction>
@@ -47,8 +48,8 @@ namespace drytwin::widgets {
 
 namespace {
 constexpr int kMaxRecent = 8;
-const char* kTabKeys[] = {"data",        "model",    "calibrate", "residual",
-                          "diagnostics", "discover", "mpc",       "line3d"};
+const char* kTabKeys[] = {"data",     "model", "calibrate", "residual", "diagnostics",
+                          "discover", "mpc",   "line3d",    "training"};
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
@@ -74,6 +75,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_tabs->addTab(m_discover, tr("Discover"));
     m_tabs->addTab(m_mpc, tr("What-if MPC"));
     m_tabs->addTab(m_view3d, tr("3D line"));
+    m_training = new TrainingPanel(m_workbench);
+    m_tabs->addTab(m_training, tr("Training"));
     setCentralWidget(m_tabs);
 
     m_statusLabel = new QLabel(tr("No data loaded. File ▸ Open data set…"));
@@ -126,6 +129,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                     showError(action, message);
                 }
             });
+    // The trainee diagnoses the live line's recording on the Discover tab.
+    connect(m_training, &TrainingPanel::recordingReady, this, [this](const QString& csv) {
+        m_pendingTab = m_tabs->indexOf(m_discover);
+        m_workbench.openData(csv);
+    });
     // One time cursor for the 3D view and every time plot.
     const auto shareTime = [this](double t) {
         for (auto* stack : {m_data->plots(), m_model->plots()}) {
@@ -428,6 +436,15 @@ void MainWindow::startActions() {
     }
 }
 
+bool MainWindow::hasPendingActions() const {
+    return !m_pendingActions.isEmpty() || m_training->isOpening();
+}
+
+void MainWindow::openTrainingSession(const QString& sessionFile) {
+    m_tabs->setCurrentWidget(m_training);
+    m_training->openSession(sessionFile);
+}
+
 QStringList MainWindow::saveTabScreenshots(const QString& folder) {
     QDir().mkpath(folder);
     QStringList files;
@@ -440,6 +457,18 @@ QStringList MainWindow::saveTabScreenshots(const QString& folder) {
             QStringLiteral("%1-%2.png").arg(i + 1, 2, 10, QLatin1Char('0')).arg(QLatin1String(kTabKeys[i])));
         if (grab().save(file)) {
             files << file;
+        }
+        if (m_tabs->widget(i) == m_training) { // the instructor's view of the same moment
+            m_training->setInstructorView(true);
+            for (int k = 0; k < 5; ++k) {
+                QApplication::processEvents();
+            }
+            const QString instructor = QDir(folder).filePath(
+                QStringLiteral("%1-training-instructor.png").arg(i + 2, 2, 10, QLatin1Char('0')));
+            if (grab().save(instructor)) {
+                files << instructor;
+            }
+            m_training->setInstructorView(false);
         }
     }
     return files;

@@ -23,9 +23,10 @@ class LineView3D;
 class ModelPanel;
 class MpcPanel;
 class ResidualPanel;
+class TrainingPanel;
 
 /// @brief DryTwin's workbench: one tab per task (Data, Model, Calibrate, Residual model,
-/// Diagnostics, Discover, What-if MPC, 3D line), menus, projects, a status bar with progress
+/// Diagnostics, Discover, What-if MPC, 3D line, Training), menus, projects, a status bar with progress
 /// and cancel. Engine work runs on the engine thread through the Workbench; the window only shows
 /// and edits. Closing it mid-run cancels cleanly.
 class MainWindow : public QMainWindow {
@@ -52,11 +53,14 @@ public:
     DiagnosticsPanel* diagnosticsPanel() const { return m_diagnostics; }
     DiscoverPanel* discoverPanel() const { return m_discover; }
     MpcPanel* mpcPanel() const { return m_mpc; }
+    TrainingPanel* trainingPanel() const { return m_training; }
+    /// @brief Shows the Training tab and reopens a saved session there (replayed, frozen).
+    void openTrainingSession(const QString& sessionFile);
     LineView3D* lineView() const { return m_view3d; }
     /// @brief Runs actions once the data is loaded, in order, as if their buttons were pressed:
     /// "calibrate", "train", "evaluate", "discover", "extend", "mpc" (demos, screenshots, training).
     void runAfterLoad(const QStringList& actions);
-    bool hasPendingActions() const { return !m_pendingActions.isEmpty(); }
+    bool hasPendingActions() const;
     /// @brief Saves one PNG per tab into @p folder (NN-name.png); returns the files written.
     QStringList saveTabScreenshots(const QString& folder);
     /// @brief HTML of the About box: DryTwin's version and every library's.
@@ -91,6 +95,7 @@ private:
     DiagnosticsPanel* m_diagnostics = nullptr;
     DiscoverPanel* m_discover = nullptr;
     MpcPanel* m_mpc = nullptr;
+    TrainingPanel* m_training = nullptr;
     LineView3D* m_view3d = nullptr;
     QMenu* m_recent = nullptr;
     QLabel* m_statusLabel = nullptr;

@@ -1,0 +1,161 @@
+// Training mode through the GUI, offscreen: start a session and let it run accelerated, freeze,
+// inject a fault hidden from the trainee, snapshot, run ahead, restore and run ahead again (the
+// same seconds again), diagnose the recording on the Discover tab, name the cause, check the score.
+#include "MainWindow.h"
+#include "common/PlotStack.h"
+#include "discovery/DiscoverPanel.h"
+#include "training/TrainingPanel.h"
+#include "training/TrainingRunner.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QtTest>
+
+using namespace drytwin;
+using namespace drytwin::widgets;
+
+class TestTrainingPanel : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void acceleratedSessionWithAFaultToFind() {
+        MainWindow window;
+        window.show();
+        TrainingPanel* panel = window.trainingPanel();
+        TrainingRunner& runner = panel->runner();
+        window.tabs()->setCurrentWidget(panel);
+        QVERIFY(!panel->instructorView());
+        QVERIFY(!panel->scoreLabel()->isVisibleTo(panel)); // the trainee sees no faults, no score
+
+        // Start, accelerated: session time runs far faster than the wall clock.
+        panel->scenarios()->setCurrentText(QStringLiteral("training_shift"));
+        panel->speed()->setCurrentIndex(panel->speed()->findData(50));
+        QElapsedTimer wall;
+        wall.start();
+        QTest::mouseClick(panel->startButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(runner.frame().started && runner.frame().timeS >= 40, 10000);
+        QVERIFY2(runner.frame().timeS > 5 * wall.elapsed() / 1000.0,
+                 qPrintable(QStringLiteral("%1 s in %2 ms").arg(runner.frame().timeS).arg(wall.elapsed())));
+        QVERIFY(panel->plots()->curveCount(0) >= 4);
+
+        // The operator moves the setpoint.
+        panel->setpoint()->setValue(13.2);
+        QTest::mouseClick(panel->setpoint()->parentWidget()->findChildren<QPushButton*>().first(),
+                          Qt::LeftButton);
+        QTRY_COMPARE(runner.frame().setpointPct, 13.2);
+
+        // The instructor freezes: the clock stops.
+        panel->setInstructorView(true);
+        QVERIFY(panel->scoreLabel()->isVisibleTo(panel));
+        QTest::mouseClick(panel->freezeButton(), Qt::LeftButton);
+        QTRY_VERIFY(runner.frame().frozen);
+        const double frozenAt = runner.frame().timeS;
+        QTest::qWait(400);
+        QCOMPARE(runner.frame().timeS, frozenAt);
+
+        // A fault 30 s from now, hidden from the trainee; then a snapshot.
+        panel->faultKind()->setCurrentIndex(
+            panel->faultKind()->findData(int(plant::Mechanism::HeatTransferFouling)));
+        panel->faultStrength()->setValue(0.3);
+        panel->faultDelay()->setValue(30);
+        QTest::mouseClick(panel->injectButton(), Qt::LeftButton);
+        QTRY_COMPARE(panel->faultTable()->rowCount(), 1);
+        QCOMPARE(runner.frame().faults.at(0).onsetS, frozenAt + 30);
+        panel->snapshotLabel()->setText(QStringLiteral("before the fault"));
+        QTest::mouseClick(panel->snapshotButton(), Qt::LeftButton);
+        QTRY_COMPARE(panel->snapshotList()->count(), 1);
+
+        // Run ahead half an hour, note where the line is, go back, run the same half hour again.
+        auto* aheadSpin = panel->findChildren<QSpinBox*>().first();
+        for (auto* s : panel->findChildren<QSpinBox*>()) {
+            if (s->suffix().contains(QStringLiteral("min"))) {
+                aheadSpin = s;
+            }
+        }
+        aheadSpin->setValue(30);
+        QPushButton* ahead = nullptr;
+        for (auto* b : panel->findChildren<QPushButton*>()) {
+            if (b->text() == QStringLiteral("Run ahead")) {
+                ahead = b;
+            }
+        }
+        QVERIFY(ahead);
+        QTest::mouseClick(ahead, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(runner.frame().timeS >= frozenAt + 1800, 30000);
+        QVERIFY(runner.frame().frozen); // running ahead leaves the clock frozen
+        const training::LiveSample first = runner.trace().back();
+        panel->snapshotList()->setCurrentRow(0);
+        QTest::mouseClick(panel->restoreButton(), Qt::LeftButton);
+        QTRY_COMPARE(runner.frame().timeS, frozenAt);
+        QCOMPARE(runner.trace().size(), static_cast<std::size_t>(frozenAt)); // seconds 0 … frozenAt − 1
+        QTest::mouseClick(ahead, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(runner.frame().timeS >= frozenAt + 1800, 30000);
+        const training::LiveSample again = runner.trace().back();
+        QCOMPARE(again.timeS, first.timeS);
+        QCOMPARE(again.xOutPct, first.xOutPct);
+        QCOMPARE(again.hotAirC, first.hotAirC);
+        // The fouling made the PI loop raise the hot air to hold the moisture.
+        QVERIFY(runner.trace().back().hotAirSetpointC >
+                runner.trace().at(static_cast<std::size_t>(frozenAt)).hotAirSetpointC + 2);
+
+        // The trainee diagnoses the recording on the Discover tab and names what it found.
+        panel->setInstructorView(false);
+        QTest::mouseClick(panel->diagnoseButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(window.workbench().hasData(), 20000);
+        QTRY_COMPARE_WITH_TIMEOUT(window.tabs()->currentWidget(),
+                                  static_cast<QWidget*>(window.discoverPanel()), 20000);
+        QCOMPARE(window.workbench().siBatches().size(), std::size_t(1));
+        QVERIFY(window.workbench().siBatches().front().rows() >= std::size_t(frozenAt + 1800 + 300));
+        QSignalSpy discovered(&window.workbench(), &Workbench::discovered);
+        window.workbench().discover();
+        QVERIFY(discovered.wait(120000));
+        const auto& found = window.workbench().latest().discover->discovery.findings;
+        QVERIFY(!found.empty());
+        QCOMPARE(found.front().cause, std::string("heat_transfer_fouling"));
+        window.tabs()->setCurrentWidget(panel);
+        panel->cause()->setCurrentIndex(
+            panel->cause()->findData(QString::fromStdString(found.front().cause)));
+        QTest::mouseClick(panel->answerButton(), Qt::LeftButton);
+        QTRY_COMPARE(runner.frame().answers.size(), std::size_t(1));
+        const auto& score = runner.frame().score;
+        QCOMPARE(score.faults.size(), std::size_t(1));
+        QVERIFY(score.faults[0].found);
+        QCOMPARE(score.faults[0].timeToFindS, 1800.0 - 30.0);
+        QCOMPARE(score.wrongAnswers, 0);
+        // Found, but after 29.5 min: almost no time bonus; the PI loop kept the product in the band.
+        QVERIFY2(score.points > 70 && score.points < 80, qPrintable(QString::number(score.points)));
+        panel->setInstructorView(true);
+        QVERIFY(panel->scoreLabel()->text().contains(QStringLiteral("faults found 1 of 1")));
+
+        // The session saved as files and reopened: replayed to the same line, frozen.
+        QTemporaryDir dir;
+        QSignalSpy saved(&runner, &TrainingRunner::saved);
+        panel->saveSession(dir.path());
+        QVERIFY(saved.wait(20000));
+        QVERIFY(QFile::exists(dir.filePath(QStringLiteral("session.json"))));
+        const double savedAt = runner.frame().timeS;
+        const auto lastSaved = runner.trace().back();
+        panel->openSession(dir.filePath(QStringLiteral("session.json")));
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isOpening(), 60000);
+        QCOMPARE(runner.frame().timeS, savedAt);
+        QVERIFY(runner.frame().frozen);
+        QCOMPARE(runner.trace().back().xOutPct, lastSaved.xOutPct);
+        QCOMPARE(runner.frame().answers.size(), std::size_t(1));
+
+        // A bad command is a clear message, the session goes on.
+        panel->faultKind()->setCurrentIndex(
+            panel->faultKind()->findData(int(plant::Mechanism::HeatTransferFouling)));
+        QTest::mouseClick(panel->injectButton(), Qt::LeftButton);
+        QTRY_VERIFY(panel->noteLabel()->text().contains(QStringLiteral("already acts")));
+        QCOMPARE(runner.frame().faults.size(), std::size_t(1));
+    }
+};
+
+QTEST_MAIN(TestTrainingPanel)
+#include "TestTrainingPanel.moc"

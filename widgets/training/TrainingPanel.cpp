@@ -1,0 +1,526 @@
+#include "training/TrainingPanel.h"
+
+#include "common/PlotStack.h"
+#include "common/WidgetHelpers.h"
+#include "common/Workbench.h"
+#include "control/BundledScenarios.h"
+#include "training/TrainingRunner.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QStandardPaths>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <cmath>
+#include <qwt_plot.h>
+#include <qwt_plot_curve.h>
+
+namespace drytwin::widgets {
+
+namespace {
+
+/// Minutes of session shown in the scrolling plots.
+constexpr double kWindowS = 900;
+constexpr const char* kDefaultTrainingScenario = "training_shift";
+
+const control::ControllerKind kControllers[] = {
+    control::ControllerKind::Pi, control::ControllerKind::Pbm, control::ControllerKind::PgrlCc,
+    control::ControllerKind::ExtInputResidual, control::ControllerKind::Lstm};
+
+QString controllerLabel(control::ControllerKind k) {
+    switch (k) {
+    case control::ControllerKind::Pi:
+        return QCoreApplication::translate("TrainingPanel", "PI loop (the plant's own)");
+    case control::ControllerKind::Pbm:
+        return QCoreApplication::translate("TrainingPanel", "MPC on the physics model");
+    case control::ControllerKind::PgrlCc:
+        return QCoreApplication::translate("TrainingPanel", "MPC on PGRL-CC");
+    case control::ControllerKind::ExtInputResidual:
+        return QCoreApplication::translate("TrainingPanel", "MPC on the external-input residual model");
+    case control::ControllerKind::Lstm:
+        return QCoreApplication::translate("TrainingPanel", "MPC on the LSTM");
+    }
+    return {};
+}
+
+QString mechanismLabel(plant::Mechanism m) {
+    switch (m) {
+    case plant::Mechanism::TubeWallHeatLoss:
+        return QCoreApplication::translate("TrainingPanel", "Tube wall heat loss");
+    case plant::Mechanism::GasPhaseCoupling:
+        return QCoreApplication::translate("TrainingPanel", "Gas-phase coupling");
+    case plant::Mechanism::HeatTransferFouling:
+        return QCoreApplication::translate("TrainingPanel", "Heat-transfer fouling");
+    case plant::Mechanism::MoistureMeterLag:
+        return QCoreApplication::translate("TrainingPanel", "Moisture meter lag");
+    case plant::Mechanism::MoistureMeterOffset:
+        return QCoreApplication::translate("TrainingPanel", "Moisture meter offset");
+    case plant::Mechanism::TransportDelayError:
+        return QCoreApplication::translate("TrainingPanel", "Transport delay error");
+    case plant::Mechanism::FallingRateDrying:
+        return QCoreApplication::translate("TrainingPanel", "Falling-rate drying");
+    case plant::Mechanism::AmbientReabsorption:
+        return QCoreApplication::translate("TrainingPanel", "Ambient re-absorption");
+    }
+    return {};
+}
+
+QString clockText(double s) {
+    const auto t = static_cast<long>(std::max(0.0, s));
+    return QStringLiteral("%1:%2:%3")
+        .arg(t / 3600, 2, 10, QLatin1Char('0'))
+        .arg((t / 60) % 60, 2, 10, QLatin1Char('0'))
+        .arg(t % 60, 2, 10, QLatin1Char('0'));
+}
+
+} // namespace
+
+TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
+    : QWidget(parent), m_workbench(workbench), m_runner(new TrainingRunner(this)) {
+    // Session row: scenario, start, role switch, clock.
+    m_scenario = new QComboBox;
+    for (const auto& [name, text] : control::bundledScenarios()) {
+        m_scenario->addItem(QString::fromStdString(name));
+    }
+    m_scenario->setCurrentText(QString::fromLatin1(kDefaultTrainingScenario));
+    m_scenario->setToolTip(tr("The line's conditions: initial levels, load changes, seed (docs/mpc.md)"));
+    m_start = new QPushButton(tr("Start session"));
+    m_instructor = new QCheckBox(tr("Instructor view"));
+    m_instructor->setToolTip(
+        tr("Shows the instructor's controls, the faults, the true moisture and the score; "
+           "hide it before handing the screen to the trainee"));
+    m_clock = new QLabel(tr("No session"));
+    QFont big = m_clock->font();
+    big.setPointSizeF(big.pointSizeF() * 1.4);
+    big.setBold(true);
+    m_clock->setFont(big);
+
+    // Operator.
+    m_speed = new QComboBox;
+    for (int f : {1, 2, 5, 10, 20, 50}) {
+        m_speed->addItem(tr("%1×").arg(f), f);
+    }
+    m_speed->setCurrentIndex(3);
+    m_setpoint = new QDoubleSpinBox;
+    m_setpoint->setRange(8, 20);
+    m_setpoint->setDecimals(2);
+    m_setpoint->setSingleStep(0.1);
+    m_setpoint->setSuffix(tr(" % wb"));
+    m_setpoint->setValue(13);
+    auto* applySetpoint = new QPushButton(tr("Apply"));
+    m_controller = new QComboBox;
+    for (auto k : kControllers) {
+        m_controller->addItem(controllerLabel(k), static_cast<int>(k));
+    }
+    m_controllerNote = new QLabel;
+    m_controllerNote->setWordWrap(true);
+    auto* operatorBox = new QGroupBox(tr("Operator"));
+    auto* of = new QFormLayout(operatorBox);
+    of->addRow(tr("Speed"), m_speed);
+    auto* spRow = new QHBoxLayout;
+    spRow->addWidget(m_setpoint, 1);
+    spRow->addWidget(applySetpoint);
+    of->addRow(tr("X_out setpoint"), spRow);
+    of->addRow(tr("Controller"), m_controller);
+    of->addRow(m_controllerNote);
+
+    // Trainee.
+    m_diagnose = new QPushButton(tr("Diagnose the recording…"));
+    m_diagnose->setToolTip(tr("Saves what the line recorded so far as a batch file and opens it, so that the "
+                              "Discover tab can show what the model gets wrong"));
+    m_cause = new QComboBox;
+    m_cause->addItem(tr("No fault"), QStringLiteral("no_fault"));
+    for (const auto& mi : plant::mechanisms()) {
+        m_cause->addItem(mechanismLabel(mi.id), fromView(mi.name));
+    }
+    m_answer = new QPushButton(tr("Name the cause"));
+    m_answers = new QListWidget;
+    m_answers->setMaximumHeight(64);
+    auto* traineeBox = new QGroupBox(tr("Trainee"));
+    auto* tl = new QVBoxLayout(traineeBox);
+    tl->addWidget(m_diagnose);
+    auto* causeRow = new QHBoxLayout;
+    causeRow->addWidget(m_cause, 1);
+    causeRow->addWidget(m_answer);
+    tl->addLayout(causeRow);
+    tl->addWidget(new QLabel(tr("Causes named (session time):")));
+    tl->addWidget(m_answers);
+
+    // Instructor.
+    m_freeze = new QPushButton(tr("Freeze"));
+    m_aheadMin = new QSpinBox;
+    m_aheadMin->setRange(1, 120);
+    m_aheadMin->setValue(5);
+    m_aheadMin->setSuffix(tr(" min"));
+    auto* ahead = new QPushButton(tr("Run ahead"));
+    ahead->setToolTip(tr("Runs the line this much further at full speed"));
+    m_snapshotLabel = new QLineEdit;
+    m_snapshotLabel->setPlaceholderText(tr("label (default: the time)"));
+    m_snapshot = new QPushButton(tr("Take snapshot"));
+    m_snapshots = new QListWidget;
+    m_snapshots->setMaximumHeight(70);
+    m_restore = new QPushButton(tr("Restore selected"));
+    m_faultKind = new QComboBox;
+    for (const auto& mi : plant::mechanisms()) {
+        m_faultKind->addItem(mechanismLabel(mi.id), static_cast<int>(mi.id));
+    }
+    m_faultKind->setCurrentIndex(static_cast<int>(plant::Mechanism::MoistureMeterOffset));
+    m_faultStrength = new QDoubleSpinBox;
+    m_faultStrength->setDecimals(3);
+    m_faultDelay = new QSpinBox;
+    m_faultDelay->setRange(0, 7200);
+    m_faultDelay->setSuffix(tr(" s from now"));
+    m_inject = new QPushButton(tr("Inject fault"));
+    m_faults = new QTableWidget(0, 4);
+    m_faults->setHorizontalHeaderLabels({tr("Fault"), tr("Strength"), tr("Acts from"), tr("Found after")});
+    m_faults->verticalHeader()->hide();
+    m_faults->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_faults->setMaximumHeight(100);
+    m_score = new QLabel;
+    m_score->setWordWrap(true);
+    auto* save = new QPushButton(tr("Save session…"));
+    auto* open = new QPushButton(tr("Open session…"));
+    m_instructorBox = new QGroupBox(tr("Instructor"));
+    auto* il = new QVBoxLayout(m_instructorBox);
+    il->addWidget(m_score);
+    auto* pages = new QTabWidget;
+    auto* clockPage = new QWidget;
+    auto* cl = new QGridLayout(clockPage);
+    cl->addWidget(m_freeze, 0, 0);
+    cl->addWidget(m_aheadMin, 0, 1);
+    cl->addWidget(ahead, 0, 2);
+    cl->addWidget(m_snapshotLabel, 1, 0, 1, 2);
+    cl->addWidget(m_snapshot, 1, 2);
+    cl->addWidget(m_snapshots, 2, 0, 1, 2);
+    cl->addWidget(m_restore, 2, 2, Qt::AlignTop);
+    pages->addTab(clockPage, tr("Clock and snapshots"));
+    auto* faultPage = new QWidget;
+    auto* fl = new QGridLayout(faultPage);
+    fl->addWidget(m_faultKind, 0, 0, 1, 2);
+    fl->addWidget(m_faultStrength, 1, 0);
+    fl->addWidget(m_faultDelay, 1, 1);
+    fl->addWidget(m_inject, 0, 2, 2, 1);
+    fl->addWidget(m_faults, 2, 0, 1, 3);
+    pages->addTab(faultPage, tr("Faults"));
+    auto* filePage = new QWidget;
+    auto* filesLayout = new QVBoxLayout(filePage);
+    auto* filesNote =
+        new QLabel(tr("A session file holds the scenario, every event (faults, snapshots, answers) and "
+                      "the recording as a batch file; reopening replays it to the same data."));
+    filesNote->setWordWrap(true);
+    filesLayout->addWidget(filesNote);
+    auto* fileRow = new QHBoxLayout;
+    fileRow->addWidget(save);
+    fileRow->addWidget(open);
+    filesLayout->addLayout(fileRow);
+    filesLayout->addStretch(1);
+    pages->addTab(filePage, tr("Session file"));
+    il->addWidget(pages);
+
+    m_note = new QLabel(tr("Start a session: the line runs live under its PI loop."));
+    m_note->setWordWrap(true);
+
+    auto* side = new QWidget;
+    auto* sl = new QVBoxLayout(side);
+    sl->addWidget(operatorBox);
+    sl->addWidget(traineeBox);
+    sl->addWidget(m_instructorBox);
+    sl->addWidget(m_note);
+    sl->addStretch(1);
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(side);
+    scroll->setWidgetResizable(true);
+    scroll->setMinimumWidth(400);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+
+    m_plots = new PlotStack;
+    m_plots->addPlot(tr("X_out [% wb]"));
+    m_plots->addPlot(tr("T_hot [°C]"));
+    m_plots->addPlot(tr("Feed [t/h]"));
+    m_plots->addPlot(tr("X_in [% wb]"));
+    m_plots->setXTitle(tr("session time [min]"));
+    const QVector<double> none;
+    m_bandHigh = m_plots->addCurve(0, tr("band"), none, none, Qt::gray, Qt::DotLine, 1.0);
+    m_bandLow = m_plots->addCurve(0, QString(), none, none, Qt::gray, Qt::DotLine, 1.0);
+    m_xSetpoint = m_plots->addCurve(0, tr("setpoint"), none, none, Qt::black, Qt::DashLine, 1.4);
+    m_xMeasured = m_plots->addCurve(0, tr("X_out measured"), none, none, seriesColour(0), Qt::SolidLine, 1.3);
+    m_xTrue = m_plots->addCurve(0, tr("X_out true (instructor)"), none, none, QColor(200, 40, 40),
+                                Qt::SolidLine, 1.3);
+    m_hotSetpoint =
+        m_plots->addCurve(1, tr("T_hot setpoint"), none, none, seriesColour(4), Qt::DashLine, 1.2);
+    m_hot = m_plots->addCurve(1, tr("T_hot"), none, none, seriesColour(2));
+    m_feed = m_plots->addCurve(2, tr("feed"), none, none, seriesColour(5));
+    m_xIn = m_plots->addCurve(3, tr("X_in"), none, none, seriesColour(3));
+
+    auto* top = new QHBoxLayout;
+    top->addWidget(new QLabel(tr("Scenario")));
+    top->addWidget(m_scenario);
+    top->addWidget(m_start);
+    top->addSpacing(20);
+    top->addWidget(m_clock, 1);
+    top->addWidget(m_instructor);
+    auto* split = new QSplitter;
+    split->addWidget(m_plots);
+    split->addWidget(scroll);
+    split->setStretchFactor(0, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(top);
+    layout->addWidget(split, 1);
+
+    connect(m_start, &QPushButton::clicked, this, &TrainingPanel::startSession);
+    connect(m_instructor, &QCheckBox::toggled, this, &TrainingPanel::setInstructorView);
+    connect(m_speed, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+            [this] { m_runner->setSpeed(m_speed->currentData().toDouble()); });
+    connect(applySetpoint, &QPushButton::clicked, this,
+            [this] { m_runner->setSetpoint(m_setpoint->value()); });
+    connect(m_controller, QOverload<int>::of(&QComboBox::activated), this, [this] {
+        m_runner->setController(static_cast<control::ControllerKind>(m_controller->currentData().toInt()));
+    });
+    connect(m_answer, &QPushButton::clicked, this,
+            [this] { m_runner->answer(m_cause->currentData().toString()); });
+    connect(m_diagnose, &QPushButton::clicked, this, [this] {
+        // Each diagnosis gets its own folder, so an earlier one stays as it was opened.
+        m_diagnoseFolder = QDir(QStandardPaths::writableLocation(QStandardPaths::TempLocation))
+                               .filePath(QStringLiteral("drytwin-training-%1-%2")
+                                             .arg(QCoreApplication::applicationPid())
+                                             .arg(QDateTime::currentMSecsSinceEpoch()));
+        m_diagnosePending = true;
+        m_runner->save(m_diagnoseFolder);
+    });
+    connect(m_freeze, &QPushButton::clicked, this, [this] {
+        if (m_runner->frame().frozen) {
+            m_runner->resume();
+        } else {
+            m_runner->freeze();
+        }
+    });
+    connect(ahead, &QPushButton::clicked, this, [this] { m_runner->runAhead(60 * m_aheadMin->value()); });
+    connect(m_snapshot, &QPushButton::clicked, this, [this] {
+        QString label = m_snapshotLabel->text().trimmed();
+        if (label.isEmpty()) {
+            label = clockText(m_runner->frame().timeS);
+        }
+        m_runner->takeSnapshot(label);
+        m_snapshotLabel->clear();
+    });
+    connect(m_restore, &QPushButton::clicked, this, [this] {
+        if (auto* item = m_snapshots->currentItem()) {
+            m_runner->restore(item->data(Qt::UserRole).toString());
+        } else {
+            m_note->setText(tr("Select a snapshot to restore."));
+        }
+    });
+    connect(m_faultKind, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+            &TrainingPanel::updateFaultUnit);
+    connect(m_inject, &QPushButton::clicked, this, [this] {
+        const auto m = static_cast<plant::Mechanism>(m_faultKind->currentData().toInt());
+        m_runner->injectFault(m, m_faultStrength->value(), m_faultDelay->value());
+    });
+    connect(save, &QPushButton::clicked, this, [this] {
+        const QString folder = QFileDialog::getExistingDirectory(this, tr("Save the session into a folder"));
+        if (!folder.isEmpty()) {
+            saveSession(folder);
+        }
+    });
+    connect(open, &QPushButton::clicked, this, [this] {
+        const QString file =
+            QFileDialog::getOpenFileName(this, tr("Open a training session"), {}, tr("Sessions (*.json)"));
+        if (!file.isEmpty()) {
+            openSession(file);
+        }
+    });
+    connect(m_runner, &TrainingRunner::frameReady, this, &TrainingPanel::showFrame);
+    connect(m_runner, &TrainingRunner::failed, this, [this](const QString& action, const QString& message) {
+        m_opening = false;
+        m_note->setText(tr("%1: %2").arg(action, message));
+    });
+    connect(
+        m_runner, &TrainingRunner::saved, this, [this](const QString& sessionFile, const QStringList& csv) {
+            if (m_diagnosePending && sessionFile.startsWith(m_diagnoseFolder)) {
+                m_diagnosePending = false;
+                m_note->setText(
+                    tr("Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.")
+                        .arg(QDir::toNativeSeparators(csv.value(0))));
+                Q_EMIT recordingReady(csv.value(0));
+            } else {
+                m_note->setText(tr("Session saved: %1").arg(QDir::toNativeSeparators(sessionFile)));
+            }
+        });
+    updateFaultUnit();
+    setInstructorView(false);
+}
+
+TrainingPanel::~TrainingPanel() = default;
+
+void TrainingPanel::startSession() {
+    const auto& all = control::bundledScenarios();
+    const auto it = all.find(m_scenario->currentText().toStdString());
+    if (it == all.end()) {
+        return;
+    }
+    m_runner->setSpeed(m_speed->currentData().toDouble());
+    m_runner->start(QString::fromStdString(it->second), m_workbench.model());
+    m_controller->setCurrentIndex(0);
+    m_note->setText(tr("Session started: the line runs under its PI loop. The MPC controllers use the model "
+                       "loaded now."));
+}
+
+void TrainingPanel::saveSession(const QString& folder) {
+    m_runner->save(folder);
+}
+
+void TrainingPanel::openSession(const QString& sessionFile) {
+    m_opening = true;
+    m_note->setText(tr("Replaying %1…").arg(QDir::toNativeSeparators(sessionFile)));
+    m_runner->open(sessionFile, m_workbench.model());
+}
+
+void TrainingPanel::setInstructorView(bool on) {
+    m_instructor->blockSignals(true);
+    m_instructor->setChecked(on);
+    m_instructor->blockSignals(false);
+    m_instructorBox->setVisible(on);
+    // The truth is the instructor's: off the trainee's plot and legend alike.
+    m_xTrue->setVisible(on);
+    m_xTrue->setItemAttribute(QwtPlotItem::Legend, on);
+    m_plots->plot(0)->updateLegend();
+    m_plots->plot(0)->replot();
+}
+
+bool TrainingPanel::instructorView() const {
+    return m_instructor->isChecked();
+}
+
+void TrainingPanel::updateFaultUnit() {
+    const auto& mi = plant::info(static_cast<plant::Mechanism>(m_faultKind->currentData().toInt()));
+    m_faultStrength->setRange(0, mi.maxStrength);
+    m_faultStrength->setSingleStep(mi.maxStrength / 50);
+    m_faultStrength->setValue(mi.defaultStrength * 2); // clearly visible to a trainee, still realistic
+    m_faultStrength->setSuffix(QStringLiteral(" ") + fromView(mi.unit));
+    m_faultStrength->setToolTip(fromView(mi.strengthMeaning));
+}
+
+void TrainingPanel::showFrame() {
+    const TrainingFrame& f = m_runner->frame();
+    if (!f.started) {
+        return;
+    }
+    if (m_opening) {
+        m_opening = false;
+        m_note->setText(
+            tr("Session reopened at %1, frozen: the instructor resumes it.").arg(clockText(f.timeS)));
+    }
+    QString state = f.finished ? tr("finished") : f.frozen ? tr("FROZEN") : tr("running %1×").arg(f.speed);
+    m_clock->setText(
+        tr("%1  t = %2 / %3  (%4)").arg(f.scenarioName, clockText(f.timeS), clockText(f.endS), state));
+    m_freeze->setText(f.frozen ? tr("Resume") : tr("Freeze"));
+    if (!m_setpoint->hasFocus()) {
+        m_setpoint->setValue(f.setpointPct);
+    }
+    const int ci = m_controller->findData(static_cast<int>(f.controller));
+    if (ci >= 0 && !m_controller->view()->isVisible()) {
+        m_controller->setCurrentIndex(ci);
+    }
+    m_controllerNote->setText(
+        f.controllerNote.isEmpty()
+            ? tr("Setpoint %1 % wb, band ±%2 % wb").arg(f.setpointPct, 0, 'f', 2).arg(f.bandPct)
+            : tr("MPC fell back: %1").arg(f.controllerNote));
+    m_answers->clear();
+    for (const auto& a : f.answers) {
+        const auto m = plant::mechanismByName(a.cause);
+        m_answers->addItem(tr("%1  %2").arg(clockText(a.atS), m ? mechanismLabel(*m) : tr("No fault")));
+    }
+    const QString selected =
+        m_snapshots->currentItem() ? m_snapshots->currentItem()->data(Qt::UserRole).toString() : QString();
+    m_snapshots->clear();
+    for (const auto& s : f.snapshots) {
+        auto* item =
+            new QListWidgetItem(tr("%1 (at %2)").arg(QString::fromStdString(s.label), clockText(s.atS)));
+        item->setData(Qt::UserRole, QString::fromStdString(s.label));
+        m_snapshots->addItem(item);
+        if (item->data(Qt::UserRole).toString() == selected) {
+            m_snapshots->setCurrentItem(item);
+        }
+    }
+    m_faults->setRowCount(static_cast<int>(f.faults.size()));
+    for (std::size_t i = 0; i < f.faults.size(); ++i) {
+        const auto& fault = f.faults[i];
+        QString found = fault.onsetS > f.timeS ? tr("not acting yet") : tr("not found");
+        for (const auto& fs : f.score.faults) {
+            if (fs.fault.mechanism == fault.mechanism && fs.found) {
+                found = tr("%1 s").arg(fs.timeToFindS, 0, 'f', 0);
+            }
+        }
+        setTableRow(
+            m_faults, static_cast<int>(i),
+            {mechanismLabel(fault.mechanism),
+             QStringLiteral("%1 %2").arg(fault.strength).arg(fromView(plant::info(fault.mechanism).unit)),
+             clockText(fault.onsetS), found});
+    }
+    m_faults->resizeColumnsToContents();
+    m_score->setText(
+        tr("<b>Score %1 / 100</b> — faults found %2 of %3, wrong answers %4, product out of the band "
+           "%5 % of the time (%6 kg)")
+            .arg(f.score.points, 0, 'f', 0)
+            .arg(std::count_if(f.score.faults.begin(), f.score.faults.end(),
+                               [](const auto& x) { return x.found; }))
+            .arg(f.score.faults.size())
+            .arg(f.score.wrongAnswers)
+            .arg(f.score.offSpecPct, 0, 'f', 1)
+            .arg(f.score.offSpecKg, 0, 'f', 0));
+    redrawPlots();
+}
+
+void TrainingPanel::redrawPlots() {
+    const auto& trace = m_runner->trace();
+    const TrainingFrame& f = m_runner->frame();
+    // The plots scroll: the last kWindowS seconds, time in minutes.
+    const double from = f.timeS - kWindowS;
+    QVector<double> t, xm, xt, sp, hi, lo, hsp, h, feed, xin;
+    for (const auto& s : trace) {
+        if (s.timeS < from) {
+            continue;
+        }
+        t << s.timeS / 60.0;
+        xm << s.xOutPct;
+        xt << s.xOutTruePct;
+        sp << s.setpointPct;
+        hi << s.setpointPct + f.bandPct;
+        lo << s.setpointPct - f.bandPct;
+        hsp << s.hotAirSetpointC;
+        h << s.hotAirC;
+        feed << s.feedKgH / 1000.0;
+        xin << s.xInPct;
+    }
+    m_xMeasured->setSamples(t, xm);
+    m_xTrue->setSamples(t, xt);
+    m_xSetpoint->setSamples(t, sp);
+    m_bandHigh->setSamples(t, hi);
+    m_bandLow->setSamples(t, lo);
+    m_hotSetpoint->setSamples(t, hsp);
+    m_hot->setSamples(t, h);
+    m_feed->setSamples(t, feed);
+    m_xIn->setSamples(t, xin);
+    m_plots->rescale();
+    m_plots->setXRange(std::max(0.0, from) / 60.0, std::max(kWindowS, f.timeS) / 60.0);
+}
+
+} // namespace drytwin::widgets

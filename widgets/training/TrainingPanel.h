@@ -1,0 +1,124 @@
+#pragma once
+
+#include "plant/Mechanisms.h"
+
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QGroupBox;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QPushButton;
+class QSpinBox;
+class QTableWidget;
+class QwtPlotCurve;
+
+namespace drytwin::widgets {
+
+class PlotStack;
+class TrainingRunner;
+class Workbench;
+
+/// @brief Training mode: the virtual plant live (1×–50×) under its PI loop or an MPC, scrolling
+/// plots, and three roles on one screen. The operator moves the setpoint and switches the
+/// controller; the trainee opens the recording for the Discover tab and names a cause; the
+/// instructor (a role switch, no password) freezes and resumes, snapshots and restores, runs
+/// ahead, injects faults of CONTRACT.md §4 hidden from the trainee's view, sees the true outlet
+/// moisture and the score, and saves or reopens sessions.
+class TrainingPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit TrainingPanel(Workbench& workbench, QWidget* parent = nullptr);
+    ~TrainingPanel() override;
+
+    TrainingRunner& runner() const { return *m_runner; }
+    PlotStack* plots() const { return m_plots; }
+    /// @brief Shows or hides the instructor's controls, faults, truth and score.
+    void setInstructorView(bool on);
+    bool instructorView() const;
+    QComboBox* scenarios() const { return m_scenario; }
+    QPushButton* startButton() const { return m_start; }
+    QComboBox* speed() const { return m_speed; }
+    QDoubleSpinBox* setpoint() const { return m_setpoint; }
+    QComboBox* controller() const { return m_controller; }
+    QComboBox* cause() const { return m_cause; }
+    QPushButton* answerButton() const { return m_answer; }
+    QPushButton* diagnoseButton() const { return m_diagnose; }
+    QPushButton* freezeButton() const { return m_freeze; }
+    QLineEdit* snapshotLabel() const { return m_snapshotLabel; }
+    QPushButton* snapshotButton() const { return m_snapshot; }
+    QListWidget* snapshotList() const { return m_snapshots; }
+    QPushButton* restoreButton() const { return m_restore; }
+    QComboBox* faultKind() const { return m_faultKind; }
+    QDoubleSpinBox* faultStrength() const { return m_faultStrength; }
+    QSpinBox* faultDelay() const { return m_faultDelay; }
+    QPushButton* injectButton() const { return m_inject; }
+    QTableWidget* faultTable() const { return m_faults; }
+    QLabel* scoreLabel() const { return m_score; }
+    QLabel* clockLabel() const { return m_clock; }
+    QLabel* noteLabel() const { return m_note; }
+    /// @brief Writes the session into @p folder (asynchronous: the note says when it is done).
+    void saveSession(const QString& folder);
+    /// @brief Reopens a saved session (replayed to where it ended, frozen).
+    void openSession(const QString& sessionFile);
+    /// @brief True from openSession() until its replay has arrived or failed.
+    bool isOpening() const { return m_opening; }
+
+Q_SIGNALS:
+    /// @brief The trainee asked to diagnose: the recording is saved as a batch file at @p csv.
+    void recordingReady(const QString& csv);
+
+private:
+    void startSession();
+    void showFrame();
+    void redrawPlots();
+    void updateFaultUnit();
+
+    Workbench& m_workbench;
+    TrainingRunner* m_runner = nullptr;
+    QComboBox* m_scenario = nullptr;
+    QPushButton* m_start = nullptr;
+    QCheckBox* m_instructor = nullptr;
+    QLabel* m_clock = nullptr;
+    QComboBox* m_speed = nullptr;
+    QDoubleSpinBox* m_setpoint = nullptr;
+    QComboBox* m_controller = nullptr;
+    QLabel* m_controllerNote = nullptr;
+    QPushButton* m_diagnose = nullptr;
+    QComboBox* m_cause = nullptr;
+    QPushButton* m_answer = nullptr;
+    QListWidget* m_answers = nullptr;
+    QGroupBox* m_instructorBox = nullptr;
+    QPushButton* m_freeze = nullptr;
+    QSpinBox* m_aheadMin = nullptr;
+    QLineEdit* m_snapshotLabel = nullptr;
+    QPushButton* m_snapshot = nullptr;
+    QListWidget* m_snapshots = nullptr;
+    QPushButton* m_restore = nullptr;
+    QComboBox* m_faultKind = nullptr;
+    QDoubleSpinBox* m_faultStrength = nullptr;
+    QSpinBox* m_faultDelay = nullptr;
+    QPushButton* m_inject = nullptr;
+    QTableWidget* m_faults = nullptr;
+    QLabel* m_score = nullptr;
+    QLabel* m_note = nullptr;
+    PlotStack* m_plots = nullptr;
+    QwtPlotCurve* m_xMeasured = nullptr;
+    QwtPlotCurve* m_xTrue = nullptr;
+    QwtPlotCurve* m_xSetpoint = nullptr;
+    QwtPlotCurve* m_bandHigh = nullptr;
+    QwtPlotCurve* m_bandLow = nullptr;
+    QwtPlotCurve* m_hotSetpoint = nullptr;
+    QwtPlotCurve* m_hot = nullptr;
+    QwtPlotCurve* m_feed = nullptr;
+    QwtPlotCurve* m_xIn = nullptr;
+    QString m_diagnoseFolder;
+    bool m_diagnosePending = false;
+    bool m_opening = false;
+    std::size_t m_drawnSamples = 0;
+};
+
+} // namespace drytwin::widgets

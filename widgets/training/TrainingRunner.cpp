@@ -1,0 +1,310 @@
+#include "training/TrainingRunner.h"
+
+#include "common/ErrorText.h"
+#include "training/TrainingScript.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QTimer>
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace drytwin::widgets {
+
+namespace detail {
+
+/// Lives on the runner's thread and owns the session; only it touches the session.
+class TrainingWorker : public QObject {
+    Q_OBJECT
+public:
+    TrainingWorker() {
+        m_tick = new QTimer(this);
+        m_tick->setInterval(100); // frames at 10 Hz; the plots redraw from them
+        connect(m_tick, &QTimer::timeout, this, &TrainingWorker::tick);
+    }
+
+    void start(const std::string& scenarioJson, std::shared_ptr<const hybrid::HybridModel> model) {
+        auto scenario = control::parseScenario(scenarioJson, "scenario");
+        if (!scenario) {
+            fail(QCoreApplication::translate("TrainingRunner", "Start"), scenario.error());
+            return;
+        }
+        auto session = training::TrainingSession::start(*scenario, std::move(model));
+        if (!session) {
+            fail(QCoreApplication::translate("TrainingRunner", "Start"), session.error());
+            return;
+        }
+        adopt(std::move(*session), scenarioJson);
+    }
+
+    void open(const std::string& path, std::shared_ptr<const hybrid::HybridModel> model) {
+        auto script = training::loadTrainingScript(path);
+        if (!script) {
+            fail(QCoreApplication::translate("TrainingRunner", "Open session"), script.error());
+            return;
+        }
+        auto session = training::replay(*script, std::move(model));
+        if (!session) {
+            fail(QCoreApplication::translate("TrainingRunner", "Open session"), session.error());
+            return;
+        }
+        session->freeze();
+        adopt(std::move(*session), script->scenarioJson);
+    }
+
+    /// Runs a command on the session and sends a frame; errors go to failed().
+    void command(const QString& action, const std::function<Status(training::TrainingSession&)>& f) {
+        if (!m_session) {
+            Q_EMIT failed(action, QCoreApplication::translate("TrainingRunner", "Start a session first."));
+            return;
+        }
+        if (auto st = f(*m_session); !st) {
+            fail(action, st.error());
+        }
+        sendFrame();
+    }
+
+    void setSpeed(double factor) {
+        m_speed = std::clamp(factor, 1.0, 50.0);
+        sendFrame();
+    }
+
+    void runAhead(int seconds) {
+        if (m_session) {
+            const bool wasFrozen = m_session->frozen();
+            if (wasFrozen) {
+                m_session->resume();
+            }
+            m_session->advance(static_cast<std::size_t>(std::max(0, seconds)));
+            if (wasFrozen) {
+                m_session->freeze();
+            }
+        }
+        sendFrame();
+    }
+
+    void save(const QString& folder) {
+        if (!m_session) {
+            Q_EMIT failed(QCoreApplication::translate("TrainingRunner", "Save session"),
+                          QCoreApplication::translate("TrainingRunner", "Start a session first."));
+            return;
+        }
+        auto r = training::saveSession(folder.toStdString(), m_scenarioJson, *m_session);
+        if (!r) {
+            fail(QCoreApplication::translate("TrainingRunner", "Save session"), r.error());
+            return;
+        }
+        QStringList files;
+        for (const auto& f : r->recordingFiles) {
+            files << QString::fromStdString(f);
+        }
+        Q_EMIT saved(QString::fromStdString(r->sessionFile), files);
+    }
+
+    void stop() {
+        m_tick->stop();
+        m_session.reset();
+    }
+
+Q_SIGNALS:
+    void frame(const drytwin::widgets::TrainingFrame& frame);
+    void failed(const QString& action, const QString& message);
+    void saved(const QString& sessionFile, const QStringList& recordingFiles);
+
+private:
+    void adopt(training::TrainingSession session, const std::string& scenarioJson) {
+        m_session.emplace(std::move(session));
+        m_scenarioJson = scenarioJson;
+        m_sent = 0;
+        m_clock.start();
+        m_owed = 0;
+        m_tick->start();
+        sendFrame();
+    }
+
+    void fail(const QString& action, const Error& error) { Q_EMIT failed(action, errorText(error)); }
+
+    void tick() {
+        if (!m_session) {
+            return;
+        }
+        // Session time follows the wall clock times the speed; what a slow step leaves owing is
+        // run on the next tick, at most two seconds' worth so that a stall does not snowball.
+        const double elapsedS = static_cast<double>(m_clock.restart()) / 1000.0;
+        if (!m_session->frozen() && !m_session->finished()) {
+            m_owed = std::min(m_owed + elapsedS * m_speed, 2.0 * m_speed);
+            const auto whole = static_cast<std::size_t>(std::floor(m_owed));
+            m_owed -= static_cast<double>(m_session->advance(whole));
+            sendFrame();
+        } else {
+            m_owed = 0; // a frozen or finished line has nothing new to show; commands send their own frames
+        }
+    }
+
+    void sendFrame() {
+        TrainingFrame f;
+        f.speed = m_speed;
+        if (m_session) {
+            const auto& s = *m_session;
+            f.started = true;
+            f.frozen = s.frozen();
+            f.finished = s.finished();
+            f.timeS = s.timeS();
+            f.endS = s.endS();
+            f.bandPct = s.scenario().bandPct;
+            f.setpointPct = s.setpointPct();
+            f.controller = s.controller();
+            f.controllerNote = QString::fromStdString(s.controllerNote());
+            f.scenarioName = QString::fromStdString(s.scenario().name);
+            const auto& trace = s.trace();
+            // A restore shortens the trace (and a later run may lengthen it past the count
+            // sent): every restore or start sends it whole.
+            const std::size_t restores =
+                std::count_if(s.events().begin(), s.events().end(),
+                              [](const auto& e) { return e.type == training::EventType::Restore; });
+            if (restores != m_restoresSeen || m_sent > trace.size()) {
+                m_restoresSeen = restores;
+                m_sent = 0;
+            }
+            f.replaceTrace = m_sent == 0;
+            f.samples.assign(trace.begin() + static_cast<long>(m_sent), trace.end());
+            m_sent = trace.size();
+            f.snapshots = s.snapshots();
+            f.faults = s.faults();
+            f.answers = s.answers();
+            f.score = s.score();
+        }
+        Q_EMIT frame(f);
+    }
+
+    std::optional<training::TrainingSession> m_session;
+    std::string m_scenarioJson;
+    QTimer* m_tick = nullptr;
+    QElapsedTimer m_clock;
+    double m_speed = 10;
+    double m_owed = 0;
+    std::size_t m_sent = 0;
+    std::size_t m_restoresSeen = 0;
+};
+
+} // namespace detail
+
+TrainingRunner::TrainingRunner(QObject* parent) : QObject(parent) {
+    qRegisterMetaType<TrainingFrame>();
+    m_worker = new detail::TrainingWorker;
+    m_worker->moveToThread(&m_thread);
+    connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
+    connect(m_worker, &detail::TrainingWorker::frame, this, &TrainingRunner::receive);
+    connect(m_worker, &detail::TrainingWorker::failed, this, &TrainingRunner::failed);
+    connect(m_worker, &detail::TrainingWorker::saved, this, &TrainingRunner::saved);
+    m_thread.setObjectName(QStringLiteral("drytwin-training"));
+    m_thread.start();
+}
+
+TrainingRunner::~TrainingRunner() {
+    QMetaObject::invokeMethod(
+        m_worker, [w = m_worker] { w->stop(); }, Qt::BlockingQueuedConnection);
+    m_thread.quit();
+    m_thread.wait();
+}
+
+void TrainingRunner::post(std::function<void(detail::TrainingWorker&)> command) {
+    QMetaObject::invokeMethod(
+        m_worker, [w = m_worker, command = std::move(command)] { command(*w); }, Qt::QueuedConnection);
+}
+
+void TrainingRunner::receive(const TrainingFrame& frame) {
+    if (frame.replaceTrace) {
+        m_trace = frame.samples;
+    } else {
+        m_trace.insert(m_trace.end(), frame.samples.begin(), frame.samples.end());
+    }
+    m_frame = frame;
+    m_frame.samples.clear(); // held once, in m_trace
+    Q_EMIT frameReady();
+}
+
+void TrainingRunner::start(const QString& scenarioJson, const hybrid::HybridModel& model) {
+    auto shared = std::make_shared<const hybrid::HybridModel>(model);
+    post([text = scenarioJson.toStdString(), shared](detail::TrainingWorker& w) { w.start(text, shared); });
+}
+
+void TrainingRunner::open(const QString& sessionFile, const hybrid::HybridModel& model) {
+    auto shared = std::make_shared<const hybrid::HybridModel>(model);
+    post([path = sessionFile.toStdString(), shared](detail::TrainingWorker& w) { w.open(path, shared); });
+}
+
+void TrainingRunner::setSpeed(double factor) {
+    post([factor](detail::TrainingWorker& w) { w.setSpeed(factor); });
+}
+
+void TrainingRunner::runAhead(int seconds) {
+    post([seconds](detail::TrainingWorker& w) { w.runAhead(seconds); });
+}
+
+void TrainingRunner::setSetpoint(double pct) {
+    post([pct](detail::TrainingWorker& w) {
+        w.command(tr("Setpoint"), [pct](training::TrainingSession& s) { return s.setSetpoint(pct); });
+    });
+}
+
+void TrainingRunner::setController(control::ControllerKind kind) {
+    post([kind](detail::TrainingWorker& w) {
+        w.command(tr("Controller"), [kind](training::TrainingSession& s) { return s.setController(kind); });
+    });
+}
+
+void TrainingRunner::injectFault(plant::Mechanism mechanism, double strength, double delayS) {
+    post([=](detail::TrainingWorker& w) {
+        // "From now" means the line's time when the command arrives: the last frame may be a
+        // few session seconds behind at 50×.
+        w.command(tr("Inject fault"), [=](training::TrainingSession& s) {
+            return s.injectFault(mechanism, strength, s.timeS() + delayS);
+        });
+    });
+}
+
+void TrainingRunner::freeze() {
+    post([](detail::TrainingWorker& w) {
+        w.command(tr("Freeze"), [](training::TrainingSession& s) {
+            s.freeze();
+            return Status{};
+        });
+    });
+}
+
+void TrainingRunner::resume() {
+    post([](detail::TrainingWorker& w) {
+        w.command(tr("Resume"), [](training::TrainingSession& s) {
+            s.resume();
+            return Status{};
+        });
+    });
+}
+
+void TrainingRunner::takeSnapshot(const QString& label) {
+    post([l = label.toStdString()](detail::TrainingWorker& w) {
+        w.command(tr("Snapshot"), [l](training::TrainingSession& s) { return s.takeSnapshot(l); });
+    });
+}
+
+void TrainingRunner::restore(const QString& label) {
+    post([l = label.toStdString()](detail::TrainingWorker& w) {
+        w.command(tr("Restore"), [l](training::TrainingSession& s) { return s.restore(l); });
+    });
+}
+
+void TrainingRunner::answer(const QString& cause) {
+    post([c = cause.toStdString()](detail::TrainingWorker& w) {
+        w.command(tr("Name the cause"), [c](training::TrainingSession& s) { return s.answer(c); });
+    });
+}
+
+void TrainingRunner::save(const QString& folder) {
+    post([folder](detail::TrainingWorker& w) { w.save(folder); });
+}
+
+} // namespace drytwin::widgets
+
+#include "TrainingRunner.moc"
