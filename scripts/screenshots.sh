@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Screenshots of every tab of the real program under Xvfb, with the bundled demo loaded and the
 # main actions run (calibrate from the paper's parameters, train, discover, the paper-like MPC
-# scenario), in English and Simplified Chinese: docs/screenshots/<lang>/NN-<tab>.png.
+# scenario), in English and Simplified Chinese: docs/screenshots/<lang>/NN-<tab>.png. The Training
+# tab shows the example session of docs/training-example.json (replayed headless first), in the
+# trainee's and the instructor's view.
 #   bash scripts/screenshots.sh [BUILD_DIR] [OUT_DIR]
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
@@ -12,9 +14,11 @@ demo="$build/demo-data"
 if [ ! -d "$demo" ]; then
   "$drytwin" -q generate --demo --seed 2025 --out "$demo"
 fi
+session="$build/training-example"
+"$drytwin" -q training --script "$here/docs/training-example.json" --out "$session" >/dev/null
 for lang in en zh_CN; do
   rm -rf "$out/$lang"
   xvfb-run -a -s "-screen 0 1280x800x24" "$drytwin" --lang "$lang" --data "$demo" \
-    --run calibrate,train,discover,mpc --screenshot "$out/$lang"
+    --training "$session/session.json" --run calibrate,train,discover,mpc --screenshot "$out/$lang"
 done
 ls "$out"/*/

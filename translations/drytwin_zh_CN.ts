@@ -10,6 +10,101 @@
     </message>
 </context>
 <context>
+    <name>TrainingPanel</name>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="51"/>
+        <source>PI loop (the plant&apos;s own)</source>
+        <translation>PI 回路（装置自带）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="53"/>
+        <source>MPC on the physics model</source>
+        <translation>基于物理模型的 MPC</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="55"/>
+        <source>MPC on PGRL-CC</source>
+        <translation>基于 PGRL-CC 的 MPC</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="57"/>
+        <source>MPC on the external-input residual model</source>
+        <translation>基于外部输入残差模型的 MPC</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="59"/>
+        <source>MPC on the LSTM</source>
+        <translation>基于 LSTM 的 MPC</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="67"/>
+        <source>Tube wall heat loss</source>
+        <translation>管壁散热损失</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="69"/>
+        <source>Gas-phase coupling</source>
+        <translation>气相耦合</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="71"/>
+        <source>Heat-transfer fouling</source>
+        <translation>传热结垢</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="73"/>
+        <source>Moisture meter lag</source>
+        <translation>水分仪滞后</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="75"/>
+        <source>Moisture meter offset</source>
+        <translation>水分仪偏差</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="77"/>
+        <source>Transport delay error</source>
+        <translation>输送延时误差</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="79"/>
+        <source>Falling-rate drying</source>
+        <translation>降速干燥</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="81"/>
+        <source>Ambient re-absorption</source>
+        <translation>环境回潮</translation>
+    </message>
+</context>
+<context>
+    <name>TrainingRunner</name>
+    <message>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="30"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="35"/>
+        <source>Start</source>
+        <translation>开始</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="44"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="49"/>
+        <source>Open session</source>
+        <translation>打开会话</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="59"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="90"/>
+        <source>Start a session first.</source>
+        <translation>请先开始一个会话。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="89"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="95"/>
+        <source>Save session</source>
+        <translation>保存会话</translation>
+    </message>
+</context>
+<context>
     <name>drytwin::widgets::CalibrationPanel</name>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
@@ -401,193 +496,193 @@
 <context>
     <name>drytwin::widgets::DiscoverPanel</name>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="20"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="21"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="21"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="22"/>
         <source>What does the simulation get wrong, and why? (score tests, fits, held-out gain)</source>
         <translation>仿真哪里出错，为什么？（得分检验、拟合、留出数据上的改进）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="22"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="23"/>
         <source>Extend the model</source>
         <translation>扩展模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="25"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="26"/>
         <source>Make the extended model (named causes, refitted h_HDT and k_HDT, residual models retrained) the session&apos;s model</source>
         <translation>将扩展后的模型（已命名的原因、重新拟合的 h_HDT 与 k_HDT、重新训练的残差模型）设为当前模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="28"/>
         <source>Run discovery on the loaded data with the current model.</source>
         <translation>用当前模型在已加载的数据上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
         <source>p (Holm)</source>
         <translation>p（Holm）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
         <source>Fitted</source>
         <translation>已拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
         <source>Loss</source>
         <translation>损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
         <source>Held-out</source>
         <translation>留出数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
         <source>Before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
         <source>After</source>
         <translation>之后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="40"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
         <source>X_out residual [% wb]</source>
         <translation>X_out 残差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="42"/>
         <source>T_out residual [°C]</source>
         <translation>T_out 残差 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="42"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="43"/>
         <source>time, batches one after another [h]</source>
         <translation>时间，批次首尾相接 [h]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="51"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
         <source>Candidate causes, first round:</source>
         <translation>候选原因（第一轮）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="53"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="54"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="70"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="71"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="88"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="89"/>
         <source>Verdict: %1. No mechanism is named.</source>
         <translation>结论：%1。未命名任何机理。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="89"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
         <source>Verdict: %1. Named: %2.</source>
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="117"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="118"/>
         <source>%1 at %2 s (ccf %3%4)</source>
         <translation>%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="121"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="122"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="124"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="125"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="130"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="131"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="136"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="137"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="147"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="148"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="148"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="155"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="149"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="156"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="149"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="150"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="150"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="151"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="151"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="152"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="152"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="153"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="155"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="156"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="181"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="173"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="182"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="174"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -677,231 +772,236 @@
 <context>
     <name>drytwin::widgets::MainWindow</name>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="55"/>
+        <location filename="../widgets/MainWindow.cpp" line="56"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="69"/>
+        <location filename="../widgets/MainWindow.cpp" line="70"/>
         <source>Data</source>
         <translation>数据</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="70"/>
+        <location filename="../widgets/MainWindow.cpp" line="71"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="71"/>
+        <location filename="../widgets/MainWindow.cpp" line="72"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="72"/>
+        <location filename="../widgets/MainWindow.cpp" line="73"/>
         <source>Residual model</source>
         <translation>残差模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="73"/>
+        <location filename="../widgets/MainWindow.cpp" line="74"/>
         <source>Diagnostics</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="74"/>
+        <location filename="../widgets/MainWindow.cpp" line="75"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="75"/>
+        <location filename="../widgets/MainWindow.cpp" line="76"/>
         <source>What-if MPC</source>
         <translation>假设分析 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="76"/>
+        <location filename="../widgets/MainWindow.cpp" line="77"/>
         <source>3D line</source>
         <translation>三维产线</translation>
     </message>
     <message>
         <location filename="../widgets/MainWindow.cpp" line="79"/>
+        <source>Training</source>
+        <translation>培训</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="82"/>
         <source>No data loaded. File ▸ Open data set…</source>
         <translation>未加载数据。文件 ▸ 打开数据集…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="83"/>
+        <location filename="../widgets/MainWindow.cpp" line="86"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="158"/>
+        <location filename="../widgets/MainWindow.cpp" line="166"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="159"/>
+        <location filename="../widgets/MainWindow.cpp" line="167"/>
         <source>&amp;Open batch file…</source>
         <translation>打开批次文件(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="161"/>
+        <location filename="../widgets/MainWindow.cpp" line="169"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="161"/>
+        <location filename="../widgets/MainWindow.cpp" line="169"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="167"/>
+        <location filename="../widgets/MainWindow.cpp" line="175"/>
         <source>Open data set &amp;folder…</source>
         <translation>打开数据集文件夹(&amp;F)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="168"/>
+        <location filename="../widgets/MainWindow.cpp" line="176"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="173"/>
+        <location filename="../widgets/MainWindow.cpp" line="181"/>
         <source>&amp;Generate virtual-plant data…</source>
         <translation>生成虚拟装置数据(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="174"/>
+        <location filename="../widgets/MainWindow.cpp" line="183"/>
         <source>Folder for the virtual plant&apos;s batches</source>
         <translation>虚拟装置批次的文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="183"/>
+        <location filename="../widgets/MainWindow.cpp" line="192"/>
         <source>Open &amp;model…</source>
         <translation>打开模型(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="185"/>
+        <location filename="../widgets/MainWindow.cpp" line="194"/>
         <source>Open model</source>
         <translation>打开模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="185"/>
-        <location filename="../widgets/MainWindow.cpp" line="192"/>
+        <location filename="../widgets/MainWindow.cpp" line="194"/>
+        <location filename="../widgets/MainWindow.cpp" line="201"/>
         <source>Model files (*.json)</source>
         <translation>模型文件 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="190"/>
+        <location filename="../widgets/MainWindow.cpp" line="199"/>
         <source>Save model &amp;as…</source>
         <translation>模型另存为(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="191"/>
+        <location filename="../widgets/MainWindow.cpp" line="200"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="198"/>
+        <location filename="../widgets/MainWindow.cpp" line="207"/>
         <source>Open &amp;project…</source>
         <translation>打开项目(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="200"/>
-        <location filename="../widgets/MainWindow.cpp" line="203"/>
-        <location filename="../widgets/MainWindow.cpp" line="398"/>
+        <location filename="../widgets/MainWindow.cpp" line="209"/>
+        <location filename="../widgets/MainWindow.cpp" line="212"/>
+        <location filename="../widgets/MainWindow.cpp" line="407"/>
         <source>Open project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="200"/>
-        <location filename="../widgets/MainWindow.cpp" line="210"/>
-        <location filename="../widgets/MainWindow.cpp" line="220"/>
+        <location filename="../widgets/MainWindow.cpp" line="209"/>
+        <location filename="../widgets/MainWindow.cpp" line="219"/>
+        <location filename="../widgets/MainWindow.cpp" line="229"/>
         <source>DryTwin projects (*.drytwin)</source>
         <translation>DryTwin 项目 (*.drytwin)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="206"/>
+        <location filename="../widgets/MainWindow.cpp" line="215"/>
         <source>&amp;Save project</source>
         <translation>保存项目(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="209"/>
-        <location filename="../widgets/MainWindow.cpp" line="214"/>
-        <location filename="../widgets/MainWindow.cpp" line="220"/>
+        <location filename="../widgets/MainWindow.cpp" line="218"/>
         <location filename="../widgets/MainWindow.cpp" line="223"/>
+        <location filename="../widgets/MainWindow.cpp" line="229"/>
+        <location filename="../widgets/MainWindow.cpp" line="232"/>
         <source>Save project</source>
         <translation>保存项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="218"/>
+        <location filename="../widgets/MainWindow.cpp" line="227"/>
         <source>Save project as…</source>
         <translation>项目另存为…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="226"/>
+        <location filename="../widgets/MainWindow.cpp" line="235"/>
         <source>Recent projects</source>
         <translation>最近的项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="229"/>
+        <location filename="../widgets/MainWindow.cpp" line="238"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="232"/>
+        <location filename="../widgets/MainWindow.cpp" line="241"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="233"/>
+        <location filename="../widgets/MainWindow.cpp" line="242"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="245"/>
+        <location filename="../widgets/MainWindow.cpp" line="254"/>
         <source>The language changes when DryTwin is started again.</source>
         <translation>语言将在 DryTwin 重新启动后生效。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="248"/>
+        <location filename="../widgets/MainWindow.cpp" line="257"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="249"/>
+        <location filename="../widgets/MainWindow.cpp" line="258"/>
         <source>&amp;About DryTwin</source>
         <translation>关于 DryTwin(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="250"/>
+        <location filename="../widgets/MainWindow.cpp" line="259"/>
         <source>About DryTwin</source>
         <translation>关于 DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="251"/>
+        <location filename="../widgets/MainWindow.cpp" line="260"/>
         <source>About &amp;Qt</source>
         <translation>关于 Qt(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="255"/>
+        <location filename="../widgets/MainWindow.cpp" line="264"/>
         <source>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;Digital-twin workbench for pneumatic drying lines, implementing the PGRL-CC method.&lt;/p&gt;&lt;table&gt;</source>
         <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="319"/>
-        <location filename="../widgets/MainWindow.cpp" line="326"/>
+        <location filename="../widgets/MainWindow.cpp" line="328"/>
+        <location filename="../widgets/MainWindow.cpp" line="335"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="332"/>
+        <location filename="../widgets/MainWindow.cpp" line="341"/>
         <source>Project saved to %1</source>
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="340"/>
+        <location filename="../widgets/MainWindow.cpp" line="349"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="349"/>
+        <location filename="../widgets/MainWindow.cpp" line="358"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
@@ -1312,7 +1412,7 @@
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="46"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="61"/>
         <source>MAE T_out [°C]</source>
         <translation>MAE T_out [°C]</translation>
     </message>
@@ -1367,37 +1467,37 @@
         <translation>MAE X_out（外推）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="100"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="105"/>
         <source>Training…</source>
         <translation>正在训练…</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="136"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="141"/>
         <source>skill 1 (ties the better reference)</source>
         <translation>技能值 1（与较优参考持平）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="146"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="151"/>
         <source>unit circle</source>
         <translation>单位圆</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="160"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="165"/>
         <source>A unconstrained (ρ = %1)</source>
         <translation>无约束 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="166"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="171"/>
         <source>A with Eq. 30 (ρ = %1)</source>
         <translation>式 30 约束后的 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="193"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="198"/>
         <source> Slowest contraction of A: %1 per step (half-life %2 s).</source>
         <translation> A 的最慢收缩：每步 %1（半衰期 %2 s）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="197"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="202"/>
         <source>Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).</source>
         <translation>留出部分：%1 行。技能值低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
     </message>
@@ -1446,139 +1546,567 @@
     </message>
 </context>
 <context>
+    <name>drytwin::widgets::TrainingPanel</name>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="104"/>
+        <source>The line&apos;s conditions: initial levels, load changes, seed (docs/mpc.md)</source>
+        <translation>产线条件：初始水平、负荷变化、随机种子（docs/mpc.md）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="105"/>
+        <source>Start session</source>
+        <translation>开始会话</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="106"/>
+        <source>Instructor view</source>
+        <translation>教员视图</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="108"/>
+        <source>Shows the instructor&apos;s controls, the faults, the true moisture and the score; hide it before handing the screen to the trainee</source>
+        <translation>显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="110"/>
+        <source>No session</source>
+        <translation>无会话</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="119"/>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="126"/>
+        <source> % wb</source>
+        <translation> % 湿基</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="128"/>
+        <source>Apply</source>
+        <translation>应用</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="135"/>
+        <source>Operator</source>
+        <translation>操作员</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="137"/>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="141"/>
+        <source>X_out setpoint</source>
+        <translation>X_out 设定值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
+        <source>Controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="146"/>
+        <source>Diagnose the recording…</source>
+        <translation>诊断记录…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="147"/>
+        <source>Saves what the line recorded so far as a batch file and opens it, so that the Discover tab can show what the model gets wrong</source>
+        <translation>将产线至今的记录保存为批次文件并打开，以便“发现”页显示模型哪里出错</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="150"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="449"/>
+        <source>No fault</source>
+        <translation>无故障</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="154"/>
+        <source>Name the cause</source>
+        <translation>给出原因</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="157"/>
+        <source>Trainee</source>
+        <translation>学员</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="164"/>
+        <source>Causes named (session time):</source>
+        <translation>已给出的原因（会话时间）：</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="168"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="434"/>
+        <source>Freeze</source>
+        <translation>冻结</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="172"/>
+        <source> min</source>
+        <translation> 分钟</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="173"/>
+        <source>Run ahead</source>
+        <translation>快进</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="174"/>
+        <source>Runs the line this much further at full speed</source>
+        <translation>以最快速度让产线再运行这么久</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="176"/>
+        <source>label (default: the time)</source>
+        <translation>标签（默认：时间）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="177"/>
+        <source>Take snapshot</source>
+        <translation>拍摄快照</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="180"/>
+        <source>Restore selected</source>
+        <translation>恢复所选快照</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="190"/>
+        <source> s from now</source>
+        <translation> 秒后</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="191"/>
+        <source>Inject fault</source>
+        <translation>注入故障</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
+        <source>Fault</source>
+        <translation>故障</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
+        <source>Strength</source>
+        <translation>强度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
+        <source>Acts from</source>
+        <translation>起作用时间</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
+        <source>Found after</source>
+        <translation>发现用时</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
+        <source>Save session…</source>
+        <translation>保存会话…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="200"/>
+        <source>Open session…</source>
+        <translation>打开会话…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="201"/>
+        <source>Instructor</source>
+        <translation>教员</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="214"/>
+        <source>Clock and snapshots</source>
+        <translation>时钟与快照</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="222"/>
+        <source>Faults</source>
+        <translation>故障</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="226"/>
+        <source>A session file holds the scenario, every event (faults, snapshots, answers) and the recording as a batch file; reopening replays it to the same data.</source>
+        <translation>会话文件包含工况、每个事件（故障、快照、回答）以及作为批次文件的记录；重新打开时会回放得到相同的数据。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="235"/>
+        <source>Session file</source>
+        <translation>会话文件</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="238"/>
+        <source>Start a session: the line runs live under its PI loop.</source>
+        <translation>开始会话：产线在其 PI 回路下实时运行。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="255"/>
+        <source>X_out [% wb]</source>
+        <translation>X_out [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="256"/>
+        <source>T_hot [°C]</source>
+        <translation>T_hot [°C]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="257"/>
+        <source>Feed [t/h]</source>
+        <translation>进料 [t/h]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="258"/>
+        <source>X_in [% wb]</source>
+        <translation>X_in [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="259"/>
+        <source>session time [min]</source>
+        <translation>会话时间 [min]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="261"/>
+        <source>band</source>
+        <translation>允许带</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="263"/>
+        <source>setpoint</source>
+        <translation>设定值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="264"/>
+        <source>X_out measured</source>
+        <translation>X_out 测量值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="265"/>
+        <source>X_out true (instructor)</source>
+        <translation>X_out 真实值（教员）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="268"/>
+        <source>T_hot setpoint</source>
+        <translation>T_hot 设定值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
+        <source>T_hot</source>
+        <translation>T_hot</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="270"/>
+        <source>feed</source>
+        <translation>进料</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="271"/>
+        <source>X_in</source>
+        <translation>X_in</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="274"/>
+        <source>Scenario</source>
+        <translation>工况</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="328"/>
+        <source>Select a snapshot to restore.</source>
+        <translation>请选择要恢复的快照。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="338"/>
+        <source>Save the session into a folder</source>
+        <translation>将会话保存到文件夹</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="345"/>
+        <source>Open a training session</source>
+        <translation>打开培训会话</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="345"/>
+        <source>Sessions (*.json)</source>
+        <translation>会话 (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="353"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="360"/>
+        <source>Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.</source>
+        <translation>已打开记录以供诊断：%1。请在其上运行“发现”，然后在此给出原因。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="364"/>
+        <source>Session saved: %1</source>
+        <translation>会话已保存：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="382"/>
+        <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
+        <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="392"/>
+        <source>Replaying %1…</source>
+        <translation>正在回放 %1…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="429"/>
+        <source>Session reopened at %1, frozen: the instructor resumes it.</source>
+        <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="431"/>
+        <source>finished</source>
+        <translation>已结束</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="431"/>
+        <source>FROZEN</source>
+        <translation>已冻结</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="431"/>
+        <source>running %1×</source>
+        <translation>运行中 %1×</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="433"/>
+        <source>%1  t = %2 / %3  (%4)</source>
+        <translation>%1  t = %2 / %3（%4）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="434"/>
+        <source>Resume</source>
+        <translation>继续</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="444"/>
+        <source>Setpoint %1 % wb, band ±%2 % wb</source>
+        <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="445"/>
+        <source>MPC fell back: %1</source>
+        <translation>MPC 已回退：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="449"/>
+        <source>%1  %2</source>
+        <translation>%1  %2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="456"/>
+        <source>%1 (at %2)</source>
+        <translation>%1（于 %2）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="466"/>
+        <source>not acting yet</source>
+        <translation>尚未起作用</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="466"/>
+        <source>not found</source>
+        <translation>未发现</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="469"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="480"/>
+        <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
+        <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::TrainingRunner</name>
+    <message>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="248"/>
+        <source>Setpoint</source>
+        <translation>设定值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="254"/>
+        <source>Controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="262"/>
+        <source>Inject fault</source>
+        <translation>注入故障</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="270"/>
+        <source>Freeze</source>
+        <translation>冻结</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="279"/>
+        <source>Resume</source>
+        <translation>继续</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="288"/>
+        <source>Snapshot</source>
+        <translation>快照</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="294"/>
+        <source>Restore</source>
+        <translation>恢复</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="300"/>
+        <source>Name the cause</source>
+        <translation>给出原因</translation>
+    </message>
+</context>
+<context>
     <name>drytwin::widgets::Workbench</name>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="26"/>
+        <location filename="../widgets/common/Workbench.cpp" line="27"/>
         <source>%1 is queued behind the running job</source>
         <translation>%1 已排队，等待当前任务完成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="37"/>
+        <location filename="../widgets/common/Workbench.cpp" line="38"/>
         <source>%1 was cancelled; nothing changed.</source>
         <translation>%1 已取消；未作任何更改。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="38"/>
+        <location filename="../widgets/common/Workbench.cpp" line="39"/>
         <source>%1 failed: %2</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="50"/>
+        <location filename="../widgets/common/Workbench.cpp" line="51"/>
         <source>Read the model</source>
         <translation>读取模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="59"/>
+        <location filename="../widgets/common/Workbench.cpp" line="64"/>
         <source>Loading %1…</source>
         <translation>正在加载 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="68"/>
+        <location filename="../widgets/common/Workbench.cpp" line="73"/>
         <source>Load %1</source>
         <translation>加载 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="83"/>
+        <location filename="../widgets/common/Workbench.cpp" line="88"/>
         <source>%1: %2 batches, %3 rows, %4 missing cells; the cleaning keeps %5 rows</source>
         <translation>%1：%2 个批次，%3 行，%4 个缺失值；清洗后保留 %5 行</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="98"/>
+        <location filename="../widgets/common/Workbench.cpp" line="106"/>
         <source>Open model %1</source>
         <translation>打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="101"/>
+        <location filename="../widgets/common/Workbench.cpp" line="109"/>
         <source>Model %1 opened</source>
         <translation>已打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="108"/>
+        <location filename="../widgets/common/Workbench.cpp" line="116"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="117"/>
+        <location filename="../widgets/common/Workbench.cpp" line="125"/>
         <source>Model saved to %1</source>
         <translation>模型已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="123"/>
+        <location filename="../widgets/common/Workbench.cpp" line="131"/>
         <source>Set %1</source>
         <translation>设置 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="139"/>
+        <location filename="../widgets/common/Workbench.cpp" line="146"/>
         <source>Set the model</source>
         <translation>设置模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="152"/>
+        <location filename="../widgets/common/Workbench.cpp" line="159"/>
         <source>Simulate</source>
         <translation>仿真</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="159"/>
+        <location filename="../widgets/common/Workbench.cpp" line="166"/>
         <source>Simulated %1 batches; mean outlet-moisture MAE %2 % wb</source>
         <translation>已仿真 %1 个批次；出口含水率平均 MAE %2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="168"/>
+        <location filename="../widgets/common/Workbench.cpp" line="175"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="172"/>
+        <location filename="../widgets/common/Workbench.cpp" line="179"/>
         <source>Calibration %1: loss %2 → %3</source>
         <translation>标定 %1：损失 %2 → %3</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="189"/>
+        <location filename="../widgets/common/Workbench.cpp" line="196"/>
         <source>Train</source>
         <translation>训练</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="192"/>
+        <location filename="../widgets/common/Workbench.cpp" line="199"/>
         <source>Trained PGRL-CC and the baselines</source>
         <translation>已训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="201"/>
+        <location filename="../widgets/common/Workbench.cpp" line="208"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="210"/>
+        <location filename="../widgets/common/Workbench.cpp" line="217"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="213"/>
+        <location filename="../widgets/common/Workbench.cpp" line="220"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="220"/>
+        <location filename="../widgets/common/Workbench.cpp" line="227"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="235"/>
+        <location filename="../widgets/common/Workbench.cpp" line="242"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="238"/>
+        <location filename="../widgets/common/Workbench.cpp" line="245"/>
         <source>Ablation: %1 variants trained and evaluated</source>
         <translation>消融实验：已训练并评估 %1 个变体</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="245"/>
+        <location filename="../widgets/common/Workbench.cpp" line="252"/>
         <source>Generate</source>
         <translation>生成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="247"/>
+        <location filename="../widgets/common/Workbench.cpp" line="254"/>
         <source>Wrote %1 virtual-plant batches to %2</source>
         <translation>已将 %1 个虚拟装置批次写入 %2</translation>
     </message>
