@@ -12,67 +12,67 @@
 <context>
     <name>TrainingPanel</name>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="51"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="52"/>
         <source>PI loop (the plant&apos;s own)</source>
         <translation>PI 回路（装置自带）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="53"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="54"/>
         <source>MPC on the physics model</source>
         <translation>基于物理模型的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="55"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="56"/>
         <source>MPC on PGRL-CC</source>
         <translation>基于 PGRL-CC 的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="57"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="58"/>
         <source>MPC on the external-input residual model</source>
         <translation>基于外部输入残差模型的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="59"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="60"/>
         <source>MPC on the LSTM</source>
         <translation>基于 LSTM 的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="67"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="68"/>
         <source>Tube wall heat loss</source>
         <translation>管壁散热损失</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="69"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="70"/>
         <source>Gas-phase coupling</source>
         <translation>气相耦合</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="71"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="72"/>
         <source>Heat-transfer fouling</source>
         <translation>传热结垢</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="73"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="74"/>
         <source>Moisture meter lag</source>
         <translation>水分仪滞后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="75"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="76"/>
         <source>Moisture meter offset</source>
         <translation>水分仪偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="77"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="78"/>
         <source>Transport delay error</source>
         <translation>输送延时误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="79"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="80"/>
         <source>Falling-rate drying</source>
         <translation>降速干燥</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="81"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="82"/>
         <source>Ambient re-absorption</source>
         <translation>环境回潮</translation>
     </message>
@@ -80,26 +80,26 @@
 <context>
     <name>TrainingRunner</name>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="30"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="35"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="31"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="36"/>
         <source>Start</source>
         <translation>开始</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="44"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="49"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="45"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="51"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="59"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="90"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="61"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="93"/>
         <source>Start a session first.</source>
         <translation>请先开始一个会话。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="89"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="95"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="92"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="98"/>
         <source>Save session</source>
         <translation>保存会话</translation>
     </message>
@@ -1548,384 +1548,394 @@
 <context>
     <name>drytwin::widgets::TrainingPanel</name>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="104"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="105"/>
         <source>The line&apos;s conditions: initial levels, load changes, seed (docs/mpc.md)</source>
         <translation>产线条件：初始水平、负荷变化、随机种子（docs/mpc.md）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="105"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="106"/>
         <source>Start session</source>
         <translation>开始会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="106"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="107"/>
         <source>Instructor view</source>
         <translation>教员视图</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="108"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="109"/>
         <source>Shows the instructor&apos;s controls, the faults, the true moisture and the score; hide it before handing the screen to the trainee</source>
         <translation>显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="110"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="111"/>
         <source>No session</source>
         <translation>无会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="119"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="120"/>
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="126"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="127"/>
         <source> % wb</source>
         <translation> % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="128"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="129"/>
         <source>Apply</source>
         <translation>应用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="135"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="136"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="137"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="138"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="141"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
         <source>X_out setpoint</source>
         <translation>X_out 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="143"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="146"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="147"/>
         <source>Diagnose the recording…</source>
         <translation>诊断记录…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="147"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="148"/>
         <source>Saves what the line recorded so far as a batch file and opens it, so that the Discover tab can show what the model gets wrong</source>
         <translation>将产线至今的记录保存为批次文件并打开，以便“发现”页显示模型哪里出错</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="150"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="449"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="151"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="475"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="154"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="155"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="157"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="158"/>
         <source>Trainee</source>
         <translation>学员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="164"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="165"/>
         <source>Causes named (session time):</source>
         <translation>已给出的原因（会话时间）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="168"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="434"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="169"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="460"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="172"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="173"/>
         <source> min</source>
         <translation> 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="173"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="174"/>
         <source>Run ahead</source>
         <translation>快进</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="174"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="175"/>
         <source>Runs the line this much further at full speed</source>
         <translation>以最快速度让产线再运行这么久</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="176"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="177"/>
         <source>label (default: the time)</source>
         <translation>标签（默认：时间）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="177"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="178"/>
         <source>Take snapshot</source>
         <translation>拍摄快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="180"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
         <source>Restore selected</source>
         <translation>恢复所选快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="190"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="191"/>
         <source> s from now</source>
         <translation> 秒后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="191"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="192"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="194"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="194"/>
         <source>Strength</source>
         <translation>强度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="194"/>
         <source>Acts from</source>
         <translation>起作用时间</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="194"/>
         <source>Found after</source>
         <translation>发现用时</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="200"/>
         <source>Save session…</source>
         <translation>保存会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="200"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="201"/>
         <source>Open session…</source>
         <translation>打开会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="201"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="202"/>
         <source>Instructor</source>
         <translation>教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="214"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="215"/>
         <source>Clock and snapshots</source>
         <translation>时钟与快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="222"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="223"/>
         <source>Faults</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="226"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="227"/>
         <source>A session file holds the scenario, every event (faults, snapshots, answers) and the recording as a batch file; reopening replays it to the same data.</source>
         <translation>会话文件包含工况、每个事件（故障、快照、回答）以及作为批次文件的记录；重新打开时会回放得到相同的数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="235"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="236"/>
         <source>Session file</source>
         <translation>会话文件</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="238"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="239"/>
         <source>Start a session: the line runs live under its PI loop.</source>
         <translation>开始会话：产线在其 PI 回路下实时运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="255"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="256"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="256"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="257"/>
         <source>T_hot [°C]</source>
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="257"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="258"/>
         <source>Feed [t/h]</source>
         <translation>进料 [t/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="258"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="259"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="259"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="260"/>
         <source>session time [min]</source>
         <translation>会话时间 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="261"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="262"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="263"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="264"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="264"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="265"/>
         <source>X_out measured</source>
         <translation>X_out 测量值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="265"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="266"/>
         <source>X_out true (instructor)</source>
         <translation>X_out 真实值（教员）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="268"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
         <source>T_hot setpoint</source>
         <translation>T_hot 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="270"/>
         <source>T_hot</source>
         <translation>T_hot</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="270"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="271"/>
         <source>feed</source>
         <translation>进料</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="271"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="272"/>
         <source>X_in</source>
         <translation>X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="274"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="277"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="278"/>
+        <source>Stops the replay or the run ahead; the line stays where it got to</source>
+        <translation>停止回放或快进；产线停留在已运行到的位置</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="280"/>
         <source>Scenario</source>
         <translation>工况</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="328"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="342"/>
         <source>Select a snapshot to restore.</source>
         <translation>请选择要恢复的快照。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="338"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="352"/>
         <source>Save the session into a folder</source>
         <translation>将会话保存到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="345"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="359"/>
         <source>Open a training session</source>
         <translation>打开培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="345"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="359"/>
         <source>Sessions (*.json)</source>
         <translation>会话 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="353"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="368"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="360"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="375"/>
         <source>Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录以供诊断：%1。请在其上运行“发现”，然后在此给出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="364"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="379"/>
         <source>Session saved: %1</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="382"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="398"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="392"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="409"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="429"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="455"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="431"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="457"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="431"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="457"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="431"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="457"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="433"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="459"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="434"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="460"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="444"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="470"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="445"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="471"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="449"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="475"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="456"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="482"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="466"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="492"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="466"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="492"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="469"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="495"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="480"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="506"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>
@@ -1933,42 +1943,42 @@
 <context>
     <name>drytwin::widgets::TrainingRunner</name>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="248"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="263"/>
         <source>Setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="254"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="269"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="262"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="277"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="270"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="285"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="279"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="294"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="288"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="303"/>
         <source>Snapshot</source>
         <translation>快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="294"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="309"/>
         <source>Restore</source>
         <translation>恢复</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="300"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="315"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>

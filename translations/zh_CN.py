@@ -389,6 +389,8 @@ ZH = {
     "not found": "未发现",
     "running %1×": "运行中 %1×",
     "session time [min]": "会话时间 [min]",
+    "Stop": "停止",
+    "Stops the replay or the run ahead; the line stays where it got to": "停止回放或快进；产线停留在已运行到的位置",
 }
 
 

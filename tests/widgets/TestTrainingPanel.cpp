@@ -154,6 +154,28 @@ private Q_SLOTS:
         QTest::mouseClick(panel->injectButton(), Qt::LeftButton);
         QTRY_VERIFY(panel->noteLabel()->text().contains(QStringLiteral("already acts")));
         QCOMPARE(runner.frame().faults.size(), std::size_t(1));
+
+        // Long work can be stopped: two hours ahead under the physics model's MPC, stopped early.
+        const int mpc = panel->controller()->findData(int(control::ControllerKind::Pbm));
+        panel->controller()->setCurrentIndex(mpc);
+        Q_EMIT panel->controller()->activated(mpc);
+        QTRY_COMPARE(int(runner.frame().controller), int(control::ControllerKind::Pbm));
+        const double before = runner.frame().timeS;
+        aheadSpin->setValue(120);
+        QSignalSpy progress(&runner, &TrainingRunner::progress);
+        QTest::mouseClick(ahead, Qt::LeftButton);
+        QVERIFY(progress.wait(10000));
+        QPushButton* stop = nullptr;
+        for (auto* b : panel->findChildren<QPushButton*>()) {
+            if (b->text() == QStringLiteral("Stop")) {
+                stop = b;
+            }
+        }
+        QVERIFY(stop && stop->isVisible());
+        QTest::mouseClick(stop, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!stop->isVisible(), 20000);
+        QVERIFY2(runner.frame().timeS > before && runner.frame().timeS < before + 7200,
+                 qPrintable(QStringLiteral("%1 → %2").arg(before).arg(runner.frame().timeS)));
     }
 };
 

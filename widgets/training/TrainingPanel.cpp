@@ -21,6 +21,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSpinBox>
@@ -270,12 +271,19 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_feed = m_plots->addCurve(2, tr("feed"), none, none, seriesColour(5));
     m_xIn = m_plots->addCurve(3, tr("X_in"), none, none, seriesColour(3));
 
+    m_progress = new QProgressBar;
+    m_progress->setRange(0, 100);
+    m_progress->setMaximumWidth(160);
+    m_stop = new QPushButton(tr("Stop"));
+    m_stop->setToolTip(tr("Stops the replay or the run ahead; the line stays where it got to"));
     auto* top = new QHBoxLayout;
     top->addWidget(new QLabel(tr("Scenario")));
     top->addWidget(m_scenario);
     top->addWidget(m_start);
     top->addSpacing(20);
     top->addWidget(m_clock, 1);
+    top->addWidget(m_progress);
+    top->addWidget(m_stop);
     top->addWidget(m_instructor);
     auto* split = new QSplitter;
     split->addWidget(m_plots);
@@ -312,7 +320,13 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
             m_runner->freeze();
         }
     });
-    connect(ahead, &QPushButton::clicked, this, [this] { m_runner->runAhead(60 * m_aheadMin->value()); });
+    connect(ahead, &QPushButton::clicked, this, [this] {
+        setLongWork(true);
+        m_runner->runAhead(60 * m_aheadMin->value());
+    });
+    connect(m_stop, &QPushButton::clicked, m_runner, &TrainingRunner::cancelLongWork);
+    connect(m_runner, &TrainingRunner::progress, this,
+            [this](double fraction) { m_progress->setValue(static_cast<int>(100 * fraction)); });
     connect(m_snapshot, &QPushButton::clicked, this, [this] {
         QString label = m_snapshotLabel->text().trimmed();
         if (label.isEmpty()) {
@@ -350,6 +364,7 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     connect(m_runner, &TrainingRunner::frameReady, this, &TrainingPanel::showFrame);
     connect(m_runner, &TrainingRunner::failed, this, [this](const QString& action, const QString& message) {
         m_opening = false;
+        setLongWork(false);
         m_note->setText(tr("%1: %2").arg(action, message));
     });
     connect(
@@ -366,6 +381,7 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
         });
     updateFaultUnit();
     setInstructorView(false);
+    setLongWork(false);
 }
 
 TrainingPanel::~TrainingPanel() = default;
@@ -389,6 +405,7 @@ void TrainingPanel::saveSession(const QString& folder) {
 
 void TrainingPanel::openSession(const QString& sessionFile) {
     m_opening = true;
+    setLongWork(true);
     m_note->setText(tr("Replaying %1…").arg(QDir::toNativeSeparators(sessionFile)));
     m_runner->open(sessionFile, m_workbench.model());
 }
@@ -409,6 +426,14 @@ bool TrainingPanel::instructorView() const {
     return m_instructor->isChecked();
 }
 
+void TrainingPanel::setLongWork(bool on) {
+    m_progress->setVisible(on);
+    m_stop->setVisible(on);
+    if (on) {
+        m_progress->setValue(0);
+    }
+}
+
 void TrainingPanel::updateFaultUnit() {
     const auto& mi = plant::info(static_cast<plant::Mechanism>(m_faultKind->currentData().toInt()));
     m_faultStrength->setRange(0, mi.maxStrength);
@@ -423,6 +448,7 @@ void TrainingPanel::showFrame() {
     if (!f.started) {
         return;
     }
+    setLongWork(false);
     if (m_opening) {
         m_opening = false;
         m_note->setText(

@@ -11,6 +11,7 @@ class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QListWidget;
+class QProgressBar;
 class QPushButton;
 class QSpinBox;
 class QTableWidget;
@@ -76,6 +77,8 @@ private:
     void showFrame();
     void redrawPlots();
     void updateFaultUnit();
+    /// Shows progress and Stop while a replay or a run ahead is under way.
+    void setLongWork(bool on);
 
     Workbench& m_workbench;
     TrainingRunner* m_runner = nullptr;
@@ -105,6 +108,8 @@ private:
     QTableWidget* m_faults = nullptr;
     QLabel* m_score = nullptr;
     QLabel* m_note = nullptr;
+    QProgressBar* m_progress = nullptr;
+    QPushButton* m_stop = nullptr;
     PlotStack* m_plots = nullptr;
     QwtPlotCurve* m_xMeasured = nullptr;
     QwtPlotCurve* m_xTrue = nullptr;

@@ -7,6 +7,7 @@
 #include <QElapsedTimer>
 #include <QTimer>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <optional>
 
@@ -18,7 +19,7 @@ namespace detail {
 class TrainingWorker : public QObject {
     Q_OBJECT
 public:
-    TrainingWorker() {
+    explicit TrainingWorker(std::atomic<bool>& cancel) : m_cancel(cancel) {
         m_tick = new QTimer(this);
         m_tick->setInterval(100); // frames at 10 Hz; the plots redraw from them
         connect(m_tick, &QTimer::timeout, this, &TrainingWorker::tick);
@@ -44,7 +45,8 @@ public:
             fail(QCoreApplication::translate("TrainingRunner", "Open session"), script.error());
             return;
         }
-        auto session = training::replay(*script, std::move(model));
+        auto session = training::replay(*script, std::move(model), longWork());
+        m_cancel = false;
         if (!session) {
             fail(QCoreApplication::translate("TrainingRunner", "Open session"), session.error());
             return;
@@ -76,7 +78,8 @@ public:
             if (wasFrozen) {
                 m_session->resume();
             }
-            m_session->advance(static_cast<std::size_t>(std::max(0, seconds)));
+            m_session->advance(static_cast<std::size_t>(std::max(0, seconds)), longWork());
+            m_cancel = false;
             if (wasFrozen) {
                 m_session->freeze();
             }
@@ -108,6 +111,7 @@ public:
     }
 
 Q_SIGNALS:
+    void progress(double fraction);
     void frame(const drytwin::widgets::TrainingFrame& frame);
     void failed(const QString& action, const QString& message);
     void saved(const QString& sessionFile, const QStringList& recordingFiles);
@@ -124,6 +128,14 @@ private:
     }
 
     void fail(const QString& action, const Error& error) { Q_EMIT failed(action, errorText(error)); }
+
+    /// Progress and cancel of a replay or a run ahead (minutes of MPC at full speed take seconds).
+    Progress longWork() {
+        return [this](const ProgressInfo& info) {
+            Q_EMIT progress(info.fraction);
+            return m_cancel ? ProgressAction::Stop : ProgressAction::Continue;
+        };
+    }
 
     void tick() {
         if (!m_session) {
@@ -178,6 +190,7 @@ private:
         Q_EMIT frame(f);
     }
 
+    std::atomic<bool>& m_cancel;
     std::optional<training::TrainingSession> m_session;
     std::string m_scenarioJson;
     QTimer* m_tick = nullptr;
@@ -192,17 +205,19 @@ private:
 
 TrainingRunner::TrainingRunner(QObject* parent) : QObject(parent) {
     qRegisterMetaType<TrainingFrame>();
-    m_worker = new detail::TrainingWorker;
+    m_worker = new detail::TrainingWorker(m_cancel);
     m_worker->moveToThread(&m_thread);
     connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
     connect(m_worker, &detail::TrainingWorker::frame, this, &TrainingRunner::receive);
     connect(m_worker, &detail::TrainingWorker::failed, this, &TrainingRunner::failed);
     connect(m_worker, &detail::TrainingWorker::saved, this, &TrainingRunner::saved);
+    connect(m_worker, &detail::TrainingWorker::progress, this, &TrainingRunner::progress);
     m_thread.setObjectName(QStringLiteral("drytwin-training"));
     m_thread.start();
 }
 
 TrainingRunner::~TrainingRunner() {
+    m_cancel = true; // a replay or run ahead under way stops at its next second
     QMetaObject::invokeMethod(
         m_worker, [w = m_worker] { w->stop(); }, Qt::BlockingQueuedConnection);
     m_thread.quit();

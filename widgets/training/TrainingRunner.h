@@ -7,6 +7,7 @@
 #include <QObject>
 #include <QString>
 #include <QThread>
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -70,6 +71,9 @@ public:
     void answer(const QString& cause);
     /// @brief Writes the session (session.json, recording/*.csv) into @p folder; saved() or failed().
     void save(const QString& folder);
+    /// @brief Stops a replay or a run ahead under way (the line stays where it got to; a replay
+    /// that is stopped leaves the session as it was). Thread-safe.
+    void cancelLongWork() { m_cancel = true; }
     /// @brief The last frame received.
     const TrainingFrame& frame() const { return m_frame; }
     /// @brief The whole trace so far as the GUI holds it.
@@ -77,6 +81,8 @@ public:
 
 Q_SIGNALS:
     void frameReady();
+    /// @brief How far a replay or a run ahead has got (0…1).
+    void progress(double fraction);
     /// @brief A command failed; @p message is worded for the user.
     void failed(const QString& action, const QString& message);
     void saved(const QString& sessionFile, const QStringList& recordingFiles);
@@ -85,6 +91,7 @@ private:
     void post(std::function<void(detail::TrainingWorker&)> command);
     void receive(const TrainingFrame& frame);
 
+    std::atomic<bool> m_cancel{false};
     QThread m_thread;
     detail::TrainingWorker* m_worker = nullptr;
     TrainingFrame m_frame;

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Which faults can a trainee find with the Discover tab on a training recording? For every
+# mechanism of CONTRACT.md §4 at the Training tab's default strength (twice the plant's default),
+# switched on 5 min into the bundled training_shift scenario under the PI loop, on three seeds and
+# two recording lengths: `drytwin training` writes the recording, `drytwin discover` reads it.
+# Prints one line per run and a summary (docs/training.md quotes it).
+#   bash scripts/training-discoverability.sh [BUILD_DIR]
+set -euo pipefail
+here="$(cd "$(dirname "$0")/.." && pwd)"
+build="${1:-$here/build}"
+drytwin="$build/app/drytwin"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+scenario="$(cat "$here/resources/scenarios/training_shift.json")"
+declare -A strength=([tube_wall_heat_loss]=0.2 [gas_phase_coupling]=1.0 [heat_transfer_fouling]=0.4
+                     [moisture_meter_lag]=60 [moisture_meter_offset]=0.4 [transport_delay_error]=30
+                     [falling_rate_drying]=1.0 [ambient_reabsorption]=6)
+run() {
+  local cause=$1 seed=$2 minutes=$3
+  local dir="$work/$cause-$seed-$minutes"
+  mkdir -p "$dir"
+  local s="${scenario/\"seed\": 7/\"seed\": $seed}"
+  cat > "$dir/script.json" <<JSON
+{"scenario": $s, "end_s": $((minutes * 60)),
+ "events": [{"at_s": 0, "type": "fault", "cause": "$cause", "strength": ${strength[$cause]}, "onset_s": 300}]}
+JSON
+  "$drytwin" -q training --script "$dir/script.json" --out "$dir/out" >/dev/null
+  local named
+  named=$("$drytwin" -q discover --data "$dir/out/recording" --json "$dir/d.json" >/dev/null 2>&1;
+          python3 -c "import json,sys; d=json.load(open('$dir/d.json')); print(','.join(f['cause'] for f in d.get('findings',[])) or '-')")
+  local first=${named%%,*}
+  echo "$cause seed=$seed ${minutes}min named=$named first_right=$([ "$first" = "$cause" ] && echo yes || echo no)"
+}
+export -f run
+export drytwin work scenario
+results="$work/results.txt"
+for minutes in 30 60; do
+  for seed in 7 8 9; do
+    for cause in "${!strength[@]}"; do
+      run "$cause" "$seed" "$minutes"
+    done
+  done
+done | tee "$results"
+for minutes in 30 60; do
+  total=$(grep -c " ${minutes}min" "$results")
+  right=$(grep " ${minutes}min" "$results" | grep -c "first_right=yes")
+  echo "recording ${minutes} min: right cause first in $right of $total"
+done
