@@ -4,7 +4,7 @@
 # switched on 5 min into the bundled training_shift scenario under the PI loop, on three seeds and
 # two recording lengths: `drytwin training` writes the recording, `drytwin discover` reads it.
 # Prints one line per run and a summary (docs/training.md quotes it).
-#   bash scripts/training-discoverability.sh [BUILD_DIR]
+#   bash scripts/training-discoverability.sh [BUILD_DIR]      (JOBS=2 runs in parallel)
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$here/build}"
@@ -16,13 +16,13 @@ declare -A strength=([tube_wall_heat_loss]=0.2 [gas_phase_coupling]=1.0 [heat_tr
                      [moisture_meter_lag]=60 [moisture_meter_offset]=0.4 [transport_delay_error]=30
                      [falling_rate_drying]=1.0 [ambient_reabsorption]=6)
 run() {
-  local cause=$1 seed=$2 minutes=$3
+  local cause=$1 strength=$2 seed=$3 minutes=$4
   local dir="$work/$cause-$seed-$minutes"
   mkdir -p "$dir"
   local s="${scenario/\"seed\": 7/\"seed\": $seed}"
   cat > "$dir/script.json" <<JSON
 {"scenario": $s, "end_s": $((minutes * 60)),
- "events": [{"at_s": 0, "type": "fault", "cause": "$cause", "strength": ${strength[$cause]}, "onset_s": 300}]}
+ "events": [{"at_s": 0, "type": "fault", "cause": "$cause", "strength": $strength, "onset_s": 300}]}
 JSON
   "$drytwin" -q training --script "$dir/script.json" --out "$dir/out" >/dev/null
   local named
@@ -37,10 +37,10 @@ results="$work/results.txt"
 for minutes in 30 60; do
   for seed in 7 8 9; do
     for cause in "${!strength[@]}"; do
-      run "$cause" "$seed" "$minutes"
+      echo "$cause ${strength[$cause]} $seed $minutes"
     done
   done
-done | tee "$results"
+done | xargs -P "${JOBS:-2}" -L 1 bash -c 'run "$@"' _ | tee "$results"
 for minutes in 30 60; do
   total=$(grep -c " ${minutes}min" "$results")
   right=$(grep " ${minutes}min" "$results" | grep -c "first_right=yes")
