@@ -93,7 +93,8 @@ private Q_SLOTS:
             menus << a->text();
         }
         QVERIFY(menus.contains("&File") && menus.contains("&View") && menus.contains("&Help"));
-        QCOMPARE(w.tabs()->count(), 8);
+        QCOMPARE(w.tabs()->count(), 9);
+        QCOMPARE(w.tabs()->tabText(8), QStringLiteral("Training"));
         const QString about = MainWindow::aboutText();
         for (const char* lib : {"Qt", "Qwt", "VTK", "SUNDIALS", "NLopt", "Ipopt", "Eigen"}) {
             QVERIFY2(about.contains(lib), lib);
