@@ -173,6 +173,9 @@ std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybri
     return nullptr;
 }
 
+namespace {
+
+/// The record of the run so far as the controller's batch (SI, dry basis).
 void appendMeasuredOutputs(data::SiBatch& b, const plant::PlantSample& s) {
     b.xOutDb.push_back(units::wetPctToDry(s.xOutPct));
     b.tOutK.push_back(s.tOutK);
@@ -191,6 +194,59 @@ void appendAppliedInputs(data::SiBatch& b, const plant::PlantBatch& rec, std::si
     b.tInK.push_back(rec.tInK[k]);
     b.tAmbK.push_back(rec.tAmbK[k]);
     b.rhAmb.push_back(rec.rhAmb[k]);
+}
+
+} // namespace
+
+ControlledLine::ControlledLine(const Scenario& scenario, const plant::PlantOptions& plantOptions,
+                               plant::PlantRandom& random)
+    : m_lastSetpointK(initialSetpointK(scenario)), m_warmupS(static_cast<std::size_t>(scenario.warmupS)),
+      m_bandPct(scenario.bandPct), m_controlIntervalS(scenario.controlIntervalS),
+      m_warmupTargetPct(scenario.setpointPct) {
+    std::mt19937_64 disturbanceRng(scenario.seed);
+    m_line = std::make_unique<plant::PlantLine>(plantOptions, scenarioDisturbances(scenario, disturbanceRng),
+                                                m_lastSetpointK, random);
+    m_record.id = scenario.name;
+    m_record.hasXHdt = m_record.hasTHdt = true;
+}
+
+ControlledLine ControlledLine::clone(plant::PlantRandom& random) const {
+    ControlledLine c;
+    c.m_line = std::make_unique<plant::PlantLine>(m_line->clone(random));
+    c.m_pi = m_pi;
+    c.m_record = m_record;
+    c.m_lastSetpointK = m_lastSetpointK;
+    c.m_warmupS = m_warmupS;
+    c.m_bandPct = m_bandPct;
+    c.m_controlIntervalS = m_controlIntervalS;
+    c.m_warmupTargetPct = m_warmupTargetPct;
+    return c;
+}
+
+ControlledLine::Second ControlledLine::step(MpcController* mpc, double targetPct) {
+    const std::size_t k = m_line->sample();
+    Second out;
+    out.sample = m_line->measure();
+    appendMeasuredOutputs(m_record, out.sample);
+    const plant::PlantSample& s = out.sample;
+    const double target = k < m_warmupS ? m_warmupTargetPct : targetPct;
+    double sp = m_lastSetpointK;
+    if (!mpc || k < m_warmupS) {
+        sp = m_pi.next(s.xOutPct, s.xInTruePct, target);
+    } else {
+        if ((k - m_warmupS) % static_cast<std::size_t>(m_controlIntervalS) == 0) {
+            out.decision = mpc->decide(DecisionPoint{&m_record, k}, m_lastSetpointK, target, m_bandPct,
+                                       m_controlIntervalS);
+            sp = out.decision->setpointK;
+        }
+        m_pi.track(sp, s.xOutPct, s.xInTruePct, target);
+    }
+    out.setpointK = sp;
+    out.hotAirK = m_line->hotAirK();
+    m_line->apply(sp);
+    appendAppliedInputs(m_record, m_line->record(), k);
+    m_lastSetpointK = sp;
+    return out;
 }
 
 double initialSetpointK(const Scenario& s) {
@@ -309,44 +365,29 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
             }
         }
         // Every run sees the same disturbances and noise: fresh generators from the same seed.
-        std::mt19937_64 disturbanceRng(scenario.seed);
         plant::PlantRandom random(scenario.seed + 1);
-        const double initialSp = initialSetpointK(scenario);
-        plant::PlantLine line(plantOptions, scenarioDisturbances(scenario, disturbanceRng), initialSp,
-                              random);
-        plant::PlantPiController pi;
-        data::SiBatch record;
-        record.id = scenario.name;
-        record.hasXHdt = record.hasTHdt = true;
-        double lastSp = initialSp;
+        ControlledLine line(scenario, plantOptions, random);
         std::vector<double> solveMs, modelMs, gains;
         std::size_t nextSnapshot = 0;
         std::sort(snapshotTimes.begin(), snapshotTimes.end());
         for (std::size_t k = 0; k < total; ++k) {
-            const plant::PlantSample s = line.measure();
-            appendMeasuredOutputs(record, s);
             const double t = static_cast<double>(k) - static_cast<double>(warm);
-            const double target = k < warm ? scenario.setpointPct : scenario.setpointAt(t);
-            double sp = lastSp;
-            if (kind == ControllerKind::Pi || k < warm) {
-                sp = pi.next(s.xOutPct, s.xInTruePct, target);
-            } else if ((k - warm) % static_cast<std::size_t>(scenario.controlIntervalS) == 0) {
-                const MpcDecision d = mpc->decide(DecisionPoint{&record, k}, lastSp, target, scenario.bandPct,
-                                                  scenario.controlIntervalS);
-                sp = d.setpointK;
+            const double target = scenario.setpointAt(t);
+            const ControlledLine::Second second = line.step(mpc.get(), target);
+            if (const auto& d = second.decision) {
                 ++run.metrics.decisions;
-                solveMs.push_back(1e3 * d.solveSeconds);
-                modelMs.push_back(1e3 * d.modelSeconds);
-                if (!d.fallback) {
-                    gains.push_back(d.gainPctPerK);
+                solveMs.push_back(1e3 * d->solveSeconds);
+                modelMs.push_back(1e3 * d->modelSeconds);
+                if (!d->fallback) {
+                    gains.push_back(d->gainPctPerK);
                 }
-                if (d.fallback) {
+                if (d->fallback) {
                     ++run.metrics.fallbacks;
-                    run.metrics.lastFallbackReason = d.fallbackReason;
+                    run.metrics.lastFallbackReason = d->fallbackReason;
                 }
                 if (nextSnapshot < snapshotTimes.size() && t >= snapshotTimes[nextSnapshot] &&
-                    !d.predictedXPct.empty()) {
-                    run.predictions.push_back({t, d.predictedXPct});
+                    !d->predictedXPct.empty()) {
+                    run.predictions.push_back({t, d->predictedXPct});
                     while (nextSnapshot < snapshotTimes.size() && t >= snapshotTimes[nextSnapshot]) {
                         ++nextSnapshot;
                     }
@@ -354,15 +395,12 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
             }
             if (k >= warm) {
                 run.timeS.push_back(t);
-                run.xOutMeasuredPct.push_back(s.xOutPct);
-                run.xOutTruePct.push_back(s.xOutTruePct);
+                run.xOutMeasuredPct.push_back(second.sample.xOutPct);
+                run.xOutTruePct.push_back(second.sample.xOutTruePct);
                 run.setpointPct.push_back(target);
-                run.hotAirSetpointC.push_back(units::kelvinToCelsius(sp));
-                run.hotAirC.push_back(units::kelvinToCelsius(line.hotAirK()));
+                run.hotAirSetpointC.push_back(units::kelvinToCelsius(second.setpointK));
+                run.hotAirC.push_back(units::kelvinToCelsius(second.hotAirK));
             }
-            line.apply(sp);
-            appendAppliedInputs(record, line.record(), k);
-            lastSp = sp;
             if (k % 50 == 0 && reportProgress(progress, "mpc",
                                               (static_cast<double>(c) +
                                                static_cast<double>(k) / static_cast<double>(total)) /
@@ -375,8 +413,8 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         }
         // Metrics over the scored samples.
         // Moves in °C equal moves in K.
-        const double beforeC = warm > 0 ? units::kelvinToCelsius(line.record().tHotSpK[warm - 1])
-                                        : units::kelvinToCelsius(initialSp);
+        const double beforeC = warm > 0 ? units::kelvinToCelsius(line.line().record().tHotSpK[warm - 1])
+                                        : units::kelvinToCelsius(initialSetpointK(scenario));
         const ClosedLoopMetrics m = trajectoryMetrics(run.xOutTruePct, run.setpointPct, run.hotAirSetpointC,
                                                       scenario.bandPct, beforeC);
         run.metrics.iaePctS = m.iaePctS;
@@ -388,7 +426,7 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         run.metrics.gainPctPerKMedian = median(gains);
         run.ran = true;
         if (kind == ControllerKind::Pi && !stopped) {
-            piRecord = record;
+            piRecord = line.record();
         }
         run.elapsedSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();

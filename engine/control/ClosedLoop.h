@@ -111,10 +111,48 @@ plant::PlantDisturbances scenarioDisturbances(const Scenario& scenario, std::mt1
 /// scenario's inlet moisture [K].
 double initialSetpointK(const Scenario& scenario);
 
-/// @brief Adds what the instruments showed at a sample to a controller's record (SI, dry basis).
-void appendMeasuredOutputs(data::SiBatch& record, const plant::PlantSample& sample);
-/// @brief Adds sample @p k's measured inputs, as the plant recorded them once applied.
-void appendAppliedInputs(data::SiBatch& record, const plant::PlantBatch& plantRecord, std::size_t k);
+/// @brief The virtual plant's line of a scenario with the state of the loop around it: the
+/// record a controller sees (outputs up to now, inputs before now), the plant's PI loop and the
+/// setpoint applied last. Advances one second at a time under the PI loop or an MPC; the what-if
+/// runs and the training sessions share it. The warm-up of the scenario always runs under PI.
+class ControlledLine {
+public:
+    /// @brief The line at the start of the scenario's warm-up, its disturbances drawn from the
+    /// scenario's seed and its instrument noise from @p random (which must outlive the line).
+    ControlledLine(const Scenario& scenario, const plant::PlantOptions& plantOptions,
+                   plant::PlantRandom& random);
+    /// @brief A full copy (a snapshot) drawing its noise from @p random, copied alongside.
+    ControlledLine clone(plant::PlantRandom& random) const;
+
+    /// @brief What one second gave.
+    struct Second {
+        plant::PlantSample sample;           ///< what the instruments showed
+        double setpointK = 0;                ///< the hot-air setpoint applied
+        double hotAirK = 0;                  ///< the true hot air during the second
+        std::optional<MpcDecision> decision; ///< when an MPC decided at this second
+    };
+    /// @brief Measures, lets the PI loop (no @p mpc, or during the warm-up) or the MPC (at each
+    /// control interval, held in between) choose the setpoint for @p targetPct, applies it. While
+    /// an MPC is in charge the PI loop tracks it, so that handing back to PI is bumpless.
+    Second step(MpcController* mpc, double targetPct);
+    /// @brief Seconds run so far, warm-up included.
+    std::size_t sample() const { return m_line->sample(); }
+    bool warmingUp() const { return sample() < m_warmupS; }
+    const data::SiBatch& record() const { return m_record; }
+    plant::PlantLine& line() { return *m_line; }
+    const plant::PlantLine& line() const { return *m_line; }
+
+private:
+    ControlledLine() = default;
+    std::unique_ptr<plant::PlantLine> m_line;
+    plant::PlantPiController m_pi;
+    data::SiBatch m_record;
+    double m_lastSetpointK = 0;
+    std::size_t m_warmupS = 0;
+    double m_bandPct = 0;
+    int m_controlIntervalS = 1;
+    double m_warmupTargetPct = 0;
+};
 
 /// @brief The prediction model an MPC of @p kind uses, or nullptr with @p missing saying why
 /// (the model holds no such part; PI has none).

@@ -54,12 +54,9 @@ const char* eventTypeName(EventType t) {
 /// on the heap so that the pointer the line keeps survives moves of the state.
 struct LineState {
     std::unique_ptr<plant::PlantRandom> random;
-    std::unique_ptr<plant::PlantLine> line;
-    plant::PlantPiController pi;
-    data::SiBatch record; ///< what a controller sees: outputs up to now, inputs before now
+    std::unique_ptr<control::ControlledLine> line;
     double setpointPct = 13;
     ControllerKind controller = ControllerKind::Pi;
-    double lastSetpointK = 0;
     std::vector<LiveSample> trace;
     std::vector<InjectedFault> faults;
     std::vector<TraineeAnswer> answers;
@@ -67,12 +64,9 @@ struct LineState {
     LineState copy() const {
         LineState c;
         c.random = std::make_unique<plant::PlantRandom>(*random);
-        c.line = std::make_unique<plant::PlantLine>(line->clone(*c.random));
-        c.pi = pi;
-        c.record = record;
+        c.line = std::make_unique<control::ControlledLine>(line->clone(*c.random));
         c.setpointPct = setpointPct;
         c.controller = controller;
-        c.lastSetpointK = lastSetpointK;
         c.trace = trace;
         c.faults = faults;
         c.answers = answers;
@@ -116,47 +110,30 @@ struct TrainingSession::Impl {
         return Status{};
     }
 
-    /// One second of the line: measure, let the controller in charge decide, apply.
+    /// One second of the line under the controller in charge.
     void step() {
         auto& st = state;
-        const std::size_t k = st.line->sample();
-        const plant::PlantSample s = st.line->measure();
-        control::appendMeasuredOutputs(st.record, s);
-        const double target = k < warm ? scenario.setpointPct : st.setpointPct;
-        double sp = st.lastSetpointK;
-        const bool piInCharge = st.controller == ControllerKind::Pi || k < warm || !mpc;
-        if (piInCharge) {
-            sp = st.pi.next(s.xOutPct, s.xInTruePct, target);
-        } else {
-            if ((k - warm) % static_cast<std::size_t>(scenario.controlIntervalS) == 0) {
-                const control::MpcDecision d =
-                    mpc->decide(control::DecisionPoint{&st.record, k}, st.lastSetpointK, target,
-                                scenario.bandPct, scenario.controlIntervalS);
-                sp = d.setpointK;
-                controllerNote = d.fallback ? d.fallbackReason : std::string();
-            }
-            // The PI loop follows along so that handing back to it is bumpless.
-            st.pi.track(sp, s.xOutPct, s.xInTruePct, target);
+        const bool warmingUp = st.line->warmingUp();
+        const control::ControlledLine::Second second =
+            st.line->step(st.controller == ControllerKind::Pi ? nullptr : mpc.get(), st.setpointPct);
+        if (second.decision) {
+            controllerNote = second.decision->fallback ? second.decision->fallbackReason : std::string();
         }
-        if (k >= warm) {
-            LiveSample live;
-            live.timeS = static_cast<double>(k) - static_cast<double>(warm);
-            live.xOutPct = s.xOutPct;
-            live.setpointPct = target;
-            live.hotAirSetpointC = units::kelvinToCelsius(sp);
-            live.hotAirC = units::kelvinToCelsius(st.line->hotAirK());
-            live.tOutC = units::kelvinToCelsius(s.tOutK);
-            live.xOutTruePct = s.xOutTruePct;
-            st.line->apply(sp);
-            const auto& rec = st.line->record();
-            live.feedKgH = units::kgPerSToKgPerHour(rec.feedKgPerS.back());
-            live.xInPct = units::dryToWetPct(rec.xInDb.back());
-            st.trace.push_back(live);
-        } else {
-            st.line->apply(sp);
+        if (warmingUp) {
+            return;
         }
-        control::appendAppliedInputs(st.record, st.line->record(), k);
-        st.lastSetpointK = sp;
+        const auto& rec = st.line->line().record();
+        LiveSample live;
+        live.timeS = now() - 1; // the second just run
+        live.xOutPct = second.sample.xOutPct;
+        live.setpointPct = st.setpointPct;
+        live.hotAirSetpointC = units::kelvinToCelsius(second.setpointK);
+        live.hotAirC = units::kelvinToCelsius(second.hotAirK);
+        live.tOutC = units::kelvinToCelsius(second.sample.tOutK);
+        live.xOutTruePct = second.sample.xOutTruePct;
+        live.feedKgH = units::kgPerSToKgPerHour(rec.feedKgPerS.back());
+        live.xInPct = units::dryToWetPct(rec.xInDb.back());
+        st.trace.push_back(live);
     }
 };
 
@@ -182,14 +159,9 @@ Expected<TrainingSession> TrainingSession::start(const control::Scenario& scenar
     im->model = std::move(model);
     im->warm = static_cast<std::size_t>(scenario.warmupS);
     im->total = im->warm + static_cast<std::size_t>(scenario.lengthS);
-    std::mt19937_64 disturbanceRng(scenario.seed);
     auto& st = im->state;
     st.random = std::make_unique<plant::PlantRandom>(scenario.seed + 1);
-    st.lastSetpointK = control::initialSetpointK(scenario);
-    st.line = std::make_unique<plant::PlantLine>(
-        plantOptions, control::scenarioDisturbances(scenario, disturbanceRng), st.lastSetpointK, *st.random);
-    st.record.id = scenario.name;
-    st.record.hasXHdt = st.record.hasTHdt = true;
+    st.line = std::make_unique<control::ControlledLine>(scenario, plantOptions, *st.random);
     st.setpointPct = scenario.setpointPct;
     for (std::size_t k = 0; k < im->warm; ++k) {
         im->step();
@@ -264,7 +236,8 @@ Status TrainingSession::injectFault(plant::Mechanism mechanism, double strength,
     if (onsetS > endS()) {
         return Error{ErrorKind::BadInput, mechanismName(mechanism), "the onset lies after the session's end"};
     }
-    if (auto st = im.state.line->setEffect(mechanism, strength, static_cast<double>(im.warm) + onsetS); !st) {
+    if (auto st = im.state.line->line().setEffect(mechanism, strength, static_cast<double>(im.warm) + onsetS);
+        !st) {
         return st;
     }
     auto& faults = im.state.faults;
@@ -450,7 +423,7 @@ TrainingScore TrainingSession::score() const {
 }
 
 data::Batch TrainingSession::recording(const std::string& batchId) const {
-    plant::PlantBatch pb = m_impl->state.line->record();
+    plant::PlantBatch pb = m_impl->state.line->line().record();
     pb.id = batchId;
     // The line's time axis is reserved for its full length; the record ends at the last applied second.
     pb.timeS.resize(pb.tHotSpK.size());
