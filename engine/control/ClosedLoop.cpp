@@ -413,8 +413,11 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         }
         // Metrics over the scored samples.
         // Moves in °C equal moves in K.
-        const double beforeC = warm > 0 ? units::kelvinToCelsius(line.line().record().tHotSpK[warm - 1])
-                                        : units::kelvinToCelsius(initialSetpointK(scenario));
+        // A run cancelled during its warm-up has no scored part and no setpoint at warm − 1.
+        const auto& applied = line.line().record().tHotSpK;
+        const double beforeC = warm > 0 && applied.size() >= warm
+                                   ? units::kelvinToCelsius(applied[warm - 1])
+                                   : units::kelvinToCelsius(initialSetpointK(scenario));
         const ClosedLoopMetrics m = trajectoryMetrics(run.xOutTruePct, run.setpointPct, run.hotAirSetpointC,
                                                       scenario.bandPct, beforeC);
         run.metrics.iaePctS = m.iaePctS;
