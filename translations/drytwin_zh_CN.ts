@@ -123,7 +123,7 @@
     </message>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="56"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
@@ -143,112 +143,112 @@
         <translation>停止并保留最优</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="56"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="56"/>
         <source>Estimate</source>
         <translation>估计值</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="56"/>
         <source>95 % interval</source>
         <translation>95 % 区间</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="56"/>
         <source>Fisher SE</source>
         <translation>Fisher 标准误</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="57"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="56"/>
         <source>At bound</source>
         <translation>触及边界</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="61"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="58"/>
         <source>Fits the free parameters to the calibration rows (every 10th kept row, the first 300) with NLopt: a global search, then BOBYQA.</source>
         <translation>用 NLopt 将自由参数拟合到标定行（保留行中每隔 10 行取一行，取前 300 行）：先全局搜索，再用 BOBYQA。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="62"/>
         <source>best loss [-]</source>
         <translation>最优损失 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="66"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="63"/>
         <source>θ / θ final [-]</source>
         <translation>θ / θ 最终值 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="67"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
         <source>share of the evaluation budget used [-]</source>
         <translation>已用评估预算比例 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="71"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="68"/>
         <source>Free parameters and their search bounds:</source>
         <translation>自由参数及其搜索范围：</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="81"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="78"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="101"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="98"/>
         <source>best loss so far</source>
         <translation>迄今最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="149"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="146"/>
         <source>Cannot calibrate: %1</source>
         <translation>无法标定：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="157"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="154"/>
         <source>Calibrating…</source>
         <translation>正在标定…</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="177"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="174"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="177"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="174"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="181"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="178"/>
         <source>%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. Intervals: %10.</source>
         <translation>%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口 MAE %6 → %7 % 湿基，%8 → %9 °C。区间：%10。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="206"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="203"/>
         <source>loss evaluations [-]</source>
         <translation>损失评估次数 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="207"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="204"/>
         <source>best loss</source>
         <translation>最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="239"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="236"/>
         <source>measured %1</source>
         <translation>实测 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="242"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="239"/>
         <source>before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="245"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="242"/>
         <source>after</source>
         <translation>之后</translation>
     </message>
@@ -339,73 +339,73 @@
         <translation>批次首尾相接</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
         <source>Batch</source>
         <translation>批次</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
         <source>Rows</source>
         <translation>行数</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
         <source>Kept</source>
         <translation>保留</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
         <source>Length [min]</source>
         <translation>时长 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="40"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
         <source>Mean X_out [% wb]</source>
         <translation>平均 X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="40"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
         <source>Mean T_hot [°C]</source>
         <translation>平均 T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="56"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="53"/>
         <source>Batches (select several to overlay; drop files here):</source>
         <translation>批次（多选可叠加；可将文件拖放到此处）：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="75"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="72"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="75"/>
-        <location filename="../widgets/data/DataPanel.cpp" line="88"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="72"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="85"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="81"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="78"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="87"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="84"/>
         <source>A batch file with your column names</source>
         <translation>一个使用您的列名的批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="97"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="94"/>
         <source>Save the column mapping</source>
         <translation>保存列映射</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="97"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="94"/>
         <source>Mappings (*.json)</source>
         <translation>映射 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="162"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="159"/>
         <source>Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.</source>
         <translation>清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。</translation>
     </message>
@@ -521,168 +521,168 @@
         <translation>用当前模型在已加载的数据上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
         <source>p (Holm)</source>
         <translation>p（Holm）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
         <source>Fitted</source>
         <translation>已拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
         <source>Loss</source>
         <translation>损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>Held-out</source>
         <translation>留出数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>Before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>After</source>
         <translation>之后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>X_out residual [% wb]</source>
         <translation>X_out 残差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="42"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
         <source>T_out residual [°C]</source>
         <translation>T_out 残差 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="43"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
         <source>time, batches one after another [h]</source>
         <translation>时间，批次首尾相接 [h]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="45"/>
         <source>Candidate causes, first round:</source>
         <translation>候选原因（第一轮）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="54"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="47"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="71"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="64"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="89"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="82"/>
         <source>Verdict: %1. No mechanism is named.</source>
         <translation>结论：%1。未命名任何机理。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="83"/>
         <source>Verdict: %1. Named: %2.</source>
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="118"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="111"/>
         <source>%1 at %2 s (ccf %3%4)</source>
         <translation>%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="122"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="115"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="125"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="118"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="131"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="124"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="137"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="130"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="148"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="141"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="142"/>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="149"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="156"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="150"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="143"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="151"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="144"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="152"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="145"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="153"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="146"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="156"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="149"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="173"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="166"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="174"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="167"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -1163,107 +1163,107 @@
         <translation>对虚拟装置逐个控制器运行该情景。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="55"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="55"/>
         <source>IAE [%·s]</source>
         <translation>IAE [%·s]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="55"/>
         <source>Effort [K²]</source>
         <translation>控制量 [K²]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="55"/>
         <source>Violations [%]</source>
         <translation>越限 [%]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
         <source>Solve median [ms]</source>
         <translation>求解时间中位数 [ms]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
         <source>Fallbacks</source>
         <translation>回退次数</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="58"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
         <source>Model gain [%/K]</source>
         <translation>模型增益 [%/K]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="58"/>
         <source>X_out, true [% wb]</source>
         <translation>X_out 真实值 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="59"/>
         <source>T_hot setpoint [°C]</source>
         <translation>T_hot 设定值 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="75"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="71"/>
         <source>prediction at</source>
         <translation>预测时刻</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="98"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="94"/>
         <source>Open scenario</source>
         <translation>打开情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="98"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="94"/>
         <source>Scenarios (*.json)</source>
         <translation>情景 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="113"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="109"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="130"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="126"/>
         <source>Cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="144"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="140"/>
         <source>Choose at least one controller.</source>
         <translation>请至少选择一个控制器。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="147"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="143"/>
         <source>Running…</source>
         <translation>正在运行…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="168"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="164"/>
         <source>skipped</source>
         <translation>已跳过</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="182"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="178"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="190"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="186"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="206"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="202"/>
         <source>%1 predicted at %2 s</source>
         <translation>%1 在 %2 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="215"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="211"/>
         <source>%1. IAE and violations on the product&apos;s true outlet moisture; the plant&apos;s own gain is %2 % wb/K.</source>
         <translation>%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。</translation>
     </message>
@@ -1394,110 +1394,110 @@
         <translation>按时间顺序用前 70 % 训练，其余部分评估；设置在训练部分内选定。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="44"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="44"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="56"/>
         <source>MAE X_out [% wb]</source>
         <translation>MAE X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="44"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="56"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="46"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="61"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="44"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="56"/>
         <source>MAE T_out [°C]</source>
         <translation>MAE T_out [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="46"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
         <source>skill 1 step</source>
         <translation>1 步技能值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="46"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
         <source>skill 30 steps</source>
         <translation>30 步技能值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
         <source>imaginary part</source>
         <translation>虚部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="51"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="48"/>
         <source>real part</source>
         <translation>实部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="53"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
         <source>skill: MAE over the better reference [-]</source>
         <translation>技能值：MAE 与较优参考之比 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="54"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="51"/>
         <source>forecast horizon [steps of 1 s]</source>
         <translation>预测步长 [1 s 步]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="57"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="54"/>
         <source>Ablation (paper Table 3)</source>
         <translation>消融实验（论文表 3）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="58"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="55"/>
         <source>Train and evaluate every variant of Table 3 on this model (a few minutes)</source>
         <translation>在此模型上训练并评估表 3 的每个变体（需几分钟）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="56"/>
         <source>Variant</source>
         <translation>变体</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="61"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="57"/>
         <source>MAE X_out, extrapolation</source>
         <translation>MAE X_out（外推）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="105"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="99"/>
         <source>Training…</source>
         <translation>正在训练…</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="141"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="135"/>
         <source>skill 1 (ties the better reference)</source>
         <translation>技能值 1（与较优参考持平）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="151"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="145"/>
         <source>unit circle</source>
         <translation>单位圆</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="165"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="159"/>
         <source>A unconstrained (ρ = %1)</source>
         <translation>无约束 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="171"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="165"/>
         <source>A with Eq. 30 (ρ = %1)</source>
         <translation>式 30 约束后的 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="198"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="192"/>
         <source> Slowest contraction of A: %1 per step (half-life %2 s).</source>
         <translation> A 的最慢收缩：每步 %1（半衰期 %2 s）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="202"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="196"/>
         <source>Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).</source>
         <translation>留出部分：%1 行。技能值低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
     </message>
@@ -1619,7 +1619,7 @@
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="151"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="475"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="472"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
@@ -1640,7 +1640,7 @@
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="169"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="460"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="457"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
@@ -1685,257 +1685,257 @@
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="194"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="194"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
         <source>Strength</source>
         <translation>强度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="194"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
         <source>Acts from</source>
         <translation>起作用时间</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="194"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
         <source>Found after</source>
         <translation>发现用时</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="200"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="197"/>
         <source>Save session…</source>
         <translation>保存会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="201"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="198"/>
         <source>Open session…</source>
         <translation>打开会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="202"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
         <source>Instructor</source>
         <translation>教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="215"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="212"/>
         <source>Clock and snapshots</source>
         <translation>时钟与快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="223"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="220"/>
         <source>Faults</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="227"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="224"/>
         <source>A session file holds the scenario, every event (faults, snapshots, answers) and the recording as a batch file; reopening replays it to the same data.</source>
         <translation>会话文件包含工况、每个事件（故障、快照、回答）以及作为批次文件的记录；重新打开时会回放得到相同的数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="236"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="233"/>
         <source>Session file</source>
         <translation>会话文件</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="239"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="236"/>
         <source>Start a session: the line runs live under its PI loop.</source>
         <translation>开始会话：产线在其 PI 回路下实时运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="256"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="253"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="257"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="254"/>
         <source>T_hot [°C]</source>
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="258"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="255"/>
         <source>Feed [t/h]</source>
         <translation>进料 [t/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="259"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="256"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="260"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="257"/>
         <source>session time [min]</source>
         <translation>会话时间 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="262"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="259"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="264"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="261"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="265"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="262"/>
         <source>X_out measured</source>
         <translation>X_out 测量值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="266"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="263"/>
         <source>X_out true (instructor)</source>
         <translation>X_out 真实值（教员）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="266"/>
         <source>T_hot setpoint</source>
         <translation>T_hot 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="270"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="267"/>
         <source>T_hot</source>
         <translation>T_hot</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="271"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="268"/>
         <source>feed</source>
         <translation>进料</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="272"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
         <source>X_in</source>
         <translation>X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="277"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="274"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="278"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="275"/>
         <source>Stops the replay or the run ahead; the line stays where it got to</source>
         <translation>停止回放或快进；产线停留在已运行到的位置</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="280"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="277"/>
         <source>Scenario</source>
         <translation>工况</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="342"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="339"/>
         <source>Select a snapshot to restore.</source>
         <translation>请选择要恢复的快照。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="352"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="349"/>
         <source>Save the session into a folder</source>
         <translation>将会话保存到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="359"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="356"/>
         <source>Open a training session</source>
         <translation>打开培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="359"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="356"/>
         <source>Sessions (*.json)</source>
         <translation>会话 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="368"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="365"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="375"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="372"/>
         <source>Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录以供诊断：%1。请在其上运行“发现”，然后在此给出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="379"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="376"/>
         <source>Session saved: %1</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="398"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="395"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="409"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="406"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="455"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="452"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="457"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="454"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="457"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="454"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="457"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="454"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="459"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="456"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="460"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="457"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="470"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="467"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="471"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="468"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="475"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="472"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="482"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="479"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="492"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="489"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="492"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="489"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="495"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="492"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="506"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="503"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>

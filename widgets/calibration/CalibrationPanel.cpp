@@ -52,11 +52,8 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
     m_run = new QPushButton(tr("Calibrate"));
     m_stop = new QPushButton(tr("Stop, keep best"));
     m_stop->setEnabled(false);
-    m_estimates = new QTableWidget(0, 6);
-    m_estimates->setHorizontalHeaderLabels(
+    m_estimates = makeResultTable(
         {tr("Parameter"), tr("Estimate"), tr("95 % interval"), tr("Unit"), tr("Fisher SE"), tr("At bound")});
-    m_estimates->verticalHeader()->hide();
-    m_estimates->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_fit =
         new QLabel(tr("Fits the free parameters to the calibration rows (every 10th kept row, the first 300) "
                       "with NLopt: a global search, then BOBYQA."));

@@ -1,5 +1,6 @@
 #include "common/WidgetHelpers.h"
 
+#include <QHeaderView>
 #include <QTableWidget>
 #include <map>
 
@@ -7,6 +8,14 @@ namespace drytwin::widgets {
 
 QString fromView(std::string_view text) {
     return QString::fromUtf8(text.data(), static_cast<int>(text.size()));
+}
+
+QTableWidget* makeResultTable(const QStringList& headers) {
+    auto* table = new QTableWidget(0, static_cast<int>(headers.size()));
+    table->setHorizontalHeaderLabels(headers);
+    table->verticalHeader()->hide();
+    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    return table;
 }
 
 void setTableRow(QTableWidget* table, int row, const QStringList& cells) {

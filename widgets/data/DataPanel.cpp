@@ -35,13 +35,10 @@ DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m
     m_cleaning->setWordWrap(true);
     m_arrangement = new QComboBox;
     m_arrangement->addItems({tr("Batches overlaid"), tr("Batches one after another")});
-    m_table = new QTableWidget(0, 6);
-    m_table->setHorizontalHeaderLabels({tr("Batch"), tr("Rows"), tr("Kept"), tr("Length [min]"),
-                                        tr("Mean X_out [% wb]"), tr("Mean T_hot [°C]")});
+    m_table = makeResultTable({tr("Batch"), tr("Rows"), tr("Kept"), tr("Length [min]"),
+                               tr("Mean X_out [% wb]"), tr("Mean T_hot [°C]")});
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);
-    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_table->verticalHeader()->hide();
     m_table->setMinimumWidth(320);
     m_plots = new PlotStack;
     for (const auto& s : batchSeries()) {

@@ -27,15 +27,8 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
            "retrained) the session's model"));
     m_verdict = new QLabel(tr("Run discovery on the loaded data with the current model."));
     m_verdict->setWordWrap(true);
-    m_ranking = new QTableWidget(0, 5);
-    m_ranking->setHorizontalHeaderLabels(
-        {tr("Cause"), tr("Score z"), tr("p (Holm)"), tr("Fitted"), tr("Loss")});
-    m_ranking->verticalHeader()->hide();
-    m_ranking->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_gains = new QTableWidget(0, 4);
-    m_gains->setHorizontalHeaderLabels({tr("Held-out"), tr("Before"), tr("After"), tr("Unit")});
-    m_gains->verticalHeader()->hide();
-    m_gains->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_ranking = makeResultTable({tr("Cause"), tr("Score z"), tr("p (Holm)"), tr("Fitted"), tr("Loss")});
+    m_gains = makeResultTable({tr("Held-out"), tr("Before"), tr("After"), tr("Unit")});
     m_evidence = new QTextBrowser;
     m_plots = new PlotStack;
     m_plots->addPlot(tr("X_out residual [% wb]"));

@@ -52,12 +52,8 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     m_prediction->setToolTip(tr("Show the horizon the controllers predicted at this decision"));
     m_note = new QLabel(tr("Runs the scenario against the virtual plant once per controller."));
     m_note->setWordWrap(true);
-    m_table = new QTableWidget(0, 7);
-    m_table->setHorizontalHeaderLabels({tr("Controller"), tr("IAE [%·s]"), tr("Effort [K²]"),
-                                        tr("Violations [%]"), tr("Solve median [ms]"), tr("Fallbacks"),
-                                        tr("Model gain [%/K]")});
-    m_table->verticalHeader()->hide();
-    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table = makeResultTable({tr("Controller"), tr("IAE [%·s]"), tr("Effort [K²]"), tr("Violations [%]"),
+                               tr("Solve median [ms]"), tr("Fallbacks"), tr("Model gain [%/K]")});
     m_plots = new PlotStack;
     m_plots->addPlot(tr("X_out, true [% wb]"));
     m_plots->addPlot(tr("T_hot setpoint [°C]"));

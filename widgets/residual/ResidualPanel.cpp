@@ -41,11 +41,8 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
         tr("Trains on the chronological 70 % and evaluates on the rest; settings are chosen inside "
            "the training part."));
     m_note->setWordWrap(true);
-    m_metrics = new QTableWidget(0, 6);
-    m_metrics->setHorizontalHeaderLabels({tr("Model"), tr("MAE X_out [% wb]"), tr("R² X_out"),
-                                          tr("MAE T_out [°C]"), tr("skill 1 step"), tr("skill 30 steps")});
-    m_metrics->verticalHeader()->hide();
-    m_metrics->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_metrics = makeResultTable({tr("Model"), tr("MAE X_out [% wb]"), tr("R² X_out"), tr("MAE T_out [°C]"),
+                                 tr("skill 1 step"), tr("skill 30 steps")});
     m_eigen = new PlotStack;
     m_eigen->addPlot(tr("imaginary part"));
     m_eigen->setXTitle(tr("real part"));
@@ -56,11 +53,8 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
 
     auto* runAblation = new QPushButton(tr("Ablation (paper Table 3)"));
     runAblation->setToolTip(tr("Train and evaluate every variant of Table 3 on this model (a few minutes)"));
-    m_ablation = new QTableWidget(0, 5);
-    m_ablation->setHorizontalHeaderLabels({tr("Variant"), tr("MAE X_out [% wb]"), tr("R² X_out"),
-                                           tr("MAE T_out [°C]"), tr("MAE X_out, extrapolation")});
-    m_ablation->verticalHeader()->hide();
-    m_ablation->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_ablation = makeResultTable({tr("Variant"), tr("MAE X_out [% wb]"), tr("R² X_out"), tr("MAE T_out [°C]"),
+                                  tr("MAE X_out, extrapolation")});
     // Sensible empty axes until a model is evaluated (a log axis would autoscale to 1e-100).
     m_eigen->plot(0)->setAxisScale(QwtPlot::xBottom, -2.5, 2.5);
     m_eigen->plot(0)->setAxisScale(QwtPlot::yLeft, -1.1, 1.1);

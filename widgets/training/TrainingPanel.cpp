@@ -190,10 +190,7 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_faultDelay->setRange(0, 7200);
     m_faultDelay->setSuffix(tr(" s from now"));
     m_inject = new QPushButton(tr("Inject fault"));
-    m_faults = new QTableWidget(0, 4);
-    m_faults->setHorizontalHeaderLabels({tr("Fault"), tr("Strength"), tr("Acts from"), tr("Found after")});
-    m_faults->verticalHeader()->hide();
-    m_faults->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_faults = makeResultTable({tr("Fault"), tr("Strength"), tr("Acts from"), tr("Found after")});
     m_faults->setMaximumHeight(100);
     m_score = new QLabel;
     m_score->setWordWrap(true);
