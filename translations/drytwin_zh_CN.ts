@@ -1619,7 +1619,7 @@
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="151"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="472"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="491"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
@@ -1640,7 +1640,7 @@
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="169"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="457"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="476"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
@@ -1860,82 +1860,87 @@
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="395"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="409"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="406"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="412"/>
+        <source>The previous session was saved in %1.</source>
+        <translation>上一个会话已保存在 %1。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="425"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="452"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="471"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="454"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="473"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="454"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="473"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="454"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="473"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="456"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="475"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="457"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="476"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="467"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="486"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="468"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="487"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="472"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="491"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="479"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="498"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="489"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="508"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="489"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="508"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="492"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="511"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="503"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="522"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>

@@ -391,6 +391,7 @@ ZH = {
     "session time [min]": "会话时间 [min]",
     "Stop": "停止",
     "Stops the replay or the run ahead; the line stays where it got to": "停止回放或快进；产线停留在已运行到的位置",
+    "The previous session was saved in %1.": "上一个会话已保存在 %1。",
 }
 
 

@@ -6,6 +6,7 @@
 #include "discovery/DiscoverPanel.h"
 #include "training/TrainingPanel.h"
 #include "training/TrainingRunner.h"
+#include "training/TrainingScript.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -24,6 +25,8 @@ using namespace drytwin::widgets;
 class TestTrainingPanel : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); } // autosaves into ~/.qttest
+
     void acceleratedSessionWithAFaultToFind() {
         MainWindow window;
         window.show();
@@ -176,6 +179,21 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(!stop->isVisible(), 20000);
         QVERIFY2(runner.frame().timeS > before && runner.frame().timeS < before + 7200,
                  qPrintable(QStringLiteral("%1 → %2").arg(before).arg(runner.frame().timeS)));
+
+        // Starting another session keeps this one: saved first, the note says where.
+        const auto lastBefore = runner.trace().back();
+        QSignalSpy kept(&runner, &TrainingRunner::saved);
+        QTest::mouseClick(panel->startButton(), Qt::LeftButton);
+        QVERIFY(kept.wait(20000));
+        const QString keptFile = kept.first().at(0).toString();
+        QVERIFY(QFile::exists(keptFile));
+        QVERIFY(panel->noteLabel()->text().contains(QStringLiteral("previous session was saved")) ||
+                panel->noteLabel()->text().contains(QStringLiteral("Session saved")));
+        auto script = training::loadTrainingScript(keptFile.toStdString());
+        QVERIFY2(script.ok(), script ? "" : script.error().message().c_str());
+        QCOMPARE(script->endS, lastBefore.timeS + 1);
+        QTRY_VERIFY(runner.frame().timeS < 100); // the new session runs from its start
+        QDir(QFileInfo(keptFile).absolutePath()).removeRecursively();
     }
 };
 

@@ -383,17 +383,36 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
 
 TrainingPanel::~TrainingPanel() = default;
 
+QString TrainingPanel::keepCurrentSession() {
+    if (!m_runner->frame().started) {
+        return {};
+    }
+    // Queued before the new session replaces it, so the file holds the old one.
+    const QString folder =
+        QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation))
+            .filePath(QStringLiteral("training-autosave/%1")
+                          .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss-zzz"))));
+    m_runner->save(folder);
+    return folder;
+}
+
 void TrainingPanel::startSession() {
     const auto& all = control::bundledScenarios();
     const auto it = all.find(m_scenario->currentText().toStdString());
     if (it == all.end()) {
         return;
     }
+    const QString kept = keepCurrentSession();
     m_runner->setSpeed(m_speed->currentData().toDouble());
     m_runner->start(QString::fromStdString(it->second), m_workbench.model());
     m_controller->setCurrentIndex(0);
-    m_note->setText(tr("Session started: the line runs under its PI loop. The MPC controllers use the model "
-                       "loaded now."));
+    QString note = tr("Session started: the line runs under its PI loop. The MPC controllers use the model "
+                      "loaded now.");
+    if (!kept.isEmpty()) {
+        note += QLatin1Char(' ') +
+                tr("The previous session was saved in %1.").arg(QDir::toNativeSeparators(kept));
+    }
+    m_note->setText(note);
 }
 
 void TrainingPanel::saveSession(const QString& folder) {
@@ -401,6 +420,7 @@ void TrainingPanel::saveSession(const QString& folder) {
 }
 
 void TrainingPanel::openSession(const QString& sessionFile) {
+    keepCurrentSession();
     m_opening = true;
     setLongWork(true);
     m_note->setText(tr("Replaying %1…").arg(QDir::toNativeSeparators(sessionFile)));

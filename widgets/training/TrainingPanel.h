@@ -74,6 +74,9 @@ Q_SIGNALS:
 
 private:
     void startSession();
+    /// Saves the session under way (if any) into the application's data folder before another
+    /// replaces it, so that no session is lost silently; returns the folder (empty: none).
+    QString keepCurrentSession();
     void showFrame();
     void redrawPlots();
     void updateFaultUnit();
