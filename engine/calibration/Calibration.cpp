@@ -1,6 +1,7 @@
 #include "calibration/Calibration.h"
 #include "diagnostics/LongRunVariance.h"
 
+#include "common/Parallel.h"
 #include "common/Units.h"
 #include <Eigen/Dense>
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <nlopt.hpp>
+#include <optional>
 
 namespace drytwin::calibration {
 
@@ -91,8 +93,14 @@ public:
         out.dTOut.resize(np);
         out.dXHdt.resize(np);
         out.dTHdt.resize(np);
-        for (const auto& g : m_groups) {
-            auto sim = physics::simulateLine(g.inputs, p, so, g.rows);
+        // The batches simulate independently: one per core, assembled in batch order.
+        std::vector<std::optional<Expected<physics::SimulationResult>>> sims(m_groups.size());
+        parallelFor(m_groups.size(), [&](std::size_t i) {
+            sims[i].emplace(physics::simulateLine(m_groups[i].inputs, p, so, m_groups[i].rows));
+        });
+        for (std::size_t gi = 0; gi < m_groups.size(); ++gi) {
+            const auto& g = m_groups[gi];
+            const auto& sim = *sims[gi];
             if (!sim) {
                 if (why) {
                     *why = sim.error().message();

@@ -1,5 +1,6 @@
 #include "discovery/Discovery.h"
 
+#include "common/Parallel.h"
 #include "common/Units.h"
 #include "diagnostics/Correlation.h"
 #include "diagnostics/LjungBox.h"
@@ -11,6 +12,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <boost/math/distributions/normal.hpp>
 #include <chrono>
@@ -111,27 +113,6 @@ double channelWeight(const calibration::LossWeights& w, int c) {
         return w.xHdt;
     default:
         return w.tHdt;
-    }
-}
-
-/// Runs f(i) for i in [0, n) on every core.
-template <class F> void parallelFor(std::size_t n, F&& f) {
-    const unsigned threads =
-        std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(),
-                                        static_cast<unsigned>(std::max<std::size_t>(n, 1))));
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-        for (std::size_t i = next++; i < n; i = next++) {
-            f(i);
-        }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) {
-        pool.emplace_back(work);
-    }
-    work();
-    for (auto& t : pool) {
-        t.join();
     }
 }
 
@@ -290,6 +271,12 @@ struct HeldOut {
     std::vector<std::vector<double>> loss; ///< per test batch, per row
     std::vector<double> obsX, predX, obsT, predT;
     std::vector<double> residualX; ///< concatenated, % wb
+    /// Per test batch, per channel: the time and the error scaled by the square root of the
+    /// channel's weight (so that its square adds up to `loss`), for the fast-band share.
+    struct Series {
+        std::vector<double> timeS, weightedError;
+    };
+    std::vector<std::array<Series, 4>> channels;
 };
 
 Expected<HeldOut> heldOut(const Problem& pr, const ParameterSet& p) {
@@ -311,6 +298,7 @@ Expected<HeldOut> heldOut(const Problem& pr, const ParameterSet& p) {
         const auto& b = batches[which[i]];
         const auto& sim = (*sims)[i];
         std::vector<double> loss;
+        std::array<HeldOut::Series, 4> channels;
         for (std::size_t k = pr.test[which[i]].begin; k < pr.test[which[i]].end; ++k) {
             double l = 0;
             bool any = false;
@@ -320,7 +308,10 @@ Expected<HeldOut> heldOut(const Problem& pr, const ParameterSet& p) {
                     continue;
                 }
                 any = true;
-                l += channelWeight(pr.options.weights, c) * (obs - pred) * (obs - pred);
+                const double weight = channelWeight(pr.options.weights, c);
+                l += weight * (obs - pred) * (obs - pred);
+                channels[c].timeS.push_back(b.timeS[k]);
+                channels[c].weightedError.push_back(std::sqrt(weight) * (obs - pred));
                 if (c == kXOut) {
                     h.obsX.push_back(obs);
                     h.predX.push_back(pred);
@@ -335,8 +326,34 @@ Expected<HeldOut> heldOut(const Problem& pr, const ParameterSet& p) {
             }
         }
         h.loss.push_back(std::move(loss));
+        h.channels.push_back(std::move(channels));
     }
     return h;
+}
+
+/// Sum of the squared fast part of the held-out error: each channel's weighted error minus its
+/// centred moving average over `windowS`, per batch (no window across batches).
+double fastBandSquaredError(const HeldOut& h, double windowS) {
+    double sum = 0;
+    for (const auto& batch : h.channels) {
+        for (const auto& series : batch) {
+            const auto& t = series.timeS;
+            const auto& e = series.weightedError;
+            std::size_t lo = 0, hi = 0;
+            double windowSum = 0;
+            for (std::size_t i = 0; i < e.size(); ++i) {
+                while (hi < e.size() && t[hi] <= t[i] + windowS / 2) {
+                    windowSum += e[hi++];
+                }
+                while (t[lo] < t[i] - windowS / 2) {
+                    windowSum -= e[lo++];
+                }
+                const double fast = e[i] - windowSum / static_cast<double>(hi - lo);
+                sum += fast * fast;
+            }
+        }
+    }
+    return sum;
 }
 
 double meanOf(const std::vector<std::vector<double>>& series) {
@@ -753,6 +770,9 @@ Status DiscoveryOptions::validate() const {
         !(minExplainedFraction >= 0 && minExplainedFraction < 1)) {
         return invalidOption("alpha", "test levels must lie in (0, 0.5), the explained share in [0, 1)");
     }
+    if (!(fastBandWindowS == 0 || (fastBandWindowS >= 10 && fastBandWindowS <= 1e5))) {
+        return invalidOption("fast-band window", "must be 0 (off) or lie in [10, 1e5] s");
+    }
     if (maxCauses < 0 || candidatesToFit < 1 || maxEvaluationsPerFit < 10) {
         return invalidOption("discovery limits",
                              "max causes ≥ 0, candidates to fit ≥ 1, evaluations per fit ≥ 10");
@@ -1021,16 +1041,24 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
         const double lossBefore = meanOf(currentHeld->loss);
         const double lossAfter = meanOf(afterHeld->loss);
         const double explained = lossBefore > 0 ? 1.0 - lossAfter / lossBefore : 0;
+        double explainedFast = 0;
+        if (options.fastBandWindowS > 0) {
+            const double fastBefore = fastBandSquaredError(*currentHeld, options.fastBandWindowS);
+            const double fastAfter = fastBandSquaredError(*afterHeld, options.fastBandWindowS);
+            explainedFast = fastBefore > 0 ? 1.0 - fastAfter / fastBefore : 0;
+        }
         record.heldOutPValue = gain.pValue;
         record.explainedFraction = explained;
+        record.explainedFractionFast = explainedFast;
         const double level = options.gainAlpha; // fixed-sequence testing (DiscoveryOptions::gainAlpha)
-        if (!(gain.pValue < level && explained >= options.minExplainedFraction)) {
+        if (!(gain.pValue < level && std::max(explained, explainedFast) >= options.minExplainedFraction)) {
             // It fits the training part but does not predict clearly better: not a cause.
             record.reason =
                 gain.pValue >= level
                     ? format("held-out gain not significant (p = %.2g, needs < %.2g)", gain.pValue, level)
-                    : format("removes only %.0f %% of the held-out error left (needs %.0f %%)",
-                             100 * explained, 100 * options.minExplainedFraction);
+                    : format("removes only %.0f %% of the held-out error left and %.0f %% of its fast "
+                             "part (needs %.0f %% of either)",
+                             100 * explained, 100 * explainedFast, 100 * options.minExplainedFraction);
             result.rounds.push_back(record);
             break;
         }

@@ -28,8 +28,16 @@ struct DiscoveryOptions {
     /// selection stops at the first round whose held-out test fails, which keeps the chance of
     /// naming any absent cause at this level (fixed-sequence testing) without dividing it.
     double gainAlpha = 0.05;
-    /// A named cause must remove at least this share of the held-out squared error left.
+    /// A named cause must remove at least this share of the held-out squared error left, either
+    /// of the whole error or of its fast part (below).
     double minExplainedFraction = 0.15;
+    /// The fast part of the held-out error: each channel's weighted error minus its centred
+    /// moving average over this window, per batch. Unmeasured slow drift (hours) can dominate the
+    /// whole error and hide a real fast mechanism (a meter's lag, a transport time) behind it;
+    /// the window is five times the line's slowest own dynamic (conveyor 60 s + actuator 20 s +
+    /// a meter's lag of tens of seconds) and far below the hours of drift and fouling.
+    /// 0: judge the whole error only.
+    double fastBandWindowS = 600;
     int maxCauses = 3;       ///< causes added one at a time, at most this many
     int candidatesToFit = 3; ///< significant candidates fitted per round, best score first
     int maxEvaluationsPerFit = 120;
@@ -140,6 +148,7 @@ struct Round {
     std::string best;                  ///< the fitted candidate with the lowest training loss
     double heldOutPValue = 1;          ///< its one-sided Diebold-Mariano p on the held-out part
     double explainedFraction = 0;      ///< of the held-out squared error left
+    double explainedFractionFast = 0;  ///< of its fast part (DiscoveryOptions::fastBandWindowS)
     bool named = false;
     std::string reason; ///< why it stopped here, when not named
 };

@@ -335,6 +335,7 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                                {"best", rd.best},
                                {"held_out_p_value", num(rd.heldOutPValue)},
                                {"explained_fraction", num(rd.explainedFraction)},
+                               {"explained_fraction_fast", num(rd.explainedFractionFast)},
                                {"named", rd.named},
                                {"reason", rd.reason}});
     }

@@ -8,7 +8,9 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <limits>
 #include <mutex>
+#include <numeric>
 #include <optional>
 #include <thread>
 #include <type_traits>
@@ -505,55 +507,154 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
     return res;
 }
 
+/// Each input column averaged over a centred window of @p windowS (time-based, per batch).
+LineInputs boxSmoothed(const LineInputs& in, double windowS) {
+    LineInputs out = in;
+    const auto& t = in.timeS;
+    for (auto [src, dst] : {std::pair{&in.tHotK, &out.tHotK},
+                            {&in.xInDb, &out.xInDb},
+                            {&in.tInK, &out.tInK},
+                            {&in.tAmbK, &out.tAmbK},
+                            {&in.rhAmb, &out.rhAmb},
+                            {&in.feedKgPerS, &out.feedKgPerS},
+                            {&in.airSpeedMPerS, &out.airSpeedMPerS}}) {
+        const auto& v = *src;
+        if (v.size() != t.size()) {
+            continue;
+        }
+        std::size_t lo = 0, hi = 0;
+        double sum = 0;
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            while (hi < v.size() && t[hi] <= t[i] + windowS / 2) {
+                sum += v[hi++];
+            }
+            while (t[lo] < t[i] - windowS / 2) {
+                sum -= v[lo++];
+            }
+            (*dst)[i] = sum / static_cast<double>(hi - lo);
+        }
+    }
+    return out;
+}
+
 /// The outlet moisture as the meter reports it: the moisture_meter_lag and moisture_meter_offset
 /// extensions (first-order lag, then a constant offset in % wb) applied to the predicted X_out
-/// and to its sensitivities. A lag needs every row from the first: the run then covers them all.
+/// and to its sensitivities.
 Expected<SimulationResult> simulateMeasured(const LineInputs& in, const ParameterSet& params,
                                             const SimulationOptions& o, const std::vector<std::size_t>& rows,
                                             const std::vector<Param>& odeSens) {
     const double tauMeter = params[Param::tau_meter];
     const double offsetPct = params[Param::X_meter_offset];
-    if (tauMeter <= 0 && offsetPct == 0) {
-        return simulateCore(in, params, o, rows, odeSens);
-    }
-    std::vector<std::size_t> runRows = rows;
-    const bool contiguous = [&] {
-        for (std::size_t j = 0; j < rows.size(); ++j) {
-            if (rows[j] != j) {
-                return false;
-            }
-        }
-        return true;
-    }();
-    if (tauMeter > 0 && !contiguous) {
-        const std::size_t last = rows.empty() ? 0 : *std::max_element(rows.begin(), rows.end());
-        runRows.resize(last + 1);
-        for (std::size_t j = 0; j <= last; ++j) {
-            runRows[j] = j;
-        }
-    }
-    auto res = simulateCore(in, params, o, runRows, odeSens);
-    if (!res) {
+    auto res = simulateCore(in, params, o, rows, odeSens);
+    if (!res || (tauMeter <= 0 && offsetPct == 0)) {
         return res;
     }
-    if (tauMeter > 0) {
-        // Exact first-order response to an input linear between rows: as τ → 0 it tends to the
-        // input minus τ times its slope, so the sensitivity at τ = 0 is −dX/dt, not 0.
-        auto filter = [&](std::vector<double>& v) {
-            double prevIn = v.empty() ? 0.0 : v[0];
-            for (std::size_t j = 1; j < v.size(); ++j) {
-                const double dt = in.timeS[runRows[j]] - in.timeS[runRows[j - 1]];
+    if (tauMeter > 0 && !rows.empty()) {
+        // The lag needs the output's history from the first row on. Between the wanted rows it
+        // comes from a grid of meterGridS on inputs averaged over the same span: computing every
+        // row costs as many parcels as the whole batch (44× the rows of a discovery fit), and
+        // the meter's own lag averages what happens within a grid step. Sampled raw, the
+        // sample-to-sample noise of the inputs would alias into the filtered value; averaged,
+        // the grid stays within 0.0015 % wb rms of every row (tests/engine/physics). The grid does not
+        // depend on τ, so the loss stays smooth in τ for the fits. meterGridS = 0: every row.
+        std::vector<std::size_t> order(rows.size()); // wanted rows by time
+        std::iota(order.begin(), order.end(), std::size_t{0});
+        std::sort(order.begin(), order.end(), [&](auto a, auto b) { return rows[a] < rows[b]; });
+        const std::size_t last = rows[order.back()];
+        // The history: the grid on averaged inputs, and the last two seconds before every wanted
+        // row on the raw inputs. So the filtered value tends to the raw output as τ → 0 (the
+        // score test's difference at τ = 0 needs that).
+        bool contiguous = true; // every row from the first: the run is its own history, exact
+        for (std::size_t j = 0; j < rows.size() && contiguous; ++j) {
+            contiguous = rows[j] == j;
+        }
+        const bool onGridOnly = o.meterGridS > 0 && !contiguous;
+        enum : std::uint8_t { kNone = 0, kGrid = 1, kRaw = 2 };
+        // The wanted row and the one before it come from the raw inputs: the score test's
+        // difference at τ → 0 is then −dX/dt of the raw output, and a longer raw tail measured
+        // no more accurate (tests/engine/physics).
+        constexpr double kMeterTailS = 2;
+        std::vector<std::uint8_t> kind(last + 1, onGridOnly ? kNone : kRaw);
+        if (onGridOnly) {
+            double lastGridTime = -std::numeric_limits<double>::infinity();
+            for (std::size_t j = 0; j <= last; ++j) {
+                if (in.timeS[j] - lastGridTime >= o.meterGridS - 1e-9) {
+                    kind[j] = kGrid;
+                    lastGridTime = in.timeS[j];
+                }
+            }
+            double nextWantedTime = std::numeric_limits<double>::infinity();
+            std::ptrdiff_t w = static_cast<std::ptrdiff_t>(order.size()) - 1;
+            for (std::size_t j = last + 1; j-- > 0;) {
+                while (w >= 0 && rows[order[static_cast<std::size_t>(w)]] >= j) {
+                    nextWantedTime =
+                        std::min(nextWantedTime, in.timeS[rows[order[static_cast<std::size_t>(w)]]]);
+                    --w;
+                }
+                if (nextWantedTime - in.timeS[j] < kMeterTailS - 1e-9) {
+                    kind[j] = kRaw;
+                }
+            }
+        }
+        std::vector<std::size_t> historyRows, rawRows, gridRows;
+        std::vector<std::uint8_t> historyKind;
+        std::vector<std::size_t> historyIndex; // into rawRows or gridRows
+        for (std::size_t j = 0; j <= last; ++j) {
+            if (kind[j] == kNone) {
+                continue;
+            }
+            historyRows.push_back(j);
+            historyKind.push_back(kind[j]);
+            auto& list = kind[j] == kRaw ? rawRows : gridRows;
+            historyIndex.push_back(list.size());
+            list.push_back(j);
+        }
+        std::vector<std::size_t> wantedPosition(rows.size());
+        for (std::size_t j = 0; j < rows.size(); ++j) {
+            wantedPosition[j] = static_cast<std::size_t>(
+                std::lower_bound(historyRows.begin(), historyRows.end(), rows[j]) - historyRows.begin());
+        }
+        auto raw = contiguous ? res : simulateCore(in, params, o, rawRows, odeSens);
+        if (!raw) {
+            return raw.error();
+        }
+        std::optional<Expected<SimulationResult>> grid;
+        if (!gridRows.empty()) {
+            grid.emplace(simulateCore(boxSmoothed(in, o.meterGridS), params, o, gridRows, odeSens));
+            if (!*grid) {
+                return grid->error();
+            }
+        }
+        auto historyOf = [&](auto member) {
+            std::vector<double> u(historyRows.size());
+            for (std::size_t h = 0; h < u.size(); ++h) {
+                u[h] = historyKind[h] == kRaw ? member(raw.value())[historyIndex[h]]
+                                              : member(grid->value())[historyIndex[h]];
+            }
+            return u;
+        };
+        // Exact first-order response to an input linear between history points: as τ → 0 it
+        // tends to the input minus τ times its slope, so the sensitivity at τ = 0 is −dX/dt, not 0.
+        auto filter = [&](const std::vector<double>& u, std::vector<double>& wantedValues) {
+            std::vector<double> out(u.size());
+            out[0] = u[0];
+            for (std::size_t h = 1; h < u.size(); ++h) {
+                const double dt = in.timeS[historyRows[h]] - in.timeS[historyRows[h - 1]];
                 const double a = std::exp(-dt / tauMeter);
-                const double u0 = prevIn;
-                const double u1 = v[j];
-                const double ramp = (u1 - u0) * tauMeter / dt;
-                prevIn = u1;
-                v[j] = u1 - ramp + (v[j - 1] - u0 + ramp) * a;
+                const double ramp = (u[h] - u[h - 1]) * tauMeter / dt;
+                out[h] = u[h] - ramp + (out[h - 1] - u[h - 1] + ramp) * a;
+            }
+            for (std::size_t j = 0; j < wantedValues.size(); ++j) {
+                wantedValues[j] = out[wantedPosition[j]];
             }
         };
-        filter(res->xOutDb);
-        for (auto& sens : res->sensitivities) {
-            filter(sens.dXOut);
+        filter(historyOf([](const SimulationResult& r) -> const std::vector<double>& { return r.xOutDb; }),
+               res->xOutDb);
+        for (std::size_t q = 0; q < res->sensitivities.size(); ++q) {
+            filter(historyOf([q](const SimulationResult& r) -> const std::vector<double>& {
+                       return r.sensitivities[q].dXOut;
+                   }),
+                   res->sensitivities[q].dXOut);
         }
     }
     if (offsetPct != 0) {
@@ -569,27 +670,6 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& in, const Paramete
             }
         }
     }
-    if (runRows.size() != rows.size()) {
-        auto pick = [&](std::vector<double>& v) {
-            std::vector<double> out(rows.size());
-            for (std::size_t j = 0; j < rows.size(); ++j) {
-                out[j] = v[rows[j]];
-            }
-            v = std::move(out);
-        };
-        for (auto* v :
-             {&res->xOutDb, &res->tOutK, &res->xHdtDb, &res->tHdtK, &res->proxyXHdtDb, &res->proxyTHdtK,
-              &res->proxyXConvDb, &res->proxyTConvK, &res->proxyXMixDb, &res->proxyTMixK}) {
-            pick(*v);
-        }
-        for (auto& sens : res->sensitivities) {
-            pick(sens.dXOut);
-            pick(sens.dTOut);
-            pick(sens.dXHdt);
-            pick(sens.dTHdt);
-        }
-        res->rows = rows;
-    }
     return res;
 }
 
@@ -601,6 +681,9 @@ Status SimulationOptions::validate() const {
     }
     if (!(relTol >= 1e-12 && relTol <= 1e-2)) {
         return Error{ErrorKind::BadInput, "relTol", "must lie in [1e-12, 1e-2]"};
+    }
+    if (!(meterGridS >= 0 && meterGridS <= 60)) {
+        return Error{ErrorKind::BadInput, "meterGridS", "must lie in [0, 60] s"};
     }
     for (Param q : sensitivities) {
         if (properties::info(q).fixed) {

@@ -30,6 +30,9 @@ struct SimulationOptions {
     /// Parameters to compute output sensitivities for: CVODES forward sensitivities for rate
     /// parameters, central differences for residence times (they move integration windows).
     std::vector<properties::Param> sensitivities;
+    /// With the moisture_meter_lag extension and a subset of rows, the run covers a grid of this
+    /// spacing [s] plus the subset instead of every row up to the last; 0: every row (exact).
+    double meterGridS = 5;
     Status validate() const;
 };
 
