@@ -164,7 +164,13 @@ CommandLine::CommandLine() : m_impl(new Impl) {
         ->capture_default_str();
     discover
         ->add_option("--min-explained", o.minExplained,
-                     "share of the held-out squared error left that a cause must remove to be named")
+                     "share of the held-out squared error left, or of its fast part, that a cause must "
+                     "remove to be named")
+        ->capture_default_str();
+    discover
+        ->add_option("--fast-window", o.fastWindowS,
+                     "seconds: the error's fast part is the error about its centred moving average over "
+                     "this window, per batch (0: judge the whole error only)")
         ->capture_default_str();
     reg(discover, runDiscover);
 

@@ -500,6 +500,7 @@ int runDiscover(const CommandOptions& o) {
     workflow::DiscoverOptions options;
     options.discovery.maxCauses = o.maxCauses;
     options.discovery.minExplainedFraction = o.minExplained;
+    options.discovery.fastBandWindowS = o.fastWindowS;
     workflow::Session session;
     int rc = 0;
     if (auto st = options.validate(); !st) {

@@ -35,6 +35,7 @@ struct CommandOptions {
     bool drift = false;   ///< generate: unmeasured random-walk drift
     int maxCauses = 3;    ///< discover
     double minExplained = discovery::DiscoveryOptions{}.minExplainedFraction; ///< discover
+    double fastWindowS = discovery::DiscoveryOptions{}.fastBandWindowS;       ///< discover
     std::vector<std::string> effects;
     std::vector<std::string> freeParameters;
     std::vector<std::string> bounds;

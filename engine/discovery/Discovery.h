@@ -126,6 +126,7 @@ struct Finding {
     double value = 0;
     double ci95Low = 0, ci95High = 0; ///< value ± 1.96 HAC standard errors of the score step
     double explainedFraction = 0;     ///< share of the held-out weighted squared error it removes
+    double explainedFractionFast = 0; ///< share of its fast part (DiscoveryOptions::fastBandWindowS)
     std::string evidence;             ///< one or two sentences an engineer can check on a plot
     Gain gain;
 };

@@ -291,6 +291,7 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                                    {"unit", std::string(properties::info(f.parameter).unit)},
                                    {"ci95", {num(f.ci95Low), num(f.ci95High)}}}},
                                  {"explained_fraction", num(f.explainedFraction)},
+                                 {"explained_fraction_fast", num(f.explainedFractionFast)},
                                  {"evidence", f.evidence},
                                  {"gain",
                                   {{"split", g.split},
