@@ -631,58 +631,68 @@
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="124"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="127"/>
+        <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="134"/>
+        <source>named</source>
+        <translation>已确认</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="137"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="130"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="143"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="141"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="154"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="142"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="149"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="155"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="162"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="143"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="156"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="144"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="145"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="158"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="146"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="159"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="149"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="162"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="166"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="179"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="167"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="180"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -1619,7 +1629,7 @@
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="151"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="491"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="492"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
@@ -1640,7 +1650,7 @@
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="169"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="476"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="477"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
@@ -1865,82 +1875,82 @@
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="412"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="413"/>
         <source>The previous session was saved in %1.</source>
         <translation>上一个会话已保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="425"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="426"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="471"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="472"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="473"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="474"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="473"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="474"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="473"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="474"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="475"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="476"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="476"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="477"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="486"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="487"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="487"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="488"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="491"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="492"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="498"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="499"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="508"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="509"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="508"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="509"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="511"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="512"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="522"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="523"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>

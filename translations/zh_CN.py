@@ -392,6 +392,8 @@ ZH = {
     "Stop": "停止",
     "Stops the replay or the run ahead; the line stays where it got to": "停止回放或快进；产线停留在已运行到的位置",
     "The previous session was saved in %1.": "上一个会话已保存在 %1。",
+    "<p><b>Round %1</b>: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6</p>": "<p><b>第 %1 轮</b>：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6</p>",
+    "named": "已确认",
 }
 
 

@@ -24,6 +24,7 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTextBrowser>
 #include <QUndoStack>
 #include <QtTest>
 #include <fstream>
@@ -245,6 +246,11 @@ private Q_SLOTS:
         QVERIFY(w.workbench().latest().discover.has_value());
         QVERIFY(disc->ranking()->rowCount() == 8);
         QVERIFY(disc->verdict()->text().startsWith("Verdict"));
+        // Every round's decision is shown, so the engineer sees why the selection stopped there.
+        const QString evidence = disc->evidence()->toPlainText();
+        for (std::size_t i = 0; i < w.workbench().latest().discover->discovery.rounds.size(); ++i) {
+            QVERIFY2(evidence.contains(QStringLiteral("Round %1:").arg(i + 1)), qPrintable(evidence));
+        }
         QVERIFY(curvesWithData(w.diagnosticsPanel()->crossCorrelation()->plot(0)) >= 1);
         if (disc->extendButton()->isEnabled()) {
             const auto k =

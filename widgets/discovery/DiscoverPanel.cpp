@@ -120,6 +120,19 @@ void DiscoverPanel::show() {
                              items.join(QStringLiteral("; ")).toHtmlEscaped());
         }
     }
+    // Why the selection stopped where it did: each round's best candidate and the decision.
+    for (std::size_t i = 0; i < d.rounds.size(); ++i) {
+        const auto& rd = d.rounds[i];
+        html +=
+            tr("<p><b>Round %1</b>: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast "
+               "part): %6</p>")
+                .arg(i + 1)
+                .arg(rd.best.empty() ? QStringLiteral("–") : QString::fromStdString(rd.best).toHtmlEscaped())
+                .arg(rd.heldOutPValue, 0, 'g', 2)
+                .arg(100 * rd.explainedFraction, 0, 'f', 0)
+                .arg(100 * rd.explainedFractionFast, 0, 'f', 0)
+                .arg(rd.named ? tr("named") : QString::fromStdString(rd.reason).toHtmlEscaped());
+    }
     for (const auto& u : d.unexplained) {
         html += tr("<p><b>Unexplained</b> (%1): %2</p>")
                     .arg(QString::fromStdString(u.output).toHtmlEscaped(), QString::fromStdString(u.type));

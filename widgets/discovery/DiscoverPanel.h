@@ -22,6 +22,7 @@ public:
     QTableWidget* gains() const { return m_gains; }
     QPushButton* extendButton() const { return m_extend; }
     QLabel* verdict() const { return m_verdict; }
+    QTextBrowser* evidence() const { return m_evidence; }
     PlotStack* plots() const { return m_plots; }
 
 private:
