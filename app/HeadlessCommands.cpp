@@ -549,6 +549,15 @@ int runDiscover(const CommandOptions& o) {
     for (const auto& f : d.findings) {
         std::printf("\n* %s\n  %s\n", f.cause.c_str(), f.evidence.c_str());
     }
+    if (!d.bounds.empty()) {
+        std::printf("\nNot named; what the data allow (one step from 0 at the final model, 95 %%):\n");
+        for (const auto& b : d.bounds) {
+            const auto& info = properties::info(b.parameter);
+            std::printf("  %-24s %-15s %10.4g  [%.3g, %.3g] %s\n", b.cause.c_str(),
+                        std::string(info.symbol).c_str(), b.estimate, b.ci95Low, b.ci95High,
+                        std::string(info.unit).c_str());
+        }
+    }
     for (const auto& s : d.unexplained) {
         std::printf("\nUnexplained (%s): %s", s.output.c_str(), s.type.c_str());
         if (s.type == "periodic") {

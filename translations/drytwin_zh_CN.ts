@@ -641,58 +641,63 @@
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="137"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="148"/>
+        <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="152"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="143"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="158"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="154"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="169"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="155"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="162"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="170"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="177"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="156"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="171"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="172"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="158"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="173"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="159"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="174"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="162"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="177"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="179"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="194"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="180"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="195"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>

@@ -394,6 +394,7 @@ ZH = {
     "The previous session was saved in %1.": "上一个会话已保存在 %1。",
     "<p><b>Round %1</b>: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6</p>": "<p><b>第 %1 轮</b>：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6</p>",
     "named": "已确认",
+    "<p><b>Not named</b>; what the data allow (95 %): %1</p>": "<p><b>未确认</b>；数据允许的范围（95 %）：%1</p>",
 }
 
 

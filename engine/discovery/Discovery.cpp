@@ -1152,6 +1152,20 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             }
         }
     }
+    // Bounds for what was tested last and not named: that round's score tests ran at the final
+    // model. (When selection ended on a named cause, no round tested the rest at that model.)
+    if (!result.rounds.empty() && !result.rounds.back().named) {
+        for (const auto& c : result.rounds.back().candidates) {
+            const auto& info = properties::info(c.parameter);
+            Bound b;
+            b.cause = c.cause;
+            b.parameter = c.parameter;
+            b.estimate = c.linearEstimate;
+            b.ci95Low = std::clamp(c.linearEstimate - 1.96 * c.linearSe, info.lower, info.upper);
+            b.ci95High = std::clamp(c.linearEstimate + 1.96 * c.linearSe, info.lower, info.upper);
+            result.bounds.push_back(b);
+        }
+    }
     // The residual of the extended model was analysed when its last cause was added (or is the
     // starting model's, when none was): no further simulation.
     result.residualsAfter = currentResiduals;

@@ -154,6 +154,16 @@ struct Round {
     std::string reason; ///< why it stopped here, when not named
 };
 
+/// @brief What the data allow for a cause that was not named: the one Gauss-Newton step from 0
+/// at the final model (the named causes, h_HDT and k_HDT held as nuisance) with its HAC 95 %
+/// interval, cut to the parameter's range. "Not named" then says how large it could still be.
+struct Bound {
+    std::string cause;
+    properties::Param parameter{};
+    double estimate = 0;
+    double ci95Low = 0, ci95High = 0;
+};
+
 /// @brief The answer to the four questions.
 struct DiscoveryResult {
     std::string verdict;                   ///< "cause_found", "no_structural_cause", "unexplained_structure"
@@ -163,6 +173,7 @@ struct DiscoveryResult {
     std::vector<Round> rounds;
     std::vector<Finding> findings; ///< in the order they were added
     std::vector<Signature> unexplained;
+    std::vector<Bound> bounds;               ///< the causes tested in the last round and not named
     properties::ParameterSet baseParameters; ///< the starting model after its refit of h_HDT, k_HDT
     properties::ParameterSet parameters;     ///< the extended model's physics parameters
     std::size_t trainingRows = 0, heldOutRows = 0;

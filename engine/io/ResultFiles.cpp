@@ -340,6 +340,14 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                                {"named", rd.named},
                                {"reason", rd.reason}});
     }
+    j["bounds"] = json::array();
+    for (const auto& b : r.bounds) {
+        j["bounds"].push_back({{"cause", b.cause},
+                               {"parameter", std::string(properties::info(b.parameter).symbol)},
+                               {"unit", std::string(properties::info(b.parameter).unit)},
+                               {"estimate", num(b.estimate)},
+                               {"ci95", {num(b.ci95Low), num(b.ci95High)}}});
+    }
     j["unexplained"] = json::array();
     for (const auto& s : r.unexplained) {
         json e = {{"signature", s.type}, {"output", s.output}, {"strength", num(s.strength)}};

@@ -133,6 +133,21 @@ void DiscoverPanel::show() {
                 .arg(100 * rd.explainedFractionFast, 0, 'f', 0)
                 .arg(rd.named ? tr("named") : QString::fromStdString(rd.reason).toHtmlEscaped());
     }
+    if (!d.bounds.empty()) {
+        QStringList items;
+        for (const auto& b : d.bounds) {
+            const auto& info = properties::info(b.parameter);
+            items << QStringLiteral("%1: %2 ∈ [%3, %4] %5")
+                         .arg(QString::fromStdString(b.cause),
+                              QString::fromUtf8(info.symbol.data(), int(info.symbol.size())))
+                         .arg(b.ci95Low, 0, 'g', 3)
+                         .arg(b.ci95High, 0, 'g', 3)
+                         .arg(QString::fromUtf8(info.unit.data(), int(info.unit.size())))
+                         .toHtmlEscaped();
+        }
+        html += tr("<p><b>Not named</b>; what the data allow (95 %): %1</p>")
+                    .arg(items.join(QStringLiteral("; ")));
+    }
     for (const auto& u : d.unexplained) {
         html += tr("<p><b>Unexplained</b> (%1): %2</p>")
                     .arg(QString::fromStdString(u.output).toHtmlEscaped(), QString::fromStdString(u.type));

@@ -87,6 +87,13 @@ private Q_SLOTS:
         QVERIFY2(r.findings.empty(), qPrintable(names(r)));
         QCOMPARE(r.verdict, std::string("no_structural_cause"));
         QVERIFY(r.unexplained.empty());
+        // Not named, but bounded: every mechanism gets the interval the data allow, inside its range.
+        QCOMPARE(r.bounds.size(), std::size_t{8});
+        for (const auto& b : r.bounds) {
+            const auto& info = properties::info(b.parameter);
+            QVERIFY2(b.ci95Low < b.ci95High, b.cause.c_str());
+            QVERIFY(b.ci95Low >= info.lower && b.ci95High <= info.upper);
+        }
     }
 
     void unmeasuredDriftAloneNamesNothing() {
@@ -107,6 +114,10 @@ private Q_SLOTS:
         QVERIFY(r.ok());
         QVERIFY2(!r->findings.empty(), qPrintable(names(*r)));
         QCOMPARE(r->findings.front().cause, std::string("moisture_meter_lag"));
+        // The bounds are for what was left unnamed, at the model with the lag.
+        for (const auto& b : r->bounds) {
+            QVERIFY(b.cause != "moisture_meter_lag");
+        }
         const auto& named = r->rounds.front();
         qInfo("explained: %.3f of the whole held-out error, %.3f of its fast part", named.explainedFraction,
               named.explainedFractionFast);
