@@ -537,6 +537,22 @@ LineInputs boxSmoothed(const LineInputs& in, double windowS) {
     return out;
 }
 
+/// The moisture_meter_offset extension: a constant offset in % wb on the predicted X_out and,
+/// by the chain rule through wet basis, on its sensitivities.
+void applyMeterOffset(SimulationResult& res, double offsetPct) {
+    for (std::size_t j = 0; j < res.xOutDb.size(); ++j) {
+        const double x = res.xOutDb[j];
+        const double wet = units::dryToWetPct(x) + offsetPct;
+        const double shifted = units::wetPctToDry(wet);
+        // Chain rule through wet basis: dX'/dX = (dX'/dw)(dw/dX).
+        const double slope = (100.0 / ((100.0 - wet) * (100.0 - wet))) * (100.0 / ((1 + x) * (1 + x)));
+        res.xOutDb[j] = shifted;
+        for (auto& sens : res.sensitivities) {
+            sens.dXOut[j] *= slope;
+        }
+    }
+}
+
 /// The outlet moisture as the meter reports it: the moisture_meter_lag and moisture_meter_offset
 /// extensions (first-order lag, then a constant offset in % wb) applied to the predicted X_out
 /// and to its sensitivities.
@@ -545,130 +561,142 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& in, const Paramete
                                             const std::vector<Param>& odeSens) {
     const double tauMeter = params[Param::tau_meter];
     const double offsetPct = params[Param::X_meter_offset];
-    auto res = simulateCore(in, params, o, rows, odeSens);
-    if (!res || (tauMeter <= 0 && offsetPct == 0)) {
+    if (tauMeter <= 0 || rows.empty()) {
+        auto res = simulateCore(in, params, o, rows, odeSens);
+        if (res && offsetPct != 0) {
+            applyMeterOffset(*res, offsetPct);
+        }
         return res;
     }
-    if (tauMeter > 0 && !rows.empty()) {
-        // The lag needs the output's history from the first row on. Between the wanted rows it
-        // comes from a grid of meterGridS on inputs averaged over the same span: computing every
-        // row costs as many parcels as the whole batch (44× the rows of a discovery fit), and
-        // the meter's own lag averages what happens within a grid step. Sampled raw, the
-        // sample-to-sample noise of the inputs would alias into the filtered value; averaged,
-        // the grid stays within 0.0015 % wb rms of every row (tests/engine/physics). The grid does not
-        // depend on τ, so the loss stays smooth in τ for the fits. meterGridS = 0: every row.
-        std::vector<std::size_t> order(rows.size()); // wanted rows by time
-        std::iota(order.begin(), order.end(), std::size_t{0});
-        std::sort(order.begin(), order.end(), [&](auto a, auto b) { return rows[a] < rows[b]; });
-        const std::size_t last = rows[order.back()];
-        // The history: the grid on averaged inputs, and the last two seconds before every wanted
-        // row on the raw inputs. So the filtered value tends to the raw output as τ → 0 (the
-        // score test's difference at τ = 0 needs that).
-        bool contiguous = true; // every row from the first: the run is its own history, exact
-        for (std::size_t j = 0; j < rows.size() && contiguous; ++j) {
-            contiguous = rows[j] == j;
-        }
-        const bool onGridOnly = o.meterGridS > 0 && !contiguous;
-        enum : std::uint8_t { kNone = 0, kGrid = 1, kRaw = 2 };
-        // The wanted row and the one before it come from the raw inputs: the score test's
-        // difference at τ → 0 is then −dX/dt of the raw output, and a longer raw tail measured
-        // no more accurate (tests/engine/physics).
-        constexpr double kMeterTailS = 2;
-        std::vector<std::uint8_t> kind(last + 1, onGridOnly ? kNone : kRaw);
-        if (onGridOnly) {
-            double lastGridTime = -std::numeric_limits<double>::infinity();
-            for (std::size_t j = 0; j <= last; ++j) {
-                if (in.timeS[j] - lastGridTime >= o.meterGridS - 1e-9) {
-                    kind[j] = kGrid;
-                    lastGridTime = in.timeS[j];
-                }
-            }
-            double nextWantedTime = std::numeric_limits<double>::infinity();
-            std::ptrdiff_t w = static_cast<std::ptrdiff_t>(order.size()) - 1;
-            for (std::size_t j = last + 1; j-- > 0;) {
-                while (w >= 0 && rows[order[static_cast<std::size_t>(w)]] >= j) {
-                    nextWantedTime =
-                        std::min(nextWantedTime, in.timeS[rows[order[static_cast<std::size_t>(w)]]]);
-                    --w;
-                }
-                if (nextWantedTime - in.timeS[j] < kMeterTailS - 1e-9) {
-                    kind[j] = kRaw;
-                }
-            }
-        }
-        std::vector<std::size_t> historyRows, rawRows, gridRows;
-        std::vector<std::uint8_t> historyKind;
-        std::vector<std::size_t> historyIndex; // into rawRows or gridRows
+    // The lag needs the output's history from the first row on. Between the wanted rows it comes
+    // from a grid of meterGridS on inputs averaged over the same span: computing every row costs
+    // as many parcels as the whole batch (44× the rows of a discovery fit), and the meter's own
+    // lag averages what happens within a grid step. Sampled raw, the sample-to-sample noise of
+    // the inputs would alias into the filtered value; averaged, the grid stays within 0.0015 % wb
+    // rms of every row (tests/engine/physics). The grid does not depend on τ, so the loss stays
+    // smooth in τ for the fits. meterGridS = 0, or every row wanted: every row, exact.
+    std::vector<std::size_t> order(rows.size()); // wanted rows by time
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return rows[a] < rows[b]; });
+    const std::size_t last = rows[order.back()];
+    bool everyRow = true;
+    for (std::size_t j = 0; j < rows.size() && everyRow; ++j) {
+        everyRow = rows[j] == j;
+    }
+    const bool onGrid = o.meterGridS > 0 && !everyRow;
+    // The history: the grid on averaged inputs, and the wanted row and the one before it on the
+    // raw inputs. So the filtered value tends to the raw output as τ → 0 (the score test's
+    // difference at τ = 0 is then −dX/dt of the raw output); a longer raw tail measured no more
+    // accurate (tests/engine/physics).
+    constexpr double kRawTailS = 2;
+    enum : std::uint8_t { kNone = 0, kGrid = 1, kRaw = 2 };
+    std::vector<std::uint8_t> kind(last + 1, onGrid ? kNone : kRaw);
+    if (onGrid) {
+        double lastGridTime = -std::numeric_limits<double>::infinity();
         for (std::size_t j = 0; j <= last; ++j) {
-            if (kind[j] == kNone) {
-                continue;
+            if (in.timeS[j] - lastGridTime >= o.meterGridS - 1e-9) {
+                kind[j] = kGrid;
+                lastGridTime = in.timeS[j];
             }
+        }
+        double nextWantedTime = std::numeric_limits<double>::infinity();
+        std::size_t pending = order.size(); // wanted rows at or after j are order[pending..]
+        for (std::size_t j = last + 1; j-- > 0;) {
+            while (pending > 0 && rows[order[pending - 1]] >= j) {
+                nextWantedTime = in.timeS[rows[order[--pending]]];
+            }
+            if (nextWantedTime - in.timeS[j] < kRawTailS - 1e-9) {
+                kind[j] = kRaw;
+            }
+        }
+    }
+    std::vector<std::size_t> historyRows, rawRows, gridRows;
+    std::vector<std::uint8_t> historyKind;
+    std::vector<std::size_t> historyIndex; // into rawRows or gridRows
+    for (std::size_t j = 0; j <= last; ++j) {
+        if (kind[j] != kNone) {
             historyRows.push_back(j);
             historyKind.push_back(kind[j]);
             auto& list = kind[j] == kRaw ? rawRows : gridRows;
             historyIndex.push_back(list.size());
             list.push_back(j);
         }
-        std::vector<std::size_t> wantedPosition(rows.size());
-        for (std::size_t j = 0; j < rows.size(); ++j) {
-            wantedPosition[j] = static_cast<std::size_t>(
-                std::lower_bound(historyRows.begin(), historyRows.end(), rows[j]) - historyRows.begin());
-        }
-        auto raw = contiguous ? res : simulateCore(in, params, o, rawRows, odeSens);
-        if (!raw) {
-            return raw.error();
-        }
-        std::optional<Expected<SimulationResult>> grid;
-        if (!gridRows.empty()) {
-            grid.emplace(simulateCore(boxSmoothed(in, o.meterGridS), params, o, gridRows, odeSens));
-            if (!*grid) {
-                return grid->error();
-            }
-        }
-        auto historyOf = [&](auto member) {
-            std::vector<double> u(historyRows.size());
-            for (std::size_t h = 0; h < u.size(); ++h) {
-                u[h] = historyKind[h] == kRaw ? member(raw.value())[historyIndex[h]]
-                                              : member(grid->value())[historyIndex[h]];
-            }
-            return u;
-        };
-        // Exact first-order response to an input linear between history points: as τ → 0 it
-        // tends to the input minus τ times its slope, so the sensitivity at τ = 0 is −dX/dt, not 0.
-        auto filter = [&](const std::vector<double>& u, std::vector<double>& wantedValues) {
-            std::vector<double> out(u.size());
-            out[0] = u[0];
-            for (std::size_t h = 1; h < u.size(); ++h) {
-                const double dt = in.timeS[historyRows[h]] - in.timeS[historyRows[h - 1]];
-                const double a = std::exp(-dt / tauMeter);
-                const double ramp = (u[h] - u[h - 1]) * tauMeter / dt;
-                out[h] = u[h] - ramp + (out[h - 1] - u[h - 1] + ramp) * a;
-            }
-            for (std::size_t j = 0; j < wantedValues.size(); ++j) {
-                wantedValues[j] = out[wantedPosition[j]];
-            }
-        };
-        filter(historyOf([](const SimulationResult& r) -> const std::vector<double>& { return r.xOutDb; }),
-               res->xOutDb);
-        for (std::size_t q = 0; q < res->sensitivities.size(); ++q) {
-            filter(historyOf([q](const SimulationResult& r) -> const std::vector<double>& {
-                       return r.sensitivities[q].dXOut;
-                   }),
-                   res->sensitivities[q].dXOut);
+    }
+    auto raw = simulateCore(in, params, o, rawRows, odeSens);
+    if (!raw) {
+        return raw;
+    }
+    std::optional<Expected<SimulationResult>> grid;
+    if (!gridRows.empty()) {
+        grid.emplace(simulateCore(boxSmoothed(in, o.meterGridS), params, o, gridRows, odeSens));
+        if (!*grid) {
+            return grid->error();
         }
     }
-    if (offsetPct != 0) {
-        for (std::size_t j = 0; j < res->xOutDb.size(); ++j) {
-            const double x = res->xOutDb[j];
-            const double wet = units::dryToWetPct(x) + offsetPct;
-            const double shifted = units::wetPctToDry(wet);
-            // Chain rule through wet basis: dX'/dX = (dX'/dw)(dw/dX).
-            const double slope = (100.0 / ((100.0 - wet) * (100.0 - wet))) * (100.0 / ((1 + x) * (1 + x)));
-            res->xOutDb[j] = shifted;
-            for (auto& sens : res->sensitivities) {
-                sens.dXOut[j] *= slope;
+    // Exact first-order response to an input linear between history points: as τ → 0 it tends to
+    // the input minus τ times its slope, so the sensitivity at τ = 0 is −dX/dt, not 0.
+    const auto lagged = [&](auto member) {
+        std::vector<double> out(historyRows.size());
+        double previous = 0;
+        for (std::size_t h = 0; h < out.size(); ++h) {
+            const double u = member(historyKind[h] == kRaw ? *raw : grid->value())[historyIndex[h]];
+            if (h == 0) {
+                out[h] = u;
+            } else {
+                const double dt = in.timeS[historyRows[h]] - in.timeS[historyRows[h - 1]];
+                const double a = std::exp(-dt / tauMeter);
+                const double ramp = (u - previous) * tauMeter / dt;
+                out[h] = u - ramp + (out[h - 1] - previous + ramp) * a;
             }
+            previous = u;
         }
+        return out;
+    };
+    const auto xOutLagged = lagged([](const SimulationResult& r) -> const auto& { return r.xOutDb; });
+    std::vector<std::vector<double>> sensLagged;
+    for (std::size_t q = 0; q < raw->sensitivities.size(); ++q) {
+        sensLagged.push_back(
+            lagged([q](const SimulationResult& r) -> const auto& { return r.sensitivities[q].dXOut; }));
+    }
+    // The result at the wanted rows, in their order: the raw run's values, the lagged X_out.
+    SimulationResult res = std::move(*raw);
+    std::vector<std::size_t> atRaw(rows.size()), atHistory(rows.size());
+    for (std::size_t j = 0; j < rows.size(); ++j) {
+        atRaw[j] = static_cast<std::size_t>(std::lower_bound(rawRows.begin(), rawRows.end(), rows[j]) -
+                                            rawRows.begin());
+        atHistory[j] = static_cast<std::size_t>(
+            std::lower_bound(historyRows.begin(), historyRows.end(), rows[j]) - historyRows.begin());
+    }
+    const auto pick = [&](std::vector<double>& v) {
+        std::vector<double> out(rows.size());
+        for (std::size_t j = 0; j < rows.size(); ++j) {
+            out[j] = v[atRaw[j]];
+        }
+        v = std::move(out);
+    };
+    for (auto* v : {&res.tOutK, &res.xHdtDb, &res.tHdtK, &res.proxyXHdtDb, &res.proxyTHdtK, &res.proxyXConvDb,
+                    &res.proxyTConvK, &res.proxyXMixDb, &res.proxyTMixK}) {
+        pick(*v);
+    }
+    for (auto& sens : res.sensitivities) {
+        pick(sens.dTOut);
+        pick(sens.dXHdt);
+        pick(sens.dTHdt);
+    }
+    const auto atWanted = [&](const std::vector<double>& history) {
+        std::vector<double> out(rows.size());
+        for (std::size_t j = 0; j < rows.size(); ++j) {
+            out[j] = history[atHistory[j]];
+        }
+        return out;
+    };
+    res.xOutDb = atWanted(xOutLagged);
+    for (std::size_t q = 0; q < res.sensitivities.size(); ++q) {
+        res.sensitivities[q].dXOut = atWanted(sensLagged[q]);
+    }
+    res.rows = rows;
+    if (offsetPct != 0) {
+        applyMeterOffset(res, offsetPct);
     }
     return res;
 }
