@@ -1,5 +1,6 @@
 #include "discovery/Discovery.h"
 
+#include "common/MovingAverage.h"
 #include "common/Parallel.h"
 #include "common/Units.h"
 #include "diagnostics/Correlation.h"
@@ -337,18 +338,9 @@ double fastBandSquaredError(const HeldOut& h, double windowS) {
     double sum = 0;
     for (const auto& batch : h.channels) {
         for (const auto& series : batch) {
-            const auto& t = series.timeS;
-            const auto& e = series.weightedError;
-            std::size_t lo = 0, hi = 0;
-            double windowSum = 0;
-            for (std::size_t i = 0; i < e.size(); ++i) {
-                while (hi < e.size() && t[hi] <= t[i] + windowS / 2) {
-                    windowSum += e[hi++];
-                }
-                while (t[lo] < t[i] - windowS / 2) {
-                    windowSum -= e[lo++];
-                }
-                const double fast = e[i] - windowSum / static_cast<double>(hi - lo);
+            const auto slow = centredMovingAverage(series.timeS, series.weightedError, windowS);
+            for (std::size_t i = 0; i < slow.size(); ++i) {
+                const double fast = series.weightedError[i] - slow[i];
                 sum += fast * fast;
             }
         }

@@ -1,5 +1,6 @@
 #include "physics/LineSimulator.h"
 
+#include "common/MovingAverage.h"
 #include "common/Units.h"
 #include "physics/SectionRates.h"
 
@@ -518,20 +519,8 @@ LineInputs boxSmoothed(const LineInputs& in, double windowS) {
                             {&in.rhAmb, &out.rhAmb},
                             {&in.feedKgPerS, &out.feedKgPerS},
                             {&in.airSpeedMPerS, &out.airSpeedMPerS}}) {
-        const auto& v = *src;
-        if (v.size() != t.size()) {
-            continue;
-        }
-        std::size_t lo = 0, hi = 0;
-        double sum = 0;
-        for (std::size_t i = 0; i < v.size(); ++i) {
-            while (hi < v.size() && t[hi] <= t[i] + windowS / 2) {
-                sum += v[hi++];
-            }
-            while (t[lo] < t[i] - windowS / 2) {
-                sum -= v[lo++];
-            }
-            (*dst)[i] = sum / static_cast<double>(hi - lo);
+        if (src->size() == t.size()) {
+            *dst = centredMovingAverage(t, *src, windowS);
         }
     }
     return out;
