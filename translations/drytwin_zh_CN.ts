@@ -596,108 +596,175 @@
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="82"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="78"/>
+        <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
+        <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="81"/>
+        <source>the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)</source>
+        <translation>误差随进料量和入口水分增大（按 feed_kg_h 和 X_in_pct 分组的偏差）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="84"/>
+        <source>the error drifts within every batch and resets at each batch start</source>
+        <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="86"/>
+        <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
+        <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
+        <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
+        <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="93"/>
+        <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
+        <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
+        <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
+        <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="99"/>
+        <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
+        <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="116"/>
+        <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
+        <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="120"/>
+        <source>it removes %1 % of the held-out squared error</source>
+        <translation>它消除了留出数据平方误差的 %1 %</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="121"/>
+        <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.</source>
+        <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="125"/>
+        <source>Outlet-moisture</source>
+        <translation>出口水分</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="125"/>
+        <source>Outlet-temperature</source>
+        <translation>出口温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="156"/>
         <source>Verdict: %1. No mechanism is named.</source>
         <translation>结论：%1。未命名任何机理。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="83"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
         <source>Verdict: %1. Named: %2.</source>
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="164"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="164"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="111"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="185"/>
         <source>%1 at %2 s (ccf %3%4)</source>
         <translation>%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="115"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="189"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="118"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="192"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="127"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="201"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="134"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="208"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="148"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="222"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="152"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="226"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="158"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="232"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="169"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="243"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="170"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="177"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="111"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="244"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="251"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="171"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="245"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="172"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="111"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="246"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="173"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="247"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="174"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="248"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="177"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="251"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="194"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="268"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="195"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="269"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>

@@ -395,6 +395,19 @@ ZH = {
     "<p><b>Round %1</b>: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6</p>": "<p><b>第 %1 轮</b>：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6</p>",
     "named": "已确认",
     "<p><b>Not named</b>; what the data allow (95 %): %1</p>": "<p><b>未确认</b>；数据允许的范围（95 %）：%1</p>",
+    "the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)": "出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）",
+    "the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)": "误差随进料量和入口水分增大（按 feed_kg_h 和 X_in_pct 分组的偏差）",
+    "the error drifts within every batch and resets at each batch start": "误差在每个批次内漂移，并在每个批次开始时复位",
+    "the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not": "出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随",
+    "a steady outlet-moisture bias that the tube-outlet moisture does not share": "出口水分存在稳定偏差，而管道出口水分没有",
+    "the outlet error correlates with tube-outlet changes at a shifted lag": "出口误差与管道出口的变化在偏移的滞后处相关",
+    "the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest": "管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显",
+    "the outlet-moisture error grows with ambient humidity while the tube-outlet error does not": "出口水分误差随环境湿度增大，而管道出口误差不随之变化",
+    "it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)": "它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %",
+    "it removes %1 % of the held-out squared error": "它消除了留出数据平方误差的 %1 %",
+    "%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.": "扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。",
+    "Outlet-moisture": "出口水分",
+    "Outlet-temperature": "出口温度",
 }
 
 

@@ -1089,10 +1089,15 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             }
         }
         const auto& info = properties::info(chosen.parameter);
+        f.output = moistureHelped ? "X_out" : "T_out";
+        f.biasBefore = before ? before->bias : 0.0;
+        f.trendPerHourBefore = before ? before->trendPerHour : 0.0;
+        f.fastPartCounted = explained < options.minExplainedFraction;
+        f.lookFor = lookFor(chosen.parameter);
         f.explainedFractionFast = explainedFast;
         // The fast part is quoted when it is what made the cause count.
         const std::string share =
-            explained >= options.minExplainedFraction
+            !f.fastPartCounted
                 ? format("it removes %.0f %% of the held-out squared error", 100 * f.explainedFraction)
                 : format("it removes %.0f %% of the held-out squared error and %.0f %% of its fast part (the "
                          "error about its %.0f-minute average, where slow drift does not hide it)",
@@ -1101,12 +1106,11 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             "%s error before: bias %+.3g %s, within-batch trend %+.3g %s/h. With %s (%s = %.4g %s, 95 %% CI "
             "[%.3g, %.3g]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %.3f to %.3f %% "
             "wb and of T_out from %.2f to %.2f °C (Diebold-Mariano p = %.2g); %s. Check on the plots: %s.",
-            moistureHelped ? "Outlet-moisture" : "Outlet-temperature", before ? before->bias : 0.0,
-            moistureHelped ? "% wb" : "°C", before ? before->trendPerHour : 0.0,
-            moistureHelped ? "% wb" : "°C", f.cause.c_str(), std::string(info.symbol).c_str(), f.value,
-            std::string(info.unit).c_str(), f.ci95Low, f.ci95High, gain.maeMoistureBefore,
-            gain.maeMoistureAfter, gain.maeTemperatureBefore, gain.maeTemperatureAfter, gain.pValue,
-            share.c_str(), lookFor(chosen.parameter));
+            moistureHelped ? "Outlet-moisture" : "Outlet-temperature", f.biasBefore,
+            moistureHelped ? "% wb" : "°C", f.trendPerHourBefore, moistureHelped ? "% wb" : "°C",
+            f.cause.c_str(), std::string(info.symbol).c_str(), f.value, std::string(info.unit).c_str(),
+            f.ci95Low, f.ci95High, gain.maeMoistureBefore, gain.maeMoistureAfter, gain.maeTemperatureBefore,
+            gain.maeTemperatureAfter, gain.pValue, share.c_str(), f.lookFor.c_str());
         result.findings.push_back(f);
         auto sims = physics::simulateBatches(pr.inputs, bestParams, pr.simulation);
         if (!sims) {

@@ -127,7 +127,13 @@ struct Finding {
     double ci95Low = 0, ci95High = 0; ///< value ± 1.96 HAC standard errors of the score step
     double explainedFraction = 0;     ///< share of the held-out weighted squared error it removes
     double explainedFractionFast = 0; ///< share of its fast part (DiscoveryOptions::fastBandWindowS)
-    std::string evidence;             ///< one or two sentences an engineer can check on a plot
+    bool fastPartCounted = false;     ///< the whole share fell short; the fast part's made it count
+    /// The output it helps most ("X_out" or "T_out") and that output's residual before it: the
+    /// numbers of the evidence sentence, for a GUI that words it in its own language.
+    std::string output;
+    double biasBefore = 0, trendPerHourBefore = 0;
+    std::string lookFor;  ///< what to look for on the plots (English; the GUI translates by cause)
+    std::string evidence; ///< one or two sentences an engineer can check on a plot
     Gain gain;
 };
 

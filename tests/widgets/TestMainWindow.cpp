@@ -18,6 +18,7 @@
 #include <QMenuBar>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStatusBar>
@@ -246,6 +247,15 @@ private Q_SLOTS:
         QVERIFY(w.workbench().latest().discover.has_value());
         QVERIFY(disc->ranking()->rowCount() == 8);
         QVERIFY(disc->verdict()->text().startsWith("Verdict"));
+        // Each finding's evidence is worded by the panel from the finding's numbers (translatable).
+        for (const auto& f : w.workbench().latest().discover->discovery.findings) {
+            const QString sentence = widgets::DiscoverPanel::evidenceText(f);
+            QVERIFY2(sentence.contains(QString::fromStdString(f.cause)) &&
+                         sentence.contains("held-out MAE") &&
+                         !sentence.contains(QRegularExpression("%[0-9]")),
+                     qPrintable(sentence));
+            QVERIFY(disc->evidence()->toPlainText().contains(sentence.left(40)));
+        }
         // Every round's decision is shown, so the engineer sees why the selection stopped there.
         const QString evidence = disc->evidence()->toPlainText();
         for (std::size_t i = 0; i < w.workbench().latest().discover->discovery.rounds.size(); ++i) {

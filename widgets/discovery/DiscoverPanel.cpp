@@ -67,6 +67,80 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
     connect(&m_workbench, &Workbench::discovered, this, &DiscoverPanel::show);
 }
 
+namespace {
+
+/// What to look for on the plots, per cause. The engine has the same sentences in English for the
+/// CLI (discovery::Finding::lookFor); they are worded here again because the GUI translates them.
+QString lookForText(properties::Param p) {
+    using properties::Param;
+    switch (p) {
+    case Param::theta_wall:
+        return DiscoverPanel::tr("the outlet-temperature error grows with the hot-air excess over ambient "
+                                 "(bias by T_amb and T_hot)");
+    case Param::theta_gas:
+        return DiscoverPanel::tr(
+            "the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)");
+    case Param::theta_foul:
+        return DiscoverPanel::tr("the error drifts within every batch and resets at each batch start");
+    case Param::tau_meter:
+        return DiscoverPanel::tr(
+            "the outlet-moisture error follows the rate of change of the simulated outlet "
+            "moisture, and the tube-outlet error does not");
+    case Param::X_meter_offset:
+        return DiscoverPanel::tr(
+            "a steady outlet-moisture bias that the tube-outlet moisture does not share");
+    case Param::dtau_conv:
+        return DiscoverPanel::tr("the outlet error correlates with tube-outlet changes at a shifted lag");
+    case Param::theta_fall:
+        return DiscoverPanel::tr(
+            "the tube-outlet and outlet moisture are wetter than simulated, most where the "
+            "tube dries furthest");
+    case Param::theta_reabs:
+        return DiscoverPanel::tr(
+            "the outlet-moisture error grows with ambient humidity while the tube-outlet "
+            "error does not");
+    default:
+        return QString();
+    }
+}
+
+} // namespace
+
+QString DiscoverPanel::evidenceText(const discovery::Finding& f) {
+    const bool moisture = f.output == "X_out";
+    const QString unit = moisture ? tr("% wb") : tr("°C");
+    const auto& info = properties::info(f.parameter);
+    const auto& g = f.gain;
+    const QString share =
+        f.fastPartCounted
+            ? tr("it removes %1 % of the held-out squared error and %2 % of its fast part (the error about "
+                 "its moving average, where slow drift does not hide it)")
+                  .arg(100 * f.explainedFraction, 0, 'f', 0)
+                  .arg(100 * f.explainedFractionFast, 0, 'f', 0)
+            : tr("it removes %1 % of the held-out squared error").arg(100 * f.explainedFraction, 0, 'f', 0);
+    return tr("%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, "
+              "%10]) "
+              "and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out "
+              "from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.")
+        .arg(moisture ? tr("Outlet-moisture") : tr("Outlet-temperature"))
+        .arg(f.biasBefore, 0, 'g', 3)
+        .arg(unit)
+        .arg(f.trendPerHourBefore, 0, 'g', 3)
+        .arg(QString::fromStdString(f.cause))
+        .arg(QString::fromUtf8(info.symbol.data(), static_cast<int>(info.symbol.size())))
+        .arg(f.value, 0, 'g', 4)
+        .arg(QString::fromUtf8(info.unit.data(), static_cast<int>(info.unit.size())))
+        .arg(f.ci95Low, 0, 'g', 3)
+        .arg(f.ci95High, 0, 'g', 3)
+        .arg(g.maeMoistureBefore, 0, 'f', 3)
+        .arg(g.maeMoistureAfter, 0, 'f', 3)
+        .arg(g.maeTemperatureBefore, 0, 'f', 2)
+        .arg(g.maeTemperatureAfter, 0, 'f', 2)
+        .arg(g.pValue, 0, 'g', 2)
+        .arg(share)
+        .arg(lookForText(f.parameter));
+}
+
 void DiscoverPanel::show() {
     const auto& r = m_workbench.latest().discover;
     if (!r) {
@@ -101,7 +175,7 @@ void DiscoverPanel::show() {
                     .arg(f.value, 0, 'g', 4)
                     .arg(f.ci95Low, 0, 'g', 4)
                     .arg(f.ci95High, 0, 'g', 4)
-                    .arg(QString::fromStdString(f.evidence).toHtmlEscaped());
+                    .arg(evidenceText(f).toHtmlEscaped());
     }
     // What the error moves with: the strongest cross-correlations of the differenced residuals
     // with the differenced inputs and proxies (lags 0–300 s), as the analysis found them.

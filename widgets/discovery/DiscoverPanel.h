@@ -7,6 +7,10 @@ class QPushButton;
 class QTableWidget;
 class QTextBrowser;
 
+namespace drytwin::discovery {
+struct Finding;
+}
+
 namespace drytwin::widgets {
 
 class PlotStack;
@@ -23,6 +27,8 @@ public:
     QPushButton* extendButton() const { return m_extend; }
     QLabel* verdict() const { return m_verdict; }
     QTextBrowser* evidence() const { return m_evidence; }
+    /// The evidence sentence of a finding in the window's language, from the finding's numbers.
+    static QString evidenceText(const discovery::Finding& f);
     PlotStack* plots() const { return m_plots; }
 
 private:
