@@ -1093,7 +1093,6 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
         f.biasBefore = before ? before->bias : 0.0;
         f.trendPerHourBefore = before ? before->trendPerHour : 0.0;
         f.fastPartCounted = explained < options.minExplainedFraction;
-        f.lookFor = lookFor(chosen.parameter);
         f.explainedFractionFast = explainedFast;
         // The fast part is quoted when it is what made the cause count.
         const std::string share =
@@ -1110,7 +1109,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             moistureHelped ? "% wb" : "°C", f.trendPerHourBefore, moistureHelped ? "% wb" : "°C",
             f.cause.c_str(), std::string(info.symbol).c_str(), f.value, std::string(info.unit).c_str(),
             f.ci95Low, f.ci95High, gain.maeMoistureBefore, gain.maeMoistureAfter, gain.maeTemperatureBefore,
-            gain.maeTemperatureAfter, gain.pValue, share.c_str(), f.lookFor.c_str());
+            gain.maeTemperatureAfter, gain.pValue, share.c_str(), lookFor(chosen.parameter));
         result.findings.push_back(f);
         auto sims = physics::simulateBatches(pr.inputs, bestParams, pr.simulation);
         if (!sims) {

@@ -132,7 +132,6 @@ struct Finding {
     /// numbers of the evidence sentence, for a GUI that words it in its own language.
     std::string output;
     double biasBefore = 0, trendPerHourBefore = 0;
-    std::string lookFor;  ///< what to look for on the plots (English; the GUI translates by cause)
     std::string evidence; ///< one or two sentences an engineer can check on a plot
     Gain gain;
 };

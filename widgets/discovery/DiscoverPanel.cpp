@@ -70,7 +70,8 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
 namespace {
 
 /// What to look for on the plots, per cause. The engine has the same sentences in English for the
-/// CLI (discovery::Finding::lookFor); they are worded here again because the GUI translates them.
+/// CLI's evidence sentence (lookFor in engine/discovery/Discovery.cpp, which has no Qt); they are
+/// worded here again because the GUI translates them.
 QString lookForText(properties::Param p) {
     using properties::Param;
     switch (p) {
