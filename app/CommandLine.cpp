@@ -96,6 +96,31 @@ CommandLine::CommandLine() : m_impl(new Impl) {
         ->add_flag("--drift", o.drift,
                    "unmeasured slow random-walk drift of the leaf's drying (as in --demo)")
         ->excludes(demo);
+    generate
+        ->add_option("--plant", o.plantKind,
+                     "distributed: the line with a gas phase, residence-time spread, a layered belt and a "
+                     "mixed winnower (docs/plant.md); lumped: the plant of the paper's base equations")
+        ->check(CLI::IsMember({"distributed", "lumped"}))
+        ->capture_default_str();
+    generate
+        ->add_option("--sensors", o.sensorMode,
+                     "realistic: every column through its transmitter (noise, lag, quantisation, spikes, "
+                     "stuck values, dropouts; docs/plant.md); ideal: true values; builtin: the lumped "
+                     "plant's own small noise (its default)")
+        ->check(CLI::IsMember({"realistic", "ideal", "builtin"}))
+        ->capture_default_str()
+        ->each([&o](const std::string&) { o.sensorModeGiven = true; });
+    generate->add_option("--sensor-spikes", o.sensorFaults.spikesPerHour, "spikes per channel and hour")
+        ->check(CLI::Range(0.0, 60.0))
+        ->capture_default_str();
+    generate->add_option("--sensor-stuck", o.sensorFaults.stuckPerHour, "stuck values per channel and hour")
+        ->check(CLI::Range(0.0, 60.0))
+        ->capture_default_str();
+    generate
+        ->add_option("--sensor-dropouts", o.sensorFaults.dropoutsPerHour,
+                     "dropouts (missing cells) per channel and hour")
+        ->check(CLI::Range(0.0, 60.0))
+        ->capture_default_str();
     reg(generate, runGenerate);
 
     auto* simulate =

@@ -134,7 +134,22 @@ int runInspect(const CommandOptions& o) {
 
 int runGenerate(const CommandOptions& o) {
     workflow::GenerateOptions go;
-    go.plant = o.demo ? plant::PlantOptions::demo(o.seed) : plant::PlantOptions{};
+    const plant::PlantKind kind =
+        o.plantKind == "lumped" ? plant::PlantKind::Lumped : plant::PlantKind::Distributed;
+    go.plant = o.demo ? plant::PlantOptions::demo(o.seed, kind) : plant::PlantOptions{};
+    go.plant.plant = kind;
+    // Unless told otherwise, each plant reads through its own default instruments: realistic
+    // transmitters on the distributed line, the lumped plant's built-in noise on the lumped one
+    // (which keeps its files byte-identical to earlier versions).
+    if (o.sensorModeGiven) {
+        if (o.sensorMode == "builtin" && kind != plant::PlantKind::Lumped) {
+            return fail(Error{ErrorKind::Usage, "--sensors builtin", "only the lumped plant has built-in sensors"});
+        }
+        go.plant.sensors = o.sensorMode == "ideal"       ? plant::SensorMode::Ideal
+                           : o.sensorMode == "realistic" ? plant::SensorMode::Realistic
+                                                         : plant::SensorMode::Default;
+    }
+    go.plant.sensorFaults = o.sensorFaults;
     go.plant.seed = o.seed;
     go.plant.batches = o.batches;
     go.plant.samples = o.samples;
@@ -176,8 +191,12 @@ int runGenerate(const CommandOptions& o) {
     if (!result) {
         return fail(result.error());
     }
-    std::printf("wrote %zu batch(es) of %d samples to %s in %.2f s\n", result->files.size(),
-                result->samplesPerBatch, o.outPath.c_str(), result->ending.elapsedSeconds);
+    std::printf("wrote %zu batch(es) of %d samples of the %s plant (%s sensors) to %s in %.2f s\n",
+                result->files.size(), result->samplesPerBatch, std::string(plant::plantKindName(kind)).c_str(),
+                go.plant.realisticSensors()                   ? "realistic"
+                : go.plant.sensors == plant::SensorMode::Ideal ? "ideal"
+                                                              : "built-in",
+                o.outPath.c_str(), result->ending.elapsedSeconds);
     return 0;
 }
 

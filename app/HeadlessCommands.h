@@ -4,7 +4,10 @@
 #include "data/Cleaning.h"
 #include "discovery/Discovery.h"
 
+#include "plant/VirtualPlant.h"
+
 #include <functional>
+
 #include <string>
 #include <vector>
 
@@ -33,6 +36,10 @@ struct CommandOptions {
     bool demo = false;
     std::string periodic; ///< generate: PERIOD_S:AMPLITUDE_K of a hidden periodic disturbance
     bool drift = false;   ///< generate: unmeasured random-walk drift
+    std::string plantKind = "distributed"; ///< generate: distributed | lumped
+    std::string sensorMode = "realistic";  ///< generate: realistic | ideal (lumped: also "builtin")
+    bool sensorModeGiven = false;
+    plant::SensorFaultRates sensorFaults;  ///< generate: per channel and hour
     int maxCauses = 3;    ///< discover
     double minExplained = discovery::DiscoveryOptions{}.minExplainedFraction; ///< discover
     double fastWindowS = discovery::DiscoveryOptions{}.fastBandWindowS;       ///< discover

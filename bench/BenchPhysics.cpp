@@ -9,7 +9,9 @@ namespace {
 
 const std::vector<drytwin::physics::LineInputs>& demoInputs() {
     static const auto inputs = [] {
-        auto plant = drytwin::plant::runPlant(drytwin::plant::PlantOptions::demo(2025));
+        // The lumped demo: no missing cells, and the numbers stay comparable with earlier versions.
+        auto plant = drytwin::plant::runPlant(
+            drytwin::plant::PlantOptions::demo(2025, drytwin::plant::PlantKind::Lumped));
         std::vector<drytwin::physics::LineInputs> v;
         for (const auto& b : plant->batches) {
             v.push_back(drytwin::plant::toLineInputs(b));

@@ -185,7 +185,7 @@ void MainWindow::createMenus() {
             return;
         }
         workflow::GenerateOptions g;
-        g.plant = plant::PlantOptions::demo(2025); // the bundled demo: its mechanisms and drift
+        g.plant = plant::PlantOptions::demo(2025); // the bundled demo: distributed plant, realistic sensors
         g.outFolder = folder.toStdString();
         m_workbench.generate(g);
     });

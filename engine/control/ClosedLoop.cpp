@@ -232,14 +232,14 @@ ControlledLine::Second ControlledLine::step(MpcController* mpc, double targetPct
     const double target = k < m_warmupS ? m_warmupTargetPct : targetPct;
     double sp = m_lastSetpointK;
     if (!mpc || k < m_warmupS) {
-        sp = m_pi.next(s.xOutPct, s.xInTruePct, target);
+        sp = m_pi.next(s.xOutPct, s.xInForControlPct, target);
     } else {
         if ((k - m_warmupS) % static_cast<std::size_t>(m_controlIntervalS) == 0) {
             out.decision = mpc->decide(DecisionPoint{&m_record, k}, m_lastSetpointK, target, m_bandPct,
                                        m_controlIntervalS);
             sp = out.decision->setpointK;
         }
-        m_pi.track(sp, s.xOutPct, s.xInTruePct, target);
+        m_pi.track(sp, s.xOutPct, s.xInForControlPct, target);
     }
     out.setpointK = sp;
     out.hotAirK = m_line->hotAirK();

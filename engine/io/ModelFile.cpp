@@ -289,19 +289,47 @@ Expected<HybridModel> readModelFile(const std::string& path) {
     return parseModelFile(*text, path);
 }
 
-std::string truthJson(const properties::ParameterSet& truth,
-                      const std::map<plant::Mechanism, double>& effects, unsigned seed,
-                      bool unmeasuredDrift) {
+std::string truthJson(const plant::PlantOptions& options, const plant::PlantResult& result) {
     json j;
-    j["parameters"] = parametersJson(truth);
+    j["parameters"] = parametersJson(result.truth);
     j["effects"] = json::object();
-    for (const auto& [m, s] : effects) {
+    for (const auto& [m, s] : result.effects) {
         if (s > 0) {
             j["effects"][std::string(plant::info(m).name)] = s;
         }
     }
-    j["seed"] = seed;
-    j["unmeasured_drift"] = unmeasuredDrift;
+    j["seed"] = options.seed;
+    j["unmeasured_drift"] = options.unmeasuredDrift;
+    j["plant"] = std::string(plant::plantKindName(options.plant));
+    json sensors;
+    const bool realistic = options.realisticSensors();
+    sensors["mode"] = realistic ? "realistic"
+                      : options.sensors == plant::SensorMode::Ideal ? "ideal"
+                                                                    : "lumped_builtin";
+    if (realistic) {
+        json channels = json::object();
+        const auto& specs = plant::realisticSensors();
+        for (std::size_t c = 0; c < specs.size(); ++c) {
+            const auto& sp = specs[c];
+            const auto& n = result.sensorFaultCounts[c];
+            channels[std::string(sp.column)] = {{"noise_sd", sp.noiseSd},
+                                                {"noise_correlation_s", sp.noiseCorrelationS},
+                                                {"relative_noise", sp.relativeNoise},
+                                                {"lag_s", sp.lagS},
+                                                {"quantum", sp.quantum},
+                                                {"spike_size", sp.spikeSize},
+                                                {"spikes", n.spikes},
+                                                {"stuck", n.stuck},
+                                                {"dropouts", n.dropouts}};
+        }
+        sensors["channels"] = channels;
+        sensors["fault_rates_per_hour"] = {{"spikes", options.sensorFaults.spikesPerHour},
+                                           {"stuck", options.sensorFaults.stuckPerHour},
+                                           {"dropouts", options.sensorFaults.dropoutsPerHour}};
+    } else if (options.sensors != plant::SensorMode::Ideal) {
+        sensors["noise_scale"] = options.noiseScale;
+    }
+    j["sensors"] = sensors;
     return j.dump(2) + "\n";
 }
 

@@ -2,7 +2,7 @@
 
 #include "common/Error.h"
 #include "hybrid/HybridModel.h"
-#include "plant/Mechanisms.h"
+#include "plant/VirtualPlant.h"
 
 #include <map>
 
@@ -25,8 +25,8 @@ Status writeModelFile(const hybrid::HybridModel& model, const std::string& path)
 /// @brief The model-file text of @p model.
 std::string formatModelFile(const hybrid::HybridModel& model);
 
-/// @brief The `--truth` file of `generate`: the plant's parameters and effects (CONTRACT.md §2).
-std::string truthJson(const properties::ParameterSet& truth,
-                      const std::map<plant::Mechanism, double>& effects, unsigned seed, bool unmeasuredDrift);
+/// @brief The `--truth` file of `generate`: the plant's parameters and effects, which plant wrote
+/// the data and how its sensors read (CONTRACT.md §2).
+std::string truthJson(const plant::PlantOptions& options, const plant::PlantResult& result);
 
 } // namespace drytwin::io

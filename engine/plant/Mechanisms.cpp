@@ -29,6 +29,18 @@ const std::vector<MechanismInfo>& mechanisms() {
         {Mechanism::AmbientReabsorption, "ambient_reabsorption",
          "moisture uptake on the conveyor: s 1e-4 RH exp(3 (RH - 0.5)) (1 - X/0.35) [1/s]", "1e-4 1/s", 3,
          50},
+        {Mechanism::InletMoistureSensorOffset, "inlet_moisture_sensor_offset",
+         "offset of the inlet moisture gauge (NIR) at 22 % wb; it grows 5 % per % wb of moisture above that "
+         "(a calibration slope error)",
+         "% wb", 0.5, 3.0},
+        {Mechanism::HotAirSensorLag, "hot_air_sensor_lag",
+         "time constant of the hot-air thermocouple (first order, on top of its few seconds as new): a fouled "
+         "thermowell",
+         "s", 30, 300},
+        {Mechanism::InletMoistureSensorNoise, "inlet_moisture_sensor_noise",
+         "extra scatter of the inlet moisture gauge: standard deviation of a noise correlated over 3 s "
+         "(strands of varying colour and packing under the gauge)",
+         "% wb", 0.4, 2.0},
     };
     return m;
 }

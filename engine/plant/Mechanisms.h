@@ -18,8 +18,11 @@ enum class Mechanism {
     TransportDelayError,
     FallingRateDrying,
     AmbientReabsorption,
+    InletMoistureSensorOffset,
+    HotAirSensorLag,
+    InletMoistureSensorNoise,
 };
-inline constexpr int kMechanismCount = 8;
+inline constexpr int kMechanismCount = 11;
 
 /// @brief Static description of a mechanism: contract name, what the strength means.
 struct MechanismInfo {

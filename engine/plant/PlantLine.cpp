@@ -1,5 +1,7 @@
 #include "plant/PlantLine.h"
 
+#include "plant/LineCore.h"
+
 #include "common/Units.h"
 #include "physics/SectionRates.h"
 #include "properties/Properties.h"
@@ -165,15 +167,76 @@ double PlantPiController::next(double xOutMeasuredPct, double xInPct, double tar
     return sp;
 }
 
-struct PlantLine::Impl {
-    PlantOptions o;
-    PlantDisturbances dist;
-    PlantRandom* random = nullptr;
+LineCore::LineCore(const PlantOptions& options, PlantDisturbances disturbances, PlantRandom& r)
+    : o(options), dist(std::move(disturbances)), random(&r), n(dist.size()) {
+    record.timeS.resize(n);
+}
+
+double LineCore::effectAt(Mechanism m, double t) const {
+    const auto it = o.effects.find(m);
+    if (it == o.effects.end()) {
+        return 0.0;
+    }
+    const auto on = o.effectOnsetS.find(m);
+    return on == o.effectOnsetS.end() || t >= on->second ? it->second : 0.0;
+}
+
+double LineCore::readCelsius(SensorChannel c, double trueK, double extraLagS) {
+    return units::celsiusToKelvin(readSensor(c, units::kelvinToCelsius(trueK), extraLagS));
+}
+
+double LineCore::inletSensorOffsetPct(double xInTruePct, double t) const {
+    const double offset = effectAt(Mechanism::InletMoistureSensorOffset, t);
+    // A gauge set up at 22 % wb: its slope error makes the offset grow with the moisture.
+    return offset == 0 ? 0.0 : offset * (1.0 + 0.05 * (xInTruePct - 22.0));
+}
+
+double LineCore::onsetOf(Mechanism m) const {
+    const auto on = o.effectOnsetS.find(m);
+    return on == o.effectOnsetS.end() ? 0.0 : on->second;
+}
+
+Status LineCore::setEffect(Mechanism m, double strength, double onsetS) {
+    const auto& mi = info(m);
+    if (!std::isfinite(strength) || strength < 0 || strength > mi.maxStrength) {
+        return Error{ErrorKind::BadInput, std::string(mi.name),
+                     "strength must be within [0, " + std::to_string(mi.maxStrength) + "] " +
+                         std::string(mi.unit)};
+    }
+    // Parcels already through the tube keep what they saw: an onset in the past would rewrite them.
+    const double now = static_cast<double>(k);
+    if (!std::isfinite(onsetS) || onsetS < now) {
+        return Error{ErrorKind::BadInput, std::string(mi.name),
+                     "the onset must not lie before the line's current time (" + std::to_string(k) + " s)"};
+    }
+    if (o.effects.count(m) && effectAt(m, now) > 0) {
+        return Error{ErrorKind::BadInput, std::string(mi.name), "already acts on the line"};
+    }
+    o.effects[m] = strength;
+    o.effectOnsetS[m] = onsetS;
+    return Status{};
+}
+
+namespace {
+
+/// The lumped line: each parcel integrated through the three sections (RK4) as the paper's
+/// base equations describe them, with the plant's own forms of the mechanisms.
+class LumpedLine final : public LineCore {
+public:
+    LumpedLine(const PlantOptions& options, PlantDisturbances disturbances, double initialSetpointK,
+               PlantRandom& random);
+    std::unique_ptr<LineCore> clone(PlantRandom& r) const override {
+        auto copy = std::make_unique<LumpedLine>(*this);
+        copy->rebind(r);
+        return copy;
+    }
+    PlantSample measure() override;
+    void apply(double setpointK) override;
+    double hotAirK() const override { return tHot[std::min(k, n - 1)]; }
+
     ParameterSet p0;
     properties::ModelSwitches sw;
     double tauH = 0, tW = 0;
-    std::size_t n = 0;
-    std::size_t k = 0;
     bool measured = false;
     std::vector<double> tHot, tHotSp;
     std::vector<ParcelOutcome> parcel; // parcel entering the tube at sample j
@@ -182,27 +245,17 @@ struct PlantLine::Impl {
     double sp = 0;
     double meterState = std::nan("");
     double meterState2 = std::nan("");
-    PlantBatch record;
+    /// The sensor mechanisms of the lumped plant (stateful only while they act).
+    double hotAirSensorState = std::nan("");
+    double inletNoiseState = 0;
 
-    double normal() { return o.noiseScale * random->unitNormal(random->engine); }
+    double normal() { return (realistic ? 0.0 : o.noiseScale) * random->unitNormal(random->engine); }
 
-    /// Strength of a mechanism at time t (0 before its onset).
-    double effectAt(Mechanism m, double t) const {
-        const auto it = o.effects.find(m);
-        if (it == o.effects.end()) {
-            return 0.0;
-        }
-        const auto on = o.effectOnsetS.find(m);
-        return on == o.effectOnsetS.end() || t >= on->second ? it->second : 0.0;
-    }
     /// Belt transport time at time t: the model's plus the transport-delay error once it acts.
     double conveyorTime(double t) const {
         return p0[Param::tau_conv] + effectAt(Mechanism::TransportDelayError, t);
     }
-    double onset(Mechanism m) const {
-        const auto on = o.effectOnsetS.find(m);
-        return on == o.effectOnsetS.end() ? 0.0 : on->second;
-    }
+    double onset(Mechanism m) const { return onsetOf(m); }
 
     // Parcel j enters the tube at sample j. The pre-start parcel stands for the steady
     // operation before the batch: it sees the first inputs throughout, as the model assumes.
@@ -320,64 +373,28 @@ struct PlantLine::Impl {
     }
 };
 
-PlantLine::PlantLine(const PlantOptions& options, PlantDisturbances disturbances, double initialSetpointK,
-                     PlantRandom& random)
-    : m_impl(std::make_unique<Impl>()) {
-    auto& im = *m_impl;
-    im.o = options;
-    im.dist = std::move(disturbances);
-    im.random = &random;
-    im.p0 = options.truth;
-    im.tauH = im.p0[Param::tau_HDT];
-    im.tW = im.p0[Param::t_W];
-    im.n = im.dist.size();
-    im.tHot.assign(im.n, 0.0);
-    im.tHotSp.assign(im.n, 0.0);
-    im.parcel.resize(im.n);
-    im.sp = initialSetpointK;
-    im.record.timeS.resize(im.n);
-}
-
-PlantLine::PlantLine(std::unique_ptr<Impl> impl) : m_impl(std::move(impl)) {}
-
-PlantLine PlantLine::clone(PlantRandom& random) const {
-    auto copy = std::make_unique<Impl>(*m_impl);
-    copy->random = &random;
-    return PlantLine(std::move(copy));
-}
-
-Status PlantLine::setEffect(Mechanism m, double strength, double onsetS) {
-    auto& im = *m_impl;
-    const auto& mi = info(m);
-    if (!std::isfinite(strength) || strength < 0 || strength > mi.maxStrength) {
-        return Error{ErrorKind::BadInput, std::string(mi.name),
-                     "strength must be within [0, " + std::to_string(mi.maxStrength) + "] " +
-                         std::string(mi.unit)};
+LumpedLine::LumpedLine(const PlantOptions& options, PlantDisturbances disturbances, double initialSetpointK,
+                       PlantRandom& random)
+    : LineCore(options, std::move(disturbances), random) {
+    p0 = options.truth;
+    tauH = p0[Param::tau_HDT];
+    tW = p0[Param::t_W];
+    tHot.assign(n, 0.0);
+    tHotSp.assign(n, 0.0);
+    parcel.resize(n);
+    sp = initialSetpointK;
+    realistic = options.realisticSensors();
+    if (realistic) {
+        sensors = SensorBank(options.sensorFaults, false);
+    } else if (options.sensors == SensorMode::Ideal) {
+        o.noiseScale = 0;
     }
-    // Parcels already through the tube keep what they saw: an onset in the past would rewrite them.
-    const double now = static_cast<double>(im.k);
-    if (!std::isfinite(onsetS) || onsetS < now) {
-        return Error{ErrorKind::BadInput, std::string(mi.name),
-                     "the onset must not lie before the line's current time (" + std::to_string(im.k) +
-                         " s)"};
-    }
-    if (im.o.effects.count(m) && im.effectAt(m, now) > 0) {
-        return Error{ErrorKind::BadInput, std::string(mi.name), "already acts on the line"};
-    }
-    im.o.effects[m] = strength;
-    im.o.effectOnsetS[m] = onsetS;
-    return Status{};
 }
 
-double PlantLine::effectAt(Mechanism m, double timeS) const {
-    return m_impl->effectAt(m, timeS);
-}
+} // namespace
 
-PlantLine::~PlantLine() = default;
-PlantLine::PlantLine(PlantLine&&) noexcept = default;
-
-PlantSample PlantLine::measure() {
-    auto& im = *m_impl;
+PlantSample LumpedLine::measure() {
+    auto& im = *this;
     const std::size_t k = im.k;
     const double t = static_cast<double>(k);
     im.record.timeS[k] = t;
@@ -441,16 +458,28 @@ PlantSample PlantLine::measure() {
     s.tOutK = out.tOut + 0.03 * im.normal();
     s.xHdtPct = 100 * hdt.xHdt / (1 + hdt.xHdt) + 0.03 * im.normal();
     s.tHdtK = hdt.tHdt + 0.05 * im.normal();
+    s.xInForControlPct = s.xInTruePct;
+    if (im.realistic) {
+        // The built-in noise above was zero; the transmitters read the true values instead.
+        s.xOutPct = readSensor(SensorChannel::OutletMoisture, s.xOutPct);
+        s.tOutK = readCelsius(SensorChannel::OutletTemperature, s.tOutK);
+        s.xHdtPct = readSensor(SensorChannel::TubeMoisture, s.xHdtPct);
+        s.tHdtK = readCelsius(SensorChannel::TubeTemperature, s.tHdtK);
+    }
     im.record.xHdtDb.push_back(units::wetPctToDry(s.xHdtPct));
     im.record.tHdtK.push_back(s.tHdtK);
     im.record.xOutDb.push_back(units::wetPctToDry(s.xOutPct));
     im.record.tOutK.push_back(s.tOutK);
+    if (std::isnan(s.xOutPct)) {
+        s.xOutValid = false;
+        s.xOutPct = sensors[SensorChannel::OutletMoisture].lastGood();
+    }
     im.measured = true;
     return s;
 }
 
-void PlantLine::apply(double setpointK) {
-    auto& im = *m_impl;
+void LumpedLine::apply(double setpointK) {
+    auto& im = *this;
     if (!im.measured) {
         measure(); // a sample is always measured before it is left
     }
@@ -462,10 +491,49 @@ void PlantLine::apply(double setpointK) {
     auto& pb = im.record;
     const auto& d = im.dist;
     pb.tHotSpK.push_back(setpointK);
-    pb.tHotK.push_back(im.tHot[k] + 0.1 * normal());
+    const double t = static_cast<double>(k);
+    const double xInTruePct = units::dryToWetPct(d.xInDb[k]);
+    const double hotAirLag = effectAt(Mechanism::HotAirSensorLag, t);
+    const double inletOffsetPct = inletSensorOffsetPct(xInTruePct, t);
+    const double inletNoisePct = effectAt(Mechanism::InletMoistureSensorNoise, t);
+    if (im.realistic) {
+        pb.tHotK.push_back(readCelsius(SensorChannel::HotAir, im.tHot[k], hotAirLag));
+        pb.airSpeedMPerS.push_back(readSensor(SensorChannel::AirSpeed, d.airSpeedMPerS[k]));
+        pb.feedKgPerS.push_back(units::kgPerHourToKgPerS(
+            readSensor(SensorChannel::Feed, units::kgPerSToKgPerHour(d.feedKgPerS[k]))));
+        pb.xInDb.push_back(units::wetPctToDry(
+            readSensor(SensorChannel::InletMoisture, xInTruePct + inletOffsetPct, 0, inletNoisePct)));
+        pb.tInK.push_back(readCelsius(SensorChannel::InletTemperature, d.tInK[k]));
+        pb.tAmbK.push_back(readCelsius(SensorChannel::AmbientTemperature, d.tAmbK[k]));
+        pb.rhAmb.push_back(
+            readSensor(SensorChannel::AmbientHumidity, units::fractionToPercent(d.rhAmb[k])) / 100.0);
+        im.measured = false;
+        ++im.k;
+        return;
+    }
+    double tHotReading = im.tHot[k];
+    if (hotAirLag > 0) {
+        // A fouled thermowell: a first-order lag, exact for the value held over the second.
+        hotAirSensorState = std::isnan(hotAirSensorState)
+                                ? tHotReading
+                                : tHotReading + (hotAirSensorState - tHotReading) * std::exp(-1.0 / hotAirLag);
+        tHotReading = hotAirSensorState;
+    } else {
+        hotAirSensorState = std::nan("");
+    }
+    pb.tHotK.push_back(tHotReading + 0.1 * normal());
     pb.airSpeedMPerS.push_back(d.airSpeedMPerS[k] + 0.02 * normal());
     pb.feedKgPerS.push_back(d.feedKgPerS[k] + units::kgPerHourToKgPerS(5.0) * normal());
-    const double xInWb = d.xInDb[k] / (1 + d.xInDb[k]) + 0.0001 * normal();
+    double xInWb = d.xInDb[k] / (1 + d.xInDb[k]) + 0.0001 * normal();
+    if (inletOffsetPct != 0 || inletNoisePct > 0) {
+        if (inletNoisePct > 0) {
+            // Scatter correlated over 3 s; drawn only while the mechanism acts.
+            const double a = std::exp(-1.0 / 3.0);
+            inletNoiseState = a * inletNoiseState +
+                              inletNoisePct * std::sqrt(1 - a * a) * random->unitNormal(random->engine);
+        }
+        xInWb += (inletOffsetPct + (inletNoisePct > 0 ? inletNoiseState : 0.0)) / 100.0;
+    }
     pb.xInDb.push_back(xInWb / (1 - xInWb));
     pb.tInK.push_back(d.tInK[k] + 0.1 * normal());
     pb.tAmbK.push_back(d.tAmbK[k] + 0.1 * normal());
@@ -474,20 +542,59 @@ void PlantLine::apply(double setpointK) {
     ++im.k;
 }
 
+std::unique_ptr<LineCore> makeLumpedLine(const PlantOptions& options, PlantDisturbances disturbances,
+                                         double initialSetpointK, PlantRandom& random) {
+    return std::make_unique<LumpedLine>(options, std::move(disturbances), initialSetpointK, random);
+}
+
+PlantLine::PlantLine(const PlantOptions& options, PlantDisturbances disturbances, double initialSetpointK,
+                     PlantRandom& random)
+    : m_core(options.plant == PlantKind::Distributed
+                 ? makeDistributedLine(options, std::move(disturbances), initialSetpointK, random)
+                 : makeLumpedLine(options, std::move(disturbances), initialSetpointK, random)) {}
+
+PlantLine::PlantLine(std::unique_ptr<LineCore> core) : m_core(std::move(core)) {}
+PlantLine::~PlantLine() = default;
+PlantLine::PlantLine(PlantLine&&) noexcept = default;
+
+PlantLine PlantLine::clone(PlantRandom& random) const {
+    return PlantLine(m_core->clone(random));
+}
+Status PlantLine::setEffect(Mechanism m, double strength, double onsetS) {
+    return m_core->setEffect(m, strength, onsetS);
+}
+double PlantLine::effectAt(Mechanism m, double timeS) const {
+    return m_core->effectAt(m, timeS);
+}
+PlantSample PlantLine::measure() {
+    return m_core->measure();
+}
+void PlantLine::apply(double setpointK) {
+    m_core->apply(setpointK);
+}
 std::size_t PlantLine::sample() const {
-    return m_impl->k;
+    return m_core->sample();
 }
 std::size_t PlantLine::size() const {
-    return m_impl->n;
+    return m_core->size();
 }
 double PlantLine::hotAirK() const {
-    return m_impl->tHot[std::min(m_impl->k, m_impl->n - 1)];
+    return m_core->hotAirK();
 }
 const PlantBatch& PlantLine::record() const {
-    return m_impl->record;
+    return m_core->record;
+}
+const SensorBank& PlantLine::sensors() const {
+    return m_core->sensors;
+}
+std::optional<LineBalance> PlantLine::balance() const {
+    return m_core->balance();
+}
+double SectionBalance::energyImbalance() const {
+    return (energyInJ + energyFromAirJ - energyOutJ - energyStockChangeJ) / (energyInJ + std::abs(energyFromAirJ));
 }
 PlantBatch& PlantLine::record() {
-    return m_impl->record;
+    return m_core->record;
 }
 
 } // namespace drytwin::plant

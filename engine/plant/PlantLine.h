@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -37,7 +38,14 @@ struct PlantSample {
     double tHdtK = 0;
     double xOutTruePct = 0; ///< the product's true outlet moisture [% wb] (for closed-loop metrics)
     double tOutTrueK = 0;
-    double xInTruePct = 0; ///< true inlet moisture [% wb] (the plant's feedforward instrument)
+    double xInTruePct = 0; ///< true inlet moisture [% wb]
+    /// Inlet moisture the plant's own controller feeds forward [% wb]: the lumped plant's ideal
+    /// feedforward instrument (the truth); on the distributed plant the inlet NIR gauge's reading,
+    /// filtered over 10 s as a DCS does.
+    double xInForControlPct = 0;
+    /// False while the outlet moisture transmitter drops out; xOutPct then holds its last good
+    /// reading, as a DCS shows a value of bad quality.
+    bool xOutValid = true;
 };
 
 /// @brief The plant's own moisture controller: PI on the measured outlet moisture with the
@@ -59,9 +67,31 @@ private:
 };
 
 /// @brief The virtual plant as a line that a controller drives one sample (1 s) at a time:
-/// measure(), then apply() the hot-air setpoint chosen from what was measured. The same
-/// numerics as runPlant (fixed-step RK4 per parcel, the plant's own mechanism forms), which is
-/// built on it. Mechanisms act from their onset in PlantOptions::effectOnsetS.
+/// measure(), then apply() the hot-air setpoint chosen from what was measured. runPlant is
+/// built on it. PlantOptions::plant chooses the lumped line (fixed-step RK4 per parcel) or the
+/// distributed one (cells along the tube, a layered belt, a mixed winnower; docs/plant.md).
+/// Mechanisms act from their onset in PlantOptions::effectOnsetS.
+/// @brief Water and energy that crossed one section's boundary since sample 0 (distributed
+/// line only), to check that its numerics conserve what they move.
+struct SectionBalance {
+    double waterInKg = 0, waterOutKg = 0, waterToAirKg = 0, waterStockChangeKg = 0;
+    /// Enthalpies relative to liquid water and dry matter at T_ref; energyFromAirJ is the net heat
+    /// the material took from the air around it (less the vapour's enthalpy it gave back).
+    double energyInJ = 0, energyOutJ = 0, energyFromAirJ = 0, energyStockChangeJ = 0;
+    double wallLossJ = 0; ///< heat the tube's air lost to its wall (not in the material's balance)
+    /// (in − out − to the air − stock change) / in.
+    double waterImbalance() const {
+        return (waterInKg - waterOutKg - waterToAirKg - waterStockChangeKg) / waterInKg;
+    }
+    /// (in + from the air − out − stock change) / (in + |from the air|).
+    double energyImbalance() const;
+};
+struct LineBalance {
+    SectionBalance tube, belt, winnower;
+};
+
+class LineCore;
+
 class PlantLine {
 public:
     /// @brief A line about to start at sample 0 having run steadily at the first disturbances
@@ -89,14 +119,18 @@ public:
     Status setEffect(Mechanism m, double strength, double onsetS);
     /// @brief The strength of a mechanism at a time of the line (0 before its onset).
     double effectAt(Mechanism m, double timeS) const;
+    /// @brief The water and energy balances since sample 0; empty for the lumped line, whose
+    /// parcels are integrated one by one and hold no stocks.
+    std::optional<LineBalance> balance() const;
+    /// @brief The line's transmitters (their fault counts); idle unless the sensors are realistic.
+    const SensorBank& sensors() const;
     /// @brief The record so far (inputs up to the last applied sample, outputs up to the last measured).
     const PlantBatch& record() const;
     PlantBatch& record();
 
 private:
-    struct Impl;
-    explicit PlantLine(std::unique_ptr<Impl> impl);
-    std::unique_ptr<Impl> m_impl;
+    explicit PlantLine(std::unique_ptr<LineCore> core);
+    std::unique_ptr<LineCore> m_core;
 };
 
 } // namespace drytwin::plant

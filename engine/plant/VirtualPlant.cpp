@@ -21,9 +21,26 @@ ParameterSet PlantOptions::defaultTruth() {
     return p;
 }
 
-PlantOptions PlantOptions::demo(unsigned seed) {
+std::string_view plantKindName(PlantKind k) {
+    return k == PlantKind::Distributed ? "distributed" : "lumped";
+}
+
+std::string_view sensorModeName(SensorMode m) {
+    switch (m) {
+    case SensorMode::Realistic:
+        return "realistic";
+    case SensorMode::Ideal:
+        return "ideal";
+    case SensorMode::Default:
+        break;
+    }
+    return "default";
+}
+
+PlantOptions PlantOptions::demo(unsigned seed, PlantKind kind) {
     PlantOptions o;
     o.seed = seed;
+    o.plant = kind;
     o.effects[Mechanism::HeatTransferFouling] = 0.1;
     o.effects[Mechanism::GasPhaseCoupling] = 0.1;
     o.effects[Mechanism::TubeWallHeatLoss] = 0.03; // NTU: about 1.5 % of the excess lost on average
@@ -66,6 +83,11 @@ Status PlantOptions::validate() const {
     if (!(noiseScale >= 0 && noiseScale <= 10)) {
         return Error{ErrorKind::Usage, "noiseScale", "must lie in [0, 10]"};
     }
+    for (double rate : {sensorFaults.spikesPerHour, sensorFaults.stuckPerHour, sensorFaults.dropoutsPerHour}) {
+        if (!(rate >= 0 && rate <= 60)) {
+            return Error{ErrorKind::Usage, "sensor fault rates", "must lie in [0, 60] per channel and hour"};
+        }
+    }
     if (!(targetXOutPct > 5 && targetXOutPct < 30)) {
         return Error{ErrorKind::Usage, "targetXOutPct", "must lie in (5, 30) % wb"};
     }
@@ -80,6 +102,8 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
     PlantResult result;
     result.truth = o.truth;
     result.effects = o.effects;
+    result.plant = o.plant;
+    result.sensors = o.sensors;
     PlantRandom random(o.seed);
     std::uniform_real_distribution<double> uniform(0, 1);
     for (int b = 0; b < o.batches; ++b) {
@@ -93,7 +117,15 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
         PlantPiController pi;
         for (std::size_t k = 0; k < line.size(); ++k) {
             const PlantSample s = line.measure();
-            line.apply(pi.next(s.xOutPct, s.xInTruePct, o.targetXOutPct));
+            line.apply(pi.next(s.xOutPct, s.xInForControlPct, o.targetXOutPct));
+        }
+        for (std::size_t c = 0; c < result.sensorFaultCounts.size(); ++c) {
+            const auto& counts = line.sensors().sensors[c].counts();
+            auto& sum = result.sensorFaultCounts[c];
+            sum.spikes += counts.spikes;
+            sum.stuck += counts.stuck;
+            sum.dropouts += counts.dropouts;
+            sum.samples += counts.samples;
         }
         PlantBatch pb = std::move(line.record());
         char id[16];

@@ -170,8 +170,7 @@ Expected<GenerateResult> Session::generate(const GenerateOptions& options, const
     }
     if (!options.truthPath.empty()) {
         if (auto st = writeFileAtomically(options.truthPath,
-                                          io::truthJson(plantResult->truth, plantResult->effects,
-                                                        options.plant.seed, options.plant.unmeasuredDrift));
+                                          io::truthJson(options.plant, *plantResult));
             !st) {
             return st.error();
         }

@@ -81,7 +81,7 @@ private Q_SLOTS:
         QVERIFY(m_dir.isValid());
         m_data = m_dir.filePath("plant");
         workflow::GenerateOptions g;
-        g.plant = plant::PlantOptions::demo(7);
+        g.plant = plant::PlantOptions::demo(7, plant::PlantKind::Lumped);
         g.plant.batches = 2;
         g.plant.samples = 1500;
         g.outFolder = m_data.toStdString();
@@ -319,7 +319,7 @@ private Q_SLOTS:
         MainWindow w;
         QSignalSpy loaded(&w, &MainWindow::loadFinished);
         workflow::GenerateOptions g;
-        g.plant = plant::PlantOptions::demo(3);
+        g.plant = plant::PlantOptions::demo(3, plant::PlantKind::Lumped);
         g.plant.batches = 2;
         g.plant.samples = 1200;
         g.outFolder = dir.filePath("gen").toStdString();

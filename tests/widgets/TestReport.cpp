@@ -17,7 +17,7 @@ private Q_SLOTS:
     void reportMatchesTheJsonFiles() {
         QTemporaryDir dir;
         workflow::GenerateOptions g;
-        g.plant = plant::PlantOptions::demo(6);
+        g.plant = plant::PlantOptions::demo(6, plant::PlantKind::Lumped);
         g.plant.batches = 2;
         g.plant.samples = 1500;
         g.outFolder = dir.filePath("plant").toStdString();

@@ -80,6 +80,12 @@ QString mechanismLabel(plant::Mechanism m) {
         return QCoreApplication::translate("TrainingPanel", "Falling-rate drying");
     case plant::Mechanism::AmbientReabsorption:
         return QCoreApplication::translate("TrainingPanel", "Ambient re-absorption");
+    case plant::Mechanism::InletMoistureSensorOffset:
+        return QCoreApplication::translate("TrainingPanel", "Inlet moisture gauge offset");
+    case plant::Mechanism::HotAirSensorLag:
+        return QCoreApplication::translate("TrainingPanel", "Hot-air thermocouple lag");
+    case plant::Mechanism::InletMoistureSensorNoise:
+        return QCoreApplication::translate("TrainingPanel", "Inlet moisture gauge scatter");
     }
     return {};
 }

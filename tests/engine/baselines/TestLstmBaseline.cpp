@@ -16,7 +16,7 @@ class TestLstmBaseline : public QObject {
 
 private Q_SLOTS:
     void initTestCase() {
-        auto o = plant::PlantOptions::demo(3);
+        auto o = plant::PlantOptions::demo(3, plant::PlantKind::Lumped);
         o.batches = 3;
         o.samples = 1500;
         auto r = plant::runPlant(o);

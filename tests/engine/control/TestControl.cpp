@@ -263,7 +263,7 @@ private Q_SLOTS:
     void everyControllerRunsAShortScenarioAndCancelKeepsWhatIsDone() {
         QTemporaryDir dir;
         workflow::GenerateOptions g;
-        g.plant = plant::PlantOptions::demo(9);
+        g.plant = plant::PlantOptions::demo(9, plant::PlantKind::Lumped);
         g.plant.batches = 2;
         g.plant.samples = 1500;
         g.outFolder = dir.filePath("plant").toStdString();

@@ -5,6 +5,12 @@
 #include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
 
+#include "data/BatchWriter.h"
+#include "plant/PlantLine.h"
+#include "plant/Sensors.h"
+
+#include <QCryptographicHash>
+#include <QTemporaryDir>
 #include <QtTest>
 #include <algorithm>
 #include <cmath>
@@ -14,6 +20,10 @@ using plant::Mechanism;
 using properties::Param;
 
 namespace {
+
+/// SHA-256 of the lumped demo (seed 2025, 2 × 800 samples) as the code before the distributed
+/// plant wrote it (commit 59366e6).
+constexpr const char* kLumpedDemoSha256 = "ef9879ca6c8a6e54d769dfcc731368b587a91ee5ae1be9ab21f121fb39baad7e";
 
 plant::PlantOptions small(unsigned seed = 3) {
     plant::PlantOptions o;
@@ -59,6 +69,36 @@ Residual residualWithTruth(const plant::PlantResult& r) {
     res.mae = diagnostics::meanAbsoluteError(all, std::vector<double>(all.size(), 0.0));
     res.lateMinusEarly = late / nl - early / ne;
     return res;
+}
+
+/// Disturbances held at one operating point: feed [kg/h], inlet moisture [% wb].
+plant::PlantDisturbances constantInputs(std::size_t n, double feedKgH, double xInPct, double tAmbC = 25,
+                                        double rh = 0.5) {
+    plant::PlantDisturbances d;
+    d.feedKgPerS.assign(n, feedKgH / 3600);
+    d.xInDb.assign(n, units::wetPctToDry(xInPct));
+    d.tInK.assign(n, units::celsiusToKelvin(25));
+    d.tAmbK.assign(n, units::celsiusToKelvin(tAmbC));
+    d.rhAmb.assign(n, rh);
+    d.airSpeedMPerS.assign(n, 16.0);
+    d.kDrift.assign(n, 1.0);
+    return d;
+}
+
+/// The last sample of a line held at a constant setpoint with ideal instruments.
+plant::PlantSample steadyState(plant::PlantKind kind, double hotC, double feedKgH, double xInPct) {
+    plant::PlantOptions o;
+    o.plant = kind;
+    o.sensors = plant::SensorMode::Ideal;
+    plant::PlantRandom random(1);
+    const std::size_t n = 400;
+    plant::PlantLine line(o, constantInputs(n, feedKgH, xInPct), units::celsiusToKelvin(hotC), random);
+    plant::PlantSample s;
+    for (std::size_t k = 0; k < n; ++k) {
+        s = line.measure();
+        line.apply(units::celsiusToKelvin(hotC));
+    }
+    return s;
 }
 
 } // namespace
@@ -146,8 +186,18 @@ private Q_SLOTS:
         QVERIFY(delayed->batches[0].xOutDb != base->batches[0].xOutDb);
     }
 
+    void realisticRanges_data() {
+        QTest::addColumn<int>("kind");
+        QTest::newRow("lumped") << static_cast<int>(plant::PlantKind::Lumped);
+        QTest::newRow("distributed") << static_cast<int>(plant::PlantKind::Distributed);
+    }
     void realisticRanges() {
-        auto r = plant::runPlant(plant::PlantOptions::demo(11));
+        QFETCH(int, kind);
+        auto o = plant::PlantOptions::demo(11, static_cast<plant::PlantKind>(kind));
+        if (o.plant == plant::PlantKind::Distributed) {
+            o.sensors = plant::SensorMode::Ideal; // ranges of the process; spikes are tested apart
+        }
+        auto r = plant::runPlant(o);
         QVERIFY(r.ok());
         QCOMPARE(r->batches.size(), std::size_t(10));
         QCOMPARE(r->batches[0].timeS.size(), std::size_t(6300));
@@ -183,6 +233,191 @@ private Q_SLOTS:
         QVERIFY2(xhMin > 12.0 && xhMax < 16.5, qPrintable(ranges));
         QVERIFY2(toMin > 40 && toMax < 66, qPrintable(ranges));
         QVERIFY2(thMin >= 139.5 && thMax <= 200.5, qPrintable(ranges));
+    }
+
+    // The distributed line moves water and enthalpy between its cells, layers and volume with
+    // conservative fluxes: over a constant-input run every section's balance closes.
+    void distributedBalancesClose() {
+        plant::PlantOptions o;
+        o.plant = plant::PlantKind::Distributed;
+        o.sensors = plant::SensorMode::Ideal;
+        o.effects[Mechanism::TubeWallHeatLoss] = 0.2; // the wall's loss must not enter the material's balance
+        plant::PlantRandom random(1);
+        const std::size_t n = 900;
+        plant::PlantLine line(o, constantInputs(n, 6200, 22), units::celsiusToKelvin(170), random);
+        for (std::size_t k = 0; k < n; ++k) {
+            line.measure();
+            line.apply(units::celsiusToKelvin(170 + (k > 300 ? 10.0 : 0.0))); // a step: stocks change too
+        }
+        const auto b = line.balance();
+        QVERIFY(b.has_value());
+        QVERIFY(!plant::PlantLine(plant::PlantOptions{}, constantInputs(10, 6200, 22), 440, random).balance());
+        const std::pair<const char*, const plant::SectionBalance*> sections[] = {
+            {"tube", &b->tube}, {"belt", &b->belt}, {"winnower", &b->winnower}};
+        for (const auto& [name, s] : sections) {
+            const QString what = QString("%1: water in %2 out %3 to air %4 stock %5; energy in %6 from air %7 out "
+                                         "%8 stock %9")
+                                     .arg(name)
+                                     .arg(s->waterInKg)
+                                     .arg(s->waterOutKg)
+                                     .arg(s->waterToAirKg)
+                                     .arg(s->waterStockChangeKg)
+                                     .arg(s->energyInJ)
+                                     .arg(s->energyFromAirJ)
+                                     .arg(s->energyOutJ)
+                                     .arg(s->energyStockChangeJ);
+            qInfo("%s: water imbalance %.2e, energy imbalance %.2e", name, s->waterImbalance(),
+                  s->energyImbalance());
+            QVERIFY2(s->waterInKg > 0 && s->waterToAirKg > 0, qPrintable(what)); // the section dries
+            QVERIFY2(std::abs(s->waterImbalance()) < 0.005, qPrintable(what));
+            QVERIFY2(std::abs(s->energyImbalance()) < 0.005, qPrintable(what));
+        }
+        QVERIFY(b->tube.wallLossJ > 0);
+        // The air cools along the tube: the strands took heat from it.
+        QVERIFY(b->tube.energyFromAirJ > 0);
+        QVERIFY(b->belt.energyFromAirJ < 0); // the belt cools the strands
+    }
+
+    // Set so that calibration still finds sensible values: at the demo's operating points the
+    // distributed line's steady states lie within 0.3 % wb and 2 K of the lumped plant's.
+    void distributedSteadyStatesMatchLumped_data() {
+        QTest::addColumn<double>("hotC");
+        QTest::addColumn<double>("feedKgH");
+        QTest::addColumn<double>("xInPct");
+        QTest::newRow("nominal") << 170.0 << 6200.0 << 22.0;
+        QTest::newRow("cool, low feed, dry") << 155.0 << 5900.0 << 20.5;
+        QTest::newRow("hot, high feed, wet") << 185.0 << 6500.0 << 23.5;
+        QTest::newRow("hot, low feed") << 185.0 << 5900.0 << 22.0;
+    }
+    void distributedSteadyStatesMatchLumped() {
+        QFETCH(double, hotC);
+        QFETCH(double, feedKgH);
+        QFETCH(double, xInPct);
+        const auto l = steadyState(plant::PlantKind::Lumped, hotC, feedKgH, xInPct);
+        const auto d = steadyState(plant::PlantKind::Distributed, hotC, feedKgH, xInPct);
+        const QString what = QString("lumped X_hdt %1 T_hdt %2 X_out %3 T_out %4; distributed %5 %6 %7 %8")
+                                 .arg(l.xHdtPct)
+                                 .arg(l.tHdtK - 273.15)
+                                 .arg(l.xOutTruePct)
+                                 .arg(l.tOutTrueK - 273.15)
+                                 .arg(d.xHdtPct)
+                                 .arg(d.tHdtK - 273.15)
+                                 .arg(d.xOutTruePct)
+                                 .arg(d.tOutTrueK - 273.15);
+        qInfo("%s", qPrintable(what));
+        QVERIFY2(std::abs(l.xHdtPct - d.xHdtPct) <= 0.3, qPrintable(what));
+        QVERIFY2(std::abs(l.xOutTruePct - d.xOutTruePct) <= 0.3, qPrintable(what));
+        QVERIFY2(std::abs(l.tHdtK - d.tHdtK) <= 2.0, qPrintable(what));
+        QVERIFY2(std::abs(l.tOutTrueK - d.tOutTrueK) <= 2.0, qPrintable(what));
+    }
+
+    // The lumped plant is kept for the tests and studies that need it: its demo files are
+    // byte-identical to those of earlier versions (SHA-256 of B01.csv then B02.csv, written by
+    // the code before the distributed plant existed).
+    void lumpedDemoFilesAreUnchanged() {
+        auto o = plant::PlantOptions::demo(2025, plant::PlantKind::Lumped);
+        o.batches = 2;
+        o.samples = 800;
+        auto r = plant::runPlant(o);
+        QVERIFY(r.ok());
+        QTemporaryDir dir;
+        QCryptographicHash hash(QCryptographicHash::Sha256);
+        for (const auto& pb : r->batches) {
+            const QString path = dir.filePath(QString::fromStdString(pb.id) + ".csv");
+            QVERIFY(data::writeBatchFile(plant::toBatch(pb, o.seed), path.toStdString()).ok());
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            hash.addData(f.readAll());
+        }
+        QCOMPARE(QString(hash.result().toHex()), QString(kLumpedDemoSha256));
+    }
+
+    // Each transmitter's statistics match its settings: noise SD within 10 %, spike and dropout
+    // rates within 20 % (100 h of a constant true value, rates raised so that the counts are large).
+    void sensorStatisticsMatchTheirSettings_data() {
+        QTest::addColumn<int>("channel");
+        QTest::newRow("X_in NIR") << static_cast<int>(plant::SensorChannel::InletMoisture);
+        QTest::newRow("X_out NIR") << static_cast<int>(plant::SensorChannel::OutletMoisture);
+        QTest::newRow("T_hot thermocouple") << static_cast<int>(plant::SensorChannel::HotAir);
+        QTest::newRow("RH hygrometer") << static_cast<int>(plant::SensorChannel::AmbientHumidity);
+    }
+    void sensorStatisticsMatchTheirSettings() {
+        QFETCH(int, channel);
+        const auto& spec = plant::realisticSensors()[static_cast<std::size_t>(channel)];
+        plant::SensorFaultRates rates;
+        rates.spikesPerHour = 20;
+        rates.stuckPerHour = 0;
+        rates.dropoutsPerHour = 10;
+        plant::Sensor sensor(spec, rates, false);
+        std::mt19937_64 rng(42);
+        const double truth = 50.0;
+        const long n = 360000;
+        double sum2 = 0;
+        long clean = 0, spikes = 0, dropouts = 0;
+        bool inDropout = false;
+        for (long i = 0; i < n; ++i) {
+            const double v = sensor.read(truth, rng);
+            if (std::isnan(v)) {
+                dropouts += inDropout ? 0 : 1;
+                inDropout = true;
+                continue;
+            }
+            inDropout = false;
+            const double e = v - truth;
+            if (std::abs(e) > 0.4 * spec.spikeSize) { // spikes are 0.75–1.25 × their size, at least 12 SD
+                ++spikes;
+                continue;
+            }
+            sum2 += e * e;
+            ++clean;
+        }
+        QVERIFY(spec.spikeSize >= 12 * spec.noiseSd);
+        const double sd = std::sqrt(sum2 / clean);
+        const double hours = n / 3600.0;
+        const QString what = QString("SD %1 (set %2), spikes %3/h, dropouts %4/h")
+                                 .arg(sd)
+                                 .arg(spec.noiseSd)
+                                 .arg(spikes / hours)
+                                 .arg(dropouts / hours);
+        QVERIFY2(std::abs(sd / spec.noiseSd - 1) < 0.10, qPrintable(what));
+        // A spike that falls inside a dropout is not seen; the expected count allows for it.
+        const double visible = 1 - rates.dropoutsPerHour * 16.5 / 3600;
+        QVERIFY2(std::abs(spikes / hours / (rates.spikesPerHour * visible) - 1) < 0.20, qPrintable(what));
+        QVERIFY2(std::abs(dropouts / hours / rates.dropoutsPerHour - 1) < 0.20, qPrintable(what));
+    }
+
+    // The three sensor causes of CONTRACT.md §4 act on the readings, not on the line.
+    void sensorMechanismsActOnTheReadings() {
+        auto o = small();
+        o.plant = plant::PlantKind::Distributed;
+        o.batches = 1;
+        o.sensors = plant::SensorMode::Ideal;
+        auto base = plant::runPlant(o);
+        auto offset = o;
+        offset.effects[Mechanism::InletMoistureSensorOffset] = 0.5;
+        auto noisy = o;
+        noisy.effects[Mechanism::InletMoistureSensorNoise] = 0.4;
+        auto lag = o;
+        lag.effects[Mechanism::HotAirSensorLag] = 60;
+        auto ro = plant::runPlant(offset);
+        auto rn = plant::runPlant(noisy);
+        auto rl = plant::runPlant(lag);
+        QVERIFY(base.ok() && ro.ok() && rn.ok() && rl.ok());
+        const auto& b = base->batches[0];
+        double meanShift = 0, scatter = 0, hotDiff = 0;
+        const std::size_t n = b.timeS.size();
+        for (std::size_t k = 0; k < n; ++k) {
+            meanShift += (units::dryToWetPct(ro->batches[0].xInDb[k]) - units::dryToWetPct(b.xInDb[k])) / n;
+            const double d = units::dryToWetPct(rn->batches[0].xInDb[k]) - units::dryToWetPct(b.xInDb[k]);
+            scatter += d * d / n;
+            hotDiff += std::abs(rl->batches[0].tHotK[k] - b.tHotK[k]) / n;
+        }
+        QVERIFY2(std::abs(meanShift - 0.5) < 0.05, qPrintable(QString::number(meanShift)));
+        // The plant's feedforward sees the offset, so the product moves too: no effect on X_out
+        // would mean the line ignored what its own gauge says.
+        QVERIFY(ro->batches[0].xOutDb != b.xOutDb);
+        QVERIFY2(std::abs(std::sqrt(scatter) - 0.4) < 0.08, qPrintable(QString::number(std::sqrt(scatter))));
+        QVERIFY2(hotDiff > 0.05, qPrintable(QString::number(hotDiff)));
     }
 
     void exportKeepsTheContract() {

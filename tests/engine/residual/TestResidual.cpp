@@ -24,7 +24,7 @@ struct Fixture {
 
 const Fixture& demoFixture() {
     static const Fixture f = [] {
-        auto o = plant::PlantOptions::demo(7);
+        auto o = plant::PlantOptions::demo(7, plant::PlantKind::Lumped);
         o.batches = 4;
         o.samples = 2500;
         auto r = plant::runPlant(o);

@@ -55,7 +55,7 @@ private Q_SLOTS:
         QVERIFY(m_dir.isValid());
         m_data = m_dir.filePath("plant");
         workflow::GenerateOptions g;
-        g.plant = plant::PlantOptions::demo(5);
+        g.plant = plant::PlantOptions::demo(5, plant::PlantKind::Lumped);
         g.plant.batches = 3;
         g.plant.samples = 1500;
         g.outFolder = m_data.toStdString();
@@ -106,6 +106,36 @@ private Q_SLOTS:
         QVERIFY(!third.ok());
         QCOMPARE(third.error().code, ErrorCode::ModelFileInvalid);
         QCOMPARE(s.dataSet().get(), before.get()); // a bad model file does not load the data either
+    }
+
+    // A real line is never the model: on the distributed plant with no mechanism and no drift,
+    // the calibrated PBM still leaves a structured error (issue #22's bar).
+    void calibratedModelLeavesStructureOnTheDistributedPlant() {
+        QTemporaryDir dir;
+        workflow::GenerateOptions g;
+        g.plant.plant = plant::PlantKind::Distributed;
+        g.plant.seed = 21;
+        g.plant.batches = 4;
+        g.plant.samples = 3000;
+        g.outFolder = dir.filePath("null").toStdString();
+        QVERIFY(workflow::Session().generate(g).ok());
+        workflow::Session s;
+        workflow::OpenOptions o;
+        o.dataPath = g.outFolder;
+        QVERIFY(s.open(o).ok());
+        auto cal = s.calibrate();
+        QVERIFY2(cal.ok(), cal ? "" : cal.error().message().c_str());
+        auto ev = s.evaluate();
+        QVERIFY2(ev.ok(), ev ? "" : ev.error().message().c_str());
+        const auto pbm = std::find_if(ev->evaluation.models.begin(), ev->evaluation.models.end(),
+                                      [](const auto& m) { return m.name == "pbm"; });
+        QVERIFY(pbm != ev->evaluation.models.end());
+        const QString what = QString("held-out MAE X_out %1 %% wb, Ljung-Box p %2")
+                                 .arg(pbm->moisture.mae)
+                                 .arg(pbm->moisture.ljungBoxP);
+        qInfo("%s", qPrintable(what));
+        QVERIFY2(pbm->moisture.mae >= 0.04, qPrintable(what));
+        QVERIFY2(pbm->moisture.ljungBoxP < 1e-6, qPrintable(what));
     }
 
     void simulateCalibrateTrainEvaluate() {
