@@ -76,6 +76,21 @@
         <source>Ambient re-absorption</source>
         <translation>环境回潮</translation>
     </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="84"/>
+        <source>Inlet moisture gauge offset</source>
+        <translation>入口水分仪零点偏移</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="86"/>
+        <source>Hot-air thermocouple lag</source>
+        <translation>热风热电偶滞后</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="88"/>
+        <source>Inlet moisture gauge scatter</source>
+        <translation>入口水分仪读数离散</translation>
+    </message>
 </context>
 <context>
     <name>TrainingRunner</name>
@@ -596,175 +611,175 @@
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="78"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="79"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="81"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="82"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)</source>
         <translation>误差随进料量和入口水分增大（按 feed_kg_h 和 X_in_pct 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="84"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="85"/>
         <source>the error drifts within every batch and resets at each batch start</source>
         <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="86"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="87"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="91"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="93"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="94"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="99"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="100"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="116"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="117"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="120"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="121"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="121"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="122"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="125"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="126"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="125"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="126"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="156"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
         <source>Verdict: %1. No mechanism is named.</source>
         <translation>结论：%1。未命名任何机理。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="158"/>
         <source>Verdict: %1. Named: %2.</source>
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="164"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="165"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="164"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="165"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="185"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="186"/>
         <source>%1 at %2 s (ccf %3%4)</source>
         <translation>%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="189"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="190"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="192"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="193"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="201"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="202"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="208"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="209"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="222"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="223"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="226"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="227"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="232"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="233"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="243"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="244"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="111"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="244"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="251"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="112"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="245"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="252"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="245"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="246"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="111"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="246"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="112"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="247"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="247"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="248"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="248"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="249"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="251"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="252"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="268"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="269"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="269"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="270"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -1630,399 +1645,399 @@
 <context>
     <name>drytwin::widgets::TrainingPanel</name>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="105"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="111"/>
         <source>The line&apos;s conditions: initial levels, load changes, seed (docs/mpc.md)</source>
         <translation>产线条件：初始水平、负荷变化、随机种子（docs/mpc.md）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="106"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="112"/>
         <source>Start session</source>
         <translation>开始会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="107"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="113"/>
         <source>Instructor view</source>
         <translation>教员视图</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="109"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="115"/>
         <source>Shows the instructor&apos;s controls, the faults, the true moisture and the score; hide it before handing the screen to the trainee</source>
         <translation>显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="111"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="117"/>
         <source>No session</source>
         <translation>无会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="120"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="126"/>
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="127"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="133"/>
         <source> % wb</source>
         <translation> % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="129"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="135"/>
         <source>Apply</source>
         <translation>应用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="136"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="138"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="144"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="148"/>
         <source>X_out setpoint</source>
         <translation>X_out 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="143"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="149"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="147"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="153"/>
         <source>Diagnose the recording…</source>
         <translation>诊断记录…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="148"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="154"/>
         <source>Saves what the line recorded so far as a batch file and opens it, so that the Discover tab can show what the model gets wrong</source>
         <translation>将产线至今的记录保存为批次文件并打开，以便“发现”页显示模型哪里出错</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="151"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="492"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="157"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="498"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="155"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="161"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="158"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="164"/>
         <source>Trainee</source>
         <translation>学员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="165"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="171"/>
         <source>Causes named (session time):</source>
         <translation>已给出的原因（会话时间）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="169"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="477"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="175"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="483"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="173"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="179"/>
         <source> min</source>
         <translation> 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="174"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="180"/>
         <source>Run ahead</source>
         <translation>快进</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="175"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
         <source>Runs the line this much further at full speed</source>
         <translation>以最快速度让产线再运行这么久</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="177"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="183"/>
         <source>label (default: the time)</source>
         <translation>标签（默认：时间）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="178"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="184"/>
         <source>Take snapshot</source>
         <translation>拍摄快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="187"/>
         <source>Restore selected</source>
         <translation>恢复所选快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="191"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="197"/>
         <source> s from now</source>
         <translation> 秒后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="192"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="198"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
         <source>Strength</source>
         <translation>强度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
         <source>Acts from</source>
         <translation>起作用时间</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
         <source>Found after</source>
         <translation>发现用时</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="197"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="203"/>
         <source>Save session…</source>
         <translation>保存会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="198"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="204"/>
         <source>Open session…</source>
         <translation>打开会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="205"/>
         <source>Instructor</source>
         <translation>教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="212"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="218"/>
         <source>Clock and snapshots</source>
         <translation>时钟与快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="220"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="226"/>
         <source>Faults</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="224"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="230"/>
         <source>A session file holds the scenario, every event (faults, snapshots, answers) and the recording as a batch file; reopening replays it to the same data.</source>
         <translation>会话文件包含工况、每个事件（故障、快照、回答）以及作为批次文件的记录；重新打开时会回放得到相同的数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="233"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="239"/>
         <source>Session file</source>
         <translation>会话文件</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="236"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="242"/>
         <source>Start a session: the line runs live under its PI loop.</source>
         <translation>开始会话：产线在其 PI 回路下实时运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="253"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="259"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="254"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="260"/>
         <source>T_hot [°C]</source>
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="255"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="261"/>
         <source>Feed [t/h]</source>
         <translation>进料 [t/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="256"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="262"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="257"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="263"/>
         <source>session time [min]</source>
         <translation>会话时间 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="259"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="265"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="261"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="267"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="262"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="268"/>
         <source>X_out measured</source>
         <translation>X_out 测量值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="263"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
         <source>X_out true (instructor)</source>
         <translation>X_out 真实值（教员）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="266"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="272"/>
         <source>T_hot setpoint</source>
         <translation>T_hot 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="267"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="273"/>
         <source>T_hot</source>
         <translation>T_hot</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="268"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="274"/>
         <source>feed</source>
         <translation>进料</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="275"/>
         <source>X_in</source>
         <translation>X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="274"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="280"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="275"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="281"/>
         <source>Stops the replay or the run ahead; the line stays where it got to</source>
         <translation>停止回放或快进；产线停留在已运行到的位置</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="277"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="283"/>
         <source>Scenario</source>
         <translation>工况</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="339"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="345"/>
         <source>Select a snapshot to restore.</source>
         <translation>请选择要恢复的快照。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="349"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="355"/>
         <source>Save the session into a folder</source>
         <translation>将会话保存到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="356"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="362"/>
         <source>Open a training session</source>
         <translation>打开培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="356"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="362"/>
         <source>Sessions (*.json)</source>
         <translation>会话 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="365"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="371"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="372"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="378"/>
         <source>Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录以供诊断：%1。请在其上运行“发现”，然后在此给出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="376"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="382"/>
         <source>Session saved: %1</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="409"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="415"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="413"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="419"/>
         <source>The previous session was saved in %1.</source>
         <translation>上一个会话已保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="426"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="432"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="472"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="478"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="474"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="480"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="474"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="480"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="474"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="480"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="476"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="482"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="477"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="483"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="487"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="493"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="488"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="494"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="492"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="498"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="499"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="505"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="509"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="515"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="509"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="515"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="512"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="518"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="523"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="529"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>

@@ -44,6 +44,7 @@ double plantGain(const Scenario& scenario, const plant::PlantOptions& plantOptio
     calm.lengthS = 10;
     plant::PlantOptions o = plantOptions;
     o.noiseScale = 0;
+    o.sensors = plant::SensorMode::Ideal; // a step test reads the true product, whatever the plant
     o.unmeasuredDrift = false;
     o.samples = calm.warmupS + calm.lengthS + 1;
     double x[2] = {0, 0};
@@ -175,25 +176,36 @@ std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybri
 
 namespace {
 
+/// Appends a reading to a controller's series; a dropout (NaN) holds the last good value, as a DCS
+/// shows a value of bad quality, so that no controller is fed a missing cell. A series that never
+/// had a good value takes @p fallback.
+void appendHeld(std::vector<double>& series, double reading, double fallback) {
+    if (std::isfinite(reading)) {
+        series.push_back(reading);
+    } else {
+        series.push_back(series.empty() ? fallback : series.back());
+    }
+}
+
 /// The record of the run so far as the controller's batch (SI, dry basis).
 void appendMeasuredOutputs(data::SiBatch& b, const plant::PlantSample& s) {
-    b.xOutDb.push_back(units::wetPctToDry(s.xOutPct));
-    b.tOutK.push_back(s.tOutK);
-    b.xHdtDb.push_back(units::wetPctToDry(s.xHdtPct));
-    b.tHdtK.push_back(s.tHdtK);
+    appendHeld(b.xOutDb, units::wetPctToDry(s.xOutPct), units::wetPctToDry(s.xOutTruePct));
+    appendHeld(b.tOutK, s.tOutK, s.tOutTrueK);
+    appendHeld(b.xHdtDb, units::wetPctToDry(s.xHdtPct), units::wetPctToDry(s.xOutTruePct));
+    appendHeld(b.tHdtK, s.tHdtK, s.tOutTrueK);
     b.keep.push_back(1);
 }
 
 void appendAppliedInputs(data::SiBatch& b, const plant::PlantBatch& rec, std::size_t k) {
     b.timeS.push_back(static_cast<double>(k));
     b.tHotSpK.push_back(rec.tHotSpK[k]);
-    b.tHotK.push_back(rec.tHotK[k]);
-    b.airSpeedMPerS.push_back(rec.airSpeedMPerS[k]);
-    b.feedKgPerS.push_back(rec.feedKgPerS[k]);
-    b.xInDb.push_back(rec.xInDb[k]);
-    b.tInK.push_back(rec.tInK[k]);
-    b.tAmbK.push_back(rec.tAmbK[k]);
-    b.rhAmb.push_back(rec.rhAmb[k]);
+    appendHeld(b.tHotK, rec.tHotK[k], rec.tHotSpK[k]);
+    appendHeld(b.airSpeedMPerS, rec.airSpeedMPerS[k], 16.0);
+    appendHeld(b.feedKgPerS, rec.feedKgPerS[k], units::kgPerHourToKgPerS(6200));
+    appendHeld(b.xInDb, rec.xInDb[k], units::wetPctToDry(22));
+    appendHeld(b.tInK, rec.tInK[k], units::celsiusToKelvin(25));
+    appendHeld(b.tAmbK, rec.tAmbK[k], units::celsiusToKelvin(22));
+    appendHeld(b.rhAmb, rec.rhAmb[k], 0.5);
 }
 
 } // namespace
@@ -305,6 +317,8 @@ plant::PlantOptions scenarioPlantOptions(const Scenario& s) {
     o.samples = std::max(200, s.warmupS + s.lengthS +
                                   1); // the plant's own lower limit; the line runs as long as the scenario
     o.noiseScale = s.noiseScale;
+    o.plant = s.plant;
+    o.sensors = s.sensors;
     o.unmeasuredDrift = s.unmeasuredDrift;
     o.targetXOutPct = s.setpointPct;
     for (const auto& m : s.mechanisms) {

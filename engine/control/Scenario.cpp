@@ -139,7 +139,7 @@ Expected<Scenario> parseScenario(const std::string& text, const std::string& pla
     const Reader r{text, place};
     if (auto st = r.onlyKeys(j,
                              {"name", "description", "seed", "length_s", "warmup_s", "control_interval_s",
-                              "initial", "band_pct", "fluctuation", "noise_scale", "unmeasured_drift",
+                              "initial", "band_pct", "fluctuation", "noise_scale", "unmeasured_drift", "plant", "sensors",
                               "setpoint_steps", "input_changes", "mechanisms"},
                              {}, 0);
         !st) {
@@ -167,6 +167,18 @@ Expected<Scenario> parseScenario(const std::string& text, const std::string& pla
     DT_TRY_ASSIGN(s.bandPct, r.number(j, "band_pct", 0.5, 0.01, 5));
     DT_TRY_ASSIGN(s.fluctuation, r.number(j, "fluctuation", 1, 0, 5));
     DT_TRY_ASSIGN(s.noiseScale, r.number(j, "noise_scale", 1, 0, 10));
+    if (j.contains("plant")) {
+        if (!j["plant"].is_string() || (j["plant"] != "distributed" && j["plant"] != "lumped")) {
+            return r.error({}, 0, "plant", "must be \"distributed\" or \"lumped\"");
+        }
+        s.plant = j["plant"] == "distributed" ? plant::PlantKind::Distributed : plant::PlantKind::Lumped;
+    }
+    if (j.contains("sensors")) {
+        if (!j["sensors"].is_string() || (j["sensors"] != "realistic" && j["sensors"] != "ideal")) {
+            return r.error({}, 0, "sensors", "must be \"realistic\" or \"ideal\"");
+        }
+        s.sensors = j["sensors"] == "ideal" ? plant::SensorMode::Ideal : plant::SensorMode::Realistic;
+    }
     if (j.contains("unmeasured_drift")) {
         if (!j["unmeasured_drift"].is_boolean()) {
             return r.error({}, 0, "unmeasured_drift", "must be true or false");

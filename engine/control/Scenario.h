@@ -1,7 +1,7 @@
 #pragma once
 
 #include "common/Error.h"
-#include "plant/Mechanisms.h"
+#include "plant/VirtualPlant.h"
 
 #include <string>
 #include <vector>
@@ -52,7 +52,11 @@ struct Scenario {
     double rhPct = 50.0;
     double airSpeedMPerS = 16.0;
     double fluctuation = 1.0; ///< scale of the inputs' random fluctuations (0: none)
-    double noiseScale = 1.0;  ///< scale of the instruments' noise (0: ideal)
+    double noiseScale = 1.0;  ///< scale of the lumped plant's built-in instruments' noise (0: ideal)
+    /// The plant the controllers run against (file key "plant"; files without it: the lumped plant,
+    /// which every scenario ran on before the distributed plant existed).
+    plant::PlantKind plant = plant::PlantKind::Lumped;
+    plant::SensorMode sensors = plant::SensorMode::Default; ///< file key "sensors": realistic | ideal
     bool unmeasuredDrift = true;
     std::vector<SetpointStep> setpointSteps;
     std::vector<InputChange> inputChanges;

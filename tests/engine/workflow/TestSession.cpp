@@ -130,7 +130,7 @@ private Q_SLOTS:
         const auto pbm = std::find_if(ev->evaluation.models.begin(), ev->evaluation.models.end(),
                                       [](const auto& m) { return m.name == "pbm"; });
         QVERIFY(pbm != ev->evaluation.models.end());
-        const QString what = QString("held-out MAE X_out %1 %% wb, Ljung-Box p %2")
+        const QString what = QString("held-out MAE X_out %1 % wb, Ljung-Box p %2")
                                  .arg(pbm->moisture.mae)
                                  .arg(pbm->moisture.ljungBoxP);
         qInfo("%s", qPrintable(what));
