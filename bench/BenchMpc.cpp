@@ -1,7 +1,8 @@
 // The closed-loop benchmark of issue #12: the bundled 1,000-step scenario with all five
 // controllers (wall time, Ipopt time per decision), then the same scenario over further seeds of
 // its disturbances and noise, so that the ranking is not one seed's.
-//   bench_mpc MODEL_FILE [SEEDS]     (MODEL_FILE: e.g. the pipeline's model.json)
+//   bench_mpc MODEL_FILE [SEEDS] [distributed|lumped]   (MODEL_FILE: e.g. the pipeline's model.json;
+//   the plant: the scenario's own, distributed since issue #22, unless named)
 #include "control/BundledScenarios.h"
 #include "control/ClosedLoop.h"
 #include "io/ModelFile.h"
@@ -16,7 +17,7 @@ using namespace drytwin;
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: bench_mpc MODEL_FILE [SEEDS]\n");
+        std::fprintf(stderr, "usage: bench_mpc MODEL_FILE [SEEDS] [distributed|lumped]\n");
         return 2;
     }
     auto model = io::readModelFile(argv[1]);
@@ -31,6 +32,15 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "bench_mpc: %s\n", scenario.error().message().c_str());
         return 3;
     }
+    if (argc > 3) {
+        const std::string kind = argv[3];
+        if (kind != "distributed" && kind != "lumped") {
+            std::fprintf(stderr, "bench_mpc: the plant is 'distributed' or 'lumped', not '%s'\n", argv[3]);
+            return 2;
+        }
+        scenario->plant = kind == "lumped" ? plant::PlantKind::Lumped : plant::PlantKind::Distributed;
+    }
+    std::printf("plant: %s\n", std::string(plant::plantKindName(scenario->plant)).c_str());
     const control::ClosedLoopOptions options;
     std::map<std::string, std::vector<double>> iae, viol;
     int pgrlBeatsPbmIae = 0, pgrlFewerViolations = 0, mpcBeatsPi = 0;

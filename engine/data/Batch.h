@@ -3,6 +3,7 @@
 #include "data/Columns.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,18 @@ struct MissingCell {
     int line = 0;   ///< 1-based line in the file
     int column = 0; ///< 1-based column in the file
     std::string columnName;
+};
+
+/// @brief Where a production run cut from a long plant file (a historian export) came from.
+struct RunSource {
+    std::string file;
+    int firstLine = 0; ///< first and last file line of the run's samples
+    int lastLine = 0;
+    std::string startTimestamp; ///< the run's first sample as the file's clock says (ISO 8601)
+    std::size_t samples = 0;           ///< rows of the file in the run
+    std::size_t interpolatedCells = 0; ///< cells of the step's grid filled by interpolation
+    std::size_t gapCells = 0;          ///< cells of the grid left missing (no sample near enough)
+    std::string splitReason;           ///< why the run ended: "line stop", "gap", "batch id", "clock jump", "end of file"
 };
 
 /// @brief One production batch as read from its file, in file units (CONTRACT.md §1).
@@ -40,6 +53,9 @@ struct Batch {
 
     std::vector<int> lineOfRow; ///< file line of each data row, for messages
     std::vector<MissingCell> missing;
+    /// Set when the batch is a run cut from a long plant file; lineOfRow then gives, for each
+    /// row of the step's grid, the file line of the sample at or before it.
+    std::optional<RunSource> run;
 
     std::size_t rows() const { return lineOfRow.size(); }
     /// @brief Values of a contract column, or nullptr when the file does not have it.

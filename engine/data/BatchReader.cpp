@@ -1,6 +1,7 @@
 #include "data/BatchReader.h"
 
 #include "common/AtomicFile.h"
+#include "data/PlantFileReader.h"
 
 #include <algorithm>
 #include <cctype>
@@ -121,12 +122,7 @@ extern "C" void onCsvRowEnd(int, void* data) {
 
 } // namespace
 
-Expected<Batch> parseBatchText(const std::string& rawText, const std::string& displayName,
-                               const ReadOptions& options) {
-    const std::string& file = displayName;
-    if (auto st = options.validate(); !st) {
-        return st.error();
-    }
+Status checkBatchTextEncoding(const std::string& rawText, const std::string& file) {
     if (rawText.empty()) {
         return badInput(file, 1, 1, "empty file");
     }
@@ -151,6 +147,18 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
         int column = 0;
         lineAndColumnOf(rawText, rawText.find('\0'), line, column);
         return badInput(file, line, column, "NUL byte in a text file");
+    }
+    return {};
+}
+
+Expected<Batch> parseBatchText(const std::string& rawText, const std::string& displayName,
+                               const ReadOptions& options) {
+    const std::string& file = displayName;
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    if (auto st = checkBatchTextEncoding(rawText, file); !st) {
+        return st.error();
     }
     std::string_view text(rawText);
     if (text.substr(0, 3) == "\xEF\xBB\xBF") {
@@ -415,17 +423,34 @@ LoadResult loadDataSet(const std::string& path, const ReadOptions& options, cons
             result.cancelled = true;
             break;
         }
-        auto batch = readBatchFile(files[i], options);
-        if (!batch) {
-            result.errors.push_back(batch.error());
+        // A long plant file (a historian export) may hold several production runs.
+        const auto fileProgress = [&](const ProgressInfo& info) {
+            if (!progress) {
+                return ProgressAction::Continue;
+            }
+            const double f = (static_cast<double>(i) + info.fraction) / static_cast<double>(files.size());
+            return progress(ProgressInfo{"load", f, info.detail});
+        };
+        auto read = readPlantFile(files[i], options, fileProgress);
+        if (!read) {
+            if (read.error().kind == ErrorKind::Cancelled) {
+                result.cancelled = true;
+                break;
+            }
+            result.errors.push_back(read.error());
             continue;
         }
-        if (!ids.insert(batch->id).second) {
-            result.errors.push_back(
-                {ErrorKind::BadInput, files[i], "batch id '" + batch->id + "' is used by an earlier file"});
-            continue;
+        for (auto& note : read->notes) {
+            result.notes.push_back(std::move(note));
         }
-        result.dataSet.batches.push_back(std::move(*batch));
+        for (auto& batch : read->runs) {
+            if (!ids.insert(batch.id).second) {
+                result.errors.push_back({ErrorKind::BadInput, files[i],
+                                         "batch id '" + batch.id + "' is used by an earlier file or run"});
+                continue;
+            }
+            result.dataSet.batches.push_back(std::move(batch));
+        }
     }
     reportProgress(progress, "load", 1.0);
     result.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

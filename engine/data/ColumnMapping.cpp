@@ -4,6 +4,7 @@
 #include "data/Columns.h"
 
 #include <algorithm>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -99,7 +100,32 @@ double ColumnMapping::toContractUnit(Column column, double v) const {
     return v; // the contract's own unit
 }
 
+Status RunSplitOptions::validate() const {
+    if (!(stepS > 0 && stepS <= 60)) {
+        return Error{ErrorKind::BadInput, "column mapping: runs.step_s", "must lie in (0, 60] s"};
+    }
+    if (!(lineStopFeedKgPerHour >= 0 && minStopS >= 0 && minRunS >= 0)) {
+        return Error{ErrorKind::BadInput, "column mapping: runs", "thresholds must not be negative"};
+    }
+    if (!(maxInterpolatedGapS >= stepS)) {
+        return Error{ErrorKind::BadInput, "column mapping: runs.max_interpolated_gap_s",
+                     "must be at least the step"};
+    }
+    return {};
+}
+
 Status ColumnMapping::validate() const {
+    if (auto st = runs.validate(); !st) {
+        return st;
+    }
+    static const char* formats[] = {"",        "seconds", "iso8601",    "Y/m/d",  "d.m.Y",
+                                    "d/m/Y",   "m/d/Y",   "excel_days", "epoch_s", "epoch_ms"};
+    if (std::find(std::begin(formats), std::end(formats), timeFormat) == std::end(formats)) {
+        return Error{ErrorKind::BadInput, "column mapping: time_s.format",
+                     "'" + timeFormat +
+                         "' is not one of seconds, iso8601, Y/m/d, d.m.Y, d/m/Y, m/d/Y, excel_days, epoch_s, "
+                         "epoch_ms"};
+    }
     for (const auto& [contract, unit] : contractToUnit) {
         const auto id = columnByName(contract);
         if (!id) {
@@ -145,7 +171,42 @@ Expected<ColumnMapping> readColumnMapping(const std::string& path) {
             return Error{ErrorKind::BadInput, path, "a column mapping must be a JSON object"};
         }
         for (const auto& [key, value] : j.items()) {
+            if (key == "batch_id") {
+                if (!value.is_object() || !value.contains("header") || !value["header"].is_string()) {
+                    return Error{ErrorKind::BadInput, path, "\"batch_id\" must be {\"header\": \"<column>\"}"};
+                }
+                mapping.batchIdHeader = value["header"].get<std::string>();
+                continue;
+            }
+            if (key == "runs") {
+                if (!value.is_object()) {
+                    return Error{ErrorKind::BadInput, path, "\"runs\" must be an object"};
+                }
+                const std::pair<const char*, double*> fields[] = {
+                    {"step_s", &mapping.runs.stepS},
+                    {"line_stop_feed_kg_h", &mapping.runs.lineStopFeedKgPerHour},
+                    {"min_stop_s", &mapping.runs.minStopS},
+                    {"max_interpolated_gap_s", &mapping.runs.maxInterpolatedGapS},
+                    {"min_run_s", &mapping.runs.minRunS}};
+                for (const auto& [k, v] : value.items()) {
+                    auto it = std::find_if(std::begin(fields), std::end(fields),
+                                           [&](const auto& f) { return k == f.first; });
+                    if (it == std::end(fields) || !v.is_number()) {
+                        return Error{ErrorKind::BadInput, path,
+                                     "runs." + k + ": not a number or not one of step_s, line_stop_feed_kg_h, "
+                                                   "min_stop_s, max_interpolated_gap_s, min_run_s"};
+                    }
+                    *it->second = v.get<double>();
+                }
+                continue;
+            }
             if (value.is_object() && value.contains("header") && value["header"].is_string()) {
+                if (key == "time_s" && value.contains("format")) {
+                    if (!value["format"].is_string()) {
+                        return Error{ErrorKind::BadInput, path, "the format of 'time_s' must be a string"};
+                    }
+                    mapping.timeFormat = value["format"].get<std::string>();
+                }
                 mapping.contractToFile[key] = value["header"].get<std::string>();
                 if (value.contains("unit")) {
                     if (!value["unit"].is_string()) {

@@ -10,6 +10,16 @@
 
 namespace drytwin::data {
 
+/// @brief How one long plant file is cut into production runs and put on the model's time step.
+struct RunSplitOptions {
+    double stepS = 1.0;                 ///< the model's step: runs are resampled onto it
+    double lineStopFeedKgPerHour = 500; ///< feed below this: the line stands
+    double minStopS = 60;               ///< a dip of the feed shorter than this is not a stop
+    double maxInterpolatedGapS = 10;    ///< a gap in time up to this is interpolated; longer splits
+    double minRunS = 300;               ///< shorter runs are left out (and reported)
+    Status validate() const;
+};
+
 /// @brief Maps contract column names to the names a plant's files use
 /// (e.g. "X_out_pct" -> "Moisture_Outlet"). Unmapped contract columns keep their own name.
 struct ColumnMapping {
@@ -17,6 +27,13 @@ struct ColumnMapping {
     /// The unit a plant's file uses for a contract column, when it is not the contract's
     /// (e.g. "T_hot_C" -> "degF"); values are converted to the contract's unit when read.
     std::map<std::string, std::string> contractToUnit;
+    /// How the time column is written (CONTRACT.md §1 `"time_s": {"header": …, "format": …}`):
+    /// empty = detected; "seconds", "iso8601", "Y/m/d", "d.m.Y", "d/m/Y", "m/d/Y",
+    /// "excel_days", "epoch_s", "epoch_ms".
+    std::string timeFormat;
+    /// A column that names the production run (`"batch_id": {"header": "Batch"}`); empty: none.
+    std::string batchIdHeader;
+    RunSplitOptions runs; ///< the mapping file's optional "runs" object
 
     /// @brief Contract name for a header found in a file ("" when it maps to none).
     std::string contractNameFor(const std::string& fileHeader) const;
