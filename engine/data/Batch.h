@@ -71,6 +71,8 @@ struct Batch {
 /// @brief A data set: batches in name order.
 struct DataSet {
     std::vector<Batch> batches;
+    /// What reading the files noticed (duplicate stamps, clock jumps, runs left out), file:line.
+    std::vector<std::string> notes;
     std::size_t totalRows() const;
     std::size_t totalMissing() const;
 };

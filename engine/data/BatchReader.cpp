@@ -441,7 +441,8 @@ LoadResult loadDataSet(const std::string& path, const ReadOptions& options, cons
             continue;
         }
         for (auto& note : read->notes) {
-            result.notes.push_back(std::move(note));
+            result.notes.push_back(note);
+            result.dataSet.notes.push_back(std::move(note));
         }
         for (auto& batch : read->runs) {
             if (!ids.insert(batch.id).second) {

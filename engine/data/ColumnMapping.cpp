@@ -164,9 +164,13 @@ Expected<ColumnMapping> readColumnMapping(const std::string& path) {
     if (!text) {
         return text.error();
     }
+    return readColumnMappingText(*text, path);
+}
+
+Expected<ColumnMapping> readColumnMappingText(const std::string& text, const std::string& path) {
     ColumnMapping mapping;
     try {
-        const auto j = nlohmann::json::parse(*text);
+        const auto j = nlohmann::json::parse(text);
         if (!j.is_object()) {
             return Error{ErrorKind::BadInput, path, "a column mapping must be a JSON object"};
         }

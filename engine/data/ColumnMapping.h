@@ -52,5 +52,7 @@ std::vector<std::string> unitsFor(Column column);
 /// @brief Reads a mapping file: a JSON object {"<contract name>": "<file header>", ...}; a value
 /// may also be {"header": "<file header>", "unit": "<unit>"} for a column in another unit.
 Expected<ColumnMapping> readColumnMapping(const std::string& path);
+/// @brief readColumnMapping of JSON text; @p name is used in messages.
+Expected<ColumnMapping> readColumnMappingText(const std::string& text, const std::string& name);
 
 } // namespace drytwin::data

@@ -18,6 +18,7 @@ std::string formatNumber(double v) {
 
 DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOptions) {
     DataSetSummary s;
+    s.notes = data.notes;
     s.cleaning = clean(data, cleaningOptions);
     std::vector<double> sum(kColumnCount, 0.0);
     std::vector<std::size_t> count(kColumnCount, 0);
@@ -36,6 +37,7 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
         BatchSummary bs;
         bs.id = b.id;
         bs.path = b.sourcePath;
+        bs.run = b.run;
         bs.rows = b.rows();
         bs.missing = b.missing.size();
         const auto& keep = s.cleaning.keep[bi];

@@ -30,6 +30,7 @@ struct BatchSummary {
     double largestGapS = 0;
     std::size_t missing = 0;
     std::size_t droppedByCleaning = 0;
+    std::optional<RunSource> run; ///< where a run cut from a long plant file came from
 };
 
 /// @brief A value no drying line can produce (RH outside 0–100 %, negative feed, a moisture
@@ -53,6 +54,7 @@ struct DataSetSummary {
     /// The first kMaxListedImpossible impossible values per column, in file order …
     std::vector<ImpossibleValue> impossible;
     std::size_t impossibleTotal = 0; ///< … and how many there are in all
+    std::vector<std::string> notes;  ///< what reading the files noticed (DataSet::notes)
     static constexpr std::size_t kMaxListedImpossible = 20;
 };
 

@@ -584,9 +584,10 @@ Expected<FileShape> sniffPlantText(const std::string& text, const std::string& f
         }
         shape.timeFormat = *f;
     }
+    // Relative seconds, commas and no units row is the contract's own form, whatever the time
+    // column is called (the mapping renames it): one batch, read as before.
     shape.historian = shape.delimiter != ',' || shape.decimalComma || shape.unitsRow ||
-                      shape.timeFormat != TimeFormat::Seconds || !mapping.batchIdHeader.empty() ||
-                      shape.timeHeader != "time_s" || mapping.contractToFile.count("time_s") > 0;
+                      shape.timeFormat != TimeFormat::Seconds || !mapping.batchIdHeader.empty();
     return shape;
 }
 

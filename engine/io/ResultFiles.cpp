@@ -206,7 +206,17 @@ std::string inspectJson(const data::DataSetSummary& s) {
                                 {"missing", b.missing},
                                 {"dropped_by_cleaning", b.droppedByCleaning},
                                 {"file", b.path}});
+        if (b.run) {
+            j["batches"].back()["run"] = {{"start", b.run->startTimestamp},
+                                          {"first_line", b.run->firstLine},
+                                          {"last_line", b.run->lastLine},
+                                          {"samples", b.run->samples},
+                                          {"interpolated_cells", b.run->interpolatedCells},
+                                          {"gap_cells", b.run->gapCells},
+                                          {"ended_by", b.run->splitReason}};
+        }
     }
+    j["notes"] = s.notes;
     for (const auto& col : s.columns) {
         if (col.present) {
             j["columns"][col.name] = {{"unit", col.unit},

@@ -146,6 +146,43 @@ Expected<OpenResult> Session::open(const OpenOptions& options, const Progress& p
     return result;
 }
 
+namespace {
+/// The first @p maxBytes of a file, cut after its last whole line (0: all of it).
+Expected<std::string> headOf(const std::string& path, std::size_t maxBytes) {
+    auto text = readWholeFile(path);
+    if (!text) {
+        return text.error();
+    }
+    if (maxBytes > 0 && text->size() > maxBytes) {
+        text->resize(maxBytes);
+        const auto nl = text->rfind('\n');
+        if (nl != std::string::npos) {
+            text->resize(nl + 1);
+        }
+    }
+    return text;
+}
+} // namespace
+
+Expected<data::MappingGuess> Session::guessMapping(const std::string& path) {
+    auto text = headOf(path, 4u << 20);
+    if (!text) {
+        return text.error();
+    }
+    return data::guessMapping(*text, path);
+}
+
+Expected<data::PlantFileRuns> Session::previewRuns(const std::string& path, const data::ColumnMapping& mapping,
+                                                   std::size_t maxBytes) {
+    auto text = headOf(path, maxBytes);
+    if (!text) {
+        return text.error();
+    }
+    data::ReadOptions o;
+    o.mapping = mapping;
+    return data::parsePlantText(*text, path, o);
+}
+
 Expected<GenerateResult> Session::generate(const GenerateOptions& options, const Progress& progress) const {
     const auto t0 = std::chrono::steady_clock::now();
     if (auto st = options.validate(); !st) {

@@ -7,6 +7,7 @@
 #include "data/Batch.h"
 #include "data/Cleaning.h"
 #include "data/DataSetSummary.h"
+#include "data/MappingGuess.h"
 #include "data/SiBatch.h"
 #include "discovery/Discovery.h"
 #include "hybrid/Evaluation.h"
@@ -226,6 +227,13 @@ public:
     Expected<GenerateResult> generate(const GenerateOptions& options, const Progress& progress = {}) const;
     /// @brief The loaded data set at a glance, with the cleaning counts.
     Expected<data::DataSetSummary> inspect() const;
+    /// @brief A guess at the column mapping of the plant file at @p path from the first rows of
+    /// its first 4 MB (the column-mapping dialog's proposal). Touches no session state.
+    static Expected<data::MappingGuess> guessMapping(const std::string& path);
+    /// @brief The production runs the first @p maxBytes of the plant file at @p path would give
+    /// with @p mapping (the dialog's preview; 0: the whole file). Touches no session state.
+    static Expected<data::PlantFileRuns> previewRuns(const std::string& path, const data::ColumnMapping& mapping,
+                                                     std::size_t maxBytes);
     /// @brief Runs the physics model over every batch.
     Expected<SimulateResult> simulate(const SimulateOptions& options = {}, const Progress& progress = {});
     /// @brief Calibrates the physics parameters; the model takes the result (also when stopped

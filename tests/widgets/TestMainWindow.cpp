@@ -164,6 +164,64 @@ private Q_SLOTS:
         QCOMPARE(w.dataSet().batches.size(), std::size_t(1));
     }
 
+    // A historian export with tag names: the dialog proposes the mapping from the tags and the
+    // values' ranges, previews the runs the file gives, and the saved mapping loads them.
+    void historianExportIsGuessedPreviewedAndLoaded() {
+        QTemporaryDir dir;
+        std::string text = "Timestamp;HDT_TT101.PV;FEED_WT201.PV;NIR_XIN.PV;HALL_TT301.PV;HALL_MT302.PV;"
+                           "NIR_XOUT.PV;WIN_TT401.PV;STATUS\n";
+        for (int i = 0; i < 2400; ++i) {
+            const bool stopped = i >= 1000 && i < 1300;
+            char line[256];
+            std::snprintf(line, sizeof line, "2025-06-03 %02d:%02d:%02d;%.2f;%.1f;%.2f;24,1;55,3;%.2f;55,2;%s\n",
+                          8 + i / 3600, (i / 60) % 60, i % 60, 170 + 5 * std::sin(i / 300.0), stopped ? 0.0 : 6200.0,
+                          22 + 0.4 * std::sin(i / 500.0), 13 + 0.2 * std::sin(i / 400.0), stopped ? "STOP" : "RUN");
+            std::string l(line);
+            // Decimal commas everywhere, as a German or Chinese Excel writes them.
+            for (std::size_t k = l.find('.'); k != std::string::npos; k = l.find('.', k)) {
+                if (l.compare(k, 3, ".PV") != 0) {
+                    l[k] = ',';
+                }
+                ++k;
+            }
+            text += l;
+        }
+        writeText(dir.filePath("shift.csv"), text);
+        widgets::ColumnMappingDialog dialog(dir.filePath("shift.csv"));
+        QCOMPARE(dialog.headers().size(), 9);
+        QCOMPARE(dialog.chosen("T_hot_C"), QString("HDT_TT101.PV"));
+        QCOMPARE(dialog.chosen("feed_kg_h"), QString("FEED_WT201.PV"));
+        QCOMPARE(dialog.chosen("X_in_pct"), QString("NIR_XIN.PV"));
+        QCOMPARE(dialog.chosen("T_amb_C"), QString("HALL_TT301.PV"));
+        QCOMPARE(dialog.chosen("RH_amb_pct"), QString("HALL_MT302.PV"));
+        QCOMPARE(dialog.chosen("X_out_pct"), QString("NIR_XOUT.PV"));
+        QCOMPARE(dialog.chosen("T_out_C"), QString("WIN_TT401.PV"));
+        QCOMPARE(dialog.chosen("time_s"), QString("Timestamp"));
+        QCOMPARE(dialog.chosen("T_hot_sp_C"), QString()); // nothing in the file looks like it
+        // The preview: the line stop cuts the shift into two runs.
+        QCOMPARE(dialog.previewTable()->rowCount(), 2);
+        QCOMPARE(dialog.previewTable()->item(0, 3)->text(), QString("1000"));
+        QCOMPARE(dialog.previewTable()->item(0, 5)->text(), QString("line stop"));
+        QCOMPARE(dialog.previewTable()->item(1, 1)->text(), QString("2025-06-03T08:21:40"));
+        const QString mapping = dir.filePath("mapping.json");
+        QVERIFY(dialog.save(mapping));
+        MainWindow w;
+        QSignalSpy loaded(&w, &MainWindow::loadFinished);
+        w.workbench().openData(dir.filePath("shift.csv"), mapping);
+        QVERIFY(loaded.wait(10000));
+        QCOMPARE(loaded.takeFirst().at(0).toBool(), true);
+        QCOMPARE(w.dataSet().batches.size(), std::size_t(2));
+        QCOMPARE(w.dataSet().batches[1].rows(), std::size_t(1100));
+        // Where each run came from shows on the Data tab.
+        QCOMPARE(w.dataPanel()->batchTable()->rowCount(), 2);
+        bool shown = false;
+        for (int c = 0; c < w.dataPanel()->batchTable()->columnCount(); ++c) {
+            const auto* item = w.dataPanel()->batchTable()->item(1, c);
+            shown = shown || (item && item->text().contains("1302"));
+        }
+        QVERIFY2(shown, "the run's first file line is not on the Data tab");
+    }
+
     void mainFlowsThroughTheWidgets() {
         MainWindow w;
         w.show();

@@ -3,6 +3,7 @@
 #include <QDialog>
 #include <QStringList>
 
+class QComboBox;
 class QLabel;
 class QTableWidget;
 
@@ -10,8 +11,10 @@ namespace drytwin::widgets {
 
 /// @brief Maps a plant's own column headers onto the contract's columns (CONTRACT.md §1): one row
 /// per contract column with its unit and meaning, a choice among the file's headers and of the
-/// unit the file uses (°F, % dry basis, t/h …: converted when read). Saves the mapping as the JSON
-/// file `--mapping` reads.
+/// unit the file uses (°F, % dry basis, t/h …: converted when read). For a historian export it
+/// proposes the mapping from tag names and value ranges (with the reason beside each), names the
+/// time stamps' format and a batch column, and previews the production runs the file would give.
+/// Saves the mapping as the JSON file `--mapping` reads.
 class ColumnMappingDialog : public QDialog {
     Q_OBJECT
 public:
@@ -27,10 +30,24 @@ public:
     QByteArray mappingJson() const;
     /// @brief Writes the mapping atomically; false with @p error on failure.
     bool save(const QString& path, QString* error = nullptr) const;
+    /// @brief The header chosen for @p contractName ("" when none).
+    QString chosen(const QString& contractName) const;
+    /// @brief Chooses the column that names the production run ("" for none).
+    bool chooseBatchColumn(const QString& header);
+    /// @brief Recomputes the preview of the runs with the mapping as chosen now.
+    void updatePreview();
+    /// @brief The preview's table (one row per run) and the line above it.
+    QTableWidget* previewTable() const { return m_preview; }
+    QLabel* previewNote() const { return m_previewNote; }
 
 private:
+    QString m_file;
     QStringList m_headers;
+    QString m_timeFormat; ///< the mapping file's name of the time stamps' format ("" = seconds)
     QTableWidget* m_table = nullptr;
+    QComboBox* m_batchColumn = nullptr;
+    QTableWidget* m_preview = nullptr;
+    QLabel* m_previewNote = nullptr;
     QLabel* m_note = nullptr;
 };
 

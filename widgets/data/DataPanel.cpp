@@ -36,7 +36,7 @@ DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m
     m_arrangement = new QComboBox;
     m_arrangement->addItems({tr("Batches overlaid"), tr("Batches one after another")});
     m_table = makeResultTable({tr("Batch"), tr("Rows"), tr("Kept"), tr("Length [min]"),
-                               tr("Mean X_out [% wb]"), tr("Mean T_hot [°C]")});
+                               tr("Mean X_out [% wb]"), tr("Mean T_hot [°C]"), tr("Source")});
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_table->setMinimumWidth(320);
@@ -138,7 +138,16 @@ void DataPanel::fill() {
             QString::number(kept),
             QString::number(minutes, 'f', 1),
             QString::number(x, 'f', 3),
-            QString::number(h, 'f', 1)};
+            QString::number(h, 'f', 1),
+            // A run cut from a long plant file says where it came from; a batch file is its own source.
+            i < summary.batches.size() && summary.batches[i].run
+                ? tr("%1, lines %2–%3, from %4, ended by %5")
+                      .arg(QFileInfo(QString::fromStdString(summary.batches[i].run->file)).fileName())
+                      .arg(summary.batches[i].run->firstLine)
+                      .arg(summary.batches[i].run->lastLine)
+                      .arg(QString::fromStdString(summary.batches[i].run->startTimestamp),
+                           QString::fromStdString(summary.batches[i].run->splitReason))
+                : QFileInfo(QString::fromStdString(i < summary.batches.size() ? summary.batches[i].path : "")).fileName()};
         setTableRow(m_table, static_cast<int>(i), cells);
     }
     m_table->resizeColumnsToContents();
@@ -167,7 +176,12 @@ void DataPanel::fill() {
             .arg(c.droppedMissing)
             .arg(c.droppedImpossible)
             .arg(train)
-            .arg(test));
+            .arg(test) +
+        (summary.notes.empty()
+             ? QString()
+             : QStringLiteral("\n") + tr("Noted while reading (%n):", "", static_cast<int>(summary.notes.size())) +
+                   QStringLiteral(" ") + QString::fromStdString(summary.notes.front()) +
+                   (summary.notes.size() > 1 ? QStringLiteral(" …") : QString())));
     if (!si.empty()) {
         selectBatches({0});
     }

@@ -1,0 +1,125 @@
+#include "HeadlessCommands.h"
+#include "commands/CommandHelpers.h"
+
+#include "common/AtomicFile.h"
+#include "common/Units.h"
+#include "control/BundledScenarios.h"
+#include "io/ModelFile.h"
+#include "io/ResultFiles.h"
+#include "plant/Mechanisms.h"
+#include "workflow/Session.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+namespace drytwin::app {
+
+using namespace detail;
+
+int runDiscover(const CommandOptions& o) {
+    workflow::DiscoverOptions options;
+    options.discovery.maxCauses = o.maxCauses;
+    options.discovery.minExplainedFraction = o.minExplained;
+    options.discovery.fastBandWindowS = o.fastWindowS;
+    workflow::Session session;
+    int rc = 0;
+    if (auto st = options.validate(); !st) {
+        return fail(st.error());
+    }
+    if (!open(o, session, rc)) {
+        return rc;
+    }
+    auto result = session.discover(options, o.progress);
+    if (!result) {
+        return fail(result.error());
+    }
+    const auto& d = result->discovery;
+    std::printf(
+        "What the simulation gets wrong (after refitting h_HDT, k_HDT on the training part; residual = "
+        "measured - simulated):\n");
+    std::printf("%-6s %-5s %10s %10s %12s %10s %12s  %s\n", "output", "unit", "bias", "± se", "trend [/h]",
+                "± se", "line [s]", "strongest correlate (differences)");
+    for (const auto& r : d.residuals) {
+        const auto c = r.correlates.empty() ? std::string("-")
+                                            : r.correlates[0].column + " at " + fmt(r.correlates[0].lagS, 0) +
+                                                  " s, ccf " + fmt(r.correlates[0].ccf, 2);
+        std::printf("%-6s %-5s %10.4f %10.4f %12.4f %10.4f %12s  %s\n", r.output.c_str(), r.unit.c_str(),
+                    r.bias, r.biasSe, r.trendPerHour, r.trendSe,
+                    r.peakPowerRatio > 1
+                        ? (fmt(r.peakPeriodS, 0) + " (x" + fmt(r.peakPowerRatio, 1) + ")").c_str()
+                        : "-",
+                    c.c_str());
+    }
+    for (const auto& note : d.notes) {
+        std::printf("note: %s\n", note.c_str());
+    }
+    std::printf("\nCandidate causes (score test on the training part, HAC variance, Holm-corrected):\n");
+    std::printf("%-24s %8s %10s %10s %12s %14s\n", "cause", "z", "p", "p (Holm)", "fitted", "train loss");
+    for (const auto& c : d.ranking) {
+        std::printf("%-24s %8.2f %10.3g %10.3g %12s %14s\n", c.cause.c_str(), c.score, c.pValue, c.pHolm,
+                    c.fitted ? "yes" : "no",
+                    c.fitted ? (fmt(c.fitLossBefore, 4) + " -> " + fmt(c.fitLossAfter, 4)).c_str() : "-");
+    }
+    for (std::size_t i = 0; i < d.rounds.size(); ++i) {
+        const auto& rd = d.rounds[i];
+        std::printf("round %zu: %s%s%s\n", i + 1, rd.best.empty() ? "" : (rd.best + ": ").c_str(),
+                    rd.named ? "named" : "stop, ", rd.reason.c_str());
+    }
+    std::printf("\nVerdict: %s\n", d.verdict.c_str());
+    for (const auto& f : d.findings) {
+        std::printf("\n* %s\n  %s\n", f.cause.c_str(), f.evidence.c_str());
+    }
+    if (!d.bounds.empty()) {
+        std::printf("\nNot named; what the data allow (one step from 0 at the final model, 95 %%):\n");
+        for (const auto& b : d.bounds) {
+            const auto& info = properties::info(b.parameter);
+            std::printf("  %-24s %-15s %10.4g  [%.3g, %.3g] %s\n", b.cause.c_str(),
+                        std::string(info.symbol).c_str(), b.estimate, b.ci95Low, b.ci95High,
+                        std::string(info.unit).c_str());
+        }
+    }
+    for (const auto& s : d.unexplained) {
+        std::printf("\nUnexplained (%s): %s", s.output.c_str(), s.type.c_str());
+        if (s.type == "periodic") {
+            std::printf(", period %.0f s, power x%.1f over its background", s.periodS, s.strength);
+        } else if (s.type == "lagged_input") {
+            std::printf(", %s at %.0f s (ccf %.2f)", s.column.c_str(), s.lagS, s.strength);
+        } else if (s.type == "batch_shift") {
+            std::printf(", batches");
+            for (const auto& b : s.batches) {
+                std::printf(" %s", b.c_str());
+            }
+        } else {
+            std::printf(", %+.3g per hour", s.strength);
+        }
+        std::printf("\n");
+    }
+    if (result->hasHybrid) {
+        std::printf("\nPGRL-CC retrained on top, held-out one-step MAE: X_out %.4f -> %.4f %% wb, T_out %.4f "
+                    "-> %.4f °C\n",
+                    result->hybridMaeMoistureBefore, result->hybridMaeMoistureAfter,
+                    result->hybridMaeTemperatureBefore, result->hybridMaeTemperatureAfter);
+    }
+    std::printf("\n%.1f s\n", result->ending.elapsedSeconds);
+    if (!o.jsonPath.empty()) {
+        if (auto st = writeFileAtomically(o.jsonPath, io::discoveryJson(d, result->hasHybrid,
+                                                                        result->hybridMaeMoistureBefore,
+                                                                        result->hybridMaeMoistureAfter,
+                                                                        result->hybridMaeTemperatureBefore,
+                                                                        result->hybridMaeTemperatureAfter));
+            !st) {
+            return fail(st.error());
+        }
+    }
+    if (!o.outPath.empty()) {
+        if (auto st = io::writeModelFile(result->extendedModel, o.outPath); !st) {
+            return fail(st.error());
+        }
+    }
+    return 0;
+}
+
+} // namespace drytwin::app
