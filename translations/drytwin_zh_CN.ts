@@ -271,52 +271,160 @@
 <context>
     <name>drytwin::widgets::ColumnMappingDialog</name>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="24"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="29"/>
         <source>Column mapping</source>
         <translation>列映射</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="42"/>
         <source>Could not read the headers of %1.</source>
         <translation>无法读取 %1 的表头。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="43"/>
         <source>Choose, for each column DryTwin needs, the header your files use and the unit its values are in (converted when read); required columns are marked *.</source>
         <translation>为 DryTwin 需要的每一列选择您文件中使用的表头及其数值的单位（读取时换算）；必需的列标有 *。</translation>
     </message>
     <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="43"/>
+        <source>Delimiter %1, %2, time stamps in column &apos;%3&apos; (%4)%5.</source>
+        <translation>分隔符 %1，%2，时间戳在列“%3”中（%4）%5。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="44"/>
+        <source>tab</source>
+        <translation>制表符</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="45"/>
+        <source>decimal commas</source>
+        <translation>小数逗号</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="45"/>
+        <source>decimal points</source>
+        <translation>小数点</translation>
+    </message>
+    <message>
         <location filename="../widgets/data/ColumnMappingDialog.cpp" line="48"/>
+        <source>, a units row under the header</source>
+        <translation>，表头下有单位行</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="51"/>
+        <source>Could not read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="52"/>
+        <source>Choose, for each column DryTwin needs, the header your files use and the unit its values are in (converted when read); required columns are marked *. The proposal comes from the headers&apos; words and tag letters and the ranges of the first rows&apos; values: check it.</source>
+        <translation>为 DryTwin 需要的每一列选择您文件中使用的表头及其数值的单位（读取时换算）；必需的列标有 *。建议来自表头中的词语、位号字母以及前几行数值的范围：请核对。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="59"/>
         <source>DryTwin column</source>
         <translation>DryTwin 列</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="48"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="59"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="48"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="59"/>
         <source>Header in your file</source>
         <translation>您文件中的表头</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="49"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="60"/>
         <source>Meaning</source>
         <translation>含义</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="49"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="60"/>
         <source>Unit in your file</source>
         <translation>您文件中的单位</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="62"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="60"/>
+        <source>Why proposed</source>
+        <translation>建议依据</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="73"/>
         <source>(not in the file)</source>
         <translation>（文件中没有）</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="144"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="114"/>
+        <source>(none: cut runs at line stops and gaps)</source>
+        <translation>（无：在停线和时间间断处切分生产段）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="120"/>
+        <source>Column that names the production run:</source>
+        <translation>标识生产段的列：</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="124"/>
+        <source>Run</source>
+        <translation>生产段</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="124"/>
+        <source>Start</source>
+        <translation>开始</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="124"/>
+        <source>File lines</source>
+        <translation>文件行</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="124"/>
+        <source>Rows</source>
+        <translation>行数</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="124"/>
+        <source>Interpolated cells</source>
+        <translation>插值单元格</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="125"/>
+        <source>Ended by</source>
+        <translation>结束原因</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="151"/>
+        <source>The mapping is not complete: %1</source>
+        <translation>映射不完整：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="156"/>
+        <source>With this mapping the file does not load: %1</source>
+        <translation>按此映射无法加载该文件：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="162"/>
+        <source>The first %1 MB of the file give these production runs:</source>
+        <translation>文件前 %1 MB 给出以下生产段：</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="163"/>
+        <source>The file gives these production runs:</source>
+        <translation>该文件给出以下生产段：</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="165"/>
+        <source>Notes while reading: %1; the first: %2</source>
+        <translation>读取时的提示：%1 条；第一条：%2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="178"/>
+        <source>one batch</source>
+        <translation>单个批次</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="261"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -384,6 +492,11 @@
         <translation>平均 T_hot [°C]</translation>
     </message>
     <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <source>Source</source>
+        <translation>来源</translation>
+    </message>
+    <message>
         <location filename="../widgets/data/DataPanel.cpp" line="53"/>
         <source>Batches (select several to overlay; drop files here):</source>
         <translation>批次（多选可叠加；可将文件拖放到此处）：</translation>
@@ -420,9 +533,19 @@
         <translation>映射 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="159"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="144"/>
+        <source>%1, lines %2–%3, from %4, ended by %5</source>
+        <translation>%1，第 %2–%3 行，始于 %4，结束原因：%5</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="168"/>
         <source>Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.</source>
         <translation>清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="182"/>
+        <source>Noted while reading (%1):</source>
+        <translation>读取时的提示（%1）：</translation>
     </message>
 </context>
 <context>

@@ -155,6 +155,29 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
         r += "| " + name + " | " + c.value("unit", "") + " | " + num(c["min"]) + " | " + num(c["max"]) +
              " | " + num(c["mean"]) + " |\n";
     }
+    // Runs cut from long plant files: where each came from.
+    bool anyRun = false;
+    for (const auto& b : in.value("batches", json::array())) {
+        anyRun = anyRun || b.contains("run");
+    }
+    if (anyRun) {
+        r += "\nProduction runs cut from long plant files:\n\n| run | start | file | lines | rows | interpolated cells | "
+             "ended by |\n| --- | --- | --- | --- | --- | --- | --- |\n";
+        for (const auto& b : in["batches"]) {
+            if (!b.contains("run")) {
+                continue;
+            }
+            const auto& run = b["run"];
+            r += "| " + b.value("id", "") + " | " + run.value("start", "") + " | " +
+                 std::filesystem::path(b.value("file", "")).filename().string() + " | " +
+                 std::to_string(run.value("first_line", 0)) + "–" + std::to_string(run.value("last_line", 0)) +
+                 " | " + std::to_string(b.value("rows", 0)) + " | " +
+                 std::to_string(run.value("interpolated_cells", 0)) + " | " + run.value("ended_by", "") + " |\n";
+        }
+    }
+    for (const auto& note : in.value("notes", json::array())) {
+        r += "\n- " + note.get<std::string>();
+    }
     r += "\n## Calibration (NLopt CRS2-LM, then BOBYQA)\n\n";
     if (calibrated->contains("calibration")) {
         const auto& c = (*calibrated)["calibration"];

@@ -203,6 +203,11 @@ private Q_SLOTS:
         QCOMPARE(dialog.previewTable()->item(0, 3)->text(), QString("1000"));
         QCOMPARE(dialog.previewTable()->item(0, 5)->text(), QString("line stop"));
         QCOMPARE(dialog.previewTable()->item(1, 1)->text(), QString("2025-06-03T08:21:40"));
+        if (qEnvironmentVariableIsSet("DRYTWIN_SCREENSHOT_DIR")) { // scripts/screenshots.sh, under Xvfb
+            dialog.show();
+            QTest::qWait(200);
+            dialog.grab().save(qEnvironmentVariable("DRYTWIN_SCREENSHOT_DIR") + "/column-mapping.png");
+        }
         const QString mapping = dir.filePath("mapping.json");
         QVERIFY(dialog.save(mapping));
         MainWindow w;
@@ -220,6 +225,12 @@ private Q_SLOTS:
             shown = shown || (item && item->text().contains("1302"));
         }
         QVERIFY2(shown, "the run's first file line is not on the Data tab");
+        if (qEnvironmentVariableIsSet("DRYTWIN_SCREENSHOT_DIR")) {
+            w.resize(1280, 800);
+            w.show();
+            QTest::qWait(300);
+            w.grab().save(qEnvironmentVariable("DRYTWIN_SCREENSHOT_DIR") + "/data-runs.png");
+        }
     }
 
     void mainFlowsThroughTheWidgets() {

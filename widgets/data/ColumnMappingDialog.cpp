@@ -162,8 +162,8 @@ void ColumnMappingDialog::updatePreview() {
              ? tr("The first %1 MB of the file give these production runs:").arg(kPreviewBytes >> 20)
              : tr("The file gives these production runs:")) +
         (runs->notes.empty() ? QString()
-                             : QStringLiteral(" ") + tr("%n note(s) while reading, the first: %1", "",
-                                                        static_cast<int>(runs->notes.size()))
+                             : QStringLiteral(" ") + tr("Notes while reading: %1; the first: %2")
+                                                         .arg(runs->notes.size())
                                                          .arg(QString::fromStdString(runs->notes.front()))));
     for (const auto& b : runs->runs) {
         const int r = m_preview->rowCount();

@@ -179,7 +179,7 @@ void DataPanel::fill() {
             .arg(test) +
         (summary.notes.empty()
              ? QString()
-             : QStringLiteral("\n") + tr("Noted while reading (%n):", "", static_cast<int>(summary.notes.size())) +
+             : QStringLiteral("\n") + tr("Noted while reading (%1):").arg(summary.notes.size()) +
                    QStringLiteral(" ") + QString::fromStdString(summary.notes.front()) +
                    (summary.notes.size() > 1 ? QStringLiteral(" …") : QString())));
     if (!si.empty()) {
