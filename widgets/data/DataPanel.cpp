@@ -149,6 +149,9 @@ void DataPanel::fill() {
                            QString::fromStdString(summary.batches[i].run->splitReason))
                 : QFileInfo(QString::fromStdString(i < summary.batches.size() ? summary.batches[i].path : "")).fileName()};
         setTableRow(m_table, static_cast<int>(i), cells);
+        if (auto* item = m_table->item(static_cast<int>(i), 0)) {
+            item->setToolTip(cells.back()); // the source in full, when the column is scrolled away
+        }
     }
     m_table->resizeColumnsToContents();
     m_table->blockSignals(false);
