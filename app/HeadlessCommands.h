@@ -39,8 +39,8 @@ struct CommandOptions {
     std::string plantKind = "distributed"; ///< generate: distributed | lumped
     std::string sensorMode = "realistic";  ///< generate: realistic | ideal (lumped: also "builtin")
     bool sensorModeGiven = false;
-    plant::SensorFaultRates sensorFaults;  ///< generate: per channel and hour
-    int maxCauses = 3;    ///< discover
+    plant::SensorFaultRates sensorFaults; ///< generate: per channel and hour
+    int maxCauses = 3;                    ///< discover
     double minExplained = discovery::DiscoveryOptions{}.minExplainedFraction; ///< discover
     double fastWindowS = discovery::DiscoveryOptions{}.fastBandWindowS;       ///< discover
     std::vector<std::string> effects;

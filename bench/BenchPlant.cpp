@@ -19,7 +19,7 @@ void BM_GenerateDemo(benchmark::State& state) {
     }
     state.counters["samples"] = 63000;
     state.SetLabel(kind == drytwin::plant::PlantKind::Distributed ? "distributed, realistic sensors"
-                                                                 : "lumped, built-in sensors");
+                                                                  : "lumped, built-in sensors");
 }
 BENCHMARK(BM_GenerateDemo)
     ->Arg(static_cast<int>(drytwin::plant::PlantKind::Lumped))

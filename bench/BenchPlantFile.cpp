@@ -29,9 +29,10 @@ const char* kMapping = R"({
 
 void writeMonth(const std::string& path, int days) {
     std::FILE* f = std::fopen(path.c_str(), "w");
-    std::fprintf(f, "Timestamp;HDT_TIC101.SP;HDT_TT101.PV;HDT_ST102.PV;FEED_WT201.PV;NIR_XIN.PV;FEED_TT202.PV;"
-                    "HALL_TT301.PV;HALL_MT302.PV;NIR_XHDT.PV;HDT_TT103.PV;NIR_XOUT.PV;WIN_TT401.PV;"
-                    "STEAM_PT501.PV;FAN_IT601.PV\n");
+    std::fprintf(f,
+                 "Timestamp;HDT_TIC101.SP;HDT_TT101.PV;HDT_ST102.PV;FEED_WT201.PV;NIR_XIN.PV;FEED_TT202.PV;"
+                 "HALL_TT301.PV;HALL_MT302.PV;NIR_XHDT.PV;HDT_TT103.PV;NIR_XOUT.PV;WIN_TT401.PV;"
+                 "STEAM_PT501.PV;FAN_IT601.PV\n");
     const time_t start = 1748736000; // 2025-06-01T00:00:00Z
     char line[512];
     for (long i = 0; i < static_cast<long>(days) * 86400; ++i) {
@@ -40,13 +41,13 @@ void writeMonth(const std::string& path, int days) {
         gmtime_r(&t, &tm);
         const bool stopped = (i % 28800) >= 27600; // 20 min stop every 8 h
         const double s = std::sin(i / 600.0);
-        int n = std::snprintf(line, sizeof line,
-                              "%04d-%02d-%02dT%02d:%02d:%02d;%.1f;%.1f;%.2f;%.0f;%.2f;%.1f;%.1f;%.1f;%.2f;%.1f;"
-                              "%.2f;%.1f;%.2f;%.1f\n",
-                              tm.tm_year + 1900, tm.tm_mon + 1, tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec,
-                              170 + 5 * s, 169 + 5 * s, 16 + 0.1 * s, stopped ? 0.0 : 6200 + 100 * s, 22 + 0.5 * s,
-                              25.0, 22 + 3 * s, 50 + 5 * s, 14 + 0.3 * s, 60 + s, 13 + 0.2 * s, 55 + s, 6.1 + 0.1 * s,
-                              80 + s);
+        int n = std::snprintf(
+            line, sizeof line,
+            "%04d-%02d-%02dT%02d:%02d:%02d;%.1f;%.1f;%.2f;%.0f;%.2f;%.1f;%.1f;%.1f;%.2f;%.1f;"
+            "%.2f;%.1f;%.2f;%.1f\n",
+            tm.tm_year + 1900, tm.tm_mon + 1, tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec, 170 + 5 * s,
+            169 + 5 * s, 16 + 0.1 * s, stopped ? 0.0 : 6200 + 100 * s, 22 + 0.5 * s, 25.0, 22 + 3 * s,
+            50 + 5 * s, 14 + 0.3 * s, 60 + s, 13 + 0.2 * s, 55 + s, 6.1 + 0.1 * s, 80 + s);
         for (int k = 19; k < n; ++k) {
             if (line[k] == '.') {
                 line[k] = ','; // decimal commas
@@ -94,7 +95,8 @@ int main(int argc, char** argv) {
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);
     if (!r.ok()) {
-        std::fprintf(stderr, "load failed: %s\n", r.errors.empty() ? "cancelled" : r.errors[0].message().c_str());
+        std::fprintf(stderr, "load failed: %s\n",
+                     r.errors.empty() ? "cancelled" : r.errors[0].message().c_str());
         return 3;
     }
     std::size_t rows = 0;

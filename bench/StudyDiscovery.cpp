@@ -83,17 +83,17 @@ int main(int argc, char** argv) {
         return o;
     };
     std::printf("Plant: %s, sensors: %s\n\n", std::string(plant::plantKindName(kind)).c_str(),
-                options().realisticSensors()                ? "realistic"
+                options().realisticSensors()          ? "realistic"
                 : sensors == plant::SensorMode::Ideal ? "ideal"
                                                       : "built-in");
     const unsigned seeds[] = {101, 102, 103};
     const int nSeeds = quick ? 1 : 3;
     // The test suite's realistic strength, and half of it.
     const std::pair<plant::Mechanism, double> cases[] = {
-        {plant::Mechanism::TubeWallHeatLoss, 0.3},    {plant::Mechanism::GasPhaseCoupling, 0.5},
-        {plant::Mechanism::HeatTransferFouling, 0.2}, {plant::Mechanism::MoistureMeterLag, 30},
-        {plant::Mechanism::MoistureMeterOffset, 0.2}, {plant::Mechanism::TransportDelayError, 15},
-        {plant::Mechanism::FallingRateDrying, 0.5},   {plant::Mechanism::AmbientReabsorption, 3},
+        {plant::Mechanism::TubeWallHeatLoss, 0.3},          {plant::Mechanism::GasPhaseCoupling, 0.5},
+        {plant::Mechanism::HeatTransferFouling, 0.2},       {plant::Mechanism::MoistureMeterLag, 30},
+        {plant::Mechanism::MoistureMeterOffset, 0.2},       {plant::Mechanism::TransportDelayError, 15},
+        {plant::Mechanism::FallingRateDrying, 0.5},         {plant::Mechanism::AmbientReabsorption, 3},
         {plant::Mechanism::InletMoistureSensorOffset, 0.5}, {plant::Mechanism::HotAirSensorLag, 30},
         {plant::Mechanism::InletMoistureSensorNoise, 0.4}};
     int runs = 0, right = 0, withFalse = 0;

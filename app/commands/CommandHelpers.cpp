@@ -1,5 +1,5 @@
-#include "HeadlessCommands.h"
 #include "commands/CommandHelpers.h"
+#include "HeadlessCommands.h"
 
 #include "common/AtomicFile.h"
 #include "common/Units.h"
@@ -54,7 +54,6 @@ std::string fmt(double v, int precision) {
     std::snprintf(buf, sizeof buf, "%.*f", precision, v);
     return buf;
 }
-
 
 /// "--bound NAME=LO:HI" into the options; false with a message on a malformed one.
 bool parseBounds(const std::vector<std::string>& specs, calibration::CalibrationOptions& co, int& exitCode) {
@@ -256,6 +255,5 @@ bool trainOptions(const CommandOptions& o, workflow::TrainOptions& options, int&
     }
     return true;
 }
-
 
 } // namespace drytwin::app::detail

@@ -30,7 +30,8 @@ int runGenerate(const CommandOptions& o) {
     // (which keeps its files byte-identical to earlier versions).
     if (o.sensorModeGiven) {
         if (o.sensorMode == "builtin" && kind != plant::PlantKind::Lumped) {
-            return fail(Error{ErrorKind::Usage, "--sensors builtin", "only the lumped plant has built-in sensors"});
+            return fail(
+                Error{ErrorKind::Usage, "--sensors builtin", "only the lumped plant has built-in sensors"});
         }
         go.plant.sensors = o.sensorMode == "ideal"       ? plant::SensorMode::Ideal
                            : o.sensorMode == "realistic" ? plant::SensorMode::Realistic
@@ -79,10 +80,11 @@ int runGenerate(const CommandOptions& o) {
         return fail(result.error());
     }
     std::printf("wrote %zu batch(es) of %d samples of the %s plant (%s sensors) to %s in %.2f s\n",
-                result->files.size(), result->samplesPerBatch, std::string(plant::plantKindName(kind)).c_str(),
-                go.plant.realisticSensors()                   ? "realistic"
+                result->files.size(), result->samplesPerBatch,
+                std::string(plant::plantKindName(kind)).c_str(),
+                go.plant.realisticSensors()                    ? "realistic"
                 : go.plant.sensors == plant::SensorMode::Ideal ? "ideal"
-                                                              : "built-in",
+                                                               : "built-in",
                 o.outPath.c_str(), result->ending.elapsedSeconds);
     return 0;
 }

@@ -47,8 +47,8 @@ int runInspect(const CommandOptions& o) {
         anyRun = anyRun || b.run.has_value();
     }
     if (anyRun) {
-        std::printf("\nproduction runs cut from long plant files:\n%-14s %-20s %-13s %9s %12s %8s  %s\n", "run",
-                    "start", "file lines", "samples", "interpolated", "gap", "ended by");
+        std::printf("\nproduction runs cut from long plant files:\n%-14s %-20s %-13s %9s %12s %8s  %s\n",
+                    "run", "start", "file lines", "samples", "interpolated", "gap", "ended by");
         for (const auto& b : s.batches) {
             if (!b.run) {
                 continue;

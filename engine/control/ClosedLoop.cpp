@@ -191,8 +191,9 @@ void appendHeld(std::vector<double>& series, double reading, double fallback) {
 void appendMeasuredOutputs(data::SiBatch& b, const plant::PlantSample& s) {
     appendHeld(b.xOutDb, units::wetPctToDry(s.xOutPct), units::wetPctToDry(s.xOutTruePct));
     appendHeld(b.tOutK, s.tOutK, s.tOutTrueK);
-    appendHeld(b.xHdtDb, units::wetPctToDry(s.xHdtPct), units::wetPctToDry(s.xOutTruePct));
-    appendHeld(b.tHdtK, s.tHdtK, s.tOutTrueK);
+    // Before the tube-outlet gauges' first good reading, the outlet's stands in (one sample at most).
+    appendHeld(b.xHdtDb, units::wetPctToDry(s.xHdtPct), b.xOutDb.back());
+    appendHeld(b.tHdtK, s.tHdtK, b.tOutK.back());
     b.keep.push_back(1);
 }
 

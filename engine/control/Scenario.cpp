@@ -139,8 +139,8 @@ Expected<Scenario> parseScenario(const std::string& text, const std::string& pla
     const Reader r{text, place};
     if (auto st = r.onlyKeys(j,
                              {"name", "description", "seed", "length_s", "warmup_s", "control_interval_s",
-                              "initial", "band_pct", "fluctuation", "noise_scale", "unmeasured_drift", "plant", "sensors",
-                              "setpoint_steps", "input_changes", "mechanisms"},
+                              "initial", "band_pct", "fluctuation", "noise_scale", "unmeasured_drift",
+                              "plant", "sensors", "setpoint_steps", "input_changes", "mechanisms"},
                              {}, 0);
         !st) {
         return st.error();

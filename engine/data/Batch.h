@@ -21,11 +21,12 @@ struct RunSource {
     std::string file;
     int firstLine = 0; ///< first and last file line of the run's samples
     int lastLine = 0;
-    std::string startTimestamp; ///< the run's first sample as the file's clock says (ISO 8601)
+    std::string startTimestamp;        ///< the run's first sample as the file's clock says (ISO 8601)
     std::size_t samples = 0;           ///< rows of the file in the run
     std::size_t interpolatedCells = 0; ///< cells of the step's grid filled by interpolation
     std::size_t gapCells = 0;          ///< cells of the grid left missing (no sample near enough)
-    std::string splitReason;           ///< why the run ended: "line stop", "gap", "batch id", "clock jump", "end of file"
+    std::string
+        splitReason; ///< why the run ended: "line stop", "gap", "batch id", "clock jump", "end of file"
 };
 
 /// @brief One production batch as read from its file, in file units (CONTRACT.md §1).

@@ -2,6 +2,7 @@
 
 #include "common/AtomicFile.h"
 #include "data/Columns.h"
+#include "data/PlantFileReader.h"
 
 #include <algorithm>
 #include <iterator>
@@ -118,9 +119,7 @@ Status ColumnMapping::validate() const {
     if (auto st = runs.validate(); !st) {
         return st;
     }
-    static const char* formats[] = {"",        "seconds", "iso8601",    "Y/m/d",  "d.m.Y",
-                                    "d/m/Y",   "m/d/Y",   "excel_days", "epoch_s", "epoch_ms"};
-    if (std::find(std::begin(formats), std::end(formats), timeFormat) == std::end(formats)) {
+    if (!timeFormat.empty() && !timeFormatByName(timeFormat)) {
         return Error{ErrorKind::BadInput, "column mapping: time_s.format",
                      "'" + timeFormat +
                          "' is not one of seconds, iso8601, Y/m/d, d.m.Y, d/m/Y, m/d/Y, excel_days, epoch_s, "
@@ -177,7 +176,8 @@ Expected<ColumnMapping> readColumnMappingText(const std::string& text, const std
         for (const auto& [key, value] : j.items()) {
             if (key == "batch_id") {
                 if (!value.is_object() || !value.contains("header") || !value["header"].is_string()) {
-                    return Error{ErrorKind::BadInput, path, "\"batch_id\" must be {\"header\": \"<column>\"}"};
+                    return Error{ErrorKind::BadInput, path,
+                                 "\"batch_id\" must be {\"header\": \"<column>\"}"};
                 }
                 mapping.batchIdHeader = value["header"].get<std::string>();
                 continue;
@@ -197,8 +197,9 @@ Expected<ColumnMapping> readColumnMappingText(const std::string& text, const std
                                            [&](const auto& f) { return k == f.first; });
                     if (it == std::end(fields) || !v.is_number()) {
                         return Error{ErrorKind::BadInput, path,
-                                     "runs." + k + ": not a number or not one of step_s, line_stop_feed_kg_h, "
-                                                   "min_stop_s, max_interpolated_gap_s, min_run_s"};
+                                     "runs." + k +
+                                         ": not a number or not one of step_s, line_stop_feed_kg_h, "
+                                         "min_stop_s, max_interpolated_gap_s, min_run_s"};
                     }
                     *it->second = v.get<double>();
                 }

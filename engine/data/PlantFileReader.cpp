@@ -9,9 +9,9 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
-#include <ctime>
 #include <cmath>
 #include <csv.h>
+#include <ctime>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -77,7 +77,8 @@ struct LineSplitter {
             std::size_t pos = 0;
             while (true) {
                 const auto d = line.find(delimiter, pos);
-                fields.push_back(line.substr(pos, d == std::string_view::npos ? std::string_view::npos : d - pos));
+                fields.push_back(
+                    line.substr(pos, d == std::string_view::npos ? std::string_view::npos : d - pos));
                 if (d == std::string_view::npos) {
                     break;
                 }
@@ -183,7 +184,8 @@ bool civilSeconds(int y, int mo, int d, int h, int mi, double sec, double& out) 
         tm.tm_mday = d;
         const time_t t = timegm(&tm);
         std::tm back{};
-        if (t == static_cast<time_t>(-1) || !gmtime_r(&t, &back) || back.tm_mday != d || back.tm_mon != mo - 1) {
+        if (t == static_cast<time_t>(-1) || !gmtime_r(&t, &back) || back.tm_mday != d ||
+            back.tm_mon != mo - 1) {
             return false;
         }
         cachedY = y;
@@ -250,6 +252,17 @@ std::string timeFormatName(TimeFormat f) {
         return "epoch_ms";
     }
     return "seconds";
+}
+
+std::optional<TimeFormat> timeFormatByName(const std::string& name) {
+    for (TimeFormat f : {TimeFormat::Seconds, TimeFormat::Iso8601, TimeFormat::YmdSlash, TimeFormat::DmyDot,
+                         TimeFormat::DmySlash, TimeFormat::MdySlash, TimeFormat::ExcelDays,
+                         TimeFormat::EpochSeconds, TimeFormat::EpochMillis}) {
+        if (timeFormatName(f) == name) {
+            return f;
+        }
+    }
+    return std::nullopt;
 }
 
 bool parseTimeCell(std::string_view cell, TimeFormat format, double& seconds) {
@@ -379,7 +392,8 @@ std::optional<TimeFormat> detectTimeFormat(const std::vector<std::string_view>& 
         }
         return TimeFormat::Seconds;
     }
-    why = "'" + std::string(first) + "' is not a time stamp DryTwin knows (ISO 8601, Y/m/d, d.m.Y, d/m/Y, m/d/Y, " +
+    why = "'" + std::string(first) +
+          "' is not a time stamp DryTwin knows (ISO 8601, Y/m/d, d.m.Y, d/m/Y, m/d/Y, " +
           "Excel serial days, Unix seconds)";
     return std::nullopt;
 }
@@ -441,7 +455,8 @@ struct Row {
 
 } // namespace
 
-Expected<FileShape> sniffPlantText(const std::string& text, const std::string& file, const ColumnMapping& mapping) {
+Expected<FileShape> sniffPlantText(const std::string& text, const std::string& file,
+                                   const ColumnMapping& mapping) {
     FileShape shape;
     std::size_t pos = 0;
     int lineNo = 0;
@@ -450,7 +465,8 @@ Expected<FileShape> sniffPlantText(const std::string& text, const std::string& f
     std::size_t headerEnd = 0;
     while (pos < all.size()) {
         const auto nl = all.find('\n', pos);
-        const std::string_view line = all.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
+        const std::string_view line =
+            all.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
         ++lineNo;
         pos = nl == std::string_view::npos ? all.size() : nl + 1;
         const auto t = trimView(line);
@@ -512,7 +528,8 @@ Expected<FileShape> sniffPlantText(const std::string& text, const std::string& f
     std::vector<std::string> firstRowFields;
     for (std::size_t p = headerEnd; p < all.size() && dataSeen < 200;) {
         const auto nl = all.find('\n', p);
-        const std::string_view line = all.substr(p, nl == std::string_view::npos ? std::string_view::npos : nl - p);
+        const std::string_view line =
+            all.substr(p, nl == std::string_view::npos ? std::string_view::npos : nl - p);
         p = nl == std::string_view::npos ? all.size() : nl + 1;
         ++row;
         if (trimView(line).empty()) {
@@ -568,13 +585,7 @@ Expected<FileShape> sniffPlantText(const std::string& text, const std::string& f
     shape.decimalComma = shape.delimiter != ',' && commaDecimals && !dotDecimals;
     std::vector<std::string_view> views(firstCells.begin(), firstCells.end());
     if (!mapping.timeFormat.empty()) {
-        for (TimeFormat f : {TimeFormat::Seconds, TimeFormat::Iso8601, TimeFormat::YmdSlash, TimeFormat::DmyDot,
-                             TimeFormat::DmySlash, TimeFormat::MdySlash, TimeFormat::ExcelDays,
-                             TimeFormat::EpochSeconds, TimeFormat::EpochMillis}) {
-            if (timeFormatName(f) == mapping.timeFormat) {
-                shape.timeFormat = f;
-            }
-        }
+        shape.timeFormat = *timeFormatByName(mapping.timeFormat); // ColumnMapping::validate checked it
     } else {
         std::string why;
         const auto f = detectTimeFormat(views, namedLikeTime(shape.timeHeader), why);
@@ -591,8 +602,8 @@ Expected<FileShape> sniffPlantText(const std::string& text, const std::string& f
     return shape;
 }
 
-Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::string& file, const ReadOptions& options,
-                                       const Progress& progress) {
+Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::string& file,
+                                       const ReadOptions& options, const Progress& progress) {
     if (auto st = options.validate(); !st) {
         return st.error();
     }
@@ -632,7 +643,6 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
 
     // Columns: the time, the batch id, contract columns (mapped or by name), other numeric ones.
     const std::size_t nCols = shape.headers.size();
-    std::vector<int> valueIndex(nCols, -1);
     std::size_t timeIndex = 0, batchIndex = nCols;
     struct ValueColumn {
         std::optional<Column> contract;
@@ -663,7 +673,8 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
             v.contract = columnByName(contract);
             if (!seen.insert(*v.contract).second) {
                 return badInput(file, shape.headerLine, static_cast<int>(c) + 1,
-                                "column '" + h + "' maps to '" + contract + "', which another column already gives");
+                                "column '" + h + "' maps to '" + contract +
+                                    "', which another column already gives");
             }
             if (const auto u = mapping.contractToUnit.find(contract); u != mapping.contractToUnit.end()) {
                 v.unit = u->second;
@@ -684,7 +695,6 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
         if (v.contract && !v.unit.empty()) {
             v.conversion.contractToUnit[std::string(spec(*v.contract).name)] = v.unit;
         }
-        valueIndex[c] = static_cast<int>(columns.size());
         columns.push_back(std::move(v));
     }
     if (!mapping.batchIdHeader.empty() && batchIndex == nCols) {
@@ -695,14 +705,15 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
     for (const auto& s : columnSpecs()) {
         if (s.required && s.id != Column::Time && !seen.count(s.id)) {
             std::string hint;
-            if (const auto it = mapping.contractToFile.find(std::string(s.name)); it != mapping.contractToFile.end()) {
+            if (const auto it = mapping.contractToFile.find(std::string(s.name));
+                it != mapping.contractToFile.end()) {
                 hint = " (the column mapping names it '" + it->second + "')";
             } else {
                 hint = " (map the file's tag to it: --mapping, or the column-mapping dialog)";
             }
             Error e = badInput(file, shape.headerLine, 1,
-                               "missing required column '" + std::string(s.name) + "' [" + std::string(s.unit) +
-                                   ", " + std::string(s.meaning) + "]" + hint,
+                               "missing required column '" + std::string(s.name) + "' [" +
+                                   std::string(s.unit) + ", " + std::string(s.meaning) + "]" + hint,
                                ErrorCode::MissingColumn);
             e.args = {file, std::string(s.name)};
             return e;
@@ -712,10 +723,12 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
         if (shape.timeFormat != TimeFormat::Seconds) {
             return 1.0;
         }
-        if (const auto u = mapping.contractToUnit.find("time_s"); u != mapping.contractToUnit.end() && u->second == "min") {
+        if (const auto u = mapping.contractToUnit.find("time_s");
+            u != mapping.contractToUnit.end() && u->second == "min") {
             return 60.0;
         }
-        if (shape.unitsRow && timeIndex < shape.units.size() && normalisedUnit(shape.units[timeIndex], Column::Time) == "min") {
+        if (shape.unitsRow && timeIndex < shape.units.size() &&
+            normalisedUnit(shape.units[timeIndex], Column::Time) == "min") {
             return 60.0;
         }
         return 1.0;
@@ -734,7 +747,7 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
     std::size_t pos = 0;
     int lineNo = 0;
     bool headerDone = false, unitsDone = !shape.unitsRow;
-    std::size_t duplicates = 0, textCells = 0;
+    std::size_t duplicates = 0;
     int firstDuplicateLine = 0;
     std::size_t nextProgress = 0;
     rows.reserve(text.size() / 64);
@@ -744,13 +757,15 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
     while (pos < all.size()) {
         if (pos >= nextProgress) {
             nextProgress = pos + (1u << 20);
-            if (reportProgress(progress, "load", 0.9 * static_cast<double>(pos) / static_cast<double>(all.size()),
+            if (reportProgress(progress, "load",
+                               0.9 * static_cast<double>(pos) / static_cast<double>(all.size()),
                                std::filesystem::path(file).filename().string())) {
                 return cancelledError("load");
             }
         }
         const auto nl = all.find('\n', pos);
-        std::string_view line = all.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
+        std::string_view line =
+            all.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
         pos = nl == std::string_view::npos ? all.size() : nl + 1;
         ++lineNo;
         const auto trimmed = trimView(line);
@@ -781,8 +796,8 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
         r.line = lineNo;
         if (!parseTimeCell(split.fields[timeIndex], shape.timeFormat, r.t)) {
             return badInput(file, lineNo, static_cast<int>(timeIndex) + 1,
-                            "bad time stamp '" + std::string(trimView(split.fields[timeIndex])) + "' (the column is " +
-                                timeFormatName(shape.timeFormat) + ")");
+                            "bad time stamp '" + std::string(trimView(split.fields[timeIndex])) +
+                                "' (the column is " + timeFormatName(shape.timeFormat) + ")");
         }
         r.t *= timeScale;
         if (!rows.empty()) {
@@ -794,10 +809,11 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
                 continue; // the first row with a stamp is kept; the duplicate is reported
             }
             if (r.t < prev) {
-                result.notes.push_back(place(file, lineNo, static_cast<int>(timeIndex) + 1) + ": the clock goes back " +
-                                       std::to_string(static_cast<long>(std::lround(prev - r.t))) +
-                                       " s (a daylight-saving change or a clock reset?); the run ends here and a new "
-                                       "one starts, nothing is reordered");
+                result.notes.push_back(
+                    place(file, lineNo, static_cast<int>(timeIndex) + 1) + ": the clock goes back " +
+                    std::to_string(static_cast<long>(std::lround(prev - r.t))) +
+                    " s (a daylight-saving change or a clock reset?); the run ends here and a new "
+                    "one starts, nothing is reordered");
                 clockJumpBefore.push_back(rows.size());
             }
         }
@@ -814,19 +830,20 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
             double v = kNan;
             if (isMissing(cell)) {
                 if (c.contract) {
-                    missing.push_back({lineNo, static_cast<int>(c.field) + 1, std::string(spec(*c.contract).name)});
+                    missing.push_back(
+                        {lineNo, static_cast<int>(c.field) + 1, std::string(spec(*c.contract).name)});
                 }
             } else if (!parseNumber(cell, shape.decimalComma, v)) {
                 if (c.contract) {
                     Error e = badInput(file, lineNo, static_cast<int>(c.field) + 1,
-                                       "text '" + std::string(trimView(cell)) + "' in numeric column '" + c.header + "'",
+                                       "text '" + std::string(trimView(cell)) + "' in numeric column '" +
+                                           c.header + "'",
                                        ErrorCode::TextInNumber);
-                    e.args = {file, std::to_string(lineNo), std::to_string(c.field + 1), std::string(trimView(cell)),
-                              c.header};
+                    e.args = {file, std::to_string(lineNo), std::to_string(c.field + 1),
+                              std::string(trimView(cell)), c.header};
                     return e;
                 }
                 c.numeric = false; // a text column that is no contract column: not kept in runs
-                ++textCells;
                 v = kNan;
             } else if (c.contract && !c.unit.empty()) {
                 v = c.conversion.toContractUnit(*c.contract, v);
@@ -836,14 +853,16 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
         rows.push_back(r);
     }
     if (duplicates > 0) {
-        result.notes.push_back(place(file, firstDuplicateLine, static_cast<int>(timeIndex) + 1) + ": " +
-                               std::to_string(duplicates) +
-                               " row(s) repeat the time stamp of the row before (first here); each duplicate is left "
-                               "out, the first row with the stamp kept");
+        result.notes.push_back(
+            place(file, firstDuplicateLine, static_cast<int>(timeIndex) + 1) + ": " +
+            std::to_string(duplicates) +
+            " row(s) repeat the time stamp of the row before (first here); each duplicate is left "
+            "out, the first row with the stamp kept");
     }
     for (const auto& c : columns) {
         if (!c.numeric) {
-            result.notes.push_back(file + ": column '" + c.header + "' holds text; it is not kept in the runs");
+            result.notes.push_back(file + ": column '" + c.header +
+                                   "' holds text; it is not kept in the runs");
         }
     }
     if (rows.empty()) {
@@ -927,8 +946,8 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
         std::tm tm{};
         gmtime_r(&whole, &tm);
         char buf[48];
-        std::snprintf(buf, sizeof buf, "%04d-%02d-%02dT%02d:%02d:%02d", tm.tm_year + 1900, tm.tm_mon + 1, tm.tm_mday,
-                      tm.tm_hour, tm.tm_min, tm.tm_sec);
+        std::snprintf(buf, sizeof buf, "%04d-%02d-%02dT%02d:%02d:%02d", tm.tm_year + 1900, tm.tm_mon + 1,
+                      tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec);
         return std::string(buf);
     };
     // Every run's grid first, then column by column into all runs, each source column freed
@@ -942,8 +961,9 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
         const double t0 = rows[s.begin].t;
         const double span = rows[s.end - 1].t - t0;
         if (span + runs.stepS < runs.minRunS) {
-            result.notes.push_back(place(file, rows[s.begin].line, 1) + "-" + std::to_string(rows[s.end - 1].line) +
-                                   ": a run of " + std::to_string(static_cast<long>(std::lround(span + runs.stepS))) +
+            result.notes.push_back(place(file, rows[s.begin].line, 1) + "-" +
+                                   std::to_string(rows[s.end - 1].line) + ": a run of " +
+                                   std::to_string(static_cast<long>(std::lround(span + runs.stepS))) +
                                    " s is shorter than the minimum of " +
                                    std::to_string(static_cast<long>(runs.minRunS)) + " s; left out");
             continue;
@@ -1018,8 +1038,8 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
                 if (g.weight[k] == 0.0) {
                     v[k] = a;
                     if (std::isnan(a)) {
-                        b.missing.push_back(
-                            {rows[i].line, static_cast<int>(c.field) + 1, std::string(spec(*c.contract).name)});
+                        b.missing.push_back({rows[i].line, static_cast<int>(c.field) + 1,
+                                             std::string(spec(*c.contract).name)});
                     }
                     continue;
                 }
@@ -1043,12 +1063,12 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
                         "no production run: every stretch of the file is a line stop or shorter than " +
                             std::to_string(static_cast<long>(runs.minRunS)) + " s");
     }
-    (void)textCells;
     reportProgress(progress, "load", 1.0);
     return result;
 }
 
-Expected<PlantFileRuns> readPlantFile(const std::string& path, const ReadOptions& options, const Progress& progress) {
+Expected<PlantFileRuns> readPlantFile(const std::string& path, const ReadOptions& options,
+                                      const Progress& progress) {
     auto text = readWholeFile(path);
     if (!text) {
         return text.error();

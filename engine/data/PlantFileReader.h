@@ -5,6 +5,7 @@
 #include "data/Batch.h"
 #include "data/BatchReader.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,18 +13,20 @@ namespace drytwin::data {
 
 /// @brief How a time column is written.
 enum class TimeFormat {
-    Seconds,     ///< seconds since an arbitrary start (the contract's time_s)
-    Iso8601,     ///< 2025-06-03T08:00:00(.fff)(Z|±hh:mm), 'T' or a space
-    YmdSlash,    ///< 2025/06/03 08:00:00
-    DmyDot,      ///< 03.06.2025 08:00:00
-    DmySlash,    ///< 03/06/2025 08:00:00
-    MdySlash,    ///< 06/03/2025 08:00:00
-    ExcelDays,   ///< days since 1899-12-30 (Excel's serial date), fraction = time of day
+    Seconds,      ///< seconds since an arbitrary start (the contract's time_s)
+    Iso8601,      ///< 2025-06-03T08:00:00(.fff)(Z|±hh:mm), 'T' or a space
+    YmdSlash,     ///< 2025/06/03 08:00:00
+    DmyDot,       ///< 03.06.2025 08:00:00
+    DmySlash,     ///< 03/06/2025 08:00:00
+    MdySlash,     ///< 06/03/2025 08:00:00
+    ExcelDays,    ///< days since 1899-12-30 (Excel's serial date), fraction = time of day
     EpochSeconds, ///< Unix time
     EpochMillis,
 };
 /// @brief The mapping file's name of a format ("iso8601", "d.m.Y", …).
 std::string timeFormatName(TimeFormat f);
+/// @brief The format of a mapping file's name; nullopt for a name that is none.
+std::optional<TimeFormat> timeFormatByName(const std::string& name);
 
 /// @brief What a first look at a plant file found (CONTRACT.md §1, historian exports).
 struct FileShape {

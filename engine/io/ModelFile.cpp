@@ -303,7 +303,7 @@ std::string truthJson(const plant::PlantOptions& options, const plant::PlantResu
     j["plant"] = std::string(plant::plantKindName(options.plant));
     json sensors;
     const bool realistic = options.realisticSensors();
-    sensors["mode"] = realistic ? "realistic"
+    sensors["mode"] = realistic                                     ? "realistic"
                       : options.sensors == plant::SensorMode::Ideal ? "ideal"
                                                                     : "lumped_builtin";
     if (realistic) {

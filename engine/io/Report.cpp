@@ -161,7 +161,8 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
         anyRun = anyRun || b.contains("run");
     }
     if (anyRun) {
-        r += "\nProduction runs cut from long plant files:\n\n| run | start | file | lines | rows | interpolated cells | "
+        r += "\nProduction runs cut from long plant files:\n\n| run | start | file | lines | rows | "
+             "interpolated cells | "
              "ended by |\n| --- | --- | --- | --- | --- | --- | --- |\n";
         for (const auto& b : in["batches"]) {
             if (!b.contains("run")) {
@@ -170,9 +171,10 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
             const auto& run = b["run"];
             r += "| " + b.value("id", "") + " | " + run.value("start", "") + " | " +
                  std::filesystem::path(b.value("file", "")).filename().string() + " | " +
-                 std::to_string(run.value("first_line", 0)) + "–" + std::to_string(run.value("last_line", 0)) +
-                 " | " + std::to_string(b.value("rows", 0)) + " | " +
-                 std::to_string(run.value("interpolated_cells", 0)) + " | " + run.value("ended_by", "") + " |\n";
+                 std::to_string(run.value("first_line", 0)) + "–" +
+                 std::to_string(run.value("last_line", 0)) + " | " + std::to_string(b.value("rows", 0)) +
+                 " | " + std::to_string(run.value("interpolated_cells", 0)) + " | " +
+                 run.value("ended_by", "") + " |\n";
         }
     }
     for (const auto& note : in.value("notes", json::array())) {

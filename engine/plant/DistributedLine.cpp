@@ -25,8 +25,8 @@ namespace ph = physics;
 namespace {
 
 constexpr double kKelvin = units::kKelvinOffset;
-constexpr double kAirCp = 1006;      // J/(kg·K), dry air
-constexpr double kVapourCp = 1880;   // J/(kg·K), water vapour
+constexpr double kAirCp = 1006;          // J/(kg·K), dry air
+constexpr double kVapourCp = 1880;       // J/(kg·K), water vapour
 constexpr double kLatentAtRef = 2.501e6; // J/kg at 0 °C
 
 /// The distributed line's design. The transfer factors and the belt's exposure were set once so
@@ -34,9 +34,9 @@ constexpr double kLatentAtRef = 2.501e6; // J/kg at 0 °C
 /// points (tests/engine/plant: distributedSteadyStatesMatchLumped); nothing here is tuned to
 /// what discovery or learning achieve on its data.
 struct Design {
-    int tubeCells = 16;        ///< tanks in series: residence-time spread σ/τ = 1/√16 = 25 %
-    double tubeStepS = 0.1;    ///< explicit step of the tube's solids (cell residence ≈ 0.44 s)
-    double slipSpeed = 4.0;    ///< m/s: strands move at the air speed less this
+    int tubeCells = 16;     ///< tanks in series: residence-time spread σ/τ = 1/√16 = 25 %
+    double tubeStepS = 0.1; ///< explicit step of the tube's solids (cell residence ≈ 0.44 s)
+    double slipSpeed = 4.0; ///< m/s: strands move at the air speed less this
     double nominalAirSpeed = 16.0;
     double airFlowKgPerS = 18.0;  ///< dry air at 16 m/s (a 1.3 m tube, 0.8 kg/m³ at 170 °C)
     double inletHumidity = 0.040; ///< kg/kg of the hot air (part recirculated)
@@ -48,13 +48,13 @@ struct Design {
     /// Share of the top layer's exchange with the hall that each layer below gets: moisture and
     /// heat reach the surface through the layers above. Mass-weighted mean 0.30 = β_top.
     std::array<double, kBeltLayers> exposure{1.0, 0.32, 0.11, 0.045, 0.025};
-    double layerConductance = 8.0;  ///< W/K per kg of dry matter between neighbouring layers
-    double beltContact = 1.5;       ///< W/K per kg of the bottom layer to the belt at ambient
-    double axialExchange = 0.04;    ///< share exchanged per second with each neighbouring slice
-    double winnowerHoldupS = 8.0;   ///< mixing volume's mean residence time
-    double flashRate = 2.0e-4;      ///< 1/(K·s): flash evaporation per K of excess over the air
+    double layerConductance = 8.0; ///< W/K per kg of dry matter between neighbouring layers
+    double beltContact = 1.5;      ///< W/K per kg of the bottom layer to the belt at ambient
+    double axialExchange = 0.04;   ///< share exchanged per second with each neighbouring slice
+    double winnowerHoldupS = 8.0;  ///< mixing volume's mean residence time
+    double flashRate = 2.0e-4;     ///< 1/(K·s): flash evaporation per K of excess over the air
     double winnowerStepS = 0.25;
-    double hfFoulingTimeS = 3000;   ///< deposits approach their asymptote with this time constant
+    double hfFoulingTimeS = 3000; ///< deposits approach their asymptote with this time constant
 };
 
 /// Enthalpy of humid air per kg of dry air [J/kg], 0 °C reference.
@@ -123,13 +123,12 @@ private:
     void advance(double setpointK, bool frozen);
     void stepTube(double t, double dt, double hotK);
     void stepBelt(double t);
-    void stepWinnower(double t, double dt, double inflowDry, const Stock& inflowPerS);
+    void stepWinnower(double t, double dt, const Stock& inflowPerS);
 
     Design m_d;
     ParameterSet m_p;
     properties::ModelSwitches m_sw;
-    double m_tHot = 0;     ///< true hot-air temperature (after the actuator's lag)
-    double m_setpoint = 0; ///< the setpoint being applied
+    double m_tHot = 0; ///< true hot-air temperature (after the actuator's lag)
     std::vector<Stock> m_cells;
     Stock m_tubeOutflow; ///< what left the tube during the current second
     std::deque<Slice> m_belt;
@@ -178,9 +177,7 @@ DistributedLine::DistributedLine(const PlantOptions& options, PlantDisturbances 
                                  double initialSetpointK, PlantRandom& random)
     : LineCore(options, std::move(disturbances), random) {
     m_p = options.truth;
-    realistic = options.realisticSensors();
-    sensors = SensorBank(options.sensorFaults, !realistic);
-    m_tHot = m_setpoint = initialSetpointK;
+    m_tHot = initialSetpointK;
     // The tube filled with feed at the first inputs, then the line run at them until every section
     // is steady: the tube (7 s), the belt (its transport time) and the winnower (seconds).
     const double feedDry = dist.feedKgPerS[0] / (1 + dist.xInDb[0]);
@@ -212,7 +209,8 @@ void DistributedLine::stepTube(double t, double dt, double hotK) {
     const double wallNtu = effectAt(Mechanism::TubeWallHeatLoss, t);
     const double fouling = effectAt(Mechanism::HeatTransferFouling, t);
     const double foulingGrowth =
-        fouling > 0 ? 1.0 - std::exp(-(t - onsetOf(Mechanism::HeatTransferFouling)) / m_d.hfFoulingTimeS) : 0.0;
+        fouling > 0 ? 1.0 - std::exp(-(t - onsetOf(Mechanism::HeatTransferFouling)) / m_d.hfFoulingTimeS)
+                    : 0.0;
     const double fallingRate = effectAt(Mechanism::FallingRateDrying, t);
     const double tAmb = at(dist.tAmbK, t);
     double gasT = hotK;
@@ -255,7 +253,8 @@ void DistributedLine::stepTube(double t, double dt, double hotK) {
         gasT = airTemperature(gasH, gasW);
         if (wallNtu > 0) {
             // The wall's loss per cell grows towards the outlet, where the lagging is older.
-            const double ntu = wallNtu / n * std::pow(1.0 / speedRatio, 0.6) * (0.5 + static_cast<double>(i) / (n - 1));
+            const double ntu =
+                wallNtu / n * std::pow(1.0 / speedRatio, 0.6) * (0.5 + static_cast<double>(i) / (n - 1));
             const double cooled = tAmb + (gasT - tAmb) * std::exp(-ntu);
             const double hAfter = airEnthalpy(cooled, gasW);
             wallLossW += contactFlow * (gasH - hAfter);
@@ -359,7 +358,7 @@ void DistributedLine::stepBelt(double t) {
     }
 }
 
-void DistributedLine::stepWinnower(double t, double dt, double inflowDry, const Stock& inflowPerS) {
+void DistributedLine::stepWinnower(double t, double dt, const Stock& inflowPerS) {
     const double tAir = at(dist.tAmbK, t);
     const double rh = at(dist.rhAmb, t);
     auto& w = m_winnower;
@@ -375,7 +374,6 @@ void DistributedLine::stepWinnower(double t, double dt, double inflowDry, const 
         ph::vapourEnthalpy(tK, aw, m_p, m_sw) + m_p[Param::theta_Cp2] * (tK - m_p[Param::T_ref]);
     const double share = 1.0 / m_d.winnowerHoldupS;
     const Stock out{w.dry * share, w.water * share, w.enthalpy * share};
-    (void)inflowDry;
     w.dry += dt * (inflowPerS.dry - out.dry);
     w.water += dt * (inflowPerS.water - out.water - evap);
     w.enthalpy += dt * (inflowPerS.enthalpy - out.enthalpy + q - evap * vapourH);
@@ -442,8 +440,7 @@ void DistributedLine::advance(double setpointK, bool frozen) {
     }
     const int winnowerSteps = static_cast<int>(std::lround(1.0 / m_d.winnowerStepS));
     for (int s = 0; s < winnowerSteps; ++s) {
-        stepWinnower(frozen ? 0.0 : t0 + (s + 0.5) * m_d.winnowerStepS, m_d.winnowerStepS, discharged.dry,
-                     discharged);
+        stepWinnower(frozen ? 0.0 : t0 + (s + 0.5) * m_d.winnowerStepS, m_d.winnowerStepS, discharged);
     }
 }
 
@@ -488,15 +485,18 @@ PlantSample DistributedLine::measure() {
                    effectAt(Mechanism::InletMoistureSensorNoise, t));
     m_pending.tHotK = readCelsius(SensorChannel::HotAir, m_tHot, effectAt(Mechanism::HotAirSensorLag, t));
     m_pending.air = readSensor(SensorChannel::AirSpeed, dist.airSpeedMPerS[k]);
-    m_pending.feed =
-        units::kgPerHourToKgPerS(readSensor(SensorChannel::Feed, units::kgPerSToKgPerHour(dist.feedKgPerS[k])));
+    m_pending.feed = units::kgPerHourToKgPerS(
+        readSensor(SensorChannel::Feed, units::kgPerSToKgPerHour(dist.feedKgPerS[k])));
     m_pending.xInDb = units::wetPctToDry(xInReadingPct);
     m_pending.tInK = readCelsius(SensorChannel::InletTemperature, dist.tInK[k]);
     m_pending.tAmbK = readCelsius(SensorChannel::AmbientTemperature, dist.tAmbK[k]);
-    m_pending.rh = readSensor(SensorChannel::AmbientHumidity, units::fractionToPercent(dist.rhAmb[k])) / 100.0;
+    m_pending.rh =
+        readSensor(SensorChannel::AmbientHumidity, units::fractionToPercent(dist.rhAmb[k])) / 100.0;
     // The plant's feedforward sees the gauge through a 10 s filter, holding it over dropouts.
-    const double gauge = std::isnan(xInReadingPct) ? sensors[SensorChannel::InletMoisture].lastGood() : xInReadingPct;
-    m_xInFiltered = std::isnan(m_xInFiltered) ? gauge : m_xInFiltered + (gauge - m_xInFiltered) * (1 - std::exp(-0.1));
+    const double gauge =
+        std::isnan(xInReadingPct) ? sensors[SensorChannel::InletMoisture].lastGood() : xInReadingPct;
+    m_xInFiltered =
+        std::isnan(m_xInFiltered) ? gauge : m_xInFiltered + (gauge - m_xInFiltered) * (1 - std::exp(-0.1));
     s.xInForControlPct = m_xInFiltered;
     if (std::isnan(s.xOutPct)) {
         s.xOutValid = false;
@@ -518,7 +518,6 @@ void DistributedLine::apply(double setpointK) {
     record.tInK.push_back(m_pending.tInK);
     record.tAmbK.push_back(m_pending.tAmbK);
     record.rhAmb.push_back(m_pending.rh);
-    m_setpoint = setpointK;
     advance(setpointK, false);
     m_measured = false;
     ++k;

@@ -48,6 +48,7 @@ public:
     std::size_t k = 0;
     PlantBatch record;
     bool realistic = false; ///< every column through its transmitter
+    /// The transmitters: realistic ones, or ideal ones that carry only the sensor mechanisms.
     SensorBank sensors;
 };
 

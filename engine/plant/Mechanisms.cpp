@@ -34,7 +34,8 @@ const std::vector<MechanismInfo>& mechanisms() {
          "(a calibration slope error)",
          "% wb", 0.5, 3.0},
         {Mechanism::HotAirSensorLag, "hot_air_sensor_lag",
-         "time constant of the hot-air thermocouple (first order, on top of its few seconds as new): a fouled "
+         "time constant of the hot-air thermocouple (first order, on top of its few seconds as new): a "
+         "fouled "
          "thermowell",
          "s", 30, 300},
         {Mechanism::InletMoistureSensorNoise, "inlet_moisture_sensor_noise",

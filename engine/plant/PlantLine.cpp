@@ -168,7 +168,8 @@ double PlantPiController::next(double xOutMeasuredPct, double xInPct, double tar
 }
 
 LineCore::LineCore(const PlantOptions& options, PlantDisturbances disturbances, PlantRandom& r)
-    : o(options), dist(std::move(disturbances)), random(&r), n(dist.size()) {
+    : o(options), dist(std::move(disturbances)), random(&r), n(dist.size()),
+      realistic(options.realisticSensors()), sensors(options.sensorFaults, !realistic) {
     record.timeS.resize(n);
 }
 
@@ -245,9 +246,6 @@ public:
     double sp = 0;
     double meterState = std::nan("");
     double meterState2 = std::nan("");
-    /// The sensor mechanisms of the lumped plant (stateful only while they act).
-    double hotAirSensorState = std::nan("");
-    double inletNoiseState = 0;
 
     double normal() { return (realistic ? 0.0 : o.noiseScale) * random->unitNormal(random->engine); }
 
@@ -383,10 +381,7 @@ LumpedLine::LumpedLine(const PlantOptions& options, PlantDisturbances disturbanc
     tHotSp.assign(n, 0.0);
     parcel.resize(n);
     sp = initialSetpointK;
-    realistic = options.realisticSensors();
-    if (realistic) {
-        sensors = SensorBank(options.sensorFaults, false);
-    } else if (options.sensors == SensorMode::Ideal) {
+    if (options.sensors == SensorMode::Ideal) {
         o.noiseScale = 0;
     }
 }
@@ -505,34 +500,24 @@ void LumpedLine::apply(double setpointK) {
             readSensor(SensorChannel::InletMoisture, xInTruePct + inletOffsetPct, 0, inletNoisePct)));
         pb.tInK.push_back(readCelsius(SensorChannel::InletTemperature, d.tInK[k]));
         pb.tAmbK.push_back(readCelsius(SensorChannel::AmbientTemperature, d.tAmbK[k]));
-        pb.rhAmb.push_back(
-            readSensor(SensorChannel::AmbientHumidity, units::fractionToPercent(d.rhAmb[k])) / 100.0);
+        pb.rhAmb.push_back(readSensor(SensorChannel::AmbientHumidity, units::fractionToPercent(d.rhAmb[k])) /
+                           100.0);
         im.measured = false;
         ++im.k;
         return;
     }
-    double tHotReading = im.tHot[k];
-    if (hotAirLag > 0) {
-        // A fouled thermowell: a first-order lag, exact for the value held over the second.
-        hotAirSensorState = std::isnan(hotAirSensorState)
-                                ? tHotReading
-                                : tHotReading + (hotAirSensorState - tHotReading) * std::exp(-1.0 / hotAirLag);
-        tHotReading = hotAirSensorState;
-    } else {
-        hotAirSensorState = std::nan("");
-    }
+    // The sensor mechanisms through the line's ideal transmitters (their lag and scatter alone);
+    // untouched while no mechanism acts, so that the lumped plant's files stay as they were.
+    const double tHotReading =
+        hotAirLag > 0 ? readCelsius(SensorChannel::HotAir, im.tHot[k], hotAirLag) : im.tHot[k];
     pb.tHotK.push_back(tHotReading + 0.1 * normal());
     pb.airSpeedMPerS.push_back(d.airSpeedMPerS[k] + 0.02 * normal());
     pb.feedKgPerS.push_back(d.feedKgPerS[k] + units::kgPerHourToKgPerS(5.0) * normal());
     double xInWb = d.xInDb[k] / (1 + d.xInDb[k]) + 0.0001 * normal();
     if (inletOffsetPct != 0 || inletNoisePct > 0) {
-        if (inletNoisePct > 0) {
-            // Scatter correlated over 3 s; drawn only while the mechanism acts.
-            const double a = std::exp(-1.0 / 3.0);
-            inletNoiseState = a * inletNoiseState +
-                              inletNoisePct * std::sqrt(1 - a * a) * random->unitNormal(random->engine);
-        }
-        xInWb += (inletOffsetPct + (inletNoisePct > 0 ? inletNoiseState : 0.0)) / 100.0;
+        const double reading =
+            readSensor(SensorChannel::InletMoisture, xInTruePct + inletOffsetPct, 0, inletNoisePct);
+        xInWb += (reading - xInTruePct) / 100.0;
     }
     pb.xInDb.push_back(xInWb / (1 - xInWb));
     pb.tInK.push_back(d.tInK[k] + 0.1 * normal());
@@ -591,7 +576,8 @@ std::optional<LineBalance> PlantLine::balance() const {
     return m_core->balance();
 }
 double SectionBalance::energyImbalance() const {
-    return (energyInJ + energyFromAirJ - energyOutJ - energyStockChangeJ) / (energyInJ + std::abs(energyFromAirJ));
+    return (energyInJ + energyFromAirJ - energyOutJ - energyStockChangeJ) /
+           (energyInJ + std::abs(energyFromAirJ));
 }
 PlantBatch& PlantLine::record() {
     return m_core->record;

@@ -8,11 +8,11 @@ namespace drytwin::plant {
 
 /// @brief The plant's measured columns, each read through its own transmitter.
 enum class SensorChannel {
-    HotAir,      ///< T_hot_C: thermocouple in a thermowell at the tube inlet
-    AirSpeed,    ///< air_speed_m_s: averaging pitot tube
-    Feed,        ///< feed_kg_h: weigh belt
-    InletMoisture, ///< X_in_pct: NIR gauge over the feed belt
-    InletTemperature, ///< T_in_C: IR pyrometer on the feed
+    HotAir,             ///< T_hot_C: thermocouple in a thermowell at the tube inlet
+    AirSpeed,           ///< air_speed_m_s: averaging pitot tube
+    Feed,               ///< feed_kg_h: weigh belt
+    InletMoisture,      ///< X_in_pct: NIR gauge over the feed belt
+    InletTemperature,   ///< T_in_C: IR pyrometer on the feed
     AmbientTemperature, ///< T_amb_C: hall sensor in a radiation shield
     AmbientHumidity,    ///< RH_amb_pct: capacitive hygrometer
     TubeMoisture,       ///< X_hdt_pct: NIR gauge at the tube outlet
@@ -25,8 +25,8 @@ inline constexpr int kSensorChannelCount = 11;
 /// @brief How one transmitter turns the true value into a reading. Values in the channel's
 /// file unit (% wb, °C/K differences, kg/h, m/s, % RH).
 struct SensorSpec {
-    std::string_view column; ///< contract column, for messages and docs
-    double noiseSd = 0;      ///< standard deviation of the reading's noise
+    std::string_view column;      ///< contract column, for messages and docs
+    double noiseSd = 0;           ///< standard deviation of the reading's noise
     double noiseCorrelationS = 0; ///< time constant of the noise (0: white)
     double relativeNoise = 0;     ///< further noise as a fraction of the reading (weigh belts)
     double lagS = 0;              ///< first-order time constant of the sensor

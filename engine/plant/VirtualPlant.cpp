@@ -83,7 +83,8 @@ Status PlantOptions::validate() const {
     if (!(noiseScale >= 0 && noiseScale <= 10)) {
         return Error{ErrorKind::Usage, "noiseScale", "must lie in [0, 10]"};
     }
-    for (double rate : {sensorFaults.spikesPerHour, sensorFaults.stuckPerHour, sensorFaults.dropoutsPerHour}) {
+    for (double rate :
+         {sensorFaults.spikesPerHour, sensorFaults.stuckPerHour, sensorFaults.dropoutsPerHour}) {
         if (!(rate >= 0 && rate <= 60)) {
             return Error{ErrorKind::Usage, "sensor fault rates", "must lie in [0, 60] per channel and hour"};
         }

@@ -172,8 +172,8 @@ Expected<data::MappingGuess> Session::guessMapping(const std::string& path) {
     return data::guessMapping(*text, path);
 }
 
-Expected<data::PlantFileRuns> Session::previewRuns(const std::string& path, const data::ColumnMapping& mapping,
-                                                   std::size_t maxBytes) {
+Expected<data::PlantFileRuns> Session::previewRuns(const std::string& path,
+                                                   const data::ColumnMapping& mapping, std::size_t maxBytes) {
     auto text = headOf(path, maxBytes);
     if (!text) {
         return text.error();
@@ -206,8 +206,7 @@ Expected<GenerateResult> Session::generate(const GenerateOptions& options, const
         result.files.push_back(path);
     }
     if (!options.truthPath.empty()) {
-        if (auto st = writeFileAtomically(options.truthPath,
-                                          io::truthJson(options.plant, *plantResult));
+        if (auto st = writeFileAtomically(options.truthPath, io::truthJson(options.plant, *plantResult));
             !st) {
             return st.error();
         }

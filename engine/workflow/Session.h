@@ -232,8 +232,8 @@ public:
     static Expected<data::MappingGuess> guessMapping(const std::string& path);
     /// @brief The production runs the first @p maxBytes of the plant file at @p path would give
     /// with @p mapping (the dialog's preview; 0: the whole file). Touches no session state.
-    static Expected<data::PlantFileRuns> previewRuns(const std::string& path, const data::ColumnMapping& mapping,
-                                                     std::size_t maxBytes);
+    static Expected<data::PlantFileRuns>
+    previewRuns(const std::string& path, const data::ColumnMapping& mapping, std::size_t maxBytes);
     /// @brief Runs the physics model over every batch.
     Expected<SimulateResult> simulate(const SimulateOptions& options = {}, const Progress& progress = {});
     /// @brief Calibrates the physics parameters; the model takes the result (also when stopped

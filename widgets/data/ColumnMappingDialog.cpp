@@ -49,7 +49,8 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* pare
     }
     m_note = new QLabel(
         !guess ? tr("Could not read %1: %2").arg(batchFile, errorText(guess.error()))
-               : tr("Choose, for each column DryTwin needs, the header your files use and the unit its values are "
+               : tr("Choose, for each column DryTwin needs, the header your files use and the unit its "
+                    "values are "
                     "in (converted when read); required columns are marked *. The proposal comes from the "
                     "headers' words and tag letters and the ranges of the first rows' values: check it.") +
                      QStringLiteral("\n") + shape);
@@ -107,7 +108,8 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* pare
             }
             updatePreview();
         });
-        connect(unitCombo, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] { updatePreview(); });
+        connect(unitCombo, qOverload<int>(&QComboBox::currentIndexChanged), this,
+                [this] { updatePreview(); });
     }
     m_table->resizeColumnsToContents();
     m_batchColumn = new QComboBox;
@@ -115,14 +117,15 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* pare
     for (const auto& h : m_headers) {
         m_batchColumn->addItem(h, h);
     }
-    connect(m_batchColumn, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] { updatePreview(); });
+    connect(m_batchColumn, qOverload<int>(&QComboBox::currentIndexChanged), this,
+            [this] { updatePreview(); });
     auto* batchRow = new QHBoxLayout;
     batchRow->addWidget(new QLabel(tr("Column that names the production run:")));
     batchRow->addWidget(m_batchColumn, 1);
     m_previewNote = new QLabel;
     m_previewNote->setWordWrap(true);
-    m_preview = makeResultTable({tr("Run"), tr("Start"), tr("File lines"), tr("Rows"), tr("Interpolated cells"),
-                                 tr("Ended by")});
+    m_preview = makeResultTable(
+        {tr("Run"), tr("Start"), tr("File lines"), tr("Rows"), tr("Interpolated cells"), tr("Ended by")});
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -153,7 +156,8 @@ void ColumnMappingDialog::updatePreview() {
     }
     const auto runs = workflow::Session::previewRuns(m_file.toStdString(), *mapping, kPreviewBytes);
     if (!runs) {
-        m_previewNote->setText(tr("With this mapping the file does not load: %1").arg(errorText(runs.error())));
+        m_previewNote->setText(
+            tr("With this mapping the file does not load: %1").arg(errorText(runs.error())));
         return;
     }
     QFileInfo info(m_file);
@@ -169,13 +173,13 @@ void ColumnMappingDialog::updatePreview() {
         const int r = m_preview->rowCount();
         m_preview->insertRow(r);
         const bool cut = b.run.has_value();
-        const QStringList cells{
-            QString::fromStdString(b.id),
-            cut ? QString::fromStdString(b.run->startTimestamp) : QString(),
-            cut ? QStringLiteral("%1–%2").arg(b.run->firstLine).arg(b.run->lastLine) : QString(),
-            QString::number(b.rows()),
-            cut ? QString::number(b.run->interpolatedCells) : QString(),
-            cut ? QString::fromStdString(b.run->splitReason) : tr("one batch")};
+        const QStringList cells{QString::fromStdString(b.id),
+                                cut ? QString::fromStdString(b.run->startTimestamp) : QString(),
+                                cut ? QStringLiteral("%1–%2").arg(b.run->firstLine).arg(b.run->lastLine)
+                                    : QString(),
+                                QString::number(b.rows()),
+                                cut ? QString::number(b.run->interpolatedCells) : QString(),
+                                cut ? QString::fromStdString(b.run->splitReason) : tr("one batch")};
         for (int c = 0; c < cells.size(); ++c) {
             m_preview->setItem(r, c, new QTableWidgetItem(cells[c]));
         }
@@ -241,7 +245,8 @@ QByteArray ColumnMappingDialog::mappingJson() const {
         if (unit->currentIndex() > 0) { // not the contract's own unit: converted when read
             m.contractToUnit[name.toStdString()] = unit->currentText().toStdString();
         }
-        if (header != name || unit->currentIndex() > 0 || (name == QLatin1String("time_s") && !m_timeFormat.isEmpty())) {
+        if (header != name || unit->currentIndex() > 0 ||
+            (name == QLatin1String("time_s") && !m_timeFormat.isEmpty())) {
             m.contractToFile[name.toStdString()] = header.toStdString();
         }
     }

@@ -134,11 +134,8 @@ void DataPanel::fill() {
         const double minutes = b.rows() > 1 ? (b.timeS.back() - b.timeS.front()) / 60.0 : 0.0;
         const QStringList cells{
             QString::fromStdString(i < summary.batches.size() ? summary.batches[i].id : b.id),
-            QString::number(b.rows()),
-            QString::number(kept),
-            QString::number(minutes, 'f', 1),
-            QString::number(x, 'f', 3),
-            QString::number(h, 'f', 1),
+            QString::number(b.rows()), QString::number(kept), QString::number(minutes, 'f', 1),
+            QString::number(x, 'f', 3), QString::number(h, 'f', 1),
             // A run cut from a long plant file says where it came from; a batch file is its own source.
             i < summary.batches.size() && summary.batches[i].run
                 ? tr("%1, lines %2–%3, from %4, ended by %5")
@@ -147,7 +144,8 @@ void DataPanel::fill() {
                       .arg(summary.batches[i].run->lastLine)
                       .arg(QString::fromStdString(summary.batches[i].run->startTimestamp),
                            QString::fromStdString(summary.batches[i].run->splitReason))
-                : QFileInfo(QString::fromStdString(i < summary.batches.size() ? summary.batches[i].path : "")).fileName()};
+                : QFileInfo(QString::fromStdString(i < summary.batches.size() ? summary.batches[i].path : ""))
+                      .fileName()};
         setTableRow(m_table, static_cast<int>(i), cells);
         if (auto* item = m_table->item(static_cast<int>(i), 0)) {
             item->setToolTip(cells.back()); // the source in full, when the column is scrolled away

@@ -26,13 +26,18 @@ const char* kTagMapping = R"({
   "X_out_pct": "NIR_XOUT.PV",
   "T_out_C": "WIN_TT401.PV"
 })";
-const char* kTags[] = {"HDT_TT101.PV", "FEED_WT201.PV", "NIR_XIN.PV", "HALL_TT301.PV",
-                       "HALL_MT302.PV", "NIR_XOUT.PV", "WIN_TT401.PV"};
+const char* kTags[] = {"HDT_TT101.PV",  "FEED_WT201.PV", "NIR_XIN.PV",  "HALL_TT301.PV",
+                       "HALL_MT302.PV", "NIR_XOUT.PV",   "WIN_TT401.PV"};
 
 /// Values of the seven tags at time t [s]; feed 0 during a line stop.
 std::vector<double> tagValues(double t, bool stopped) {
-    return {170 + 5 * std::sin(t / 300), stopped ? 0.0 : 6200 + 100 * std::sin(t / 700), 22 + 0.5 * std::sin(t / 900),
-            24, 55, 13 + 0.2 * std::sin(t / 400), 55};
+    return {170 + 5 * std::sin(t / 300),
+            stopped ? 0.0 : 6200 + 100 * std::sin(t / 700),
+            22 + 0.5 * std::sin(t / 900),
+            24,
+            55,
+            13 + 0.2 * std::sin(t / 400),
+            55};
 }
 
 /// "2025-06-03 08:00:00" style stamps from epoch seconds, in the given strftime pattern.
@@ -124,7 +129,8 @@ private Q_SLOTS:
         f.delimiter = ';';
         f.decimalComma = true;
         f.timeCell = [](double t) { return stamp(t, "%Y-%m-%d %H:%M:%S"); };
-        const std::string text = historianFile(f, kJune3, 4000, 1.0, [](double t) { return t >= 1500 && t < 2100; });
+        const std::string text =
+            historianFile(f, kJune3, 4000, 1.0, [](double t) { return t >= 1500 && t < 2100; });
         auto r = parsePlantText(text, "shift.csv", tagOptions());
         QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
         QVERIFY(r->shape.historian);
@@ -212,7 +218,8 @@ private Q_SLOTS:
         f.unitsRow = ",degF,t/h,%,m/s,%,%,°C";
         auto bad = parsePlantText(historianFile(f, kJune3, 600, 1.0), "units.csv", tagOptions());
         QVERIFY(!bad.ok());
-        QVERIFY2(bad.error().message().find("units.csv:2:5") != std::string::npos, bad.error().message().c_str());
+        QVERIFY2(bad.error().message().find("units.csv:2:5") != std::string::npos,
+                 bad.error().message().c_str());
     }
 
     void badStampDuplicateAndClockJumpNamedWithTheirLine() {
@@ -231,7 +238,8 @@ private Q_SLOTS:
         }
         auto r = parsePlantText(bad, "stamps.csv", tagOptions());
         QVERIFY(!r.ok());
-        QVERIFY2(r.error().message().find("stamps.csv:11:1") != std::string::npos, r.error().message().c_str());
+        QVERIFY2(r.error().message().find("stamps.csv:11:1") != std::string::npos,
+                 r.error().message().c_str());
         QVERIFY(r.error().message().find("bad time stamp") != std::string::npos);
         // A duplicate stamp: reported with its line, the row left out, nothing reordered.
         std::string dup;
@@ -256,9 +264,7 @@ private Q_SLOTS:
         QVERIFY2(d->notes[0].find("dup.csv:21:1") != std::string::npos, d->notes[0].c_str());
         // The clock goes back an hour (daylight saving ends): a new run from that line, reported.
         FileSpec g = f;
-        g.timeCell = [](double t) {
-            return stamp(t >= kJune3 + 700 ? t - 3600 : t, "%Y-%m-%dT%H:%M:%S");
-        };
+        g.timeCell = [](double t) { return stamp(t >= kJune3 + 700 ? t - 3600 : t, "%Y-%m-%dT%H:%M:%S"); };
         auto j = parsePlantText(historianFile(g, kJune3, 1200, 1.0), "dst.csv", tagOptions());
         QVERIFY2(j.ok(), j ? "" : j.error().message().c_str());
         QCOMPARE(j->runs.size(), std::size_t(2));
@@ -268,7 +274,8 @@ private Q_SLOTS:
         QCOMPARE(j->runs[1].run->firstLine, 702);
         bool named = false;
         for (const auto& n : j->notes) {
-            named = named || (n.find("dst.csv:702:1") != std::string::npos && n.find("clock goes back 3599 s") != std::string::npos);
+            named = named || (n.find("dst.csv:702:1") != std::string::npos &&
+                              n.find("clock goes back 3599 s") != std::string::npos);
         }
         QVERIFY2(named, j->notes.empty() ? "no notes" : j->notes[0].c_str());
     }
@@ -277,7 +284,7 @@ private Q_SLOTS:
     void gapsSplitOrAreBridged() {
         FileSpec f;
         f.timeCell = [](double t) { return stamp(t, "%Y/%m/%d %H:%M:%S"); };
-        std::string text = historianFile(f, kJune3, 700, 1.0) ;
+        std::string text = historianFile(f, kJune3, 700, 1.0);
         // Drop lines 302..306 (5 s: bridged) and lines 502..561 (60 s: split).
         std::vector<std::string> lines;
         std::size_t pos = 0;

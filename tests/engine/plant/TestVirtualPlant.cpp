@@ -251,21 +251,23 @@ private Q_SLOTS:
         }
         const auto b = line.balance();
         QVERIFY(b.has_value());
-        QVERIFY(!plant::PlantLine(plant::PlantOptions{}, constantInputs(10, 6200, 22), 440, random).balance());
+        QVERIFY(
+            !plant::PlantLine(plant::PlantOptions{}, constantInputs(10, 6200, 22), 440, random).balance());
         const std::pair<const char*, const plant::SectionBalance*> sections[] = {
             {"tube", &b->tube}, {"belt", &b->belt}, {"winnower", &b->winnower}};
         for (const auto& [name, s] : sections) {
-            const QString what = QString("%1: water in %2 out %3 to air %4 stock %5; energy in %6 from air %7 out "
-                                         "%8 stock %9")
-                                     .arg(name)
-                                     .arg(s->waterInKg)
-                                     .arg(s->waterOutKg)
-                                     .arg(s->waterToAirKg)
-                                     .arg(s->waterStockChangeKg)
-                                     .arg(s->energyInJ)
-                                     .arg(s->energyFromAirJ)
-                                     .arg(s->energyOutJ)
-                                     .arg(s->energyStockChangeJ);
+            const QString what =
+                QString("%1: water in %2 out %3 to air %4 stock %5; energy in %6 from air %7 out "
+                        "%8 stock %9")
+                    .arg(name)
+                    .arg(s->waterInKg)
+                    .arg(s->waterOutKg)
+                    .arg(s->waterToAirKg)
+                    .arg(s->waterStockChangeKg)
+                    .arg(s->energyInJ)
+                    .arg(s->energyFromAirJ)
+                    .arg(s->energyOutJ)
+                    .arg(s->energyStockChangeJ);
             qInfo("%s: water imbalance %.2e, energy imbalance %.2e", name, s->waterImbalance(),
                   s->energyImbalance());
             QVERIFY2(s->waterInKg > 0 && s->waterToAirKg > 0, qPrintable(what)); // the section dries
