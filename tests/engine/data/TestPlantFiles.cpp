@@ -333,6 +333,34 @@ private Q_SLOTS:
         QCOMPARE(told->runs[0].run->startTimestamp, std::string("2025-06-03T08:00:00"));
     }
 
+    // Quoted fields (an Excel export quotes headers and text) and cancel in the middle of a file.
+    void quotedFieldsAndCancel() {
+        FileSpec f;
+        f.delimiter = ';';
+        f.decimalComma = true;
+        f.timeCell = [](double t) { return "\"" + stamp(t, "%Y-%m-%d %H:%M:%S") + "\""; };
+        std::string text = historianFile(f, kJune3, 600, 1.0);
+        const auto firstNl = text.find('\n');
+        std::string quoted = "\"Timestamp\"";
+        for (const char* tag : kTags) {
+            quoted += ";\"" + std::string(tag) + "\"";
+        }
+        text.replace(0, firstNl, quoted);
+        auto r = parsePlantText(text, "quoted.csv", tagOptions());
+        QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
+        QCOMPARE(r->runs.size(), std::size_t(1));
+        QCOMPARE(r->runs[0].rows(), std::size_t(600));
+        QVERIFY(std::abs((*r->runs[0].values(Column::XOut))[0] - tagValues(0, false)[5]) < 1e-3);
+        // A long file stops where the user cancels (progress is reported per megabyte).
+        const std::string big = historianFile(f, kJune3, 40000, 1.0);
+        int calls = 0;
+        auto c = parsePlantText(big, "big.csv", tagOptions(), [&](const ProgressInfo&) {
+            return ++calls >= 2 ? ProgressAction::Stop : ProgressAction::Continue;
+        });
+        QVERIFY(!c.ok());
+        QCOMPARE(c.error().kind, ErrorKind::Cancelled);
+    }
+
     void timeCellsOfEveryFormat() {
         double s = 0;
         QVERIFY(parseTimeCell("2025-06-03T08:00:00.250+02:00", TimeFormat::Iso8601, s));
