@@ -453,6 +453,216 @@ struct Row {
     int batch = -1; ///< index into the batch ids
 };
 
+/// A run of rows [begin, end) and why it ended.
+struct Span {
+    std::size_t begin = 0, end = 0;
+    std::string reason;
+};
+
+/// Cuts the rows into runs: at line stops (the feed below its threshold for at least the minimum
+/// stop; the stop's rows belong to no run), clock jumps, batch-id changes and gaps in time.
+std::vector<Span> cutIntoRuns(const std::vector<Row>& rows, const std::vector<double>* feed,
+                              const std::vector<std::size_t>& clockJumpBefore, const RunSplitOptions& runs) {
+    const std::size_t n = rows.size();
+    std::vector<char> inStop(n, 0);
+    if (feed) {
+        const auto& f = *feed;
+        for (std::size_t i = 0; i < n;) {
+            if (!(f[i] < runs.lineStopFeedKgPerHour)) {
+                ++i;
+                continue;
+            }
+            std::size_t j = i;
+            while (j < n && f[j] < runs.lineStopFeedKgPerHour) {
+                ++j;
+            }
+            if (rows[j - 1].t - rows[i].t + runs.stepS >= runs.minStopS) {
+                std::fill(inStop.begin() + static_cast<long>(i), inStop.begin() + static_cast<long>(j), 1);
+            }
+            i = j;
+        }
+    }
+    std::vector<Span> spans;
+    std::size_t jump = 0;
+    for (std::size_t i = 0; i < n;) {
+        if (inStop[i]) {
+            ++i;
+            continue;
+        }
+        Span s{i, i + 1, "end of file"};
+        while (s.end < n) {
+            const std::size_t k = s.end;
+            if (inStop[k]) {
+                s.reason = "line stop";
+                break;
+            }
+            if (jump < clockJumpBefore.size() && clockJumpBefore[jump] == k) {
+                s.reason = "clock jump";
+                break;
+            }
+            if (rows[k].batch != rows[k - 1].batch) {
+                s.reason = "batch id";
+                break;
+            }
+            if (rows[k].t - rows[k - 1].t > runs.maxInterpolatedGapS) {
+                s.reason = "gap";
+                break;
+            }
+            ++s.end;
+        }
+        while (jump < clockJumpBefore.size() && clockJumpBefore[jump] <= s.end) {
+            ++jump;
+        }
+        spans.push_back(s);
+        i = s.end;
+    }
+    return spans;
+}
+
+/// A value column of a plant file: its contract column (if mapped), unit and values as read.
+struct ValueColumn {
+    std::optional<Column> contract;
+    std::string header;
+    std::string unit; ///< the file's unit for a contract column ("" = the contract's)
+    std::size_t field = 0;
+    bool numeric = true;
+    std::vector<double> values;
+    ColumnMapping conversion; ///< converts from unit to the contract's
+};
+
+/// Puts each run onto the step's grid (linear interpolation between samples, counted; missing
+/// cells kept missing) and names it; runs shorter than the minimum are left out with a note.
+void resampleRuns(const std::vector<Span>& spans, const std::vector<Row>& rows,
+                  std::vector<ValueColumn>& columns, const std::vector<std::string>& batchIds,
+                  const std::vector<std::string>& metadata, const FileShape& shape, const std::string& file,
+                  const RunSplitOptions& runs, PlantFileRuns& result) {
+    const std::string stem = std::filesystem::path(file).stem().string();
+    std::map<std::string, int> idUses;
+    int runNumber = 0;
+    const auto isoOf = [&](double t) {
+        if (shape.timeFormat == TimeFormat::Seconds) {
+            char buf[48];
+            std::snprintf(buf, sizeof buf, "t = %.3f s", t);
+            return std::string(buf);
+        }
+        const auto whole = static_cast<time_t>(std::floor(t));
+        std::tm tm{};
+        gmtime_r(&whole, &tm);
+        char buf[48];
+        std::snprintf(buf, sizeof buf, "%04d-%02d-%02dT%02d:%02d:%02d", tm.tm_year + 1900, tm.tm_mon + 1,
+                      tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec);
+        return std::string(buf);
+    };
+    // Every run's grid first, then column by column into all runs, each source column freed
+    // once used: the numbers of a month at 1 s are held once and a column more, not twice.
+    struct Grid {
+        std::vector<std::size_t> before; // the sample at or before each grid row
+        std::vector<double> weight;      // 0: on that sample; else the share towards the next
+    };
+    std::vector<Grid> grids;
+    for (const auto& s : spans) {
+        const double t0 = rows[s.begin].t;
+        const double span = rows[s.end - 1].t - t0;
+        if (span + runs.stepS < runs.minRunS) {
+            result.notes.push_back(place(file, rows[s.begin].line, 1) + "-" +
+                                   std::to_string(rows[s.end - 1].line) + ": a run of " +
+                                   std::to_string(static_cast<long>(std::lround(span + runs.stepS))) +
+                                   " s is shorter than the minimum of " +
+                                   std::to_string(static_cast<long>(runs.minRunS)) + " s; left out");
+            continue;
+        }
+        ++runNumber;
+        Batch b;
+        b.sourcePath = file;
+        std::string id;
+        if (rows[s.begin].batch >= 0) {
+            id = batchIds[static_cast<std::size_t>(rows[s.begin].batch)];
+            const int use = ++idUses[id];
+            if (use > 1) {
+                id += "_" + std::to_string(use);
+            }
+        } else {
+            char buf[16];
+            std::snprintf(buf, sizeof buf, "_R%02d", runNumber);
+            id = stem + buf;
+        }
+        b.id = id;
+        RunSource src;
+        src.file = file;
+        src.firstLine = rows[s.begin].line;
+        src.lastLine = rows[s.end - 1].line;
+        src.startTimestamp = isoOf(t0);
+        src.samples = s.end - s.begin;
+        src.splitReason = s.reason;
+        const auto gridRows = static_cast<std::size_t>(std::floor(span / runs.stepS + 1e-9)) + 1;
+        std::vector<double> time(gridRows);
+        b.lineOfRow.resize(gridRows);
+        Grid g;
+        g.before.resize(gridRows);
+        g.weight.resize(gridRows);
+        std::size_t j = s.begin;
+        const double eps = 1e-3 * runs.stepS; // stamps rounded to a millisecond are on the grid
+        for (std::size_t k = 0; k < gridRows; ++k) {
+            const double tg = t0 + static_cast<double>(k) * runs.stepS;
+            time[k] = static_cast<double>(k) * runs.stepS;
+            while (j + 1 < s.end && rows[j + 1].t <= tg + eps) {
+                ++j;
+            }
+            g.before[k] = j;
+            g.weight[k] = std::abs(rows[j].t - tg) <= eps || j + 1 >= s.end
+                              ? 0.0
+                              : (tg - rows[j].t) / (rows[j + 1].t - rows[j].t);
+            b.lineOfRow[k] = rows[j].line;
+        }
+        b.metadataLines = metadata;
+        b.metadataLines.push_back("# batch: " + id);
+        b.metadataLines.push_back("# source: " + std::filesystem::path(file).filename().string() + " lines " +
+                                  std::to_string(src.firstLine) + "-" + std::to_string(src.lastLine));
+        b.metadataLines.push_back("# start: " + src.startTimestamp);
+        b.numeric.push_back({Column::Time, shape.timeHeader, std::move(time)});
+        b.fileOrder.push_back(0);
+        b.run = src;
+        result.runs.push_back(std::move(b));
+        grids.push_back(std::move(g));
+    }
+    for (auto& c : columns) {
+        if (!c.numeric || !c.contract) {
+            std::vector<double>().swap(c.values);
+            continue; // extra columns of a historian export are not part of a run
+        }
+        for (std::size_t r = 0; r < result.runs.size(); ++r) {
+            Batch& b = result.runs[r];
+            const Grid& g = grids[r];
+            RunSource& src = *b.run;
+            std::vector<double> v(g.before.size(), kNan);
+            for (std::size_t k = 0; k < v.size(); ++k) {
+                const std::size_t i = g.before[k];
+                const double a = c.values[i];
+                if (g.weight[k] == 0.0) {
+                    v[k] = a;
+                    if (std::isnan(a)) {
+                        b.missing.push_back({rows[i].line, static_cast<int>(c.field) + 1,
+                                             std::string(spec(*c.contract).name)});
+                    }
+                    continue;
+                }
+                const double z = c.values[i + 1];
+                if (std::isfinite(a) && std::isfinite(z)) {
+                    v[k] = a + g.weight[k] * (z - a);
+                    ++src.interpolatedCells;
+                } else {
+                    ++src.gapCells;
+                    b.missing.push_back(
+                        {rows[i].line, static_cast<int>(c.field) + 1, std::string(spec(*c.contract).name)});
+                }
+            }
+            b.fileOrder.push_back(static_cast<int>(b.numeric.size()));
+            b.numeric.push_back({*c.contract, c.header, std::move(v)});
+        }
+        std::vector<double>().swap(c.values);
+    }
+}
+
 } // namespace
 
 Expected<FileShape> sniffPlantText(const std::string& text, const std::string& file,
@@ -639,20 +849,10 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
     }
     const ColumnMapping& mapping = options.mapping;
     const RunSplitOptions& runs = mapping.runs;
-    const std::string stem = std::filesystem::path(file).stem().string();
 
     // Columns: the time, the batch id, contract columns (mapped or by name), other numeric ones.
     const std::size_t nCols = shape.headers.size();
     std::size_t timeIndex = 0, batchIndex = nCols;
-    struct ValueColumn {
-        std::optional<Column> contract;
-        std::string header;
-        std::string unit; ///< the file's unit for a contract column ("" = the contract's)
-        std::size_t field = 0;
-        bool numeric = true;
-        std::vector<double> values;
-        ColumnMapping conversion; ///< converts from unit to the contract's
-    };
     std::vector<ValueColumn> columns;
     std::set<Column> seen;
     for (std::size_t c = 0; c < nCols; ++c) {
@@ -870,194 +1070,16 @@ Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::strin
     }
 
     // Where runs end: clock jumps, batch-id changes, gaps, line stops.
-    const ValueColumn* feed = nullptr;
+    const std::vector<double>* feed = nullptr;
     for (const auto& c : columns) {
         if (c.contract == Column::Feed) {
-            feed = &c;
+            feed = &c.values;
         }
     }
-    const std::size_t n = rows.size();
-    std::vector<char> inStop(n, 0);
-    if (feed) {
-        for (std::size_t i = 0; i < n;) {
-            if (!(feed->values[i] < runs.lineStopFeedKgPerHour)) {
-                ++i;
-                continue;
-            }
-            std::size_t j = i;
-            while (j < n && feed->values[j] < runs.lineStopFeedKgPerHour) {
-                ++j;
-            }
-            if (rows[j - 1].t - rows[i].t + runs.stepS >= runs.minStopS) {
-                std::fill(inStop.begin() + static_cast<long>(i), inStop.begin() + static_cast<long>(j), 1);
-            }
-            i = j;
-        }
-    }
-    struct Span {
-        std::size_t begin = 0, end = 0;
-        std::string reason;
-    };
-    std::vector<Span> spans;
-    std::size_t jump = 0;
-    for (std::size_t i = 0; i < n;) {
-        if (inStop[i]) {
-            ++i;
-            continue;
-        }
-        Span s{i, i + 1, "end of file"};
-        while (s.end < n) {
-            const std::size_t k = s.end;
-            if (inStop[k]) {
-                s.reason = "line stop";
-                break;
-            }
-            if (jump < clockJumpBefore.size() && clockJumpBefore[jump] == k) {
-                s.reason = "clock jump";
-                break;
-            }
-            if (rows[k].batch != rows[k - 1].batch) {
-                s.reason = "batch id";
-                break;
-            }
-            if (rows[k].t - rows[k - 1].t > runs.maxInterpolatedGapS) {
-                s.reason = "gap";
-                break;
-            }
-            ++s.end;
-        }
-        while (jump < clockJumpBefore.size() && clockJumpBefore[jump] <= s.end) {
-            ++jump;
-        }
-        spans.push_back(s);
-        i = s.end;
-    }
+    const std::vector<Span> spans = cutIntoRuns(rows, feed, clockJumpBefore, runs);
 
     // Each run onto the step's grid.
-    std::map<std::string, int> idUses;
-    int runNumber = 0;
-    const auto isoOf = [&](double t) {
-        if (shape.timeFormat == TimeFormat::Seconds) {
-            char buf[48];
-            std::snprintf(buf, sizeof buf, "t = %.3f s", t);
-            return std::string(buf);
-        }
-        const auto whole = static_cast<time_t>(std::floor(t));
-        std::tm tm{};
-        gmtime_r(&whole, &tm);
-        char buf[48];
-        std::snprintf(buf, sizeof buf, "%04d-%02d-%02dT%02d:%02d:%02d", tm.tm_year + 1900, tm.tm_mon + 1,
-                      tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec);
-        return std::string(buf);
-    };
-    // Every run's grid first, then column by column into all runs, each source column freed
-    // once used: the numbers of a month at 1 s are held once and a column more, not twice.
-    struct Grid {
-        std::vector<std::size_t> before; // the sample at or before each grid row
-        std::vector<double> weight;      // 0: on that sample; else the share towards the next
-    };
-    std::vector<Grid> grids;
-    for (const auto& s : spans) {
-        const double t0 = rows[s.begin].t;
-        const double span = rows[s.end - 1].t - t0;
-        if (span + runs.stepS < runs.minRunS) {
-            result.notes.push_back(place(file, rows[s.begin].line, 1) + "-" +
-                                   std::to_string(rows[s.end - 1].line) + ": a run of " +
-                                   std::to_string(static_cast<long>(std::lround(span + runs.stepS))) +
-                                   " s is shorter than the minimum of " +
-                                   std::to_string(static_cast<long>(runs.minRunS)) + " s; left out");
-            continue;
-        }
-        ++runNumber;
-        Batch b;
-        b.sourcePath = file;
-        std::string id;
-        if (rows[s.begin].batch >= 0) {
-            id = batchIds[static_cast<std::size_t>(rows[s.begin].batch)];
-            const int use = ++idUses[id];
-            if (use > 1) {
-                id += "_" + std::to_string(use);
-            }
-        } else {
-            char buf[16];
-            std::snprintf(buf, sizeof buf, "_R%02d", runNumber);
-            id = stem + buf;
-        }
-        b.id = id;
-        RunSource src;
-        src.file = file;
-        src.firstLine = rows[s.begin].line;
-        src.lastLine = rows[s.end - 1].line;
-        src.startTimestamp = isoOf(t0);
-        src.samples = s.end - s.begin;
-        src.splitReason = s.reason;
-        const auto gridRows = static_cast<std::size_t>(std::floor(span / runs.stepS + 1e-9)) + 1;
-        std::vector<double> time(gridRows);
-        b.lineOfRow.resize(gridRows);
-        Grid g;
-        g.before.resize(gridRows);
-        g.weight.resize(gridRows);
-        std::size_t j = s.begin;
-        const double eps = 1e-3 * runs.stepS; // stamps rounded to a millisecond are on the grid
-        for (std::size_t k = 0; k < gridRows; ++k) {
-            const double tg = t0 + static_cast<double>(k) * runs.stepS;
-            time[k] = static_cast<double>(k) * runs.stepS;
-            while (j + 1 < s.end && rows[j + 1].t <= tg + eps) {
-                ++j;
-            }
-            g.before[k] = j;
-            g.weight[k] = std::abs(rows[j].t - tg) <= eps || j + 1 >= s.end
-                              ? 0.0
-                              : (tg - rows[j].t) / (rows[j + 1].t - rows[j].t);
-            b.lineOfRow[k] = rows[j].line;
-        }
-        b.metadataLines = metadata;
-        b.metadataLines.push_back("# batch: " + id);
-        b.metadataLines.push_back("# source: " + std::filesystem::path(file).filename().string() + " lines " +
-                                  std::to_string(src.firstLine) + "-" + std::to_string(src.lastLine));
-        b.metadataLines.push_back("# start: " + src.startTimestamp);
-        b.numeric.push_back({Column::Time, shape.timeHeader, std::move(time)});
-        b.fileOrder.push_back(0);
-        b.run = src;
-        result.runs.push_back(std::move(b));
-        grids.push_back(std::move(g));
-    }
-    for (auto& c : columns) {
-        if (!c.numeric || !c.contract) {
-            std::vector<double>().swap(c.values);
-            continue; // extra columns of a historian export are not part of a run
-        }
-        for (std::size_t r = 0; r < result.runs.size(); ++r) {
-            Batch& b = result.runs[r];
-            const Grid& g = grids[r];
-            RunSource& src = *b.run;
-            std::vector<double> v(g.before.size(), kNan);
-            for (std::size_t k = 0; k < v.size(); ++k) {
-                const std::size_t i = g.before[k];
-                const double a = c.values[i];
-                if (g.weight[k] == 0.0) {
-                    v[k] = a;
-                    if (std::isnan(a)) {
-                        b.missing.push_back({rows[i].line, static_cast<int>(c.field) + 1,
-                                             std::string(spec(*c.contract).name)});
-                    }
-                    continue;
-                }
-                const double z = c.values[i + 1];
-                if (std::isfinite(a) && std::isfinite(z)) {
-                    v[k] = a + g.weight[k] * (z - a);
-                    ++src.interpolatedCells;
-                } else {
-                    ++src.gapCells;
-                    b.missing.push_back(
-                        {rows[i].line, static_cast<int>(c.field) + 1, std::string(spec(*c.contract).name)});
-                }
-            }
-            b.fileOrder.push_back(static_cast<int>(b.numeric.size()));
-            b.numeric.push_back({*c.contract, c.header, std::move(v)});
-        }
-        std::vector<double>().swap(c.values);
-    }
+    resampleRuns(spans, rows, columns, batchIds, metadata, shape, file, runs, result);
     if (result.runs.empty()) {
         return badInput(file, rows.front().line, 1,
                         "no production run: every stretch of the file is a line stop or shorter than " +
