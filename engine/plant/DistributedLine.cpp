@@ -66,20 +66,6 @@ double airTemperature(double h, double w) {
     return kKelvin + (h - w * kLatentAtRef) / (kAirCp + w * kVapourCp);
 }
 
-/// Linear interpolation in a 1 s series, held at the ends.
-double at(const std::vector<double>& v, double t) {
-    if (t <= 0) {
-        return v.front();
-    }
-    const double last = static_cast<double>(v.size() - 1);
-    if (t >= last) {
-        return v.back();
-    }
-    const auto i = static_cast<std::size_t>(t);
-    const double w = t - static_cast<double>(i);
-    return v[i] + w * (v[i + 1] - v[i]);
-}
-
 /// Stocks of one volume: dry matter [kg], water [kg], enthalpy C(X)(T − T_ref) [J].
 struct Stock {
     double dry = 0, water = 0, enthalpy = 0;
@@ -195,7 +181,7 @@ DistributedLine::DistributedLine(const PlantOptions& options, PlantDisturbances 
 }
 
 void DistributedLine::stepTube(double t, double dt, double hotK) {
-    const double air = at(dist.airSpeedMPerS, t);
+    const double air = seriesAt(dist.airSpeedMPerS, t);
     const double speedRatio = std::max(4.0, air) / m_d.nominalAirSpeed;
     // Strands lag the air by their slip velocity: a faster air carries them through sooner.
     const double tubeTime = m_p[Param::tau_HDT] * (m_d.nominalAirSpeed - m_d.slipSpeed) /
@@ -212,7 +198,7 @@ void DistributedLine::stepTube(double t, double dt, double hotK) {
         fouling > 0 ? 1.0 - std::exp(-(t - onsetOf(Mechanism::HeatTransferFouling)) / m_d.hfFoulingTimeS)
                     : 0.0;
     const double fallingRate = effectAt(Mechanism::FallingRateDrying, t);
-    const double tAmb = at(dist.tAmbK, t);
+    const double tAmb = seriesAt(dist.tAmbK, t);
     double gasT = hotK;
     if (o.hiddenAmplitudeK > 0) {
         gasT += o.hiddenAmplitudeK * std::sin(2 * M_PI * t / o.hiddenPeriodS);
@@ -236,7 +222,7 @@ void DistributedLine::stepTube(double t, double dt, double hotK) {
         const double profile = 1.5 - static_cast<double>(i) / (n - 1);
         env.h = m_p[Param::h_HDT] * m_d.heatTransferFactor * std::sqrt(speedRatio) *
                 std::max(0.05, 1.0 - fouling * foulingGrowth * profile);
-        env.k = m_p[Param::k_HDT] * m_d.massTransferFactor * std::sqrt(speedRatio) * at(dist.kDrift, t);
+        env.k = m_p[Param::k_HDT] * m_d.massTransferFactor * std::sqrt(speedRatio) * seriesAt(dist.kDrift, t);
         if (fallingRate > 0) {
             // Below X_cr = 0.21 the strand's inside limits drying, linearly down to X_e.
             const double xe = properties::equilibriumMoisture(tK, 1e-6, m_p);
@@ -263,8 +249,8 @@ void DistributedLine::stepTube(double t, double dt, double hotK) {
         }
     }
     // Solids: conservative upwind fluxes between cells (tanks in series).
-    const double feedDry = at(dist.feedKgPerS, t) / (1 + at(dist.xInDb, t));
-    Stock inflow = stockOf(feedDry, at(dist.xInDb, t), at(dist.tInK, t)); // per second
+    const double feedDry = seriesAt(dist.feedKgPerS, t) / (1 + seriesAt(dist.xInDb, t));
+    Stock inflow = stockOf(feedDry, seriesAt(dist.xInDb, t), seriesAt(dist.tInK, t)); // per second
     for (int i = 0; i < n; ++i) {
         auto& c = m_cells[static_cast<std::size_t>(i)];
         const double share = 1.0 / tauCell; // of the cell's content leaving per second
@@ -280,11 +266,11 @@ void DistributedLine::stepTube(double t, double dt, double hotK) {
     m_tubeOutflow.enthalpy += dt * inflow.enthalpy;
     if (m_accounting) {
         auto& b = m_balance.tube;
-        const double feedX = at(dist.xInDb, t);
+        const double feedX = seriesAt(dist.xInDb, t);
         b.waterInKg += dt * feedDry * feedX;
         b.waterOutKg += dt * inflow.water;
         b.waterToAirKg += dt * contactFlow * (gasW - m_d.inletHumidity);
-        b.energyInJ += dt * stockOf(feedDry, feedX, at(dist.tInK, t)).enthalpy;
+        b.energyInJ += dt * stockOf(feedDry, feedX, seriesAt(dist.tInK, t)).enthalpy;
         b.energyOutJ += dt * inflow.enthalpy;
         // What the air gave up, less what its wall took: the net heat the strands received.
         b.energyFromAirJ += dt * (contactFlow * (gasHIn - gasH) - wallLossW);
@@ -293,8 +279,8 @@ void DistributedLine::stepTube(double t, double dt, double hotK) {
 }
 
 void DistributedLine::stepBelt(double t) {
-    const double tAmb = at(dist.tAmbK, t);
-    const double rh = at(dist.rhAmb, t);
+    const double tAmb = seriesAt(dist.tAmbK, t);
+    const double rh = seriesAt(dist.rhAmb, t);
     const double reabsorption = effectAt(Mechanism::AmbientReabsorption, t);
     const double tRef = m_p[Param::T_ref];
     double evaporated = 0;
@@ -359,8 +345,8 @@ void DistributedLine::stepBelt(double t) {
 }
 
 void DistributedLine::stepWinnower(double t, double dt, const Stock& inflowPerS) {
-    const double tAir = at(dist.tAmbK, t);
-    const double rh = at(dist.rhAmb, t);
+    const double tAir = seriesAt(dist.tAmbK, t);
+    const double rh = seriesAt(dist.rhAmb, t);
     auto& w = m_winnower;
     const double x = w.x();
     const double tK = temperature(w);

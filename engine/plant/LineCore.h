@@ -3,8 +3,23 @@
 #include "plant/PlantLine.h"
 
 #include <memory>
+#include <vector>
 
 namespace drytwin::plant {
+
+/// @brief Linear interpolation in a series sampled every second, held at its ends.
+inline double seriesAt(const std::vector<double>& v, double t) {
+    if (t <= 0) {
+        return v.front();
+    }
+    const double last = static_cast<double>(v.size() - 1);
+    if (t >= last) {
+        return v.back();
+    }
+    const auto i = static_cast<std::size_t>(t);
+    const double w = t - static_cast<double>(i);
+    return v[i] + w * (v[i + 1] - v[i]);
+}
 
 /// @brief What the lumped and the distributed line share behind PlantLine: the options, the
 /// disturbances, the mechanisms' schedule, the record, the sample counter. Internal to plant/.

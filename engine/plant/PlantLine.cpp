@@ -68,20 +68,6 @@ template <int N, class F> void rk4(double* y, double t0, double duration, int st
     }
 }
 
-/// Linear interpolation in a uniformly sampled series (1 s), held at the ends.
-double at(const std::vector<double>& v, double t) {
-    if (t <= 0) {
-        return v.front();
-    }
-    const double last = static_cast<double>(v.size() - 1);
-    if (t >= last) {
-        return v.back();
-    }
-    const auto i = static_cast<std::size_t>(t);
-    const double w = t - static_cast<double>(i);
-    return v[i] + w * (v[i + 1] - v[i]);
-}
-
 struct ParcelOutcome {
     double xHdt = 0, tHdt = 0, xOut = 0, tOut = 0;
 };
@@ -265,7 +251,7 @@ public:
         const auto& air = dist.airSpeedMPerS;
         const double tEntry = static_cast<double>(j);
         const auto when = [&](double t) { return frozen ? 0.0 : t; };
-        const auto hotAt = [&](double t) { return frozen ? sp : at(tHot, t); };
+        const auto hotAt = [&](double t) { return frozen ? sp : seriesAt(tHot, t); };
         const double wallLoss = effectAt(Mechanism::TubeWallHeatLoss, tEntry);
         const double gasCoupling = effectAt(Mechanism::GasPhaseCoupling, tEntry);
         const double fouling = effectAt(Mechanism::HeatTransferFouling, tEntry);
@@ -276,8 +262,8 @@ public:
         const double foulingFactor =
             1.0 -
             fouling * (1.0 - std::exp(-(tEntry - onset(Mechanism::HeatTransferFouling)) / kFoulingTimeS));
-        const double gasFlow = 0.8 * at(air, when(tEntry)) * kTubeAreaM2; // kg/s of hot air
-        const double loadRatio = at(feed, when(tEntry)) / (1.0 + xIn[j]) / gasFlow;
+        const double gasFlow = 0.8 * seriesAt(air, when(tEntry)) * kTubeAreaM2; // kg/s of hot air
+        const double loadRatio = seriesAt(feed, when(tEntry)) / (1.0 + xIn[j]) / gasFlow;
         rk4<4>(y, 0.0, tauH, static_cast<int>(std::ceil(tauH / 0.25)),
                [&](double s, const double* v, double* d) {
                    const double t = when(tEntry + s);
@@ -291,8 +277,8 @@ public:
                    double tWallGas = tHotNow;
                    if (wallLoss > 0) {
                        const double ntu = wallLoss * (s / tauH) *
-                                          std::pow(kNominalAirSpeed / std::max(4.0, at(air, t)), 0.8);
-                       tWallGas = at(tAmb, t) + (tHotNow - at(tAmb, t)) * std::exp(-ntu);
+                                          std::pow(kNominalAirSpeed / std::max(4.0, seriesAt(air, t)), 0.8);
+                       tWallGas = seriesAt(tAmb, t) + (tHotNow - seriesAt(tAmb, t)) * std::exp(-ntu);
                    }
                    env.tGasK = tWallGas + (v[2] - hotAt(tEntry));
                    if (o.hiddenAmplitudeK > 0) {
@@ -300,7 +286,7 @@ public:
                    }
                    env.wGas = v[3];
                    env.h = p0[Param::h_HDT] * foulingFactor;
-                   env.k = p0[Param::k_HDT] * at(dist.kDrift, t);
+                   env.k = p0[Param::k_HDT] * seriesAt(dist.kDrift, t);
                    if (fallingRate > 0) {
                        const double xe = properties::equilibriumMoisture(v[1], 1e-6, p0);
                        const double depth =
@@ -325,10 +311,10 @@ public:
                    const double t = when(tConvIn + s);
                    // Humid air loads the surface faster than linearly in RH, and a drier leaf
                    // takes up more.
-                   const double rhNow = at(rh, t);
+                   const double rhNow = seriesAt(rh, t);
                    const double uptake = reabsorption * 1e-4 * rhNow * std::exp(3.0 * (rhNow - 0.5)) *
                                          std::max(0.0, 1.0 - v[0] / 0.35);
-                   ph::AmbientEnvironment env{at(tAmb, t), rhNow, uptake};
+                   ph::AmbientEnvironment env{seriesAt(tAmb, t), rhNow, uptake};
                    const auto r = ph::conveyorRates(v[0], v[1], env, p0, sw);
                    d[0] = r.dXdt;
                    d[1] = r.dTdt;
@@ -338,7 +324,7 @@ public:
         double w[2] = {mix.xDb, mix.tK};
         rk4<2>(w, 0.0, tW, static_cast<int>(std::ceil(tW / 0.25)), [&](double s, const double* v, double* d) {
             const double t = when(tWinIn + s);
-            ph::AmbientEnvironment env{at(tAmb, t), at(rh, t), 0.0};
+            ph::AmbientEnvironment env{seriesAt(tAmb, t), seriesAt(rh, t), 0.0};
             const auto r = ph::winnowerRates(v[0], v[1], s, mix.xDb, mix.tK, env, p0, sw);
             d[0] = r.dXdt;
             d[1] = r.dTdt;
