@@ -449,9 +449,16 @@ QStringList MainWindow::saveTabScreenshots(const QString& folder) {
     QDir().mkpath(folder);
     QStringList files;
     for (int i = 0; i < m_tabs->count(); ++i) {
-        m_tabs->setCurrentIndex(i);
-        for (int k = 0; k < 5; ++k) {
-            QApplication::processEvents();
+        // A job finishing while the events are processed may bring its own tab forward (a reopened
+        // training session does): the tab is set again until it stays.
+        for (int attempt = 0; attempt < 3; ++attempt) {
+            m_tabs->setCurrentIndex(i);
+            for (int k = 0; k < 5; ++k) {
+                QApplication::processEvents();
+            }
+            if (m_tabs->currentIndex() == i) {
+                break;
+            }
         }
         const QString file = QDir(folder).filePath(
             QStringLiteral("%1-%2.png").arg(i + 1, 2, 10, QLatin1Char('0')).arg(QLatin1String(kTabKeys[i])));

@@ -22,6 +22,7 @@
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <cmath>
 
 namespace drytwin::widgets {
 
@@ -124,13 +125,22 @@ void DataPanel::fill() {
     m_table->setRowCount(static_cast<int>(si.size()));
     for (std::size_t i = 0; i < si.size(); ++i) {
         const auto& b = si[i];
-        std::size_t kept = 0;
+        std::size_t kept = 0, nx = 0, nh = 0;
         double x = 0, h = 0;
         for (std::size_t k = 0; k < b.rows(); ++k) {
             kept += b.keep[k];
-            x += units::dryToWetPct(b.xOutDb[k]) / static_cast<double>(b.rows());
-            h += units::kelvinToCelsius(b.tHotK[k]) / static_cast<double>(b.rows());
+            // Means over the cells that hold a value: a transmitter's dropout is no reading.
+            if (std::isfinite(b.xOutDb[k])) {
+                x += units::dryToWetPct(b.xOutDb[k]);
+                ++nx;
+            }
+            if (std::isfinite(b.tHotK[k])) {
+                h += units::kelvinToCelsius(b.tHotK[k]);
+                ++nh;
+            }
         }
+        x = nx ? x / static_cast<double>(nx) : std::nan("");
+        h = nh ? h / static_cast<double>(nh) : std::nan("");
         const double minutes = b.rows() > 1 ? (b.timeS.back() - b.timeS.front()) / 60.0 : 0.0;
         const QStringList cells{
             QString::fromStdString(i < summary.batches.size() ? summary.batches[i].id : b.id),
