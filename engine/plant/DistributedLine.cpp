@@ -78,10 +78,6 @@ struct Slice {
     std::array<Stock, Design::kBeltLayers> layer{};
 };
 
-} // namespace
-
-namespace {
-
 class DistributedLine final : public LineCore {
 public:
     DistributedLine(const PlantOptions& options, PlantDisturbances disturbances, double initialSetpointK,
@@ -119,8 +115,7 @@ private:
     Stock m_tubeOutflow; ///< what left the tube during the current second
     std::deque<Slice> m_belt;
     Stock m_winnower;
-    double m_meter1 = std::nan(""), m_meter2 = std::nan(""); // moisture_meter_lag's two stages
-    double m_xInFiltered = std::nan("");                     // the PI's filtered inlet reading
+    double m_xInFiltered = std::nan(""); // the PI's filtered inlet reading
     bool m_measured = false;
     struct PendingInputs {
         double tHotK = 0, air = 0, feed = 0, xInDb = 0, tInK = 0, tAmbK = 0, rh = 0;
@@ -442,21 +437,7 @@ PlantSample DistributedLine::measure() {
     s.xInTruePct = units::dryToWetPct(dist.xInDb[k]);
     // The outlet meter: a lag (two stages: sample line and sensor) and an offset that grows with
     // the product's temperature, as in the lumped plant (they are the meter's, not the line's).
-    double xOutAtMeter = s.xOutTruePct;
-    const double meterLag = effectAt(Mechanism::MoistureMeterLag, t);
-    if (meterLag > 0) {
-        const double a = 1 - std::exp(-2.0 / meterLag);
-        if (std::isnan(m_meter1)) {
-            m_meter1 = m_meter2 = xOutAtMeter;
-        }
-        m_meter1 += (xOutAtMeter - m_meter1) * a;
-        m_meter2 += (m_meter1 - m_meter2) * a;
-        xOutAtMeter = m_meter2;
-    } else {
-        m_meter1 = m_meter2 = std::nan("");
-    }
-    xOutAtMeter += effectAt(Mechanism::MoistureMeterOffset, t) *
-                   (1.0 + 0.1 * (units::kelvinToCelsius(s.tOutTrueK) - 55.0) / 10.0);
+    const double xOutAtMeter = outletMeterLagged(s.xOutTruePct, t) + outletMeterOffsetPct(s.tOutTrueK, t);
     s.xOutPct = readSensor(SensorChannel::OutletMoisture, xOutAtMeter);
     s.tOutK = readCelsius(SensorChannel::OutletTemperature, s.tOutTrueK);
     s.xHdtPct = readSensor(SensorChannel::TubeMoisture, xHdtTrue);

@@ -2,6 +2,7 @@
 
 #include "plant/PlantLine.h"
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -53,6 +54,11 @@ public:
     }
     /// @brief A true temperature [K] read by a transmitter that works in °C; NaN during a dropout.
     double readCelsius(SensorChannel c, double trueK, double extraLagS = 0);
+    /// @brief The outlet moisture meter's reading of @p xOutPct [% wb] through moisture_meter_lag
+    /// (two first-order stages of half its time constant each; the meter's, so shared by both lines).
+    double outletMeterLagged(double xOutPct, double t);
+    /// @brief moisture_meter_offset at a product temperature [% wb]: it grows 10 % per 10 K above 55 °C.
+    double outletMeterOffsetPct(double tOutK, double t) const;
     /// @brief The inlet gauge's offset at a true inlet moisture (inlet_moisture_sensor_offset) [% wb].
     double inletSensorOffsetPct(double xInTruePct, double t) const;
 
@@ -65,6 +71,10 @@ public:
     bool realistic = false; ///< every column through its transmitter
     /// The transmitters: realistic ones, or ideal ones that carry only the sensor mechanisms.
     SensorBank sensors;
+
+private:
+    double m_meterStage1 = std::numeric_limits<double>::quiet_NaN(); ///< moisture_meter_lag's stages
+    double m_meterStage2 = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// @brief The lumped line (PlantKind::Lumped).

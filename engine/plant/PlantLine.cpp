@@ -172,6 +172,28 @@ double LineCore::readCelsius(SensorChannel c, double trueK, double extraLagS) {
     return units::celsiusToKelvin(readSensor(c, units::kelvinToCelsius(trueK), extraLagS));
 }
 
+double LineCore::outletMeterLagged(double xOutPct, double t) {
+    const double meterLag = effectAt(Mechanism::MoistureMeterLag, t);
+    if (meterLag <= 0) {
+        m_meterStage1 = m_meterStage2 = std::nan("");
+        return xOutPct;
+    }
+    // Second order: a sample line and the sensor, each with half the time constant.
+    const double a = 1 - std::exp(-2.0 / meterLag);
+    if (std::isnan(m_meterStage1)) {
+        m_meterStage1 = m_meterStage2 = xOutPct;
+    }
+    m_meterStage1 += (xOutPct - m_meterStage1) * a;
+    m_meterStage2 += (m_meterStage1 - m_meterStage2) * a;
+    return m_meterStage2;
+}
+
+double LineCore::outletMeterOffsetPct(double tOutK, double t) const {
+    // The offset of a meter calibrated at 55 °C grows with the product's temperature.
+    return effectAt(Mechanism::MoistureMeterOffset, t) *
+           (1.0 + 0.1 * (units::kelvinToCelsius(tOutK) - 55.0) / 10.0);
+}
+
 double LineCore::inletSensorOffsetPct(double xInTruePct, double t) const {
     const double offset = effectAt(Mechanism::InletMoistureSensorOffset, t);
     // A gauge set up at 22 % wb: its slope error makes the offset grow with the moisture.
@@ -230,8 +252,6 @@ public:
     std::size_t nextParcel = 0;
     ParcelOutcome preStart;
     double sp = 0;
-    double meterState = std::nan("");
-    double meterState2 = std::nan("");
 
     double normal() { return (realistic ? 0.0 : o.noiseScale) * random->unitNormal(random->engine); }
 
@@ -417,24 +437,8 @@ PlantSample LumpedLine::measure() {
     s.tOutTrueK = out.tOut;
     s.xInTruePct = 100 * im.dist.xInDb[k] / (1 + im.dist.xInDb[k]);
     // Instruments.
-    double xOutMeasPct = s.xOutTruePct;
-    const double meterLag = im.effectAt(Mechanism::MoistureMeterLag, t);
-    if (meterLag > 0) {
-        // Second order: a sample line and the sensor, each with half the time constant.
-        const double a = 1 - std::exp(-2.0 / meterLag);
-        if (std::isnan(im.meterState)) {
-            im.meterState = im.meterState2 = xOutMeasPct;
-        }
-        im.meterState += (xOutMeasPct - im.meterState) * a;
-        im.meterState2 += (im.meterState - im.meterState2) * a;
-        xOutMeasPct = im.meterState2;
-    } else {
-        im.meterState = im.meterState2 = std::nan("");
-    }
-    // The offset of a meter calibrated at 55 °C grows with the product's temperature.
-    xOutMeasPct += im.effectAt(Mechanism::MoistureMeterOffset, t) *
-                       (1.0 + 0.1 * (units::kelvinToCelsius(out.tOut) - 55.0) / 10.0) +
-                   0.02 * im.normal();
+    double xOutMeasPct = outletMeterLagged(s.xOutTruePct, t);
+    xOutMeasPct += outletMeterOffsetPct(out.tOut, t) + 0.02 * im.normal();
     s.xOutPct = xOutMeasPct;
     s.tOutK = out.tOut + 0.03 * im.normal();
     s.xHdtPct = 100 * hdt.xHdt / (1 + hdt.xHdt) + 0.03 * im.normal();
