@@ -66,11 +66,32 @@ int runDiscover(const CommandOptions& o) {
     for (std::size_t i = 0; i < d.rounds.size(); ++i) {
         const auto& rd = d.rounds[i];
         std::printf("round %zu: %s%s%s\n", i + 1, rd.best.empty() ? "" : (rd.best + ": ").c_str(),
-                    rd.named ? "named" : "stop, ", rd.reason.c_str());
+                    rd.named ? "named" : "stop, ", rd.named ? "" : rd.reason.c_str());
+        for (const auto& x : rd.rejected) {
+            std::printf("  not named: %s (%s): %s\n", x.cause.c_str(), x.code.c_str(), x.reason.c_str());
+        }
     }
     std::printf("\nVerdict: %s\n", d.verdict.c_str());
     for (const auto& f : d.findings) {
-        std::printf("\n* %s\n  %s\n", f.cause.c_str(), f.evidence.c_str());
+        if (f.group.empty()) {
+            std::printf("\n* %s\n  %s\n", f.cause.c_str(), f.evidence.c_str());
+        } else {
+            std::string members = f.cause;
+            for (const auto& l : f.lookAlikes) {
+                if (!l.ruledOut) {
+                    members += " or " + l.cause;
+                }
+            }
+            std::printf("\n* one of a look-alike group (%s): %s\n  %s\n", f.group.c_str(), members.c_str(),
+                        f.evidence.c_str());
+        }
+        if (!f.perPart.empty()) {
+            std::printf("  per part:");
+            for (const auto& e : f.perPart) {
+                std::printf(" %s %.3g±%.2g;", e.part.c_str(), e.value, 1.96 * e.se);
+            }
+            std::printf("\n");
+        }
     }
     if (!d.bounds.empty()) {
         std::printf("\nNot named; what the data allow (one step from 0 at the final model, 95 %%):\n");
@@ -92,6 +113,10 @@ int runDiscover(const CommandOptions& o) {
             for (const auto& b : s.batches) {
                 std::printf(" %s", b.c_str());
             }
+        } else if (s.type == "dynamics") {
+            std::printf(": the error follows the simulated rate of change (a lag of %.3g s would explain "
+                        "%.0f %% of it): the line's dynamics differ from the model's",
+                        s.lagS, 100 * s.strength);
         } else {
             std::printf(", %+.3g per hour", s.strength);
         }
@@ -102,14 +127,18 @@ int runDiscover(const CommandOptions& o) {
                     "-> %.4f °C\n",
                     result->hybridMaeMoistureBefore, result->hybridMaeMoistureAfter,
                     result->hybridMaeTemperatureBefore, result->hybridMaeTemperatureAfter);
+        if (result->keptStartingModel) {
+            std::printf("The hybrid on the extended physics model is worse on the held-out part: the model "
+                        "written keeps the starting physics and its residual model (the findings stand).\n");
+        }
     }
     std::printf("\n%.1f s\n", result->ending.elapsedSeconds);
     if (!o.jsonPath.empty()) {
-        if (auto st = writeFileAtomically(o.jsonPath, io::discoveryJson(d, result->hasHybrid,
-                                                                        result->hybridMaeMoistureBefore,
-                                                                        result->hybridMaeMoistureAfter,
-                                                                        result->hybridMaeTemperatureBefore,
-                                                                        result->hybridMaeTemperatureAfter));
+        if (auto st = writeFileAtomically(
+                o.jsonPath,
+                io::discoveryJson(d, result->hasHybrid, result->hybridMaeMoistureBefore,
+                                  result->hybridMaeMoistureAfter, result->hybridMaeTemperatureBefore,
+                                  result->hybridMaeTemperatureAfter, result->keptStartingModel));
             !st) {
             return fail(st.error());
         }

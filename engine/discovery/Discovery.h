@@ -38,6 +38,28 @@ struct DiscoveryOptions {
     /// a meter's lag of tens of seconds) and far below the hours of drift and fouling.
     /// 0: judge the whole error only.
     double fastBandWindowS = 600;
+    /// Compensation: a cause that raises any measured channel's held-out squared error by more
+    /// than this share (and significantly, one-sided p < 0.05) while lowering another's is not named.
+    double maxChannelWorsening = 0.05;
+    /// Per-batch consistency: a batch's estimate may differ from the pooled value by its 95 %
+    /// interval plus this share of the pooled value (the plant's forms are not the model's).
+    double consistencyTolerance = 0.5;
+    /// Search an onset for each cause (an effect that starts mid-batch) and report it.
+    bool searchOnset = true;
+    /// Practical floors in physical units: below them a cause is not worth a maintenance order,
+    /// whatever its p-value. Defaults are typical data-sheet values; enter your instruments'.
+    struct Floors {
+        double outletMeterAccuracyPct = 0.15; ///< moisture_meter_offset [% wb]
+        double inletGaugeAccuracyPct = 0.3;   ///< inlet_moisture_sensor_offset [% wb]
+        double hotAirSensorLagS = 10;         ///< a thermocouple in a clean thermowell [s]
+        /// The inlet gauge's fast scatter (1σ of X_in about its 30 s mean) that is still normal;
+        /// inlet_moisture_sensor_noise needs the measured scatter above it [% wb].
+        double inletGaugeScatterPct = 0.3;
+        double foulingShare = 0.02;       ///< h_HDT lost over a mean batch
+        double transportTimeS = 3;        ///< transport_delay_error [s] (and at least 2 sampling steps)
+        double moistureEffectPct = 0.03;  ///< a cause must move X_out (rms, held-out) by this [% wb] ...
+        double temperatureEffectK = 0.05; ///< ... or T_out by this [K]
+    } floors;
     int maxCauses = 3;       ///< causes added one at a time, at most this many
     int candidatesToFit = 3; ///< significant candidates fitted per round, best score first
     int maxEvaluationsPerFit = 120;
@@ -119,6 +141,24 @@ struct Gain {
     double hybridMaeTemperatureBefore = 0, hybridMaeTemperatureAfter = 0;
 };
 
+/// @brief A cause's estimate in one part of the data: a batch, or a third of a single recording.
+struct PartEstimate {
+    std::string part; ///< batch id, or "batch id, part 2/3"
+    double value = 0;
+    double se = 0; ///< HAC standard error
+};
+
+/// @brief A look-alike of a named cause: a cause that leaves much the same signature on these
+/// data, fitted in its place and judged on the same held-out part.
+struct LookAlike {
+    std::string cause;
+    properties::Param parameter{};
+    double value = 0;
+    double heldOutLossRatio = 1; ///< its held-out weighted squared error over the named cause's
+    double pValue = 1;           ///< one-sided Diebold-Mariano that the named cause predicts better
+    bool ruledOut = false;       ///< pValue below DiscoveryOptions::gainAlpha
+};
+
 /// @brief A named cause with its fitted parameter, evidence and gain.
 struct Finding {
     std::string cause;
@@ -134,11 +174,29 @@ struct Finding {
     double biasBefore = 0, trendPerHourBefore = 0;
     std::string evidence; ///< one or two sentences an engineer can check on a plot
     Gain gain;
+    /// Specificity: the estimate per batch (or per third of a single recording); consistent when
+    /// each lies within its interval (widened by DiscoveryOptions::consistencyTolerance) of the
+    /// pooled value, and the fit on the cooler half helps on the warmer half.
+    std::vector<PartEstimate> perPart;
+    bool consistent = true;
+    bool transferChecked = false;
+    double transferReduction = 0; ///< share of the warmer half's training loss the cooler half's fit removes
+    /// An effect that starts mid-batch: its onset since the batch start [s], with the 95 %
+    /// profile interval (hasOnset false: from the start).
+    bool hasOnset = false;
+    double onsetS = 0, onsetLowS = 0, onsetHighS = 0;
+    /// Look-alikes: where one is not ruled out, the finding names the group, not one member.
+    std::string group; ///< "" when the cause stands alone; else the group's name
+    std::vector<LookAlike> lookAlikes;
+    std::string tellApart; ///< the measurement that would tell the group's members apart
 };
 
 /// @brief Structure left after the named causes that matches no mechanism (never forced onto one).
 struct Signature {
-    std::string type; ///< "periodic", "lagged_input", "batch_shift", "drift"
+    /// "periodic", "lagged_input", "batch_shift", "drift", or "dynamics" (the error follows the
+    /// output's own rate of change: the line responds more slowly (lagS > 0) or faster than the
+    /// model; lagS is the time constant that explains it, strength the share of variance)
+    std::string type;
     std::string output;
     double periodS = 0;               ///< periodic
     std::string column;               ///< lagged_input
@@ -157,6 +215,12 @@ struct Round {
     double explainedFractionFast = 0;  ///< of its fast part (DiscoveryOptions::fastBandWindowS)
     bool named = false;
     std::string reason; ///< why it stopped here, when not named
+    /// Candidates that passed the held-out test but were not specific, and why ("compensation",
+    /// "inconsistent", "below_floor", "line_dynamics"), with the sentence that explains it.
+    struct Rejection {
+        std::string cause, code, reason;
+    };
+    std::vector<Rejection> rejected;
 };
 
 /// @brief What the data allow for a cause that was not named: the one Gauss-Newton step from 0

@@ -286,7 +286,8 @@ std::string simulationCsv(const std::vector<data::SiBatch>& batches,
 }
 
 std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, double hybridMaeXBefore,
-                          double hybridMaeXAfter, double hybridMaeTBefore, double hybridMaeTAfter) {
+                          double hybridMaeXAfter, double hybridMaeTBefore, double hybridMaeTAfter,
+                          bool keptStartingModel) {
     const auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
     json j;
     j["verdict"] = r.verdict;
@@ -318,6 +319,41 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                                    {"low_frequency_share_before", num(g.lowFrequencyShareBefore)},
                                    {"low_frequency_share_after", num(g.lowFrequencyShareAfter)},
                                    {"p_value", num(g.pValue)}}}});
+        // Specificity: per-part estimates, transfer, onset, look-alikes (CONTRACT.md §2 discover).
+        json& out = j["findings"].back();
+        out["output"] = f.output;
+        if (!f.group.empty()) { // CONTRACT.md §3: every member, the favoured cause first
+            json members = json::array({f.cause});
+            for (const auto& l : f.lookAlikes) {
+                if (!l.ruledOut) {
+                    members.push_back(l.cause);
+                }
+            }
+            out["group"] = members;
+            out["group_name"] = f.group;
+        }
+        out["look_alikes"] = json::array();
+        for (const auto& l : f.lookAlikes) {
+            out["look_alikes"].push_back({{"cause", l.cause},
+                                          {"value", num(l.value)},
+                                          {"held_out_loss_ratio", num(l.heldOutLossRatio)},
+                                          {"p_value", num(l.pValue)},
+                                          {"ruled_out", l.ruledOut}});
+        }
+        if (!f.tellApart.empty()) {
+            out["tell_apart"] = f.tellApart;
+        }
+        out["per_part"] = json::array();
+        for (const auto& e : f.perPart) {
+            out["per_part"].push_back({{"part", e.part}, {"value", num(e.value)}, {"se", num(e.se)}});
+        }
+        out["consistent"] = f.consistent;
+        out["transfer"] =
+            f.transferChecked ? json{{"warm_half_loss_removed", num(f.transferReduction)}} : json(nullptr);
+        if (f.hasOnset) {
+            out["onset_s"] = num(f.onsetS);
+            out["onset_ci95"] = {num(f.onsetLowS), num(f.onsetHighS)};
+        }
     }
     j["ranking"] = json::array();
     for (const auto& c : r.ranking) {
@@ -349,6 +385,11 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                                {"explained_fraction_fast", num(rd.explainedFractionFast)},
                                {"named", rd.named},
                                {"reason", rd.reason}});
+        json rejected = json::array();
+        for (const auto& x : rd.rejected) {
+            rejected.push_back({{"cause", x.cause}, {"code", x.code}, {"reason", x.reason}});
+        }
+        j["rounds"].back()["rejected"] = rejected;
     }
     j["bounds"] = json::array();
     for (const auto& b : r.bounds) {
@@ -368,6 +409,8 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
             e["lag_s"] = num(s.lagS);
         } else if (s.type == "batch_shift") {
             e["batches"] = s.batches;
+        } else if (s.type == "dynamics") {
+            e["lag_s"] = num(s.lagS);
         }
         j["unexplained"].push_back(e);
     }
@@ -376,7 +419,8 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                        {"mae_moisture_before", num(hybridMaeXBefore)},
                        {"mae_moisture_after", num(hybridMaeXAfter)},
                        {"mae_temperature_before", num(hybridMaeTBefore)},
-                       {"mae_temperature_after", num(hybridMaeTAfter)}};
+                       {"mae_temperature_after", num(hybridMaeTAfter)},
+                       {"model_kept", keptStartingModel ? "starting" : "extended"}};
     }
     const auto residualsJson = [&](const std::vector<discovery::OutputResidual>& rs) {
         json a = json::array();

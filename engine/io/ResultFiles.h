@@ -37,6 +37,7 @@ std::string simulationCsv(const std::vector<data::SiBatch>& batches,
 
 /// @brief The JSON of CONTRACT.md §3 for `discover`, with the residual analysis beside it.
 std::string discoveryJson(const discovery::DiscoveryResult& result, bool hasHybrid, double hybridMaeXBefore,
-                          double hybridMaeXAfter, double hybridMaeTBefore, double hybridMaeTAfter);
+                          double hybridMaeXAfter, double hybridMaeTBefore, double hybridMaeTAfter,
+                          bool keptStartingModel = false);
 
 } // namespace drytwin::io

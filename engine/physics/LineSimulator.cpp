@@ -170,16 +170,24 @@ bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, con
             double hours[2] = {0, 0};      // since the batch started
             double gasCooling[2] = {0, 0}; // K per kg/kg evaporated
             double xEntry[2] = {0, 0};
+            double fallingLane[2] = {0, 0};
+            const double onset = p[Param::t_onset];
             for (int lane = 0; lane < l.width; ++lane) {
                 const std::size_t parcel = l.parcel + static_cast<std::size_t>(lane);
                 const SamplePoint where = x.locate(parcel, s);
                 const double tHot = where.of(x.in->tHotK);
                 gas[lane] = tHot;
+                // The mechanisms act from their onset on (t_onset, since the batch started).
+                const double sinceStart = (*x.entry)[parcel] + s - x.t0;
+                if (onset > 0 && sinceStart < onset) {
+                    continue;
+                }
+                fallingLane[lane] = falling;
                 if (wall != 0) { // tube_wall_heat_loss, simple form
                     gas[lane] = tHot - wall * (tHot - where.of(x.in->tAmbK));
                 }
                 if (fouling != 0) {
-                    hours[lane] = ((*x.entry)[parcel] + s - x.t0) / 3600.0;
+                    hours[lane] = (sinceStart - onset) / 3600.0;
                 }
                 if (gasCoupling != 0) { // conditions at the parcel's entry
                     const SamplePoint in0 = x.locate(parcel, 0.0);
@@ -206,7 +214,7 @@ bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, con
                     properties::math::maxOf(T((kModelCriticalMoisture - l.state(0)) / kModelCriticalMoisture),
                                             0.0),
                     1.0);
-                env.dryingFactor = 1.0 - falling * depth;
+                env.dryingFactor = 1.0 - l.load(fallingLane) * depth;
             }
             return generic::tubeRates(l.state(0), l.state(1), env, p, sw);
         });
@@ -240,7 +248,13 @@ bool conveyorEval(const void* c, double s, std::size_t first, std::size_t count,
                              const properties::ModelSwitches& sw, const auto& l) {
                              auto env = ambientAt(x, l, s);
                              if (const double reabsorption = p[Param::theta_reabs]; reabsorption != 0) {
-                                 env.extraUptake = reabsorption * 1e-4 * env.rh; // ambient_reabsorption
+                                 // ambient_reabsorption, from its onset on
+                                 double active[2] = {0, 0};
+                                 for (int lane = 0; lane < l.width; ++lane) {
+                                     const std::size_t parcel = l.parcel + static_cast<std::size_t>(lane);
+                                     active[lane] = (*x.entry)[parcel] + s - x.t0 >= p[Param::t_onset];
+                                 }
+                                 env.extraUptake = reabsorption * 1e-4 * env.rh * l.load(active);
                              }
                              return generic::conveyorRates(l.state(0), l.state(1), env, p, sw);
                          });
@@ -526,10 +540,93 @@ LineInputs boxSmoothed(const LineInputs& in, double windowS) {
     return out;
 }
 
+/// Width of the smoothing under the hot-air sensor's inverse lag [s]: the derivative of a raw
+/// thermocouple reading (0.3 K noise, 0.1 K steps) times a time constant of minutes would add
+/// kelvins of noise; over 20 s it adds a few tenths, far below what a lag of 30 s or more hides
+/// at a setpoint step. Fixed, so that the loss stays linear in tau_hot_sensor.
+constexpr double kHotSensorSmoothingS = 20;
+
+/// Zero-phase first-order filter (forward, then backward) of time constant @p tauS: the slow part
+/// of a reading without the lag a causal filter would add to the line's input.
+std::vector<double> zeroPhaseFilter(const std::vector<double>& t, const std::vector<double>& v, double tauS) {
+    std::vector<double> out = v;
+    for (std::size_t i = 1; i < out.size(); ++i) {
+        const double a = std::exp(-(t[i] - t[i - 1]) / tauS);
+        out[i] = a * out[i - 1] + (1 - a) * out[i];
+    }
+    for (std::size_t i = out.size() - 1; i-- > 0;) {
+        const double a = std::exp(-(t[i + 1] - t[i]) / tauS);
+        out[i] = a * out[i + 1] + (1 - a) * out[i];
+    }
+    return out;
+}
+
+/// Time constant of the zero-phase filter that separates the inlet gauge's fast scatter from
+/// the moisture's own variation [s]: the gauge's scatter is correlated over a few seconds, the
+/// inlet moisture changes over minutes (the conditioning cylinder's mixing).
+constexpr double kInletScatterFilterS = 20;
+
+/// The sensor causes (CONTRACT.md §4): the measured inputs corrected as the parameters say,
+/// before the line sees them, from the onset on. Null when every one is 0 (the inputs as measured).
+std::optional<LineInputs> correctedInputs(const LineInputs& in, const ParameterSet& p) {
+    const double offsetPct = p[Param::X_in_offset];
+    const double hotLagS = p[Param::tau_hot_sensor];
+    const double scatterShare = p[Param::phi_X_in_scatter];
+    if (offsetPct == 0 && hotLagS == 0 && scatterShare == 0) {
+        return std::nullopt;
+    }
+    const double onset = in.timeS.front() + p[Param::t_onset];
+    LineInputs out = in;
+    if (scatterShare > 0) { // inlet_moisture_sensor_noise: remove that share of the fast variation
+        const auto smooth = zeroPhaseFilter(in.timeS, in.xInDb, kInletScatterFilterS);
+        for (std::size_t i = 0; i < out.size(); ++i) {
+            if (in.timeS[i] >= onset) {
+                out.xInDb[i] = in.xInDb[i] + scatterShare * (smooth[i] - in.xInDb[i]);
+            }
+        }
+    }
+    if (offsetPct != 0) { // inlet_moisture_sensor_offset: the gauge reads true + offset
+        for (std::size_t i = 0; i < out.size(); ++i) {
+            if (in.timeS[i] >= onset) {
+                const double wet = std::clamp(units::dryToWetPct(out.xInDb[i]) - offsetPct, 0.5, 90.0);
+                out.xInDb[i] = units::wetPctToDry(wet);
+            }
+        }
+    }
+    if (hotLagS > 0 && in.size() > 2) { // hot_air_sensor_lag: true = measured + tau d(measured)/dt
+        const auto smooth = centredMovingAverage(in.timeS, in.tHotK, kHotSensorSmoothingS);
+        const std::size_t n = in.size();
+        const double half = kHotSensorSmoothingS / 2;
+        std::size_t a = 0, b = 0; // the samples within ±half of row i
+        for (std::size_t i = 0; i < n; ++i) {
+            while (in.timeS[a] < in.timeS[i] - half) {
+                ++a;
+            }
+            b = std::max(b, i);
+            while (b + 1 < n && in.timeS[b + 1] <= in.timeS[i] + half) {
+                ++b;
+            }
+            if (in.timeS[i] < onset) {
+                continue;
+            }
+            const double span = in.timeS[b] - in.timeS[a];
+            const double slope = span > 0 ? (smooth[b] - smooth[a]) / span : 0.0;
+            // A correction beyond ±60 K is a fit that left the physics; the bound keeps the tube's
+            // rates finite while the optimiser finds its way back.
+            out.tHotK[i] = in.tHotK[i] + std::clamp(hotLagS * slope, -60.0, 60.0);
+        }
+    }
+    return out;
+}
+
 /// The moisture_meter_offset extension: a constant offset in % wb on the predicted X_out and,
 /// by the chain rule through wet basis, on its sensitivities.
-void applyMeterOffset(SimulationResult& res, double offsetPct) {
+void applyMeterOffset(SimulationResult& res, double offsetPct, const std::vector<double>& timeS,
+                      double onsetS) {
     for (std::size_t j = 0; j < res.xOutDb.size(); ++j) {
+        if (timeS[res.rows[j]] < onsetS) {
+            continue;
+        }
         const double x = res.xOutDb[j];
         const double wet = units::dryToWetPct(x) + offsetPct;
         const double shifted = units::wetPctToDry(wet);
@@ -545,15 +642,18 @@ void applyMeterOffset(SimulationResult& res, double offsetPct) {
 /// The outlet moisture as the meter reports it: the moisture_meter_lag and moisture_meter_offset
 /// extensions (first-order lag, then a constant offset in % wb) applied to the predicted X_out
 /// and to its sensitivities.
-Expected<SimulationResult> simulateMeasured(const LineInputs& in, const ParameterSet& params,
+Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const ParameterSet& params,
                                             const SimulationOptions& o, const std::vector<std::size_t>& rows,
                                             const std::vector<Param>& odeSens) {
+    const auto corrected = correctedInputs(measured, params);
+    const LineInputs& in = corrected ? *corrected : measured;
     const double tauMeter = params[Param::tau_meter];
     const double offsetPct = params[Param::X_meter_offset];
+    const double onsetS = in.timeS.front() + params[Param::t_onset];
     if (tauMeter <= 0 || rows.empty()) {
         auto res = simulateCore(in, params, o, rows, odeSens);
         if (res && offsetPct != 0) {
-            applyMeterOffset(*res, offsetPct);
+            applyMeterOffset(*res, offsetPct, in.timeS, onsetS);
         }
         return res;
     }
@@ -648,6 +748,15 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& in, const Paramete
             lagged([q](const SimulationResult& r) -> const auto& { return r.sensitivities[q].dXOut; }));
     }
     // The result at the wanted rows, in their order: the raw run's values, the lagged X_out.
+    // Kept for the rows before an onset, where the meter reads without its lag.
+    std::vector<double> rawX;
+    std::vector<std::vector<double>> rawSensX;
+    if (onsetS > in.timeS.front()) {
+        rawX = raw->xOutDb;
+        for (const auto& sens : raw->sensitivities) {
+            rawSensX.push_back(sens.dXOut);
+        }
+    }
     SimulationResult res = std::move(*raw);
     std::vector<std::size_t> atRaw(rows.size()), atHistory(rows.size());
     for (std::size_t j = 0; j < rows.size(); ++j) {
@@ -679,13 +788,23 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& in, const Paramete
         }
         return out;
     };
-    res.xOutDb = atWanted(xOutLagged);
+    // Before the onset the meter reads without its lag (the raw run at the wanted rows).
+    const auto fromOnset = [&](std::vector<double> lagged, const std::vector<double>& rawHistory) {
+        for (std::size_t j = 0; j < rows.size() && !rawHistory.empty(); ++j) {
+            if (in.timeS[rows[j]] < onsetS) {
+                lagged[j] = rawHistory[atRaw[j]];
+            }
+        }
+        return lagged;
+    };
+    res.xOutDb = fromOnset(atWanted(xOutLagged), rawX);
     for (std::size_t q = 0; q < res.sensitivities.size(); ++q) {
-        res.sensitivities[q].dXOut = atWanted(sensLagged[q]);
+        res.sensitivities[q].dXOut =
+            fromOnset(atWanted(sensLagged[q]), rawSensX.empty() ? rawX : rawSensX[q]);
     }
     res.rows = rows;
     if (offsetPct != 0) {
-        applyMeterOffset(res, offsetPct);
+        applyMeterOffset(res, offsetPct, in.timeS, onsetS);
     }
     return res;
 }

@@ -94,14 +94,33 @@ const std::array<ParameterInfo, kParamCount>& parameterTable() {
          "extension falling_rate_drying", false, false},
         {Param::theta_reabs, "theta_reabs", "re-absorption on the conveyor: dX/dt gains theta RH", "1e-4 1/s",
          0, 0, 60, "extension ambient_reabsorption", false, false},
+        // Sensor causes: they correct a measured input before the line sees it (marked like
+        // durations: their sensitivities come from differences of whole runs).
+        {Param::X_in_offset, "X_in_offset",
+         "offset of the inlet moisture gauge: the line sees X_in measured minus it", "% wb", 0, -5, 5,
+         "extension inlet_moisture_sensor_offset", false, true},
+        {Param::tau_hot_sensor, "tau_hot_sensor",
+         "time constant of the hot-air sensor: the line sees T_hot + tau dT_hot/dt (its inverse lag)", "s", 0,
+         0, 400, "extension hot_air_sensor_lag", false, true},
+        {Param::phi_X_in_scatter, "phi_X_in_scatter",
+         "share of the inlet gauge's fast variation (about its 20 s zero-phase mean) that is scatter, not "
+         "moisture: the line sees X_in with that share removed",
+         "-", 0, 0, 1, "extension inlet_moisture_sensor_noise", false, true},
+        {Param::t_onset, "t_onset",
+         "onset of the mechanism extensions since each batch's start (0: from the start; "
+         "transport_delay_error "
+         "always acts from the start)",
+         "s", 0, 0, 1e6, "set by discovery for a cause that starts mid-batch", false, true},
     }};
     return t;
 }
 
 namespace {
 constexpr std::string_view kMechanismNames[kMechanismParamCount] = {
-    "tube_wall_heat_loss",   "gas_phase_coupling",    "heat_transfer_fouling", "moisture_meter_lag",
-    "moisture_meter_offset", "transport_delay_error", "falling_rate_drying",   "ambient_reabsorption"};
+    "tube_wall_heat_loss", "gas_phase_coupling",         "heat_transfer_fouling",
+    "moisture_meter_lag",  "moisture_meter_offset",      "transport_delay_error",
+    "falling_rate_drying", "ambient_reabsorption",       "inlet_moisture_sensor_offset",
+    "hot_air_sensor_lag",  "inlet_moisture_sensor_noise"};
 } // namespace
 
 std::optional<std::string_view> mechanismOf(Param p) {

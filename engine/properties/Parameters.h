@@ -53,12 +53,20 @@ enum class Param {
     dtau_conv,      ///< transport_delay_error
     theta_fall,     ///< falling_rate_drying
     theta_reabs,    ///< ambient_reabsorption
+    // Sensor causes (CONTRACT.md §4): the measured inputs are not the truth, and the model can
+    // say so. Each corrects a measured input before the line sees it; 0: the input as measured.
+    X_in_offset,      ///< inlet_moisture_sensor_offset
+    tau_hot_sensor,   ///< hot_air_sensor_lag
+    phi_X_in_scatter, ///< inlet_moisture_sensor_noise
+    /// Onset of the mechanisms above, in seconds since each batch's start (0: from the start). Set
+    /// by discovery when a cause starts mid-batch; one onset shared by every mechanism.
+    t_onset,
 };
-inline constexpr int kParamCount = 39;
-/// @brief The first mechanism-extension parameter; the eight from here on are, in order, the
+inline constexpr int kParamCount = 43;
+/// @brief The first mechanism-extension parameter; the eleven from here on are, in order, the
 /// mechanisms of CONTRACT.md §4.
 inline constexpr Param kFirstMechanismParam = Param::theta_wall;
-inline constexpr int kMechanismParamCount = 8;
+inline constexpr int kMechanismParamCount = 11;
 
 /// @brief One row of the parameter table: symbol, meaning, unit, default, bounds, source.
 struct ParameterInfo {

@@ -423,6 +423,20 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
             return st.error();
         }
         result.hasHybrid = true;
+        // Never make the hybrid worse (issue #23): where PGRL-CC on the extended physics model
+        // loses to PGRL-CC on the starting one on the held-out part (moisture and temperature
+        // weighed as in calibration), the findings stand as findings but the model offered for
+        // forecasting stays the starting one with its residual model.
+        const auto& w = options.discovery.weights;
+        const auto combined = [&](double maeX, double maeT) {
+            return std::sqrt(w.xOut) * maeX + std::sqrt(w.tOut) * maeT;
+        };
+        if (combined(result.hybridMaeMoistureAfter, result.hybridMaeTemperatureAfter) >
+            combined(result.hybridMaeMoistureBefore, result.hybridMaeTemperatureBefore)) {
+            result.keptStartingModel = true;
+            ext = std::move(start);
+            ext.pgrlCc = before;
+        }
     }
     result.ending = found->ending;
     result.ending.elapsedSeconds = secondsSince(t0);
@@ -608,7 +622,7 @@ Expected<PipelineResult> Session::pipeline(const PipelineOptions& options, const
     if (auto st = write(in("discover.json"),
                         io::discoveryJson(dd.discovery, dd.hasHybrid, dd.hybridMaeMoistureBefore,
                                           dd.hybridMaeMoistureAfter, dd.hybridMaeTemperatureBefore,
-                                          dd.hybridMaeTemperatureAfter));
+                                          dd.hybridMaeTemperatureAfter, dd.keptStartingModel));
         !st) {
         return failWith(st.error());
     }

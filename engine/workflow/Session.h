@@ -136,6 +136,9 @@ struct DiscoverResult {
     bool hasHybrid = false; ///< PGRL-CC one-step held-out MAE on the starting and the extended model
     double hybridMaeMoistureBefore = 0, hybridMaeMoistureAfter = 0;       ///< % wb
     double hybridMaeTemperatureBefore = 0, hybridMaeTemperatureAfter = 0; ///< °C
+    /// PGRL-CC on the extended model lost to PGRL-CC on the starting one on the held-out part:
+    /// extendedModel is then the starting model (h_HDT, k_HDT refitted) with its residual model.
+    bool keptStartingModel = false;
     Ending ending;
 };
 

@@ -13,6 +13,7 @@
 #include <QTableWidget>
 #include <QTextBrowser>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace drytwin::widgets {
 
@@ -100,12 +101,105 @@ QString lookForText(properties::Param p) {
         return DiscoverPanel::tr(
             "the outlet-moisture error grows with ambient humidity while the tube-outlet "
             "error does not");
+    case Param::X_in_offset:
+        return DiscoverPanel::tr(
+            "a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less");
+    case Param::tau_hot_sensor:
+        return DiscoverPanel::tr("after each hot-air setpoint step the outlet temperature and moisture move "
+                                 "before the simulation, which follows the slow reading");
+    case Param::phi_X_in_scatter:
+        return DiscoverPanel::tr("the inlet-moisture reading scatters from second to second while the outlet "
+                                 "does not follow it, and the simulated outlet does");
     default:
         return QString();
     }
 }
 
+/// The measurement that tells a look-alike group's members apart, in the GUI's language.
+QString tellApartText(const std::string& group) {
+    if (group == "outlet_response_time") {
+        return DiscoverPanel::tr(
+            "a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet "
+            "temperature's response as much as the moisture's, a meter lag delays the moisture reading "
+            "alone; "
+            "or grab samples timed against the meter");
+    }
+    if (group == "moisture_offset") {
+        return DiscoverPanel::tr(
+            "oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; "
+            "or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an "
+            "outlet-meter "
+            "offset does not");
+    }
+    if (group == "gas_temperature") {
+        return DiscoverPanel::tr("a gas-temperature reading at the tube's outlet end at two feed rates: wall "
+                                 "loss does not change with the feed, gas-phase cooling grows with it");
+    }
+    return QString::fromStdString(group);
+}
+
+/// Why a candidate that predicted better was not named, in the GUI's language (the engine's
+/// sentence follows in the details).
+QString rejectionText(const std::string& code) {
+    if (code == "compensation") {
+        return DiscoverPanel::tr("it lowers one output's error by raising another's (compensation)");
+    }
+    if (code == "inconsistent") {
+        return DiscoverPanel::tr("its size is not consistent across batches or operating regions");
+    }
+    if (code == "below_floor") {
+        return DiscoverPanel::tr("it is below what the instruments can tell (practical floor)");
+    }
+    if (code == "line_dynamics") {
+        return DiscoverPanel::tr("the outlet temperature lags the model as much: the line is slower than the "
+                                 "model, not the meter");
+    }
+    return DiscoverPanel::tr("no clear held-out gain");
+}
+
 } // namespace
+
+QString DiscoverPanel::specificityText(const discovery::Finding& f) {
+    const auto& info = properties::info(f.parameter);
+    const QString unit = QString::fromUtf8(info.unit.data(), static_cast<int>(info.unit.size()));
+    QStringList parts;
+    if (!f.perPart.empty()) {
+        double lo = f.perPart.front().value, hi = lo;
+        for (const auto& e : f.perPart) {
+            lo = std::min(lo, e.value);
+            hi = std::max(hi, e.value);
+        }
+        parts << tr("Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.")
+                     .arg(f.perPart.size())
+                     .arg(lo, 0, 'g', 3)
+                     .arg(hi, 0, 'g', 3)
+                     .arg(unit)
+                     .arg(f.consistent ? tr("consistent") : tr("not consistent"));
+    }
+    if (f.transferChecked) {
+        parts << tr("Fitted on the cooler half of the data it removes %1 % of the warmer half's error.")
+                     .arg(100 * f.transferReduction, 0, 'f', 0);
+    }
+    if (f.hasOnset) {
+        parts << tr("It starts %1 min into the batch (95 % interval %2–%3 min).")
+                     .arg(f.onsetS / 60, 0, 'f', 0)
+                     .arg(f.onsetLowS / 60, 0, 'f', 0)
+                     .arg(f.onsetHighS / 60, 0, 'f', 0);
+    }
+    for (const auto& l : f.lookAlikes) {
+        parts << (l.ruledOut
+                      ? tr("Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).")
+                      : tr("%1 fits these data about as well (held-out error %2 times, p = %3): the data "
+                           "cannot tell them apart."))
+                     .arg(QString::fromStdString(l.cause))
+                     .arg(l.heldOutLossRatio, 0, 'g', 2)
+                     .arg(l.pValue, 0, 'g', 2);
+    }
+    if (!f.group.empty()) {
+        parts << tr("To tell them apart: %1.").arg(tellApartText(f.group));
+    }
+    return parts.join(QLatin1Char(' '));
+}
 
 QString DiscoverPanel::evidenceText(const discovery::Finding& f) {
     const bool moisture = f.output == "X_out";
@@ -150,7 +244,13 @@ void DiscoverPanel::show() {
     const auto& d = r->discovery;
     QStringList named;
     for (const auto& f : d.findings) {
-        named << QString::fromStdString(f.cause);
+        QString name = QString::fromStdString(f.cause);
+        for (const auto& l : f.lookAlikes) {
+            if (!l.ruledOut) {
+                name += tr(" or ") + QString::fromStdString(l.cause);
+            }
+        }
+        named << (f.group.empty() ? name : tr("one of %1 (look-alikes)").arg(name));
     }
     m_verdict->setText(
         d.findings.empty()
@@ -176,7 +276,7 @@ void DiscoverPanel::show() {
                     .arg(f.value, 0, 'g', 4)
                     .arg(f.ci95Low, 0, 'g', 4)
                     .arg(f.ci95High, 0, 'g', 4)
-                    .arg(evidenceText(f).toHtmlEscaped());
+                    .arg((evidenceText(f) + QLatin1Char(' ') + specificityText(f)).toHtmlEscaped());
     }
     // What the error moves with: the strongest cross-correlations of the differenced residuals
     // with the differenced inputs and proxies (lags 0–300 s), as the analysis found them.
@@ -207,6 +307,11 @@ void DiscoverPanel::show() {
                 .arg(100 * rd.explainedFraction, 0, 'f', 0)
                 .arg(100 * rd.explainedFractionFast, 0, 'f', 0)
                 .arg(rd.named ? tr("named") : QString::fromStdString(rd.reason).toHtmlEscaped());
+        for (const auto& x : rd.rejected) {
+            html += tr("<p>&nbsp;&nbsp;Not named: %1, because %2.</p>")
+                        .arg(QString::fromStdString(x.cause).toHtmlEscaped(),
+                             rejectionText(x.code).toHtmlEscaped());
+        }
     }
     if (!d.bounds.empty()) {
         QStringList items;
@@ -224,8 +329,24 @@ void DiscoverPanel::show() {
                     .arg(items.join(QStringLiteral("; ")));
     }
     for (const auto& u : d.unexplained) {
-        html += tr("<p><b>Unexplained</b> (%1): %2</p>")
+        if (u.type == "dynamics") {
+            html += tr("<p><b>Unexplained</b> (%1): the error follows the simulated rate of change (a lag of "
+                       "%2 s "
+                       "would explain %3 % of it): the line's dynamics differ from the model's.</p>")
+                        .arg(QString::fromStdString(u.output).toHtmlEscaped())
+                        .arg(u.lagS, 0, 'g', 3)
+                        .arg(100 * u.strength, 0, 'f', 0);
+        } else {
+            html +=
+                tr("<p><b>Unexplained</b> (%1): %2</p>")
                     .arg(QString::fromStdString(u.output).toHtmlEscaped(), QString::fromStdString(u.type));
+        }
+    }
+    if (r->keptStartingModel) {
+        html += tr(
+            "<p><b>The correction model learnt on the extended physics model predicts worse on the held-out "
+            "part than the one on the starting model: Extend keeps the starting model and its correction "
+            "model; the findings stand.</b></p>");
     }
     for (const auto& n : d.notes) {
         html += QStringLiteral("<p><i>%1</i></p>").arg(QString::fromStdString(n).toHtmlEscaped());

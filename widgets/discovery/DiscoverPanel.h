@@ -29,6 +29,9 @@ public:
     QTextBrowser* evidence() const { return m_evidence; }
     /// The evidence sentence of a finding in the window's language, from the finding's numbers.
     static QString evidenceText(const discovery::Finding& f);
+    /// @brief Per-part consistency, transfer, onset and look-alikes of a finding, worded in the GUI's
+    /// language.
+    static QString specificityText(const discovery::Finding& f);
     PlotStack* plots() const { return m_plots; }
 
 private:

@@ -37,7 +37,31 @@ QString names(const discovery::DiscoveryResult& r) {
     for (const auto& f : r.findings) {
         n << QString::fromStdString(f.cause);
     }
-    return n.join(',') + " / " + QString::fromStdString(r.verdict);
+    // The rounds' decisions, so that a failure says why.
+    QStringList rounds;
+    for (const auto& rd : r.rounds) {
+        QString line = QString::fromStdString(rd.best) + ": " +
+                       (rd.named ? QStringLiteral("named") : QString::fromStdString(rd.reason));
+        for (const auto& x : rd.rejected) {
+            line += QStringLiteral("; not %1 (%2: %3)")
+                        .arg(QString::fromStdString(x.cause), QString::fromStdString(x.code),
+                             QString::fromStdString(x.reason));
+        }
+        rounds << line;
+    }
+    for (const auto& c : r.ranking) {
+        rounds << QStringLiteral("%1 z=%2 fitted=%3")
+                      .arg(QString::fromStdString(c.cause))
+                      .arg(c.score)
+                      .arg(c.fitted);
+    }
+    for (const auto& u : r.unexplained) {
+        rounds << QStringLiteral("unexplained %1 %2 lag %3 strength %4")
+                      .arg(QString::fromStdString(u.type), QString::fromStdString(u.output))
+                      .arg(u.lagS)
+                      .arg(u.strength);
+    }
+    return n.join(',') + " / " + QString::fromStdString(r.verdict) + "\n  " + rounds.join("\n  ");
 }
 
 } // namespace
@@ -57,6 +81,10 @@ private Q_SLOTS:
         QTest::newRow("transport_delay_error") << int(Mechanism::TransportDelayError) << 15.0;
         QTest::newRow("falling_rate_drying") << int(Mechanism::FallingRateDrying) << 0.5;
         QTest::newRow("ambient_reabsorption") << int(Mechanism::AmbientReabsorption) << 3.0;
+        // The sensor causes (issue #23): the measured inputs are not the truth.
+        QTest::newRow("inlet_moisture_sensor_offset") << int(Mechanism::InletMoistureSensorOffset) << 1.0;
+        QTest::newRow("hot_air_sensor_lag") << int(Mechanism::HotAirSensorLag) << 60.0;
+        QTest::newRow("inlet_moisture_sensor_noise") << int(Mechanism::InletMoistureSensorNoise) << 0.8;
     }
     void everyMechanismIsNamedFirst() {
         QFETCH(int, mechanism);
@@ -88,7 +116,7 @@ private Q_SLOTS:
         QCOMPARE(r.verdict, std::string("no_structural_cause"));
         QVERIFY(r.unexplained.empty());
         // Not named, but bounded: every mechanism gets the interval the data allow, inside its range.
-        QCOMPARE(r.bounds.size(), std::size_t{8});
+        QCOMPARE(r.bounds.size(), std::size_t{11});
         for (const auto& b : r.bounds) {
             const auto& info = properties::info(b.parameter);
             QVERIFY2(b.ci95Low < b.ci95High, b.cause.c_str());
@@ -174,6 +202,87 @@ private Q_SLOTS:
         QCOMPARE(r->notes.size(), std::size_t(3));
         QVERIFY(!r->findings.empty());
         QCOMPARE(r->findings.front().cause, std::string("moisture_meter_offset"));
+    }
+
+    void midBatchOnsetIsFoundWithItsTime() {
+        // A meter offset that appears 20 min into each 50 min batch (a knocked sensor head):
+        // named, with the onset within ±10 min and an interval around it.
+        plant::PlantOptions o;
+        o.effects[Mechanism::MoistureMeterOffset] = 0.5;
+        o.effectOnsetS[Mechanism::MoistureMeterOffset] = 1200;
+        const auto r = discoverIn(o);
+        QVERIFY2(!r.findings.empty(), qPrintable(names(r)));
+        const auto& f = r.findings.front();
+        QCOMPARE(f.cause, std::string("moisture_meter_offset"));
+        QVERIFY2(f.hasOnset, qPrintable(names(r)));
+        QVERIFY2(std::abs(f.onsetS - 1200) <= 600, qPrintable(QString::number(f.onsetS)));
+        QVERIFY(f.onsetLowS <= f.onsetS && f.onsetS <= f.onsetHighS);
+        // Fitted where it acts, the offset is near the plant's (0.5 % wb at 55 °C).
+        QVERIFY2(f.value > 0.3 && f.value < 0.8, qPrintable(QString::number(f.value)));
+    }
+
+    void distributedNullNamesNothing() {
+        // The distributed plant with realistic sensors and no hidden effect: the model is wrong
+        // everywhere a little, and nothing may be named for it.
+        plant::PlantOptions o;
+        o.plant = plant::PlantKind::Distributed;
+        const auto r = discoverIn(o);
+        QVERIFY2(r.findings.empty(), qPrintable(names(r)));
+        QVERIFY(r.verdict != "cause_found");
+    }
+
+    void lookAlikesAreReportedAsAGroup() {
+        // An outlet-meter offset in data with neither tube-outlet channel nor a usable outlet
+        // temperature: an inlet-gauge offset leaves much the same steady outlet bias. The finding
+        // names the group, the evidence for each member and what would tell them apart.
+        plant::PlantOptions o;
+        o.effects[Mechanism::MoistureMeterOffset] = 0.5;
+        auto data = plantData(o);
+        for (auto& b : data) {
+            b.hasXHdt = b.hasTHdt = false;
+            std::fill(b.xHdtDb.begin(), b.xHdtDb.end(), std::nan(""));
+            std::fill(b.tHdtK.begin(), b.tHdtK.end(), std::nan(""));
+        }
+        auto r = discovery::discover(data, hybrid::HybridModel{});
+        QVERIFY(r.ok());
+        QVERIFY2(!r->findings.empty(), qPrintable(names(*r)));
+        const auto& f = r->findings.front();
+        QVERIFY2(f.cause == "moisture_meter_offset" || f.cause == "inlet_moisture_sensor_offset",
+                 qPrintable(names(*r)));
+        QCOMPARE(f.lookAlikes.size(), std::size_t{1});
+        const auto& other = f.lookAlikes.front();
+        qInfo("%s vs %s: held-out loss ratio %.3f, p %.3g", f.cause.c_str(), other.cause.c_str(),
+              other.heldOutLossRatio, other.pValue);
+        if (!other.ruledOut) {
+            QCOMPARE(f.group, std::string("moisture_offset"));
+            QVERIFY(f.evidence.find("To tell them apart") != std::string::npos);
+            QVERIFY(!f.tellApart.empty());
+        } else {
+            QVERIFY(f.group.empty());
+            QVERIFY(f.evidence.find("Not " + other.cause) != std::string::npos);
+        }
+        // Either way the hidden cause is the one named or in the group with it.
+        QVERIFY(f.cause == "moisture_meter_offset" || !other.ruledOut);
+    }
+
+    void distributedDriftNamesNothingAndSaysWhy() {
+        // The distributed plant under unmeasured drift: causes that predict better on the held-out
+        // part are tried, and each is turned down with its reason (not specific: below its floor,
+        // the line's own dynamics, compensation); none is named.
+        plant::PlantOptions o;
+        o.plant = plant::PlantKind::Distributed;
+        o.unmeasuredDrift = true;
+        const auto r = discoverIn(o);
+        QVERIFY2(r.findings.empty(), qPrintable(names(r)));
+        int notSpecific = 0;
+        for (const auto& rd : r.rounds) {
+            for (const auto& x : rd.rejected) {
+                qInfo("not named: %s (%s): %s", x.cause.c_str(), x.code.c_str(), x.reason.c_str());
+                QVERIFY(!x.reason.empty());
+                notSpecific += x.code != "no_held_out_gain";
+            }
+        }
+        QVERIFY2(notSpecific >= 1, qPrintable(names(r)));
     }
 
     void badInputAndCancelAreErrors() {

@@ -1,0 +1,174 @@
+#pragma once
+// Internals shared by the discovery files (not part of the engine's interface). Discovery answers
+// four questions, one file each: what the simulation gets wrong (ResidualAnalysis.cpp), which
+// cause could explain it and how large (CandidateTests.cpp), which cause to name and whether it
+// is specific (Discovery.cpp: selection and confirmation), and how to say so (FindingText.cpp).
+
+#include "discovery/Discovery.h"
+#include "physics/LineInputs.h"
+#include "physics/LineSimulator.h"
+
+#include <Eigen/Dense>
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace drytwin::discovery::detail {
+
+using properties::Param;
+using properties::ParameterSet;
+
+constexpr double kHacAcfThreshold = 0.05; ///< HAC bandwidth: first lag whose |ACF| falls below this
+
+/// One-sided upper tail of the standard normal.
+double upperTail(double z);
+
+/// The measured channels: outlet moisture and temperature, tube-outlet ones where measured.
+enum Channel { kXOut = 0, kTOut = 1, kXHdt = 2, kTHdt = 3 };
+inline constexpr const char* kChannelName[] = {"X_out", "T_out", "X_hdt", "T_hdt"};
+inline constexpr const char* kChannelUnit[] = {"% wb", "°C", "% wb", "°C"};
+
+/// Measured and simulated values of a channel at row k (simulation index j), in file units,
+/// and the factor from a dry-basis (or kelvin) sensitivity to file units. False when missing.
+bool channelAt(const data::SiBatch& b, const physics::SimulationResult& r, std::size_t j, std::size_t k,
+               int c, double& obs, double& pred, double& toFile);
+double channelWeight(const calibration::LossWeights& w, int c);
+
+/// Residuals and output sensitivities of the training subset, stacked: one entry per
+/// (row, measured channel), weighted by √w so that Σ r² is the calibration loss's sum.
+struct Stack {
+    Eigen::MatrixXd s;         ///< entries × parameters, file units per parameter unit, weighted
+    Eigen::VectorXd r;         ///< weighted residuals
+    std::vector<int> batch;    ///< per entry
+    std::vector<int> row;      ///< per entry: position of its row in the batch's subset
+    std::vector<int> channel;  ///< per entry
+    std::vector<double> timeS; ///< per entry: time since its batch started [s]
+};
+
+/// The data of one discovery run: batches, their split, and the training rows the tests use.
+struct Problem {
+    const std::vector<data::SiBatch>* batches = nullptr;
+    std::vector<physics::LineInputs> inputs;
+    std::vector<data::RowRange> train, test;
+    std::vector<std::vector<std::size_t>> subset; ///< per batch, training rows in the tests and fits
+    std::vector<data::RowRef> subsetRefs;
+    physics::SimulationOptions simulation;
+    DiscoveryOptions options;
+    double samplingStepS = 1; ///< median sampling step of the batches
+};
+
+Expected<Stack> stackAt(const Problem& pr, const ParameterSet& p, const std::vector<Param>& sens);
+/// Σ of @p contribution per (batch, row), as one time series per batch.
+std::vector<std::vector<double>> perRowSeries(const Stack& st, const Eigen::VectorXd& contribution);
+/// Variance of Σ_t u_t with batches independent and a Newey-West window per batch that follows
+/// the series' own memory. Autocovariances about 0 (a score) or about the mean.
+double hacVarianceOfSum(const std::vector<std::vector<double>>& series, bool demean);
+
+struct ScoreResult {
+    double z = 0;
+    double estimate = 0;
+    double se = 0;
+    double reduction = 0; ///< (s̃ᵀr)² / s̃ᵀs̃: the sum of squares one linearised step removes
+};
+/// Column @p cand of the stack projected off the nuisance columns.
+Eigen::VectorXd projectedColumn(const Stack& st, const std::vector<int>& nuisance, int cand);
+ScoreResult scoreTest(const Stack& st, const std::vector<int>& nuisance, int cand);
+
+/// Held-out errors of a parameter set: per test batch, the X_out and T_out errors and the
+/// weighted squared error of every measured channel, per kept row.
+struct HeldOut {
+    std::vector<std::vector<double>> loss; ///< per test batch, per row
+    std::vector<double> obsX, predX, obsT, predT;
+    std::vector<double> residualX; ///< concatenated, % wb
+    /// Per test batch, per channel: the time and the error scaled by the square root of the
+    /// channel's weight (so that its square adds up to `loss`), for the fast-band share.
+    struct Series {
+        std::vector<double> timeS, weightedError;
+    };
+    std::vector<std::array<Series, 4>> channels;
+};
+Expected<HeldOut> heldOut(const Problem& pr, const ParameterSet& p);
+double fastBandSquaredError(const HeldOut& h, double windowS);
+double meanOf(const std::vector<std::vector<double>>& series);
+Gain gainOf(const HeldOut& before, const HeldOut& after);
+/// One-sided Diebold-Mariano p that @p better has a lower held-out loss than @p worse.
+double heldOutPValue(const HeldOut& worse, const HeldOut& better);
+/// Per channel: held-out mean squared error (file units²) and the one-sided p that @p after is
+/// worse than @p before on it; NaN where the channel is not measured.
+struct ChannelChange {
+    double mseBefore = 0, mseAfter = 0, pWorse = 1;
+    bool measured = false;
+};
+std::array<ChannelChange, 4> channelChanges(const HeldOut& before, const HeldOut& after);
+
+/// Question 1 for every measured channel, over all kept rows of every batch.
+std::vector<OutputResidual> analyse(const Problem& pr, const std::vector<physics::SimulationResult>& sims);
+/// What is left that matches no mechanism, by signature.
+std::vector<Signature> signatures(const std::vector<OutputResidual>& residuals);
+
+/// Specificity (Specificity.cpp). Per-part estimates at the fitted model: one Gauss-Newton step
+/// from the pooled value with each part's data alone, column @p cand against the nuisance ones.
+struct Consistency {
+    std::vector<PartEstimate> parts;
+    bool consistent = true;
+    bool opposite = false; ///< a part with a significantly opposite sign
+    int strays = 0;        ///< parts outside their widened interval of the pooled value
+};
+Consistency consistencyAt(const Problem& pr, const Stack& atFit, const std::vector<int>& nuisance, int cand,
+                          double pooled, double tolerance);
+/// Fitted on the parts with the cooler hot air (one step from 0 at the model without the
+/// cause), the share of the warmer parts' training loss it removes (negative: it hurts there).
+struct Transfer {
+    bool checked = false; ///< fewer than two parts, or one operating region: not checked
+    double reduction = 0;
+};
+Transfer transferBetweenRegions(const Problem& pr, const Stack& atStart, const std::vector<int>& nuisance,
+                                int cand);
+/// The time constant of a first-order lag that would explain a channel's training error
+/// (measured ≈ simulated − τ d(simulated)/dt, batch biases removed), with its HAC standard
+/// error, z and the share of the error's variance it explains.
+struct ChannelLag {
+    double tauS = 0, se = 0, z = 0, share = 0;
+    bool ok = false;
+};
+ChannelLag lagOnChannel(const Problem& pr, const std::vector<physics::SimulationResult>& sims, int channel);
+/// An onset (time since each batch's start) from which the cause's column explains most: a scan
+/// of the score test's reduction, with its likelihood ratio over "from the start" and its
+/// profile interval.
+struct Onset {
+    bool found = false;
+    double s = 0, lowS = 0, highS = 0, likelihoodRatio = 0;
+};
+Onset findOnset(const Stack& st, const std::vector<int>& nuisance, int cand);
+/// The "dynamics" signature of a channel: its error follows its simulated rate of change
+/// strongly enough that a colleague would see it (|z| > 6, a time constant above two sampling
+/// steps, a tenth of the error's variance); none otherwise.
+std::optional<Signature> dynamicsSignature(const Problem& pr,
+                                           const std::vector<physics::SimulationResult>& sims, int channel);
+/// 1σ of the inlet moisture about its 30 s centred mean [% wb], over every kept row.
+double inletFastScatterPct(const Problem& pr);
+/// True when the cause's practical floor is on its own parameter (an offset, a time constant).
+bool hasOwnFloor(Param p);
+/// Why a fitted cause is below its practical floor, or "" when it is not. @p before is the fit
+/// with the cause set to 0 (used for the causes without a floor of their own: their effect on
+/// what is measured), @p after the fit.
+std::string belowFloor(const Problem& pr, Param p, double value, double meanBatchHours, const HeldOut& before,
+                       const HeldOut& after);
+
+/// Look-alikes (FindingText.cpp): causes that leave much the same signature on outlet data.
+struct LookAlikeGroup {
+    const char* name;
+    std::vector<Param> members;
+    const char* tellApart; ///< the measurement that tells them apart
+};
+/// The group of @p p, or null when it has no look-alike.
+const LookAlikeGroup* lookAlikeGroupOf(Param p);
+/// The evidence sentences of a finding (its numbers filled in).
+std::string findingEvidence(const Finding& f, const DiscoveryOptions& options);
+
+std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
+/// What a colleague should look for on the residual plots for each cause.
+const char* lookFor(Param p);
+
+} // namespace drytwin::discovery::detail

@@ -1,0 +1,133 @@
+// Question 4's wording: the findings' sentences, in the engine's English (the GUI words them
+// in its own language from the numbers).
+#include "discovery/DiscoveryInternal.h"
+
+#include <algorithm>
+#include <cstdarg>
+#include <cstdio>
+
+namespace drytwin::discovery::detail {
+
+std::string format(const char* fmt, ...) {
+    char buf[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    std::vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    return buf;
+}
+
+/// What a colleague should look for on the residual plots for each cause.
+const char* lookFor(Param p) {
+    switch (p) {
+    case Param::theta_wall:
+        return "the outlet-temperature error grows with the hot-air excess over ambient "
+               "(bias by T_amb and T_hot)";
+    case Param::theta_gas:
+        return "the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)";
+    case Param::theta_foul:
+        return "the error drifts within every batch and resets at each batch start";
+    case Param::tau_meter:
+        return "the outlet-moisture error follows the rate of change of the simulated outlet moisture, "
+               "and the tube-outlet error does not";
+    case Param::X_meter_offset:
+        return "a steady outlet-moisture bias that the tube-outlet moisture does not share";
+    case Param::dtau_conv:
+        return "the outlet error correlates with tube-outlet changes at a shifted lag";
+    case Param::theta_fall:
+        return "the tube-outlet and outlet moisture are wetter than simulated, "
+               "most where the tube dries furthest";
+    case Param::theta_reabs:
+        return "the outlet-moisture error grows with ambient humidity while the tube-outlet error does not";
+    case Param::X_in_offset:
+        return "a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less";
+    case Param::tau_hot_sensor:
+        return "after each hot-air setpoint step the outlet temperature and moisture move before the "
+               "simulation, which follows the slow reading";
+    case Param::phi_X_in_scatter:
+        return "the inlet-moisture reading scatters from second to second while the outlet does not follow "
+               "it, and the simulated outlet does";
+    default:
+        return "";
+    }
+}
+
+const LookAlikeGroup* lookAlikeGroupOf(Param p) {
+    static const std::vector<LookAlikeGroup> groups{
+        {"outlet_response_time",
+         {Param::tau_meter, Param::dtau_conv},
+         "a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet "
+         "temperature's response as much as the moisture's, a meter lag delays the moisture reading alone; "
+         "or grab samples timed against the meter"},
+        {"moisture_offset",
+         {Param::X_meter_offset, Param::X_in_offset},
+         "oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; "
+         "or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter "
+         "offset does not"},
+        {"gas_temperature",
+         {Param::theta_wall, Param::theta_gas},
+         "a gas-temperature reading at the tube's outlet end at two feed rates: wall loss does not change "
+         "with the feed, gas-phase cooling grows with it"},
+    };
+    for (const auto& g : groups) {
+        if (std::find(g.members.begin(), g.members.end(), p) != g.members.end()) {
+            return &g;
+        }
+    }
+    return nullptr;
+}
+
+std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
+    const auto& info = properties::info(f.parameter);
+    const auto& gain = f.gain;
+    const bool moisture = f.output == "X_out";
+    // The fast part is quoted when it is what made the cause count.
+    const std::string share =
+        !f.fastPartCounted
+            ? format("it removes %.0f %% of the held-out squared error", 100 * f.explainedFraction)
+            : format("it removes %.0f %% of the held-out squared error and %.0f %% of its fast part (the "
+                     "error about its %.0f-minute average, where slow drift does not hide it)",
+                     100 * f.explainedFraction, 100 * f.explainedFractionFast, options.fastBandWindowS / 60);
+    std::string text = format(
+        "%s error before: bias %+.3g %s, within-batch trend %+.3g %s/h. With %s (%s = %.4g %s, 95 %% CI "
+        "[%.3g, %.3g]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %.3f to %.3f %% "
+        "wb and of T_out from %.2f to %.2f °C (Diebold-Mariano p = %.2g); %s. Check on the plots: %s.",
+        moisture ? "Outlet-moisture" : "Outlet-temperature", f.biasBefore, moisture ? "% wb" : "°C",
+        f.trendPerHourBefore, moisture ? "% wb" : "°C", f.cause.c_str(), std::string(info.symbol).c_str(),
+        f.value, std::string(info.unit).c_str(), f.ci95Low, f.ci95High, gain.maeMoistureBefore,
+        gain.maeMoistureAfter, gain.maeTemperatureBefore, gain.maeTemperatureAfter, gain.pValue,
+        share.c_str(), lookFor(f.parameter));
+    if (!f.perPart.empty()) {
+        double lo = f.perPart.front().value, hi = lo;
+        for (const auto& e : f.perPart) {
+            lo = std::min(lo, e.value);
+            hi = std::max(hi, e.value);
+        }
+        text += format(" Fitted part by part (%zu parts) it lies between %.3g and %.3g %s.", f.perPart.size(),
+                       lo, hi, std::string(info.unit).c_str());
+    }
+    if (f.transferChecked) {
+        text +=
+            format(" Fitted on the cooler half of the data it removes %.0f %% of the warmer half's error.",
+                   100 * f.transferReduction);
+    }
+    if (f.hasOnset) {
+        text += format(" It starts %.0f min into the batch (95 %% interval %.0f-%.0f min).", f.onsetS / 60,
+                       f.onsetLowS / 60, f.onsetHighS / 60);
+    }
+    for (const auto& l : f.lookAlikes) {
+        text +=
+            l.ruledOut
+                ? format(" Not %s: fitted in its place it leaves %.2g times the held-out error (p = %.2g).",
+                         l.cause.c_str(), l.heldOutLossRatio, l.pValue)
+                : format(" %s fits these data about as well (held-out error %.2g times, p = %.2g): the "
+                         "data cannot tell them apart.",
+                         l.cause.c_str(), l.heldOutLossRatio, l.pValue);
+    }
+    if (!f.group.empty()) {
+        text += " To tell them apart: " + f.tellApart + ".";
+    }
+    return text;
+}
+
+} // namespace drytwin::discovery::detail
