@@ -71,7 +71,14 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
         out.onsetS = f.onsetS;
     }
     if (out.named.empty()) {
-        out.named = "(" + r->verdict + ")";
+        // Why nothing was named: each candidate that was tried and turned down, with its reason.
+        std::string why;
+        for (const auto& rd : r->rounds) {
+            for (const auto& x : rd.rejected) {
+                why += (why.empty() ? "; " : ", ") + x.cause + ": " + x.code;
+            }
+        }
+        out.named = "(" + r->verdict + why + ")";
     }
     return out;
 }

@@ -10,8 +10,10 @@
 #include "diagnostics/Metrics.h"
 #include "diagnostics/WelchPsd.h"
 
+#include <algorithm>
 #include <boost/math/distributions/normal.hpp>
 #include <cmath>
+#include <numeric>
 #include <optional>
 
 namespace drytwin::discovery::detail {
@@ -360,6 +362,44 @@ std::array<ChannelChange, 4> channelChanges(const HeldOut& before, const HeldOut
         ch.pWorse = var > 0 ? upperTail(sumD / std::sqrt(var)) : (sumD > 0 ? 0.0 : 1.0);
     }
     return out;
+}
+
+namespace {
+
+/// Holm's step-down correction over the candidates of a round.
+void holm(std::vector<Candidate>& cands) {
+    std::vector<std::size_t> order(cands.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return cands[a].pValue < cands[b].pValue; });
+    double running = 0;
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        running =
+            std::max(running, std::min(1.0, static_cast<double>(order.size() - i) * cands[order[i]].pValue));
+        cands[order[i]].pHolm = running;
+    }
+}
+
+} // namespace
+
+std::vector<Candidate> scoreCandidates(const Stack& st, const std::vector<int>& nuisance,
+                                       const std::vector<Param>& remaining) {
+    std::vector<Candidate> cands;
+    for (std::size_t i = 0; i < remaining.size(); ++i) {
+        const Param m = remaining[i];
+        const auto sc = scoreTest(st, nuisance, static_cast<int>(nuisance.size() + i));
+        Candidate c;
+        c.parameter = m;
+        c.cause = std::string(*properties::mechanismOf(m));
+        c.score = sc.z;
+        c.linearEstimate = sc.estimate;
+        c.linearSe = sc.se;
+        c.predictedReduction = st.r.squaredNorm() > 0 ? sc.reduction / st.r.squaredNorm() : 0;
+        const bool twoSided = properties::info(m).lower < 0;
+        c.pValue = twoSided ? 2 * upperTail(std::abs(sc.z)) : upperTail(sc.z);
+        cands.push_back(c);
+    }
+    holm(cands);
+    return cands;
 }
 
 } // namespace drytwin::discovery::detail

@@ -13,135 +13,7 @@ namespace drytwin::discovery {
 
 using namespace detail;
 
-namespace {
-
-/// The split, the training rows the tests use, and what the data cannot give.
-struct Prepared {
-    Problem pr;
-    std::size_t keptTrain = 0, keptTest = 0;
-    double meanBatchHours = 0;
-};
-
-Expected<Prepared> prepare(const std::vector<data::SiBatch>& batches, const hybrid::HybridModel& model,
-                           const DiscoveryOptions& options) {
-    Prepared out;
-    Problem& pr = out.pr;
-    pr.batches = &batches;
-    pr.options = options;
-    pr.simulation = model.simulationOptions();
-    std::vector<std::size_t> rowsPerBatch;
-    std::vector<double> steps;
-    for (const auto& b : batches) {
-        pr.inputs.push_back(physics::toLineInputs(b));
-        rowsPerBatch.push_back(b.rows());
-        if (b.rows() > 1) {
-            steps.push_back((b.timeS.back() - b.timeS.front()) / static_cast<double>(b.rows() - 1));
-            out.meanBatchHours +=
-                (b.timeS.back() - b.timeS.front()) / 3600.0 / static_cast<double>(batches.size());
-        }
-    }
-    if (!steps.empty()) {
-        std::nth_element(steps.begin(), steps.begin() + static_cast<long>(steps.size() / 2), steps.end());
-        pr.samplingStepS = steps[steps.size() / 2];
-    }
-    const auto split = data::chronologicalSplit(rowsPerBatch, options.trainFraction);
-    pr.train = split.train;
-    pr.test = split.test;
-    pr.subset.resize(batches.size());
-    std::size_t stride = options.subsetStride;
-    if (stride == 0) {
-        std::size_t kept = 0;
-        for (std::size_t b = 0; b < batches.size(); ++b) {
-            for (std::size_t k = pr.train[b].begin; k < pr.train[b].end; ++k) {
-                kept += batches[b].keep[k];
-            }
-        }
-        stride = std::max<std::size_t>(5, kept / 1000);
-    }
-    for (std::size_t b = 0; b < batches.size(); ++b) {
-        std::size_t seen = 0;
-        for (std::size_t k = pr.train[b].begin; k < pr.train[b].end; ++k) {
-            if (batches[b].keep[k]) {
-                ++out.keptTrain;
-                if (seen++ % stride == 0) {
-                    pr.subset[b].push_back(k);
-                    pr.subsetRefs.push_back({b, k});
-                }
-            }
-        }
-        for (std::size_t k = pr.test[b].begin; k < pr.test[b].end; ++k) {
-            out.keptTest += batches[b].keep[k];
-        }
-    }
-    if (pr.subsetRefs.size() < 100 || out.keptTest < 100) {
-        return Error{ErrorKind::BadInput,
-                     "discover",
-                     "too few rows: " + std::to_string(pr.subsetRefs.size()) +
-                         " training rows in the tests (need 100) and " + std::to_string(out.keptTest) +
-                         " held-out rows (need 100) pass the cleaning rules",
-                     ErrorCode::NotEnoughData,
-                     {"rows", std::to_string(out.keptTrain + out.keptTest)}};
-    }
-    return out;
-}
-
-std::vector<std::string> dataNotes(const std::vector<data::SiBatch>& batches) {
-    std::vector<std::string> notes;
-    bool xHdt = false, tHdt = false, airVaries = false;
-    for (const auto& b : batches) {
-        xHdt = xHdt || b.hasXHdt;
-        tHdt = tHdt || b.hasTHdt;
-        for (double v : b.airSpeedMPerS) {
-            airVaries = airVaries || v != b.airSpeedMPerS.front();
-        }
-    }
-    if (!xHdt) {
-        notes.push_back("X_hdt_pct is not measured: the tube-outlet moisture cannot separate meter and "
-                        "conveyor causes from tube causes; outlet channels only");
-    }
-    if (!tHdt) {
-        notes.push_back("T_hdt_C is not measured: tube-outlet temperature not used");
-    }
-    if (!airVaries) {
-        notes.push_back("air_speed_m_s is constant (not measured?): gas_phase_coupling works with that one "
-                        "value and cannot use the air speed's variation");
-    }
-    return notes;
-}
-
-/// Holm's step-down correction over the candidates of a round.
-void holm(std::vector<Candidate>& cands) {
-    std::vector<std::size_t> order(cands.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return cands[a].pValue < cands[b].pValue; });
-    double running = 0;
-    for (std::size_t i = 0; i < order.size(); ++i) {
-        running =
-            std::max(running, std::min(1.0, static_cast<double>(order.size() - i) * cands[order[i]].pValue));
-        cands[order[i]].pHolm = running;
-    }
-}
-
-/// Compensation: the measured channel whose held-out error the cause raises, or -1.
-int worsenedChannel(const HeldOut& before, const HeldOut& after, const DiscoveryOptions& options) {
-    const auto changes = channelChanges(before, after);
-    for (int c = 0; c < 4; ++c) {
-        const auto& ch = changes[static_cast<std::size_t>(c)];
-        // The rise must be significant, a share of the error, and more than an instrument
-        // would notice (the practical floors' effect sizes, in the channel's units).
-        const double w = std::max(1e-12, channelWeight(options.weights, c));
-        const double rise = std::sqrt(ch.mseAfter / w) - std::sqrt(ch.mseBefore / w);
-        const double floor =
-            c == kXOut || c == kXHdt ? options.floors.moistureEffectPct : options.floors.temperatureEffectK;
-        if (ch.measured && ch.mseAfter > ch.mseBefore * (1 + options.maxChannelWorsening) &&
-            ch.pWorse < 0.05 && rise > floor) {
-            return c;
-        }
-    }
-    return -1;
-}
-
-} // namespace
+namespace {} // namespace
 
 Status DiscoveryOptions::validate() const {
     if (!(trainFraction > 0.2 && trainFraction < 0.95)) {
@@ -188,9 +60,13 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
 
     // The starting model, its h_HDT and k_HDT refitted on the training rows (locally when the
     // model was calibrated, globally and locally when not).
-    std::vector<Param> nuisance{Param::h_HDT, Param::k_HDT};
+    // The inlet gauge's scatter share is freed with h_HDT and k_HDT: a model that carries the
+    // normal scatter of a measured input into its prediction would have every candidate judged by
+    // how well it smooths that scatter (a meter lag does, much as a real one). It is named as a
+    // cause only above the gauge's normal scatter (below).
+    std::vector<Param> nuisance{Param::h_HDT, Param::k_HDT, Param::phi_X_in_scatter};
     for (Param m : properties::mechanismParams()) {
-        if (model.parameters[m] != 0) {
+        if (model.parameters[m] != 0 && m != Param::phi_X_in_scatter) {
             nuisance.push_back(m); // extensions the model already holds stay free
         }
     }
@@ -239,6 +115,25 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
     if (!currentHeld) {
         return currentHeld.error();
     }
+    if (auto scatter = inletScatterFinding(pr, current, nuisance, *currentHeld, currentResiduals, options);
+        !scatter) {
+        return scatter.error();
+    } else if (scatter->has_value()) {
+        result.findings.push_back(**scatter);
+        Round record;
+        record.best = (*scatter)->cause;
+        record.named = true;
+        record.heldOutPValue = (*scatter)->gain.pValue;
+        record.explainedFraction = (*scatter)->explainedFraction;
+        record.explainedFractionFast = (*scatter)->explainedFractionFast;
+        result.rounds.push_back(record);
+    } else {
+        result.notes.push_back(
+            format("the inlet gauge's normal scatter: %.0f %% of X_in's fast variation (%.2g %% wb, "
+                   "1σ about its 30 s mean) is taken as gauge scatter, not moisture, in the "
+                   "starting model",
+                   100 * current[Param::phi_X_in_scatter], inletFastScatterPct(pr)));
+    }
 
     std::vector<Param> remaining;
     for (Param m : properties::mechanismParams()) {
@@ -264,21 +159,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                 nuisance.size() + static_cast<std::size_t>(std::find(remaining.begin(), remaining.end(), p) -
                                                            remaining.begin()));
         };
-        std::vector<Candidate> cands;
-        for (Param m : remaining) {
-            const auto sc = scoreTest(*st, nuisanceCols, columnOf(m));
-            Candidate c;
-            c.parameter = m;
-            c.cause = std::string(*properties::mechanismOf(m));
-            c.score = sc.z;
-            c.linearEstimate = sc.estimate;
-            c.linearSe = sc.se;
-            c.predictedReduction = st->r.squaredNorm() > 0 ? sc.reduction / st->r.squaredNorm() : 0;
-            const bool twoSided = properties::info(m).lower < 0;
-            c.pValue = twoSided ? 2 * upperTail(std::abs(sc.z)) : upperTail(sc.z);
-            cands.push_back(c);
-        }
-        holm(cands);
+        std::vector<Candidate> cands = scoreCandidates(*st, nuisanceCols, remaining);
         // Fit the leading candidates that pass the screen, largest predicted reduction first.
         std::sort(cands.begin(), cands.end(), [&](const auto& a, const auto& b) {
             const bool pa = a.pValue < options.screenAlpha;
@@ -423,71 +304,16 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             }
             const int atCol = static_cast<int>(nuisance.size());
             const double value = fit.parameters[cand.parameter];
-            std::string code, why;
-            if (const int c = worsenedChannel(*currentHeld, *afterHeld, options); c >= 0) {
-                const auto ch = channelChanges(*currentHeld, *afterHeld)[static_cast<std::size_t>(c)];
-                const double w = std::max(1e-12, channelWeight(options.weights, c));
-                code = "compensation";
-                why =
-                    format("it lowers the error overall but raises the held-out rms error of %s from %.3g to "
-                           "%.3g %s: compensation, not a cause",
-                           kChannelName[c], std::sqrt(ch.mseBefore / w), std::sqrt(ch.mseAfter / w),
-                           kChannelUnit[c]);
-            } else {
-                // The cause's own effect: the fit against the same fit with the cause set to 0.
-                std::optional<HeldOut> withoutIt;
-                if (!hasOwnFloor(cand.parameter)) {
-                    ParameterSet off = fit.parameters;
-                    off[cand.parameter] = 0;
-                    auto h = heldOut(pr, off);
-                    if (!h) {
-                        return h.error();
-                    }
-                    withoutIt = std::move(*h);
-                }
-                if (auto floor = belowFloor(pr, cand.parameter, value, prepared->meanBatchHours,
-                                            withoutIt ? *withoutIt : *afterHeld, *afterHeld);
-                    !floor.empty()) {
-                    code = "below_floor";
-                    why = floor + ": not worth a maintenance order";
-                }
+            auto judged =
+                judgeSpecificity({pr, cand.parameter, value, prepared->meanBatchHours, *currentHeld,
+                                  *afterHeld, fit.parameters, *at, *st, nuisanceCols, atCol, currentSims});
+            if (!judged) {
+                return judged.error();
             }
-            const Consistency consistency =
-                consistencyAt(pr, *at, nuisanceCols, atCol, value, options.consistencyTolerance);
-            const Transfer transfer = transferBetweenRegions(pr, *st, nuisanceCols, col);
-            if (code.empty() && !consistency.consistent) {
-                code = "inconsistent";
-                why = consistency.opposite
-                          ? std::string("its estimate has the opposite sign in part of the data")
-                          : format("its estimate strays from the pooled value in %d of %zu parts",
-                                   consistency.strays, consistency.parts.size());
-            }
-            if (code.empty() && transfer.checked && transfer.reduction < 0) {
-                code = "inconsistent";
-                why = "fitted on the cooler half of the data it makes the warmer half worse";
-            }
-            if (code.empty() && cand.parameter == Param::tau_meter) {
-                // A meter lags its own reading: the outlet moisture's error must follow its rate of
-                // change over tens of seconds (not merely be smoothed: a lag also filters the input
-                // scatter the simulation carries), and the outlet temperature's must not, or the
-                // slowness is the line's.
-                const ChannelLag lagX = lagOnChannel(pr, currentSims, kXOut);
-                const ChannelLag lagT = lagOnChannel(pr, currentSims, kTOut);
-                if (!(lagX.ok && lagX.z > 3 && lagX.tauS >= 0.25 * value)) {
-                    code = "line_dynamics";
-                    why = format(
-                        "over 30 s the outlet-moisture error does not follow its rate of change (tau = "
-                        "%.3g s, z = %.2g, against the fitted %.3g s): the lag smooths the simulation's "
-                        "input scatter, it is not a meter's",
-                        lagX.tauS, lagX.z, value);
-                } else if (lagT.ok && lagT.z > 3 && lagT.tauS >= 0.5 * lagX.tauS) {
-                    code = "line_dynamics";
-                    why = format(
-                        "the outlet temperature lags the model too (tau = %.3g s against %.3g s for the "
-                        "moisture): the line responds more slowly than the model, the meter is not to blame",
-                        lagT.tauS, lagX.tauS);
-                }
-            }
+            const std::string& code = judged->code;
+            const std::string& why = judged->why;
+            const Consistency& consistency = judged->consistency;
+            const Transfer& transfer = judged->transfer;
             if (!code.empty()) {
                 record.rejected.push_back({cand.cause, code, why});
                 if (tried == 1) {

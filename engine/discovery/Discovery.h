@@ -254,8 +254,11 @@ struct DiscoveryResult {
 /// @brief Discovery on measured batches (CONTRACT.md §2 `discover`, §4): residual analysis, a
 /// score test per mechanism with a HAC variance and Holm's correction, fits of the leading
 /// candidates with h_HDT and k_HDT free again, and a held-out Diebold-Mariano test before a cause
-/// is kept; causes are added one at a time until none helps. What is left is reported by its
-/// signature. Thread-safe for distinct arguments.
+/// is kept, then specificity (no measured channel made worse, practical floors, consistency part
+/// by part and between operating regions, a meter lag the line's own dynamics do not explain) and
+/// its look-alikes fitted in its place; an onset is searched for each. Causes are added one at a
+/// time until none helps. What is left is reported by its signature. Thread-safe for distinct
+/// arguments. docs/discovery-study.md has what it achieves on each plant.
 Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                                    const hybrid::HybridModel& model, const DiscoveryOptions& options = {},
                                    const Progress& progress = {});

@@ -58,6 +58,18 @@ struct Problem {
     double samplingStepS = 1; ///< median sampling step of the batches
 };
 
+/// The problem with the counts discovery reports.
+struct Prepared {
+    Problem pr;
+    std::size_t keptTrain = 0, keptTest = 0;
+    double meanBatchHours = 0;
+};
+/// The split and the training subset (DiscoveryData.cpp); NotEnoughData when too few rows pass.
+Expected<Prepared> prepare(const std::vector<data::SiBatch>& batches, const hybrid::HybridModel& model,
+                           const DiscoveryOptions& options);
+/// What the data cannot give (channels not measured, inputs that are constant).
+std::vector<std::string> dataNotes(const std::vector<data::SiBatch>& batches);
+
 Expected<Stack> stackAt(const Problem& pr, const ParameterSet& p, const std::vector<Param>& sens);
 /// Σ of @p contribution per (batch, row), as one time series per batch.
 std::vector<std::vector<double>> perRowSeries(const Stack& st, const Eigen::VectorXd& contribution);
@@ -74,6 +86,10 @@ struct ScoreResult {
 /// Column @p cand of the stack projected off the nuisance columns.
 Eigen::VectorXd projectedColumn(const Stack& st, const std::vector<int>& nuisance, int cand);
 ScoreResult scoreTest(const Stack& st, const std::vector<int>& nuisance, int cand);
+/// The score test of every remaining cause (the stack's columns after the nuisance ones, in the
+/// order of @p remaining), with Holm's correction over them.
+std::vector<Candidate> scoreCandidates(const Stack& st, const std::vector<int>& nuisance,
+                                       const std::vector<Param>& remaining);
 
 /// Held-out errors of a parameter set: per test batch, the X_out and T_out errors and the
 /// weighted squared error of every measured channel, per kept row.
@@ -117,14 +133,15 @@ struct Consistency {
 };
 Consistency consistencyAt(const Problem& pr, const Stack& atFit, const std::vector<int>& nuisance, int cand,
                           double pooled, double tolerance);
-/// Fitted on the parts with the cooler hot air (one step from 0 at the model without the
-/// cause), the share of the warmer parts' training loss it removes (negative: it hurts there).
+/// Fitted on the parts with the cooler hot air (one step from the pooled fit with their data
+/// alone), the share of the warmer parts' training loss without the cause that it removes
+/// (negative: it hurts there). @p atStart: the model without the cause, entries paired with @p atFit.
 struct Transfer {
     bool checked = false; ///< fewer than two parts, or one operating region: not checked
     double reduction = 0;
 };
-Transfer transferBetweenRegions(const Problem& pr, const Stack& atStart, const std::vector<int>& nuisance,
-                                int cand);
+Transfer transferBetweenRegions(const Problem& pr, const Stack& atStart, const Stack& atFit,
+                                const std::vector<int>& nuisance, int fitCol, double pooled);
 /// The time constant of a first-order lag that would explain a channel's training error
 /// (measured ≈ simulated − τ d(simulated)/dt, batch biases removed), with its HAC standard
 /// error, z and the share of the error's variance it explains.
@@ -155,6 +172,41 @@ bool hasOwnFloor(Param p);
 /// what is measured), @p after the fit.
 std::string belowFloor(const Problem& pr, Param p, double value, double meanBatchHours, const HeldOut& before,
                        const HeldOut& after);
+
+/// Compensation: the measured channel whose held-out error the cause raises, or -1.
+int worsenedChannel(const HeldOut& before, const HeldOut& after, const DiscoveryOptions& options);
+/// What the specificity judgement needs of a candidate that predicted better on the held-out part.
+struct SpecificityInput {
+    const Problem& pr;
+    Param parameter;
+    double value; ///< its fitted value
+    double meanBatchHours;
+    const HeldOut& before; ///< the model without it
+    const HeldOut& after;  ///< the fit with it
+    const ParameterSet& fitParameters;
+    const Stack& atFit;   ///< at the fit: nuisance columns, then the cause's (column atCol)
+    const Stack& atStart; ///< the round's stack at the model without it
+    const std::vector<int>& nuisance;
+    int atCol;
+    const std::vector<physics::SimulationResult>& currentSims; ///< the model without it, every row
+};
+/// Whether a cause is specific: no channel made worse, above its floor, consistent part by part
+/// and between operating regions, and (a meter lag) not the line's own dynamics. code is "" when
+/// it is specific, else "compensation", "below_floor", "inconsistent" or "line_dynamics".
+struct Specificity {
+    std::string code, why;
+    Consistency consistency;
+    Transfer transfer;
+};
+Expected<Specificity> judgeSpecificity(const SpecificityInput& in);
+
+/// inlet_moisture_sensor_noise, judged on the starting model (whose refit frees the scatter
+/// share with h_HDT and k_HDT): a finding when the measured scatter is above the gauge's normal
+/// one and removing it predicts clearly better on the held-out part; none otherwise.
+Expected<std::optional<Finding>> inletScatterFinding(const Problem& pr, const ParameterSet& current,
+                                                     const std::vector<Param>& nuisance, const HeldOut& held,
+                                                     const std::vector<OutputResidual>& residuals,
+                                                     const DiscoveryOptions& options);
 
 /// Look-alikes (FindingText.cpp): causes that leave much the same signature on outlet data.
 struct LookAlikeGroup {

@@ -115,11 +115,14 @@ Consistency consistencyAt(const Problem& pr, const Stack& atFit, const std::vect
     return out;
 }
 
-Transfer transferBetweenRegions(const Problem& pr, const Stack& atStart, const std::vector<int>& nuisance,
-                                int cand) {
+Transfer transferBetweenRegions(const Problem& pr, const Stack& atStart, const Stack& atFit,
+                                const std::vector<int>& nuisance, int fitCol, double pooled) {
     Transfer out;
+    if (atStart.r.size() != atFit.r.size()) {
+        return out; // a channel went missing between the two models: entries do not pair up
+    }
     std::vector<std::string> names;
-    const auto part = partOfEntries(atStart, static_cast<int>(pr.batches->size()), names, *pr.batches);
+    const auto part = partOfEntries(atFit, static_cast<int>(pr.batches->size()), names, *pr.batches);
     const auto parts = static_cast<int>(names.size());
     if (parts < 2) {
         return out;
@@ -128,9 +131,9 @@ Transfer transferBetweenRegions(const Problem& pr, const Stack& atStart, const s
     std::vector<double> hot(static_cast<std::size_t>(parts), 0.0),
         count(static_cast<std::size_t>(parts), 0.0);
     for (std::size_t i = 0; i < part.size(); ++i) {
-        const auto& b = (*pr.batches)[static_cast<std::size_t>(atStart.batch[i])];
+        const auto& b = (*pr.batches)[static_cast<std::size_t>(atFit.batch[i])];
         const std::size_t k =
-            pr.subset[static_cast<std::size_t>(atStart.batch[i])][static_cast<std::size_t>(atStart.row[i])];
+            pr.subset[static_cast<std::size_t>(atFit.batch[i])][static_cast<std::size_t>(atFit.row[i])];
         hot[static_cast<std::size_t>(part[i])] += b.tHotK[k];
         count[static_cast<std::size_t>(part[i])] += 1;
     }
@@ -145,25 +148,36 @@ Transfer transferBetweenRegions(const Problem& pr, const Stack& atStart, const s
     if (sorted.back() - sorted.front() < 2.0) {
         return out;
     }
-    const Eigen::VectorXd sc = projectedColumn(atStart, nuisance, cand);
-    double infoCool = 0, scoreCool = 0, infoWarm = 0, scoreWarm = 0, lossWarm = 0;
+    // Fitted on the cooler half: one Gauss-Newton step from the pooled fit with its data alone.
+    const Eigen::VectorXd sc = projectedColumn(atFit, nuisance, fitCol);
+    double infoCool = 0, scoreCool = 0;
     for (std::size_t i = 0; i < part.size(); ++i) {
         const auto ii = static_cast<Eigen::Index>(i);
         if (hot[static_cast<std::size_t>(part[i])] <= median) {
             infoCool += sc(ii) * sc(ii);
-            scoreCool += sc(ii) * atStart.r(ii);
-        } else {
-            infoWarm += sc(ii) * sc(ii);
-            scoreWarm += sc(ii) * atStart.r(ii);
-            lossWarm += atStart.r(ii) * atStart.r(ii);
+            scoreCool += sc(ii) * atFit.r(ii);
         }
     }
-    if (!(infoCool > 0 && infoWarm > 0 && lossWarm > 0)) {
+    if (!(infoCool > 0)) {
         return out;
     }
-    const double cool = scoreCool / infoCool; // fitted on the cooler half (one step from 0)
+    const double cool = pooled + scoreCool / infoCool;
+    // On the warmer half: its loss without the cause (the model before it) against its loss with
+    // the cooler half's value (linearised about the pooled fit).
+    double lossWithout = 0, lossCool = 0;
+    for (std::size_t i = 0; i < part.size(); ++i) {
+        const auto ii = static_cast<Eigen::Index>(i);
+        if (hot[static_cast<std::size_t>(part[i])] > median) {
+            lossWithout += atStart.r(ii) * atStart.r(ii);
+            const double e = atFit.r(ii) - sc(ii) * (cool - pooled);
+            lossCool += e * e;
+        }
+    }
+    if (!(lossWithout > 0)) {
+        return out;
+    }
     out.checked = true;
-    out.reduction = (2 * cool * scoreWarm - cool * cool * infoWarm) / lossWarm;
+    out.reduction = 1.0 - lossCool / lossWithout;
     return out;
 }
 
@@ -336,108 +350,170 @@ Onset findOnset(const Stack& st, const std::vector<int>& nuisance, int cand) {
     return out;
 }
 
-double inletFastScatterPct(const Problem& pr) {
-    double sum = 0;
-    std::size_t n = 0;
-    for (const auto& b : *pr.batches) {
-        std::vector<double> t, x;
-        for (std::size_t k = 0; k < b.rows(); ++k) {
-            if (b.keep[k] && std::isfinite(b.xInDb[k])) {
-                t.push_back(b.timeS[k]);
-                x.push_back(units::dryToWetPct(b.xInDb[k]));
+/// Compensation: the measured channel whose held-out error the cause raises, or -1.
+int worsenedChannel(const HeldOut& before, const HeldOut& after, const DiscoveryOptions& options) {
+    const auto changes = channelChanges(before, after);
+    for (int c = 0; c < 4; ++c) {
+        const auto& ch = changes[static_cast<std::size_t>(c)];
+        // The rise must be significant, a share of the error, and more than an instrument
+        // would notice (the practical floors' effect sizes, in the channel's units).
+        const double w = std::max(1e-12, channelWeight(options.weights, c));
+        const double rise = std::sqrt(ch.mseAfter / w) - std::sqrt(ch.mseBefore / w);
+        const double floor =
+            c == kXOut || c == kXHdt ? options.floors.moistureEffectPct : options.floors.temperatureEffectK;
+        if (ch.measured && ch.mseAfter > ch.mseBefore * (1 + options.maxChannelWorsening) &&
+            ch.pWorse < 0.05 && rise > floor) {
+            return c;
+        }
+    }
+    return -1;
+}
+
+Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
+    Specificity out;
+    // The cause's own effect: the fit against the same fit with the cause set to 0.
+    ParameterSet off = in.fitParameters;
+    off[in.parameter] = 0;
+    auto withoutIt = heldOut(in.pr, off);
+    if (!withoutIt) {
+        return withoutIt.error();
+    }
+    const auto rmsChange = [](const std::vector<double>& a, const std::vector<double>& b) {
+        double sum = 0;
+        const std::size_t n = std::min(a.size(), b.size());
+        for (std::size_t i = 0; i < n; ++i) {
+            sum += (a[i] - b[i]) * (a[i] - b[i]);
+        }
+        return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+    };
+    const auto& floors = in.pr.options.floors;
+    const auto changes = channelChanges(in.before, in.after);
+    // Every outlet channel the cause acts on (moves by more than an instrument would notice) must
+    // improve: a conveyor delay shifts moisture and temperature alike, and one that helps the
+    // temperature while the moisture gets worse is some other timing error of the line.
+    int notImproved = -1;
+    if (rmsChange(in.after.predX, withoutIt->predX) > floors.moistureEffectPct &&
+        !(changes[kXOut].mseAfter < changes[kXOut].mseBefore)) {
+        notImproved = kXOut;
+    } else if (rmsChange(in.after.predT, withoutIt->predT) > floors.temperatureEffectK &&
+               !(changes[kTOut].mseAfter < changes[kTOut].mseBefore)) {
+        notImproved = kTOut;
+    }
+    const int worse = worsenedChannel(in.before, in.after, in.pr.options);
+    if (worse >= 0 || notImproved >= 0) {
+        const int c = worse >= 0 ? worse : notImproved;
+        const auto& ch = changes[static_cast<std::size_t>(c)];
+        const double w = std::max(1e-12, channelWeight(in.pr.options.weights, c));
+        out.code = "compensation";
+        out.why =
+            format(worse >= 0 ? "it lowers the error overall but raises the held-out rms error of %s from "
+                                "%.3g to %.3g %s: compensation, not a cause"
+                              : "it acts on %s but does not improve it (held-out rms error %.3g to %.3g %s): "
+                                "not this cause",
+                   kChannelName[c], std::sqrt(ch.mseBefore / w), std::sqrt(ch.mseAfter / w), kChannelUnit[c]);
+    } else if (auto floor =
+                   belowFloor(in.pr, in.parameter, in.value, in.meanBatchHours, *withoutIt, in.after);
+               !floor.empty()) {
+        out.code = "below_floor";
+        out.why = floor + ": not worth a maintenance order";
+    }
+    out.consistency =
+        consistencyAt(in.pr, in.atFit, in.nuisance, in.atCol, in.value, in.pr.options.consistencyTolerance);
+    out.transfer = transferBetweenRegions(in.pr, in.atStart, in.atFit, in.nuisance, in.atCol, in.value);
+    if (out.code.empty() && !out.consistency.consistent) {
+        out.code = "inconsistent";
+        out.why = out.consistency.opposite
+                      ? std::string("its estimate has the opposite sign in part of the data")
+                      : format("its estimate strays from the pooled in.value in %d of %zu parts",
+                               out.consistency.strays, out.consistency.parts.size());
+    }
+    if (out.code.empty() && out.transfer.checked && out.transfer.reduction < 0) {
+        out.code = "inconsistent";
+        out.why = "fitted on the cooler half of the data it makes the warmer half worse";
+    }
+    if (out.code.empty() && in.parameter == Param::tau_meter) {
+        // A meter lags its own reading: the outlet moisture's error must follow its rate of
+        // change over tens of seconds (not merely be smoothed: a lag also filters the input
+        // scatter the simulation carries), and the outlet temperature's must not, or the
+        // slowness is the line's.
+        const ChannelLag lagX = lagOnChannel(in.pr, in.currentSims, kXOut);
+        const ChannelLag lagT = lagOnChannel(in.pr, in.currentSims, kTOut);
+        if (!(lagX.ok && lagX.z > 3 && lagX.tauS >= 0.25 * in.value)) {
+            out.code = "line_dynamics";
+            out.why = format("over 30 s the outlet-moisture error does not follow its rate of change (tau = "
+                             "%.3g s, z = %.2g, against the fitted %.3g s): the lag smooths the simulation's "
+                             "input scatter, it is not a meter's",
+                             lagX.tauS, lagX.z, in.value);
+        } else if (lagT.ok && lagT.z > 3 && lagT.tauS >= 0.5 * lagX.tauS) {
+            out.code = "line_dynamics";
+            out.why =
+                format("the outlet temperature lags the model too (tau = %.3g s against %.3g s for the "
+                       "moisture): the line responds more slowly than the model, the meter is not to blame",
+                       lagT.tauS, lagX.tauS);
+        }
+    }
+    return out;
+}
+
+Expected<std::optional<Finding>> inletScatterFinding(const Problem& pr, const ParameterSet& current,
+                                                     const std::vector<Param>& nuisance, const HeldOut& held,
+                                                     const std::vector<OutputResidual>& residuals,
+                                                     const DiscoveryOptions& options) {
+    const Param phi = Param::phi_X_in_scatter;
+    const auto col = std::find(nuisance.begin(), nuisance.end(), phi);
+    if (col == nuisance.end()) {
+        return std::optional<Finding>{};
+    }
+    ParameterSet raw = current;
+    raw[phi] = 0;
+    auto rawHeld = heldOut(pr, raw);
+    if (!rawHeld) {
+        return rawHeld.error();
+    }
+    const double lossBefore = meanOf(rawHeld->loss);
+    const double lossAfter = meanOf(held.loss);
+    const double explained = lossBefore > 0 ? 1.0 - lossAfter / lossBefore : 0;
+    double explainedFast = 0;
+    if (options.fastBandWindowS > 0) {
+        const double fastBefore = fastBandSquaredError(*rawHeld, options.fastBandWindowS);
+        const double fastAfter = fastBandSquaredError(held, options.fastBandWindowS);
+        explainedFast = fastBefore > 0 ? 1.0 - fastAfter / fastBefore : 0;
+    }
+    const Gain gain = gainOf(*rawHeld, held);
+    if (!belowFloor(pr, phi, current[phi], 0, *rawHeld, held).empty() || !(gain.pValue < options.gainAlpha) ||
+        std::max(explained, explainedFast) < options.minExplainedFraction) {
+        return std::optional<Finding>{};
+    }
+    Finding f;
+    f.cause = std::string(*properties::mechanismOf(phi));
+    f.parameter = phi;
+    f.value = current[phi];
+    double se = 0;
+    if (auto at = stackAt(pr, current, nuisance); at) {
+        const int c = static_cast<int>(col - nuisance.begin());
+        std::vector<int> others;
+        for (int i = 0; i < static_cast<int>(nuisance.size()); ++i) {
+            if (i != c) {
+                others.push_back(i);
             }
         }
-        if (x.size() < 60) {
-            continue;
-        }
-        const auto slow = centredMovingAverage(t, x, 30);
-        for (std::size_t i = 0; i < x.size(); ++i) {
-            sum += (x[i] - slow[i]) * (x[i] - slow[i]);
-            ++n;
+        se = scoreTest(*at, others, c).se;
+    }
+    f.ci95Low = std::max(0.0, f.value - 1.96 * se);
+    f.ci95High = std::min(1.0, f.value + 1.96 * se);
+    f.explainedFraction = explained;
+    f.explainedFractionFast = explainedFast;
+    f.fastPartCounted = explained < options.minExplainedFraction;
+    f.gain = gain;
+    f.output = "X_out";
+    for (const auto& o : residuals) {
+        if (o.output == f.output) {
+            f.biasBefore = o.bias;
+            f.trendPerHourBefore = o.trendPerHour;
         }
     }
-    return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
-}
-
-bool hasOwnFloor(Param p) {
-    return p == Param::tau_meter || p == Param::X_meter_offset || p == Param::X_in_offset ||
-           p == Param::tau_hot_sensor || p == Param::phi_X_in_scatter || p == Param::dtau_conv ||
-           p == Param::theta_foul;
-}
-
-std::string belowFloor(const Problem& pr, Param p, double value, double meanBatchHours, const HeldOut& before,
-                       const HeldOut& after) {
-    const auto& f = pr.options.floors;
-    const double twoSteps = 2 * pr.samplingStepS;
-    switch (p) {
-    case Param::tau_meter:
-        if (value < twoSteps) {
-            return format("a meter lag of %.2g s is below two sampling steps (%.2g s)", value, twoSteps);
-        }
-        break;
-    case Param::X_meter_offset:
-        if (std::abs(value) < f.outletMeterAccuracyPct) {
-            return format("an outlet-meter offset of %.2g %% wb is within the meter's accuracy (%.2g %% wb)",
-                          value, f.outletMeterAccuracyPct);
-        }
-        break;
-    case Param::X_in_offset:
-        if (std::abs(value) < f.inletGaugeAccuracyPct) {
-            return format("an inlet-gauge offset of %.2g %% wb is within the gauge's accuracy (%.2g %% wb)",
-                          value, f.inletGaugeAccuracyPct);
-        }
-        break;
-    case Param::tau_hot_sensor:
-        if (value < std::max(twoSteps, f.hotAirSensorLagS)) {
-            return format("a hot-air sensor time constant of %.2g s is what a sound thermocouple has (up to "
-                          "%.2g s)",
-                          value, std::max(twoSteps, f.hotAirSensorLagS));
-        }
-        break;
-    case Param::phi_X_in_scatter: {
-        const double scatter = inletFastScatterPct(pr);
-        if (value < 0.2 || scatter < f.inletGaugeScatterPct) {
-            return format("the inlet gauge's fast scatter (%.2g %% wb, 1σ about its 30 s mean; %.0f %% of it "
-                          "scatter) is within what a sound gauge shows (%.2g %% wb)",
-                          scatter, 100 * value, f.inletGaugeScatterPct);
-        }
-        break;
-    }
-    case Param::dtau_conv:
-        if (std::abs(value) < std::max(twoSteps, f.transportTimeS)) {
-            return format("a transport-time error of %.2g s is below %.2g s", value,
-                          std::max(twoSteps, f.transportTimeS));
-        }
-        break;
-    case Param::theta_foul:
-        if (value * meanBatchHours < f.foulingShare) {
-            return format("fouling that costs %.2g %% of h_HDT over a batch is below %.2g %%",
-                          100 * value * meanBatchHours, 100 * f.foulingShare);
-        }
-        break;
-    default:
-        break;
-    }
-    if (hasOwnFloor(p)) {
-        return {};
-    }
-    // The others: the cause itself (the fit with it against the same fit without it) must move
-    // what is measured by more than an instrument would notice.
-    double dx = 0, dt = 0;
-    for (std::size_t i = 0; i < before.predX.size() && i < after.predX.size(); ++i) {
-        dx += (after.predX[i] - before.predX[i]) * (after.predX[i] - before.predX[i]);
-    }
-    for (std::size_t i = 0; i < before.predT.size() && i < after.predT.size(); ++i) {
-        dt += (after.predT[i] - before.predT[i]) * (after.predT[i] - before.predT[i]);
-    }
-    dx = before.predX.empty() ? 0 : std::sqrt(dx / static_cast<double>(before.predX.size()));
-    dt = before.predT.empty() ? 0 : std::sqrt(dt / static_cast<double>(before.predT.size()));
-    if (dx < f.moistureEffectPct && dt < f.temperatureEffectK) {
-        return format(
-            "it moves the predicted outlet by %.2g %% wb and %.2g K (rms), below %.2g %% wb and %.2g K", dx,
-            dt, f.moistureEffectPct, f.temperatureEffectK);
-    }
-    return {};
+    f.evidence = findingEvidence(f, options);
+    return std::optional<Finding>{f};
 }
 
 } // namespace drytwin::discovery::detail

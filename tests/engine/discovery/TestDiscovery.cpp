@@ -6,6 +6,7 @@
 #include "plant/VirtualPlant.h"
 
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
 
 using namespace drytwin;
@@ -116,7 +117,7 @@ private Q_SLOTS:
         QCOMPARE(r.verdict, std::string("no_structural_cause"));
         QVERIFY(r.unexplained.empty());
         // Not named, but bounded: every mechanism gets the interval the data allow, inside its range.
-        QCOMPARE(r.bounds.size(), std::size_t{11});
+        QCOMPARE(r.bounds.size(), std::size_t{10}); // the scatter share is freed with h_HDT, k_HDT
         for (const auto& b : r.bounds) {
             const auto& info = properties::info(b.parameter);
             QVERIFY2(b.ci95Low < b.ci95High, b.cause.c_str());
@@ -199,7 +200,11 @@ private Q_SLOTS:
         }
         auto r = discovery::discover(data, hybrid::HybridModel{});
         QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
-        QCOMPARE(r->notes.size(), std::size_t(3));
+        // The three channels the files lack (beside the note on the inlet gauge's normal scatter).
+        const auto lacking = std::count_if(r->notes.begin(), r->notes.end(), [](const std::string& n) {
+            return n.find("not measured") != std::string::npos || n.find("is constant") != std::string::npos;
+        });
+        QCOMPARE(lacking, 3);
         QVERIFY(!r->findings.empty());
         QCOMPARE(r->findings.front().cause, std::string("moisture_meter_offset"));
     }
@@ -266,23 +271,23 @@ private Q_SLOTS:
     }
 
     void distributedDriftNamesNothingAndSaysWhy() {
-        // The distributed plant under unmeasured drift: causes that predict better on the held-out
-        // part are tried, and each is turned down with its reason (not specific: below its floor,
-        // the line's own dynamics, compensation); none is named.
+        // The distributed plant under unmeasured drift: the candidates that fit the training part
+        // are tried, and each is turned down with its reason; none is named.
         plant::PlantOptions o;
         o.plant = plant::PlantKind::Distributed;
         o.unmeasuredDrift = true;
         const auto r = discoverIn(o);
         QVERIFY2(r.findings.empty(), qPrintable(names(r)));
-        int notSpecific = 0;
+        int tried = 0;
         for (const auto& rd : r.rounds) {
+            QVERIFY(!rd.named && !rd.reason.empty());
             for (const auto& x : rd.rejected) {
                 qInfo("not named: %s (%s): %s", x.cause.c_str(), x.code.c_str(), x.reason.c_str());
-                QVERIFY(!x.reason.empty());
-                notSpecific += x.code != "no_held_out_gain";
+                QVERIFY(!x.reason.empty() && !x.code.empty());
+                ++tried;
             }
         }
-        QVERIFY2(notSpecific >= 1, qPrintable(names(r)));
+        QVERIFY2(tried >= 1, qPrintable(names(r)));
     }
 
     void badInputAndCancelAreErrors() {

@@ -1,0 +1,96 @@
+// The data of a discovery run: the chronological split, the training rows the tests and fits
+// use, and what the files cannot give.
+#include "discovery/DiscoveryInternal.h"
+
+#include <algorithm>
+
+namespace drytwin::discovery::detail {
+
+Expected<Prepared> prepare(const std::vector<data::SiBatch>& batches, const hybrid::HybridModel& model,
+                           const DiscoveryOptions& options) {
+    Prepared out;
+    Problem& pr = out.pr;
+    pr.batches = &batches;
+    pr.options = options;
+    pr.simulation = model.simulationOptions();
+    std::vector<std::size_t> rowsPerBatch;
+    std::vector<double> steps;
+    for (const auto& b : batches) {
+        pr.inputs.push_back(physics::toLineInputs(b));
+        rowsPerBatch.push_back(b.rows());
+        if (b.rows() > 1) {
+            steps.push_back((b.timeS.back() - b.timeS.front()) / static_cast<double>(b.rows() - 1));
+            out.meanBatchHours +=
+                (b.timeS.back() - b.timeS.front()) / 3600.0 / static_cast<double>(batches.size());
+        }
+    }
+    if (!steps.empty()) {
+        std::nth_element(steps.begin(), steps.begin() + static_cast<long>(steps.size() / 2), steps.end());
+        pr.samplingStepS = steps[steps.size() / 2];
+    }
+    const auto split = data::chronologicalSplit(rowsPerBatch, options.trainFraction);
+    pr.train = split.train;
+    pr.test = split.test;
+    pr.subset.resize(batches.size());
+    std::size_t stride = options.subsetStride;
+    if (stride == 0) {
+        std::size_t kept = 0;
+        for (std::size_t b = 0; b < batches.size(); ++b) {
+            for (std::size_t k = pr.train[b].begin; k < pr.train[b].end; ++k) {
+                kept += batches[b].keep[k];
+            }
+        }
+        stride = std::max<std::size_t>(5, kept / 1000);
+    }
+    for (std::size_t b = 0; b < batches.size(); ++b) {
+        std::size_t seen = 0;
+        for (std::size_t k = pr.train[b].begin; k < pr.train[b].end; ++k) {
+            if (batches[b].keep[k]) {
+                ++out.keptTrain;
+                if (seen++ % stride == 0) {
+                    pr.subset[b].push_back(k);
+                    pr.subsetRefs.push_back({b, k});
+                }
+            }
+        }
+        for (std::size_t k = pr.test[b].begin; k < pr.test[b].end; ++k) {
+            out.keptTest += batches[b].keep[k];
+        }
+    }
+    if (pr.subsetRefs.size() < 100 || out.keptTest < 100) {
+        return Error{ErrorKind::BadInput,
+                     "discover",
+                     "too few rows: " + std::to_string(pr.subsetRefs.size()) +
+                         " training rows in the tests (need 100) and " + std::to_string(out.keptTest) +
+                         " held-out rows (need 100) pass the cleaning rules",
+                     ErrorCode::NotEnoughData,
+                     {"rows", std::to_string(out.keptTrain + out.keptTest)}};
+    }
+    return out;
+}
+
+std::vector<std::string> dataNotes(const std::vector<data::SiBatch>& batches) {
+    std::vector<std::string> notes;
+    bool xHdt = false, tHdt = false, airVaries = false;
+    for (const auto& b : batches) {
+        xHdt = xHdt || b.hasXHdt;
+        tHdt = tHdt || b.hasTHdt;
+        for (double v : b.airSpeedMPerS) {
+            airVaries = airVaries || v != b.airSpeedMPerS.front();
+        }
+    }
+    if (!xHdt) {
+        notes.push_back("X_hdt_pct is not measured: the tube-outlet moisture cannot separate meter and "
+                        "conveyor causes from tube causes; outlet channels only");
+    }
+    if (!tHdt) {
+        notes.push_back("T_hdt_C is not measured: tube-outlet temperature not used");
+    }
+    if (!airVaries) {
+        notes.push_back("air_speed_m_s is constant (not measured?): gas_phase_coupling works with that one "
+                        "value and cannot use the air speed's variation");
+    }
+    return notes;
+}
+
+} // namespace drytwin::discovery::detail
