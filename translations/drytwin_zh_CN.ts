@@ -319,112 +319,112 @@
         <translation>为 DryTwin 需要的每一列选择您文件中使用的表头及其数值的单位（读取时换算）；必需的列标有 *。建议来自表头中的词语、位号字母以及前几行数值的范围：请核对。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="59"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="60"/>
         <source>DryTwin column</source>
         <translation>DryTwin 列</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="59"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="60"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="59"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="60"/>
         <source>Header in your file</source>
         <translation>您文件中的表头</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="60"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="61"/>
         <source>Meaning</source>
         <translation>含义</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="60"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="61"/>
         <source>Unit in your file</source>
         <translation>您文件中的单位</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="60"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="61"/>
         <source>Why proposed</source>
         <translation>建议依据</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="73"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="74"/>
         <source>(not in the file)</source>
         <translation>（文件中没有）</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="114"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="116"/>
         <source>(none: cut runs at line stops and gaps)</source>
         <translation>（无：在停线和时间间断处切分生产段）</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="120"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="123"/>
         <source>Column that names the production run:</source>
         <translation>标识生产段的列：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="124"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="128"/>
         <source>Run</source>
         <translation>生产段</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="124"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="128"/>
         <source>Start</source>
         <translation>开始</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="124"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="128"/>
         <source>File lines</source>
         <translation>文件行</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="124"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="128"/>
         <source>Rows</source>
         <translation>行数</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="124"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="128"/>
         <source>Interpolated cells</source>
         <translation>插值单元格</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="125"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="128"/>
         <source>Ended by</source>
         <translation>结束原因</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="151"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="154"/>
         <source>The mapping is not complete: %1</source>
         <translation>映射不完整：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="156"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="160"/>
         <source>With this mapping the file does not load: %1</source>
         <translation>按此映射无法加载该文件：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="162"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="166"/>
         <source>The first %1 MB of the file give these production runs:</source>
         <translation>文件前 %1 MB 给出以下生产段：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="163"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="167"/>
         <source>The file gives these production runs:</source>
         <translation>该文件给出以下生产段：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="165"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="169"/>
         <source>Notes while reading: %1; the first: %2</source>
         <translation>读取时的提示：%1 条；第一条：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="178"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="182"/>
         <source>one batch</source>
         <translation>单个批次</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="261"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="266"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -432,118 +432,118 @@
 <context>
     <name>drytwin::widgets::DataPanel</name>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="30"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="31"/>
         <source>Open file…</source>
         <translation>打开文件…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="31"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="32"/>
         <source>Open folder…</source>
         <translation>打开文件夹…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="32"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="33"/>
         <source>Column mapping…</source>
         <translation>列映射…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="33"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="34"/>
         <source>Files with other column names: map them onto DryTwin&apos;s columns, then load</source>
         <translation>列名不同的文件：先映射到 DryTwin 的列，再加载</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="37"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
         <source>Batches overlaid</source>
         <translation>批次叠加</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="37"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
         <source>Batches one after another</source>
         <translation>批次首尾相接</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
         <source>Batch</source>
         <translation>批次</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
         <source>Rows</source>
         <translation>行数</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
         <source>Kept</source>
         <translation>保留</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
         <source>Length [min]</source>
         <translation>时长 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="40"/>
         <source>Mean X_out [% wb]</source>
         <translation>平均 X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="40"/>
         <source>Mean T_hot [°C]</source>
         <translation>平均 T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="40"/>
         <source>Source</source>
         <translation>来源</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="53"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="54"/>
         <source>Batches (select several to overlay; drop files here):</source>
         <translation>批次（多选可叠加；可将文件拖放到此处）：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="72"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="73"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="72"/>
-        <location filename="../widgets/data/DataPanel.cpp" line="85"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="73"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="86"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="78"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="79"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="84"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="85"/>
         <source>A batch file with your column names</source>
         <translation>一个使用您的列名的批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="94"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="95"/>
         <source>Save the column mapping</source>
         <translation>保存列映射</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="94"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="95"/>
         <source>Mappings (*.json)</source>
         <translation>映射 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="144"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="151"/>
         <source>%1, lines %2–%3, from %4, ended by %5</source>
         <translation>%1，第 %2–%3 行，始于 %4，结束原因：%5</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="168"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="179"/>
         <source>Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.</source>
         <translation>清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="182"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="193"/>
         <source>Noted while reading (%1):</source>
         <translation>读取时的提示（%1）：</translation>
     </message>
@@ -634,275 +634,395 @@
 <context>
     <name>drytwin::widgets::DiscoverPanel</name>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="21"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="22"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="22"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="23"/>
         <source>What does the simulation get wrong, and why? (score tests, fits, held-out gain)</source>
         <translation>仿真哪里出错，为什么？（得分检验、拟合、留出数据上的改进）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="23"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="24"/>
         <source>Extend the model</source>
         <translation>扩展模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="26"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
         <source>Make the extended model (named causes, refitted h_HDT and k_HDT, residual models retrained) the session&apos;s model</source>
         <translation>将扩展后的模型（已命名的原因、重新拟合的 h_HDT 与 k_HDT、重新训练的残差模型）设为当前模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="28"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="29"/>
         <source>Run discovery on the loaded data with the current model.</source>
         <translation>用当前模型在已加载的数据上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>p (Holm)</source>
         <translation>p（Holm）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>Fitted</source>
         <translation>已拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>Loss</source>
         <translation>损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
         <source>Held-out</source>
         <translation>留出数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
         <source>Before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
         <source>After</source>
         <translation>之后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
         <source>X_out residual [% wb]</source>
         <translation>X_out 残差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
         <source>T_out residual [°C]</source>
         <translation>T_out 残差 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="37"/>
         <source>time, batches one after another [h]</source>
         <translation>时间，批次首尾相接 [h]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="45"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="46"/>
         <source>Candidate causes, first round:</source>
         <translation>候选原因（第一轮）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="47"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="64"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="65"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="79"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="80"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="82"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="83"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)</source>
         <translation>误差随进料量和入口水分增大（按 feed_kg_h 和 X_in_pct 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="85"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="86"/>
         <source>the error drifts within every batch and resets at each batch start</source>
         <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="87"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="88"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="91"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="92"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="94"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="100"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="101"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="117"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="105"/>
+        <source>a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less</source>
+        <translation>干燥管出口与出口水分有相同的稳定偏差，干燥管干燥越少处越大</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="108"/>
+        <source>after each hot-air setpoint step the outlet temperature and moisture move before the simulation, which follows the slow reading</source>
+        <translation>每次热风设定值阶跃后，出口温度和水分先于仿真变化，仿真跟随的是迟缓的读数</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="111"/>
+        <source>the inlet-moisture reading scatters from second to second while the outlet does not follow it, and the simulated outlet does</source>
+        <translation>入口水分读数逐秒跳动，出口并不跟随，而仿真的出口却跟随</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="121"/>
+        <source>a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet temperature&apos;s response as much as the moisture&apos;s, a meter lag delays the moisture reading alone; or grab samples timed against the meter</source>
+        <translation>以 1 s 记录一次热风设定值阶跃：输送时间误差使出口温度与水分的响应同样延迟，水分仪滞后只延迟水分读数；或对照水分仪定时取样</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="128"/>
+        <source>oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter offset does not</source>
+        <translation>在出口对照水分仪、在入口对照入口水分计做烘箱法实验室取样；或增加干燥管出口水分通道（X_hdt）：入口水分计偏差会使其变化，出口水分仪偏差不会</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="135"/>
+        <source>a gas-temperature reading at the tube&apos;s outlet end at two feed rates: wall loss does not change with the feed, gas-phase cooling grows with it</source>
+        <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="145"/>
+        <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
+        <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="148"/>
+        <source>its size is not consistent across batches or operating regions</source>
+        <translation>其大小在各批次或各工况区间之间不一致</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="151"/>
+        <source>it is below what the instruments can tell (practical floor)</source>
+        <translation>它低于仪表能分辨的程度（实用下限）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="154"/>
+        <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
+        <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
+        <source>no clear held-out gain</source>
+        <translation>在留出数据上没有明确的改进</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="172"/>
+        <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
+        <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="177"/>
+        <source>consistent</source>
+        <translation>一致</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="177"/>
+        <source>not consistent</source>
+        <translation>不一致</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="180"/>
+        <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
+        <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="184"/>
+        <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
+        <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="191"/>
+        <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
+        <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="192"/>
+        <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
+        <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="199"/>
+        <source>To tell them apart: %1.</source>
+        <translation>区分方法：%1。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="211"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="121"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="215"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="122"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="216"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="126"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="220"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="126"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="220"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="250"/>
+        <source> or </source>
+        <translation> 或 </translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="253"/>
+        <source>one of %1 (look-alikes)</source>
+        <translation>%1 之一（相似原因）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="257"/>
         <source>Verdict: %1. No mechanism is named.</source>
         <translation>结论：%1。未命名任何机理。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="158"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="258"/>
         <source>Verdict: %1. Named: %2.</source>
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="165"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="265"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="165"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="265"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="186"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="286"/>
         <source>%1 at %2 s (ccf %3%4)</source>
         <translation>%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="190"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="290"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="193"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="293"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="202"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="302"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="209"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="309"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="223"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="311"/>
+        <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="328"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="227"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="333"/>
+        <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="341"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="233"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="346"/>
+        <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="354"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="244"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="365"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="112"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="245"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="252"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="206"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="366"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="246"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="367"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="112"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="247"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="206"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="368"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="248"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="369"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="249"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="370"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="252"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="269"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="390"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="270"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="391"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>

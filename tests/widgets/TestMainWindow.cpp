@@ -26,6 +26,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTextBrowser>
+#include <QTranslator>
 #include <QUndoStack>
 #include <QtTest>
 #include <fstream>
@@ -86,6 +87,44 @@ private Q_SLOTS:
         g.plant.samples = 1500;
         g.outFolder = m_data.toStdString();
         QVERIFY(workflow::Session().generate(g).ok());
+    }
+
+    void findingsWordGroupsOnsetsAndPartsInBothLanguages() {
+        // A finding of a look-alike group with an onset and per-batch estimates, as discovery
+        // reports it: the Discover tab words all of it, in English and in Chinese.
+        discovery::Finding f;
+        f.cause = "moisture_meter_offset";
+        f.parameter = properties::Param::X_meter_offset;
+        f.value = 0.5;
+        f.output = "X_out";
+        f.perPart = {{"B01", 0.48, 0.03}, {"B02", 0.52, 0.04}, {"B03", 0.50, 0.03}};
+        f.transferChecked = true;
+        f.transferReduction = 0.4;
+        f.hasOnset = true;
+        f.onsetS = 1200;
+        f.onsetLowS = 1080;
+        f.onsetHighS = 1320;
+        f.group = "moisture_offset";
+        f.lookAlikes.push_back(
+            {"inlet_moisture_sensor_offset", properties::Param::X_in_offset, 0.9, 1.01, 0.4, false});
+        const QString english = widgets::DiscoverPanel::specificityText(f);
+        for (const char* part : {"between 0.48 and 0.52", "consistent", "starts 20 min into the batch",
+                                 "inlet_moisture_sensor_offset fits these data about as well",
+                                 "To tell them apart", "oven-dry"}) {
+            QVERIFY2(english.contains(QLatin1String(part)), qPrintable(english));
+        }
+        QTranslator chinese;
+        QVERIFY(chinese.load(QStringLiteral("drytwin_zh_CN"), QStringLiteral(DRYTWIN_QM_DIR)));
+        QCoreApplication::installTranslator(&chinese);
+        const QString translated = widgets::DiscoverPanel::specificityText(f);
+        QCoreApplication::removeTranslator(&chinese);
+        for (const char* part : {"逐段拟合", "一致", "min 出现", "数据无法区分二者", "区分方法", "烘箱法"}) {
+            QVERIFY2(translated.contains(QString::fromUtf8(part)), qPrintable(translated));
+        }
+        // No English sentence left beside the cause names and units.
+        QVERIFY2(!translated.contains(QLatin1String("tell them apart")) &&
+                     !translated.contains(QLatin1String("Fitted")),
+                 qPrintable(translated));
     }
 
     void hasMenusTabsAndAbout() {
@@ -315,7 +354,7 @@ private Q_SLOTS:
         w.workbench().discover();
         QVERIFY(waitIdle(w, 240000));
         QVERIFY(w.workbench().latest().discover.has_value());
-        QVERIFY(disc->ranking()->rowCount() == 8);
+        QVERIFY(disc->ranking()->rowCount() == 10); // the inlet scatter share is fitted with h_HDT, k_HDT
         QVERIFY(disc->verdict()->text().startsWith("Verdict"));
         // Each finding's evidence is worded by the panel from the finding's numbers (translatable).
         for (const auto& f : w.workbench().latest().discover->discovery.findings) {
