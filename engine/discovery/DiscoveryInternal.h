@@ -173,8 +173,9 @@ bool hasOwnFloor(Param p);
 std::string belowFloor(const Problem& pr, Param p, double value, double meanBatchHours, const HeldOut& before,
                        const HeldOut& after);
 
-/// Compensation: the measured channel whose held-out error the cause raises, or -1.
-int worsenedChannel(const HeldOut& before, const HeldOut& after, const DiscoveryOptions& options);
+/// Compensation: a measured channel the cause acts on whose held-out error it raises, or -1.
+int worsenedChannel(const HeldOut& before, const HeldOut& after, const DiscoveryOptions& options,
+                    const std::array<bool, 4>& actsOn);
 /// What the specificity judgement needs of a candidate that predicted better on the held-out part.
 struct SpecificityInput {
     const Problem& pr;

@@ -351,9 +351,13 @@ Onset findOnset(const Stack& st, const std::vector<int>& nuisance, int cand) {
 }
 
 /// Compensation: the measured channel whose held-out error the cause raises, or -1.
-int worsenedChannel(const HeldOut& before, const HeldOut& after, const DiscoveryOptions& options) {
+int worsenedChannel(const HeldOut& before, const HeldOut& after, const DiscoveryOptions& options,
+                    const std::array<bool, 4>& actsOn) {
     const auto changes = channelChanges(before, after);
     for (int c = 0; c < 4; ++c) {
+        if (!actsOn[static_cast<std::size_t>(c)]) {
+            continue;
+        }
         const auto& ch = changes[static_cast<std::size_t>(c)];
         // The rise must be significant, a share of the error, and more than an instrument
         // would notice (the practical floors' effect sizes, in the channel's units).
@@ -378,28 +382,40 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
     if (!withoutIt) {
         return withoutIt.error();
     }
-    const auto rmsChange = [](const std::vector<double>& a, const std::vector<double>& b) {
-        double sum = 0;
-        const std::size_t n = std::min(a.size(), b.size());
-        for (std::size_t i = 0; i < n; ++i) {
-            sum += (a[i] - b[i]) * (a[i] - b[i]);
-        }
-        return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
-    };
+    // The channels the cause acts on: its own effect (the fit against the same fit with it at 0)
+    // moves them by more than an instrument would notice. A cause is judged on those alone: an
+    // outlet-meter offset does not act on the temperature, whatever the refit of h_HDT and k_HDT
+    // does to it.
     const auto& floors = in.pr.options.floors;
-    const auto changes = channelChanges(in.before, in.after);
-    // Every outlet channel the cause acts on (moves by more than an instrument would notice) must
-    // improve: a conveyor delay shifts moisture and temperature alike, and one that helps the
-    // temperature while the moisture gets worse is some other timing error of the line.
-    int notImproved = -1;
-    if (rmsChange(in.after.predX, withoutIt->predX) > floors.moistureEffectPct &&
-        !(changes[kXOut].mseAfter < changes[kXOut].mseBefore)) {
-        notImproved = kXOut;
-    } else if (rmsChange(in.after.predT, withoutIt->predT) > floors.temperatureEffectK &&
-               !(changes[kTOut].mseAfter < changes[kTOut].mseBefore)) {
-        notImproved = kTOut;
+    std::array<bool, 4> actsOn{};
+    for (int c = 0; c < 4; ++c) {
+        double sum = 0;
+        std::size_t n = 0;
+        for (std::size_t b = 0; b < in.after.channels.size() && b < withoutIt->channels.size(); ++b) {
+            const auto& with = in.after.channels[b][static_cast<std::size_t>(c)].weightedError;
+            const auto& without = withoutIt->channels[b][static_cast<std::size_t>(c)].weightedError;
+            for (std::size_t i = 0; i < with.size() && i < without.size(); ++i) {
+                sum += (with[i] - without[i]) * (with[i] - without[i]);
+                ++n;
+            }
+        }
+        const double w = std::max(1e-12, channelWeight(in.pr.options.weights, c));
+        const double rms = n ? std::sqrt(sum / static_cast<double>(n) / w) : 0.0;
+        actsOn[static_cast<std::size_t>(c)] =
+            rms > (c == kXOut || c == kXHdt ? floors.moistureEffectPct : floors.temperatureEffectK);
     }
-    const int worse = worsenedChannel(in.before, in.after, in.pr.options);
+    const auto changes = channelChanges(in.before, in.after);
+    // Every channel it acts on must improve: a conveyor delay shifts moisture and temperature
+    // alike, and one that helps the temperature while the moisture gets worse is some other
+    // timing error of the line.
+    int notImproved = -1;
+    for (int c = 0; c < 4 && notImproved < 0; ++c) {
+        const auto& ch = changes[static_cast<std::size_t>(c)];
+        if (actsOn[static_cast<std::size_t>(c)] && ch.measured && !(ch.mseAfter < ch.mseBefore)) {
+            notImproved = c;
+        }
+    }
+    const int worse = worsenedChannel(in.before, in.after, in.pr.options, actsOn);
     if (worse >= 0 || notImproved >= 0) {
         const int c = worse >= 0 ? worse : notImproved;
         const auto& ch = changes[static_cast<std::size_t>(c)];
