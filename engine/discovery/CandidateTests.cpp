@@ -317,6 +317,20 @@ Gain gainOf(const HeldOut& before, const HeldOut& after) {
     return g;
 }
 
+std::pair<double, double> explainedShares(const HeldOut& before, const HeldOut& after,
+                                          const DiscoveryOptions& options) {
+    const double lossBefore = meanOf(before.loss);
+    const double lossAfter = meanOf(after.loss);
+    const double whole = lossBefore > 0 ? 1.0 - lossAfter / lossBefore : 0;
+    double fast = 0;
+    if (options.fastBandWindowS > 0) {
+        const double fastBefore = fastBandSquaredError(before, options.fastBandWindowS);
+        const double fastAfter = fastBandSquaredError(after, options.fastBandWindowS);
+        fast = fastBefore > 0 ? 1.0 - fastAfter / fastBefore : 0;
+    }
+    return {whole, fast};
+}
+
 double heldOutPValue(const HeldOut& worse, const HeldOut& better) {
     // One-sided Diebold-Mariano on the weighted squared error: d = L_worse − L_better.
     std::vector<std::vector<double>> d(worse.loss.size());

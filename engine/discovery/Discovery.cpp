@@ -265,15 +265,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                 return afterHeld.error();
             }
             Gain gain = gainOf(*currentHeld, *afterHeld);
-            const double lossBefore = meanOf(currentHeld->loss);
-            const double lossAfter = meanOf(afterHeld->loss);
-            const double explained = lossBefore > 0 ? 1.0 - lossAfter / lossBefore : 0;
-            double explainedFast = 0;
-            if (options.fastBandWindowS > 0) {
-                const double fastBefore = fastBandSquaredError(*currentHeld, options.fastBandWindowS);
-                const double fastAfter = fastBandSquaredError(*afterHeld, options.fastBandWindowS);
-                explainedFast = fastBefore > 0 ? 1.0 - fastAfter / fastBefore : 0;
-            }
+            const auto [explained, explainedFast] = explainedShares(*currentHeld, *afterHeld, options);
             if (tried == 1) {
                 record.heldOutPValue = gain.pValue;
                 record.explainedFraction = explained;

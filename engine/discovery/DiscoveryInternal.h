@@ -12,6 +12,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace drytwin::discovery::detail {
@@ -107,6 +108,10 @@ struct HeldOut {
 Expected<HeldOut> heldOut(const Problem& pr, const ParameterSet& p);
 double fastBandSquaredError(const HeldOut& h, double windowS);
 double meanOf(const std::vector<std::vector<double>>& series);
+/// The shares of the held-out weighted squared error, and of its fast part
+/// (DiscoveryOptions::fastBandWindowS; 0 when off), that @p after removes from @p before.
+std::pair<double, double> explainedShares(const HeldOut& before, const HeldOut& after,
+                                          const DiscoveryOptions& options);
 Gain gainOf(const HeldOut& before, const HeldOut& after);
 /// One-sided Diebold-Mariano p that @p better has a lower held-out loss than @p worse.
 double heldOutPValue(const HeldOut& worse, const HeldOut& better);
@@ -137,7 +142,7 @@ Consistency consistencyAt(const Problem& pr, const Stack& atFit, const std::vect
 /// alone), the share of the warmer parts' training loss without the cause that it removes
 /// (negative: it hurts there). @p atStart: the model without the cause, entries paired with @p atFit.
 struct Transfer {
-    bool checked = false; ///< fewer than two parts, or one operating region: not checked
+    bool checked = false; ///< fewer than four parts, or one operating region: not checked
     double reduction = 0;
 };
 Transfer transferBetweenRegions(const Problem& pr, const Stack& atStart, const Stack& atFit,

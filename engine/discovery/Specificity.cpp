@@ -124,7 +124,9 @@ Transfer transferBetweenRegions(const Problem& pr, const Stack& atStart, const S
     std::vector<std::string> names;
     const auto part = partOfEntries(atFit, static_cast<int>(pr.batches->size()), names, *pr.batches);
     const auto parts = static_cast<int>(names.size());
-    if (parts < 2) {
+    // Two parts at least in each half: a single part against another is the consistency check's
+    // business, and the thirds of one recording split by T_hot are rarely two operating regions.
+    if (parts < 4) {
         return out;
     }
     // The operating region of each part: its mean hot-air temperature.
@@ -486,15 +488,7 @@ Expected<std::optional<Finding>> inletScatterFinding(const Problem& pr, const Pa
     if (!rawHeld) {
         return rawHeld.error();
     }
-    const double lossBefore = meanOf(rawHeld->loss);
-    const double lossAfter = meanOf(held.loss);
-    const double explained = lossBefore > 0 ? 1.0 - lossAfter / lossBefore : 0;
-    double explainedFast = 0;
-    if (options.fastBandWindowS > 0) {
-        const double fastBefore = fastBandSquaredError(*rawHeld, options.fastBandWindowS);
-        const double fastAfter = fastBandSquaredError(held, options.fastBandWindowS);
-        explainedFast = fastBefore > 0 ? 1.0 - fastAfter / fastBefore : 0;
-    }
+    const auto [explained, explainedFast] = explainedShares(*rawHeld, held, options);
     const Gain gain = gainOf(*rawHeld, held);
     if (!belowFloor(pr, phi, current[phi], 0, *rawHeld, held).empty() || !(gain.pValue < options.gainAlpha) ||
         std::max(explained, explainedFast) < options.minExplainedFraction) {
