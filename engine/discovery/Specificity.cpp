@@ -442,7 +442,7 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
         out.code = "inconsistent";
         out.why = out.consistency.opposite
                       ? std::string("its estimate has the opposite sign in part of the data")
-                      : format("its estimate strays from the pooled in.value in %d of %zu parts",
+                      : format("its estimate strays from the pooled value in %d of %zu parts",
                                out.consistency.strays, out.consistency.parts.size());
     }
     if (out.code.empty() && out.transfer.checked && out.transfer.reduction < 0) {
