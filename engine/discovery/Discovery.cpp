@@ -373,23 +373,15 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                         continue;
                     }
                 }
-                auto otherHeld = heldOut(pr, fits[other].parameters);
-                if (!otherHeld) {
-                    return otherHeld.error();
+                auto l = compareLookAlike(pr, other, fits[other].parameters, *namedHeld, options);
+                if (!l) {
+                    return l.error();
                 }
-                LookAlike l;
-                l.cause = std::string(*properties::mechanismOf(other));
-                l.parameter = other;
-                l.value = fits[other].parameters[other];
-                const double mine = meanOf(namedHeld->loss);
-                l.heldOutLossRatio = mine > 0 ? meanOf(otherHeld->loss) / mine : 1.0;
-                l.pValue = heldOutPValue(*otherHeld, *namedHeld);
-                l.ruledOut = l.pValue < options.gainAlpha;
-                if (!l.ruledOut) {
+                if (!l->ruledOut) {
                     f.group = group->name;
                     f.tellApart = group->tellApart;
                 }
-                f.lookAlikes.push_back(l);
+                f.lookAlikes.push_back(*l);
             }
         }
         record.named = true;

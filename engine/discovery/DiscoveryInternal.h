@@ -214,6 +214,11 @@ Expected<std::optional<Finding>> inletScatterFinding(const Problem& pr, const Pa
                                                      const std::vector<OutputResidual>& residuals,
                                                      const DiscoveryOptions& options);
 
+/// A look-alike @p other fitted in the named cause's place (@p fitted), judged on the same held-out
+/// part: its loss ratio and the one-sided DM p that the named cause predicts better.
+Expected<LookAlike> compareLookAlike(const Problem& pr, Param other, const ParameterSet& fitted,
+                                     const HeldOut& namedHeld, const DiscoveryOptions& options);
+
 /// Look-alikes (FindingText.cpp): causes that leave much the same signature on outlet data.
 struct LookAlikeGroup {
     const char* name;

@@ -2,6 +2,7 @@
 // cause explains, by its signature.
 #include "discovery/DiscoveryInternal.h"
 
+#include "common/MovingAverage.h"
 #include "common/Units.h"
 #include "diagnostics/Correlation.h"
 #include "diagnostics/LjungBox.h"
@@ -347,6 +348,102 @@ std::vector<Signature> signatures(const std::vector<OutputResidual>& residuals) 
         }
     }
     return out;
+}
+
+ChannelLag lagOnChannel(const Problem& pr, const std::vector<physics::SimulationResult>& sims, int channel) {
+    ChannelLag out;
+    const auto& batches = *pr.batches;
+    // Over a window of 30 s: the sample-to-sample scatter of the inputs passes through the
+    // simulation into its rate of change but not into the measured error, and would shrink the
+    // estimate towards 0; a lag of tens of seconds shows over tens of seconds.
+    constexpr double kWindowS = 30;
+    std::vector<std::vector<double>> scoreSeries;
+    std::vector<double> g, e;
+    std::vector<std::size_t> batchOf;
+    for (std::size_t b = 0; b < batches.size(); ++b) {
+        const auto& bt = batches[b];
+        std::vector<double> t, obs, pred;
+        for (std::size_t k = pr.train[b].begin; k < pr.train[b].end; ++k) {
+            double o = 0, p = 0, f = 1;
+            if (channelAt(bt, sims[b], k, k, channel, o, p, f)) {
+                t.push_back(bt.timeS[k]);
+                obs.push_back(o);
+                pred.push_back(p);
+            }
+        }
+        if (t.size() < 120) {
+            continue;
+        }
+        std::vector<double> err(t.size());
+        for (std::size_t i = 0; i < t.size(); ++i) {
+            err[i] = obs[i] - pred[i];
+        }
+        const auto smoothErr = centredMovingAverage(t, err, kWindowS);
+        std::vector<double> gb, eb;
+        std::size_t lo = 0, hi = 0;
+        for (std::size_t i = 0; i < t.size(); ++i) {
+            while (t[lo] < t[i] - kWindowS / 2) {
+                ++lo;
+            }
+            hi = std::max(hi, i);
+            while (hi + 1 < t.size() && t[hi + 1] <= t[i] + kWindowS / 2) {
+                ++hi;
+            }
+            if (t[hi] - t[lo] < 0.8 * kWindowS) {
+                continue; // at the edges and across gaps
+            }
+            // A first-order lag τ on the reading: measured ≈ simulated − τ d(simulated)/dt.
+            gb.push_back(-(pred[hi] - pred[lo]) / (t[hi] - t[lo]));
+            eb.push_back(smoothErr[i]);
+        }
+        if (eb.size() < 60) {
+            continue;
+        }
+        const double mean = diagnostics::mean(eb); // a bias is not a lag
+        for (double& v : eb) {
+            v -= mean;
+        }
+        g.insert(g.end(), gb.begin(), gb.end());
+        e.insert(e.end(), eb.begin(), eb.end());
+        batchOf.insert(batchOf.end(), eb.size(), b);
+    }
+    double gg = 0, ge = 0, ee = 0;
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        gg += g[i] * g[i];
+        ge += g[i] * e[i];
+        ee += e[i] * e[i];
+    }
+    if (!(gg > 0 && ee > 0)) {
+        return out;
+    }
+    out.tauS = ge / gg;
+    std::size_t last = SIZE_MAX;
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        if (batchOf[i] != last) {
+            scoreSeries.emplace_back();
+            last = batchOf[i];
+        }
+        scoreSeries.back().push_back(g[i] * (e[i] - out.tauS * g[i]));
+    }
+    out.se = std::sqrt(std::max(0.0, hacVarianceOfSum(scoreSeries, false))) / gg;
+    out.z = out.se > 0 ? out.tauS / out.se : 0;
+    out.share = out.tauS * out.tauS * gg / ee;
+    out.ok = true;
+    return out;
+}
+
+std::optional<Signature> dynamicsSignature(const Problem& pr,
+                                           const std::vector<physics::SimulationResult>& sims, int channel) {
+    const ChannelLag lag = lagOnChannel(pr, sims, channel);
+    if (!lag.ok || std::abs(lag.z) <= 6 || std::abs(lag.tauS) <= 2 * pr.samplingStepS || lag.share < 0.1) {
+        return std::nullopt;
+    }
+    Signature s;
+    s.type = "dynamics";
+    s.output = kChannelName[channel];
+    s.lagS = lag.tauS;
+    s.strength = lag.share;
+    return s;
 }
 
 } // namespace drytwin::discovery::detail
