@@ -248,11 +248,14 @@ bool conveyorEval(const void* c, double s, std::size_t first, std::size_t count,
                              const properties::ModelSwitches& sw, const auto& l) {
                              auto env = ambientAt(x, l, s);
                              if (const double reabsorption = p[Param::theta_reabs]; reabsorption != 0) {
-                                 // ambient_reabsorption, from its onset on
+                                 // ambient_reabsorption, from its onset on (with none, also for the
+                                 // parcels that entered before the batch started, as the tube's
+                                 // mechanisms)
+                                 const double onset = p[Param::t_onset];
                                  double active[2] = {0, 0};
                                  for (int lane = 0; lane < l.width; ++lane) {
                                      const std::size_t parcel = l.parcel + static_cast<std::size_t>(lane);
-                                     active[lane] = (*x.entry)[parcel] + s - x.t0 >= p[Param::t_onset];
+                                     active[lane] = onset <= 0 || (*x.entry)[parcel] + s - x.t0 >= onset;
                                  }
                                  env.extraUptake = reabsorption * 1e-4 * env.rh * l.load(active);
                              }
