@@ -64,7 +64,13 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
     // normal scatter of a measured input into its prediction would have every candidate judged by
     // how well it smooths that scatter (a meter lag does, much as a real one). It is named as a
     // cause only above the gauge's normal scatter (below).
+    // The outlet's mixing (tau_mix) likewise: a real line's belt and winnower spread a step over
+    // seconds in both outlet channels, and a plug-flow model leaves that as a lag common to both,
+    // which a meter lag or a transport time would otherwise absorb in the cause's place.
     std::vector<Param> nuisance{Param::h_HDT, Param::k_HDT, Param::phi_X_in_scatter};
+    if (options.freeOutletMixing) {
+        nuisance.push_back(Param::tau_mix);
+    }
     for (Param m : properties::mechanismParams()) {
         if (model.parameters[m] != 0 && m != Param::phi_X_in_scatter) {
             nuisance.push_back(m); // extensions the model already holds stay free
@@ -97,10 +103,16 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
     }
     ParameterSet current = base->parameters;
     double currentLoss = base->after.loss;
+    const double mixingS = current[Param::tau_mix];
 
     DiscoveryResult result;
     result.baseParameters = current;
     result.notes = dataNotes(batches);
+    if (options.freeOutletMixing) {
+        result.notes.push_back(format("the line's outlet mixing (belt and winnower, both outlet channels): a "
+                                      "first-order lag of %.1f s fitted with h_HDT and k_HDT (0: plug flow)",
+                                      mixingS));
+    }
     result.trainingRows = prepared->keptTrain;
     result.heldOutRows = prepared->keptTest;
     auto full = physics::simulateBatches(pr.inputs, current, pr.simulation);

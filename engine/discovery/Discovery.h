@@ -44,6 +44,11 @@ struct DiscoveryOptions {
     /// Per-batch consistency: a batch's estimate may differ from the pooled value by its 95 %
     /// interval plus this share of the pooled value (the plant's forms are not the model's).
     double consistencyTolerance = 0.5;
+    /// Free the outlet's mixing (tau_mix) with h_HDT and k_HDT in the starting refit: the line's
+    /// own spread of a step in both outlet channels is the model's structure, not a cause. Off by
+    /// default: on the distributed plant it made a transport-time error consistent in a null
+    /// (docs/mechanisms.md, measured 2026-11-24); false keeps the paper's plug flow.
+    bool freeOutletMixing = false;
     /// Search an onset for each cause (an effect that starts mid-batch) and report it.
     bool searchOnset = true;
     /// Practical floors in physical units: below them a cause is not worth a maintenance order,

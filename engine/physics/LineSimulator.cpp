@@ -642,18 +642,19 @@ void applyMeterOffset(SimulationResult& res, double offsetPct, const std::vector
     }
 }
 
-/// The outlet moisture as the meter reports it: the moisture_meter_lag and moisture_meter_offset
-/// extensions (first-order lag, then a constant offset in % wb) applied to the predicted X_out
-/// and to its sensitivities.
+/// The outlet as measured: the line's outlet mixing (tau_mix, a first-order lag on X_out and
+/// T_out), then the moisture_meter_lag and moisture_meter_offset extensions (first-order lag, then
+/// a constant offset in % wb) on X_out, each applied to the prediction and its sensitivities.
 Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const ParameterSet& params,
                                             const SimulationOptions& o, const std::vector<std::size_t>& rows,
                                             const std::vector<Param>& odeSens) {
     const auto corrected = correctedInputs(measured, params);
     const LineInputs& in = corrected ? *corrected : measured;
     const double tauMeter = params[Param::tau_meter];
+    const double tauMix = params[Param::tau_mix];
     const double offsetPct = params[Param::X_meter_offset];
     const double onsetS = in.timeS.front() + params[Param::t_onset];
-    if (tauMeter <= 0 || rows.empty()) {
+    if ((tauMeter <= 0 && tauMix <= 0) || rows.empty()) {
         auto res = simulateCore(in, params, o, rows, odeSens);
         if (res && offsetPct != 0) {
             applyMeterOffset(*res, offsetPct, in.timeS, onsetS);
@@ -727,38 +728,43 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
     }
     // Exact first-order response to an input linear between history points: as τ → 0 it tends to
     // the input minus τ times its slope, so the sensitivity at τ = 0 is −dX/dt, not 0.
-    const auto lagged = [&](auto member) {
-        std::vector<double> out(historyRows.size());
-        double previous = 0;
+    const auto historyOf = [&](auto member) {
+        std::vector<double> u(historyRows.size());
+        for (std::size_t h = 0; h < u.size(); ++h) {
+            u[h] = member(historyKind[h] == kRaw ? *raw : grid->value())[historyIndex[h]];
+        }
+        return u;
+    };
+    const auto lagOver = [&](std::vector<double> u, double tau) {
+        if (tau <= 0) {
+            return u;
+        }
+        std::vector<double> out(u.size());
         for (std::size_t h = 0; h < out.size(); ++h) {
-            const double u = member(historyKind[h] == kRaw ? *raw : grid->value())[historyIndex[h]];
             if (h == 0) {
-                out[h] = u;
+                out[h] = u[h];
             } else {
                 const double dt = in.timeS[historyRows[h]] - in.timeS[historyRows[h - 1]];
-                const double a = std::exp(-dt / tauMeter);
-                const double ramp = (u - previous) * tauMeter / dt;
-                out[h] = u - ramp + (out[h - 1] - previous + ramp) * a;
+                const double a = std::exp(-dt / tau);
+                const double ramp = (u[h] - u[h - 1]) * tau / dt;
+                out[h] = u[h] - ramp + (out[h - 1] - u[h - 1] + ramp) * a;
             }
-            previous = u;
         }
         return out;
     };
-    const auto xOutLagged = lagged([](const SimulationResult& r) -> const auto& { return r.xOutDb; });
-    std::vector<std::vector<double>> sensLagged;
+    // The line's outlet mixing acts on both outlet channels; the meter's lag on top of it, on X_out.
+    const auto xOutMixed =
+        lagOver(historyOf([](const SimulationResult& r) -> const auto& { return r.xOutDb; }), tauMix);
+    const auto tOutMixed =
+        lagOver(historyOf([](const SimulationResult& r) -> const auto& { return r.tOutK; }), tauMix);
+    std::vector<std::vector<double>> sensXMixed, sensTMixed;
     for (std::size_t q = 0; q < raw->sensitivities.size(); ++q) {
-        sensLagged.push_back(
-            lagged([q](const SimulationResult& r) -> const auto& { return r.sensitivities[q].dXOut; }));
-    }
-    // The result at the wanted rows, in their order: the raw run's values, the lagged X_out.
-    // Kept for the rows before an onset, where the meter reads without its lag.
-    std::vector<double> rawX;
-    std::vector<std::vector<double>> rawSensX;
-    if (onsetS > in.timeS.front()) {
-        rawX = raw->xOutDb;
-        for (const auto& sens : raw->sensitivities) {
-            rawSensX.push_back(sens.dXOut);
-        }
+        sensXMixed.push_back(lagOver(
+            historyOf([q](const SimulationResult& r) -> const auto& { return r.sensitivities[q].dXOut; }),
+            tauMix));
+        sensTMixed.push_back(lagOver(
+            historyOf([q](const SimulationResult& r) -> const auto& { return r.sensitivities[q].dTOut; }),
+            tauMix));
     }
     SimulationResult res = std::move(*raw);
     std::vector<std::size_t> atRaw(rows.size()), atHistory(rows.size());
@@ -775,12 +781,11 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
         }
         v = std::move(out);
     };
-    for (auto* v : {&res.tOutK, &res.xHdtDb, &res.tHdtK, &res.proxyXHdtDb, &res.proxyTHdtK, &res.proxyXConvDb,
+    for (auto* v : {&res.xHdtDb, &res.tHdtK, &res.proxyXHdtDb, &res.proxyTHdtK, &res.proxyXConvDb,
                     &res.proxyTConvK, &res.proxyXMixDb, &res.proxyTMixK}) {
         pick(*v);
     }
     for (auto& sens : res.sensitivities) {
-        pick(sens.dTOut);
         pick(sens.dXHdt);
         pick(sens.dTHdt);
     }
@@ -791,19 +796,24 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
         }
         return out;
     };
-    // Before the onset the meter reads without its lag (the raw run at the wanted rows).
-    const auto fromOnset = [&](std::vector<double> lagged, const std::vector<double>& rawHistory) {
-        for (std::size_t j = 0; j < rows.size() && !rawHistory.empty(); ++j) {
-            if (in.timeS[rows[j]] < onsetS) {
-                lagged[j] = rawHistory[atRaw[j]];
+    // Before the onset the meter reads without its lag (the mixed outlet at the wanted rows).
+    const auto meterReading = [&](const std::vector<double>& mixedHistory) {
+        auto out = atWanted(lagOver(mixedHistory, tauMeter));
+        if (tauMeter > 0 && onsetS > in.timeS.front()) {
+            const auto mixed = atWanted(mixedHistory);
+            for (std::size_t j = 0; j < rows.size(); ++j) {
+                if (in.timeS[rows[j]] < onsetS) {
+                    out[j] = mixed[j];
+                }
             }
         }
-        return lagged;
+        return out;
     };
-    res.xOutDb = fromOnset(atWanted(xOutLagged), rawX);
+    res.xOutDb = meterReading(xOutMixed);
+    res.tOutK = atWanted(tOutMixed);
     for (std::size_t q = 0; q < res.sensitivities.size(); ++q) {
-        res.sensitivities[q].dXOut =
-            fromOnset(atWanted(sensLagged[q]), rawSensX.empty() ? rawX : rawSensX[q]);
+        res.sensitivities[q].dXOut = meterReading(sensXMixed[q]);
+        res.sensitivities[q].dTOut = atWanted(sensTMixed[q]);
     }
     res.rows = rows;
     if (offsetPct != 0) {

@@ -72,6 +72,12 @@ const std::array<ParameterInfo, kParamCount>& parameterTable() {
          "belt of 12 m at 0.2 m/s", false, true},
         {Param::tau_act, "tau_act", "time constant of the hot-air temperature actuator", "s", 20, 1, 300,
          "heat exchanger and duct lag; used when T_hot follows its setpoint (MPC)", false, true},
+        // The paper's line is plug flow from the tube's outlet on; a real belt mixes axially and a
+        // winnower is a stirred volume, so the outlet answers a step spread over seconds, in both
+        // channels alike (docs/discovery.md). 0 keeps the paper's form.
+        {Param::tau_mix, "tau_mix",
+         "outlet mixing: first-order lag of X_out and T_out (belt and winnower holdup)", "s", 0, 0, 120,
+         "distributed line: axial mixing on the belt, the winnower's stirred volume", false, true},
         // Mechanism extensions (CONTRACT.md §4), each in the simple form an engineer would write;
         // the virtual plant has its own, richer forms (docs/mechanisms.md). Default 0: the paper's
         // model. Those acting outside the ODEs are marked like durations: their sensitivities come

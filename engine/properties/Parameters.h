@@ -44,6 +44,10 @@ enum class Param {
     tau_HDT,
     tau_conv,
     tau_act,
+    /// Mixing between the tube's outlet and the line's outlet (the belt's axial mixing, the
+    /// winnower's holdup), as a first-order lag on X_out and T_out; 0: the paper's plug flow.
+    /// Part of the model's structure, not a cause: discovery frees it with h_HDT and k_HDT.
+    tau_mix,
     // Mechanism extensions of CONTRACT.md §4 (discovery): 0 gives back the paper's model.
     theta_wall,     ///< tube_wall_heat_loss
     theta_gas,      ///< gas_phase_coupling
@@ -62,7 +66,7 @@ enum class Param {
     /// by discovery when a cause starts mid-batch; one onset shared by every mechanism.
     t_onset,
 };
-inline constexpr int kParamCount = 43;
+inline constexpr int kParamCount = 44;
 /// @brief The first mechanism-extension parameter; the eleven from here on are, in order, the
 /// mechanisms of CONTRACT.md §4.
 inline constexpr Param kFirstMechanismParam = Param::theta_wall;

@@ -307,6 +307,56 @@ private Q_SLOTS:
         }
     }
 
+    void outletMixingIsAStirredVolumeOnBothOutletChannels() {
+        // tau_mix = 0 is the paper's plug flow; tau_mix > 0 a stirred volume between the tube's
+        // outlet and the line's outlet. Its balance: tau dy_mix/dt = y - y_mix, so over a run
+        // the integral of (y - y_mix) equals tau times the change of y_mix (what went in and did
+        // not come out is held in the volume).
+        const LineInputs in = varyingInputs(3000);
+        SimulationOptions every;
+        every.meterGridS = 0;
+        ParameterSet mixed = m_p;
+        mixed[Param::tau_mix] = 15;
+        auto plug = simulateLine(in, m_p, every);
+        auto mix = simulateLine(in, mixed, every);
+        QVERIFY(plug.ok() && mix.ok());
+        const auto balance = [&](const std::vector<double>& y, const std::vector<double>& yMix) {
+            double held = 0;
+            for (std::size_t i = 1; i < y.size(); ++i) { // trapezoids over the 1 s steps
+                const double dt = in.timeS[i] - in.timeS[i - 1];
+                held += 0.5 * dt * ((y[i] - yMix[i]) + (y[i - 1] - yMix[i - 1]));
+            }
+            return std::pair{held, 15 * (yMix.back() - yMix.front())};
+        };
+        const auto [heldX, expectedX] = balance(plug->xOutDb, mix->xOutDb);
+        const auto [heldT, expectedT] = balance(plug->tOutK, mix->tOutK);
+        qInfo("stirred outlet: held X %.3e vs %.3e kg/kg s, held T %.3f vs %.3f K s", heldX, expectedX, heldT,
+              expectedT);
+        // Within 2 % of what the volume can hold at most: tau times the channel's range.
+        const auto range = [](const std::vector<double>& v) {
+            const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+            return *hi - *lo;
+        };
+        QVERIFY2(std::abs(heldX - expectedX) < 0.02 * 15 * range(plug->xOutDb),
+                 qPrintable(QString::number(heldX - expectedX)));
+        QVERIFY2(std::abs(heldT - expectedT) < 0.02 * 15 * range(plug->tOutK),
+                 qPrintable(QString::number(heldT - expectedT)));
+        // It acts on both outlet channels, and on nothing upstream of them.
+        QVERIFY(maxAbsDiff(plug->xOutDb, mix->xOutDb) > 1e-4);
+        QVERIFY(maxAbsDiff(plug->tOutK, mix->tOutK) > 0.05);
+        QCOMPARE(maxAbsDiff(plug->xHdtDb, mix->xHdtDb), 0.0);
+        QCOMPARE(maxAbsDiff(plug->tHdtK, mix->tHdtK), 0.0);
+        // A steady line is not changed by mixing (the first row is the steady state).
+        QVERIFY(std::abs(plug->xOutDb.front() - mix->xOutDb.front()) < 1e-12);
+        // The meter's lag acts on top of the mixing, on X_out only.
+        ParameterSet both = mixed;
+        both[Param::tau_meter] = 20;
+        auto lagged = simulateLine(in, both, every);
+        QVERIFY(lagged.ok());
+        QCOMPARE(maxAbsDiff(lagged->tOutK, mix->tOutK), 0.0);
+        QVERIFY(maxAbsDiff(lagged->xOutDb, mix->xOutDb) > 1e-4);
+    }
+
     void meterLagOnAGridMatchesEveryRow() {
         // Measured-like inputs: sample-to-sample noise on the inlet moisture and the hot air as in
         // the virtual plant's files (0.018 % wb, 0.1 K per sample), which the model passes to X_out
