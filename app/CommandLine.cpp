@@ -134,7 +134,8 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     addData(calibrate);
     calibrate->add_option("--model", o.modelPath, "start from this model file");
     calibrate->add_option("--out", o.outPath, "model file to write")->required();
-    calibrate->add_option("--free", o.freeParameters, "parameters to fit (default h_HDT k_HDT)");
+    calibrate->add_option("--free", o.freeParameters,
+                          "parameters to fit (default h_HDT k_HDT phi_X_in_scatter)");
     calibrate
         ->add_option("--subset", o.subset,
                      "calibration rows STRIDE:COUNT, every STRIDE-th kept row, the first COUNT "

@@ -196,6 +196,18 @@ void printTraining(const workflow::TrainResult& t) {
                     c.spectralRadiusAfter, c.alpha, c.certificateMaxEig,
                     c.certified ? "certified" : "NOT certified");
     }
+    for (const auto* m : {t.pgrlCc.get(), t.extInput.get()}) {
+        if (!m->options().nestReferences || m->correctionWeightHorizons().empty()) {
+            continue;
+        }
+        // The velocity form: the reference blend s_H and the learnt correction's weight κ_H.
+        std::printf("%-20s forecast = e_k - s_H (PBM change) + k_H (learnt); one-step s %.2f; X_out s_H/k_H:",
+                    m == t.pgrlCc.get() ? "pgrl_cc" : "ext_input_residual", m->referenceChangeWeight());
+        for (int h : m->correctionWeightHorizons()) {
+            std::printf(" %d: %.2f/%.2f", h, m->referenceChangeAt(h)(0), m->correctionWeight(h)(0));
+        }
+        std::printf("\n");
+    }
     std::printf("%-20s trained in %.1f s, final training loss %.4g (standardised)\n", "lstm",
                 t.lstm->trainingSeconds(),
                 t.lstm->lossHistory().empty() ? std::nan("") : t.lstm->lossHistory().back());

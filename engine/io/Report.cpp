@@ -1,4 +1,5 @@
 #include "io/Report.h"
+#include "properties/Parameters.h"
 
 #include "common/AtomicFile.h"
 
@@ -185,7 +186,15 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
         const auto& c = (*calibrated)["calibration"];
         r += "| parameter | estimate | 95 % interval | unit | at bound |\n| --- | --- | --- | --- | --- |\n";
         for (const auto& [name, e] : c["estimates"].items()) {
-            const std::string unit = (*calibrated)["parameters"][name].value("unit", "");
+            // Mechanism and sensor parameters (phi_X_in_scatter, freed by default) are kept under
+            // "mechanisms", not "parameters": their unit comes from the parameter table.
+            const auto& listed = (*calibrated)["parameters"];
+            std::string unit;
+            if (listed.is_object() && listed.contains(name) && listed[name].is_object()) {
+                unit = listed[name].value("unit", "");
+            } else if (const auto p = properties::paramBySymbol(name)) {
+                unit = std::string(properties::info(*p).unit);
+            }
             r += "| " + name + " | " + num(e["value"], "%.5g") + " | [" + num(e["ci95"][0], "%.5g") + ", " +
                  num(e["ci95"][1], "%.5g") + "] | " + unit + " | " +
                  (e.value("at_bound", false) ? "yes" : "no") + " |\n";

@@ -93,6 +93,9 @@ Status ResidualOptions::validate() const {
     if (!(alphaMax > 0 && alphaMax < 1 && radiusMax > 0 && radiusMax < alphaMax)) {
         return Error{ErrorKind::BadInput, "alphaMax", "need 0 < radiusMax < alphaMax < 1"};
     }
+    if (!(shrinkValidationFraction >= 0 && shrinkValidationFraction < 0.6)) {
+        return Error{ErrorKind::BadInput, "shrinkValidationFraction", "must lie in [0, 0.6)"};
+    }
     return {};
 }
 
@@ -112,8 +115,7 @@ bool observedResidual(const data::SiBatch& b, const physics::SimulationResult& p
     return std::isfinite(ex) && std::isfinite(et);
 }
 
-bool ResidualModel::features(const BatchView& v, std::size_t k, Eigen::VectorXd& zLin, double& u,
-                             Eigen::VectorXd& d) const {
+Eigen::VectorXd ResidualModel::inputsAt(const BatchView& v, std::size_t k) const {
     const auto& b = *v.batch;
     const auto& p = *v.pbm;
     std::vector<double> z;
@@ -125,7 +127,25 @@ bool ResidualModel::features(const BatchView& v, std::size_t k, Eigen::VectorXd&
     for (double x : {b.feedKgPerS[k], b.xInDb[k], b.tInK[k], b.tAmbK[k], b.rhAmb[k]}) {
         z.push_back(x);
     }
-    zLin = Eigen::Map<const Eigen::VectorXd>(z.data(), static_cast<Eigen::Index>(z.size()));
+    return Eigen::Map<const Eigen::VectorXd>(z.data(), static_cast<Eigen::Index>(z.size()));
+}
+
+Eigen::Vector2d ResidualModel::basePartOf(const Eigen::VectorXd& z) const {
+    Eigen::Vector2d out = Eigen::Vector2d::Zero();
+    if (m_residualProjection.size() == 0) {
+        return out;
+    }
+    const Eigen::VectorXd psi = m_dict.lift(z);
+    for (std::size_t b = 0; b < m_baseIdx.size(); ++b) {
+        out += psi(m_baseIdx[b]) * m_residualProjection.row(static_cast<Eigen::Index>(b)).transpose();
+    }
+    return out;
+}
+
+bool ResidualModel::features(const BatchView& v, std::size_t k, Eigen::VectorXd& zLin, double& u,
+                             Eigen::VectorXd& d) const {
+    const auto& p = *v.pbm;
+    zLin = inputsAt(v, k);
     const Eigen::VectorXd s = (zLin - m_dict.mean()).cwiseQuotient(m_dict.scale());
     const Eigen::Index uIdx = m_options.useProxies ? 6 : 0;
     u = s(uIdx);
@@ -175,6 +195,23 @@ Eigen::VectorXd ResidualModel::liftedResidualFeatures(const Eigen::VectorXd& z) 
 
 void ResidualModel::residualsOf(const BatchView& v, std::size_t from, std::size_t to, std::vector<double>& ex,
                                 std::vector<double>& et) const {
+    if (velocity()) {
+        // v_k = Δe_k + s Δŷ_mech,k: what the reference missed from k−1 to k.
+        const auto& pbm = *v.pbm;
+        for (std::size_t k = from; k < to; ++k) {
+            double ex0 = kNaN, et0 = kNaN, ex1 = kNaN, et1 = kNaN;
+            if (k == 0 || !observedResidual(*v.batch, pbm, k, ex1, et1) ||
+                !observedResidual(*v.batch, pbm, k - 1, ex0, et0)) {
+                ex[k] = et[k] = kNaN;
+                continue;
+            }
+            ex[k] = ex1 - ex0 +
+                    m_referenceChange *
+                        (units::dryToWetPct(pbm.xOutDb[k]) - units::dryToWetPct(pbm.xOutDb[k - 1]));
+            et[k] = et1 - et0 + m_referenceChange * (pbm.tOutK[k] - pbm.tOutK[k - 1]);
+        }
+        return;
+    }
     for (std::size_t k = from; k < to; ++k) {
         observedResidual(*v.batch, *v.pbm, k, ex[k], et[k]);
         if (!eq27() || m_residualProjection.size() == 0) {
@@ -199,17 +236,26 @@ Eigen::Vector2d ResidualModel::restoredBasePart(const BatchView& v, std::size_t 
     if (!eq27() || !m_options.restoreBasePart || m_residualProjection.size() == 0) {
         return Eigen::Vector2d::Zero();
     }
-    Eigen::VectorXd z, d;
-    double u = 0;
-    if (!features(v, k, z, u, d)) {
+    const Eigen::VectorXd z = inputsAt(v, k);
+    if (!z.allFinite()) {
         return Eigen::Vector2d::Constant(kNaN);
     }
-    const Eigen::VectorXd psi = m_dict.lift(z);
-    Eigen::Vector2d out = Eigen::Vector2d::Zero();
-    for (std::size_t b = 0; b < m_baseIdx.size(); ++b) {
-        out += psi(m_baseIdx[b]) * m_residualProjection.row(static_cast<Eigen::Index>(b)).transpose();
+    return basePartOf(z);
+}
+
+Eigen::Vector2d ResidualModel::levelOf(const BatchView& v, std::size_t origin, std::size_t target) const {
+    if (!velocity()) {
+        return restoredBasePart(v, target);
     }
-    return out;
+    Eigen::Vector2d e;
+    if (!observedResidual(*v.batch, *v.pbm, origin, e(0), e(1))) {
+        return Eigen::Vector2d::Constant(kNaN);
+    }
+    const auto& pbm = *v.pbm;
+    const Eigen::Vector2d sH = referenceChangeAt(static_cast<int>(target - origin));
+    e(0) -= sH(0) * (units::dryToWetPct(pbm.xOutDb[target]) - units::dryToWetPct(pbm.xOutDb[origin]));
+    e(1) -= sH(1) * (pbm.tOutK[target] - pbm.tOutK[origin]);
+    return e;
 }
 
 bool ResidualModel::stateAt(const BatchView& v, std::size_t k, const std::vector<double>& ex,
@@ -236,8 +282,147 @@ bool ResidualModel::stateFrom(const Eigen::VectorXd& z, std::size_t k, const std
     return true;
 }
 
+namespace {
+/// A per-horizon pair interpolated linearly in the horizon, its ends held beyond the grid.
+Eigen::Vector2d onGrid(const std::vector<int>& grid, const std::vector<Eigen::Vector2d>& values, int h) {
+    if (h <= grid.front()) {
+        return values.front();
+    }
+    for (std::size_t i = 1; i < grid.size(); ++i) {
+        if (h <= grid[i]) {
+            const double t = double(h - grid[i - 1]) / double(grid[i] - grid[i - 1]);
+            return (1 - t) * values[i - 1] + t * values[i];
+        }
+    }
+    return values.back();
+}
+} // namespace
+
+Eigen::Vector2d ResidualModel::correctionWeight(int h) const {
+    return m_shrinkHorizons.empty() ? Eigen::Vector2d::Ones() : onGrid(m_shrinkHorizons, m_shrink, h);
+}
+
+Eigen::Vector2d ResidualModel::referenceChangeAt(int h) const {
+    return m_shrinkHorizons.empty() || m_referenceByHorizon.empty()
+               ? Eigen::Vector2d::Constant(m_referenceChange)
+               : onGrid(m_shrinkHorizons, m_referenceByHorizon, h);
+}
+
+namespace {
+/// The horizons at which κ_H is fitted: those of the evaluation's curve.
+const std::vector<int> kShrinkGrid{1, 2, 5, 10, 20, 30, 45, 60, 90, 120, 150, 180};
+} // namespace
+
 Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& training,
-                                             const ResidualOptions& o) {
+                                             const ResidualOptions& options) {
+    if (!options.nestReferences || options.shrinkValidationFraction <= 0) {
+        return trainOnce(training, options);
+    }
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    // 1. Fit on the first part of each batch's rows, 2. κ_H on the rest, 3. refit on all.
+    std::vector<BatchView> fit, validation;
+    for (const auto& v : training) {
+        const auto cut =
+            v.rows.begin + static_cast<std::size_t>(
+                               std::round((1.0 - options.shrinkValidationFraction) * double(v.rows.size())));
+        if (cut > v.rows.begin) {
+            fit.push_back({v.batch, v.pbm, {v.rows.begin, cut}});
+        }
+        if (cut < v.rows.end) {
+            validation.push_back({v.batch, v.pbm, {cut, v.rows.end}});
+        }
+    }
+    auto first = trainOnce(fit, options);
+    if (!first) {
+        return first.error();
+    }
+    // Per horizon and output, the normal equations of t = s a + κ b: t = e_{k+H} − e_k,
+    // a = −(ŷ_mech,k+H − ŷ_mech,k), b = the summed v̂ (the first fit's forecast minus its reference).
+    struct Normal {
+        double aa = 0, ab = 0, bb = 0, at = 0, bt = 0;
+    };
+    std::vector<std::array<Normal, kOutputs>> normal(kShrinkGrid.size());
+    for (const auto& v : validation) {
+        const auto predicted = first->predictHorizons(v, kShrinkGrid);
+        for (std::size_t g = 0; g < kShrinkGrid.size(); ++g) {
+            const auto h = static_cast<std::size_t>(kShrinkGrid[g]);
+            for (std::size_t i = 0; i < v.rows.size(); ++i) {
+                const std::size_t target = v.rows.begin + i;
+                Eigen::Vector2d truth, atOrigin;
+                if (target < h || !v.batch->keep[target] ||
+                    !observedResidual(*v.batch, *v.pbm, target, truth(0), truth(1)) ||
+                    !observedResidual(*v.batch, *v.pbm, target - h, atOrigin(0), atOrigin(1))) {
+                    continue;
+                }
+                const Eigen::Vector2d reference = first->levelOf(v, target - h, target);
+                const Eigen::Vector2d model(predicted[g].residualXPct[i], predicted[g].residualTC[i]);
+                const Eigen::Vector2d pbmChange(units::dryToWetPct(v.pbm->xOutDb[target]) -
+                                                    units::dryToWetPct(v.pbm->xOutDb[target - h]),
+                                                v.pbm->tOutK[target] - v.pbm->tOutK[target - h]);
+                if (!reference.allFinite() || !model.allFinite() || !pbmChange.allFinite()) {
+                    continue;
+                }
+                for (int j = 0; j < kOutputs; ++j) {
+                    const double a = -pbmChange(j), b = model(j) - reference(j), t = truth(j) - atOrigin(j);
+                    auto& q = normal[g][static_cast<std::size_t>(j)];
+                    q.aa += a * a;
+                    q.ab += a * b;
+                    q.bb += b * b;
+                    q.at += a * t;
+                    q.bt += b * t;
+                }
+            }
+        }
+    }
+    // The least-squares (s, κ) in [0, 1]²: the interior solution if it lies inside, else the best
+    // on the edges (each edge a one-variable fit, clamped).
+    const auto solve = [](const Normal& q) -> Eigen::Vector2d {
+        const auto sse = [&](double sv, double kv) {
+            return -2 * sv * q.at - 2 * kv * q.bt + sv * sv * q.aa + 2 * sv * kv * q.ab + kv * kv * q.bb;
+        };
+        std::vector<Eigen::Vector2d> tries;
+        const double det = q.aa * q.bb - q.ab * q.ab;
+        if (det > 1e-12 * (q.aa * q.bb + 1e-300)) {
+            tries.emplace_back((q.at * q.bb - q.bt * q.ab) / det, (q.bt * q.aa - q.at * q.ab) / det);
+        }
+        for (double edge : {0.0, 1.0}) {
+            tries.emplace_back(edge, q.bb > 0 ? (q.bt - edge * q.ab) / q.bb : 0.0); // s fixed
+            tries.emplace_back(q.aa > 0 ? (q.at - edge * q.ab) / q.aa : 0.0, edge); // κ fixed
+        }
+        Eigen::Vector2d best(0, 0);
+        double bestSse = sse(0, 0);
+        for (Eigen::Vector2d c : tries) {
+            c = c.cwiseMax(0.0).cwiseMin(1.0);
+            if (c.allFinite() && sse(c(0), c(1)) < bestSse) {
+                bestSse = sse(c(0), c(1));
+                best = c;
+            }
+        }
+        return best;
+    };
+    auto m = trainOnce(training, options);
+    if (!m) {
+        return m.error();
+    }
+    m->m_shrinkHorizons = kShrinkGrid;
+    m->m_shrink.assign(kShrinkGrid.size(), Eigen::Vector2d::Ones());
+    m->m_referenceByHorizon.assign(kShrinkGrid.size(), Eigen::Vector2d::Constant(m->m_referenceChange));
+    for (std::size_t g = 0; g < kShrinkGrid.size(); ++g) {
+        for (int j = 0; j < kOutputs; ++j) {
+            const Eigen::Vector2d sk = solve(normal[g][static_cast<std::size_t>(j)]);
+            m->m_referenceByHorizon[g](j) = sk(0);
+            m->m_shrink[g](j) = sk(1);
+        }
+    }
+    m->m_trainSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return m;
+}
+
+Expected<ResidualModel> ResidualModel::trainOnce(const std::vector<BatchView>& training,
+                                                 const ResidualOptions& o) {
     const auto t0 = std::chrono::steady_clock::now();
     if (auto st = o.validate(); !st) {
         return st.error();
@@ -266,6 +451,47 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
         for (std::size_t k = 0; k < n; ++k) {
             observedResidual(*v.batch, *v.pbm, k, ex[vi][k], et[vi][k]);
         }
+    }
+    if (o.nestReferences) {
+        // s of the reference: the share of the PBM's one-step change that the next error gives
+        // back, by least squares over the training rows, each output in units of its own
+        // one-step change (s = 1: persistence, 0: the PBM's last error held).
+        std::array<double, kOutputs> cross{}, pbmEnergy{}, errorEnergy{};
+        for (std::size_t vi = 0; vi < training.size(); ++vi) {
+            const auto& v = training[vi];
+            for (std::size_t k = v.rows.begin + 1; k < v.rows.end; ++k) {
+                const double de[kOutputs] = {ex[vi][k] - ex[vi][k - 1], et[vi][k] - et[vi][k - 1]};
+                const double dy[kOutputs] = {units::dryToWetPct(v.pbm->xOutDb[k]) -
+                                                 units::dryToWetPct(v.pbm->xOutDb[k - 1]),
+                                             v.pbm->tOutK[k] - v.pbm->tOutK[k - 1]};
+                if (!v.batch->keep[k] || !v.batch->keep[k - 1] || !std::isfinite(de[0]) ||
+                    !std::isfinite(de[1]) || !std::isfinite(dy[0]) || !std::isfinite(dy[1])) {
+                    continue;
+                }
+                for (int j = 0; j < kOutputs; ++j) {
+                    cross[j] += de[j] * dy[j];
+                    pbmEnergy[j] += dy[j] * dy[j];
+                    errorEnergy[j] += de[j] * de[j];
+                }
+            }
+        }
+        double num = 0, den = 0;
+        for (int j = 0; j < kOutputs; ++j) {
+            if (errorEnergy[j] > 0) {
+                num -= cross[j] / errorEnergy[j];
+                den += pbmEnergy[j] / errorEnergy[j];
+            }
+        }
+        m.m_referenceChange = den > 0 ? std::clamp(num / den, 0.0, 1.0) : 0.0;
+        for (std::size_t vi = 0; vi < training.size(); ++vi) {
+            std::vector<double> vx(ex[vi].size(), kNaN), vt = vx;
+            m.residualsOf(training[vi], 0, ex[vi].size(), vx, vt);
+            ex[vi] = std::move(vx);
+            et[vi] = std::move(vt);
+        }
+    }
+    for (std::size_t vi = 0; vi < training.size(); ++vi) {
+        const auto& v = training[vi];
         for (std::size_t k = v.rows.begin + static_cast<std::size_t>(lags - 1); k + 1 < v.rows.end; ++k) {
             // Both rows kept, and measured residuals at k+1 and at every lag k … k−L+1.
             bool ok = v.batch->keep[k] && v.batch->keep[k + 1];
@@ -439,6 +665,7 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
         normal.targetEnergy = (xp.array().square().colwise() * w.array()).sum();
         normal.stateSize = nx;
     }
+
     const Eigen::LDLT<Eigen::MatrixXd> gramLdlt(normal.gram);
     const Eigen::MatrixXd thetaFree = gramLdlt.solve(normal.cross.transpose()).transpose();
     // B, E that minimise the loss for a given A (the A block of Θ held fixed).
@@ -545,11 +772,17 @@ HybridPrediction ResidualModel::predictAhead(const BatchView& v, int horizon) co
         if (!stateAt(v, origin, ex, et, x, u, d)) {
             continue;
         }
+        Eigen::Vector2d sum = Eigen::Vector2d::Zero(); // velocity form: Σ of the predicted v
         for (std::size_t j = origin; j < target; ++j) {
             x = m_a * x + m_b * us[j] + m_e * ds[j];
+            if (velocity()) {
+                sum += m_c * x;
+            }
         }
-        const Eigen::Vector2d e = m_c * x;
-        const Eigen::Vector2d base = restoredBasePart(v, target);
+        const Eigen::Vector2d e =
+            velocity() ? Eigen::Vector2d(correctionWeight(static_cast<int>(h)).cwiseProduct(sum))
+                       : Eigen::Vector2d(m_c * x);
+        const Eigen::Vector2d base = levelOf(v, origin, target);
         out.residualXPct[i] = e(0) * m_eScale(0) + base(0);
         out.residualTC[i] = e(1) * m_eScale(1) + base(1);
         out.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[target]) + out.residualXPct[i]; // Eq. (21)
@@ -604,23 +837,40 @@ std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
     for (int m = 1; m <= hMax; ++m) {
         cPow[static_cast<std::size_t>(m)] = cPow[static_cast<std::size_t>(m) - 1] * m_a;
     }
+    // Velocity form: the forecast sums v over the horizon, Σ_{m=1..H} C x̂_{k+m}
+    // = (T_H − C) x_k + Σ_{m<H} T_m g_{k+H−1−m} with T_m = Σ_{p≤m} C A^p.
+    std::vector<Eigen::MatrixXd> cSum;
+    if (velocity()) {
+        cSum = cPow;
+        for (std::size_t m = 1; m < cSum.size(); ++m) {
+            cSum[m] += cSum[m - 1];
+        }
+    }
+    const auto& forcingGain = velocity() ? cSum : cPow;
+    std::vector<Eigen::MatrixXd> stateGain = cPow;
+    for (std::size_t h = 0; velocity() && h < stateGain.size(); ++h) {
+        stateGain[h] = cSum[h] - cPow[0];
+    }
     for (std::size_t i = 0; i < count; ++i) {
         const std::size_t target = v.rows.begin + i;
-        const Eigen::Vector2d base = restoredBasePart(v, target);
+        const Eigen::Vector2d targetBase = velocity() ? Eigen::Vector2d::Zero() : restoredBasePart(v, target);
         Eigen::Vector2d forced = Eigen::Vector2d::Zero();
         for (int m = 0; m < hMax; ++m) {
             const auto h = static_cast<std::size_t>(m) + 1; // horizon once row target−1−m is added
             if (target < h || target - h < first) {
                 break;
             }
-            forced += cPow[static_cast<std::size_t>(m)] *
+            forced += forcingGain[static_cast<std::size_t>(m)] *
                       forcing.col(static_cast<Eigen::Index>(target - h - first));
             const std::size_t origin = target - h;
             if (slotsOf[h].empty() || !stateOk[origin - first]) {
                 continue;
             }
-            const Eigen::Vector2d e =
-                cPow[h] * states.col(static_cast<Eigen::Index>(origin - first)) + forced;
+            Eigen::Vector2d e = stateGain[h] * states.col(static_cast<Eigen::Index>(origin - first)) + forced;
+            if (velocity()) {
+                e = e.cwiseProduct(correctionWeight(static_cast<int>(h)));
+            }
+            const Eigen::Vector2d base = velocity() ? levelOf(v, origin, target) : targetBase;
             for (std::size_t slot : slotsOf[h]) {
                 auto& p = out[slot];
                 p.residualXPct[i] = e(0) * m_eScale(0) + base(0);
@@ -667,6 +917,7 @@ std::vector<HybridPrediction> ResidualModel::forecastFrom(const std::vector<Batc
         forcing.col(c) = m_b.col(0) * u + m_e * d;
     }
     Eigen::VectorXd next(m_a.rows());
+    Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(kOutputs, nv); // velocity form: Σ of the predicted v
     for (std::size_t i = 0; i < steps; ++i) {
         const std::size_t target = origin + 1 + i;
         // One matrix-vector product per candidate: a GEMM would repack A at every step for just
@@ -675,11 +926,15 @@ std::vector<HybridPrediction> ResidualModel::forecastFrom(const std::vector<Batc
             next.noalias() = m_a * x.col(c);
             x.col(c) = next + forcing.col(c);
         }
-        const Eigen::MatrixXd e = m_c * x;
+        Eigen::MatrixXd e = m_c * x;
+        if (velocity()) {
+            sum += e;
+            e = correctionWeight(static_cast<int>(i) + 1).asDiagonal() * sum;
+        }
         for (Eigen::Index c = 0; c < nv; ++c) {
             const BatchView& v = views[static_cast<std::size_t>(c)];
             auto& o = out[static_cast<std::size_t>(c)];
-            const Eigen::Vector2d base = restoredBasePart(v, target);
+            const Eigen::Vector2d base = levelOf(v, origin, target);
             o.residualXPct[i] = e(0, c) * m_eScale(0) + base(0);
             o.residualTC[i] = e(1, c) * m_eScale(1) + base(1);
             o.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[target]) + o.residualXPct[i]; // Eq. (21)
@@ -703,6 +958,8 @@ HybridPrediction ResidualModel::predictFreeRun(const BatchView& v) const {
     const Eigen::Index lagPart = kOutputs * m_options.residualLags;
     Eigen::VectorXd x;
     bool running = false;
+    std::size_t start = 0;
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero(); // velocity form: Σ of the predicted v since the start
     for (std::size_t k = 0; k < v.rows.end; ++k) {
         Eigen::VectorXd z, d;
         double u = 0;
@@ -713,9 +970,15 @@ HybridPrediction ResidualModel::predictFreeRun(const BatchView& v) const {
             x = Eigen::VectorXd::Zero(lagPart + phi.size());
             x.tail(phi.size()) = phi;
             running = true;
+            start = k;
+            sum.setZero();
         }
         if (running && k >= v.rows.begin) {
-            const Eigen::Vector2d e = m_c * x;
+            const Eigen::Vector2d e =
+                velocity() ? Eigen::Vector2d(correctionWeight(static_cast<int>(k - start)).cwiseProduct(sum))
+                           : Eigen::Vector2d(m_c * x);
+            // Velocity form: without any measured output the reference is the PBM itself (its
+            // error at the start unknown, taken as 0, and nothing measured to hold).
             const Eigen::Vector2d base = restoredBasePart(v, k);
             const std::size_t i = k - v.rows.begin;
             out.residualXPct[i] = e(0) * m_eScale(0) + base(0);
@@ -727,6 +990,9 @@ HybridPrediction ResidualModel::predictFreeRun(const BatchView& v) const {
             running = false; // a row without inputs: start again at the next complete one
         } else if (running) {
             x = m_a * x + m_b.col(0) * u + m_e * d;
+            if (velocity()) {
+                sum += m_c * x;
+            }
         }
     }
     return out;
@@ -751,6 +1017,8 @@ std::string ResidualModel::toJson() const {
                     {"orthogonal_projection", o.orthogonalProjection},
                     {"project_residual", o.projectResidual},
                     {"restore_base_part", o.restoreBasePart},
+                    {"nest_references", o.nestReferences},
+                    {"shrink_validation_fraction", o.shrinkValidationFraction},
                     {"control_consistent_weights", o.controlConsistentWeights},
                     {"stability_constraint", o.stabilityConstraint},
                     {"stability_method",
@@ -801,6 +1069,18 @@ std::string ResidualModel::toJson() const {
                                  {"radius_constrained", cmp.radiusConstrained},
                                  {"admm_iterations", cmp.admmIterations},
                                  {"outer_iterations", cmp.outerIterations}};
+    j["reference_change_weight"] = m_referenceChange;
+    j["correction_weight_horizons"] = m_shrinkHorizons;
+    nlohmann::json weights = nlohmann::json::array();
+    for (const auto& k : m_shrink) {
+        weights.push_back({k(0), k(1)});
+    }
+    j["correction_weights"] = weights;
+    nlohmann::json changes = nlohmann::json::array();
+    for (const auto& k : m_referenceByHorizon) {
+        changes.push_back({k(0), k(1)});
+    }
+    j["reference_change_by_horizon"] = changes;
     j["training_snapshots"] = m_snapshots;
     j["training_seconds"] = m_trainSeconds;
     return j.dump();
@@ -819,6 +1099,9 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
         // Files from before Eq. 27 was implemented as written projected the features only.
         o.projectResidual = jo.value("project_residual", false);
         o.restoreBasePart = jo.value("restore_base_part", true);
+        // Files from before issue #24 shrank towards zero.
+        o.nestReferences = jo.value("nest_references", false);
+        o.shrinkValidationFraction = jo.value("shrink_validation_fraction", 0.0);
         o.controlConsistentWeights = jo.at("control_consistent_weights");
         o.stabilityConstraint = jo.at("stability_constraint");
         // Files written before Eq. (30) was solved as stated used the eigenvalue pull.
@@ -880,6 +1163,23 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
             cmp.outerIterations = c.at("outer_iterations");
         }
         m.m_snapshots = j.value("training_snapshots", std::size_t(0));
+        m.m_referenceChange = j.value("reference_change_weight", 0.0);
+        if (j.contains("correction_weight_horizons")) {
+            m.m_shrinkHorizons = j.at("correction_weight_horizons").get<std::vector<int>>();
+            for (const auto& k : j.at("correction_weights")) {
+                m.m_shrink.emplace_back(k.at(0).get<double>(), k.at(1).get<double>());
+            }
+            for (const auto& k : j.value("reference_change_by_horizon", nlohmann::json::array())) {
+                m.m_referenceByHorizon.emplace_back(k.at(0).get<double>(), k.at(1).get<double>());
+            }
+            if (m.m_shrink.size() != m.m_shrinkHorizons.size() ||
+                (!m.m_referenceByHorizon.empty() &&
+                 m.m_referenceByHorizon.size() != m.m_shrinkHorizons.size()) ||
+                !std::is_sorted(m.m_shrinkHorizons.begin(), m.m_shrinkHorizons.end())) {
+                return Error{ErrorKind::BadInput, "residual model",
+                             "correction weights do not match their horizons"};
+            }
+        }
         m.m_trainSeconds = j.value("training_seconds", 0.0);
         const Eigen::Index nx = m.m_a.rows();
         const bool shapesOk =

@@ -49,6 +49,22 @@ struct ResidualOptions {
     /// false: the paper's literal reading, ŷ = ŷ_mech + ẽ̂, which on the demo discards most of the
     /// calibrated PBM's error and makes the hybrid barely better than the PBM (docs/pgrl-cc.md).
     bool restoreBasePart = true;
+    /// Nest the two trivial predictors (issue #24) by the velocity form: the lifted model learns
+    /// v_k = Δe_k + s Δŷ_mech,k, the one-step miss of the reference "the last error, minus s times
+    /// the PBM's own change since" (s = 1: holding the last measurement; s = 0: the PBM with its
+    /// last error held; s fitted on the training part), and the H-step forecast is that reference
+    /// plus the sum of the predicted v. A = B = E = 0 is then exactly the reference, the ridge of
+    /// Eq. 30 pulls towards it, and the stability constraint acts on v's dynamics, which are
+    /// stable, instead of forbidding the random walk that holding an error is. The residual's P⊥
+    /// (Eq. 27) is then on the features only. false: the paper's form, the lifted model of e.
+    bool nestReferences = true;
+    /// Velocity form: the share of each batch's training rows (its last part) on which, per
+    /// horizon H and output, the reference's s_H ∈ [0, 1] and the learnt correction's weight
+    /// κ_H ∈ [0, 1] are fitted by least squares after a fit on the rest (then the model is refitted
+    /// on every row). The forecast is e_k − s_H (ŷ_mech,k+H − ŷ_mech,k) + κ_H Σ v̂: the better blend
+    /// of the two references at each horizon, and a correction that does not predict on rows it
+    /// was not fitted on shrunk towards it. 0: s_H = s, κ_H = 1.
+    double shrinkValidationFraction = 0.2;
     bool controlConsistentWeights = true; ///< ω of Eq. 29 (else W = I)
     bool stabilityConstraint = true;      ///< A with a certificate (Eq. 30)
     StabilityMethod stabilityMethod = StabilityMethod::Constrained;
@@ -120,7 +136,7 @@ public:
     HybridPrediction predictFreeRun(const BatchView& view) const;
     /// @brief The residuals the model learns for rows [from, to) of a view, written into @p ex
     /// (% wb) and @p et (°C) sized to the batch: e of Eq. 20, or ẽ = P⊥e under Eq. 27 (NaN where
-    /// the base features cannot be formed).
+    /// the base features cannot be formed), or v = Δe + s Δŷ_mech in the velocity form.
     void residualsOf(const BatchView& v, std::size_t from, std::size_t to, std::vector<double>& ex,
                      std::vector<double>& et) const;
     /// @brief Free rollout of the lifted state from x0 under given inputs (for boundedness checks).
@@ -137,6 +153,15 @@ public:
     const ResidualOptions& options() const { return m_options; }
     int stateSize() const { return static_cast<int>(m_a.rows()); }
     std::size_t trainingSnapshots() const { return m_snapshots; }
+    /// s of the nested reference: 1 holds the last measurement, 0 the PBM's last error.
+    double referenceChangeWeight() const { return m_referenceChange; }
+    /// κ_H of the velocity form (X_out, T_out) at horizon @p h: interpolated in the fitted grid,
+    /// its ends held beyond it; 1 when none was fitted.
+    Eigen::Vector2d correctionWeight(int h) const;
+    /// s_H of the velocity form's reference at horizon @p h (X_out, T_out): how much of the PBM's
+    /// change over the horizon the forecast takes back; the one-step s where none was fitted.
+    Eigen::Vector2d referenceChangeAt(int h) const;
+    const std::vector<int>& correctionWeightHorizons() const { return m_shrinkHorizons; }
     double trainingSeconds() const { return m_trainSeconds; }
 
     /// @brief Everything needed to predict, as a JSON object (stored in the model file).
@@ -145,14 +170,28 @@ public:
 
 private:
     struct RowFeatures;
+    /// Algorithm 1 once on the given rows (train() adds the velocity form's κ_H around it).
+    static Expected<ResidualModel> trainOnce(const std::vector<BatchView>& training,
+                                             const ResidualOptions& options);
     bool features(const BatchView& v, std::size_t k, Eigen::VectorXd& zLin, double& u,
                   Eigen::VectorXd& d) const;
-    bool eq27() const { return m_options.orthogonalProjection && m_options.projectResidual; }
+    bool eq27() const {
+        return m_options.orthogonalProjection && m_options.projectResidual && !m_options.nestReferences;
+    }
     /// Φ_base(z_k) g of Eq. 27 in % wb and °C when it is restored to the prediction, else 0;
     /// NaN when the inputs of row k are missing.
     Eigen::Vector2d restoredBasePart(const BatchView& v, std::size_t k) const;
 
     Eigen::VectorXd liftedResidualFeatures(const Eigen::VectorXd& z) const;
+    /// The unscaled inputs z of row k (proxies when used, u, disturbances).
+    Eigen::VectorXd inputsAt(const BatchView& v, std::size_t k) const;
+    /// Φ_base(z) g of Eq. 27 for inputs z (zero before g is fitted).
+    Eigen::Vector2d basePartOf(const Eigen::VectorXd& z) const;
+    bool velocity() const { return m_options.nestReferences; }
+    /// What the forecast adds to the lifted model's output for row @p target from @p origin: the
+    /// reference's residual e_origin − s (ŷ_mech,target − ŷ_mech,origin) in the velocity form, the
+    /// restored base part of Eq. 27 otherwise (% wb, °C; NaN where it cannot be formed).
+    Eigen::Vector2d levelOf(const BatchView& v, std::size_t origin, std::size_t target) const;
     bool stateAt(const BatchView& v, std::size_t k, const std::vector<double>& ex,
                  const std::vector<double>& et, Eigen::VectorXd& x, double& u, Eigen::VectorXd& d) const;
     /// The lifted state at row k from its already formed inputs @p z; false when a lag is unmeasured.
@@ -173,6 +212,10 @@ private:
     StabilityComparison m_comparison;
     std::size_t m_snapshots = 0;
     double m_trainSeconds = 0;
+    double m_referenceChange = 0;
+    std::vector<int> m_shrinkHorizons;                 ///< horizons of κ_H [steps]
+    std::vector<Eigen::Vector2d> m_shrink;             ///< κ_H for X_out and T_out
+    std::vector<Eigen::Vector2d> m_referenceByHorizon; ///< s_H for X_out and T_out
 };
 
 /// @brief Observed residual e = y_obs − ŷ_mech (Eq. 20) of a row: moisture in % wb, temperature in °C.

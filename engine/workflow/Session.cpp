@@ -49,6 +49,10 @@ Status GenerateOptions::validate() const {
     return {};
 }
 
+std::vector<properties::Param> defaultCalibrationParameters() {
+    return {properties::Param::h_HDT, properties::Param::k_HDT, properties::Param::phi_X_in_scatter};
+}
+
 Status CalibrateOptions::validate() const {
     if (subsetStride == 0) {
         return invalidOption("subset", "the stride must be at least 1");

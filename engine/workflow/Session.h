@@ -76,7 +76,14 @@ struct SimulateResult {
 };
 
 /// @brief Calibration of the session's physics model (paper §IV.B).
+/// @brief The parameters a calibration frees unless told otherwise: h_HDT and k_HDT (the paper's
+/// two) and the inlet gauge's scatter share phi_X_in_scatter. A measured X_in carries the gauge's
+/// scatter, which the PBM would otherwise pass to its outlet prediction and every residual learnt
+/// on it would inherit (issue #24, docs/pgrl-cc.md).
+std::vector<properties::Param> defaultCalibrationParameters();
+
 struct CalibrateOptions {
+    CalibrateOptions() { calibration.freeParameters = defaultCalibrationParameters(); }
     calibration::CalibrationOptions calibration; ///< rows and simulation options are set by the session
     std::size_t subsetStride = 10;               ///< every STRIDE-th kept row ...
     std::size_t subsetCount = 300;               ///< ... the first COUNT of them (0: all)

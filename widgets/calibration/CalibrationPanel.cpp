@@ -7,6 +7,7 @@
 #include "common/Workbench.h"
 
 #include <QHBoxLayout>
+
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
@@ -14,6 +15,7 @@
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <qwt_plot_curve.h>
 
 namespace drytwin::widgets {
@@ -26,14 +28,20 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
     m_free->setHorizontalHeaderLabels({tr("Free"), tr("Lower"), tr("Upper"), tr("Unit")});
     m_free->verticalHeader()->hide();
     int row = 0;
+    const auto defaults = workflow::defaultCalibrationParameters();
+    const auto isDefault = [&](properties::Param p) {
+        return std::find(defaults.begin(), defaults.end(), p) != defaults.end();
+    };
     for (const auto& info : properties::parameterTable()) {
-        if (info.fixed || info.duration) {
+        // Durations are offered where a calibration is expected to free them (the default set and
+        // the outlet's mixing); the other extensions are discovery's to name.
+        if (info.fixed || (info.duration && !isDefault(info.id) && info.id != properties::Param::tau_mix)) {
             continue;
         }
         m_free->insertRow(row);
         auto* name = new QTableWidgetItem(fromView(info.symbol));
         name->setFlags(Qt::ItemIsUserCheckable | Qt::ItemIsEnabled);
-        const bool byDefault = info.id == properties::Param::h_HDT || info.id == properties::Param::k_HDT;
+        const bool byDefault = isDefault(info.id);
         name->setCheckState(byDefault ? Qt::Checked : Qt::Unchecked);
         name->setData(Qt::UserRole, static_cast<int>(info.id));
         m_free->setItem(row, 0, name);

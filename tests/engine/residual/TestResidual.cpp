@@ -1,5 +1,6 @@
 #include "common/Units.h"
 #include "diagnostics/Stability.h"
+#include "hybrid/Evaluation.h"
 #include "hybrid/HybridTraining.h"
 #include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
@@ -115,6 +116,8 @@ private Q_SLOTS:
         const auto train = hybrid::splitViews(f.batches, f.pbm, false);
         ResidualOptions o;
         o.controlConsistentWeights = false;
+        o.nestReferences =
+            false; // Eq. 27's ẽ = P⊥e is the paper's form; the velocity form projects features only
         auto m = ResidualModel::train(train, o);
         QVERIFY(m.ok());
         std::vector<double> eTilde, eRaw;
@@ -315,6 +318,74 @@ private Q_SLOTS:
         QVERIFY(c.spectralRadiusBefore >= c.spectralRadiusAfter);
     }
 
+    void persistenceIsNestedWhereItIsTheBestPredictor() {
+        // Frozen inputs (with their sensors' white noise) and an outlet that wanders as a random
+        // walk the inputs do not explain: holding the last measurement is the best predictor
+        // there is. The hybrid nests it (velocity form), so on the held-out part it must not lose
+        // to it by more than 2 %.
+        std::mt19937 rng(2024);
+        std::normal_distribution<double> g(0, 1);
+        std::vector<data::SiBatch> batches(4);
+        for (auto& b : batches) {
+            const std::size_t n = 2500;
+            double walkX = 0, walkT = 0;
+            for (std::size_t k = 0; k < n; ++k) {
+                b.timeS.push_back(double(k));
+                b.tHotSpK.push_back(units::celsiusToKelvin(160));
+                b.tHotK.push_back(units::celsiusToKelvin(160 + 0.3 * g(rng)));
+                b.airSpeedMPerS.push_back(16 + 0.05 * g(rng));
+                b.feedKgPerS.push_back(5000.0 / 3600 * (1 + 0.005 * g(rng)));
+                b.xInDb.push_back(units::wetPctToDry(22 + 0.15 * g(rng)));
+                b.tInK.push_back(units::celsiusToKelvin(25 + 0.3 * g(rng)));
+                b.tAmbK.push_back(units::celsiusToKelvin(25 + 0.2 * g(rng)));
+                b.rhAmb.push_back(0.5 + 0.015 * g(rng));
+                b.xHdtDb.push_back(NAN);
+                b.tHdtK.push_back(NAN);
+                walkX += 0.01 * g(rng);    // % wb per second
+                walkT += 0.05 * g(rng);    // K per second
+                b.xOutDb.push_back(walkX); // offsets from the PBM, set below
+                b.tOutK.push_back(walkT);
+                b.keep.push_back(1);
+            }
+        }
+        auto sims = hybrid::simulatePbm(batches, hybrid::HybridModel{}, {});
+        QVERIFY(sims.ok());
+        for (std::size_t i = 0; i < batches.size(); ++i) {
+            auto& b = batches[i];
+            // The plant's outlet: the PBM's steady value plus the walk (the PBM's own input noise
+            // is not in it: the real line averages it away).
+            const double xSteady = units::dryToWetPct((*sims)[i].xOutDb.front());
+            const double tSteady = (*sims)[i].tOutK.front();
+            for (std::size_t k = 0; k < b.rows(); ++k) {
+                b.xOutDb[k] = units::wetPctToDry(xSteady + b.xOutDb[k]);
+                b.tOutK[k] = tSteady + b.tOutK[k];
+            }
+        }
+        const auto train = hybrid::splitViews(batches, *sims, false);
+        const auto test = hybrid::splitViews(batches, *sims, true);
+        auto m = ResidualModel::train(train, {});
+        QVERIFY2(m.ok(), m.ok() ? "" : m.error().message().c_str());
+        const auto score = [&](const evaluation::Predictor& p) {
+            return evaluation::scorePredictions(test, p, 1);
+        };
+        const auto hybridScore = score([&](const BatchView& v) { return m->predictOneStep(v); });
+        const auto persistence =
+            score([](const BatchView& v) { return evaluation::referencePrediction(v, 1, false); });
+        const auto held =
+            score([](const BatchView& v) { return evaluation::referencePrediction(v, 1, true); });
+        const double best = std::min(persistence.moisture.mae, held.moisture.mae);
+        const double skill = hybridScore.moisture.mae / best;
+        qInfo("random-walk outlet, held-out one-step MAE X_out: hybrid %.5f, persistence %.5f, PBM with its "
+              "error held %.5f %% wb; skill %.4f; s = %.2f",
+              hybridScore.moisture.mae, persistence.moisture.mae, held.moisture.mae, skill,
+              m->referenceChangeWeight());
+        QVERIFY2(skill <= 1.02, qPrintable(QString::number(skill)));
+        QVERIFY(hybridScore.temperature.mae <=
+                1.02 * std::min(persistence.temperature.mae, held.temperature.mae));
+        // Persistence is what it nests here (the PBM's input noise is not in the plant's outlet).
+        QVERIFY(m->referenceChangeWeight() > 0.8);
+    }
+
     void horizonCurveEqualsStepwisePrediction() {
         const auto& f = demoFixture();
         auto m = ResidualModel::train(hybrid::splitViews(f.batches, f.pbm, false), {});
@@ -342,7 +413,10 @@ private Q_SLOTS:
 
     void freeRunNeverSeesAMeasuredOutput() {
         const auto& f = demoFixture();
-        auto m = ResidualModel::train(hybrid::splitViews(f.batches, f.pbm, false), {});
+        // The paper's form learns e itself, so its free run (ê = CΨ(z)) carries what it learnt.
+        ResidualOptions paperForm;
+        paperForm.nestReferences = false;
+        auto m = ResidualModel::train(hybrid::splitViews(f.batches, f.pbm, false), paperForm);
         QVERIFY(m.ok());
         // Replace the measured outlet values with nonsense: the free run must not change, the
         // one-step prediction must.
@@ -387,6 +461,24 @@ private Q_SLOTS:
         }
         qInfo("held-out sum |error| X_out: PBM %.2f, PGRL-CC free run %.2f", pbmErr, freeErr);
         QVERIFY(freeErr < pbmErr);
+        // The velocity form learns what the last error misses over a horizon; without any
+        // measured output its correction is weighted by κ_H at ever longer horizons, so its free
+        // run stays at the PBM and does not drift away from it.
+        auto velocity = ResidualModel::train(hybrid::splitViews(f.batches, f.pbm, false), {});
+        QVERIFY(velocity.ok());
+        double velocityErr = 0;
+        for (const auto& v : test) {
+            const auto p = velocity->predictFreeRun(v);
+            for (std::size_t i = 0; i < v.rows.size(); ++i) {
+                const std::size_t k = v.rows.begin + i;
+                const double obs = units::dryToWetPct(v.batch->xOutDb[k]);
+                if (v.batch->keep[k] && std::isfinite(obs)) {
+                    velocityErr += std::abs(obs - p.xOutPct[i]);
+                }
+            }
+        }
+        qInfo("velocity form's free run: sum |error| X_out %.2f", velocityErr);
+        QVERIFY(velocityErr < 1.02 * pbmErr);
     }
 
     void rolloutStaysBounded() {
