@@ -146,7 +146,7 @@ plant::PlantDisturbances scenarioDisturbances(const Scenario& s, std::mt19937_64
 }
 
 std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybrid::HybridModel& m,
-                                                std::string& missing) {
+                                                std::string& missing, bool controlThroughPhysics) {
     switch (kind) {
     case ControllerKind::Pbm:
         return pbmForecaster(m.parameters, m.simulationOptions());
@@ -155,13 +155,13 @@ std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybri
             missing = "the model file holds no PGRL-CC residual model (run train)";
             return nullptr;
         }
-        return residualForecaster(m.parameters, m.simulationOptions(), m.pgrlCc);
+        return residualForecaster(m.parameters, m.simulationOptions(), m.pgrlCc, controlThroughPhysics);
     case ControllerKind::ExtInputResidual:
         if (!m.extInput) {
             missing = "the model file holds no external-input residual model (run train)";
             return nullptr;
         }
-        return residualForecaster(m.parameters, m.simulationOptions(), m.extInput);
+        return residualForecaster(m.parameters, m.simulationOptions(), m.extInput, controlThroughPhysics);
     case ControllerKind::Lstm:
         if (!m.lstm) {
             missing = "the model file holds no LSTM (run train; needs libtorch)";
@@ -366,7 +366,7 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         std::unique_ptr<MpcController> mpc;
         if (kind != ControllerKind::Pi) {
             std::string missing;
-            auto f = forecasterFor(kind, model, missing);
+            auto f = forecasterFor(kind, model, missing, options.mpc.controlThroughPhysics);
             if (!f) {
                 run.skippedReason = missing;
                 result.runs.push_back(std::move(run));
@@ -457,7 +457,7 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
             continue;
         }
         std::string missing;
-        if (auto f = forecasterFor(run.kind, model, missing)) {
+        if (auto f = forecasterFor(run.kind, model, missing, options.mpc.controlThroughPhysics)) {
             run.forecastCheck = checkForecasts(*f, *piRecord, warm, options.mpc.horizonS, 20);
         }
         if (reportProgress(progress, "mpc", 1.0, std::string("forecast check ") + controllerName(run.kind))) {

@@ -56,8 +56,8 @@ private:
 class ResidualForecaster : public OutletForecaster {
 public:
     ResidualForecaster(properties::ParameterSet p, physics::SimulationOptions o,
-                       std::shared_ptr<const residual::ResidualModel> m)
-        : m_p(std::move(p)), m_o(std::move(o)), m_model(std::move(m)) {}
+                       std::shared_ptr<const residual::ResidualModel> m, bool controlThroughPhysics)
+        : m_p(std::move(p)), m_o(std::move(o)), m_model(std::move(m)), m_controlThroughPhysics(controlThroughPhysics) {}
 
     std::size_t historyNeeded() const override { return pbmLead(m_p) + lags(); }
 
@@ -91,13 +91,30 @@ public:
             sims.push_back(std::move(*sim));
         }
         std::vector<residual::BatchView> views;
-        for (std::size_t c = 0; c < plans.size(); ++c) {
+        for (std::size_t c = 0; c < (m_controlThroughPhysics ? 1 : plans.size()); ++c) {
             views.push_back({&batches[c], &sims[c], {0, batches[c].rows()}});
         }
-        const auto p = m_model->forecastFrom(views, at.now - 1 - viewFrom, horizon + 1);
+        const std::size_t origin = at.now - 1 - viewFrom;
+        const auto p = m_model->forecastFrom(views, origin, horizon + 1);
         std::vector<std::vector<double>> out;
         for (const auto& one : p) {
             out.push_back(one.xOutPct);
+        }
+        if (m_controlThroughPhysics) {
+            // The residual along the first (base) plan, added to every plan's own PBM run: the
+            // plans differ by the physics' response only.
+            const auto& base = p.front();
+            out.clear();
+            for (std::size_t c = 0; c < plans.size(); ++c) {
+                std::vector<double> x(base.xOutPct.size(), kNaN);
+                for (std::size_t i = 0; i < x.size(); ++i) {
+                    const std::size_t row = origin + 1 + i;
+                    if (row < sims[c].xOutDb.size()) {
+                        x[i] = units::dryToWetPct(sims[c].xOutDb[row]) + base.residualXPct[i];
+                    }
+                }
+                out.push_back(std::move(x));
+            }
         }
         return out;
     }
@@ -107,6 +124,7 @@ private:
     properties::ParameterSet m_p;
     physics::SimulationOptions m_o;
     std::shared_ptr<const residual::ResidualModel> m_model;
+    bool m_controlThroughPhysics = true;
 };
 
 class LstmForecaster : public OutletForecaster {
@@ -197,8 +215,10 @@ std::unique_ptr<OutletForecaster> pbmForecaster(properties::ParameterSet params,
 
 std::unique_ptr<OutletForecaster> residualForecaster(properties::ParameterSet params,
                                                      physics::SimulationOptions options,
-                                                     std::shared_ptr<const residual::ResidualModel> model) {
-    return std::make_unique<ResidualForecaster>(std::move(params), std::move(options), std::move(model));
+                                                     std::shared_ptr<const residual::ResidualModel> model,
+                                                     bool controlThroughPhysics) {
+    return std::make_unique<ResidualForecaster>(std::move(params), std::move(options), std::move(model),
+                                                controlThroughPhysics);
 }
 
 std::unique_ptr<OutletForecaster> lstmForecaster(std::shared_ptr<const baselines::LstmBaseline> model) {

@@ -39,10 +39,13 @@ public:
 /// @brief The calibrated PBM alone (Eqs. 1–19).
 std::unique_ptr<OutletForecaster> pbmForecaster(properties::ParameterSet params,
                                                 physics::SimulationOptions options);
-/// @brief PBM + a residual model (PGRL-CC or the external-input baseline), Eq. 21.
+/// @brief PBM + a residual model (PGRL-CC or the external-input baseline), Eq. 21. With
+/// @p controlThroughPhysics the residual is forecast along the first plan only and every plan
+/// gets it added to its own PBM run (MpcSettings::controlThroughPhysics).
 std::unique_ptr<OutletForecaster> residualForecaster(properties::ParameterSet params,
                                                      physics::SimulationOptions options,
-                                                     std::shared_ptr<const residual::ResidualModel> model);
+                                                     std::shared_ptr<const residual::ResidualModel> model,
+                                                     bool controlThroughPhysics = true);
 /// @brief The black-box LSTM, carried along the record row by row.
 std::unique_ptr<OutletForecaster> lstmForecaster(std::shared_ptr<const baselines::LstmBaseline> model);
 

@@ -136,6 +136,14 @@ std::string mpcJson(const control::ClosedLoopResult& result) {
                   {"time", "s from the start of the scored part"}};
     j["termination"] = terminationName(result.ending.termination);
     j["plant_gain_pct_per_k"] = result.plantGainPctPerK;
+    // CONTRACT.md §3: the steady gain of X_out to T_hot [% wb per K], the plant's from its
+    // open-loop step test, each model's as its MPC saw it (the median over its decisions).
+    j["gains"] = {{"plant", result.plantGainPctPerK}};
+    for (const auto& r : result.runs) {
+        if (r.ran && r.kind != control::ControllerKind::Pi && r.metrics.decisions > 0) {
+            j["gains"][control::controllerName(r.kind)] = r.metrics.gainPctPerKMedian;
+        }
+    }
     j["controllers"] = json::object();
     for (const auto& r : result.runs) {
         const std::string name = control::controllerName(r.kind);

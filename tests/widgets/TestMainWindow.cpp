@@ -334,7 +334,7 @@ private Q_SLOTS:
         QTest::mouseClick(cal->stopButton(), Qt::LeftButton);
         QVERIFY(calibrated.count() > 0 || calibrated.wait(60000));
         QVERIFY(waitIdle(w));
-        QCOMPARE(cal->estimates()->rowCount(), 2); // h_HDT, k_HDT with intervals
+        QCOMPARE(cal->estimates()->rowCount(), 3); // h_HDT, k_HDT, phi_X_in_scatter with intervals
         QVERIFY(cal->estimates()->item(0, 2)->text().startsWith("["));
         QVERIFY(w.workbench().model().calibration.has_value());
         QVERIFY(curvesWithData(cal->lossPlot()->plot(0)) >= 1);
