@@ -57,7 +57,8 @@ class ResidualForecaster : public OutletForecaster {
 public:
     ResidualForecaster(properties::ParameterSet p, physics::SimulationOptions o,
                        std::shared_ptr<const residual::ResidualModel> m, bool controlThroughPhysics)
-        : m_p(std::move(p)), m_o(std::move(o)), m_model(std::move(m)), m_controlThroughPhysics(controlThroughPhysics) {}
+        : m_p(std::move(p)), m_o(std::move(o)), m_model(std::move(m)),
+          m_controlThroughPhysics(controlThroughPhysics) {}
 
     std::size_t historyNeeded() const override { return pbmLead(m_p) + lags(); }
 

@@ -260,6 +260,60 @@ private Q_SLOTS:
         QVERIFY(x[1].back() > x[0].back() + 0.05);
     }
 
+    void hybridGainIsThePlantsOnThreeSeeds() {
+        // Issue #24: trained on data under the plant's own PI loop, the hybrid must still answer
+        // the hot air like the plant: its steady gain within 15 % of the plant's open-loop step
+        // test, on three seeds of the distributed plant with realistic sensors.
+        for (const std::uint64_t seed : {31u, 32u, 33u}) {
+            QTemporaryDir dir;
+            workflow::GenerateOptions g;
+            g.plant = plant::PlantOptions::demo(seed, plant::PlantKind::Distributed);
+            g.plant.batches = 3;
+            g.plant.samples = 2000;
+            g.outFolder = dir.filePath("plant").toStdString();
+            QVERIFY(workflow::Session().generate(g).ok());
+            workflow::Session s;
+            workflow::OpenOptions oo;
+            oo.dataPath = g.outFolder;
+            QVERIFY(s.open(oo).ok());
+            workflow::CalibrateOptions c; // h_HDT, k_HDT and the inlet gauge's scatter share
+            c.calibration.maxEvaluations = 300;
+            const auto cal = s.calibrate(c);
+            QVERIFY2(cal.ok(), cal ? "" : cal.error().message().c_str());
+            workflow::TrainOptions t;
+            t.lstm.epochs = 1;
+            t.lstm.hidden = 4;
+            t.selection.enabled = false;
+            t.residual.residualLags = 16;
+            QVERIFY(s.train(t).ok());
+            const std::string path = dir.filePath("gain.json").toStdString();
+            std::ofstream(path) << scenarioText("");
+            workflow::MpcOptions mo;
+            mo.scenarioPath = path;
+            mo.closedLoop.controllers = {control::ControllerKind::Pbm, control::ControllerKind::PgrlCc};
+            const auto r = s.mpc(mo);
+            QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
+            const double plantGain = r->closedLoop.plantGainPctPerK;
+            double pgrlGain = 0, pbmGain = 0;
+            for (const auto& run : r->closedLoop.runs) {
+                (run.kind == control::ControllerKind::PgrlCc ? pgrlGain : pbmGain) =
+                    run.metrics.gainPctPerKMedian;
+            }
+            // The paper's use, for the record: the residual sees each plan.
+            mo.closedLoop.mpc.controlThroughPhysics = false;
+            mo.closedLoop.controllers = {control::ControllerKind::PgrlCc};
+            const auto paper = s.mpc(mo);
+            QVERIFY(paper.ok());
+            qInfo("seed %llu: gain [%% wb/K] plant %.4f, PBM %.4f, PGRL-CC %.4f (the residual seeing each "
+                  "plan: %.4f)",
+                  static_cast<unsigned long long>(seed), plantGain, pbmGain, pgrlGain,
+                  paper->closedLoop.runs.front().metrics.gainPctPerKMedian);
+            QVERIFY(plantGain < -0.02);
+            QVERIFY2(std::abs(pgrlGain / plantGain - 1) <= 0.15,
+                     qPrintable(QString("seed %1: %2 vs %3").arg(seed).arg(pgrlGain).arg(plantGain)));
+        }
+    }
+
     void everyControllerRunsAShortScenarioAndCancelKeepsWhatIsDone() {
         QTemporaryDir dir;
         workflow::GenerateOptions g;
