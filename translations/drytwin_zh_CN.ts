@@ -122,148 +122,148 @@
 <context>
     <name>drytwin::widgets::CalibrationPanel</name>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="28"/>
         <source>Free</source>
         <translation>自由</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="28"/>
         <source>Lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="28"/>
         <source>Upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="26"/>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="56"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="28"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="51"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="59"/>
         <source> evaluations</source>
         <translation> 次评估</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="52"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="60"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="53"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="61"/>
         <source>Stop, keep best</source>
         <translation>停止并保留最优</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="56"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="56"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
         <source>Estimate</source>
         <translation>估计值</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="56"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
         <source>95 % interval</source>
         <translation>95 % 区间</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="56"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
         <source>Fisher SE</source>
         <translation>Fisher 标准误</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="56"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
         <source>At bound</source>
         <translation>触及边界</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="58"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="66"/>
         <source>Fits the free parameters to the calibration rows (every 10th kept row, the first 300) with NLopt: a global search, then BOBYQA.</source>
         <translation>用 NLopt 将自由参数拟合到标定行（保留行中每隔 10 行取一行，取前 300 行）：先全局搜索，再用 BOBYQA。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="62"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="70"/>
         <source>best loss [-]</source>
         <translation>最优损失 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="63"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="71"/>
         <source>θ / θ final [-]</source>
         <translation>θ / θ 最终值 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="72"/>
         <source>share of the evaluation budget used [-]</source>
         <translation>已用评估预算比例 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="68"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="76"/>
         <source>Free parameters and their search bounds:</source>
         <translation>自由参数及其搜索范围：</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="78"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="86"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="98"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="106"/>
         <source>best loss so far</source>
         <translation>迄今最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="146"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="154"/>
         <source>Cannot calibrate: %1</source>
         <translation>无法标定：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="154"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="162"/>
         <source>Calibrating…</source>
         <translation>正在标定…</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="174"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="182"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="174"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="182"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="178"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="186"/>
         <source>%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. Intervals: %10.</source>
         <translation>%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口 MAE %6 → %7 % 湿基，%8 → %9 °C。区间：%10。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="203"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="211"/>
         <source>loss evaluations [-]</source>
         <translation>损失评估次数 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="204"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="212"/>
         <source>best loss</source>
         <translation>最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="236"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="244"/>
         <source>measured %1</source>
         <translation>实测 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="239"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="247"/>
         <source>before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="242"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="250"/>
         <source>after</source>
         <translation>之后</translation>
     </message>
@@ -1735,109 +1735,124 @@
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="44"/>
+        <source>Run a What-if MPC scenario to compare each model&apos;s steady gain of X_out to the hot air with the plant&apos;s.</source>
+        <translation>运行一次假设 MPC 情景，即可将各模型 X_out 对热风的稳态增益与装置的增益比较。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="44"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="56"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="59"/>
         <source>MAE X_out [% wb]</source>
         <translation>MAE X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="44"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="56"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="59"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="44"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="56"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="59"/>
         <source>MAE T_out [°C]</source>
         <translation>MAE T_out [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="48"/>
         <source>skill 1 step</source>
         <translation>1 步技能值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="48"/>
         <source>skill 30 steps</source>
         <translation>30 步技能值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
         <source>imaginary part</source>
         <translation>虚部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="48"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="51"/>
         <source>real part</source>
         <translation>实部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="53"/>
         <source>skill: MAE over the better reference [-]</source>
         <translation>技能值：MAE 与较优参考之比 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="51"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="54"/>
         <source>forecast horizon [steps of 1 s]</source>
         <translation>预测步长 [1 s 步]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="54"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="57"/>
         <source>Ablation (paper Table 3)</source>
         <translation>消融实验（论文表 3）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="55"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="58"/>
         <source>Train and evaluate every variant of Table 3 on this model (a few minutes)</source>
         <translation>在此模型上训练并评估表 3 的每个变体（需几分钟）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="56"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="59"/>
         <source>Variant</source>
         <translation>变体</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="57"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
         <source>MAE X_out, extrapolation</source>
         <translation>MAE X_out（外推）</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="99"/>
+        <source>%1 %2 (%3 %)</source>
+        <translation>%1 %2（%3 %）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="104"/>
+        <source>Steady gain of X_out to the hot-air setpoint [% wb per K] at the scenario&apos;s start: the plant (open-loop step test) %1; each model as its MPC saw it, and how far from the plant&apos;s: %2. A learnt residual&apos;s response to the setpoint plan comes from the physics model, since data under the plant&apos;s own loop cannot tell it from the disturbances the loop answered.</source>
+        <translation>情景起点处 X_out 对热风设定值的稳态增益 [% wb/K]：装置（开环阶跃试验）%1；各模型在其 MPC 中的增益及与装置的偏差：%2。学习得到的残差对设定值计划的响应取自物理模型，因为装置自身闭环下的数据无法将其与闭环所应对的扰动区分开。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="133"/>
         <source>Training…</source>
         <translation>正在训练…</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="135"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="169"/>
         <source>skill 1 (ties the better reference)</source>
         <translation>技能值 1（与较优参考持平）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="145"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="179"/>
         <source>unit circle</source>
         <translation>单位圆</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="159"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="193"/>
         <source>A unconstrained (ρ = %1)</source>
         <translation>无约束 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="165"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="199"/>
         <source>A with Eq. 30 (ρ = %1)</source>
         <translation>式 30 约束后的 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="192"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="226"/>
         <source> Slowest contraction of A: %1 per step (half-life %2 s).</source>
         <translation> A 的最慢收缩：每步 %1（半衰期 %2 s）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="196"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="230"/>
         <source>Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).</source>
         <translation>留出部分：%1 行。技能值低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
     </message>

@@ -460,6 +460,11 @@ ZH = {
     '<p>&nbsp;&nbsp;Not named: %1, because %2.</p>': '<p>&nbsp;&nbsp;未认定：%1，因为%2。</p>',
     "<p><b>Unexplained</b> (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line's dynamics differ from the model's.</p>": '<p><b>未解释</b>（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。</p>',
     '<p><b>The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.</b></p>': '<p><b>在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。</b></p>',
+    "Run a What-if MPC scenario to compare each model's steady gain of X_out to the hot air with the plant's.":
+        "运行一次假设 MPC 情景，即可将各模型 X_out 对热风的稳态增益与装置的增益比较。",
+    "%1 %2 (%3 %)": "%1 %2（%3 %）",
+    "Steady gain of X_out to the hot-air setpoint [% wb per K] at the scenario's start: the plant (open-loop step test) %1; each model as its MPC saw it, and how far from the plant's: %2. A learnt residual's response to the setpoint plan comes from the physics model, since data under the plant's own loop cannot tell it from the disturbances the loop answered.":
+        "情景起点处 X_out 对热风设定值的稳态增益 [% wb/K]：装置（开环阶跃试验）%1；各模型在其 MPC 中的增益及与装置的偏差：%2。学习得到的残差对设定值计划的响应取自物理模型，因为装置自身闭环下的数据无法将其与闭环所应对的扰动区分开。",
 }
 
 

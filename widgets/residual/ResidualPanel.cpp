@@ -41,6 +41,9 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
         tr("Trains on the chronological 70 % and evaluates on the rest; settings are chosen inside "
            "the training part."));
     m_note->setWordWrap(true);
+    m_gains = new QLabel(tr("Run a What-if MPC scenario to compare each model's steady gain of X_out to the "
+                            "hot air with the plant's."));
+    m_gains->setWordWrap(true);
     m_metrics = makeResultTable({tr("Model"), tr("MAE X_out [% wb]"), tr("R² X_out"), tr("MAE T_out [°C]"),
                                  tr("skill 1 step"), tr("skill 30 steps")});
     m_eigen = new PlotStack;
@@ -65,6 +68,7 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     ll->addLayout(form);
     ll->addWidget(m_note);
     ll->addWidget(m_metrics, 1);
+    ll->addWidget(m_gains);
     ll->addWidget(runAblation);
     ll->addWidget(m_ablation, 1);
     auto* right = new QSplitter(Qt::Vertical);
@@ -80,6 +84,37 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     connect(&m_workbench, &Workbench::evaluated, this, &ResidualPanel::showEvaluation);
     connect(runAblation, &QPushButton::clicked, &m_workbench, &Workbench::ablation);
     connect(&m_workbench, &Workbench::ablationFinished, this, &ResidualPanel::showAblation);
+    connect(&m_workbench, &Workbench::mpcFinished, this, &ResidualPanel::showGains);
+}
+
+QString ResidualPanel::gainsText(const control::ClosedLoopResult& result) {
+    const double plant = result.plantGainPctPerK;
+    QStringList parts;
+    for (const auto& run : result.runs) {
+        if (!run.ran || run.kind == control::ControllerKind::Pi || run.metrics.decisions == 0) {
+            continue;
+        }
+        const double g = run.metrics.gainPctPerKMedian;
+        const double off = plant != 0 ? 100.0 * (g / plant - 1.0) : 0.0;
+        parts << tr("%1 %2 (%3 %)")
+                     .arg(QString::fromLatin1(control::controllerName(run.kind)))
+                     .arg(g, 0, 'f', 4)
+                     .arg(off >= 0 ? QStringLiteral("+%1").arg(off, 0, 'f', 0)
+                                   : QString::number(off, 'f', 0));
+    }
+    return tr("Steady gain of X_out to the hot-air setpoint [% wb per K] at the scenario's start: the plant "
+              "(open-loop step test) %1; each model as its MPC saw it, and how far from the plant's: %2. A "
+              "learnt residual's response to the setpoint plan comes from the physics model, since data "
+              "under the plant's own loop cannot tell it from the disturbances the loop answered.")
+        .arg(plant, 0, 'f', 4)
+        .arg(parts.join(QStringLiteral("; ")));
+}
+
+void ResidualPanel::showGains() {
+    const auto& m = m_workbench.latest().mpc;
+    if (m) {
+        m_gains->setText(gainsText(m->closedLoop));
+    }
 }
 
 void ResidualPanel::train() {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "control/ClosedLoop.h"
+
 #include <QWidget>
 
 class QCheckBox;
@@ -30,6 +32,10 @@ public:
 private:
     void showEvaluation();
     void showAblation();
+    /// The steady gains of X_out to the hot air from the last What-if MPC run, the plant's beside them.
+    void showGains();
+    /// The sentence showGains() writes for a closed-loop result (static: tested in both languages).
+    static QString gainsText(const control::ClosedLoopResult& result);
 
     Workbench& m_workbench;
     QComboBox* m_lags = nullptr;
@@ -40,6 +46,7 @@ private:
     PlotStack* m_eigen = nullptr;
     PlotStack* m_skill = nullptr;
     QLabel* m_note = nullptr;
+    QLabel* m_gains = nullptr;
     bool m_quick = false;
 };
 
