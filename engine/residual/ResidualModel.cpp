@@ -974,8 +974,13 @@ HybridPrediction ResidualModel::predictFreeRun(const BatchView& v) const {
             sum.setZero();
         }
         if (running && k >= v.rows.begin) {
+            // Beyond the horizons κ_H was fitted at nothing says the summed correction still
+            // predicts: the free run falls back on the PBM there.
+            const int ahead = static_cast<int>(k - start);
+            const bool fitted = !m_shrinkHorizons.empty() && ahead <= m_shrinkHorizons.back();
             const Eigen::Vector2d e =
-                velocity() ? Eigen::Vector2d(correctionWeight(static_cast<int>(k - start)).cwiseProduct(sum))
+                velocity() ? (fitted ? Eigen::Vector2d(correctionWeight(ahead).cwiseProduct(sum))
+                                     : Eigen::Vector2d::Zero())
                            : Eigen::Vector2d(m_c * x);
             // Velocity form: without any measured output the reference is the PBM itself (its
             // error at the start unknown, taken as 0, and nothing measured to hold).
