@@ -153,6 +153,9 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
                 return cancelledError("train");
             }
             residual::ResidualOptions o = options;
+            // Candidates are compared with each other: s_H and κ_H from the tail of their fitting
+            // rows (one extra fit each) instead of blocked cross-validation (three).
+            o.correctionFolds = 0;
             o.residualLags = candidates[c].lags;
             o.lambdaA = o.lambdaB = o.lambdaE = candidates[c].ridge;
             o.orthogonalProjection = candidates[c].orthogonalProjection;
@@ -224,7 +227,15 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
                                      const Progress& progress) {
     const auto t0 = std::chrono::steady_clock::now();
     enum class Physics { None, NoClamp, NoLatentCorrection, NoCpMoisture, OtherEnergyBalance };
-    enum class Learning { None, NoProjection, LiteralEq27, NoWeights, NoConstraint, EigenvaluePull };
+    enum class Learning {
+        None,
+        NoProjection,
+        LiteralEq27,
+        NoWeights,
+        NoConstraint,
+        EigenvaluePull,
+        LevelForm
+    };
     struct Variant {
         const char* name;
         std::string description;
@@ -256,6 +267,8 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
          Learning::NoConstraint},
         {"eigenvalue_pull", "6b. eigenvalues pulled in after an unconstrained fit instead of Eq. 30",
          Physics::None, Learning::EigenvaluePull},
+        {"level_form", "7. the paper's lifted model of e itself (the trivial predictors not nested)",
+         Physics::None, Learning::LevelForm},
     };
     AblationResult result;
     std::vector<physics::SimulationResult> basePbm;
@@ -310,9 +323,17 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
             o.projectResidual = true;
         }
         if (v.learning == Learning::LiteralEq27) {
+            // Eq. 27's ẽ = P⊥e is a statement about the paper's lifted model of e.
             o.orthogonalProjection = o.projectResidual = true;
             o.restoreBasePart = false;
+            o.nestReferences = false;
         }
+        if (v.learning == Learning::LevelForm) {
+            o.nestReferences = false;
+        }
+        // The variants are compared with each other: s_H and κ_H from the last part of the
+        // training rows (one extra fit) instead of blocked cross-validation (three).
+        o.correctionFolds = 0;
         o.controlConsistentWeights = base.controlConsistentWeights && v.learning != Learning::NoWeights;
         o.stabilityConstraint = base.stabilityConstraint && v.learning != Learning::NoConstraint;
         if (v.learning == Learning::EigenvaluePull) {

@@ -93,6 +93,9 @@ Status ResidualOptions::validate() const {
     if (!(alphaMax > 0 && alphaMax < 1 && radiusMax > 0 && radiusMax < alphaMax)) {
         return Error{ErrorKind::BadInput, "alphaMax", "need 0 < radiusMax < alphaMax < 1"};
     }
+    if (correctionFolds < 0 || correctionFolds > 10) {
+        return Error{ErrorKind::BadInput, "correctionFolds", "must lie in [0, 10]"};
+    }
     if (!(shrinkValidationFraction >= 0 && shrinkValidationFraction < 0.6)) {
         return Error{ErrorKind::BadInput, "shrinkValidationFraction", "must lie in [0, 0.6)"};
     }
@@ -322,22 +325,44 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
         return st.error();
     }
     const auto t0 = std::chrono::steady_clock::now();
-    // 1. Fit on the first part of each batch's rows, 2. κ_H on the rest, 3. refit on all.
-    std::vector<BatchView> fit, validation;
-    for (const auto& v : training) {
-        const auto cut =
-            v.rows.begin + static_cast<std::size_t>(
-                               std::round((1.0 - options.shrinkValidationFraction) * double(v.rows.size())));
-        if (cut > v.rows.begin) {
-            fit.push_back({v.batch, v.pbm, {v.rows.begin, cut}});
+    // 1. Fit on part of each batch's rows, 2. s_H and κ_H on the rest, 3. refit on all. With
+    // correctionFolds ≥ 2 the parts are contiguous blocks, each held out once (blocked
+    // cross-validation: drift that changes within a batch is seen in every regime); else the
+    // last shrinkValidationFraction of each batch's rows.
+    std::vector<std::pair<std::vector<BatchView>, std::vector<BatchView>>> folds;
+    if (options.correctionFolds >= 2) {
+        const auto k = static_cast<std::size_t>(options.correctionFolds);
+        for (std::size_t f = 0; f < k; ++f) {
+            std::vector<BatchView> fit, validation;
+            for (const auto& v : training) {
+                const std::size_t n = v.rows.size();
+                const std::size_t lo = v.rows.begin + n * f / k, hi = v.rows.begin + n * (f + 1) / k;
+                if (lo > v.rows.begin) {
+                    fit.push_back({v.batch, v.pbm, {v.rows.begin, lo}});
+                }
+                if (hi < v.rows.end) {
+                    fit.push_back({v.batch, v.pbm, {hi, v.rows.end}});
+                }
+                if (hi > lo) {
+                    validation.push_back({v.batch, v.pbm, {lo, hi}});
+                }
+            }
+            folds.emplace_back(std::move(fit), std::move(validation));
         }
-        if (cut < v.rows.end) {
-            validation.push_back({v.batch, v.pbm, {cut, v.rows.end}});
+    } else {
+        std::vector<BatchView> fit, validation;
+        for (const auto& v : training) {
+            const auto cut =
+                v.rows.begin + static_cast<std::size_t>(std::round((1.0 - options.shrinkValidationFraction) *
+                                                                   double(v.rows.size())));
+            if (cut > v.rows.begin) {
+                fit.push_back({v.batch, v.pbm, {v.rows.begin, cut}});
+            }
+            if (cut < v.rows.end) {
+                validation.push_back({v.batch, v.pbm, {cut, v.rows.end}});
+            }
         }
-    }
-    auto first = trainOnce(fit, options);
-    if (!first) {
-        return first.error();
+        folds.emplace_back(std::move(fit), std::move(validation));
     }
     // Per horizon and output, the normal equations of t = s a + κ b: t = e_{k+H} − e_k,
     // a = −(ŷ_mech,k+H − ŷ_mech,k), b = the summed v̂ (the first fit's forecast minus its reference).
@@ -345,34 +370,41 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
         double aa = 0, ab = 0, bb = 0, at = 0, bt = 0;
     };
     std::vector<std::array<Normal, kOutputs>> normal(kShrinkGrid.size());
-    for (const auto& v : validation) {
-        const auto predicted = first->predictHorizons(v, kShrinkGrid);
-        for (std::size_t g = 0; g < kShrinkGrid.size(); ++g) {
-            const auto h = static_cast<std::size_t>(kShrinkGrid[g]);
-            for (std::size_t i = 0; i < v.rows.size(); ++i) {
-                const std::size_t target = v.rows.begin + i;
-                Eigen::Vector2d truth, atOrigin;
-                if (target < h || !v.batch->keep[target] ||
-                    !observedResidual(*v.batch, *v.pbm, target, truth(0), truth(1)) ||
-                    !observedResidual(*v.batch, *v.pbm, target - h, atOrigin(0), atOrigin(1))) {
-                    continue;
-                }
-                const Eigen::Vector2d reference = first->levelOf(v, target - h, target);
-                const Eigen::Vector2d model(predicted[g].residualXPct[i], predicted[g].residualTC[i]);
-                const Eigen::Vector2d pbmChange(units::dryToWetPct(v.pbm->xOutDb[target]) -
-                                                    units::dryToWetPct(v.pbm->xOutDb[target - h]),
-                                                v.pbm->tOutK[target] - v.pbm->tOutK[target - h]);
-                if (!reference.allFinite() || !model.allFinite() || !pbmChange.allFinite()) {
-                    continue;
-                }
-                for (int j = 0; j < kOutputs; ++j) {
-                    const double a = -pbmChange(j), b = model(j) - reference(j), t = truth(j) - atOrigin(j);
-                    auto& q = normal[g][static_cast<std::size_t>(j)];
-                    q.aa += a * a;
-                    q.ab += a * b;
-                    q.bb += b * b;
-                    q.at += a * t;
-                    q.bt += b * t;
+    for (const auto& [fit, validation] : folds) {
+        auto first = trainOnce(fit, options);
+        if (!first) {
+            return first.error();
+        }
+        for (const auto& v : validation) {
+            const auto predicted = first->predictHorizons(v, kShrinkGrid);
+            for (std::size_t g = 0; g < kShrinkGrid.size(); ++g) {
+                const auto h = static_cast<std::size_t>(kShrinkGrid[g]);
+                for (std::size_t i = 0; i < v.rows.size(); ++i) {
+                    const std::size_t target = v.rows.begin + i;
+                    Eigen::Vector2d truth, atOrigin;
+                    if (target < h || !v.batch->keep[target] ||
+                        !observedResidual(*v.batch, *v.pbm, target, truth(0), truth(1)) ||
+                        !observedResidual(*v.batch, *v.pbm, target - h, atOrigin(0), atOrigin(1))) {
+                        continue;
+                    }
+                    const Eigen::Vector2d reference = first->levelOf(v, target - h, target);
+                    const Eigen::Vector2d model(predicted[g].residualXPct[i], predicted[g].residualTC[i]);
+                    const Eigen::Vector2d pbmChange(units::dryToWetPct(v.pbm->xOutDb[target]) -
+                                                        units::dryToWetPct(v.pbm->xOutDb[target - h]),
+                                                    v.pbm->tOutK[target] - v.pbm->tOutK[target - h]);
+                    if (!reference.allFinite() || !model.allFinite() || !pbmChange.allFinite()) {
+                        continue;
+                    }
+                    for (int j = 0; j < kOutputs; ++j) {
+                        const double a = -pbmChange(j), b = model(j) - reference(j),
+                                     t = truth(j) - atOrigin(j);
+                        auto& q = normal[g][static_cast<std::size_t>(j)];
+                        q.aa += a * a;
+                        q.ab += a * b;
+                        q.bb += b * b;
+                        q.at += a * t;
+                        q.bt += b * t;
+                    }
                 }
             }
         }
@@ -1024,6 +1056,7 @@ std::string ResidualModel::toJson() const {
                     {"restore_base_part", o.restoreBasePart},
                     {"nest_references", o.nestReferences},
                     {"shrink_validation_fraction", o.shrinkValidationFraction},
+                    {"correction_folds", o.correctionFolds},
                     {"control_consistent_weights", o.controlConsistentWeights},
                     {"stability_constraint", o.stabilityConstraint},
                     {"stability_method",
@@ -1107,6 +1140,7 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
         // Files from before issue #24 shrank towards zero.
         o.nestReferences = jo.value("nest_references", false);
         o.shrinkValidationFraction = jo.value("shrink_validation_fraction", 0.0);
+        o.correctionFolds = jo.value("correction_folds", 0);
         o.controlConsistentWeights = jo.at("control_consistent_weights");
         o.stabilityConstraint = jo.at("stability_constraint");
         // Files written before Eq. (30) was solved as stated used the eigenvalue pull.

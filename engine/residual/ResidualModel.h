@@ -65,6 +65,9 @@ struct ResidualOptions {
     /// of the two references at each horizon, and a correction that does not predict on rows it
     /// was not fitted on shrunk towards it. 0: s_H = s, κ_H = 1.
     double shrinkValidationFraction = 0.2;
+    /// With 2 or more: s_H and κ_H from blocked cross-validation instead, each of this many
+    /// contiguous blocks of every batch's training rows held out once (the fit on the others).
+    int correctionFolds = 3;
     bool controlConsistentWeights = true; ///< ω of Eq. 29 (else W = I)
     bool stabilityConstraint = true;      ///< A with a certificate (Eq. 30)
     StabilityMethod stabilityMethod = StabilityMethod::Constrained;
