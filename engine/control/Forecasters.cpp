@@ -98,14 +98,14 @@ public:
         const std::size_t origin = at.now - 1 - viewFrom;
         const auto p = m_model->forecastFrom(views, origin, horizon + 1);
         std::vector<std::vector<double>> out;
-        for (const auto& one : p) {
-            out.push_back(one.xOutPct);
-        }
-        if (m_controlThroughPhysics) {
+        if (!m_controlThroughPhysics) {
+            for (const auto& one : p) {
+                out.push_back(one.xOutPct);
+            }
+        } else {
             // The residual along the first (base) plan, added to every plan's own PBM run: the
             // plans differ by the physics' response only.
             const auto& base = p.front();
-            out.clear();
             for (std::size_t c = 0; c < plans.size(); ++c) {
                 std::vector<double> x(base.xOutPct.size(), kNaN);
                 for (std::size_t i = 0; i < x.size(); ++i) {

@@ -226,12 +226,9 @@ void ResidualModel::residualsOf(const BatchView& v, std::size_t from, std::size_
             ex[k] = et[k] = kNaN;
             continue;
         }
-        const Eigen::VectorXd psi = m_dict.lift(z);
-        for (std::size_t b = 0; b < m_baseIdx.size(); ++b) {
-            const double f = psi(m_baseIdx[b]);
-            ex[k] -= f * m_residualProjection(static_cast<Eigen::Index>(b), 0);
-            et[k] -= f * m_residualProjection(static_cast<Eigen::Index>(b), 1);
-        }
+        const Eigen::Vector2d base = basePartOf(z);
+        ex[k] -= base(0);
+        et[k] -= base(1);
     }
 }
 
@@ -318,7 +315,7 @@ const std::vector<int> kShrinkGrid{1, 2, 5, 10, 20, 30, 45, 60, 90, 120, 150, 18
 
 Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& training,
                                              const ResidualOptions& options) {
-    if (!options.nestReferences || options.shrinkValidationFraction <= 0) {
+    if (!options.nestReferences || (options.correctionFolds < 2 && options.shrinkValidationFraction <= 0)) {
         return trainOnce(training, options);
     }
     if (auto st = options.validate(); !st) {

@@ -63,7 +63,7 @@ struct ResidualOptions {
     /// κ_H ∈ [0, 1] are fitted by least squares after a fit on the rest (then the model is refitted
     /// on every row). The forecast is e_k − s_H (ŷ_mech,k+H − ŷ_mech,k) + κ_H Σ v̂: the better blend
     /// of the two references at each horizon, and a correction that does not predict on rows it
-    /// was not fitted on shrunk towards it. 0: s_H = s, κ_H = 1.
+    /// was not fitted on shrunk towards it. 0 (and correctionFolds < 2): s_H = s, κ_H = 1.
     double shrinkValidationFraction = 0.2;
     /// With 2 or more: s_H and κ_H from blocked cross-validation instead, each of this many
     /// contiguous blocks of every batch's training rows held out once (the fit on the others).
