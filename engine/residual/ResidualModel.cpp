@@ -201,17 +201,25 @@ void ResidualModel::residualsOf(const BatchView& v, std::size_t from, std::size_
     if (velocity()) {
         // v_k = Δe_k + s Δŷ_mech,k: what the reference missed from k−1 to k.
         const auto& pbm = *v.pbm;
+        // e at k−1, carried from one row to the next.
+        double ex0 = kNaN, et0 = kNaN;
+        bool previousOk = from > 0 && observedResidual(*v.batch, pbm, from - 1, ex0, et0);
         for (std::size_t k = from; k < to; ++k) {
-            double ex0 = kNaN, et0 = kNaN, ex1 = kNaN, et1 = kNaN;
-            if (k == 0 || !observedResidual(*v.batch, pbm, k, ex1, et1) ||
-                !observedResidual(*v.batch, pbm, k - 1, ex0, et0)) {
+            double ex1 = kNaN, et1 = kNaN;
+            const bool ok = observedResidual(*v.batch, pbm, k, ex1, et1);
+            const bool both = ok && previousOk;
+            const double exPrev = ex0, etPrev = et0;
+            ex0 = ex1;
+            et0 = et1;
+            previousOk = ok;
+            if (!both) {
                 ex[k] = et[k] = kNaN;
                 continue;
             }
-            ex[k] = ex1 - ex0 +
+            ex[k] = ex1 - exPrev +
                     m_referenceChange *
                         (units::dryToWetPct(pbm.xOutDb[k]) - units::dryToWetPct(pbm.xOutDb[k - 1]));
-            et[k] = et1 - et0 + m_referenceChange * (pbm.tOutK[k] - pbm.tOutK[k - 1]);
+            et[k] = et1 - etPrev + m_referenceChange * (pbm.tOutK[k] - pbm.tOutK[k - 1]);
         }
         return;
     }

@@ -81,6 +81,19 @@ void appendRow(data::SiBatch& b, double hotK, double spK) {
     b.rhAmb.push_back(0.5);
 }
 
+/// A session opened on virtual-plant batches written into @p dir (false on any failure).
+bool openPlantData(const QTemporaryDir& dir, const plant::PlantOptions& plantOptions, workflow::Session& s) {
+    workflow::GenerateOptions g;
+    g.plant = plantOptions;
+    g.outFolder = dir.filePath("plant").toStdString();
+    if (!workflow::Session().generate(g).ok()) {
+        return false;
+    }
+    workflow::OpenOptions oo;
+    oo.dataPath = g.outFolder;
+    return s.open(oo).ok();
+}
+
 std::string scenarioText(const std::string& extra) {
     return "{\n  \"name\": \"t\",\n  \"length_s\": 60,\n  \"warmup_s\": 120,\n" + extra +
            "  \"seed\": 3\n}\n";
@@ -266,16 +279,11 @@ private Q_SLOTS:
         // test, on three seeds of the distributed plant with realistic sensors.
         for (const std::uint64_t seed : {31u, 32u, 33u}) {
             QTemporaryDir dir;
-            workflow::GenerateOptions g;
-            g.plant = plant::PlantOptions::demo(seed, plant::PlantKind::Distributed);
-            g.plant.batches = 3;
-            g.plant.samples = 2000;
-            g.outFolder = dir.filePath("plant").toStdString();
-            QVERIFY(workflow::Session().generate(g).ok());
+            auto po = plant::PlantOptions::demo(seed, plant::PlantKind::Distributed);
+            po.batches = 3;
+            po.samples = 2000;
             workflow::Session s;
-            workflow::OpenOptions oo;
-            oo.dataPath = g.outFolder;
-            QVERIFY(s.open(oo).ok());
+            QVERIFY(openPlantData(dir, po, s));
             workflow::CalibrateOptions c; // h_HDT, k_HDT and the inlet gauge's scatter share
             c.calibration.maxEvaluations = 300;
             const auto cal = s.calibrate(c);
@@ -316,16 +324,11 @@ private Q_SLOTS:
 
     void everyControllerRunsAShortScenarioAndCancelKeepsWhatIsDone() {
         QTemporaryDir dir;
-        workflow::GenerateOptions g;
-        g.plant = plant::PlantOptions::demo(9, plant::PlantKind::Lumped);
-        g.plant.batches = 2;
-        g.plant.samples = 1500;
-        g.outFolder = dir.filePath("plant").toStdString();
-        QVERIFY(workflow::Session().generate(g).ok());
+        auto po = plant::PlantOptions::demo(9, plant::PlantKind::Lumped);
+        po.batches = 2;
+        po.samples = 1500;
         workflow::Session s;
-        workflow::OpenOptions oo;
-        oo.dataPath = g.outFolder;
-        QVERIFY(s.open(oo).ok());
+        QVERIFY(openPlantData(dir, po, s));
         workflow::TrainOptions t;
         t.lstm.epochs = 2;
         t.lstm.hidden = 8;

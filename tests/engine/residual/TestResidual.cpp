@@ -447,18 +447,23 @@ private Q_SLOTS:
         QVERIFY(oneDiff > 0.5);
         // And it does learn something: on held-out rows it beats the PBM alone.
         const auto test = hybrid::splitViews(f.batches, f.pbm, true);
-        double pbmErr = 0, freeErr = 0;
-        for (const auto& v : test) {
-            const auto p = m->predictFreeRun(v);
-            for (std::size_t i = 0; i < v.rows.size(); ++i) {
-                const std::size_t k = v.rows.begin + i;
-                const double obs = units::dryToWetPct(v.batch->xOutDb[k]);
-                if (v.batch->keep[k] && std::isfinite(obs)) {
-                    pbmErr += std::abs(obs - units::dryToWetPct(v.pbm->xOutDb[k]));
-                    freeErr += std::abs(obs - p.xOutPct[i]);
+        // Σ |error| of X_out over the held-out rows: of a model's free run, or of the PBM alone.
+        const auto freeRunError = [&](const ResidualModel* model) {
+            double sum = 0;
+            for (const auto& v : test) {
+                const auto p = model ? model->predictFreeRun(v) : HybridPrediction{};
+                for (std::size_t i = 0; i < v.rows.size(); ++i) {
+                    const std::size_t k = v.rows.begin + i;
+                    const double obs = units::dryToWetPct(v.batch->xOutDb[k]);
+                    if (v.batch->keep[k] && std::isfinite(obs)) {
+                        sum += std::abs(obs - (model ? p.xOutPct[i] : units::dryToWetPct(v.pbm->xOutDb[k])));
+                    }
                 }
             }
-        }
+            return sum;
+        };
+        const double pbmErr = freeRunError(nullptr);
+        const double freeErr = freeRunError(&*m);
         qInfo("held-out sum |error| X_out: PBM %.2f, PGRL-CC free run %.2f", pbmErr, freeErr);
         QVERIFY(freeErr < pbmErr);
         // The velocity form learns what the last error misses over a horizon; without any
@@ -466,17 +471,7 @@ private Q_SLOTS:
         // run stays at the PBM and does not drift away from it.
         auto velocity = ResidualModel::train(hybrid::splitViews(f.batches, f.pbm, false), {});
         QVERIFY(velocity.ok());
-        double velocityErr = 0;
-        for (const auto& v : test) {
-            const auto p = velocity->predictFreeRun(v);
-            for (std::size_t i = 0; i < v.rows.size(); ++i) {
-                const std::size_t k = v.rows.begin + i;
-                const double obs = units::dryToWetPct(v.batch->xOutDb[k]);
-                if (v.batch->keep[k] && std::isfinite(obs)) {
-                    velocityErr += std::abs(obs - p.xOutPct[i]);
-                }
-            }
-        }
+        const double velocityErr = freeRunError(&*velocity);
         qInfo("velocity form's free run: sum |error| X_out %.2f", velocityErr);
         QVERIFY(velocityErr < 1.02 * pbmErr);
     }
