@@ -1,6 +1,7 @@
 // drytwin: the GUI without a subcommand, a headless subcommand otherwise (CONTRACT.md §2).
 #include "CommandLine.h"
 #include "MainWindow.h"
+#include "common/Translations.h"
 #include "report/ReportWriter.h"
 #include "workflow/Session.h"
 
@@ -21,30 +22,6 @@
 #include <memory>
 
 namespace {
-
-/// Loads DryTwin's and Qt's own translations for @p language (en: none needed).
-void installTranslations(QApplication& app, const QString& language) {
-    if (language.isEmpty() || language == QLatin1String("en")) {
-        return;
-    }
-    auto* ours = new QTranslator(&app);
-    const QStringList places{QCoreApplication::applicationDirPath() + QStringLiteral("/../widgets"),
-                             QCoreApplication::applicationDirPath() + QStringLiteral("/translations"),
-                             QCoreApplication::applicationDirPath() +
-                                 QStringLiteral("/../share/drytwin/translations"),
-                             QStringLiteral(DRYTWIN_QM_DIR)};
-    for (const auto& place : places) {
-        if (ours->load(QStringLiteral("drytwin_") + language, place)) {
-            app.installTranslator(ours);
-            break;
-        }
-    }
-    auto* qt = new QTranslator(&app);
-    if (qt->load(QStringLiteral("qtbase_") + language,
-                 QLibraryInfo::location(QLibraryInfo::TranslationsPath))) {
-        app.installTranslator(qt);
-    }
-}
 
 int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed) {
     const bool platformGiven =
@@ -70,7 +47,7 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
         language = QLocale::system().name().startsWith(QLatin1String("zh")) ? QStringLiteral("zh_CN")
                                                                             : QStringLiteral("en");
     }
-    installTranslations(app, language);
+    drytwin::widgets::setLanguage(language);
     QElapsedTimer sinceStart;
     sinceStart.start();
     drytwin::widgets::MainWindow window;

@@ -7,6 +7,8 @@ PACKAGES=(
   build-essential cmake pkg-config git
   # Qt 5.15 (Qwt and VTK's Qt module exist for Qt 5 only on Debian 12)
   qtbase5-dev qttools5-dev qttools5-dev-tools libqt5svg5-dev libqt5opengl5-dev
+  # Qt's own translations (qtbase_zh_CN.qm: file dialogs, message-box buttons in Chinese)
+  qttranslations5-l10n
   libqwt-qt5-dev
   # numerics
   libeigen3-dev libsundials-dev libnlopt-cxx-dev coinor-libipopt-dev libtorch-dev

@@ -5,13 +5,17 @@
 
 #include <QMainWindow>
 #include <QStringList>
+#include <array>
 #include <memory>
+#include <optional>
 
+class QComboBox;
 class QLabel;
 class QMenu;
 class QProgressBar;
 class QPushButton;
 class QTabWidget;
+class QTextBrowser;
 
 namespace drytwin::widgets {
 
@@ -37,16 +41,30 @@ public:
 
     /// @brief Starts loading a batch file or folder; the physics model is simulated after it.
     void openDataSet(const QString& path);
+    /// @brief Opens the bundled demo data set (writes it first, once).
+    void openBundledDemo();
     /// @brief Opens a project file: data, model and view (errors go to the status bar and a box).
-    bool openProject(const QString& path, QString* error = nullptr);
-    /// @brief Writes the project atomically (the model beside it when it has no file yet).
-    bool saveProject(const QString& path, QString* error = nullptr);
+    /// @p remember: make it the window's project and list it under Recent projects.
+    bool openProject(const QString& path, QString* error = nullptr, bool remember = true);
+    /// @brief Writes the project atomically: the model beside it when it has no file yet, the latest
+    /// results (PATH.results.json) and the learnt parts' states; reopened, all of it is shown again.
+    bool saveProject(const QString& path, QString* error = nullptr, bool remember = true);
+    /// @brief The same work in another language, without restarting DryTwin: the state goes into a
+    /// temporary project, a new window opens it in @p language and this one closes. Refused (null,
+    /// @p error says why) while a job runs.
+    MainWindow* reopenInLanguage(const QString& language, QString* error = nullptr);
     /// @brief The data set shown now (empty before the first successful load).
     const data::DataSet& dataSet() const { return m_workbench.dataSet() ? *m_workbench.dataSet() : m_noData; }
     Workbench& workbench() { return m_workbench; }
     JobRunner& jobs() { return m_workbench.jobs(); }
     QTabWidget* tabs() const { return m_tabs; }
+    /// @brief The status bar's way to the column mapping after a file was not recognised.
+    QPushButton* mapColumnsButton() const { return m_mapButton; }
+    /// @brief The data-set list at the tabs' top right.
+    QComboBox* dataSetChooser() const { return m_dataSetChooser; }
     DataPanel* dataPanel() const { return m_data; }
+    /// @brief The user guide's window (null until Help ▸ User guide was opened).
+    QTextBrowser* userGuide() const { return m_guide; }
     ModelPanel* modelPanel() const { return m_model; }
     CalibrationPanel* calibrationPanel() const { return m_calibration; }
     ResidualPanel* residualPanel() const { return m_residual; }
@@ -65,6 +83,14 @@ public:
     QStringList saveTabScreenshots(const QString& folder);
     /// @brief HTML of the About box: DryTwin's version and every library's.
     static QString aboutText();
+    /// @brief The status line with no data: where to open data, and the bundled demo.
+    static QString noDataHint();
+    /// @brief An engine progress stage ("calibrate") in the user's language ("Calibrating").
+    static QString stageText(const QString& stage);
+    /// @brief Help ▸ User guide: the workflow, shipped as a resource, in the window's language.
+    void showUserGuide();
+    /// @brief The user guide's HTML for @p language (en, zh_CN; English when there is none).
+    static QString userGuideHtml(const QString& language);
 
 Q_SIGNALS:
     /// @brief The model's predictions are shown (for tests and scripting).
@@ -84,6 +110,8 @@ private:
     void rememberRecent(const QString& path);
     void fillRecent();
     void showError(const QString& title, const QString& message);
+    /// Puts back a reopened project's results and learnt parts' states.
+    void restorePending();
 
     Workbench m_workbench;
     data::DataSet m_noData;
@@ -99,12 +127,20 @@ private:
     LineView3D* m_view3d = nullptr;
     QMenu* m_recent = nullptr;
     QLabel* m_statusLabel = nullptr;
+    QComboBox* m_dataSetChooser = nullptr;
+    QTextBrowser* m_guide = nullptr;
     QProgressBar* m_progressBar = nullptr;
     QPushButton* m_cancelButton = nullptr;
+    QPushButton* m_mapButton = nullptr;
+    QString m_mapFile;
     QString m_projectPath;
+    JobId m_progressJob = 0;
+    QString m_progressStage;
     QString m_pendingModel; ///< a project's model, opened once its data is in
     QStringList m_pendingActions;
     int m_pendingTab = -1;
+    std::optional<workflow::LatestResults> m_pendingResults;
+    std::optional<std::array<LearntPart, 3>> m_pendingParts;
 };
 
 } // namespace drytwin::widgets

@@ -3,6 +3,7 @@
 // scenario, save and reopen a project; and what the plots and tables show after each.
 #include "MainWindow.h"
 #include "calibration/CalibrationPanel.h"
+#include "common/DisplayNames.h"
 #include "common/PlotStack.h"
 #include "data/ColumnMappingDialog.h"
 #include "data/DataPanel.h"
@@ -109,7 +110,7 @@ private Q_SLOTS:
             {"inlet_moisture_sensor_offset", properties::Param::X_in_offset, 0.9, 1.01, 0.4, false});
         const QString english = widgets::DiscoverPanel::specificityText(f);
         for (const char* part : {"between 0.48 and 0.52", "consistent", "starts 20 min into the batch",
-                                 "inlet_moisture_sensor_offset fits these data about as well",
+                                 "inlet moisture gauge offset fits these data about as well",
                                  "To tell them apart", "oven-dry"}) {
             QVERIFY2(english.contains(QLatin1String(part)), qPrintable(english));
         }
@@ -355,11 +356,18 @@ private Q_SLOTS:
         QVERIFY(waitIdle(w, 240000));
         QVERIFY(w.workbench().latest().discover.has_value());
         QVERIFY(disc->ranking()->rowCount() == 10); // the inlet scatter share is fitted with h_HDT, k_HDT
-        QVERIFY(disc->verdict()->text().startsWith("Verdict"));
+        // The verdict in an engineer's words, with the data set it belongs to; the key in the tooltip.
+        const QString verdict = disc->verdict()->text();
+        QVERIFY2((verdict.startsWith("Cause found") || verdict.startsWith("No cause found") ||
+                  verdict.startsWith("Something is left")) &&
+                     verdict.contains("plant (2 batches)"),
+                 qPrintable(verdict));
+        QVERIFY(disc->verdict()->toolTip().contains(
+            QString::fromStdString(w.workbench().latest().discover->discovery.verdict)));
         // Each finding's evidence is worded by the panel from the finding's numbers (translatable).
         for (const auto& f : w.workbench().latest().discover->discovery.findings) {
             const QString sentence = widgets::DiscoverPanel::evidenceText(f);
-            QVERIFY2(sentence.contains(QString::fromStdString(f.cause)) &&
+            QVERIFY2(sentence.contains(widgets::causeDisplayName(f.cause)) &&
                          sentence.contains("held-out MAE") &&
                          !sentence.contains(QRegularExpression("%[0-9]")),
                      qPrintable(sentence));

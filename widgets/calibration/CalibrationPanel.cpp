@@ -1,5 +1,6 @@
 #include "calibration/CalibrationPanel.h"
 
+#include "common/DisplayNames.h"
 #include "common/PlotStack.h"
 #include "common/Series.h"
 #include "common/Units.h"
@@ -118,12 +119,25 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
             showBeforeAfter();
         }
     });
-    const auto idle = [this] {
-        m_run->setEnabled(true);
-        m_stop->setEnabled(false);
+    // Results of another data set are not shown as these; a project's come back.
+    connect(&m_workbench, &Workbench::dataChanged, this, &CalibrationPanel::showResult);
+    connect(&m_workbench, &Workbench::resultsRestored, this, &CalibrationPanel::showResult);
+    m_loss->setEmptyText(tr("Run Calibrate to see the loss fall and the parameters settle"));
+    m_fitPlot->setEmptyText(tr("Run Calibrate to see the fit before and after"));
+    m_fitPlot->setHintVisible(false);
+    // Calibrate is disabled and Stop enabled exactly while a calibration is queued or running.
+    const auto follow = [this] {
+        const bool running = m_workbench.isRunning(Action::Calibrate);
+        m_run->setEnabled(!running);
+        m_stop->setEnabled(running);
     };
-    connect(&m_workbench, &Workbench::calibrated, this, idle);
-    connect(&m_workbench, &Workbench::failed, this, idle);
+    connect(&m_workbench, &Workbench::runningChanged, this, follow);
+    connect(&m_workbench, &Workbench::failed, this,
+            [this](const QString& action, const QString& message, bool) {
+                if (action == Workbench::tr("Calibrate")) {
+                    m_fit->setText(message); // the panel follows a cancel or a failure
+                }
+            });
 }
 
 void CalibrationPanel::setBudget(int evaluations) {
@@ -154,18 +168,26 @@ void CalibrationPanel::run() {
         m_fit->setText(tr("Cannot calibrate: %1").arg(QString::fromStdString(st.error().message())));
         return;
     }
+    // Learnt correction models sit on the present physics parameters: say so before changing them.
+    const auto retrain = m_workbench.confirmInvalidation(this, tr("Calibrate"));
+    if (!retrain) {
+        return;
+    }
     m_lossX.clear();
     m_lossY.clear();
     m_before = m_workbench.latest().simulate; // what the parameters gave before (if simulated)
-    m_run->setEnabled(false);
-    m_stop->setEnabled(true);
     m_fit->setText(tr("Calibrating…"));
-    m_workbench.calibrate(o);
+    m_workbench.calibrate(o, *retrain);
 }
 
 void CalibrationPanel::showResult() {
     const auto& r = m_workbench.latest().calibrate;
     if (!r) {
+        m_estimates->setRowCount(0);
+        m_loss->clearCurves();
+        m_fitPlot->clearCurves();
+        m_loss->rescale();
+        m_fitPlot->rescale();
         return;
     }
     const auto& c = r->calibration;
@@ -185,7 +207,7 @@ void CalibrationPanel::showResult() {
     m_estimates->resizeColumnsToContents();
     m_fit->setText(tr("%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. "
                       "Intervals: %10.")
-                       .arg(QString::fromLatin1(terminationName(r->ending.termination)))
+                       .arg(terminationText(r->ending.termination))
                        .arg(c.evaluations)
                        .arg(c.elapsedSeconds, 0, 'f', 1)
                        .arg(c.before.loss, 0, 'g', 4)
@@ -194,7 +216,7 @@ void CalibrationPanel::showResult() {
                        .arg(c.after.maeXOutPct, 0, 'f', 3)
                        .arg(c.before.maeTOutC, 0, 'f', 3)
                        .arg(c.after.maeTOutC, 0, 'f', 3)
-                       .arg(QString::fromStdString(c.intervalMethod)));
+                       .arg(intervalMethodText(c.intervalMethod)));
     // The whole history as the final curves (every evaluation, not only the progress reports):
     // the best loss, and each free parameter's trace relative to where it ended.
     QVector<double> x, y;

@@ -1,6 +1,9 @@
 #include "common/PlotStack.h"
 
+#include "common/WidgetHelpers.h"
+
 #include <QBuffer>
+#include <QDir>
 #include <QEvent>
 #include <QFile>
 #include <QFileDialog>
@@ -12,6 +15,7 @@
 #include <QPainter>
 #include <QPdfWriter>
 #include <QPushButton>
+#include <QSaveFile>
 #include <QSvgGenerator>
 #include <QVBoxLayout>
 #include <cmath>
@@ -25,6 +29,7 @@
 #include <qwt_plot_marker.h>
 #include <qwt_plot_panner.h>
 #include <qwt_plot_renderer.h>
+#include <qwt_plot_textlabel.h>
 #include <qwt_plot_zoomer.h>
 #include <qwt_scale_draw.h>
 #include <qwt_scale_engine.h>
@@ -79,12 +84,11 @@ PlotStack::PlotStack(QWidget* parent) : QWidget(parent), m_cursor{kNaN, kNaN}, m
     m_layout->setContentsMargins(0, 0, 0, 0);
     m_layout->setSpacing(2);
     auto* bottom = new QHBoxLayout;
-    m_readout = new QLabel(tr("Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to "
-                              "zoom, right click to zoom out, middle drag to pan"));
+    m_readout = new QLabel(hintText());
     m_readout->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_readout->setWordWrap(true);
     auto* exportButton = new QPushButton(tr("Export…"));
-    exportButton->setToolTip(tr("Save these plots as PNG, SVG or PDF"));
+    exportButton->setToolTip(tr("Save these plots as PNG, SVG or PDF, or their data as CSV"));
     connect(exportButton, &QPushButton::clicked, this, &PlotStack::exportDialog);
     bottom->addWidget(m_readout, 1);
     bottom->addWidget(exportButton);
@@ -171,12 +175,84 @@ void PlotStack::setXTitle(const QString& title) {
     }
 }
 
+QString PlotStack::hintText() const {
+    return tr(
+        "Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click "
+        "to zoom out, middle drag to pan");
+}
+
+void PlotStack::setHintVisible(bool visible) {
+    m_hintVisible = visible;
+    if (m_readout->text() == hintText() || m_readout->text().isEmpty()) {
+        m_readout->setText(visible ? hintText() : QString());
+    }
+}
+
+void PlotStack::setEmptyText(const QString& text) {
+    m_emptyText = text;
+    updateEmptyText();
+}
+
+bool PlotStack::showsEmptyText() const {
+    return !m_emptyLabels.empty() && m_emptyLabels.front()->plot() != nullptr;
+}
+
+void PlotStack::updateEmptyText() {
+    bool hasData = false;
+    for (int i = 0; i < plotCount(); ++i) {
+        hasData = hasData || curveCount(i) > 0;
+    }
+    while (m_emptyLabels.size() < m_plots.size()) {
+        auto* label = new QwtPlotTextLabel;
+        label->setZ(100);
+        m_emptyLabels.push_back(label);
+    }
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        auto* label = m_emptyLabels[i];
+        const bool show = !hasData && !m_emptyText.isEmpty();
+        if (show) {
+            QwtText text(m_emptyText);
+            text.setColor(QColor(110, 110, 110));
+            QFont font = text.font();
+            font.setPointSizeF(font.pointSizeF() * 1.1);
+            text.setFont(font);
+            text.setRenderFlags(Qt::AlignCenter | Qt::TextWordWrap);
+            label->setText(text);
+            if (label->plot() != m_plots[i]) {
+                label->attach(m_plots[i]);
+            }
+        } else if (label->plot()) {
+            label->detach();
+        }
+        // No made-up 0–1000 axes before there are data: the scales come with the first curve.
+        m_plots[i]->enableAxis(QwtPlot::yLeft, !show);
+        m_plots[i]->enableAxis(QwtPlot::xBottom, !show && i + 1 == m_plots.size());
+        m_plots[i]->replot();
+    }
+}
+
 QwtPlotCurve* PlotStack::addCurve(int index, const QString& name, const QVector<double>& x,
                                   const QVector<double>& y, const QColor& colour, Qt::PenStyle style,
                                   double width) {
     auto* plot = m_plots.at(static_cast<std::size_t>(index));
     auto* c = new QwtPlotCurve(name);
-    c->setPen(colour, width, style);
+    // Colours unique within a plot: a second named series in the same colour and line style
+    // (two batches, two models mapped alike) takes the next free colour of the palette.
+    QColor unique = colour;
+    const auto taken = [&](const QColor& col) {
+        for (auto* item : plot->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+            const auto* other = static_cast<const QwtPlotCurve*>(item);
+            if (other->dataSize() > 0 && !other->title().text().isEmpty() && other->title().text() != name &&
+                other->pen().color() == col && other->pen().style() == style) {
+                return true;
+            }
+        }
+        return false;
+    };
+    for (int k = 0; !name.isEmpty() && taken(unique) && k < 20; ++k) {
+        unique = seriesColour(k);
+    }
+    c->setPen(unique, width, style);
     // Long series: drop points that fall on the same pixel, clip to the canvas.
     c->setPaintAttribute(QwtPlotCurve::FilterPoints, true);
     c->setPaintAttribute(QwtPlotCurve::ClipPolygons, true);
@@ -191,6 +267,9 @@ QwtPlotCurve* PlotStack::addCurve(int index, const QString& name, const QVector<
         }
     }
     c->setItemAttribute(QwtPlotItem::Legend, !named && !name.isEmpty());
+    if (showsEmptyText() && !x.isEmpty()) {
+        updateEmptyText();
+    }
     if (plot != m_plots.front() && !named && !name.isEmpty()) {
         // Its entry goes on the top plot's legend: a stand-in there, without data.
         auto* standIn = new QwtPlotCurve(name);
@@ -228,6 +307,17 @@ void PlotStack::clearCurves() {
         plot->detachItems(QwtPlotItem::Rtti_PlotCurve, true);
         plot->updateLegend();
     }
+    // A readout of the old curves would describe data no longer shown.
+    for (auto& c : m_cursor) {
+        c = kNaN;
+    }
+    for (auto& markers : m_cursorMarkers) {
+        for (auto* m : markers) {
+            m->setVisible(false);
+        }
+    }
+    m_readout->setText(m_hintVisible ? hintText() : QString());
+    updateEmptyText();
 }
 
 int PlotStack::curveCount(int index) const {
@@ -240,6 +330,7 @@ int PlotStack::curveCount(int index) const {
 }
 
 void PlotStack::rescale() {
+    updateEmptyText();
     m_linking = true;
     for (std::size_t i = 0; i < m_plots.size(); ++i) {
         auto* plot = m_plots[i];
@@ -443,19 +534,50 @@ bool PlotStack::exportTo(const QString& path, QString* error) const {
         paintStack(painter, QRectF(QPointF(0, 0), QSizeF(pdf.width(), pdf.height())));
         return painter.end();
     }
+    if (suffix == QLatin1String("csv")) {
+        QSaveFile f(path);
+        return (f.open(QIODevice::WriteOnly) && f.write(csvText().toUtf8()) >= 0 && f.commit()) || fail();
+    }
     if (error) {
-        *error = tr("unknown format '%1': use .png, .svg or .pdf").arg(suffix);
+        *error = tr("unknown format '%1': use .png, .svg, .pdf or .csv").arg(suffix);
     }
     return false;
 }
 
+QString PlotStack::csvText() const {
+    // Long format: every curve's points under its plot's axis title (with the unit) and its name,
+    // so curves of different lengths and x grids sit in one file a spreadsheet can pivot.
+    const auto quoted = [](QString s) {
+        s.replace(QLatin1Char('"'), QStringLiteral("\"\""));
+        return QStringLiteral("\"%1\"").arg(s);
+    };
+    QString out =
+        QStringLiteral("plot,curve,%1,y\n")
+            .arg(quoted(m_plots.empty() ? QString() : m_plots.back()->axisTitle(QwtPlot::xBottom).text()));
+    for (auto* plot : m_plots) {
+        const QString plotName = quoted(plot->axisTitle(QwtPlot::yLeft).text());
+        for (const auto* item : plot->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+            const auto* c = static_cast<const QwtPlotCurve*>(item);
+            const QString curveName = quoted(c->title().text());
+            for (std::size_t i = 0; i < c->dataSize(); ++i) {
+                const QPointF p = c->sample(i);
+                out += QStringLiteral("%1,%2,%3,%4\n")
+                           .arg(plotName, curveName, QString::number(p.x(), 'g', 10),
+                                QString::number(p.y(), 'g', 10));
+            }
+        }
+    }
+    return out;
+}
+
 void PlotStack::exportDialog() {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export plots"), QStringLiteral("plots.png"),
-                                     tr("PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export plots"), QDir(lastFolder()).filePath(QStringLiteral("plots.png")),
+        tr("PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)"));
     if (path.isEmpty()) {
         return;
     }
+    rememberFolder(path);
     QString error;
     if (!exportTo(path, &error)) {
         m_readout->setText(tr("Export failed: %1").arg(error));

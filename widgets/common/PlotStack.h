@@ -13,6 +13,7 @@ class QVBoxLayout;
 class QwtPlot;
 class QwtPlotCurve;
 class QwtPlotMarker;
+class QwtPlotTextLabel;
 class QwtPlotZoomer;
 
 namespace drytwin::widgets {
@@ -57,12 +58,20 @@ public:
     QByteArray renderSvg(const QSize& size) const;
     /// @brief The whole stack drawn at @p size (pixels, times @p scale for sharpness).
     QImage renderImage(const QSize& size, double scale = 2.0) const;
-    /// @brief Writes the whole stack to @p path; the format follows the suffix (png, svg, pdf).
+    /// @brief Writes the whole stack to @p path; the format follows the suffix (png, svg, pdf; csv:
+    /// the plotted data, one row per point: plot, curve, x, y).
     bool exportTo(const QString& path, QString* error = nullptr) const;
     /// @brief Shows the x range [lo, hi] in every plot.
     void setXRange(double lo, double hi);
     /// @brief Log scale on the x and/or y axis of plot @p index (PSD plots).
     void setLogScale(int index, bool logX, bool logY);
+    /// @brief What fills these plots, said in each plot while it has no data ("Run Calibrate to
+    /// see the loss"); empty: nothing said.
+    void setEmptyText(const QString& text);
+    /// @brief True while the empty text is shown (no curve with data in any plot).
+    bool showsEmptyText() const;
+    /// @brief Shows or hides the mouse hint under the plots (one hint per tab is enough).
+    void setHintVisible(bool visible);
 
 Q_SIGNALS:
     void timeCursorMoved(double t);
@@ -76,6 +85,9 @@ private:
     void updateReadout();
     void exportDialog();
     void paintStack(QPainter& painter, const QRectF& area) const;
+    void updateEmptyText();
+    QString hintText() const;
+    QString csvText() const;
 
     QVBoxLayout* m_layout = nullptr;
     QLabel* m_readout = nullptr;
@@ -86,6 +98,9 @@ private:
     double m_cursor[2];
     double m_timeCursor;
     bool m_linking = false;
+    bool m_hintVisible = true;
+    QString m_emptyText;
+    std::vector<QwtPlotTextLabel*> m_emptyLabels;
 };
 
 } // namespace drytwin::widgets

@@ -1,10 +1,48 @@
 #include "common/WidgetHelpers.h"
 
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QHeaderView>
+#include <QSettings>
 #include <QTableWidget>
 #include <map>
 
 namespace drytwin::widgets {
+
+QString lastFolder() {
+    const QString folder = QSettings().value(QStringLiteral("lastFolder")).toString();
+    return !folder.isEmpty() && QFileInfo(folder).isDir() ? folder : QDir::homePath();
+}
+
+void rememberFolder(const QString& path) {
+    if (path.isEmpty()) {
+        return;
+    }
+    const QFileInfo info(path);
+    QSettings().setValue(QStringLiteral("lastFolder"),
+                         info.isDir() ? info.absoluteFilePath() : info.absolutePath());
+}
+
+QString askOpenFile(QWidget* parent, const QString& title, const QString& filter) {
+    const QString p = QFileDialog::getOpenFileName(parent, title, lastFolder(), filter);
+    rememberFolder(p);
+    return p;
+}
+
+QString askFolder(QWidget* parent, const QString& title) {
+    const QString p = QFileDialog::getExistingDirectory(parent, title, lastFolder());
+    rememberFolder(p);
+    return p;
+}
+
+QString askSaveFile(QWidget* parent, const QString& title, const QString& defaultName,
+                    const QString& filter) {
+    const QString p =
+        QFileDialog::getSaveFileName(parent, title, QDir(lastFolder()).filePath(defaultName), filter);
+    rememberFolder(p);
+    return p;
+}
 
 QString fromView(std::string_view text) {
     return QString::fromUtf8(text.data(), static_cast<int>(text.size()));
@@ -13,6 +51,9 @@ QString fromView(std::string_view text) {
 QTableWidget* makeResultTable(const QStringList& headers) {
     auto* table = new QTableWidget(0, static_cast<int>(headers.size()));
     table->setHorizontalHeaderLabels(headers);
+    // Every column as wide as its header and cells: a header cut to "p (Holm" says nothing. Long
+    // headers are written on two lines ("MAE X_out\n[% wb]") to keep the columns narrow.
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table->verticalHeader()->hide();
     table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     return table;

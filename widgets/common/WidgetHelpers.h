@@ -7,6 +7,7 @@
 #include <string_view>
 
 class QTableWidget;
+class QWidget;
 
 namespace drytwin::widgets {
 
@@ -19,6 +20,16 @@ void setTableRow(QTableWidget* table, int row, const QStringList& cells);
 /// @brief The colour of a model or controller by its contract key (pbm, pgrl_cc, pi …), the same
 /// in every panel so that a model is recognised at a glance.
 QColor modelColour(const std::string& key);
+/// @brief The folder file dialogs start in: the last one a file was opened from or saved to, else
+/// the loaded data's, else the home folder.
+QString lastFolder();
+/// @brief Remembers the folder of @p path (a file or a folder) for the next dialog.
+void rememberFolder(const QString& path);
+/// @brief File dialogs that start in lastFolder() and remember where the user went; empty when
+/// cancelled. The dialogs are Qt's own, so Qt's translations word them (qtbase).
+QString askOpenFile(QWidget* parent, const QString& title, const QString& filter);
+QString askFolder(QWidget* parent, const QString& title);
+QString askSaveFile(QWidget* parent, const QString& title, const QString& defaultName, const QString& filter);
 /// @brief The i-th colour of the plots' categorical palette (batches, parameters).
 QColor seriesColour(int i);
 

@@ -1,8 +1,14 @@
 #include "common/Workbench.h"
 
+#include "common/DisplayNames.h"
 #include "common/ErrorText.h"
 #include "common/WidgetHelpers.h"
 
+#include <QAbstractButton>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QPointer>
+#include <QPushButton>
 #include <QRegularExpression>
 
 namespace drytwin::widgets {
@@ -20,15 +26,34 @@ Workbench::Workbench(QObject* parent) : QObject(parent) {
             });
 }
 
+bool Workbench::isRunning(Action action) const {
+    const auto it = m_running.find(action);
+    return it != m_running.end() && it->second > 0;
+}
+
+void Workbench::bindButton(QAbstractButton* button, Action action) {
+    const auto update = [this, button = QPointer<QAbstractButton>(button), action] {
+        if (button) {
+            button->setEnabled(!isRunning(action));
+        }
+    };
+    connect(this, &Workbench::runningChanged, button, update);
+    update();
+}
+
 template <class R, class Work, class Done>
-JobId Workbench::start(const QString& action, Work work, Done done,
-                       std::function<void(const QString&)> onFailure) {
+JobId Workbench::start(Action kind, const QString& action, Work work, Done done,
+                       std::function<void(const QString&, const Error&)> onFailure) {
     if (m_jobs.busy()) {
         Q_EMIT status(Workbench::tr("%1 is queued behind the running job").arg(action));
     }
+    ++m_running[kind];
+    Q_EMIT runningChanged();
     return m_jobs.submit<R>(
         action, std::function<Expected<R>(workflow::Session&, const Progress&)>(std::move(work)), this,
-        std::function<void(const Expected<R>&)>([this, action, done, onFailure](const Expected<R>& r) {
+        std::function<void(const Expected<R>&)>([this, kind, action, done, onFailure](const Expected<R>& r) {
+            --m_running[kind];
+            Q_EMIT runningChanged();
             if (r) {
                 done(*r);
                 Q_EMIT actionFinished(action, true);
@@ -39,20 +64,161 @@ JobId Workbench::start(const QString& action, Work work, Done done,
                                         : Workbench::tr("%1 failed: %2").arg(action, errorText(r.error()));
             Q_EMIT status(message);
             if (onFailure) {
-                onFailure(message);
+                onFailure(message, r.error());
             }
             Q_EMIT failed(action, message, r.error().kind == ErrorKind::Cancelled);
             Q_EMIT actionFinished(action, false);
         }));
 }
 
-void Workbench::fetchModel() {
+QString Workbench::dataSetLabel() const {
+    if (!m_dataSet) {
+        return {};
+    }
+    const QString name = QFileInfo(m_dataPath).fileName();
+    const auto n = m_summary.batches.size();
+    return n == 1 ? tr("%1 (1 batch)").arg(name) : tr("%1 (%2 batches)").arg(name).arg(n);
+}
+
+const LearntPart& Workbench::learntPart(control::ControllerKind kind) const {
+    for (const auto& p : m_parts) {
+        if (p.kind == kind) {
+            return p;
+        }
+    }
+    static const LearntPart none{};
+    return none;
+}
+
+bool Workbench::hasController(control::ControllerKind kind) const {
+    if (kind == control::ControllerKind::Pbm || kind == control::ControllerKind::Pi) {
+        return true;
+    }
+    return learntPart(kind).state == PartState::Current;
+}
+
+bool Workbench::hasStaleParts() const {
+    return std::any_of(m_parts.begin(), m_parts.end(),
+                       [](const LearntPart& p) { return p.state == PartState::Stale; });
+}
+
+namespace {
+bool holdsPart(const hybrid::HybridModel& m, control::ControllerKind k) {
+    switch (k) {
+    case control::ControllerKind::PgrlCc:
+        return m.pgrlCc != nullptr;
+    case control::ControllerKind::ExtInputResidual:
+        return m.extInput != nullptr;
+    case control::ControllerKind::Lstm:
+        return m.lstm != nullptr;
+    default:
+        return false;
+    }
+}
+} // namespace
+
+void Workbench::takeModel(const hybrid::HybridModel& model, const QString& why, const QString& learntOn,
+                          bool fromFile) {
+    const auto holds = holdsPart;
+    for (auto& p : m_parts) {
+        const bool before = holds(m_model, p.kind);
+        const bool after = holds(model, p.kind);
+        if (after && (!before || !learntOn.isEmpty())) {
+            p.state = PartState::Current;
+            p.learntOn = learntOn;
+            p.staleBecause.clear();
+        } else if (!after && fromFile) {
+            p = LearntPart{p.kind}; // a model file opened: what it lacks was never learnt for it
+        } else if (!after && before) {
+            p.state = why.isEmpty() ? PartState::Absent : PartState::Stale;
+            p.staleBecause = why;
+        }
+    }
+    m_model = model;
+    ++m_modelRevision;
+    Q_EMIT modelChanged();
+    Q_EMIT modelStateChanged();
+}
+
+std::optional<bool> Workbench::confirmInvalidation(QWidget* parent, const QString& action,
+                                                   const hybrid::HybridModel* newModel) {
+    QStringList current;
+    for (const auto& p : m_parts) {
+        if (p.state == PartState::Current && !(newModel && holdsPart(*newModel, p.kind))) {
+            current << controllerDisplayName(p.kind);
+        }
+    }
+    if (current.isEmpty()) {
+        return false;
+    }
+    if (m_invalidationPolicy != AfterInvalidation::Ask || qEnvironmentVariableIsSet("DRYTWIN_NO_MODAL")) {
+        return m_invalidationPolicy == AfterInvalidation::Retrain;
+    }
+    QMessageBox box(QMessageBox::Question, action,
+                    tr("%1 changes the physics model that %2 learnt its corrections on: they will no longer "
+                       "match it and are set aside as stale.")
+                        .arg(action, current.join(QStringLiteral(", "))),
+                    QMessageBox::NoButton, parent);
+    auto* retrain = box.addButton(tr("%1, then retrain them").arg(action), QMessageBox::AcceptRole);
+    auto* keep = box.addButton(tr("%1 only (retrain later)").arg(action), QMessageBox::DestructiveRole);
+    box.addButton(QMessageBox::Cancel);
+    box.setDefaultButton(retrain);
+    box.exec();
+    if (box.clickedButton() == retrain) {
+        return true;
+    }
+    if (box.clickedButton() == keep) {
+        return false;
+    }
+    return std::nullopt;
+}
+
+QString Workbench::modelStateText() const {
+    QStringList lines;
+    if (m_model.calibration) {
+        QStringList symbols;
+        for (const auto& e : m_model.calibration->estimates) {
+            symbols << QString::fromStdString(e.symbol);
+        }
+        lines << tr("Physics model calibrated (%1 fitted to data).").arg(symbols.join(QStringLiteral(", ")));
+    } else {
+        lines << tr("Physics model with its default parameters (not calibrated).");
+    }
+    if (!m_model.mechanisms.empty()) {
+        QStringList causes;
+        for (const auto& [name, value] : m_model.mechanisms) {
+            causes << causeDisplayName(name);
+        }
+        lines << tr("Extended by discovery with: %1.").arg(causes.join(QStringLiteral(", ")));
+    }
+    for (const auto& p : m_parts) {
+        const QString name = controllerDisplayName(p.kind);
+        switch (p.state) {
+        case PartState::Absent:
+            lines << tr("%1: not learnt yet.").arg(name);
+            break;
+        case PartState::Current:
+            lines << (p.learntOn.isEmpty() ? tr("%1: learnt.").arg(name)
+                                           : tr("%1: learnt on %2.").arg(name, p.learntOn));
+            break;
+        case PartState::Stale:
+            lines << tr("%1: stale, since %2; retrain it to use it.").arg(name, p.staleBecause);
+            break;
+        }
+    }
+    return lines.join(QLatin1Char(' '));
+}
+
+void Workbench::retrain() {
+    train(m_lastTrainOptions.value_or(workflow::TrainOptions{}));
+}
+
+void Workbench::fetchModel(const QString& why, const QString& learntOn, bool fromFile) {
     start<hybrid::HybridModel>(
-        tr("Read the model"),
+        Action::Other, tr("Read the model"),
         [](workflow::Session& s, const Progress&) -> Expected<hybrid::HybridModel> { return s.model(); },
-        [this](const hybrid::HybridModel& m) {
-            m_model = m;
-            Q_EMIT modelChanged();
+        [this, why, learntOn, fromFile](const hybrid::HybridModel& m) {
+            takeModel(m, why, learntOn, fromFile);
             // A model with learnt parts opened on loaded data: show how it does on the held-out part.
             if (m_model.hasResidualModels() && hasData() && !m_latest.evaluate) {
                 evaluate();
@@ -70,7 +236,7 @@ void Workbench::openData(const QString& path, const QString& mappingPath) {
         std::vector<data::SiBatch> si;
     };
     start<Loaded>(
-        tr("Load %1").arg(path),
+        Action::Load, tr("Load %1").arg(path),
         [o](workflow::Session& s, const Progress& p) -> Expected<Loaded> {
             auto r = s.open(o, p);
             if (!r) {
@@ -79,12 +245,32 @@ void Workbench::openData(const QString& path, const QString& mappingPath) {
             return Loaded{*r, s.siBatches()};
         },
         [this, path, mappingPath](const Loaded& l) {
+            if (!m_dataPath.isEmpty()) {
+                m_stash[m_dataPath] = {m_latest, m_modelRevision}; // kept for switching back
+            }
             m_mappingPath = mappingPath;
+            rememberFolder(path); // the next file dialog starts where the data are
             m_dataSet = l.open.dataSet;
             m_summary = l.open.summary;
             m_si = l.si;
             m_dataPath = path;
             m_latest = {};
+            bool restored = false;
+            if (const auto it = m_stash.find(path);
+                it != m_stash.end() && it->second.modelRevision == m_modelRevision) {
+                m_latest = it->second.results;
+                m_latest.simulate.reset(); // simulated again below, by whoever shows it
+                restored = true;
+            }
+            const QString label = dataSetLabel();
+            auto entry = std::find_if(m_dataSets.begin(), m_dataSets.end(),
+                                      [&](const DataSetEntry& e) { return e.path == path; });
+            if (entry == m_dataSets.end()) {
+                m_dataSets.push_back({path, mappingPath, label});
+            } else {
+                *entry = {path, mappingPath, label};
+            }
+            Q_EMIT dataSetsChanged();
             Q_EMIT status(tr("%1: %2 batches, %3 rows, %4 missing cells; the cleaning keeps %5 rows")
                               .arg(path)
                               .arg(m_summary.batches.size())
@@ -92,43 +278,89 @@ void Workbench::openData(const QString& path, const QString& mappingPath) {
                               .arg(m_summary.missing)
                               .arg(m_summary.cleaning.kept));
             Q_EMIT dataChanged();
-            if (m_model.hasResidualModels()) {
+            if (restored) {
+                Q_EMIT resultsRestored();
+            } else if (m_model.hasResidualModels()) {
                 evaluate(); // the model's held-out metrics on the new data
             }
         },
-        [this](const QString& message) { Q_EMIT dataLoadFailed(message); });
+        [this, path, mappingPath](const QString& message, const Error& e) {
+            const bool mappable =
+                mappingPath.isEmpty() && QFileInfo(path).isFile() &&
+                (e.code == ErrorCode::MissingColumn || e.code == ErrorCode::DataFileFormat ||
+                 e.code == ErrorCode::TextInNumber || e.code == ErrorCode::TimeNotIncreasing);
+            Q_EMIT dataLoadFailed(message, path, mappable);
+        });
 }
 
 void Workbench::openModel(const QString& path) {
     workflow::OpenOptions o;
     o.modelPath = path.toStdString();
     start<workflow::OpenResult>(
-        tr("Open model %1").arg(path), [o](workflow::Session& s, const Progress& p) { return s.open(o, p); },
+        Action::Other, tr("Open model %1").arg(path),
+        [o](workflow::Session& s, const Progress& p) { return s.open(o, p); },
         [this, path](const workflow::OpenResult&) {
             m_modelPath = path;
             Q_EMIT status(tr("Model %1 opened").arg(path));
-            fetchModel();
+            fetchModel({}, tr("model file %1").arg(QFileInfo(path).fileName()), true);
         });
 }
 
-void Workbench::saveModel(const QString& path) {
+int Workbench::currentDataSet() const {
+    for (std::size_t i = 0; i < m_dataSets.size(); ++i) {
+        if (m_dataSets[i].path == m_dataPath) {
+            return static_cast<int>(i);
+        }
+    }
+    return -1;
+}
+
+void Workbench::switchDataSet(int index) {
+    if (index < 0 || index >= static_cast<int>(m_dataSets.size()) || index == currentDataSet()) {
+        return;
+    }
+    const auto e = m_dataSets[static_cast<std::size_t>(index)];
+    openData(e.path, e.mappingPath);
+}
+
+void Workbench::restoreResults(const workflow::LatestResults& results) {
+    m_latest.calibrate = results.calibrate;
+    m_latest.evaluate = results.evaluate;
+    m_latest.ablation = results.ablation;
+    m_latest.discover = results.discover;
+    m_latest.mpc = results.mpc;
+    Q_EMIT resultsRestored();
+}
+
+void Workbench::restoreLearntParts(const std::array<LearntPart, 3>& parts) {
+    for (std::size_t i = 0; i < m_parts.size(); ++i) {
+        // Only what the open model agrees with: a part saved as current must be in the model.
+        const bool holds = holdsPart(m_model, m_parts[i].kind);
+        if (parts[i].kind == m_parts[i].kind && (parts[i].state == PartState::Current) == holds) {
+            m_parts[i] = parts[i];
+        }
+    }
+    Q_EMIT modelStateChanged();
+}
+
+void Workbench::saveModel(const QString& path, const QString& doneMessage) {
     start<bool>(
-        tr("Save model"),
+        Action::Other, tr("Save model"),
         [p = path.toStdString()](workflow::Session& s, const Progress&) -> Expected<bool> {
             if (auto st = s.saveModel(p); !st) {
                 return st.error();
             }
             return true;
         },
-        [this, path](bool) {
+        [this, path, doneMessage](bool) {
             m_modelPath = path;
-            Q_EMIT status(tr("Model saved to %1").arg(path));
+            Q_EMIT status(doneMessage.isEmpty() ? tr("Model saved to %1").arg(path) : doneMessage);
         });
 }
 
 void Workbench::setParameter(properties::Param param, double value) {
     start<hybrid::HybridModel>(
-        tr("Set %1").arg(fromView(properties::info(param).symbol)),
+        Action::Other, tr("Set %1").arg(fromView(properties::info(param).symbol)),
         [param, value](workflow::Session& s, const Progress&) -> Expected<hybrid::HybridModel> {
             if (auto st = s.setParameter(param, value); !st) {
                 return st.error();
@@ -137,26 +369,32 @@ void Workbench::setParameter(properties::Param param, double value) {
         },
         [this](const hybrid::HybridModel& m) {
             m_model = m;
+            ++m_modelRevision;
             Q_EMIT modelChanged();
         });
 }
 
-void Workbench::setModel(const hybrid::HybridModel& model) {
+void Workbench::setModel(const hybrid::HybridModel& model, const QString& why, bool retrainAfter) {
     start<hybrid::HybridModel>(
-        tr("Set the model"),
+        Action::Other, tr("Set the model"),
         [model](workflow::Session& s, const Progress&) -> Expected<hybrid::HybridModel> {
             s.setModel(model);
             return s.model();
         },
-        [this](const hybrid::HybridModel& m) {
-            m_model = m;
-            Q_EMIT modelChanged();
+        [this, why, retrainAfter](const hybrid::HybridModel& m) {
+            // The parts the new model brings (discovery retrains PGRL-CC on the extended model) were
+            // learnt on the loaded data.
+            takeModel(m, why, why.isEmpty() ? QString() : dataSetLabel());
+            if (retrainAfter && hasStaleParts()) {
+                retrain();
+            }
         });
 }
 
 void Workbench::simulate() {
     start<workflow::SimulateResult>(
-        tr("Simulate"), [](workflow::Session& s, const Progress& p) { return s.simulate({}, p); },
+        Action::Simulate, tr("Simulate"),
+        [](workflow::Session& s, const Progress& p) { return s.simulate({}, p); },
         [this](const workflow::SimulateResult& r) {
             m_latest.simulate = r;
             double x = 0;
@@ -170,18 +408,26 @@ void Workbench::simulate() {
         });
 }
 
-void Workbench::calibrate(const workflow::CalibrateOptions& options) {
+void Workbench::calibrate(const workflow::CalibrateOptions& options, bool retrainAfter) {
     m_calibrationJob = start<workflow::CalibrateResult>(
-        tr("Calibrate"),
+        Action::Calibrate, tr("Calibrate"),
         [options](workflow::Session& s, const Progress& p) { return s.calibrate(options, p); },
-        [this](const workflow::CalibrateResult& r) {
+        [this, retrainAfter](const workflow::CalibrateResult& r) {
             m_latest.calibrate = r;
-            Q_EMIT status(tr("Calibration %1: loss %2 → %3")
-                              .arg(QString::fromLatin1(terminationName(r.ending.termination)))
+            Q_EMIT status(tr("Calibration: %1; loss %2 → %3")
+                              .arg(terminationText(r.ending.termination))
                               .arg(r.calibration.before.loss, 0, 'g', 4)
                               .arg(r.calibration.after.loss, 0, 'g', 4));
+            if (r.droppedResidualModels) {
+                // The held-out metrics were of the learnt models the calibration dropped.
+                m_latest.evaluate.reset();
+                Q_EMIT evaluated();
+            }
             Q_EMIT calibrated();
-            fetchModel();
+            fetchModel(tr("the physics model was calibrated after it was learnt"));
+            if (retrainAfter && r.droppedResidualModels) {
+                retrain(); // queued behind the model's refresh
+            }
         });
 }
 
@@ -192,20 +438,23 @@ void Workbench::stopKeepBest() {
 }
 
 void Workbench::train(const workflow::TrainOptions& options) {
+    m_lastTrainOptions = options;
     start<workflow::TrainResult>(
-        tr("Train"), [options](workflow::Session& s, const Progress& p) { return s.train(options, p); },
+        Action::Train, tr("Learn the correction models"),
+        [options](workflow::Session& s, const Progress& p) { return s.train(options, p); },
         [this](const workflow::TrainResult& r) {
             m_latest.train = r;
-            Q_EMIT status(tr("Trained PGRL-CC and the baselines"));
+            Q_EMIT status(tr("Learnt the correction models (PGRL-CC) and the two comparison models"));
             Q_EMIT trained();
-            fetchModel();
+            fetchModel({}, dataSetLabel());
             evaluate();
         });
 }
 
 void Workbench::evaluate() {
     start<workflow::EvaluateResult>(
-        tr("Evaluate"), [](workflow::Session& s, const Progress& p) { return s.evaluate({}, p); },
+        Action::Evaluate, tr("Evaluate"),
+        [](workflow::Session& s, const Progress& p) { return s.evaluate({}, p); },
         [this](const workflow::EvaluateResult& r) {
             m_latest.evaluate = r;
             Q_EMIT evaluated();
@@ -214,7 +463,8 @@ void Workbench::evaluate() {
 
 void Workbench::discover() {
     start<workflow::DiscoverResult>(
-        tr("Discover"), [](workflow::Session& s, const Progress& p) { return s.discover({}, p); },
+        Action::Discover, tr("Discover"),
+        [](workflow::Session& s, const Progress& p) { return s.discover({}, p); },
         [this](const workflow::DiscoverResult& r) {
             m_latest.discover = r;
             Q_EMIT status(tr("Discovery: %1").arg(QString::fromStdString(r.discovery.verdict)));
@@ -224,11 +474,11 @@ void Workbench::discover() {
 
 void Workbench::runMpc(const workflow::MpcOptions& options) {
     start<workflow::MpcResult>(
-        tr("What-if scenario"),
+        Action::Mpc, tr("What-if scenario"),
         [options](workflow::Session& s, const Progress& p) { return s.mpc(options, p); },
         [this](const workflow::MpcResult& r) {
             m_latest.mpc = r;
-            Q_EMIT status(QString::fromStdString(r.ending.message));
+            Q_EMIT status(mpcEndingText(r.closedLoop));
             Q_EMIT mpcFinished();
         });
 }
@@ -239,7 +489,8 @@ namespace drytwin::widgets {
 
 void Workbench::ablation() {
     start<hybrid::AblationResult>(
-        tr("Ablation"), [](workflow::Session& s, const Progress& p) { return s.ablation(p); },
+        Action::Ablation, tr("Ablation"),
+        [](workflow::Session& s, const Progress& p) { return s.ablation(p); },
         [this](const hybrid::AblationResult& r) {
             m_latest.ablation = r;
             Q_EMIT status(tr("Ablation: %1 variants trained and evaluated").arg(r.rows.size()));
@@ -249,7 +500,8 @@ void Workbench::ablation() {
 
 void Workbench::generate(const workflow::GenerateOptions& options) {
     start<workflow::GenerateResult>(
-        tr("Generate"), [options](workflow::Session& s, const Progress& p) { return s.generate(options, p); },
+        Action::Generate, tr("Generate"),
+        [options](workflow::Session& s, const Progress& p) { return s.generate(options, p); },
         [this, folder = QString::fromStdString(options.outFolder)](const workflow::GenerateResult& r) {
             Q_EMIT status(tr("Wrote %1 virtual-plant batches to %2").arg(r.files.size()).arg(folder));
             openData(folder);

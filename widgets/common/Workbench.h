@@ -5,11 +5,44 @@
 
 #include <QObject>
 #include <QString>
+#include <array>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
 
+class QAbstractButton;
+class QWidget;
+
 namespace drytwin::widgets {
+
+/// @brief How a learnt part of the model stands: not learnt, learnt on the present physics model,
+/// or learnt on a physics model that has since changed (calibrated, extended) and dropped with it.
+enum class PartState { Absent, Current, Stale };
+
+/// @brief One learnt part of the model (PGRL-CC, the external-input residual, the LSTM) as every
+/// tab shows it: whether it exists, what data it was learnt on, and why it is stale.
+struct LearntPart {
+    control::ControllerKind kind = control::ControllerKind::PgrlCc;
+    PartState state = PartState::Absent;
+    QString learntOn;     ///< the data set's label, or "model file x.json"
+    QString staleBecause; ///< the action that made it stale, worded for the user
+};
+
+/// @brief The actions a button starts, for Workbench::isRunning() (a running action's button is
+/// disabled: a second click would queue a duplicate run).
+enum class Action { Other, Load, Simulate, Calibrate, Train, Evaluate, Discover, Mpc, Ablation, Generate };
+
+/// @brief A data set opened in this window: the loaded one and those opened beside it (a training
+/// recording to diagnose), any of which can be switched back to.
+struct DataSetEntry {
+    QString path;
+    QString mappingPath;
+    QString label;
+};
+
+/// @brief What to do with learnt parts an action is about to make stale.
+enum class AfterInvalidation { Ask, Retrain, KeepStale };
 
 /// @brief The GUI's side of the workflow Session: starts every action as a job on the engine
 /// thread (JobRunner) and keeps, on the GUI thread, copies of what the panels show (data set,
@@ -22,6 +55,10 @@ public:
     explicit Workbench(QObject* parent = nullptr);
 
     JobRunner& jobs() { return m_jobs; }
+    /// @brief True while an action of this kind is queued or running.
+    bool isRunning(Action action) const;
+    /// @brief Keeps @p button disabled while its action is queued or running.
+    void bindButton(QAbstractButton* button, Action action);
     bool hasData() const { return m_dataSet != nullptr; }
     std::shared_ptr<const data::DataSet> dataSet() const { return m_dataSet; }
     const std::vector<data::SiBatch>& siBatches() const { return m_si; }
@@ -31,17 +68,62 @@ public:
     QString dataPath() const { return m_dataPath; }
     QString modelPath() const { return m_modelPath; }
     QString mappingPath() const { return m_mappingPath; }
+    /// @brief The loaded data set in a few words ("plant: 10 batches"), for "learnt on" and
+    /// "results of" lines; empty without data.
+    QString dataSetLabel() const;
+
+    /// @brief The data sets opened in this window, in the order they were first opened.
+    const std::vector<DataSetEntry>& dataSets() const { return m_dataSets; }
+    /// @brief The index of the loaded one in dataSets() (-1: none).
+    int currentDataSet() const;
+    /// @brief Loads the data set @p index again; its results come back when the model has not
+    /// changed since they were computed.
+    void switchDataSet(int index);
+
+    /// @brief The learnt parts, PGRL-CC first, as every tab shows them.
+    const std::array<LearntPart, 3>& learntParts() const { return m_parts; }
+    const LearntPart& learntPart(control::ControllerKind kind) const;
+    /// @brief True when the model holds a usable (current) prediction model of this kind; the
+    /// physics model and the PI loop always exist.
+    bool hasController(control::ControllerKind kind) const;
+    bool hasStaleParts() const;
+    /// @brief One paragraph on the model's state: calibrated or not, extended by which causes,
+    /// each learnt part with the data it was learnt on or why it is stale.
+    QString modelStateText() const;
+    /// @brief Asks before an action that makes learnt parts stale (calibrate, extend the model):
+    /// nothing when there are none; otherwise a dialog (or the policy set below). Returns
+    /// std::nullopt when the user cancels, true to retrain them afterwards, false to keep them
+    /// marked stale.
+    /// @p newModel: the model the action will put in place (extend), whose missing parts are the
+    /// ones that go stale; none: every learnt part (calibrate).
+    std::optional<bool> confirmInvalidation(QWidget* parent, const QString& action,
+                                            const hybrid::HybridModel* newModel = nullptr);
+    /// @brief Answers confirmInvalidation() without a dialog (tests, scripted runs).
+    void setInvalidationPolicy(AfterInvalidation policy) { m_invalidationPolicy = policy; }
+    /// @brief Retrains the learnt parts with the settings they were last trained with (the
+    /// defaults when none): "retrain on request".
+    void retrain();
 
     /// @brief Loads data; @p mappingPath: a column mapping file (empty: the contract's names).
     void openData(const QString& path, const QString& mappingPath = {});
     void openModel(const QString& path);
-    void saveModel(const QString& path);
+    /// @p doneMessage: the status line when it is written (default "Model saved to …").
+    void saveModel(const QString& path, const QString& doneMessage = {});
+    /// @brief Shows results read back from a project (panels redraw from them, nothing re-runs) and
+    /// the learnt parts' states as they were saved.
+    void restoreResults(const workflow::LatestResults& results);
+    /// @brief Puts back the learnt parts' states a project saved (after its model is open).
+    void restoreLearntParts(const std::array<LearntPart, 3>& parts);
     /// @brief Sets a physics parameter (checked against its bounds on the engine thread).
     void setParameter(properties::Param param, double value);
     /// @brief Replaces the session's model (undo, "extend the model").
-    void setModel(const hybrid::HybridModel& model);
+    /// @p why: the action, when it replaces the physics the learnt parts sat on (learnt parts the
+    /// new model lacks become stale for it); @p retrainAfter: retrain them when it is done.
+    void setModel(const hybrid::HybridModel& model, const QString& why = {}, bool retrainAfter = false);
     void simulate();
-    void calibrate(const workflow::CalibrateOptions& options);
+    /// @brief Calibrates; learnt parts become stale (the session drops them), and are retrained
+    /// when it is done if @p retrainAfter.
+    void calibrate(const workflow::CalibrateOptions& options, bool retrainAfter = false);
     /// @brief Asks a running calibration to stop and keep its best parameters so far.
     void stopKeepBest();
     void train(const workflow::TrainOptions& options);
@@ -58,6 +140,13 @@ public:
 Q_SIGNALS:
     void dataChanged();
     void modelChanged();
+    /// @brief Results were put back from a project, or the views must be redrawn from the
+    /// Workbench's state (every panel shows what latest() holds).
+    void resultsRestored();
+    /// @brief The list of opened data sets changed.
+    void dataSetsChanged();
+    /// @brief The learnt parts' states changed (learnt, dropped, opened from a file).
+    void modelStateChanged();
     void simulated();
     void calibrated();
     /// @brief A calibration progress report: evaluations so far and the best loss.
@@ -70,18 +159,28 @@ Q_SIGNALS:
     /// @brief An action failed or was cancelled; @p message is worded for the user.
     void failed(const QString& action, const QString& message, bool cancelled);
     /// @brief Loading data failed; what was loaded before is unchanged.
-    void dataLoadFailed(const QString& message);
+    /// @p mappingMayHelp: a single file whose columns were not recognised (a historian export,
+    /// foreign names): the column mapping would load it.
+    void dataLoadFailed(const QString& message, const QString& path = {}, bool mappingMayHelp = false);
     /// @brief A line for the status bar.
     void status(const QString& text);
+    /// @brief An action was queued or finished (isRunning() changed).
+    void runningChanged();
     /// @brief An action finished (successfully or not), for scripts and tests.
     void actionFinished(const QString& action, bool ok);
 
 private:
     template <class R, class Work, class Done>
-    JobId start(const QString& action, Work work, Done done,
-                std::function<void(const QString&)> onFailure = {});
-    /// Refreshes the GUI copy of the model after an action that may change it.
-    void fetchModel();
+    JobId start(Action kind, const QString& action, Work work, Done done,
+                std::function<void(const QString&, const Error&)> onFailure = {});
+    /// Refreshes the GUI copy of the model after an action that may change it; @p why names
+    /// the action, for the parts it drops ("the physics model was calibrated").
+    void fetchModel(const QString& why = {}, const QString& learntOn = {}, bool fromFile = false);
+    /// Takes @p model as the GUI copy and updates the learnt parts: a part the model holds and did
+    /// not before, or any it holds when @p learntOn is given, is current (learnt on @p learntOn);
+    /// one it no longer holds is stale for @p why (absent when no why, or @p fromFile).
+    void takeModel(const hybrid::HybridModel& model, const QString& why, const QString& learntOn,
+                   bool fromFile = false);
 
     JobRunner m_jobs;
     std::shared_ptr<const data::DataSet> m_dataSet;
@@ -91,6 +190,21 @@ private:
     workflow::LatestResults m_latest;
     QString m_dataPath, m_modelPath, m_mappingPath;
     JobId m_calibrationJob = 0;
+    std::map<Action, int> m_running; ///< queued or running jobs per action
+    std::array<LearntPart, 3> m_parts{LearntPart{control::ControllerKind::PgrlCc},
+                                      LearntPart{control::ControllerKind::ExtInputResidual},
+                                      LearntPart{control::ControllerKind::Lstm}};
+    AfterInvalidation m_invalidationPolicy = AfterInvalidation::Ask;
+    std::optional<workflow::TrainOptions> m_lastTrainOptions;
+    std::vector<DataSetEntry> m_dataSets;
+    /// The results each data set had when another was loaded, with the model revision they were
+    /// computed with (restored only for the same revision).
+    struct StashedResults {
+        workflow::LatestResults results;
+        int modelRevision = 0;
+    };
+    std::map<QString, StashedResults> m_stash;
+    int m_modelRevision = 0; ///< counts changes of the model
 };
 
 } // namespace drytwin::widgets

@@ -69,40 +69,46 @@ DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m
     layout->addWidget(split);
 
     connect(openFile, &QPushButton::clicked, this, [this] {
-        const QString p =
-            QFileDialog::getOpenFileName(this, tr("Open batch file"), {}, tr("Batch files (*.csv)"));
+        const QString p = askOpenFile(this, tr("Open batch file"), tr("Batch files (*.csv)"));
         if (!p.isEmpty()) {
             m_workbench.openData(p);
         }
     });
     connect(openFolder, &QPushButton::clicked, this, [this] {
-        const QString p = QFileDialog::getExistingDirectory(this, tr("Open data set folder"));
+        const QString p = askFolder(this, tr("Open data set folder"));
         if (!p.isEmpty()) {
             m_workbench.openData(p);
         }
     });
     connect(mapping, &QPushButton::clicked, this, [this] {
-        const QString file = QFileDialog::getOpenFileName(this, tr("A batch file with your column names"), {},
-                                                          tr("Batch files (*.csv)"));
-        if (file.isEmpty()) {
-            return;
+        const QString file =
+            askOpenFile(this, tr("A batch file with your column names"), tr("Batch files (*.csv)"));
+        if (!file.isEmpty()) {
+            mapAndOpen(file);
         }
+    });
+    connect(&m_workbench, &Workbench::dataChanged, this, &DataPanel::fill);
+    connect(m_table, &QTableWidget::itemSelectionChanged, this, &DataPanel::redraw);
+    connect(m_arrangement, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &DataPanel::redraw);
+    m_plots->setEmptyText(
+        tr("Open a data set: File ▸ Open data set folder…, or File ▸ Open the bundled demo"));
+}
+
+void DataPanel::mapAndOpen(const QString& file) {
+    {
         ColumnMappingDialog dialog(file, this);
         if (dialog.exec() != QDialog::Accepted) {
             return;
         }
-        const QString saveTo = QFileDialog::getSaveFileName(
-            this, tr("Save the column mapping"), QStringLiteral("mapping.json"), tr("Mappings (*.json)"));
+        const QString saveTo = askSaveFile(this, tr("Save the column mapping"),
+                                           QStringLiteral("mapping.json"), tr("Mappings (*.json)"));
         QString error;
         if (saveTo.isEmpty() || !dialog.save(saveTo, &error)) {
             m_cleaning->setText(error);
             return;
         }
         m_workbench.openData(QFileInfo(file).absolutePath(), saveTo);
-    });
-    connect(&m_workbench, &Workbench::dataChanged, this, &DataPanel::fill);
-    connect(m_table, &QTableWidget::itemSelectionChanged, this, &DataPanel::redraw);
-    connect(m_arrangement, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &DataPanel::redraw);
+    }
 }
 
 void DataPanel::dragEnterEvent(QDragEnterEvent* event) {

@@ -17,6 +17,9 @@ class DataPanel : public QWidget {
     Q_OBJECT
 public:
     explicit DataPanel(Workbench& workbench, QWidget* parent = nullptr);
+    /// @brief The column-mapping dialog for @p file (its guess and preview), then loads it with
+    /// the mapping the user saved.
+    void mapAndOpen(const QString& file);
     PlotStack* plots() const { return m_plots; }
     QTableWidget* batchTable() const { return m_table; }
     /// @brief The cleaning rules' counts and the split under the table.

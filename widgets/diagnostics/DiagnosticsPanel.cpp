@@ -1,5 +1,6 @@
 #include "diagnostics/DiagnosticsPanel.h"
 
+#include "common/DisplayNames.h"
 #include "common/PlotStack.h"
 #include "common/Series.h"
 #include "common/Units.h"
@@ -84,17 +85,40 @@ DiagnosticsPanel::DiagnosticsPanel(Workbench& workbench, QWidget* parent)
     connect(&m_workbench, &Workbench::simulated, this, &DiagnosticsPanel::redrawScatter);
     connect(m_operating, &QComboBox::currentTextChanged, this, &DiagnosticsPanel::redrawScatter);
     connect(&m_workbench, &Workbench::discovered, this, &DiagnosticsPanel::redrawCrossCorrelation);
+    // New data, or results put back from a project: show exactly what latest() holds.
+    for (auto signal : {&Workbench::dataChanged, &Workbench::resultsRestored}) {
+        connect(&m_workbench, signal, this, [this] {
+            fill();
+            redrawCrossCorrelation();
+        });
+    }
+    m_workbench.bindButton(evaluate, Action::Evaluate);
+    m_acf->setEmptyText(
+        tr("Learn the correction models (Residual model tab) to see the residuals' autocorrelation"));
+    m_psd->setEmptyText(tr("… and their spectrum"));
+    m_scatter->setEmptyText(tr("Open data to see where in the operating range the physics model errs"));
+    m_ccf->setEmptyText(tr("Run Discover to see what the error moves with"));
+    m_psd->setHintVisible(false);
+    m_scatter->setHintVisible(false);
+    m_ccf->setHintVisible(false);
 }
 
 void DiagnosticsPanel::fill() {
     const auto& ev = m_workbench.latest().evaluate;
     if (!ev) {
+        m_models->clear();
+        m_acf->clearCurves();
+        m_psd->clearCurves();
+        m_acf->rescale();
+        m_psd->rescale();
+        m_tests->setText(tr("Evaluate a trained model to see its residuals."));
         return;
     }
     m_models->blockSignals(true);
     m_models->clear();
     for (const auto& m : ev->diagnostics.models) {
-        auto* item = new QListWidgetItem(QString::fromStdString(m.name), m_models);
+        auto* item = new QListWidgetItem(modelDisplayName(m.name), m_models);
+        item->setData(Qt::UserRole, modelDisplayName(m.name));
         item->setFlags(Qt::ItemIsUserCheckable | Qt::ItemIsEnabled);
         item->setCheckState(m.name == "pbm" || m.name == "pgrl_cc" ? Qt::Checked : Qt::Unchecked);
     }
@@ -106,7 +130,7 @@ void DiagnosticsPanel::fill() {
             mean += r / static_cast<double>(std::max<std::size_t>(1, m.moistureResidual.size()));
         }
         lines << tr("%1: Ljung-Box p %2, residual mean %3 % wb")
-                     .arg(QString::fromStdString(m.name))
+                     .arg(modelDisplayName(m.name))
                      .arg(m.moisture.ljungBoxP, 0, 'g', 3)
                      .arg(mean, 0, 'f', 4);
     }
@@ -133,7 +157,7 @@ void DiagnosticsPanel::redraw() {
             lag << static_cast<double>(k);
             acf << m.acf[k];
         }
-        m_acf->addCurve(0, QString::fromStdString(m.name), lag, acf, modelColour(m.name), Qt::SolidLine, 1.6);
+        m_acf->addCurve(0, modelDisplayName(m.name), lag, acf, modelColour(m.name), Qt::SolidLine, 1.6);
         if (m.hasPsd) {
             QVector<double> f, p;
             for (std::size_t k = 1; k < m.psdFrequencyHz.size(); ++k) { // k = 0 is f = 0 (log axis)
@@ -142,7 +166,7 @@ void DiagnosticsPanel::redraw() {
             }
             m_psd->addCurve(0,
                             tr("%1 (%2 % below 0.01 Hz)")
-                                .arg(QString::fromStdString(m.name))
+                                .arg(modelDisplayName(m.name))
                                 .arg(100 * m.lowFrequencyShareBelow0p01Hz, 0, 'f', 0),
                             f, p, modelColour(m.name));
         }

@@ -1,5 +1,6 @@
 #include "discovery/DiscoverPanel.h"
 
+#include "common/DisplayNames.h"
 #include "common/PlotStack.h"
 #include "common/Series.h"
 #include "common/WidgetHelpers.h"
@@ -9,6 +10,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QTextBrowser>
@@ -60,12 +62,21 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
     connect(run, &QPushButton::clicked, &m_workbench, &Workbench::discover);
     connect(m_extend, &QPushButton::clicked, this, [this] {
         if (const auto& d = m_workbench.latest().discover) {
-            m_workbench.setModel(d->extendedModel);
+            const auto retrain =
+                m_workbench.confirmInvalidation(this, tr("Extend the model"), &d->extendedModel);
+            if (!retrain) {
+                return;
+            }
+            m_workbench.setModel(d->extendedModel, tr("the model was extended by discovery"), *retrain);
             m_extend->setEnabled(false);
             m_verdict->setText(m_verdict->text() + tr(" The model is extended."));
         }
     });
     connect(&m_workbench, &Workbench::discovered, this, &DiscoverPanel::show);
+    connect(&m_workbench, &Workbench::dataChanged, this, &DiscoverPanel::show);
+    connect(&m_workbench, &Workbench::resultsRestored, this, &DiscoverPanel::show);
+    m_plots->setEmptyText(tr("Run Discover to see the physics model's error over the batches"));
+    m_workbench.bindButton(run, Action::Discover);
 }
 
 namespace {
@@ -150,11 +161,72 @@ QString rejectionText(const std::string& code) {
     if (code == "below_floor") {
         return DiscoverPanel::tr("it is below what the instruments can tell (practical floor)");
     }
+    if (code == "no_held_out_gain") {
+        return DiscoverPanel::tr("it does not predict the held-out part clearly better (too small a share of "
+                                 "the error, or not significant)");
+    }
     if (code == "line_dynamics") {
         return DiscoverPanel::tr("the outlet temperature lags the model as much: the line is slower than the "
                                  "model, not the meter");
     }
     return DiscoverPanel::tr("no clear held-out gain");
+}
+
+/// Discovery's notes on the data (DiscoveryData.cpp, Discovery.cpp), worded in the GUI's language
+/// from their fixed forms; a note of a newer engine is shown as it is.
+QString noteText(const std::string& note) {
+    const QString n = QString::fromStdString(note);
+    const auto starts = [&](const char* prefix) { return n.startsWith(QLatin1String(prefix)); };
+    const auto numbers = [&] {
+        static const QRegularExpression number(QStringLiteral("[-+]?[0-9]*\\.?[0-9]+(?:[eE][-+]?[0-9]+)?"));
+        QStringList found;
+        for (auto it = number.globalMatch(n); it.hasNext();) {
+            found << it.next().captured(0);
+        }
+        return found;
+    };
+    if (starts("X_hdt_pct is not measured")) {
+        return DiscoverPanel::tr(
+            "X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor "
+            "causes cannot be told from tube causes; only the outlet channels are used.");
+    }
+    if (starts("T_hdt_C is not measured")) {
+        return DiscoverPanel::tr("T_hdt_C is not measured: the tube-outlet temperature is not used.");
+    }
+    if (starts("air_speed_m_s is constant")) {
+        return DiscoverPanel::tr(
+            "air_speed_m_s is constant (not measured?): the air cooling along the tube is "
+            "fitted with that one value.");
+    }
+    if (starts("the line's outlet mixing") && !numbers().isEmpty()) {
+        return DiscoverPanel::tr(
+                   "The line's outlet mixing (belt and winnower): a first-order lag of %1 s fitted "
+                   "with h_HDT and k_HDT (0: plug flow).")
+            .arg(numbers().first());
+    }
+    if (starts("the inlet gauge's normal scatter") && numbers().size() >= 2) {
+        return DiscoverPanel::tr(
+                   "The inlet gauge's normal scatter: %1 % of X_in's fast variation (%2 % wb) is taken "
+                   "as gauge scatter, not moisture, in the starting model.")
+            .arg(numbers().at(0), numbers().at(1));
+    }
+    return n;
+}
+
+/// Why a round stopped, worded here from the round's numbers (the engine's sentence is English).
+QString roundReasonText(const discovery::Round& rd) {
+    if (rd.named) {
+        return DiscoverPanel::tr("named");
+    }
+    if (rd.best.empty()) {
+        return DiscoverPanel::tr("no candidate passes the screening test");
+    }
+    for (const auto& x : rd.rejected) {
+        if (x.cause == rd.best) {
+            return rejectionText(x.code);
+        }
+    }
+    return DiscoverPanel::tr("no fitted candidate lowers the training loss");
 }
 
 } // namespace
@@ -191,7 +263,7 @@ QString DiscoverPanel::specificityText(const discovery::Finding& f) {
                       ? tr("Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).")
                       : tr("%1 fits these data about as well (held-out error %2 times, p = %3): the data "
                            "cannot tell them apart."))
-                     .arg(QString::fromStdString(l.cause))
+                     .arg(causeDisplayName(l.cause))
                      .arg(l.heldOutLossRatio, 0, 'g', 2)
                      .arg(l.pValue, 0, 'g', 2);
     }
@@ -221,7 +293,7 @@ QString DiscoverPanel::evidenceText(const discovery::Finding& f) {
         .arg(f.biasBefore, 0, 'g', 3)
         .arg(unit)
         .arg(f.trendPerHourBefore, 0, 'g', 3)
-        .arg(QString::fromStdString(f.cause))
+        .arg(causeDisplayName(f.cause))
         .arg(QString::fromUtf8(info.symbol.data(), static_cast<int>(info.symbol.size())))
         .arg(f.value, 0, 'g', 4)
         .arg(QString::fromUtf8(info.unit.data(), static_cast<int>(info.unit.size())))
@@ -239,30 +311,41 @@ QString DiscoverPanel::evidenceText(const discovery::Finding& f) {
 void DiscoverPanel::show() {
     const auto& r = m_workbench.latest().discover;
     if (!r) {
+        // No discovery on this data set (new data loaded, or not run yet): nothing of another's shown.
+        m_verdict->setText(
+            m_workbench.hasData()
+                ? tr("Run discovery on %1 with the current model.").arg(m_workbench.dataSetLabel())
+                : tr("Open a data set, then run discovery on it."));
+        m_extend->setEnabled(false);
+        m_ranking->setRowCount(0);
+        m_gains->setRowCount(0);
+        m_evidence->clear();
+        m_plots->clearCurves();
+        m_plots->rescale();
         return;
     }
     const auto& d = r->discovery;
     QStringList named;
     for (const auto& f : d.findings) {
-        QString name = QString::fromStdString(f.cause);
+        QString name = causeDisplayName(f.cause);
         for (const auto& l : f.lookAlikes) {
             if (!l.ruledOut) {
-                name += tr(" or ") + QString::fromStdString(l.cause);
+                name += tr(" or ") + causeDisplayName(l.cause);
             }
         }
-        named << (f.group.empty() ? name : tr("one of %1 (look-alikes)").arg(name));
+        named << (f.group.empty() ? name : tr("%1, one of: %2").arg(groupDisplayName(f.group), name));
     }
     m_verdict->setText(
-        d.findings.empty()
-            ? tr("Verdict: %1. No mechanism is named.").arg(QString::fromStdString(d.verdict))
-            : tr("Verdict: %1. Named: %2.").arg(QString::fromStdString(d.verdict), named.join(", ")));
+        tr("%1. On %2.")
+            .arg(verdictDisplayText(d.verdict, named.join(tr(", "))), m_workbench.dataSetLabel()));
+    m_verdict->setToolTip(tr("Discovery's verdict key: %1").arg(QString::fromStdString(d.verdict)));
     m_extend->setEnabled(!d.findings.empty());
     m_ranking->setRowCount(static_cast<int>(d.ranking.size()));
     for (std::size_t i = 0; i < d.ranking.size(); ++i) {
         const auto& c = d.ranking[i];
         const QStringList cells{
-            QString::fromStdString(c.cause), QString::number(c.score, 'f', 2),
-            QString::number(c.pHolm, 'g', 3), c.fitted ? tr("yes") : tr("no"),
+            causeDisplayName(c.cause), QString::number(c.score, 'f', 2), QString::number(c.pHolm, 'g', 3),
+            c.fitted ? tr("yes") : tr("no"),
             c.fitted
                 ? QStringLiteral("%1 → %2").arg(c.fitLossBefore, 0, 'g', 4).arg(c.fitLossAfter, 0, 'g', 4)
                 : QStringLiteral("–")};
@@ -272,7 +355,7 @@ void DiscoverPanel::show() {
     QString html;
     for (const auto& f : d.findings) {
         html += QStringLiteral("<h4>%1 = %2 [%3, %4]</h4><p>%5</p>")
-                    .arg(QString::fromStdString(f.cause).toHtmlEscaped())
+                    .arg(causeDisplayName(f.cause).toHtmlEscaped())
                     .arg(f.value, 0, 'g', 4)
                     .arg(f.ci95Low, 0, 'g', 4)
                     .arg(f.ci95High, 0, 'g', 4)
@@ -298,19 +381,18 @@ void DiscoverPanel::show() {
     // Why the selection stopped where it did: each round's best candidate and the decision.
     for (std::size_t i = 0; i < d.rounds.size(); ++i) {
         const auto& rd = d.rounds[i];
-        html +=
-            tr("<p><b>Round %1</b>: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast "
-               "part): %6</p>")
-                .arg(i + 1)
-                .arg(rd.best.empty() ? QStringLiteral("–") : QString::fromStdString(rd.best).toHtmlEscaped())
-                .arg(rd.heldOutPValue, 0, 'g', 2)
-                .arg(100 * rd.explainedFraction, 0, 'f', 0)
-                .arg(100 * rd.explainedFractionFast, 0, 'f', 0)
-                .arg(rd.named ? tr("named") : QString::fromStdString(rd.reason).toHtmlEscaped());
+        html += tr("<p><b>Round %1</b>: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast "
+                   "part): %6</p>")
+                    .arg(i + 1)
+                    .arg(rd.best.empty() ? QStringLiteral("–") : causeDisplayName(rd.best).toHtmlEscaped())
+                    .arg(rd.heldOutPValue, 0, 'g', 2)
+                    .arg(100 * rd.explainedFraction, 0, 'f', 0)
+                    .arg(100 * rd.explainedFractionFast, 0, 'f', 0)
+                    .arg(roundReasonText(rd).toHtmlEscaped());
         for (const auto& x : rd.rejected) {
-            html += tr("<p>&nbsp;&nbsp;Not named: %1, because %2.</p>")
-                        .arg(QString::fromStdString(x.cause).toHtmlEscaped(),
-                             rejectionText(x.code).toHtmlEscaped());
+            html +=
+                tr("<p>&nbsp;&nbsp;Not named: %1, because %2.</p>")
+                    .arg(causeDisplayName(x.cause).toHtmlEscaped(), rejectionText(x.code).toHtmlEscaped());
         }
     }
     if (!d.bounds.empty()) {
@@ -318,7 +400,7 @@ void DiscoverPanel::show() {
         for (const auto& b : d.bounds) {
             const auto& info = properties::info(b.parameter);
             items << QStringLiteral("%1: %2 ∈ [%3, %4] %5")
-                         .arg(QString::fromStdString(b.cause),
+                         .arg(causeDisplayName(b.cause),
                               QString::fromUtf8(info.symbol.data(), int(info.symbol.size())))
                          .arg(b.ci95Low, 0, 'g', 3)
                          .arg(b.ci95High, 0, 'g', 3)
@@ -349,7 +431,7 @@ void DiscoverPanel::show() {
             "model; the findings stand.</b></p>");
     }
     for (const auto& n : d.notes) {
-        html += QStringLiteral("<p><i>%1</i></p>").arg(QString::fromStdString(n).toHtmlEscaped());
+        html += QStringLiteral("<p><i>%1</i></p>").arg(noteText(n).toHtmlEscaped());
     }
     m_evidence->setHtml(html.isEmpty() ? tr("<p>No structure that a mechanism explains.</p>") : html);
     m_gains->setRowCount(0);

@@ -1,5 +1,7 @@
 #include "mpc/MpcPanel.h"
 
+#include "common/DisplayNames.h"
+#include "common/ModelStateBar.h"
 #include "common/PlotStack.h"
 #include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
@@ -43,11 +45,13 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
            "hidden mechanisms switched on mid-run, noise. Edits are checked when you run."));
     auto* controllers = new QHBoxLayout;
     for (int i = 0; i < 5; ++i) {
-        m_controllers[i] = new QCheckBox(QString::fromLatin1(control::controllerName(kKinds[i])));
+        m_controllers[i] = new QCheckBox(controllerDisplayName(kKinds[i]));
         m_controllers[i]->setChecked(true);
         controllers->addWidget(m_controllers[i]);
     }
+    m_state = new ModelStateBar(m_workbench);
     auto* run = new QPushButton(tr("Run scenario"));
+    m_workbench.bindButton(run, Action::Mpc);
     m_prediction = new QComboBox;
     m_prediction->setToolTip(tr("Show the horizon the controllers predicted at this decision"));
     m_note = new QLabel(tr("Runs the scenario against the virtual plant once per controller."));
@@ -60,12 +64,15 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
 
     auto* left = new QWidget;
     auto* ll = new QVBoxLayout(left);
+    ll->addWidget(m_state);
     auto* top = new QHBoxLayout;
     top->addWidget(m_scenario, 1);
     top->addWidget(openFile);
     ll->addLayout(top);
     ll->addWidget(m_editor, 2);
-    ll->addLayout(controllers);
+    auto* controllerBox = new QWidget;
+    controllerBox->setLayout(controllers);
+    ll->addWidget(controllerBox);
     auto* runRow = new QHBoxLayout;
     runRow->addWidget(run);
     runRow->addWidget(new QLabel(tr("prediction at")));
@@ -90,16 +97,23 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     connect(m_scenario, &QComboBox::currentTextChanged, this, load);
     load();
     connect(openFile, &QPushButton::clicked, this, [this] {
-        const QString p =
-            QFileDialog::getOpenFileName(this, tr("Open scenario"), {}, tr("Scenarios (*.json)"));
+        const QString p = askOpenFile(this, tr("Open scenario"), tr("Scenarios (*.json)"));
         QFile f(p);
         if (!p.isEmpty() && f.open(QIODevice::ReadOnly)) {
             m_editor->setPlainText(QString::fromUtf8(f.readAll()));
         }
     });
     connect(run, &QPushButton::clicked, this, &MpcPanel::run);
+    connect(&m_workbench, &Workbench::modelStateChanged, this, &MpcPanel::offerControllers);
+    offerControllers();
     connect(m_prediction, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &MpcPanel::show);
-    connect(&m_workbench, &Workbench::mpcFinished, this, [this] {
+    m_plots->setEmptyText(tr("Run a scenario to see each controller's outlet moisture and hot-air setpoint"));
+    connect(&m_workbench, &Workbench::resultsRestored, this, &MpcPanel::showRun);
+    connect(&m_workbench, &Workbench::mpcFinished, this, &MpcPanel::showRun);
+}
+
+void MpcPanel::showRun() {
+    {
         m_prediction->blockSignals(true);
         m_prediction->clear();
         if (const auto& r = m_workbench.latest().mpc) {
@@ -113,7 +127,7 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
         }
         m_prediction->blockSignals(false);
         show();
-    });
+    }
 }
 
 void MpcPanel::run() {
@@ -132,7 +146,7 @@ void MpcPanel::run() {
     o.scenarioPath = m_tempScenario.toStdString();
     o.closedLoop.controllers.clear();
     for (int i = 0; i < 5; ++i) {
-        if (m_controllers[i]->isChecked()) {
+        if (m_controllers[i]->isChecked() && m_controllers[i]->isEnabled()) {
             o.closedLoop.controllers.push_back(kKinds[i]);
         }
     }
@@ -142,6 +156,30 @@ void MpcPanel::run() {
     }
     m_note->setText(tr("Running…"));
     m_workbench.runMpc(o);
+}
+
+void MpcPanel::offerControllers() {
+    // Exactly the models that exist: a stale or absent one is shown, unticked, with why.
+    for (int i = 0; i < 5; ++i) {
+        const auto kind = kKinds[i];
+        const bool exists = m_workbench.hasController(kind);
+        const auto& part = m_workbench.learntPart(kind);
+        QString label = controllerDisplayName(kind);
+        QString tip = tr("Contract key: %1").arg(QString::fromLatin1(control::controllerName(kind)));
+        if (!exists && part.state == PartState::Stale) {
+            label = tr("%1 (stale)").arg(label);
+            tip = tr("Learnt before %1: retrain it to run it.").arg(part.staleBecause);
+        } else if (!exists) {
+            label = tr("%1 (not learnt)").arg(label);
+            tip = tr("Learn the correction models on the Residual model tab to run it.");
+        }
+        m_controllers[i]->setText(label);
+        m_controllers[i]->setToolTip(tip);
+        if (m_controllers[i]->isEnabled() != exists) {
+            m_controllers[i]->setChecked(exists);
+        }
+        m_controllers[i]->setEnabled(exists);
+    }
 }
 
 void MpcPanel::show() {
@@ -160,9 +198,9 @@ void MpcPanel::show() {
         const auto& m = run.metrics;
         const bool pi = run.kind == control::ControllerKind::Pi;
         const QStringList cells{
-            QString::fromLatin1(control::controllerName(run.kind)),
+            controllerDisplayName(run.kind),
             run.ran ? QString::number(m.iaePctS, 'f', 1) : tr("skipped"),
-            run.ran ? QString::number(m.effortK2, 'f', 1) : QString::fromStdString(run.skippedReason),
+            run.ran ? QString::number(m.effortK2, 'f', 1) : tr("the model holds no such prediction model"),
             run.ran ? QString::number(m.violationPct, 'f', 1) : QString(),
             run.ran && !pi ? QString::number(m.solveMsMedian, 'f', 2) : QStringLiteral("–"),
             run.ran && !pi ? QStringLiteral("%1 / %2").arg(m.fallbacks).arg(m.decisions)
@@ -187,7 +225,7 @@ void MpcPanel::show() {
             m_plots->addCurve(0, QString(), t, lo, Qt::gray, Qt::DotLine, 1.0);
             setpointDrawn = true;
         }
-        const QString name = QString::fromLatin1(control::controllerName(run.kind));
+        const QString name = controllerDisplayName(run.kind);
         m_plots->addCurve(0, name, t, QVector<double>(run.xOutTruePct.begin(), run.xOutTruePct.end()), colour,
                           Qt::SolidLine, run.kind == control::ControllerKind::PgrlCc ? 1.8 : 1.1);
         m_plots->addCurve(1, name, t, QVector<double>(run.hotAirSetpointC.begin(), run.hotAirSetpointC.end()),
@@ -210,7 +248,7 @@ void MpcPanel::show() {
     m_note->setText(
         tr("%1. IAE and violations on the product's true outlet moisture; the plant's own gain is %2 % "
            "wb/K.")
-            .arg(QString::fromStdString(r->ending.message))
+            .arg(mpcEndingText(cl))
             .arg(cl.plantGainPctPerK, 0, 'f', 4));
 }
 

@@ -11,6 +11,7 @@ class QTableWidget;
 
 namespace drytwin::widgets {
 
+class ModelStateBar;
 class PlotStack;
 class Workbench;
 
@@ -26,14 +27,21 @@ public:
     QPlainTextEdit* editor() const { return m_editor; }
     QComboBox* scenarios() const { return m_scenario; }
     void run();
+    /// @brief The controller tick boxes, one per controller, enabled where its model exists.
+    QCheckBox* controllerBox(int i) const { return m_controllers[i]; }
+    ModelStateBar* modelState() const { return m_state; }
 
 private:
     void show();
+    void offerControllers();
+    /// The latest run: the decisions to show predictions at, then the plots and table.
+    void showRun();
 
     Workbench& m_workbench;
     QComboBox* m_scenario = nullptr;
     QPlainTextEdit* m_editor = nullptr;
     QCheckBox* m_controllers[5] = {};
+    ModelStateBar* m_state = nullptr;
     QComboBox* m_prediction = nullptr;
     QTableWidget* m_table = nullptr;
     PlotStack* m_plots = nullptr;

@@ -1,5 +1,7 @@
 #include "residual/ResidualPanel.h"
 
+#include "common/DisplayNames.h"
+#include "common/ModelStateBar.h"
 #include "common/PlotStack.h"
 #include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
@@ -27,13 +29,24 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     m_lags->addItems({tr("chosen by validation (16, 32, 60)"), QStringLiteral("8"), QStringLiteral("16"),
                       QStringLiteral("32"), QStringLiteral("60")});
     m_stability = new QComboBox;
-    m_stability->addItems(
-        {tr("Eq. 30: constrained fit with certificate"), tr("eigenvalues pulled in after the fit")});
-    m_projection = new QCheckBox(tr("orthogonal projection P⊥ (Eq. 27)"));
+    m_stability->addItems({tr("guaranteed stable (fit under a stability certificate)"),
+                           tr("stabilised after the fit (eigenvalues pulled in)")});
+    m_stability->setToolTip(tr("Paper Eq. 30: the correction model's state matrix A is fitted under the "
+                               "constraint α²P − AᵀPA ≻ 0 with a certificate P; the alternative pulls A's "
+                               "eigenvalues inside the unit circle after an unconstrained fit."));
+    m_projection = new QCheckBox(tr("keep the correction out of the hot-air direction"));
+    m_projection->setToolTip(tr("Paper Eq. 27: the orthogonal projection P⊥ removes from the correction what "
+                                "the manipulated input explains, so that the control gain stays the physics "
+                                "model's."));
     m_projection->setChecked(true);
-    auto* train = new QPushButton(tr("Train PGRL-CC and the baselines"));
+    auto* train = new QPushButton(tr("Learn the correction models"));
+    train->setToolTip(tr("Trains PGRL-CC (paper Eqs. 20–30) on the chronological 70 % of the data, and the "
+                         "two models it is compared with: the input-only correction and an LSTM"));
+    m_workbench.bindButton(train, Action::Train);
+    m_lags->setToolTip(
+        tr("How many past seconds of the error the correction model sees (paper: residual lags)"));
     auto* form = new QFormLayout;
-    form->addRow(tr("residual lags"), m_lags);
+    form->addRow(tr("memory of the error [s]"), m_lags);
     form->addRow(tr("stability"), m_stability);
     form->addRow(QString(), m_projection);
     form->addRow(QString(), train);
@@ -44,8 +57,9 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     m_gains = new QLabel(tr("Run a What-if MPC scenario to compare each model's steady gain of X_out to the "
                             "hot air with the plant's."));
     m_gains->setWordWrap(true);
-    m_metrics = makeResultTable({tr("Model"), tr("MAE X_out [% wb]"), tr("R² X_out"), tr("MAE T_out [°C]"),
-                                 tr("skill 1 step"), tr("skill 30 steps")});
+    m_metrics = makeResultTable({tr("Model"), tr("MAE X_out\n[% wb]"), tr("R² X_out\n[-]"),
+                                 tr("MAE T_out\n[°C]"), tr("skill\n1 step"), tr("skill\n30 steps")});
+    m_state = new ModelStateBar(m_workbench);
     m_eigen = new PlotStack;
     m_eigen->addPlot(tr("imaginary part"));
     m_eigen->setXTitle(tr("real part"));
@@ -56,8 +70,12 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
 
     auto* runAblation = new QPushButton(tr("Ablation (paper Table 3)"));
     runAblation->setToolTip(tr("Train and evaluate every variant of Table 3 on this model (a few minutes)"));
-    m_ablation = makeResultTable({tr("Variant"), tr("MAE X_out [% wb]"), tr("R² X_out"), tr("MAE T_out [°C]"),
-                                  tr("MAE X_out, extrapolation")});
+    m_workbench.bindButton(runAblation, Action::Ablation);
+    m_ablation = makeResultTable({tr("Variant"), tr("MAE X_out\n[% wb]"), tr("R² X_out\n[-]"),
+                                  tr("MAE T_out\n[°C]"), tr("MAE X_out,\nextrapolation")});
+    m_eigen->setEmptyText(tr("Learn the correction models to see the eigenvalues of their state matrix"));
+    m_skill->setEmptyText(tr("Learn the correction models to see their skill by forecast horizon"));
+    m_eigen->setHintVisible(false);
     // Sensible empty axes until a model is evaluated (a log axis would autoscale to 1e-100).
     m_eigen->plot(0)->setAxisScale(QwtPlot::xBottom, -2.5, 2.5);
     m_eigen->plot(0)->setAxisScale(QwtPlot::yLeft, -1.1, 1.1);
@@ -65,6 +83,7 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     m_skill->plot(0)->setAxisScale(QwtPlot::yLeft, 0, 2.5);
     auto* left = new QWidget;
     auto* ll = new QVBoxLayout(left);
+    ll->addWidget(m_state);
     ll->addLayout(form);
     ll->addWidget(m_note);
     ll->addWidget(m_metrics, 1);
@@ -82,9 +101,19 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     layout->addWidget(split);
     connect(train, &QPushButton::clicked, this, &ResidualPanel::train);
     connect(&m_workbench, &Workbench::evaluated, this, &ResidualPanel::showEvaluation);
+    // Results of another data set or model are not shown as these.
+    connect(&m_workbench, &Workbench::dataChanged, this, [this] {
+        showEvaluation();
+        showAblation();
+    });
     connect(runAblation, &QPushButton::clicked, &m_workbench, &Workbench::ablation);
     connect(&m_workbench, &Workbench::ablationFinished, this, &ResidualPanel::showAblation);
     connect(&m_workbench, &Workbench::mpcFinished, this, &ResidualPanel::showGains);
+    connect(&m_workbench, &Workbench::resultsRestored, this, [this] {
+        showEvaluation();
+        showAblation();
+        showGains();
+    });
 }
 
 QString ResidualPanel::gainsText(const control::ClosedLoopResult& result) {
@@ -97,7 +126,7 @@ QString ResidualPanel::gainsText(const control::ClosedLoopResult& result) {
         const double g = run.metrics.gainPctPerKMedian;
         const double off = plant != 0 ? 100.0 * (g / plant - 1.0) : 0.0;
         parts << tr("%1 %2 (%3 %)")
-                     .arg(QString::fromLatin1(control::controllerName(run.kind)))
+                     .arg(controllerDisplayName(run.kind))
                      .arg(g, 0, 'f', 4)
                      .arg(off >= 0 ? QStringLiteral("+%1").arg(off, 0, 'f', 0)
                                    : QString::number(off, 'f', 0));
@@ -138,6 +167,17 @@ void ResidualPanel::train() {
 void ResidualPanel::showEvaluation() {
     const auto& ev = m_workbench.latest().evaluate;
     if (!ev) {
+        m_metrics->setRowCount(0);
+        m_skill->clearCurves();
+        m_eigen->clearCurves();
+        m_skill->rescale();
+        m_eigen->rescale();
+        m_note->setText(
+            m_workbench.hasData()
+                ? tr("Learn the correction models on %1: they train on the chronological 70 % "
+                     "and are scored on the rest.")
+                      .arg(m_workbench.dataSetLabel())
+                : tr("Open a data set first (File ▸ Open data set folder…, or the bundled demo)."));
         return;
     }
     const auto& e = ev->evaluation;
@@ -152,18 +192,23 @@ void ResidualPanel::showEvaluation() {
     for (std::size_t i = 0; i < e.models.size(); ++i) {
         const auto& m = e.models[i];
         const double s30 = h30 < m.skillMoistureByHorizon.size() ? m.skillMoistureByHorizon[h30] : NAN;
-        const QStringList cells{
-            QString::fromStdString(m.name),           QString::number(m.moisture.mae, 'f', 4),
-            QString::number(m.moisture.r2, 'f', 3),   QString::number(m.temperature.mae, 'f', 4),
-            QString::number(m.skillMoisture, 'f', 3), QString::number(s30, 'f', 3)};
+        const QStringList cells{modelDisplayName(m.name),
+                                QString::number(m.moisture.mae, 'f', 4),
+                                QString::number(m.moisture.r2, 'f', 3),
+                                QString::number(m.temperature.mae, 'f', 4),
+                                QString::number(m.skillMoisture, 'f', 3),
+                                QString::number(s30, 'f', 3)};
         setTableRow(m_metrics, static_cast<int>(i), cells);
+        m_metrics->item(static_cast<int>(i), 0)
+            ->setToolTip(tr("Key: %1").arg(QString::fromStdString(m.name)));
+        m_metrics->item(static_cast<int>(i), 2)->setToolTip(r2Explanation(m.moisture.r2));
         QVector<double> h, s;
         for (std::size_t k = 0; k < e.horizons.size() && k < m.skillMoistureByHorizon.size(); ++k) {
             h << e.horizons[k];
             s << m.skillMoistureByHorizon[k];
         }
         const bool reference = m.name == "persistence" || m.name == "pbm_residual_hold";
-        m_skill->addCurve(0, QString::fromStdString(m.name), h, s, modelColour(m.name),
+        m_skill->addCurve(0, modelDisplayName(m.name), h, s, modelColour(m.name),
                           reference ? Qt::DashLine : Qt::SolidLine, m.name == "pgrl_cc" ? 2.2 : 1.3);
     }
     m_metrics->resizeColumnsToContents();
@@ -228,10 +273,13 @@ void ResidualPanel::showEvaluation() {
                     .arg(slowest, 0, 'g', 3)
                     .arg(slowest > 0 ? std::log(2.0) / slowest : INFINITY, 0, 'f', 0);
     }
-    m_note->setText(tr("Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last "
-                       "measurement held, and the PBM with its last error held).")
-                        .arg(e.testRows) +
-                    rates);
+    m_note->setText(
+        tr("On %1, held-out part: %2 rows. Skill below 1 beats both reference predictors (the last "
+           "measurement held, and the physics model with its last error held). R² below 0 means "
+           "a model predicts worse than the batch's mean (hover an R² for what it says).")
+            .arg(m_workbench.dataSetLabel())
+            .arg(e.testRows) +
+        rates);
 }
 
 } // namespace drytwin::widgets
@@ -241,6 +289,7 @@ namespace drytwin::widgets {
 void ResidualPanel::showAblation() {
     const auto& a = m_workbench.latest().ablation;
     if (!a) {
+        m_ablation->setRowCount(0);
         return;
     }
     m_ablation->setRowCount(static_cast<int>(a->rows.size()));

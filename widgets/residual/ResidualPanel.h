@@ -11,6 +11,7 @@ class QTableWidget;
 
 namespace drytwin::widgets {
 
+class ModelStateBar;
 class PlotStack;
 class Workbench;
 
@@ -47,6 +48,7 @@ private:
     PlotStack* m_skill = nullptr;
     QLabel* m_note = nullptr;
     QLabel* m_gains = nullptr;
+    ModelStateBar* m_state = nullptr;
     bool m_quick = false;
 };
 

@@ -9,6 +9,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QCryptographicHash>
 #include <QDateTime>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -18,14 +19,17 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QSettings>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QStandardItemModel>
 #include <QStandardPaths>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -110,10 +114,11 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_scenario->setCurrentText(QString::fromLatin1(kDefaultTrainingScenario));
     m_scenario->setToolTip(tr("The line's conditions: initial levels, load changes, seed (docs/mpc.md)"));
     m_start = new QPushButton(tr("Start session"));
-    m_instructor = new QCheckBox(tr("Instructor view"));
-    m_instructor->setToolTip(
-        tr("Shows the instructor's controls, the faults, the true moisture and the score; "
-           "hide it before handing the screen to the trainee"));
+    // The instructor's controls, the faults, the true moisture and the score live in a window of
+    // their own (on the instructor's screen), never on the trainee's; a password can guard it.
+    m_instructor = new QPushButton(tr("Instructor window…"));
+    m_instructor->setToolTip(tr("Opens the instructor's window: clock, snapshots, faults, the true moisture "
+                                "and the score. Not on the trainee's screen."));
     m_clock = new QLabel(tr("No session"));
     QFont big = m_clock->font();
     big.setPointSizeF(big.pointSizeF() * 1.4);
@@ -139,6 +144,8 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     }
     m_controllerNote = new QLabel;
     m_controllerNote->setWordWrap(true);
+    connect(&m_workbench, &Workbench::modelStateChanged, this, &TrainingPanel::offerControllers);
+    offerControllers();
     auto* operatorBox = new QGroupBox(tr("Operator"));
     auto* of = new QFormLayout(operatorBox);
     of->addRow(tr("Speed"), m_speed);
@@ -161,9 +168,14 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_answer = new QPushButton(tr("Name the cause"));
     m_answers = new QListWidget;
     m_answers->setMaximumHeight(64);
+    m_pause = new QPushButton(tr("Pause"));
+    m_pause->setToolTip(tr("Stops the line's clock while you think; press again to continue"));
     auto* traineeBox = new QGroupBox(tr("Trainee"));
     auto* tl = new QVBoxLayout(traineeBox);
-    tl->addWidget(m_diagnose);
+    auto* traineeRow = new QHBoxLayout;
+    traineeRow->addWidget(m_diagnose, 1);
+    traineeRow->addWidget(m_pause);
+    tl->addLayout(traineeRow);
     auto* causeRow = new QHBoxLayout;
     causeRow->addWidget(m_cause, 1);
     causeRow->addWidget(m_answer);
@@ -235,6 +247,19 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     fileRow->addWidget(save);
     fileRow->addWidget(open);
     filesLayout->addLayout(fileRow);
+    auto* password = new QPushButton(tr("Set instructor password…"));
+    password->setToolTip(tr("Asked before the instructor window opens (empty: no password)"));
+    filesLayout->addWidget(password);
+    connect(password, &QPushButton::clicked, this, [this] {
+        bool ok = false;
+        const QString given =
+            QInputDialog::getText(m_instructorWindow, tr("Instructor"),
+                                  tr("New instructor password (empty: none):"), QLineEdit::Password, {}, &ok);
+        if (ok) {
+            QSettings().setValue(QStringLiteral("training/instructorPasswordHash"),
+                                 given.isEmpty() ? QString() : passwordHash(given));
+        }
+    });
     filesLayout->addStretch(1);
     pages->addTab(filePage, tr("Session file"));
     il->addWidget(pages);
@@ -246,7 +271,6 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     auto* sl = new QVBoxLayout(side);
     sl->addWidget(operatorBox);
     sl->addWidget(traineeBox);
-    sl->addWidget(m_instructorBox);
     sl->addWidget(m_note);
     sl->addStretch(1);
     auto* scroll = new QScrollArea;
@@ -266,8 +290,21 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_bandLow = m_plots->addCurve(0, QString(), none, none, Qt::gray, Qt::DotLine, 1.0);
     m_xSetpoint = m_plots->addCurve(0, tr("setpoint"), none, none, Qt::black, Qt::DashLine, 1.4);
     m_xMeasured = m_plots->addCurve(0, tr("X_out measured"), none, none, seriesColour(0), Qt::SolidLine, 1.3);
-    m_xTrue = m_plots->addCurve(0, tr("X_out true (instructor)"), none, none, QColor(200, 40, 40),
-                                Qt::SolidLine, 1.3);
+    // The instructor's window: its controls beside the true outlet moisture against the measured.
+    m_instructorWindow = new QWidget(this, Qt::Window);
+    m_instructorWindow->setWindowTitle(tr("DryTwin — instructor"));
+    m_instructorWindow->resize(980, 640);
+    m_truthPlots = new PlotStack;
+    m_truthPlots->addPlot(tr("X_out [% wb]"));
+    m_truthPlots->setXTitle(tr("session time [min]"));
+    m_truthPlots->setHintVisible(false);
+    m_truthMeasured =
+        m_truthPlots->addCurve(0, tr("X_out measured"), none, none, seriesColour(0), Qt::SolidLine, 1.3);
+    m_xTrue =
+        m_truthPlots->addCurve(0, tr("X_out true"), none, none, QColor(200, 40, 40), Qt::SolidLine, 1.3);
+    auto* instructorLayout = new QHBoxLayout(m_instructorWindow);
+    instructorLayout->addWidget(m_truthPlots, 1);
+    instructorLayout->addWidget(m_instructorBox);
     m_hotSetpoint =
         m_plots->addCurve(1, tr("T_hot setpoint"), none, none, seriesColour(4), Qt::DashLine, 1.2);
     m_hot = m_plots->addCurve(1, tr("T_hot"), none, none, seriesColour(2));
@@ -297,7 +334,27 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     layout->addWidget(split, 1);
 
     connect(m_start, &QPushButton::clicked, this, &TrainingPanel::startSession);
-    connect(m_instructor, &QCheckBox::toggled, this, &TrainingPanel::setInstructorView);
+    connect(m_instructor, &QPushButton::clicked, this, [this] {
+        // A password, when the instructor set one (View ▸ Training ▸ set in the instructor window).
+        const QString hash = QSettings().value(QStringLiteral("training/instructorPasswordHash")).toString();
+        if (!hash.isEmpty() && !qEnvironmentVariableIsSet("DRYTWIN_NO_MODAL")) {
+            bool ok = false;
+            const QString given = QInputDialog::getText(this, tr("Instructor"), tr("Instructor password:"),
+                                                        QLineEdit::Password, {}, &ok);
+            if (!ok || passwordHash(given) != hash) {
+                m_note->setText(tr("Wrong password: the instructor window stays closed."));
+                return;
+            }
+        }
+        setInstructorView(true);
+    });
+    connect(m_pause, &QPushButton::clicked, this, [this] {
+        if (m_runner->frame().frozen) {
+            m_runner->resume();
+        } else {
+            m_runner->freeze();
+        }
+    });
     connect(m_speed, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
             [this] { m_runner->setSpeed(m_speed->currentData().toDouble()); });
     connect(applySetpoint, &QPushButton::clicked, this,
@@ -352,14 +409,18 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
         m_runner->injectFault(m, m_faultStrength->value(), m_faultDelay->value());
     });
     connect(save, &QPushButton::clicked, this, [this] {
-        const QString folder = QFileDialog::getExistingDirectory(this, tr("Save the session into a folder"));
+        // A new folder named here is created (a folder dialog refuses one that does not exist yet).
+        const QString folder =
+            askSaveFile(this, tr("Save the session as a folder"),
+                        QStringLiteral("training-%1")
+                            .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmm"))),
+                        tr("Session folder (*)"));
         if (!folder.isEmpty()) {
             saveSession(folder);
         }
     });
     connect(open, &QPushButton::clicked, this, [this] {
-        const QString file =
-            QFileDialog::getOpenFileName(this, tr("Open a training session"), {}, tr("Sessions (*.json)"));
+        const QString file = askOpenFile(this, tr("Open a training session"), tr("Sessions (*.json)"));
         if (!file.isEmpty()) {
             openSession(file);
         }
@@ -434,19 +495,42 @@ void TrainingPanel::openSession(const QString& sessionFile) {
 }
 
 void TrainingPanel::setInstructorView(bool on) {
-    m_instructor->blockSignals(true);
-    m_instructor->setChecked(on);
-    m_instructor->blockSignals(false);
-    m_instructorBox->setVisible(on);
-    // The truth is the instructor's: off the trainee's plot and legend alike.
-    m_xTrue->setVisible(on);
-    m_xTrue->setItemAttribute(QwtPlotItem::Legend, on);
-    m_plots->plot(0)->updateLegend();
-    m_plots->plot(0)->replot();
+    m_instructorWindow->setVisible(on);
+    if (on) {
+        m_instructorWindow->raise();
+    }
+}
+
+void TrainingPanel::offerControllers() {
+    // Exactly the models that exist; a stale or missing one is listed, greyed, with why.
+    auto* model = qobject_cast<QStandardItemModel*>(m_controller->model());
+    for (int i = 0; i < m_controller->count(); ++i) {
+        const auto kind = static_cast<control::ControllerKind>(m_controller->itemData(i).toInt());
+        const bool exists = m_workbench.hasController(kind);
+        QString label = controllerLabel(kind);
+        if (!exists) {
+            label = m_workbench.learntPart(kind).state == PartState::Stale
+                        ? tr("%1 (stale: retrain)").arg(label)
+                        : tr("%1 (not learnt)").arg(label);
+        }
+        m_controller->setItemText(i, label);
+        if (model && model->item(i)) {
+            model->item(i)->setEnabled(exists);
+        }
+    }
+    if (!m_workbench.hasController(
+            static_cast<control::ControllerKind>(m_controller->currentData().toInt()))) {
+        m_controller->setCurrentIndex(0); // the PI loop always exists
+    }
 }
 
 bool TrainingPanel::instructorView() const {
-    return m_instructor->isChecked();
+    return m_instructorWindow->isVisible();
+}
+
+QString TrainingPanel::passwordHash(const QString& password) {
+    return QString::fromLatin1(
+        QCryptographicHash::hash(password.toUtf8(), QCryptographicHash::Sha256).toHex());
 }
 
 void TrainingPanel::setLongWork(bool on) {
@@ -481,6 +565,7 @@ void TrainingPanel::showFrame() {
     m_clock->setText(
         tr("%1  t = %2 / %3  (%4)").arg(f.scenarioName, clockText(f.timeS), clockText(f.endS), state));
     m_freeze->setText(f.frozen ? tr("Resume") : tr("Freeze"));
+    m_pause->setText(f.frozen ? tr("Continue") : tr("Pause"));
     if (!m_setpoint->hasFocus()) {
         m_setpoint->setValue(f.setpointPct);
     }
@@ -560,6 +645,7 @@ void TrainingPanel::redrawPlots() {
         xin << s.xInPct;
     }
     m_xMeasured->setSamples(t, xm);
+    m_truthMeasured->setSamples(t, xm);
     m_xTrue->setSamples(t, xt);
     m_xSetpoint->setSamples(t, sp);
     m_bandHigh->setSamples(t, hi);
@@ -570,6 +656,10 @@ void TrainingPanel::redrawPlots() {
     m_xIn->setSamples(t, xin);
     m_plots->rescale();
     m_plots->setXRange(std::max(0.0, from) / 60.0, std::max(kWindowS, f.timeS) / 60.0);
+    if (m_instructorWindow->isVisible()) {
+        m_truthPlots->rescale();
+        m_truthPlots->setXRange(std::max(0.0, from) / 60.0, std::max(kWindowS, f.timeS) / 60.0);
+    }
 }
 
 } // namespace drytwin::widgets

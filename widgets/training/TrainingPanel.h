@@ -61,6 +61,13 @@ public:
     QLabel* scoreLabel() const { return m_score; }
     QLabel* clockLabel() const { return m_clock; }
     QLabel* noteLabel() const { return m_note; }
+    /// @brief The trainee's pause (the clock stops; the same button continues).
+    QPushButton* pauseButton() const { return m_pause; }
+    /// @brief The instructor's own window (faults, score, the true moisture).
+    QWidget* instructorWindow() const { return m_instructorWindow; }
+    PlotStack* truthPlots() const { return m_truthPlots; }
+    /// @brief The hash an instructor password is kept as (QSettings "training/instructorPasswordHash").
+    static QString passwordHash(const QString& password);
     /// @brief Writes the session into @p folder (asynchronous: the note says when it is done).
     void saveSession(const QString& folder);
     /// @brief Reopens a saved session (replayed to where it ended, frozen).
@@ -80,6 +87,8 @@ private:
     void showFrame();
     void redrawPlots();
     void updateFaultUnit();
+    /// Greys out the controllers whose model does not exist (or is stale).
+    void offerControllers();
     /// Shows progress and Stop while a replay or a run ahead is under way.
     void setLongWork(bool on);
 
@@ -87,7 +96,11 @@ private:
     TrainingRunner* m_runner = nullptr;
     QComboBox* m_scenario = nullptr;
     QPushButton* m_start = nullptr;
-    QCheckBox* m_instructor = nullptr;
+    QPushButton* m_instructor = nullptr;
+    QWidget* m_instructorWindow = nullptr;
+    PlotStack* m_truthPlots = nullptr;
+    QwtPlotCurve* m_truthMeasured = nullptr;
+    QPushButton* m_pause = nullptr;
     QLabel* m_clock = nullptr;
     QComboBox* m_speed = nullptr;
     QDoubleSpinBox* m_setpoint = nullptr;

@@ -4,6 +4,7 @@
 #include "common/Workbench.h"
 
 #include <QComboBox>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -11,6 +12,7 @@
 #include <QTimer>
 #include <QVBoxLayout>
 #include <QVTKOpenGLNativeWidget.h>
+#include <algorithm>
 #include <cmath>
 #include <vtkActor.h>
 #include <vtkBillboardTextActor3D.h>
@@ -172,16 +174,36 @@ void LineView3D::buildScene() {
     m_bar->SetHeight(0.6);
     m_bar->SetPosition(0.02, 0.2); // left, clear of the line
     m_renderer->AddViewProp(m_bar);
-    // Section names above each section.
+    // Section names above each section, in the window's language. VTK's own font has no CJK
+    // glyphs: a font file that has them is used where one is installed (fonts-wqy-zenhei).
     const struct {
-        const char* text;
+        QString text;
         double x, z;
-    } labels[] = {{"drying tube", kTubeLength / 2, 3.2},
-                  {"conveyor", kTubeLength + kBeltLength / 2, 1.2},
-                  {"winnower", kTubeLength + kBeltLength + kWinnowerLength / 2, 2.8}};
+    } labels[] = {{tr("drying tube"), kTubeLength / 2, 3.2},
+                  {tr("conveyor"), kTubeLength + kBeltLength / 2, 1.2},
+                  {tr("winnower"), kTubeLength + kBeltLength + kWinnowerLength / 2, 2.8}};
+    const auto needsCjkFont = [](const QString& t) {
+        return std::any_of(t.begin(), t.end(), [](QChar c) { return c.unicode() >= 0x2E80; });
+    };
+    QString cjkFont;
+    for (const char* candidate : {"/usr/share/fonts/truetype/wqy/wqy-zenhei.ttc",
+                                  "/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc",
+                                  "/usr/share/fonts/truetype/wqy/wqy-microhei.ttc"}) {
+        if (QFileInfo::exists(QString::fromLatin1(candidate))) {
+            cjkFont = QString::fromLatin1(candidate);
+            break;
+        }
+    }
     for (const auto& l : labels) {
         auto text = vtkSmartPointer<vtkBillboardTextActor3D>::New();
-        text->SetInput(l.text);
+        const bool cjk = needsCjkFont(l.text);
+        const QString shown = cjk && cjkFont.isEmpty() ? QString() : l.text; // no tofu boxes
+        text->SetInput(shown.toUtf8().constData());
+        if (cjk && !cjkFont.isEmpty()) {
+            text->GetTextProperty()->SetFontFamily(VTK_FONT_FILE);
+            text->GetTextProperty()->SetFontFile(cjkFont.toUtf8().constData());
+        }
+        m_sectionLabels.push_back(l.text);
         text->SetPosition(l.x, 0, l.z);
         text->GetTextProperty()->SetFontSize(16);
         text->GetTextProperty()->SetColor(0.15, 0.15, 0.2);

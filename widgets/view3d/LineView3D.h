@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QStringList>
 #include <QWidget>
 #include <vtkSmartPointer.h>
 
@@ -26,6 +27,8 @@ class Workbench;
 class LineView3D : public QWidget {
     Q_OBJECT
 public:
+    /// @brief The section names drawn in the 3D view, in the window's language.
+    const QStringList& sectionLabels() const { return m_sectionLabels; }
     explicit LineView3D(Workbench& workbench, QWidget* parent = nullptr);
     ~LineView3D() override;
     /// @brief Shows the line at @p seconds since the batch start.
@@ -51,6 +54,7 @@ private:
     vtkSmartPointer<vtkPolyData> m_parcels;
     vtkSmartPointer<vtkLookupTable> m_lut;
     vtkSmartPointer<vtkScalarBarActor> m_bar;
+    QStringList m_sectionLabels; ///< the 3D section names as drawn (tests read them)
     QComboBox* m_batch = nullptr;
     QComboBox* m_quantity = nullptr;
     QSlider* m_slider = nullptr;

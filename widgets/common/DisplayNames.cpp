@@ -1,0 +1,148 @@
+#include "common/DisplayNames.h"
+
+#include <QCoreApplication>
+#include <map>
+
+namespace drytwin::widgets {
+
+QString controllerDisplayName(control::ControllerKind kind) {
+    switch (kind) {
+    case control::ControllerKind::Pbm:
+        return QCoreApplication::translate("DisplayNames", "Physics model");
+    case control::ControllerKind::PgrlCc:
+        return QCoreApplication::translate("DisplayNames", "Physics + learnt correction (PGRL-CC)");
+    case control::ControllerKind::ExtInputResidual:
+        return QCoreApplication::translate("DisplayNames", "Physics + input-only correction");
+    case control::ControllerKind::Lstm:
+        return QCoreApplication::translate("DisplayNames", "LSTM (black box)");
+    case control::ControllerKind::Pi:
+        return QCoreApplication::translate("DisplayNames", "PI loop (the plant's own)");
+    }
+    return {};
+}
+
+QString modelDisplayName(const std::string& key) {
+    if (const auto kind = control::controllerByName(key)) {
+        return controllerDisplayName(*kind);
+    }
+    if (key == "persistence") {
+        return QCoreApplication::translate("DisplayNames", "Last measurement held");
+    }
+    if (key == "pbm_residual_hold") {
+        return QCoreApplication::translate("DisplayNames", "Physics model, last error held");
+    }
+    return QString::fromStdString(key);
+}
+
+QString causeDisplayName(const std::string& cause) {
+    // QT_TRANSLATE_NOOP marks them for lupdate; translate() words them when called.
+    static const std::map<std::string, const char*> names{
+        {"tube_wall_heat_loss", QT_TRANSLATE_NOOP("DisplayNames", "tube-wall heat loss")},
+        {"gas_phase_coupling", QT_TRANSLATE_NOOP("DisplayNames", "drying air cooling along the tube")},
+        {"heat_transfer_fouling", QT_TRANSLATE_NOOP("DisplayNames", "heat-transfer fouling")},
+        {"moisture_meter_lag", QT_TRANSLATE_NOOP("DisplayNames", "slow outlet moisture meter")},
+        {"moisture_meter_offset", QT_TRANSLATE_NOOP("DisplayNames", "outlet moisture meter offset")},
+        {"transport_delay_error", QT_TRANSLATE_NOOP("DisplayNames", "conveyor transport time off")},
+        {"falling_rate_drying", QT_TRANSLATE_NOOP("DisplayNames", "slower drying below critical moisture")},
+        {"ambient_reabsorption", QT_TRANSLATE_NOOP("DisplayNames", "moisture taken back on the conveyor")},
+        {"inlet_moisture_sensor_offset", QT_TRANSLATE_NOOP("DisplayNames", "inlet moisture gauge offset")},
+        {"hot_air_sensor_lag", QT_TRANSLATE_NOOP("DisplayNames", "slow hot-air thermocouple")},
+        {"inlet_moisture_sensor_noise", QT_TRANSLATE_NOOP("DisplayNames", "noisy inlet moisture gauge")},
+        {"outlet_mixing", QT_TRANSLATE_NOOP("DisplayNames", "outlet mixing")},
+    };
+    const auto it = names.find(cause);
+    return it == names.end() ? QString::fromStdString(cause)
+                             : QCoreApplication::translate("DisplayNames", it->second);
+}
+
+QString groupDisplayName(const std::string& group) {
+    if (group == "outlet_response_time") {
+        return QCoreApplication::translate("DisplayNames",
+                                           "outlet response time (meter lag or transport time)");
+    }
+    if (group == "moisture_offset") {
+        return QCoreApplication::translate("DisplayNames", "moisture offset (outlet meter or inlet gauge)");
+    }
+    if (group == "gas_temperature") {
+        return QCoreApplication::translate("DisplayNames",
+                                           "air temperature in the tube (wall loss or air cooling)");
+    }
+    return QString::fromStdString(group);
+}
+
+QString verdictDisplayText(const std::string& verdict, const QString& firstCause) {
+    if (verdict == "cause_found") {
+        return firstCause.isEmpty()
+                   ? QCoreApplication::translate("DisplayNames", "Cause found")
+                   : QCoreApplication::translate("DisplayNames", "Cause found: %1").arg(firstCause);
+    }
+    if (verdict == "no_structural_cause") {
+        return QCoreApplication::translate(
+            "DisplayNames", "No cause found: what the model gets wrong is within the measurements' noise");
+    }
+    if (verdict == "unexplained_structure") {
+        return QCoreApplication::translate("DisplayNames", "Something is left that no known cause explains");
+    }
+    return QString::fromStdString(verdict);
+}
+
+QString terminationText(Termination termination) {
+    switch (termination) {
+    case Termination::Completed:
+        return QCoreApplication::translate("DisplayNames", "Completed");
+    case Termination::Converged:
+        return QCoreApplication::translate("DisplayNames", "Converged");
+    case Termination::BudgetExhausted:
+        return QCoreApplication::translate("DisplayNames", "Evaluation budget used up");
+    case Termination::StoppedKeptBest:
+        return QCoreApplication::translate("DisplayNames", "Stopped by you, best so far kept");
+    }
+    return {};
+}
+
+QString mpcEndingText(const control::ClosedLoopResult& result) {
+    if (result.ending.termination == Termination::StoppedKeptBest) {
+        return QCoreApplication::translate(
+            "DisplayNames", "Stopped by you; the runs so far are kept, the last one is partial");
+    }
+    int ran = 0;
+    for (const auto& run : result.runs) {
+        ran += run.ran ? 1 : 0;
+    }
+    return QCoreApplication::translate("DisplayNames",
+                                       "Scenario %1: %2 of %3 controllers run over %4 scored seconds")
+        .arg(QString::fromStdString(result.scenario.name))
+        .arg(ran)
+        .arg(result.runs.size())
+        .arg(result.scenario.lengthS);
+}
+
+QString intervalMethodText(const std::string& method) {
+    if (method.empty()) {
+        return QCoreApplication::translate("DisplayNames", "none (the sensitivities could not be computed)");
+    }
+    if (method.find("sandwich") != std::string::npos) {
+        return QCoreApplication::translate(
+            "DisplayNames", "robust to correlated rows (sandwich covariance with a Newey-West middle term)");
+    }
+    return QString::fromStdString(method);
+}
+
+QString r2Explanation(double r2) {
+    if (!(r2 == r2)) {
+        return QCoreApplication::translate("DisplayNames", "R² could not be computed (too few rows).");
+    }
+    if (r2 < 0) {
+        return QCoreApplication::translate(
+            "DisplayNames",
+            "R² below 0: the model predicts worse than the batch's mean would. Usual for the physics "
+            "model alone on a short held-out part with little movement; compare MAE instead.");
+    }
+    return QCoreApplication::translate(
+               "DisplayNames",
+               "R² %1: the model explains %2 % of the variation of the measured values about their mean.")
+        .arg(r2, 0, 'f', 3)
+        .arg(100.0 * r2, 0, 'f', 0);
+}
+
+} // namespace drytwin::widgets

@@ -1,0 +1,35 @@
+#pragma once
+
+#include "common/Progress.h"
+#include "control/ClosedLoop.h"
+
+#include <QString>
+#include <string>
+
+namespace drytwin::widgets {
+
+// The engine names things by their contract keys (pgrl_cc, heat_transfer_fouling, cause_found),
+// which the CLI and the result files keep. A process engineer reads the GUI: these word them in
+// plain language, translated; the key and the paper's name go into tooltips (issue #26).
+
+/// @brief A controller or prediction model in an engineer's words ("Physics + learnt correction").
+QString controllerDisplayName(control::ControllerKind kind);
+/// @brief A model by its contract key (pbm, pgrl_cc, ext_input_residual, lstm, persistence,
+/// pbm_residual_hold, pi); the key itself when unknown.
+QString modelDisplayName(const std::string& key);
+/// @brief A cause of CONTRACT.md §4 by its name ("heat-transfer fouling"); the name when unknown.
+QString causeDisplayName(const std::string& cause);
+/// @brief A look-alike group by its name ("outlet response time: meter lag or transport time").
+QString groupDisplayName(const std::string& group);
+/// @brief Discovery's verdict as a heading ("Cause found: heat-transfer fouling").
+QString verdictDisplayText(const std::string& verdict, const QString& firstCause = {});
+/// @brief How an iterative action ended, as the first words of a sentence ("Converged").
+QString terminationText(Termination termination);
+/// @brief A what-if run's ending in words ("Scenario x: 5 controllers, 1000 scored seconds").
+QString mpcEndingText(const control::ClosedLoopResult& result);
+/// @brief How a calibration's intervals were made, in words (the engine's method string is English).
+QString intervalMethodText(const std::string& method);
+/// @brief What an R² says in words, for the tooltips of R² cells (R² < 0: worse than the mean).
+QString r2Explanation(double r2);
+
+} // namespace drytwin::widgets
