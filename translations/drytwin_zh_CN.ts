@@ -2,6 +2,194 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>DisplayNames</name>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="11"/>
+        <source>Physics model</source>
+        <translation>物理模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="13"/>
+        <source>Physics + learnt correction (PGRL-CC)</source>
+        <translation>物理模型 + 学习修正（PGRL-CC）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="15"/>
+        <source>Physics + input-only correction</source>
+        <translation>物理模型 + 仅输入修正</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="17"/>
+        <source>LSTM (black box)</source>
+        <translation>LSTM（黑箱）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="19"/>
+        <source>PI loop (the plant&apos;s own)</source>
+        <translation>PI 回路（装置自带）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="29"/>
+        <source>Last measurement held</source>
+        <translation>保持最后测量值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="32"/>
+        <source>Physics model, last error held</source>
+        <translation>物理模型，保持最后误差</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="40"/>
+        <source>tube-wall heat loss</source>
+        <translation>管壁散热</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="41"/>
+        <source>drying air cooling along the tube</source>
+        <translation>干燥风沿管降温</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="42"/>
+        <source>heat-transfer fouling</source>
+        <translation>传热结垢</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="43"/>
+        <source>slow outlet moisture meter</source>
+        <translation>出口水分仪响应慢</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="44"/>
+        <source>outlet moisture meter offset</source>
+        <translation>出口水分仪偏差</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="45"/>
+        <source>conveyor transport time off</source>
+        <translation>输送时间偏差</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="46"/>
+        <source>slower drying below critical moisture</source>
+        <translation>低于临界含水率时干燥变慢</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="47"/>
+        <source>moisture taken back on the conveyor</source>
+        <translation>输送中回潮</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="48"/>
+        <source>inlet moisture gauge offset</source>
+        <translation>入口水分仪偏差</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="49"/>
+        <source>slow hot-air thermocouple</source>
+        <translation>热风热电偶响应慢</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="50"/>
+        <source>noisy inlet moisture gauge</source>
+        <translation>入口水分仪噪声大</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="51"/>
+        <source>outlet mixing</source>
+        <translation>出口混合</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="60"/>
+        <source>outlet response time (meter lag or transport time)</source>
+        <translation>出口响应时间（仪表滞后或输送时间）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="64"/>
+        <source>moisture offset (outlet meter or inlet gauge)</source>
+        <translation>水分偏差（出口水分仪或入口水分仪）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="67"/>
+        <source>air temperature in the tube (wall loss or air cooling)</source>
+        <translation>管内风温（管壁散热或风冷却）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="76"/>
+        <source>Cause found</source>
+        <translation>找到原因</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="77"/>
+        <source>Cause found: %1</source>
+        <translation>找到原因：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="80"/>
+        <source>No cause found: what the model gets wrong is within the measurements&apos; noise</source>
+        <translation>未找到原因：模型的误差在测量噪声范围之内</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="84"/>
+        <source>Something is left that no known cause explains</source>
+        <translation>仍有已知原因无法解释的结构</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="92"/>
+        <source>Completed</source>
+        <translation>已完成</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="94"/>
+        <source>Converged</source>
+        <translation>已收敛</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="96"/>
+        <source>Evaluation budget used up</source>
+        <translation>评估次数已用完</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="98"/>
+        <source>Stopped by you, best so far kept</source>
+        <translation>已由您停止，保留目前最优</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="105"/>
+        <source>Stopped by you; the runs so far are kept, the last one is partial</source>
+        <translation>已由您停止；保留已完成的运行，最后一次不完整</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="112"/>
+        <source>Scenario %1: %2 of %3 controllers run over %4 scored seconds</source>
+        <translation>情景 %1：%3 个控制器中运行了 %2 个，评分时长 %4 秒</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="122"/>
+        <source>none (the sensitivities could not be computed)</source>
+        <translation>无（无法计算灵敏度）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="125"/>
+        <source>robust to correlated rows (sandwich covariance with a Newey-West middle term)</source>
+        <translation>对相关样本稳健（夹心协方差，中间项为 Newey-West）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="133"/>
+        <source>R² could not be computed (too few rows).</source>
+        <translation>无法计算 R²（行数太少）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="136"/>
+        <source>R² below 0: the model predicts worse than the batch&apos;s mean would. Usual for the physics model alone on a short held-out part with little movement; compare MAE instead.</source>
+        <translation>R² 小于 0：模型的预测比批次均值还差。对于变化很小的短留出段，单独的物理模型常出现这种情况；请改为比较 MAE。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="141"/>
+        <source>R² %1: the model explains %2 % of the variation of the measured values about their mean.</source>
+        <translation>R² %1：模型解释了测量值围绕其均值变化的 %2 %。</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <location filename="../widgets/model/ModelPanel.cpp" line="32"/>
@@ -12,82 +200,82 @@
 <context>
     <name>TrainingPanel</name>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="52"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="56"/>
         <source>PI loop (the plant&apos;s own)</source>
         <translation>PI 回路（装置自带）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="54"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="58"/>
         <source>MPC on the physics model</source>
         <translation>基于物理模型的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="56"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="60"/>
         <source>MPC on PGRL-CC</source>
         <translation>基于 PGRL-CC 的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="58"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="62"/>
         <source>MPC on the external-input residual model</source>
         <translation>基于外部输入残差模型的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="60"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="64"/>
         <source>MPC on the LSTM</source>
         <translation>基于 LSTM 的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="68"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="72"/>
         <source>Tube wall heat loss</source>
         <translation>管壁散热损失</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="70"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="74"/>
         <source>Gas-phase coupling</source>
         <translation>气相耦合</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="72"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="76"/>
         <source>Heat-transfer fouling</source>
         <translation>传热结垢</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="74"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="78"/>
         <source>Moisture meter lag</source>
         <translation>水分仪滞后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="76"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="80"/>
         <source>Moisture meter offset</source>
         <translation>水分仪偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="78"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="82"/>
         <source>Transport delay error</source>
         <translation>输送延时误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="80"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="84"/>
         <source>Falling-rate drying</source>
         <translation>降速干燥</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="82"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="86"/>
         <source>Ambient re-absorption</source>
         <translation>环境回潮</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="84"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="88"/>
         <source>Inlet moisture gauge offset</source>
         <translation>入口水分仪零点偏移</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="86"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="90"/>
         <source>Hot-air thermocouple lag</source>
         <translation>热风热电偶滞后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="88"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="92"/>
         <source>Inlet moisture gauge scatter</source>
         <translation>入口水分仪读数离散</translation>
     </message>
@@ -122,148 +310,159 @@
 <context>
     <name>drytwin::widgets::CalibrationPanel</name>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="28"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="29"/>
         <source>Free</source>
         <translation>自由</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="28"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="29"/>
         <source>Lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="28"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="29"/>
         <source>Upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="28"/>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="29"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="59"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="60"/>
         <source> evaluations</source>
         <translation> 次评估</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="60"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="61"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="172"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="61"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="62"/>
         <source>Stop, keep best</source>
         <translation>停止并保留最优</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
         <source>Estimate</source>
         <translation>估计值</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
         <source>95 % interval</source>
         <translation>95 % 区间</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
         <source>Fisher SE</source>
         <translation>Fisher 标准误</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
         <source>At bound</source>
         <translation>触及边界</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="66"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="67"/>
         <source>Fits the free parameters to the calibration rows (every 10th kept row, the first 300) with NLopt: a global search, then BOBYQA.</source>
         <translation>用 NLopt 将自由参数拟合到标定行（保留行中每隔 10 行取一行，取前 300 行）：先全局搜索，再用 BOBYQA。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="70"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="71"/>
         <source>best loss [-]</source>
         <translation>最优损失 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="71"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="72"/>
         <source>θ / θ final [-]</source>
         <translation>θ / θ 最终值 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="72"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="73"/>
         <source>share of the evaluation budget used [-]</source>
         <translation>已用评估预算比例 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="76"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="77"/>
         <source>Free parameters and their search bounds:</source>
         <translation>自由参数及其搜索范围：</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="86"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="87"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="106"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="107"/>
         <source>best loss so far</source>
         <translation>迄今最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="154"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="125"/>
+        <source>Run Calibrate to see the loss fall and the parameters settle</source>
+        <translation>运行标定，可看到损失下降、参数收敛</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="126"/>
+        <source>Run Calibrate to see the fit before and after</source>
+        <translation>运行标定，可看到标定前后的拟合</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="168"/>
         <source>Cannot calibrate: %1</source>
         <translation>无法标定：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="162"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="179"/>
         <source>Calibrating…</source>
         <translation>正在标定…</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="182"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="204"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="182"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="204"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="186"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="208"/>
         <source>%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. Intervals: %10.</source>
         <translation>%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口 MAE %6 → %7 % 湿基，%8 → %9 °C。区间：%10。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="211"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="233"/>
         <source>loss evaluations [-]</source>
         <translation>损失评估次数 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="212"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="234"/>
         <source>best loss</source>
         <translation>最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="244"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="266"/>
         <source>measured %1</source>
         <translation>实测 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="247"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="269"/>
         <source>before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="250"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="272"/>
         <source>after</source>
         <translation>之后</translation>
     </message>
@@ -502,18 +701,18 @@
         <translation>批次（多选可叠加；可将文件拖放到此处）：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="73"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="72"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="73"/>
-        <location filename="../widgets/data/DataPanel.cpp" line="86"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="72"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="85"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="79"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="78"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
@@ -523,27 +722,32 @@
         <translation>一个使用您的列名的批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="95"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="94"/>
+        <source>Open a data set: File ▸ Open data set folder…, or File ▸ Open the bundled demo</source>
+        <translation>请打开数据集：文件 ▸ 打开数据集文件夹…，或 文件 ▸ 打开自带演示数据</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="103"/>
         <source>Save the column mapping</source>
         <translation>保存列映射</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="95"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="104"/>
         <source>Mappings (*.json)</source>
         <translation>映射 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="151"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="157"/>
         <source>%1, lines %2–%3, from %4, ended by %5</source>
         <translation>%1，第 %2–%3 行，始于 %4，结束原因：%5</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="179"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="185"/>
         <source>Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.</source>
         <translation>清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="193"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="199"/>
         <source>Noted while reading (%1):</source>
         <translation>读取时的提示（%1）：</translation>
     </message>
@@ -551,82 +755,103 @@
 <context>
     <name>drytwin::widgets::DiagnosticsPanel</name>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="26"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="27"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="27"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="28"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="114"/>
         <source>Evaluate a trained model to see its residuals.</source>
         <translation>评估已训练的模型以查看其残差。</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="30"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="31"/>
         <source>ACF [-]</source>
         <translation>自相关 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="31"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="32"/>
         <source>lag [s]</source>
         <translation>滞后 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="33"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="34"/>
         <source>PSD [(% wb)²/Hz]</source>
         <translation>功率谱密度 [(% 湿基)²/Hz]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="34"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="35"/>
         <source>frequency [Hz]</source>
         <translation>频率 [Hz]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="39"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="40"/>
         <source>Models shown (tick to overlay):</source>
         <translation>显示的模型（勾选以叠加）：</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="43"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="44"/>
         <source>error [% wb]</source>
         <translation>误差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="60"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="61"/>
         <source>Physics model&apos;s error against</source>
         <translation>机理模型误差相对于</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="65"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="66"/>
         <source>CCF [-]</source>
         <translation>互相关 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="66"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="67"/>
         <source>lag of the input [s] (run Discover)</source>
         <translation>输入的滞后 [s]（请运行发现）</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="108"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="97"/>
+        <source>Learn the correction models (Residual model tab) to see the residuals&apos; autocorrelation</source>
+        <translation>学习修正模型（残差模型页）后可看到残差的自相关</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="98"/>
+        <source>… and their spectrum</source>
+        <translation>……及其频谱</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="99"/>
+        <source>Open data to see where in the operating range the physics model errs</source>
+        <translation>打开数据，可看到物理模型在工况范围内何处出错</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="100"/>
+        <source>Run Discover to see what the error moves with</source>
+        <translation>运行发现，可看到误差随什么变化</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="132"/>
         <source>%1: Ljung-Box p %2, residual mean %3 % wb</source>
         <translation>%1：Ljung-Box p = %2，残差均值 %3 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="144"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="168"/>
         <source>%1 (%2 % below 0.01 Hz)</source>
         <translation>%1（%2 % 低于 0.01 Hz）</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="150"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="174"/>
         <source>95 % band of white noise</source>
         <translation>白噪声 95 % 置信带</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="190"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="214"/>
         <source>every 10th kept row</source>
         <translation>保留行中每隔 10 行</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="218"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="242"/>
         <source>lag of the input [s]</source>
         <translation>输入的滞后 [s]</translation>
     </message>
@@ -634,395 +859,473 @@
 <context>
     <name>drytwin::widgets::DiscoverPanel</name>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="22"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="24"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="23"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="25"/>
         <source>What does the simulation get wrong, and why? (score tests, fits, held-out gain)</source>
         <translation>仿真哪里出错，为什么？（得分检验、拟合、留出数据上的改进）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="24"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="26"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="66"/>
         <source>Extend the model</source>
         <translation>扩展模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="29"/>
         <source>Make the extended model (named causes, refitted h_HDT and k_HDT, residual models retrained) the session&apos;s model</source>
         <translation>将扩展后的模型（已命名的原因、重新拟合的 h_HDT 与 k_HDT、重新训练的残差模型）设为当前模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="29"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>Run discovery on the loaded data with the current model.</source>
         <translation>用当前模型在已加载的数据上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="33"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="33"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="33"/>
         <source>p (Holm)</source>
         <translation>p（Holm）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="33"/>
         <source>Fitted</source>
         <translation>已拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="33"/>
         <source>Loss</source>
         <translation>损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>Held-out</source>
         <translation>留出数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>Before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>After</source>
         <translation>之后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="37"/>
         <source>X_out residual [% wb]</source>
         <translation>X_out 残差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
         <source>T_out residual [°C]</source>
         <translation>T_out 残差 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="37"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
         <source>time, batches one after another [h]</source>
         <translation>时间，批次首尾相接 [h]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="46"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
         <source>Candidate causes, first round:</source>
         <translation>候选原因（第一轮）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="50"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="65"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="70"/>
+        <source>the model was extended by discovery</source>
+        <translation>模型已由发现功能扩展</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="72"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="80"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="78"/>
+        <source>Run Discover to see the physics model&apos;s error over the batches</source>
+        <translation>运行发现，可看到物理模型在各批次上的误差</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="91"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="83"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="94"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)</source>
         <translation>误差随进料量和入口水分增大（按 feed_kg_h 和 X_in_pct 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="86"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
         <source>the error drifts within every batch and resets at each batch start</source>
         <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="88"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="99"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="92"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="103"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="106"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="108"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="101"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="112"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="105"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="116"/>
         <source>a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less</source>
         <translation>干燥管出口与出口水分有相同的稳定偏差，干燥管干燥越少处越大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="108"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="119"/>
         <source>after each hot-air setpoint step the outlet temperature and moisture move before the simulation, which follows the slow reading</source>
         <translation>每次热风设定值阶跃后，出口温度和水分先于仿真变化，仿真跟随的是迟缓的读数</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="111"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="122"/>
         <source>the inlet-moisture reading scatters from second to second while the outlet does not follow it, and the simulated outlet does</source>
         <translation>入口水分读数逐秒跳动，出口并不跟随，而仿真的出口却跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="121"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="132"/>
         <source>a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet temperature&apos;s response as much as the moisture&apos;s, a meter lag delays the moisture reading alone; or grab samples timed against the meter</source>
         <translation>以 1 s 记录一次热风设定值阶跃：输送时间误差使出口温度与水分的响应同样延迟，水分仪滞后只延迟水分读数；或对照水分仪定时取样</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="128"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="139"/>
         <source>oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter offset does not</source>
         <translation>在出口对照水分仪、在入口对照入口水分计做烘箱法实验室取样；或增加干燥管出口水分通道（X_hdt）：入口水分计偏差会使其变化，出口水分仪偏差不会</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="135"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="146"/>
         <source>a gas-temperature reading at the tube&apos;s outlet end at two feed rates: wall loss does not change with the feed, gas-phase cooling grows with it</source>
         <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="145"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="156"/>
         <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
         <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="148"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="159"/>
         <source>its size is not consistent across batches or operating regions</source>
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="151"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="162"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="154"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="165"/>
+        <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
+        <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="169"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="172"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="172"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="189"/>
+        <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
+        <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="194"/>
+        <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
+        <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="197"/>
+        <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
+        <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="202"/>
+        <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
+        <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="208"/>
+        <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
+        <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="222"/>
+        <source>no candidate passes the screening test</source>
+        <translation>没有候选原因通过筛选检验</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="229"/>
+        <source>no fitted candidate lowers the training loss</source>
+        <translation>没有拟合的候选原因降低训练损失</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="244"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="177"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="249"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="177"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="249"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="180"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="252"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="184"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="256"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="191"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="263"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="192"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="264"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="199"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="271"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="211"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="283"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="215"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="287"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="216"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="288"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="220"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="292"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="220"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="292"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="250"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="317"/>
+        <source>Run discovery on %1 with the current model.</source>
+        <translation>用当前模型在 %1 上运行发现。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="318"/>
+        <source>Open a data set, then run discovery on it.</source>
+        <translation>请先打开数据集，再在其上运行发现。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="333"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="253"/>
         <source>one of %1 (look-alikes)</source>
         <translation>%1 之一（相似原因）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="257"/>
         <source>Verdict: %1. No mechanism is named.</source>
         <translation>结论：%1。未命名任何机理。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="258"/>
         <source>Verdict: %1. Named: %2.</source>
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="265"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="265"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="286"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="369"/>
         <source>%1 at %2 s (ccf %3%4)</source>
         <translation>%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="290"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="293"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="376"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="302"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="384"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="309"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="219"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="311"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="336"/>
+        <source>%1, one of: %2</source>
+        <translation>%1，可能是：%2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="339"/>
+        <source>%1. On %2.</source>
+        <translation>%1。数据：%2。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="340"/>
+        <source>, </source>
+        <translation>、</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="341"/>
+        <source>Discovery&apos;s verdict key: %1</source>
+        <translation>发现结论代码：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="394"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="328"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="410"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="333"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="415"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="341"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="423"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="346"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="428"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="354"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="436"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="365"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="447"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="206"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="366"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="278"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="448"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="455"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="367"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="449"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="206"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="368"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="278"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="450"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="369"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="451"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="370"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="452"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="455"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="390"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="472"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="391"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="473"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -1073,38 +1376,53 @@
 <context>
     <name>drytwin::widgets::LineView3D</name>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="71"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="73"/>
         <source>moisture [% wb]</source>
         <translation>含水率 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="71"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="73"/>
         <source>temperature [°C]</source>
         <translation>温度 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="74"/>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="96"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="76"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="98"/>
         <source>Play</source>
         <translation>播放</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="76"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="78"/>
         <source>Simulate the model to see the parcels.</source>
         <translation>运行模型仿真以查看物料团。</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="80"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="82"/>
         <source>Batch</source>
         <translation>批次</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="96"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="98"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="278"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="182"/>
+        <source>drying tube</source>
+        <translation>干燥管</translation>
+    </message>
+    <message>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="183"/>
+        <source>conveyor</source>
+        <translation>输送机</translation>
+    </message>
+    <message>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="184"/>
+        <source>winnower</source>
+        <translation>风选机</translation>
+    </message>
+    <message>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="300"/>
         <source>%1 s of %2</source>
         <translation>%1 s / %2</translation>
     </message>
@@ -1112,236 +1430,424 @@
 <context>
     <name>drytwin::widgets::MainWindow</name>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="56"/>
+        <location filename="../widgets/MainWindow.cpp" line="66"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="70"/>
+        <location filename="../widgets/MainWindow.cpp" line="80"/>
         <source>Data</source>
         <translation>数据</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="71"/>
+        <location filename="../widgets/MainWindow.cpp" line="81"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="72"/>
+        <location filename="../widgets/MainWindow.cpp" line="82"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="73"/>
+        <location filename="../widgets/MainWindow.cpp" line="83"/>
         <source>Residual model</source>
         <translation>残差模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="74"/>
+        <location filename="../widgets/MainWindow.cpp" line="84"/>
         <source>Diagnostics</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="75"/>
+        <location filename="../widgets/MainWindow.cpp" line="85"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="76"/>
+        <location filename="../widgets/MainWindow.cpp" line="86"/>
         <source>What-if MPC</source>
         <translation>假设分析 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="77"/>
+        <location filename="../widgets/MainWindow.cpp" line="87"/>
         <source>3D line</source>
         <translation>三维产线</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="79"/>
+        <location filename="../widgets/MainWindow.cpp" line="89"/>
         <source>Training</source>
         <translation>培训</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="82"/>
         <source>No data loaded. File ▸ Open data set…</source>
         <translation>未加载数据。文件 ▸ 打开数据集…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="86"/>
+        <location filename="../widgets/MainWindow.cpp" line="93"/>
+        <source>&lt;b&gt;Data&lt;/b&gt;: the loaded batches, their rows kept by the cleaning, and every measured channel over time. Select several batches to overlay them; drop files here to open them. Files with other column names open through Column mapping…</source>
+        <translation>&lt;b&gt;数据&lt;/b&gt;：已加载的批次、清洗后保留的行，以及每个测量通道随时间的变化。选择多个批次可叠加显示；把文件拖到这里即可打开。列名不同的文件通过“列映射…”打开。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="97"/>
+        <source>&lt;b&gt;Model&lt;/b&gt;: the physics model&apos;s parameters with units and bounds (paper Eqs. 1–19), and its simulation against the measurements. Edit a value to try it; Undo takes it back.</source>
+        <translation>&lt;b&gt;模型&lt;/b&gt;：物理模型的参数及其单位和范围（论文公式 1–19），以及模拟与测量的对比。修改数值即可试验；“撤销”可恢复。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="101"/>
+        <source>&lt;b&gt;Calibrate&lt;/b&gt;: fits the ticked parameters to the data (a global search, then BOBYQA) and gives each its 95 % interval. Stop keeps the best so far.</source>
+        <translation>&lt;b&gt;标定&lt;/b&gt;：把勾选的参数拟合到数据（先全局搜索，再 BOBYQA），并给出各自的 95 % 区间。停止时保留目前最优。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="104"/>
+        <source>&lt;b&gt;Residual model&lt;/b&gt;: learns a correction of the physics model from the data (PGRL-CC, paper Eqs. 20–30) and scores it on held-out data beside the comparison models and the two trivial forecasts. Skill below 1 beats both.</source>
+        <translation>&lt;b&gt;残差模型&lt;/b&gt;：从数据学习物理模型的修正（PGRL-CC，论文公式 20–30），并在留出数据上与对比模型及两个平凡预测一起评分。技能小于 1 即优于二者。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="108"/>
+        <source>&lt;b&gt;Diagnostics&lt;/b&gt;: the residuals&apos; autocorrelation and spectrum (white noise is what a complete model leaves), where in the operating range the physics model errs, and what its error moves with.</source>
+        <translation>&lt;b&gt;诊断&lt;/b&gt;：残差的自相关和频谱（完整的模型只留下白噪声）、物理模型在工况范围内何处出错，以及其误差随什么变化。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="112"/>
+        <source>&lt;b&gt;Discover&lt;/b&gt;: what the simulation gets wrong, the physical cause when one is specific (better on every output it touches, consistent across batches, told apart from its look-alikes), and the gain of the extended model.</source>
+        <translation>&lt;b&gt;发现&lt;/b&gt;：模拟哪里不准；当某个物理原因具有特异性时给出它（在其影响的每个输出上都更好、各批次间一致、能与相似原因区分），以及扩展模型的收益。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="116"/>
+        <source>&lt;b&gt;What-if MPC&lt;/b&gt;: a scenario run against the virtual plant once per controller, an MPC on each model that exists and the plant&apos;s own PI loop, with the paper&apos;s Table 2 metrics.</source>
+        <translation>&lt;b&gt;假设分析 MPC&lt;/b&gt;：针对虚拟工厂，为每个控制器运行一次情景：每个已有模型上的 MPC 以及工厂自己的 PI 回路，并给出论文表 2 的指标。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="120"/>
+        <source>&lt;b&gt;3D line&lt;/b&gt;: the drying tube, conveyor and winnower with the material parcels coloured by moisture at the time cursor; the slider moves every plot&apos;s cursor.</source>
+        <translation>&lt;b&gt;三维产线&lt;/b&gt;：干燥管、输送机和风选机，物料颗粒按时间光标处的含水率着色；滑块同时移动所有曲线图的光标。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="123"/>
+        <source>&lt;b&gt;Training&lt;/b&gt;: the line runs live for a trainee; the instructor&apos;s window injects faults, freezes the clock and scores the answers.</source>
+        <translation>&lt;b&gt;培训&lt;/b&gt;：产线为学员实时运行；教员窗口可注入故障、冻结时钟并为回答评分。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="128"/>
+        <source>The data set every tab shows; the others opened in this window stay here</source>
+        <translation>各页显示的数据集；在本窗口打开过的其他数据集也保留在这里</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="134"/>
+        <source>Data set:</source>
+        <translation>数据集：</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="145"/>
+        <source>none loaded</source>
+        <translation>未加载</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="159"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="166"/>
+        <location filename="../widgets/MainWindow.cpp" line="161"/>
+        <source>Map its columns…</source>
+        <translation>映射其列…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="162"/>
+        <source>Open the column-mapping dialog for the file that was not recognised</source>
+        <translation>为未能识别的文件打开列映射对话框</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="199"/>
+        <source>%1: %2 %</source>
+        <translation>%1：%2 %</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="200"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="247"/>
+        <source>Opening the recording beside %1; the data-set list at the top right switches back.</source>
+        <translation>正在 %1 之外另行打开该记录；用右上角的数据集列表可切换回去。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="280"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="167"/>
+        <location filename="../widgets/MainWindow.cpp" line="281"/>
         <source>&amp;Open batch file…</source>
         <translation>打开批次文件(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="169"/>
+        <location filename="../widgets/MainWindow.cpp" line="282"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="169"/>
+        <location filename="../widgets/MainWindow.cpp" line="282"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="175"/>
+        <location filename="../widgets/MainWindow.cpp" line="288"/>
         <source>Open data set &amp;folder…</source>
         <translation>打开数据集文件夹(&amp;F)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="176"/>
+        <location filename="../widgets/MainWindow.cpp" line="289"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="181"/>
+        <location filename="../widgets/MainWindow.cpp" line="294"/>
+        <source>Open the bundled &amp;demo</source>
+        <translation>打开自带演示数据(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="295"/>
         <source>&amp;Generate virtual-plant data…</source>
         <translation>生成虚拟装置数据(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="183"/>
+        <location filename="../widgets/MainWindow.cpp" line="296"/>
         <source>Folder for the virtual plant&apos;s batches</source>
         <translation>虚拟装置批次的文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="192"/>
+        <location filename="../widgets/MainWindow.cpp" line="305"/>
         <source>Open &amp;model…</source>
         <translation>打开模型(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="194"/>
+        <location filename="../widgets/MainWindow.cpp" line="306"/>
         <source>Open model</source>
         <translation>打开模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="194"/>
-        <location filename="../widgets/MainWindow.cpp" line="201"/>
+        <location filename="../widgets/MainWindow.cpp" line="306"/>
+        <location filename="../widgets/MainWindow.cpp" line="313"/>
         <source>Model files (*.json)</source>
         <translation>模型文件 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="199"/>
+        <location filename="../widgets/MainWindow.cpp" line="311"/>
         <source>Save model &amp;as…</source>
         <translation>模型另存为(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="200"/>
+        <location filename="../widgets/MainWindow.cpp" line="313"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="207"/>
+        <location filename="../widgets/MainWindow.cpp" line="319"/>
         <source>Open &amp;project…</source>
         <translation>打开项目(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="209"/>
-        <location filename="../widgets/MainWindow.cpp" line="212"/>
-        <location filename="../widgets/MainWindow.cpp" line="407"/>
+        <location filename="../widgets/MainWindow.cpp" line="320"/>
+        <location filename="../widgets/MainWindow.cpp" line="323"/>
+        <location filename="../widgets/MainWindow.cpp" line="707"/>
         <source>Open project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="209"/>
-        <location filename="../widgets/MainWindow.cpp" line="219"/>
-        <location filename="../widgets/MainWindow.cpp" line="229"/>
+        <location filename="../widgets/MainWindow.cpp" line="320"/>
+        <location filename="../widgets/MainWindow.cpp" line="330"/>
+        <location filename="../widgets/MainWindow.cpp" line="340"/>
         <source>DryTwin projects (*.drytwin)</source>
         <translation>DryTwin 项目 (*.drytwin)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="215"/>
+        <location filename="../widgets/MainWindow.cpp" line="326"/>
         <source>&amp;Save project</source>
         <translation>保存项目(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="218"/>
-        <location filename="../widgets/MainWindow.cpp" line="223"/>
-        <location filename="../widgets/MainWindow.cpp" line="229"/>
-        <location filename="../widgets/MainWindow.cpp" line="232"/>
+        <location filename="../widgets/MainWindow.cpp" line="329"/>
+        <location filename="../widgets/MainWindow.cpp" line="334"/>
+        <location filename="../widgets/MainWindow.cpp" line="339"/>
+        <location filename="../widgets/MainWindow.cpp" line="343"/>
         <source>Save project</source>
         <translation>保存项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="227"/>
+        <location filename="../widgets/MainWindow.cpp" line="338"/>
         <source>Save project as…</source>
         <translation>项目另存为…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="235"/>
+        <location filename="../widgets/MainWindow.cpp" line="346"/>
         <source>Recent projects</source>
         <translation>最近的项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="238"/>
+        <location filename="../widgets/MainWindow.cpp" line="349"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="241"/>
+        <location filename="../widgets/MainWindow.cpp" line="352"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="242"/>
+        <location filename="../widgets/MainWindow.cpp" line="353"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="254"/>
+        <location filename="../widgets/MainWindow.cpp" line="371"/>
+        <source>Language</source>
+        <translation>语言</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="500"/>
+        <source>Project saved to %1 (model, results and view)</source>
+        <translation>项目已保存到 %1（模型、结果和视图）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="555"/>
+        <source>Saving the project to %1…</source>
+        <translation>正在保存项目到 %1…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="603"/>
+        <source>The project&apos;s results could not be read (%1); it opens without them.</source>
+        <translation>无法读取项目的结果（%1）；项目将不带结果打开。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="654"/>
+        <source>Wait until the running job has finished (or cancel it), then switch the language.</source>
+        <translation>请等待当前任务完成（或取消它），然后再切换语言。</translation>
+    </message>
+    <message>
         <source>The language changes when DryTwin is started again.</source>
         <translation>语言将在 DryTwin 重新启动后生效。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="257"/>
+        <location filename="../widgets/MainWindow.cpp" line="375"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="258"/>
+        <location filename="../widgets/MainWindow.cpp" line="376"/>
+        <source>&amp;User guide</source>
+        <translation>用户指南(&amp;U)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="379"/>
         <source>&amp;About DryTwin</source>
         <translation>关于 DryTwin(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="259"/>
+        <location filename="../widgets/MainWindow.cpp" line="380"/>
         <source>About DryTwin</source>
         <translation>关于 DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="260"/>
+        <location filename="../widgets/MainWindow.cpp" line="381"/>
         <source>About &amp;Qt</source>
         <translation>关于 Qt(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="264"/>
+        <location filename="../widgets/MainWindow.cpp" line="400"/>
+        <source>DryTwin user guide</source>
+        <translation>DryTwin 用户指南</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="410"/>
+        <source>No data loaded. File ▸ Open data set folder… (or File ▸ Open the bundled demo)</source>
+        <translation>未加载数据。文件 ▸ 打开数据集文件夹…（或 文件 ▸ 打开自带演示数据）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="416"/>
+        <source>Loading</source>
+        <translation>正在加载</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="417"/>
+        <source>Simulating</source>
+        <translation>正在模拟</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="418"/>
+        <source>Calibrating</source>
+        <translation>正在标定</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="419"/>
+        <source>Learning the correction models</source>
+        <translation>正在学习修正模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="420"/>
+        <source>Training the LSTM</source>
+        <translation>正在训练 LSTM</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="421"/>
+        <source>Scoring on the held-out part</source>
+        <translation>正在留出部分上评分</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="422"/>
+        <source>Discovering</source>
+        <translation>正在发现</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="423"/>
+        <source>Ablation</source>
+        <translation>消融实验</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="424"/>
+        <source>What-if scenario</source>
+        <translation>假设情景</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="425"/>
+        <source>Generating plant data</source>
+        <translation>正在生成工厂数据</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="426"/>
+        <source>Training session</source>
+        <translation>培训会话</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="432"/>
         <source>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;Digital-twin workbench for pneumatic drying lines, implementing the PGRL-CC method.&lt;/p&gt;&lt;table&gt;</source>
         <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="328"/>
-        <location filename="../widgets/MainWindow.cpp" line="335"/>
+        <location filename="../widgets/MainWindow.cpp" line="461"/>
+        <source>Writing the bundled demo (10 batches of the virtual plant) to %1…</source>
+        <translation>正在把自带演示数据（虚拟工厂的 10 个批次）写入 %1…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="495"/>
+        <location filename="../widgets/MainWindow.cpp" line="539"/>
+        <location filename="../widgets/MainWindow.cpp" line="546"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="341"/>
         <source>Project saved to %1</source>
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="349"/>
+        <location filename="../widgets/MainWindow.cpp" line="563"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="358"/>
+        <location filename="../widgets/MainWindow.cpp" line="572"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
@@ -1476,134 +1982,187 @@
     </message>
 </context>
 <context>
+    <name>drytwin::widgets::ModelStateBar</name>
+    <message>
+        <location filename="../widgets/common/ModelStateBar.cpp" line="16"/>
+        <source>Retrain the stale models</source>
+        <translation>重新训练过期模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/ModelStateBar.cpp" line="17"/>
+        <source>Learn the correction models again on the loaded data, with the settings they were last learnt with</source>
+        <translation>用上次的设置，在已加载的数据上重新学习修正模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/ModelStateBar.cpp" line="24"/>
+        <source>The model every tab works with: whether the physics model is calibrated or extended, and for each learnt correction model the data it was learnt on, or why it no longer fits the physics model (stale) and must be learnt again.</source>
+        <translation>各页使用的模型：物理模型是否已标定或扩展；每个学习得到的修正模型是在哪些数据上学习的，或者为何它已不再匹配物理模型（过期）而必须重新学习。</translation>
+    </message>
+</context>
+<context>
     <name>drytwin::widgets::MpcPanel</name>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="38"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="40"/>
         <source>Open scenario…</source>
         <translation>打开情景…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="42"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="44"/>
         <source>The scenario as JSON (schema in docs/mpc.md): setpoint steps, input steps and ramps, hidden mechanisms switched on mid-run, noise. Edits are checked when you run.</source>
         <translation>以 JSON 表示的情景（格式见 docs/mpc.md）：设定值阶跃、输入阶跃与斜坡、运行中途开启的隐藏机理、噪声。运行时检查修改。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="50"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="53"/>
         <source>Run scenario</source>
         <translation>运行情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="52"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
         <source>Show the horizon the controllers predicted at this decision</source>
         <translation>显示控制器在此决策时刻预测的时域</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="53"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
         <source>Runs the scenario against the virtual plant once per controller.</source>
         <translation>对虚拟装置逐个控制器运行该情景。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="55"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="59"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="55"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="59"/>
         <source>IAE [%·s]</source>
         <translation>IAE [%·s]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="55"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="59"/>
         <source>Effort [K²]</source>
         <translation>控制量 [K²]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="55"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="59"/>
         <source>Violations [%]</source>
         <translation>越限 [%]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="60"/>
         <source>Solve median [ms]</source>
         <translation>求解时间中位数 [ms]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="60"/>
         <source>Fallbacks</source>
         <translation>回退次数</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="60"/>
         <source>Model gain [%/K]</source>
         <translation>模型增益 [%/K]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="58"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
         <source>X_out, true [% wb]</source>
         <translation>X_out 真实值 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="59"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
         <source>T_hot setpoint [°C]</source>
         <translation>T_hot 设定值 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="71"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="78"/>
         <source>prediction at</source>
         <translation>预测时刻</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="94"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="100"/>
         <source>Open scenario</source>
         <translation>打开情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="94"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="100"/>
         <source>Scenarios (*.json)</source>
         <translation>情景 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="109"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="110"/>
+        <source>Run a scenario to see each controller&apos;s outlet moisture and hot-air setpoint</source>
+        <translation>运行一个情景，可看到各控制器的出口含水率和热风设定值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="123"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="126"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="140"/>
         <source>Cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="140"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="154"/>
         <source>Choose at least one controller.</source>
         <translation>请至少选择一个控制器。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="143"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="157"/>
         <source>Running…</source>
         <translation>正在运行…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="164"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="168"/>
+        <source>Contract key: %1</source>
+        <translation>接口代码：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="170"/>
+        <source>%1 (stale)</source>
+        <translation>%1（过期）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="171"/>
+        <source>Learnt before %1: retrain it to run it.</source>
+        <translation>学习于以下变化之前：%1；需重新训练才能运行。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="173"/>
+        <source>%1 (not learnt)</source>
+        <translation>%1（未学习）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="174"/>
+        <source>Learn the correction models on the Residual model tab to run it.</source>
+        <translation>在残差模型页学习修正模型后才能运行它。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="202"/>
         <source>skipped</source>
         <translation>已跳过</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="178"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="203"/>
+        <source>the model holds no such prediction model</source>
+        <translation>模型中没有这种预测模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="216"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="186"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="224"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="202"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="240"/>
         <source>%1 predicted at %2 s</source>
         <translation>%1 在 %2 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="211"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="249"/>
         <source>%1. IAE and violations on the product&apos;s true outlet moisture; the plant&apos;s own gain is %2 % wb/K.</source>
         <translation>%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。</translation>
     </message>
@@ -1611,82 +2170,94 @@
 <context>
     <name>drytwin::widgets::PlotStack</name>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="82"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="179"/>
         <source>Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click to zoom out, middle drag to pan</source>
         <translation>Ctrl+单击：游标 A，Shift+单击：游标 B，Alt+单击：时间游标；拖动放大，右键缩小，中键拖动平移</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="86"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="90"/>
         <source>Export…</source>
         <translation>导出…</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="87"/>
         <source>Save these plots as PNG, SVG or PDF</source>
         <translation>将这些图表保存为 PNG、SVG 或 PDF</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="160"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="91"/>
+        <source>Save these plots as PNG, SVG or PDF, or their data as CSV</source>
+        <translation>把这些曲线图保存为 PNG、SVG 或 PDF，或把数据保存为 CSV</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="164"/>
         <source>time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="335"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="426"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="338"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="429"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="341"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="432"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="345"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="436"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="349"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="440"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="423"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="514"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="401"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="542"/>
+        <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
+        <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="576"/>
+        <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
+        <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="492"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="447"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg or .pdf</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="454"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="575"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="455"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="461"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="583"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="463"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="585"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
@@ -1694,165 +2265,270 @@
 <context>
     <name>drytwin::widgets::ResidualPanel</name>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="27"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="29"/>
         <source>chosen by validation (16, 32, 60)</source>
         <translation>由验证选择（16、32、60）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="31"/>
         <source>Eq. 30: constrained fit with certificate</source>
         <translation>式 30：带证书的约束拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="31"/>
         <source>eigenvalues pulled in after the fit</source>
         <translation>拟合后将特征值收缩</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="32"/>
         <source>orthogonal projection P⊥ (Eq. 27)</source>
         <translation>正交投影 P⊥（式 27）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="34"/>
         <source>Train PGRL-CC and the baselines</source>
         <translation>训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="36"/>
         <source>residual lags</source>
         <translation>残差滞后阶数</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="37"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
         <source>stability</source>
         <translation>稳定性</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="41"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="54"/>
         <source>Trains on the chronological 70 % and evaluates on the rest; settings are chosen inside the training part.</source>
         <translation>按时间顺序用前 70 % 训练，其余部分评估；设置在训练部分内选定。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="44"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="57"/>
         <source>Run a What-if MPC scenario to compare each model&apos;s steady gain of X_out to the hot air with the plant&apos;s.</source>
         <translation>运行一次假设 MPC 情景，即可将各模型 X_out 对热风的稳态增益与装置的增益比较。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="59"/>
         <source>MAE X_out [% wb]</source>
         <translation>MAE X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="59"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="59"/>
         <source>MAE T_out [°C]</source>
         <translation>MAE T_out [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="48"/>
         <source>skill 1 step</source>
         <translation>1 步技能值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="48"/>
         <source>skill 30 steps</source>
         <translation>30 步技能值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="64"/>
         <source>imaginary part</source>
         <translation>虚部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="51"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="65"/>
         <source>real part</source>
         <translation>实部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="53"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="67"/>
         <source>skill: MAE over the better reference [-]</source>
         <translation>技能值：MAE 与较优参考之比 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="54"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="68"/>
         <source>forecast horizon [steps of 1 s]</source>
         <translation>预测步长 [1 s 步]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="57"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="71"/>
         <source>Ablation (paper Table 3)</source>
         <translation>消融实验（论文表 3）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="58"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="72"/>
         <source>Train and evaluate every variant of Table 3 on this model (a few minutes)</source>
         <translation>在此模型上训练并评估表 3 的每个变体（需几分钟）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="59"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="74"/>
         <source>Variant</source>
         <translation>变体</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
         <source>MAE X_out, extrapolation</source>
         <translation>MAE X_out（外推）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="99"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="32"/>
+        <source>guaranteed stable (fit under a stability certificate)</source>
+        <translation>保证稳定（在稳定性证书约束下拟合）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="33"/>
+        <source>stabilised after the fit (eigenvalues pulled in)</source>
+        <translation>拟合后再稳定化（特征值拉回）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="34"/>
+        <source>Paper Eq. 30: the correction model&apos;s state matrix A is fitted under the constraint α²P − AᵀPA ≻ 0 with a certificate P; the alternative pulls A&apos;s eigenvalues inside the unit circle after an unconstrained fit.</source>
+        <translation>论文公式 30：修正模型的状态矩阵 A 在约束 α²P − AᵀPA ≻ 0（证书 P）下拟合；另一种做法是先无约束拟合，再把 A 的特征值拉回单位圆内。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="37"/>
+        <source>keep the correction out of the hot-air direction</source>
+        <translation>修正不进入热风方向</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="38"/>
+        <source>Paper Eq. 27: the orthogonal projection P⊥ removes from the correction what the manipulated input explains, so that the control gain stays the physics model&apos;s.</source>
+        <translation>论文公式 27：正交投影 P⊥ 从修正中去掉操纵输入所能解释的部分，使控制增益保持为物理模型的增益。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="42"/>
+        <source>Learn the correction models</source>
+        <translation>学习修正模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="43"/>
+        <source>Trains PGRL-CC (paper Eqs. 20–30) on the chronological 70 % of the data, and the two models it is compared with: the input-only correction and an LSTM</source>
+        <translation>在按时间顺序的前 70 % 数据上训练 PGRL-CC（论文公式 20–30）及两个对比模型：仅输入修正和 LSTM</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="47"/>
+        <source>How many past seconds of the error the correction model sees (paper: residual lags)</source>
+        <translation>修正模型能看到的过去误差秒数（论文：残差滞后阶数）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="49"/>
+        <source>memory of the error [s]</source>
+        <translation>误差记忆 [s]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="74"/>
+        <source>MAE X_out
+[% wb]</source>
+        <translation>MAE X_out
+[% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="74"/>
+        <source>R² X_out
+[-]</source>
+        <translation>R² X_out
+[-]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="61"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="75"/>
+        <source>MAE T_out
+[°C]</source>
+        <translation>MAE T_out
+[°C]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="61"/>
+        <source>skill
+1 step</source>
+        <translation>技能
+1 步</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="61"/>
+        <source>skill
+30 steps</source>
+        <translation>技能
+30 步</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="75"/>
+        <source>MAE X_out,
+extrapolation</source>
+        <translation>MAE X_out，
+外推</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="76"/>
+        <source>Learn the correction models to see the eigenvalues of their state matrix</source>
+        <translation>学习修正模型后可看到其状态矩阵的特征值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="77"/>
+        <source>Learn the correction models to see their skill by forecast horizon</source>
+        <translation>学习修正模型后可看到其随预测步长的技能</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="134"/>
         <source>%1 %2 (%3 %)</source>
         <translation>%1 %2（%3 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="104"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="140"/>
         <source>Steady gain of X_out to the hot-air setpoint [% wb per K] at the scenario&apos;s start: the plant (open-loop step test) %1; each model as its MPC saw it, and how far from the plant&apos;s: %2. A learnt residual&apos;s response to the setpoint plan comes from the physics model, since data under the plant&apos;s own loop cannot tell it from the disturbances the loop answered.</source>
         <translation>情景起点处 X_out 对热风设定值的稳态增益 [% wb/K]：装置（开环阶跃试验）%1；各模型在其 MPC 中的增益及与装置的偏差：%2。学习得到的残差对设定值计划的响应取自物理模型，因为装置自身闭环下的数据无法将其与闭环所应对的扰动区分开。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="133"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="169"/>
         <source>Training…</source>
         <translation>正在训练…</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="169"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="183"/>
+        <source>Learn the correction models on %1: they train on the chronological 70 % and are scored on the rest.</source>
+        <translation>在 %1 上学习修正模型：用按时间顺序的前 70 % 训练，其余部分评分。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="186"/>
+        <source>Open a data set first (File ▸ Open data set folder…, or the bundled demo).</source>
+        <translation>请先打开数据集（文件 ▸ 打开数据集文件夹…，或自带演示数据）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="209"/>
+        <source>Key: %1</source>
+        <translation>代码：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="221"/>
         <source>skill 1 (ties the better reference)</source>
         <translation>技能值 1（与较优参考持平）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="179"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="231"/>
         <source>unit circle</source>
         <translation>单位圆</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="193"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="245"/>
         <source>A unconstrained (ρ = %1)</source>
         <translation>无约束 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="199"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="251"/>
         <source>A with Eq. 30 (ρ = %1)</source>
         <translation>式 30 约束后的 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="226"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="278"/>
         <source> Slowest contraction of A: %1 per step (half-life %2 s).</source>
         <translation> A 的最慢收缩：每步 %1（半衰期 %2 s）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="230"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="283"/>
+        <source>On %1, held-out part: %2 rows. Skill below 1 beats both reference predictors (the last measurement held, and the physics model with its last error held). R² below 0 means a model predicts worse than the batch&apos;s mean (hover an R² for what it says).</source>
+        <translation>数据 %1，留出部分：%2 行。技能小于 1 表示优于两个参考预测（保持最后测量值；物理模型保持最后误差）。R² 小于 0 表示模型预测比批次均值还差（鼠标悬停在 R² 上可看说明）。</translation>
+    </message>
+    <message>
         <source>Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).</source>
         <translation>留出部分：%1 行。技能值低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
     </message>
@@ -1903,399 +2579,481 @@
 <context>
     <name>drytwin::widgets::TrainingPanel</name>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="111"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="115"/>
         <source>The line&apos;s conditions: initial levels, load changes, seed (docs/mpc.md)</source>
         <translation>产线条件：初始水平、负荷变化、随机种子（docs/mpc.md）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="112"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="116"/>
         <source>Start session</source>
         <translation>开始会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="113"/>
         <source>Instructor view</source>
         <translation>教员视图</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="115"/>
         <source>Shows the instructor&apos;s controls, the faults, the true moisture and the score; hide it before handing the screen to the trainee</source>
         <translation>显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="117"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="119"/>
+        <source>Instructor window…</source>
+        <translation>教员窗口…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="120"/>
+        <source>Opens the instructor&apos;s window: clock, snapshots, faults, the true moisture and the score. Not on the trainee&apos;s screen.</source>
+        <translation>打开教员窗口：时钟、快照、故障、真实水分和得分。不显示在学员屏幕上。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="122"/>
         <source>No session</source>
         <translation>无会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="126"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="131"/>
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="133"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="138"/>
         <source> % wb</source>
         <translation> % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="135"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="140"/>
         <source>Apply</source>
         <translation>应用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="149"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="144"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="151"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="148"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="155"/>
         <source>X_out setpoint</source>
         <translation>X_out 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="149"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="156"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="153"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="160"/>
         <source>Diagnose the recording…</source>
         <translation>诊断记录…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="154"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="161"/>
         <source>Saves what the line recorded so far as a batch file and opens it, so that the Discover tab can show what the model gets wrong</source>
         <translation>将产线至今的记录保存为批次文件并打开，以便“发现”页显示模型哪里出错</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="157"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="498"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="164"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="583"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="161"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="168"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="164"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="171"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="568"/>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="172"/>
+        <source>Stops the line&apos;s clock while you think; press again to continue</source>
+        <translation>思考时暂停产线时钟；再按一次继续</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="173"/>
         <source>Trainee</source>
         <translation>学员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="171"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="183"/>
         <source>Causes named (session time):</source>
         <translation>已给出的原因（会话时间）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="175"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="483"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="187"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="567"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="179"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="191"/>
         <source> min</source>
         <translation> 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="180"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="192"/>
         <source>Run ahead</source>
         <translation>快进</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
         <source>Runs the line this much further at full speed</source>
         <translation>以最快速度让产线再运行这么久</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="183"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="195"/>
         <source>label (default: the time)</source>
         <translation>标签（默认：时间）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="184"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="196"/>
         <source>Take snapshot</source>
         <translation>拍摄快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="187"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
         <source>Restore selected</source>
         <translation>恢复所选快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="197"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="209"/>
         <source> s from now</source>
         <translation> 秒后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="198"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="210"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="211"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="211"/>
         <source>Strength</source>
         <translation>强度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="211"/>
         <source>Acts from</source>
         <translation>起作用时间</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="211"/>
         <source>Found after</source>
         <translation>发现用时</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="203"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="215"/>
         <source>Save session…</source>
         <translation>保存会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="204"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="216"/>
         <source>Open session…</source>
         <translation>打开会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="205"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="217"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="256"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="342"/>
         <source>Instructor</source>
         <translation>教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="218"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="230"/>
         <source>Clock and snapshots</source>
         <translation>时钟与快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="226"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="238"/>
         <source>Faults</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="230"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="242"/>
         <source>A session file holds the scenario, every event (faults, snapshots, answers) and the recording as a batch file; reopening replays it to the same data.</source>
         <translation>会话文件包含工况、每个事件（故障、快照、回答）以及作为批次文件的记录；重新打开时会回放得到相同的数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="239"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="250"/>
+        <source>Set instructor password…</source>
+        <translation>设置教员密码…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="251"/>
+        <source>Asked before the instructor window opens (empty: no password)</source>
+        <translation>打开教员窗口前询问（留空：不设密码）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="257"/>
+        <source>New instructor password (empty: none):</source>
+        <translation>新的教员密码（留空：无）：</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="264"/>
         <source>Session file</source>
         <translation>会话文件</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="242"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="267"/>
         <source>Start a session: the line runs live under its PI loop.</source>
         <translation>开始会话：产线在其 PI 回路下实时运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="259"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="283"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="298"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="260"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="284"/>
         <source>T_hot [°C]</source>
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="261"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="285"/>
         <source>Feed [t/h]</source>
         <translation>进料 [t/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="262"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="286"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="263"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="287"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="299"/>
         <source>session time [min]</source>
         <translation>会话时间 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="265"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="289"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="267"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="291"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="268"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="292"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="302"/>
         <source>X_out measured</source>
         <translation>X_out 测量值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="295"/>
+        <source>DryTwin — instructor</source>
+        <translation>DryTwin — 教员</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="304"/>
+        <source>X_out true</source>
+        <translation>X_out 真实值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="414"/>
+        <source>Save the session as a folder</source>
+        <translation>把会话保存为文件夹</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="417"/>
+        <source>Session folder (*)</source>
+        <translation>会话文件夹 (*)</translation>
+    </message>
+    <message>
         <source>X_out true (instructor)</source>
         <translation>X_out 真实值（教员）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="272"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="309"/>
         <source>T_hot setpoint</source>
         <translation>T_hot 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="273"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="310"/>
         <source>T_hot</source>
         <translation>T_hot</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="274"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="311"/>
         <source>feed</source>
         <translation>进料</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="275"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
         <source>X_in</source>
         <translation>X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="280"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="317"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="281"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="318"/>
         <source>Stops the replay or the run ahead; the line stays where it got to</source>
         <translation>停止回放或快进；产线停留在已运行到的位置</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="283"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="320"/>
         <source>Scenario</source>
         <translation>工况</translation>
     </message>
     <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="342"/>
+        <source>Instructor password:</source>
+        <translation>教员密码：</translation>
+    </message>
+    <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="345"/>
+        <source>Wrong password: the instructor window stays closed.</source>
+        <translation>密码错误：教员窗口保持关闭。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="402"/>
         <source>Select a snapshot to restore.</source>
         <translation>请选择要恢复的快照。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="355"/>
         <source>Save the session into a folder</source>
         <translation>将会话保存到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="362"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="423"/>
         <source>Open a training session</source>
         <translation>打开培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="362"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="423"/>
         <source>Sessions (*.json)</source>
         <translation>会话 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="371"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="432"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="378"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="439"/>
         <source>Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录以供诊断：%1。请在其上运行“发现”，然后在此给出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="382"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="443"/>
         <source>Session saved: %1</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="415"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="476"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="419"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="480"/>
         <source>The previous session was saved in %1.</source>
         <translation>上一个会话已保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="432"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="493"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="478"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="513"/>
+        <source>%1 (stale: retrain)</source>
+        <translation>%1（过期：需重新训练）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="514"/>
+        <source>%1 (not learnt)</source>
+        <translation>%1（未学习）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="562"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="480"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="564"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="480"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="564"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="480"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="564"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="482"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="566"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="483"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="567"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="493"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="568"/>
+        <source>Continue</source>
+        <translation>继续</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="578"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="494"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="579"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="498"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="583"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="505"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="590"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="515"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="600"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="515"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="600"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="518"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="603"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="529"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="614"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>
@@ -2346,137 +3104,222 @@
 <context>
     <name>drytwin::widgets::Workbench</name>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="27"/>
+        <location filename="../widgets/common/Workbench.cpp" line="48"/>
         <source>%1 is queued behind the running job</source>
         <translation>%1 已排队，等待当前任务完成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="38"/>
+        <location filename="../widgets/common/Workbench.cpp" line="63"/>
         <source>%1 was cancelled; nothing changed.</source>
         <translation>%1 已取消；未作任何更改。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="39"/>
+        <location filename="../widgets/common/Workbench.cpp" line="64"/>
         <source>%1 failed: %2</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="51"/>
+        <location filename="../widgets/common/Workbench.cpp" line="80"/>
+        <source>%1 (1 batch)</source>
+        <translation>%1（1 个批次）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="80"/>
+        <source>%1 (%2 batches)</source>
+        <translation>%1（%2 个批次）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="158"/>
+        <source>%1 changes the physics model that %2 learnt its corrections on: they will no longer match it and are set aside as stale.</source>
+        <translation>“%1”会改变 %2 学习修正时所依据的物理模型：它们将不再匹配，并被标为过期。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="162"/>
+        <source>%1, then retrain them</source>
+        <translation>%1，然后重新训练它们</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="163"/>
+        <source>%1 only (retrain later)</source>
+        <translation>仅%1（稍后重新训练）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="183"/>
+        <source>Physics model calibrated (%1 fitted to data).</source>
+        <translation>物理模型已标定（%1 已拟合到数据）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="185"/>
+        <source>Physics model with its default parameters (not calibrated).</source>
+        <translation>物理模型使用默认参数（未标定）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="192"/>
+        <source>Extended by discovery with: %1.</source>
+        <translation>已由发现功能扩展：%1。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="198"/>
+        <source>%1: not learnt yet.</source>
+        <translation>%1：尚未学习。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="201"/>
+        <source>%1: learnt.</source>
+        <translation>%1：已学习。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="202"/>
+        <source>%1: learnt on %2.</source>
+        <translation>%1：在 %2 上学习。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="205"/>
+        <source>%1: stale, since %2; retrain it to use it.</source>
+        <translation>%1：已过期，因为%2；需重新训练才能使用。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="219"/>
         <source>Read the model</source>
         <translation>读取模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="64"/>
+        <location filename="../widgets/common/Workbench.cpp" line="234"/>
         <source>Loading %1…</source>
         <translation>正在加载 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="73"/>
+        <location filename="../widgets/common/Workbench.cpp" line="243"/>
         <source>Load %1</source>
         <translation>加载 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="88"/>
+        <location filename="../widgets/common/Workbench.cpp" line="278"/>
         <source>%1: %2 batches, %3 rows, %4 missing cells; the cleaning keeps %5 rows</source>
         <translation>%1：%2 个批次，%3 行，%4 个缺失值；清洗后保留 %5 行</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="106"/>
+        <location filename="../widgets/common/Workbench.cpp" line="304"/>
         <source>Open model %1</source>
         <translation>打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="109"/>
+        <location filename="../widgets/common/Workbench.cpp" line="308"/>
         <source>Model %1 opened</source>
         <translation>已打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="116"/>
+        <location filename="../widgets/common/Workbench.cpp" line="309"/>
+        <source>model file %1</source>
+        <translation>模型文件 %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="352"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="125"/>
+        <location filename="../widgets/common/Workbench.cpp" line="361"/>
         <source>Model saved to %1</source>
         <translation>模型已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="131"/>
+        <location filename="../widgets/common/Workbench.cpp" line="367"/>
         <source>Set %1</source>
         <translation>设置 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="146"/>
+        <location filename="../widgets/common/Workbench.cpp" line="383"/>
         <source>Set the model</source>
         <translation>设置模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="159"/>
+        <location filename="../widgets/common/Workbench.cpp" line="400"/>
         <source>Simulate</source>
         <translation>仿真</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="166"/>
+        <location filename="../widgets/common/Workbench.cpp" line="408"/>
         <source>Simulated %1 batches; mean outlet-moisture MAE %2 % wb</source>
         <translation>已仿真 %1 个批次；出口含水率平均 MAE %2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="175"/>
+        <location filename="../widgets/common/Workbench.cpp" line="421"/>
+        <source>Calibration: %1; loss %2 → %3</source>
+        <translation>标定：%1；损失 %2 → %3</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="431"/>
+        <source>the physics model was calibrated after it was learnt</source>
+        <translation>学习之后物理模型又经过了标定</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="447"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="114"/>
+        <source>Learn the correction models</source>
+        <translation>学习修正模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="451"/>
+        <source>Learnt the correction models (PGRL-CC) and the two comparison models</source>
+        <translation>已学习修正模型（PGRL-CC）和两个对比模型</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="137"/>
+        <location filename="../widgets/common/Workbench.cpp" line="417"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="179"/>
         <source>Calibration %1: loss %2 → %3</source>
         <translation>标定 %1：损失 %2 → %3</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="196"/>
         <source>Train</source>
         <translation>训练</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="199"/>
         <source>Trained PGRL-CC and the baselines</source>
         <translation>已训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="208"/>
+        <location filename="../widgets/common/Workbench.cpp" line="460"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="217"/>
+        <location filename="../widgets/common/Workbench.cpp" line="470"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="220"/>
+        <location filename="../widgets/common/Workbench.cpp" line="474"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="227"/>
+        <location filename="../widgets/common/Workbench.cpp" line="481"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="242"/>
+        <location filename="../widgets/common/Workbench.cpp" line="496"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="114"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="245"/>
+        <location filename="../widgets/common/Workbench.cpp" line="500"/>
         <source>Ablation: %1 variants trained and evaluated</source>
         <translation>消融实验：已训练并评估 %1 个变体</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="252"/>
+        <location filename="../widgets/common/Workbench.cpp" line="507"/>
         <source>Generate</source>
         <translation>生成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="254"/>
+        <location filename="../widgets/common/Workbench.cpp" line="510"/>
         <source>Wrote %1 virtual-plant batches to %2</source>
         <translation>已将 %1 个虚拟装置批次写入 %2</translation>
     </message>

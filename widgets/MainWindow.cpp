@@ -206,7 +206,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         m_mapButton->setVisible(false);
         m_workbench.simulate();
         if (!m_pendingModel.isEmpty()) {
-            m_workbench.openModel(m_pendingModel);
+            m_workbench.openModel(m_pendingModel, std::exchange(m_pendingParts, std::nullopt));
             m_workbench.simulate(); // again, with the project's model
             m_pendingModel.clear();
         }
@@ -629,7 +629,7 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
         m_workbench.openData(base.filePath(data), mapping.isEmpty() ? QString() : base.filePath(mapping));
     } else {
         if (!m_pendingModel.isEmpty()) {
-            m_workbench.openModel(m_pendingModel);
+            m_workbench.openModel(m_pendingModel, std::exchange(m_pendingParts, std::nullopt));
             m_pendingModel.clear();
         }
         restorePending(); // no data: the results (an MPC run needs none) come back at once
@@ -642,17 +642,8 @@ void MainWindow::restorePending() {
         m_workbench.restoreResults(*m_pendingResults);
         m_pendingResults.reset();
     }
-    if (m_pendingParts) {
-        // After the project's model is read (queued behind its opening).
-        m_workbench.jobs().submit<bool>(
-            tr("Restore the model's state"),
-            std::function<Expected<bool>(workflow::Session&, const Progress&)>(
-                [](workflow::Session&, const Progress&) -> Expected<bool> { return true; }),
-            this,
-            std::function<void(const Expected<bool>&)>(
-                [this, parts = *m_pendingParts](const Expected<bool>&) {
-                    m_workbench.restoreLearntParts(parts);
-                }));
+    if (m_pendingParts) { // a project without a model file: the states as saved, at once
+        m_workbench.restoreLearntParts(*m_pendingParts);
         m_pendingParts.reset();
     }
 }

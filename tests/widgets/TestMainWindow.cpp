@@ -4,7 +4,9 @@
 #include "MainWindow.h"
 #include "calibration/CalibrationPanel.h"
 #include "common/DisplayNames.h"
+#include "common/ModelStateBar.h"
 #include "common/PlotStack.h"
+#include "common/WidgetHelpers.h"
 #include "data/ColumnMappingDialog.h"
 #include "data/DataPanel.h"
 #include "diagnostics/DiagnosticsPanel.h"
@@ -12,16 +14,22 @@
 #include "model/ModelPanel.h"
 #include "mpc/MpcPanel.h"
 #include "residual/ResidualPanel.h"
+#include "training/TrainingPanel.h"
 #include "view3d/LineView3D.h"
 #include "workflow/Session.h"
 
+#include <QCheckBox>
+#include <QComboBox>
+#include <QHeaderView>
 #include <QLabel>
 #include <QMenuBar>
 #include <QPlainTextEdit>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QStandardItemModel>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -62,6 +70,26 @@ bool waitIdle(MainWindow& w, int ms = 120000) {
     }
     return false;
 }
+
+/// The button of @p parent whose text is @p text (null when there is none).
+QPushButton* buttonNamed(QWidget* parent, const QString& text) {
+    for (auto* b : parent->findChildren<QPushButton*>()) {
+        if (b->text() == text) {
+            return b;
+        }
+    }
+    return nullptr;
+}
+
+/// The model-state paragraph shown on @p tab.
+QString stateShownOn(QWidget* tab) {
+    auto* bar = tab->findChild<widgets::ModelStateBar*>();
+    return bar ? bar->text()->text() : QString();
+}
+
+// The What-if MPC tab's tick boxes, in the panel's order.
+constexpr int kMpcPgrlCc = 3;
+constexpr int kMpcPhysics = 0;
 
 int curvesWithData(QwtPlot* plot) {
     int n = 0;
@@ -197,11 +225,14 @@ private Q_SLOTS:
         QVERIFY(w.dataPanel()->cleaningSummary()->text().contains("3 of 3 rows kept"));
         // 338 °F is 170 °C.
         QVERIFY(std::abs((*w.dataSet().batches[0].values(data::Column::THot))[0] - 170.0) < 1e-9);
-        // Without the mapping the same file is rejected, naming a missing column.
+        // Without the mapping the same file is rejected, naming a missing column; the status bar
+        // offers the way to the column mapping.
+        QVERIFY(w.mapColumnsButton()->isHidden());
         w.workbench().openData(dir.filePath("plant.csv"));
         QVERIFY(loaded.wait(10000));
         QCOMPARE(loaded.takeFirst().at(0).toBool(), false);
         QCOMPARE(w.dataSet().batches.size(), std::size_t(1));
+        QVERIFY(!w.mapColumnsButton()->isHidden());
     }
 
     // A historian export with tag names: the dialog proposes the mapping from the tags and the
@@ -418,6 +449,8 @@ private Q_SLOTS:
         QString error;
         QVERIFY2(w.saveProject(project, &error), qPrintable(error));
         QVERIFY(waitIdle(w));
+        QVERIFY2(w.statusBar()->findChild<QLabel*>()->text().startsWith("Project saved to"),
+                 qPrintable(w.statusBar()->findChild<QLabel*>()->text()));
         const double kSaved = w.workbench().model().parameters[properties::Param::k_HDT];
         MainWindow reopened;
         QSignalSpy ready(&reopened, &MainWindow::projectReady);
@@ -427,8 +460,285 @@ private Q_SLOTS:
         QCOMPARE(reopened.workbench().model().parameters[properties::Param::k_HDT], kSaved);
         QVERIFY(reopened.workbench().model().pgrlCc != nullptr);
         QCOMPARE(reopened.tabs()->currentIndex(), 6);
+        // Story 3: the results come back without re-running them.
+        QVERIFY(reopened.workbench().latest().discover.has_value());
+        QCOMPARE(reopened.discoverPanel()->evidence()->toPlainText(),
+                 w.discoverPanel()->evidence()->toPlainText());
+        QVERIFY(w.discoverPanel()->verdict()->text().startsWith(reopened.discoverPanel()->verdict()->text()));
+        QCOMPARE(reopened.discoverPanel()->ranking()->rowCount(), w.discoverPanel()->ranking()->rowCount());
+        QCOMPARE(reopened.mpcPanel()->table()->rowCount(), 5);
+        QVERIFY(curvesWithData(reopened.mpcPanel()->plots()->plot(0)) >= 3);
+        QCOMPARE(reopened.calibrationPanel()->estimates()->rowCount(), 3);
+        QCOMPARE(reopened.residualPanel()->metrics()->rowCount(), w.residualPanel()->metrics()->rowCount());
+        QCOMPARE(reopened.workbench().learntPart(control::ControllerKind::PgrlCc).learntOn,
+                 w.workbench().learntPart(control::ControllerKind::PgrlCc).learntOn);
         QVERIFY(!reopened.openProject(m_dir.filePath("plant/B01.csv"), &error)); // not a project
         QVERIFY(error.contains("not a DryTwin project"));
+    }
+
+    // Story 1: the tabs agree about the model. Train, then calibrate keeping the learnt models
+    // stale: the What-if MPC and Training tabs list them as stale, every tab says the same, the
+    // metrics of the dropped models are gone; retrain on request brings them back; calibrating with
+    // "retrain afterwards" leaves them current.
+    void calibratingAfterTrainingMakesTheLearntModelsStaleEverywhere() {
+        MainWindow w;
+        w.show();
+        w.openDataSet(m_data);
+        QVERIFY(waitIdle(w));
+        auto* mpc = w.mpcPanel();
+        QVERIFY(mpc->controllerBox(kMpcPhysics)->isEnabled());
+        QVERIFY(!mpc->controllerBox(kMpcPgrlCc)->isEnabled());
+        QVERIFY(mpc->controllerBox(kMpcPgrlCc)->text().contains("not learnt"));
+        w.residualPanel()->setQuick(true);
+        w.residualPanel()->train();
+        QVERIFY(waitIdle(w, 180000));
+        QVERIFY(mpc->controllerBox(kMpcPgrlCc)->isEnabled() && mpc->controllerBox(kMpcPgrlCc)->isChecked());
+        QVERIFY2(stateShownOn(mpc).contains("learnt on plant (2 batches)"), qPrintable(stateShownOn(mpc)));
+        auto* trainingChoice = w.trainingPanel()->controller();
+        const int pgrlItem = trainingChoice->findData(int(control::ControllerKind::PgrlCc));
+        auto* items = qobject_cast<QStandardItemModel*>(trainingChoice->model());
+        QVERIFY(items && items->item(pgrlItem)->isEnabled());
+        QVERIFY(w.residualPanel()->metrics()->rowCount() >= 4);
+
+        w.workbench().setInvalidationPolicy(widgets::AfterInvalidation::KeepStale);
+        w.calibrationPanel()->setBudget(40);
+        w.calibrationPanel()->run();
+        QVERIFY(waitIdle(w, 120000));
+        QVERIFY(!w.workbench().model().pgrlCc);
+        QCOMPARE(w.workbench().learntPart(control::ControllerKind::PgrlCc).state, widgets::PartState::Stale);
+        QVERIFY(!mpc->controllerBox(kMpcPgrlCc)->isEnabled());
+        QVERIFY(mpc->controllerBox(kMpcPgrlCc)->text().contains("stale"));
+        QVERIFY(!items->item(pgrlItem)->isEnabled());
+        QVERIFY(trainingChoice->itemText(pgrlItem).contains("stale"));
+        const QString state = w.workbench().modelStateText();
+        QVERIFY2(state.contains("stale, since the physics model was calibrated"), qPrintable(state));
+        for (QWidget* tab : {static_cast<QWidget*>(mpc), static_cast<QWidget*>(w.residualPanel())}) {
+            QCOMPARE(stateShownOn(tab), state);
+        }
+        QCOMPARE(w.residualPanel()->metrics()->rowCount(), 0); // they were the dropped models' metrics
+
+        auto* retrain = mpc->findChild<widgets::ModelStateBar*>()->retrainButton();
+        QVERIFY(!retrain->isHidden() && retrain->isEnabled()); // (its tab is not the current one)
+        QTest::mouseClick(retrain, Qt::LeftButton);
+        QVERIFY(waitIdle(w, 180000));
+        QCOMPARE(w.workbench().learntPart(control::ControllerKind::PgrlCc).state,
+                 widgets::PartState::Current);
+        QVERIFY(mpc->controllerBox(kMpcPgrlCc)->isEnabled());
+        QVERIFY(items->item(pgrlItem)->isEnabled());
+        QVERIFY(retrain->isHidden());
+        QVERIFY(w.residualPanel()->metrics()->rowCount() >= 4);
+
+        w.workbench().setInvalidationPolicy(widgets::AfterInvalidation::Retrain);
+        w.calibrationPanel()->run();
+        QVERIFY(waitIdle(w, 240000));
+        QVERIFY(w.workbench().model().pgrlCc != nullptr);
+        QCOMPARE(w.workbench().learntPart(control::ControllerKind::PgrlCc).state,
+                 widgets::PartState::Current);
+        QVERIFY(!w.workbench().hasStaleParts());
+    }
+
+    // Story 2: a recording to diagnose opens beside the loaded data set; the loaded set's results
+    // are not shown as the recording's, and switching back brings the set and its results back.
+    void recordingOpensBesideTheLoadedDataSet() {
+        MainWindow w;
+        w.openDataSet(m_data);
+        QVERIFY(waitIdle(w));
+        w.calibrationPanel()->setBudget(30);
+        w.calibrationPanel()->run();
+        QVERIFY(waitIdle(w, 120000));
+        QCOMPARE(w.calibrationPanel()->estimates()->rowCount(), 3);
+        Q_EMIT w.trainingPanel()->recordingReady(m_data + "/B01.csv");
+        QVERIFY(waitIdle(w));
+        QCOMPARE(w.dataSetChooser()->count(), 2);
+        QCOMPARE(w.workbench().currentDataSet(), 1);
+        QCOMPARE(w.dataSetChooser()->currentIndex(), 1);
+        QCOMPARE(w.dataPanel()->batchTable()->rowCount(), 1);
+        QCOMPARE(w.tabs()->currentWidget(), static_cast<QWidget*>(w.discoverPanel()));
+        QCOMPARE(w.calibrationPanel()->estimates()->rowCount(), 0);
+        QVERIFY2(w.discoverPanel()->verdict()->text().contains("B01.csv (1 batch)"),
+                 qPrintable(w.discoverPanel()->verdict()->text()));
+        w.workbench().switchDataSet(0);
+        QVERIFY(waitIdle(w));
+        QCOMPARE(w.dataPanel()->batchTable()->rowCount(), 2);
+        QCOMPARE(w.dataSetChooser()->currentIndex(), 0);
+        QCOMPARE(w.calibrationPanel()->estimates()->rowCount(), 3);
+    }
+
+    // Stories 4 and 9: plain words, the paper's in tooltips, a user guide, What's this on every
+    // panel, a no-data hint that names menu items that exist.
+    void plainWordsHelpAndHints() {
+        MainWindow w;
+        QVERIFY(buttonNamed(w.residualPanel(), "Learn the correction models") != nullptr);
+        for (int i = 0; i < 5; ++i) {
+            QVERIFY2(!w.mpcPanel()->controllerBox(i)->text().contains('_'),
+                     qPrintable(w.mpcPanel()->controllerBox(i)->text()));
+        }
+        for (int i = 0; i < w.tabs()->count(); ++i) {
+            QVERIFY2(!w.tabs()->widget(i)->whatsThis().isEmpty(), qPrintable(w.tabs()->tabText(i)));
+        }
+        QVERIFY(widgets::r2Explanation(-1.02).contains("worse than the batch's mean"));
+        QCOMPARE(widgets::verdictDisplayText("cause_found", "heat-transfer fouling"),
+                 QString("Cause found: heat-transfer fouling"));
+        QCOMPARE(widgets::causeDisplayName("moisture_meter_lag"), QString("slow outlet moisture meter"));
+        QStringList fileActions;
+        for (auto* menu : w.menuBar()->findChildren<QMenu*>()) {
+            for (auto* a : menu->actions()) {
+                fileActions << a->text().remove('&');
+            }
+        }
+        const QString hint = w.statusBar()->findChild<QLabel*>()->text();
+        QVERIFY(hint.contains("Open data set folder…") && hint.contains("Open the bundled demo"));
+        QVERIFY(fileActions.contains("Open data set folder…") &&
+                fileActions.contains("Open the bundled demo"));
+        QAction* guide = nullptr;
+        for (auto* menu : w.menuBar()->findChildren<QMenu*>()) {
+            for (auto* a : menu->actions()) {
+                guide = a->text().remove('&') == "User guide" ? a : guide;
+            }
+        }
+        QVERIFY(guide);
+        guide->trigger();
+        QVERIFY(w.userGuide() && w.userGuide()->isVisible());
+        QVERIFY(w.userGuide()->toPlainText().contains("Learn the correction models"));
+        QVERIFY(MainWindow::userGuideHtml("zh_CN").contains(QString::fromUtf8("用户指南")));
+        w.openDataSet(m_data);
+        QVERIFY(waitIdle(w));
+        QCOMPARE(widgets::lastFolder(), QFileInfo(m_data).absoluteFilePath()); // the next dialog starts here
+    }
+
+    // Story 5: the language changes without a restart, with the data and the view kept; Qt's own
+    // dialogs, the progress stages and the 3D labels follow.
+    void languageSwitchesWithoutRestart() {
+        auto* w = new MainWindow;
+        w->show();
+        w->openDataSet(m_data);
+        QVERIFY(waitIdle(*w));
+        w->tabs()->setCurrentIndex(2);
+        QString error;
+        MainWindow* zh = w->reopenInLanguage("zh_CN", &error);
+        QVERIFY2(zh, qPrintable(error));
+        QVERIFY(waitIdle(*zh));
+        QVERIFY(!w->isVisible());
+        QCOMPARE(zh->dataPanel()->batchTable()->rowCount(), 2);
+        QCOMPARE(zh->tabs()->currentIndex(), 2);
+        QVERIFY2(zh->menuBar()->actions().first()->text().contains(QString::fromUtf8("文件")),
+                 qPrintable(zh->menuBar()->actions().first()->text()));
+        QVERIFY(zh->tabs()->tabText(0) != "Data");
+        QVERIFY(MainWindow::stageText("calibrate") != "Calibrating");
+        QVERIFY(zh->lineView()->sectionLabels().first() != "drying tube");
+        QVERIFY2(QCoreApplication::translate("QFileDialog", "Look in:") != "Look in:",
+                 "Qt's own translations (qttranslations5-l10n) are not loaded");
+        MainWindow* en = zh->reopenInLanguage("en", &error);
+        QVERIFY2(en, qPrintable(error));
+        QVERIFY(waitIdle(*en));
+        QCOMPARE(en->tabs()->tabText(0), QString("Data"));
+        QCOMPARE(en->dataPanel()->batchTable()->rowCount(), 2);
+        delete en;
+        delete w;
+        QCoreApplication::processEvents(); // the Chinese window was deleted later
+    }
+
+    // Story 6: a running action's button is disabled (a second click queues nothing), the panel
+    // follows a cancel, and the progress bar never goes back within an action.
+    void runningActionsDisableTheirButtonsAndFollowCancel() {
+        MainWindow w;
+        w.show();
+        w.openDataSet(m_data);
+        QVERIFY(waitIdle(w));
+        auto* learn = buttonNamed(w.residualPanel(), "Learn the correction models");
+        QVERIFY(learn && learn->isEnabled());
+        QTest::mouseClick(learn, Qt::LeftButton);
+        QVERIFY(!learn->isEnabled());
+        const int pending = w.jobs().pending();
+        QTest::mouseClick(learn, Qt::LeftButton);
+        QCOMPARE(w.jobs().pending(), pending);
+        QTest::qWait(300);
+        w.workbench().cancelAll();
+        QVERIFY(waitIdle(w));
+        QVERIFY(learn->isEnabled());
+        QVERIFY(!w.workbench().isRunning(widgets::Action::Train));
+
+        auto* cal = w.calibrationPanel();
+        auto* bar = w.statusBar()->findChild<QProgressBar*>();
+        QVector<int> values;
+        connect(bar, &QProgressBar::valueChanged, this, [&values](int v) { values << v; });
+        cal->setBudget(400);
+        QTest::mouseClick(cal->runButton(), Qt::LeftButton);
+        QVERIFY(!cal->runButton()->isEnabled() && cal->stopButton()->isEnabled());
+        QTest::qWait(1500);
+        w.workbench().cancelAll();
+        QVERIFY(waitIdle(w));
+        QVERIFY(cal->runButton()->isEnabled() && !cal->stopButton()->isEnabled());
+        // The panel no longer says it is calibrating (cancelled, or stopped with the best so far).
+        for (auto* l : cal->findChildren<QLabel*>()) {
+            QVERIFY2(!l->text().contains("Calibrating…"), qPrintable(l->text()));
+        }
+        // Within the calibration the bar only rises (it is reset to 0 when a job starts or ends).
+        int last = 0;
+        for (int v : values) {
+            QVERIFY2(v == 0 || v >= last, qPrintable(QStringLiteral("%1 after %2").arg(v).arg(last)));
+            last = v;
+        }
+    }
+
+    // Story 7: empty plots say what fills them and show no made-up axes; headers fit; one mouse
+    // hint per tab; no stale readout after reloading; colours unique within a plot; CSV export.
+    void emptyStatesHeadersHintsColoursAndCsv() {
+        MainWindow w;
+        w.show();
+        auto* loss = w.calibrationPanel()->lossPlot();
+        QVERIFY(loss->showsEmptyText());
+        QVERIFY(!loss->plot(0)->axisEnabled(QwtPlot::yLeft));
+        for (int i = 0; i < w.tabs()->count(); ++i) {
+            int hints = 0;
+            for (auto* stack : w.tabs()->widget(i)->findChildren<widgets::PlotStack*>()) {
+                hints += stack->readout().contains("Ctrl+click") ? 1 : 0;
+            }
+            QVERIFY2(hints <= 1, qPrintable(w.tabs()->tabText(i)));
+        }
+        w.openDataSet(m_data);
+        QVERIFY(waitIdle(w));
+        auto* plots = w.dataPanel()->plots();
+        QVERIFY(!plots->showsEmptyText());
+        w.dataPanel()->selectBatches({0, 1});
+        for (int p = 0; p < plots->plotCount(); ++p) {
+            QSet<QString> seen;
+            for (auto* item : plots->plot(p)->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+                auto* c = static_cast<QwtPlotCurve*>(item);
+                if (c->dataSize() > 0 && !c->title().text().isEmpty()) {
+                    const QString key =
+                        QStringLiteral("%1/%2").arg(c->pen().color().name()).arg(int(c->pen().style()));
+                    QVERIFY2(!seen.contains(key), qPrintable(c->title().text()));
+                    seen.insert(key);
+                }
+            }
+        }
+        const QString csv = m_dir.filePath("plots.csv");
+        QVERIFY(plots->exportTo(csv));
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+        QVERIFY(lines.first().startsWith("plot,curve,"));
+        QVERIFY(lines.size() > 2 * 1500);
+        plots->setMeasuringCursor(0, 100);
+        plots->setMeasuringCursor(1, 400);
+        QVERIFY(plots->readout().contains("Δx"));
+        w.openDataSet(m_data);
+        QVERIFY(waitIdle(w));
+        QVERIFY(!plots->readout().contains("Δx"));
+        for (auto* table : w.findChildren<QTableWidget*>()) {
+            auto* header = table->horizontalHeader();
+            for (int c = 0; c < table->columnCount(); ++c) {
+                if (header->sectionResizeMode(c) != QHeaderView::ResizeToContents ||
+                    !table->horizontalHeaderItem(c)) {
+                    continue;
+                }
+                for (const QString& line : table->horizontalHeaderItem(c)->text().split('\n')) {
+                    QVERIFY2(header->sectionSize(c) >= header->fontMetrics().horizontalAdvance(line),
+                             qPrintable(line));
+                }
+            }
+        }
     }
 
     void generatedPlantDataIsOpened() {

@@ -18,6 +18,8 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QtTest>
+#include <qwt_plot.h>
+#include <qwt_plot_item.h>
 
 using namespace drytwin;
 using namespace drytwin::widgets;
@@ -194,6 +196,44 @@ private Q_SLOTS:
         QCOMPARE(script->endS, lastBefore.timeS + 1);
         QTRY_VERIFY(runner.frame().timeS < 100); // the new session runs from its start
         QDir(QFileInfo(keptFile).absolutePath()).removeRecursively();
+    }
+
+    // Story 8: the instructor's view is a window of its own, never the trainee's screen; the
+    // trainee can pause; a session saved into a folder that does not exist yet creates it.
+    void instructorWindowTraineePauseAndNewFolder() {
+        MainWindow window;
+        window.show();
+        TrainingPanel* panel = window.trainingPanel();
+        TrainingRunner& runner = panel->runner();
+        window.tabs()->setCurrentWidget(panel);
+        QVERIFY(panel->instructorWindow()->isWindow());
+        QVERIFY(!panel->instructorWindow()->isVisible());
+        for (auto* item : panel->plots()->plot(0)->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+            QVERIFY2(!item->title().text().contains(QStringLiteral("true")),
+                     qPrintable(item->title().text()));
+        }
+        panel->speed()->setCurrentIndex(panel->speed()->findData(50));
+        QTest::mouseClick(panel->startButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(runner.frame().started && runner.frame().timeS >= 20, 10000);
+        QTest::mouseClick(panel->pauseButton(), Qt::LeftButton);
+        QTRY_VERIFY(runner.frame().frozen);
+        QTRY_COMPARE(panel->pauseButton()->text(), QStringLiteral("Continue"));
+        const double pausedAt = runner.frame().timeS;
+        QTest::qWait(300);
+        QCOMPARE(runner.frame().timeS, pausedAt);
+        QTest::mouseClick(panel->pauseButton(), Qt::LeftButton);
+        QTRY_VERIFY(!runner.frame().frozen && runner.frame().timeS > pausedAt);
+        panel->setInstructorView(true);
+        QVERIFY(panel->instructorWindow()->isVisible());
+        QVERIFY(panel->instructorView());
+        QTRY_VERIFY(panel->truthPlots()->curveCount(0) >= 2); // measured and true moisture
+        panel->setInstructorView(false);
+        QTemporaryDir dir;
+        const QString folder = dir.filePath(QStringLiteral("not/yet/there"));
+        QSignalSpy saved(&runner, &TrainingRunner::saved);
+        panel->saveSession(folder);
+        QVERIFY(saved.wait(20000));
+        QVERIFY(QFile::exists(folder + QStringLiteral("/session.json")));
     }
 };
 

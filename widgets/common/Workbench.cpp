@@ -213,12 +213,16 @@ void Workbench::retrain() {
     train(m_lastTrainOptions.value_or(workflow::TrainOptions{}));
 }
 
-void Workbench::fetchModel(const QString& why, const QString& learntOn, bool fromFile) {
+void Workbench::fetchModel(const QString& why, const QString& learntOn, bool fromFile,
+                           const std::optional<std::array<LearntPart, 3>>& parts) {
     start<hybrid::HybridModel>(
         Action::Other, tr("Read the model"),
         [](workflow::Session& s, const Progress&) -> Expected<hybrid::HybridModel> { return s.model(); },
-        [this, why, learntOn, fromFile](const hybrid::HybridModel& m) {
+        [this, why, learntOn, fromFile, parts](const hybrid::HybridModel& m) {
             takeModel(m, why, learntOn, fromFile);
+            if (parts) {
+                restoreLearntParts(*parts);
+            }
             // A model with learnt parts opened on loaded data: show how it does on the held-out part.
             if (m_model.hasResidualModels() && hasData() && !m_latest.evaluate) {
                 evaluate();
@@ -293,16 +297,16 @@ void Workbench::openData(const QString& path, const QString& mappingPath) {
         });
 }
 
-void Workbench::openModel(const QString& path) {
+void Workbench::openModel(const QString& path, const std::optional<std::array<LearntPart, 3>>& parts) {
     workflow::OpenOptions o;
     o.modelPath = path.toStdString();
     start<workflow::OpenResult>(
         Action::Other, tr("Open model %1").arg(path),
         [o](workflow::Session& s, const Progress& p) { return s.open(o, p); },
-        [this, path](const workflow::OpenResult&) {
+        [this, path, parts](const workflow::OpenResult&) {
             m_modelPath = path;
             Q_EMIT status(tr("Model %1 opened").arg(path));
-            fetchModel({}, tr("model file %1").arg(QFileInfo(path).fileName()), true);
+            fetchModel({}, tr("model file %1").arg(QFileInfo(path).fileName()), true, parts);
         });
 }
 

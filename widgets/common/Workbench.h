@@ -106,7 +106,8 @@ public:
 
     /// @brief Loads data; @p mappingPath: a column mapping file (empty: the contract's names).
     void openData(const QString& path, const QString& mappingPath = {});
-    void openModel(const QString& path);
+    /// @p parts: the learnt parts' states a project saved with this model, put back once it is read.
+    void openModel(const QString& path, const std::optional<std::array<LearntPart, 3>>& parts = std::nullopt);
     /// @p doneMessage: the status line when it is written (default "Model saved to …").
     void saveModel(const QString& path, const QString& doneMessage = {});
     /// @brief Shows results read back from a project (panels redraw from them, nothing re-runs) and
@@ -175,7 +176,8 @@ private:
                 std::function<void(const QString&, const Error&)> onFailure = {});
     /// Refreshes the GUI copy of the model after an action that may change it; @p why names
     /// the action, for the parts it drops ("the physics model was calibrated").
-    void fetchModel(const QString& why = {}, const QString& learntOn = {}, bool fromFile = false);
+    void fetchModel(const QString& why = {}, const QString& learntOn = {}, bool fromFile = false,
+                    const std::optional<std::array<LearntPart, 3>>& parts = std::nullopt);
     /// Takes @p model as the GUI copy and updates the learnt parts: a part the model holds and did
     /// not before, or any it holds when @p learntOn is given, is current (learnt on @p learntOn);
     /// one it no longer holds is stale for @p why (absent when no why, or @p fromFile).

@@ -109,6 +109,14 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     connect(runAblation, &QPushButton::clicked, &m_workbench, &Workbench::ablation);
     connect(&m_workbench, &Workbench::ablationFinished, this, &ResidualPanel::showAblation);
     connect(&m_workbench, &Workbench::mpcFinished, this, &ResidualPanel::showGains);
+    // The note follows a cancel or a failure of the training it announced.
+    connect(&m_workbench, &Workbench::failed, this,
+            [this](const QString& action, const QString& message, bool) {
+                if (action == Workbench::tr("Learn the correction models") ||
+                    action == Workbench::tr("Ablation")) {
+                    m_note->setText(message);
+                }
+            });
     connect(&m_workbench, &Workbench::resultsRestored, this, [this] {
         showEvaluation();
         showAblation();
