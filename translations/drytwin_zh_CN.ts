@@ -190,11 +190,442 @@
     </message>
 </context>
 <context>
+    <name>ParameterTexts</name>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="14"/>
+        <source>ideal gas constant</source>
+        <translation>理想气体常数</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="15"/>
+        <source>specific gas constant of water vapour</source>
+        <translation>水蒸气比气体常数</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="16"/>
+        <source>specific heat of dry material</source>
+        <translation>干物料比热容</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="17"/>
+        <source>specific heat of water</source>
+        <translation>水的比热容</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="18"/>
+        <source>temperature parameter of water activity (Eq. 2)</source>
+        <translation>水分活度的温度参数（公式 2）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="19"/>
+        <source>Oswin parameter 1 (Eq. 5)</source>
+        <translation>Oswin 参数 1（公式 5）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="20"/>
+        <source>Oswin parameter 2 (Eq. 5), per kelvin of T in °C</source>
+        <translation>Oswin 参数 2（公式 5），T 以 °C 计时每开尔文</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="21"/>
+        <source>Oswin parameter 3 (Eq. 5)</source>
+        <translation>Oswin 参数 3（公式 5）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="22"/>
+        <source>diffusivity pre-factor (Eq. 6)</source>
+        <translation>扩散系数指前因子（公式 6）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="23"/>
+        <source>activation energy of diffusion (Eq. 6)</source>
+        <translation>扩散活化能（公式 6）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="24"/>
+        <source>bound-water latent heat correction (Eq. 4)</source>
+        <translation>结合水潜热修正（公式 4）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="25"/>
+        <source>humidity reduction of diffusivity (Eq. 6)</source>
+        <translation>湿度对扩散系数的降低（公式 6）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="26"/>
+        <source>particle density of the material (Eq. 7)</source>
+        <translation>物料颗粒密度（公式 7）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="27"/>
+        <source>strand radius as a cylinder (Eq. 7)</source>
+        <translation>按圆柱计的丝条半径（公式 7）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="28"/>
+        <source>strand length (Eq. 7)</source>
+        <translation>丝条长度（公式 7）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="29"/>
+        <source>convective heat-transfer coefficient in the tube (Eq. 8)</source>
+        <translation>管内对流传热系数（公式 8）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="30"/>
+        <source>mass-transfer coefficient in the tube (Eq. 10)</source>
+        <translation>管内传质系数（公式 10）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="31"/>
+        <source>humidity ratio of the drying air (Eq. 9)</source>
+        <translation>干燥风的含湿量（公式 9）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="32"/>
+        <source>total pressure of the drying air (Eq. 9)</source>
+        <translation>干燥风总压（公式 9）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="33"/>
+        <source>enthalpy reference temperature (Eqs. 12, 14, 19)</source>
+        <translation>焓的参考温度（公式 12、14、19）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="34"/>
+        <source>layer packing factor (Eq. 13)</source>
+        <translation>料层堆积系数（公式 13）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="35"/>
+        <source>characteristic diffusion length (Eq. 13)</source>
+        <translation>特征扩散长度（公式 13）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="36"/>
+        <source>natural-convection coefficient on the belt (Eq. 14)</source>
+        <translation>输送带上的自然对流系数（公式 14）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="37"/>
+        <source>exposed area per kg of dry matter on the belt (Eq. 14)</source>
+        <translation>输送带上每千克干物质的暴露面积（公式 14）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="38"/>
+        <source>mass fraction of the conveyor top layer (Eqs. 15-16)</source>
+        <translation>输送机表层的质量分数（公式 15–16）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="39"/>
+        <source>flash-evaporation rate in the winnower (Eqs. 17-18)</source>
+        <translation>风选机内的闪蒸速率（公式 17–18）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="40"/>
+        <source>heat loss of the winnower per kg of dry matter (Eq. 19)</source>
+        <translation>风选机每千克干物质的散热（公式 19）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="41"/>
+        <source>residence time in the winnower (Eqs. 17-19)</source>
+        <translation>风选机内停留时间（公式 17–19）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="42"/>
+        <source>residence time in the drying tube</source>
+        <translation>干燥管内停留时间</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="43"/>
+        <source>transport time on the conveyor</source>
+        <translation>输送机上的输送时间</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="44"/>
+        <source>time constant of the hot-air temperature actuator</source>
+        <translation>热风温度执行机构的时间常数</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="45"/>
+        <source>outlet mixing: first-order lag of X_out and T_out (belt and winnower holdup)</source>
+        <translation>出口混合：X_out 和 T_out 的一阶滞后（输送带和风选机存料）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="46"/>
+        <source>tube wall heat loss: T_gas = T_hot - theta (T_hot - T_amb)</source>
+        <translation>管壁散热：T_gas = T_hot - theta (T_hot - T_amb)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="47"/>
+        <source>gas-phase coupling: T_gas falls by theta L_v (X_in - X) m_dry / (c_air m_air) along the tube</source>
+        <translation>气相耦合：沿管 T_gas 降低 theta L_v (X_in - X) m_dry / (c_air m_air)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="48"/>
+        <source>fouling: h = h_HDT (1 - theta t), t since the batch started</source>
+        <translation>结垢：h = h_HDT (1 - theta t)，t 为批次开始后的时间</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="49"/>
+        <source>first-order lag of the outlet moisture meter</source>
+        <translation>出口水分仪的一阶滞后</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="50"/>
+        <source>constant offset of the outlet moisture meter</source>
+        <translation>出口水分仪的恒定偏差</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="51"/>
+        <source>conveyor transport time minus tau_conv</source>
+        <translation>输送时间减去 tau_conv</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="52"/>
+        <source>falling-rate drying: Eq. 10 times 1 - theta (X_cr - X)/X_cr below X_cr = 0.25 kg/kg</source>
+        <translation>降速干燥：低于 X_cr = 0.25 kg/kg 时公式 10 乘以 1 - theta (X_cr - X)/X_cr</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="53"/>
+        <source>re-absorption on the conveyor: dX/dt gains theta RH</source>
+        <translation>输送机上的回潮：dX/dt 增加 theta RH</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="54"/>
+        <source>offset of the inlet moisture gauge: the line sees X_in measured minus it</source>
+        <translation>入口水分仪偏差：产线实际含水率为 X_in 测量值减去它</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="55"/>
+        <source>time constant of the hot-air sensor: the line sees T_hot + tau dT_hot/dt (its inverse lag)</source>
+        <translation>热风传感器时间常数：产线实际为 T_hot + tau dT_hot/dt（其逆滞后）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="56"/>
+        <source>share of the inlet gauge&apos;s fast variation (about its 20 s zero-phase mean) that is scatter, not moisture: the line sees X_in with that share removed</source>
+        <translation>入口水分仪快速变化（相对其 20 s 零相位均值）中属于仪表波动而非真实水分的比例：产线实际为去掉这一部分的 X_in</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="57"/>
+        <source>onset of the mechanism extensions since each batch&apos;s start (0: from the start; transport_delay_error always acts from the start)</source>
+        <translation>机理扩展自各批次开始起的起始时间（0：从开始；transport_delay_error 总是从开始起作用）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="58"/>
+        <source>paper App. A</source>
+        <translation>论文附录 A</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="59"/>
+        <source>paper App. A (bounds: sign kept, tenfold range)</source>
+        <translation>论文附录 A（范围：保持符号，十倍区间）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="60"/>
+        <source>gives D_eff ≈ 1.7e-10 m²/s at 57 °C, the order reported for tobacco lamina</source>
+        <translation>在 57 °C 时 D_eff ≈ 1.7e-10 m²/s，与烟叶文献报道的量级一致</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="61"/>
+        <source>typical of leaf materials (20–40 kJ/mol)</source>
+        <translation>叶类物料的典型值（20–40 kJ/mol）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="62"/>
+        <source>heat of sorption of tobacco adds up to about a third near dryness</source>
+        <translation>接近干燥时烟草的吸附热可增加约三分之一</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="63"/>
+        <source>humid air halves the surface gradient at saturation</source>
+        <translation>饱和时湿空气使表面梯度减半</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="64"/>
+        <source>cut tobacco strands (lamina with air spaces)</source>
+        <translation>烟丝（含气隙的叶片）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="65"/>
+        <source>cut width about 1 mm</source>
+        <translation>切丝宽度约 1 mm</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="66"/>
+        <source>cut tobacco strands of 1–3 cm</source>
+        <translation>长 1–3 cm 的烟丝</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="67"/>
+        <source>paper §IV.C calibrated value</source>
+        <translation>论文 §IV.C 标定值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="68"/>
+        <source>recirculated hot air of a tobacco dryer is humid</source>
+        <translation>烟草干燥机的循环热风较湿</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="69"/>
+        <source>atmospheric</source>
+        <translation>大气压</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="70"/>
+        <source>0 °C, the reference of the 2501 kJ/kg in Eq. 4</source>
+        <translation>0 °C，即公式 4 中 2501 kJ/kg 的参考温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="71"/>
+        <source>loose single layer</source>
+        <translation>松散单层</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="72"/>
+        <source>gives about 1 % dry-basis loss of the top layer on a 60 s belt</source>
+        <translation>在 60 s 的输送带上表层约损失 1 %（干基）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="73"/>
+        <source>natural convection of a horizontal layer</source>
+        <translation>水平料层的自然对流</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="74"/>
+        <source>top layer of about 2 kg/m²</source>
+        <translation>表层约 2 kg/m²</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="75"/>
+        <source>top third of the layer exchanges with the air</source>
+        <translation>料层上部三分之一与空气交换</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="76"/>
+        <source>about 0.4 % wb flash loss at 35 K excess temperature</source>
+        <translation>过热 35 K 时约 0.4 %（湿基）的闪蒸损失</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="77"/>
+        <source>turbulent air, short contact</source>
+        <translation>湍流空气，接触时间短</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="78"/>
+        <source>a few seconds</source>
+        <translation>几秒</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="79"/>
+        <source>tube of about 70 m at 10 m/s particle speed</source>
+        <translation>管长约 70 m，颗粒速度 10 m/s</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="80"/>
+        <source>belt of 12 m at 0.2 m/s</source>
+        <translation>输送带长 12 m，速度 0.2 m/s</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="81"/>
+        <source>heat exchanger and duct lag; used when T_hot follows its setpoint (MPC)</source>
+        <translation>换热器和风道的滞后；用于 T_hot 跟随设定值时（MPC）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="82"/>
+        <source>distributed line: axial mixing on the belt, the winnower&apos;s stirred volume</source>
+        <translation>分布式产线：输送带上的轴向混合、风选机的搅拌容积</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="83"/>
+        <source>extension tube_wall_heat_loss</source>
+        <translation>扩展 tube_wall_heat_loss</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="84"/>
+        <source>extension gas_phase_coupling</source>
+        <translation>扩展 gas_phase_coupling</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="85"/>
+        <source>extension heat_transfer_fouling</source>
+        <translation>扩展 heat_transfer_fouling</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="86"/>
+        <source>extension moisture_meter_lag</source>
+        <translation>扩展 moisture_meter_lag</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="87"/>
+        <source>extension moisture_meter_offset</source>
+        <translation>扩展 moisture_meter_offset</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="88"/>
+        <source>extension transport_delay_error</source>
+        <translation>扩展 transport_delay_error</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="89"/>
+        <source>extension falling_rate_drying</source>
+        <translation>扩展 falling_rate_drying</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="90"/>
+        <source>extension ambient_reabsorption</source>
+        <translation>扩展 ambient_reabsorption</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="91"/>
+        <source>extension inlet_moisture_sensor_offset</source>
+        <translation>扩展 inlet_moisture_sensor_offset</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="92"/>
+        <source>extension hot_air_sensor_lag</source>
+        <translation>扩展 hot_air_sensor_lag</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="93"/>
+        <source>extension inlet_moisture_sensor_noise</source>
+        <translation>扩展 inlet_moisture_sensor_noise</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="94"/>
+        <source>set by discovery for a cause that starts mid-batch</source>
+        <translation>由发现功能为批次中途出现的原因设定</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="32"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="34"/>
         <source>set %1 to %2</source>
         <translation>将 %1 设为 %2</translation>
+    </message>
+</context>
+<context>
+    <name>ScenarioForm</name>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="33"/>
+        <source>feed [kg/h]</source>
+        <translation>进料 [kg/h]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="34"/>
+        <source>inlet moisture [% wb]</source>
+        <translation>入口含水率 [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="35"/>
+        <source>ambient temperature [°C]</source>
+        <translation>环境温度 [°C]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="36"/>
+        <source>ambient humidity [% RH]</source>
+        <translation>环境湿度 [% RH]</translation>
     </message>
 </context>
 <context>
@@ -310,159 +741,159 @@
 <context>
     <name>drytwin::widgets::CalibrationPanel</name>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="29"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="30"/>
         <source>Free</source>
         <translation>自由</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="29"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="30"/>
         <source>Lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="29"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="30"/>
         <source>Upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="29"/>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="30"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="67"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="60"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="62"/>
         <source> evaluations</source>
         <translation> 次评估</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="61"/>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="172"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="63"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="174"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="62"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="64"/>
         <source>Stop, keep best</source>
         <translation>停止并保留最优</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="67"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="67"/>
         <source>Estimate</source>
         <translation>估计值</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="67"/>
         <source>95 % interval</source>
         <translation>95 % 区间</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="67"/>
         <source>Fisher SE</source>
         <translation>Fisher 标准误</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="65"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="67"/>
         <source>At bound</source>
         <translation>触及边界</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="67"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="69"/>
         <source>Fits the free parameters to the calibration rows (every 10th kept row, the first 300) with NLopt: a global search, then BOBYQA.</source>
         <translation>用 NLopt 将自由参数拟合到标定行（保留行中每隔 10 行取一行，取前 300 行）：先全局搜索，再用 BOBYQA。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="71"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="73"/>
         <source>best loss [-]</source>
         <translation>最优损失 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="72"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="74"/>
         <source>θ / θ final [-]</source>
         <translation>θ / θ 最终值 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="73"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="75"/>
         <source>share of the evaluation budget used [-]</source>
         <translation>已用评估预算比例 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="77"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="79"/>
         <source>Free parameters and their search bounds:</source>
         <translation>自由参数及其搜索范围：</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="87"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="89"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="107"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="109"/>
         <source>best loss so far</source>
         <translation>迄今最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="125"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="127"/>
         <source>Run Calibrate to see the loss fall and the parameters settle</source>
         <translation>运行标定，可看到损失下降、参数收敛</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="126"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="128"/>
         <source>Run Calibrate to see the fit before and after</source>
         <translation>运行标定，可看到标定前后的拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="168"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="170"/>
         <source>Cannot calibrate: %1</source>
         <translation>无法标定：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="179"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="181"/>
         <source>Calibrating…</source>
         <translation>正在标定…</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="204"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="206"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="204"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="206"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="208"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="210"/>
         <source>%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. Intervals: %10.</source>
         <translation>%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口 MAE %6 → %7 % 湿基，%8 → %9 °C。区间：%10。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="233"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="235"/>
         <source>loss evaluations [-]</source>
         <translation>损失评估次数 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="234"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="236"/>
         <source>best loss</source>
         <translation>最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="266"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="268"/>
         <source>measured %1</source>
         <translation>实测 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="269"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="271"/>
         <source>before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="272"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="274"/>
         <source>after</source>
         <translation>之后</translation>
     </message>
@@ -1855,128 +2286,128 @@
 <context>
     <name>drytwin::widgets::ModelPanel</name>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="49"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="51"/>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="49"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="51"/>
         <source>Value</source>
         <translation>数值</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="49"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="51"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="49"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="51"/>
         <source>Lower</source>
         <translation>下限</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="49"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="51"/>
         <source>Upper</source>
         <translation>上限</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="49"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="51"/>
         <source>Source</source>
         <translation>来源</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="49"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="51"/>
         <source>Meaning</source>
         <translation>含义</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="52"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="54"/>
         <source>Undo</source>
         <translation>撤销</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="53"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="55"/>
         <source>Redo</source>
         <translation>重做</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="61"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="63"/>
         <source>Physics switches</source>
         <translation>物理开关</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="63"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="65"/>
         <source>clamp water activity (Eq. 2)</source>
         <translation>限制水分活度（式 2）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="63"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="65"/>
         <source>bound-water latent heat (Eq. 4)</source>
         <translation>结合水潜热（式 4）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="64"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="66"/>
         <source>moisture-dependent heat capacity (Eq. 3)</source>
         <translation>随含水率变化的比热（式 3）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="65"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="67"/>
         <source>consistent energy balance (Eqs. 12, 14, 19; off: as printed)</source>
         <translation>一致的能量平衡（式 12、14、19；关闭：按原文）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="81"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="83"/>
         <source>Simulate</source>
         <translation>仿真</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="82"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="84"/>
         <source>Run the physics model over every batch with these parameters</source>
         <translation>用这些参数对每个批次运行机理模型</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="89"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="91"/>
         <source>Double-click a value to edit it; it is checked against its bounds.</source>
         <translation>双击数值进行编辑；将按其上下限检查。</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="99"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="101"/>
         <source>Batch:</source>
         <translation>批次：</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="103"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="105"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="104"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="106"/>
         <source>T_out [°C]</source>
         <translation>T_out [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="105"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="107"/>
         <source>X_HDT [% wb]</source>
         <translation>X_HDT [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="106"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="108"/>
         <source>T_HDT [°C]</source>
         <translation>T_HDT [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="143"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="145"/>
         <source>%1 must lie in [%2, %3] %4; it stays %5.</source>
         <translation>%1 必须在 [%2, %3] %4 之内；保持为 %5。</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="204"/>
-        <location filename="../widgets/model/ModelPanel.cpp" line="212"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="206"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="214"/>
         <source>measured</source>
         <translation>实测</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="224"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="226"/>
         <source>physics model</source>
         <translation>机理模型</translation>
     </message>
@@ -2002,167 +2433,177 @@
 <context>
     <name>drytwin::widgets::MpcPanel</name>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="40"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="43"/>
         <source>Open scenario…</source>
         <translation>打开情景…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="44"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="47"/>
         <source>The scenario as JSON (schema in docs/mpc.md): setpoint steps, input steps and ramps, hidden mechanisms switched on mid-run, noise. Edits are checked when you run.</source>
         <translation>以 JSON 表示的情景（格式见 docs/mpc.md）：设定值阶跃、输入阶跃与斜坡、运行中途开启的隐藏机理、噪声。运行时检查修改。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="53"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
         <source>Run scenario</source>
         <translation>运行情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="59"/>
         <source>Show the horizon the controllers predicted at this decision</source>
         <translation>显示控制器在此决策时刻预测的时域</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="57"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="60"/>
         <source>Runs the scenario against the virtual plant once per controller.</source>
         <translation>对虚拟装置逐个控制器运行该情景。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="59"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="59"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
         <source>IAE [%·s]</source>
         <translation>IAE [%·s]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="59"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
         <source>Effort [K²]</source>
         <translation>控制量 [K²]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="59"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
         <source>Violations [%]</source>
         <translation>越限 [%]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="60"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
         <source>Solve median [ms]</source>
         <translation>求解时间中位数 [ms]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="60"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
         <source>Fallbacks</source>
         <translation>回退次数</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="60"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
         <source>Model gain [%/K]</source>
         <translation>模型增益 [%/K]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="65"/>
         <source>X_out, true [% wb]</source>
         <translation>X_out 真实值 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="66"/>
         <source>T_hot setpoint [°C]</source>
         <translation>T_hot 设定值 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="78"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="81"/>
+        <source>Form</source>
+        <translation>表单</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="82"/>
+        <source>JSON</source>
+        <translation>JSON</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="89"/>
         <source>prediction at</source>
         <translation>预测时刻</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="100"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="127"/>
         <source>Open scenario</source>
         <translation>打开情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="100"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="127"/>
         <source>Scenarios (*.json)</source>
         <translation>情景 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="110"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="137"/>
         <source>Run a scenario to see each controller&apos;s outlet moisture and hot-air setpoint</source>
         <translation>运行一个情景，可看到各控制器的出口含水率和热风设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="123"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="150"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="140"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="167"/>
         <source>Cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="154"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="181"/>
         <source>Choose at least one controller.</source>
         <translation>请至少选择一个控制器。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="157"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="184"/>
         <source>Running…</source>
         <translation>正在运行…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="168"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="195"/>
         <source>Contract key: %1</source>
         <translation>接口代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="170"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="197"/>
         <source>%1 (stale)</source>
         <translation>%1（过期）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="171"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="198"/>
         <source>Learnt before %1: retrain it to run it.</source>
         <translation>学习于以下变化之前：%1；需重新训练才能运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="173"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="200"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="174"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="201"/>
         <source>Learn the correction models on the Residual model tab to run it.</source>
         <translation>在残差模型页学习修正模型后才能运行它。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="202"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="229"/>
         <source>skipped</source>
         <translation>已跳过</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="203"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="230"/>
         <source>the model holds no such prediction model</source>
         <translation>模型中没有这种预测模型</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="216"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="243"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="224"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="251"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="240"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="267"/>
         <source>%1 predicted at %2 s</source>
         <translation>%1 在 %2 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="249"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="276"/>
         <source>%1. IAE and violations on the product&apos;s true outlet moisture; the plant&apos;s own gain is %2 % wb/K.</source>
         <translation>%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。</translation>
     </message>
@@ -2469,68 +2910,219 @@ extrapolation</source>
         <translation>学习修正模型后可看到其随预测步长的技能</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="134"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="136"/>
         <source>%1 %2 (%3 %)</source>
         <translation>%1 %2（%3 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="140"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="142"/>
         <source>Steady gain of X_out to the hot-air setpoint [% wb per K] at the scenario&apos;s start: the plant (open-loop step test) %1; each model as its MPC saw it, and how far from the plant&apos;s: %2. A learnt residual&apos;s response to the setpoint plan comes from the physics model, since data under the plant&apos;s own loop cannot tell it from the disturbances the loop answered.</source>
         <translation>情景起点处 X_out 对热风设定值的稳态增益 [% wb/K]：装置（开环阶跃试验）%1；各模型在其 MPC 中的增益及与装置的偏差：%2。学习得到的残差对设定值计划的响应取自物理模型，因为装置自身闭环下的数据无法将其与闭环所应对的扰动区分开。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="169"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="171"/>
         <source>Training…</source>
         <translation>正在训练…</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="183"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="185"/>
         <source>Learn the correction models on %1: they train on the chronological 70 % and are scored on the rest.</source>
         <translation>在 %1 上学习修正模型：用按时间顺序的前 70 % 训练，其余部分评分。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="186"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="188"/>
         <source>Open a data set first (File ▸ Open data set folder…, or the bundled demo).</source>
         <translation>请先打开数据集（文件 ▸ 打开数据集文件夹…，或自带演示数据）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="209"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="211"/>
         <source>Key: %1</source>
         <translation>代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="221"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="223"/>
         <source>skill 1 (ties the better reference)</source>
         <translation>技能值 1（与较优参考持平）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="231"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="233"/>
         <source>unit circle</source>
         <translation>单位圆</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="245"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="247"/>
         <source>A unconstrained (ρ = %1)</source>
         <translation>无约束 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="251"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="253"/>
         <source>A with Eq. 30 (ρ = %1)</source>
         <translation>式 30 约束后的 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="278"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="280"/>
         <source> Slowest contraction of A: %1 per step (half-life %2 s).</source>
         <translation> A 的最慢收缩：每步 %1（半衰期 %2 s）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="283"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="285"/>
         <source>On %1, held-out part: %2 rows. Skill below 1 beats both reference predictors (the last measurement held, and the physics model with its last error held). R² below 0 means a model predicts worse than the batch&apos;s mean (hover an R² for what it says).</source>
         <translation>数据 %1，留出部分：%2 行。技能小于 1 表示优于两个参考预测（保持最后测量值；物理模型保持最后误差）。R² 小于 0 表示模型预测比批次均值还差（鼠标悬停在 R² 上可看说明）。</translation>
     </message>
     <message>
         <source>Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).</source>
         <translation>留出部分：%1 行。技能值低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
+    </message>
+</context>
+<context>
+    <name>drytwin::widgets::ScenarioForm</name>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="57"/>
+        <source>distributed (realistic line)</source>
+        <translation>分布式（真实产线）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="58"/>
+        <source>lumped (the model&apos;s own equations)</source>
+        <translation>集总式（模型自身的方程）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="60"/>
+        <source>realistic (noise, lags, faults)</source>
+        <translation>真实（噪声、滞后、故障）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="61"/>
+        <source>ideal</source>
+        <translation>理想</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="66"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="70"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="74"/>
+        <source> % wb</source>
+        <translation> % 湿基</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="76"/>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="77"/>
+        <source>Plant</source>
+        <translation>工厂</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="78"/>
+        <source>Instruments</source>
+        <translation>仪表</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="79"/>
+        <source>Random seed</source>
+        <translation>随机种子</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="80"/>
+        <source>Scored length</source>
+        <translation>评分时长</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="81"/>
+        <source>Initial X_out setpoint</source>
+        <translation>初始 X_out 设定值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="82"/>
+        <source>Specification band ±</source>
+        <translation>规格带 ±</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="83"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="84"/>
+        <source>at [s]</source>
+        <translation>时刻 [s]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="83"/>
+        <source>setpoint to [% wb]</source>
+        <translation>设定值变为 [% 湿基]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="84"/>
+        <source>input</source>
+        <translation>输入</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="84"/>
+        <source>over [s]</source>
+        <translation>历时 [s]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="84"/>
+        <source>to</source>
+        <translation>变为</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="85"/>
+        <source>hidden cause</source>
+        <translation>隐藏原因</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="85"/>
+        <source>strength</source>
+        <translation>强度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="85"/>
+        <source>from [s]</source>
+        <translation>起始 [s]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="92"/>
+        <source>Add</source>
+        <translation>添加</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="93"/>
+        <source>Remove</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="111"/>
+        <source>Setpoint steps</source>
+        <translation>设定值阶跃</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="112"/>
+        <source>Input changes (a ramp when &quot;over&quot; &gt; 0)</source>
+        <translation>输入变化（“历时” &gt; 0 时为斜坡）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="114"/>
+        <source>Hidden causes in the plant (no controller knows them)</source>
+        <translation>工厂中的隐藏原因（控制器均不知道）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="117"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="204"/>
+        <source>The scenario as a form; the JSON tab shows the same scenario as text.</source>
+        <translation>以表单显示的情景；JSON 页以文本显示同一情景。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="183"/>
+        <source>%1; strength in %2</source>
+        <translation>%1；强度单位 %2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="198"/>
+        <source>The JSON tab&apos;s text is not a scenario the form can show (%1); fix it there.</source>
+        <translation>JSON 页的文本不是表单可显示的情景（%1）；请在那里修改。</translation>
     </message>
 </context>
 <context>
@@ -3255,7 +3847,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/common/Workbench.cpp" line="447"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="114"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="115"/>
         <source>Learn the correction models</source>
         <translation>学习修正模型</translation>
     </message>
@@ -3265,7 +3857,7 @@ extrapolation</source>
         <translation>已学习修正模型（PGRL-CC）和两个对比模型</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="137"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="139"/>
         <location filename="../widgets/common/Workbench.cpp" line="417"/>
         <source>Calibrate</source>
         <translation>标定</translation>
@@ -3304,7 +3896,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/common/Workbench.cpp" line="496"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="114"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="116"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>

@@ -7,12 +7,15 @@
 #include "common/ModelStateBar.h"
 #include "common/PlotStack.h"
 #include "common/WidgetHelpers.h"
+#include "control/Scenario.h"
 #include "data/ColumnMappingDialog.h"
 #include "data/DataPanel.h"
 #include "diagnostics/DiagnosticsPanel.h"
 #include "discovery/DiscoverPanel.h"
 #include "model/ModelPanel.h"
+#include "model/ParameterTexts.h"
 #include "mpc/MpcPanel.h"
+#include "mpc/ScenarioForm.h"
 #include "residual/ResidualPanel.h"
 #include "training/TrainingPanel.h"
 #include "view3d/LineView3D.h"
@@ -154,6 +157,24 @@ private Q_SLOTS:
         QVERIFY2(!translated.contains(QLatin1String("tell them apart")) &&
                      !translated.contains(QLatin1String("Fitted")),
                  qPrintable(translated));
+    }
+
+    // Every physics parameter's meaning and source are shown in Chinese in the Chinese window (the
+    // engine's table is English): a parameter added to the engine without its text in
+    // widgets/model/ParameterTexts.cpp fails here.
+    void parameterTextsAreTranslated() {
+        QTranslator chinese;
+        QVERIFY(chinese.load(QStringLiteral("drytwin_zh_CN"), QStringLiteral(DRYTWIN_QM_DIR)));
+        QCoreApplication::installTranslator(&chinese);
+        for (const auto& info : properties::parameterTable()) {
+            const QString english = widgets::fromView(info.meaning);
+            QVERIFY2(widgets::parameterMeaning(info) != english, qPrintable(english));
+            QVERIFY2(widgets::parameterSource(info) != widgets::fromView(info.source),
+                     qPrintable(widgets::fromView(info.source)));
+        }
+        QCoreApplication::removeTranslator(&chinese);
+        QCOMPARE(widgets::parameterMeaning(properties::info(properties::Param::h_HDT)),
+                 QString("convective heat-transfer coefficient in the tube (Eq. 8)"));
     }
 
     void hasMenusTabsAndAbout() {
@@ -562,6 +583,36 @@ private Q_SLOTS:
         QCOMPARE(w.dataPanel()->batchTable()->rowCount(), 2);
         QCOMPARE(w.dataSetChooser()->currentIndex(), 0);
         QCOMPARE(w.calibrationPanel()->estimates()->rowCount(), 3);
+    }
+
+    // Story 4: the scenario is edited as a form; its JSON is one tab away and both stay the same.
+    void scenarioFormAndJsonEditTheSameScenario() {
+        MainWindow w;
+        auto* mpc = w.mpcPanel();
+        auto* form = mpc->form();
+        mpc->scenarios()->setCurrentText("paper_like_1000");
+        QCOMPARE(mpc->scenarioTabs()->currentIndex(), 0); // the form first
+        QCOMPARE(form->setpointSteps()->rowCount(), 3);
+        QCOMPARE(form->inputChanges()->rowCount(), 2);
+        QCOMPARE(form->mechanisms()->rowCount(), 5);
+        form->setpointSteps()->item(0, 1)->setText("12.2"); // an edit in the form ...
+        auto scenario = control::parseScenario(mpc->editor()->toPlainText().toStdString(), "editor");
+        QVERIFY2(scenario.ok(), scenario ? "" : scenario.error().message().c_str());
+        QCOMPARE(scenario->setpointSteps.at(0).toPct, 12.2); // ... is the JSON's
+        QCOMPARE(scenario->mechanisms.size(), std::size_t(5));
+        QCOMPARE(scenario->plant, plant::PlantKind::Distributed);
+        QVERIFY(mpc->editor()->toPlainText().contains("air_speed_m_s")); // keys without a field are kept
+        mpc->scenarioTabs()->setCurrentIndex(1);
+        mpc->editor()->setPlainText(
+            R"({"name": "typed", "length_s": 60, "setpoint_steps": [{"at_s": 5, "to_pct": 12}]})");
+        mpc->scenarioTabs()->setCurrentIndex(0); // ... and the JSON's text is the form's
+        QCOMPARE(form->setpointSteps()->rowCount(), 1);
+        QCOMPARE(form->mechanisms()->rowCount(), 0);
+        mpc->scenarioTabs()->setCurrentIndex(1);
+        mpc->editor()->setPlainText("{ not json");
+        mpc->scenarioTabs()->setCurrentIndex(0);
+        QVERIFY(!form->isEnabled()); // the form says the text must be fixed; nothing is lost
+        QCOMPARE(mpc->editor()->toPlainText(), QString("{ not json"));
     }
 
     // Stories 4 and 9: plain words, the paper's in tooltips, a user guide, What's this on every

@@ -6,6 +6,7 @@
 #include "common/Units.h"
 #include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
+#include "model/ParameterTexts.h"
 
 #include <QHBoxLayout>
 
@@ -45,6 +46,7 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
         const bool byDefault = isDefault(info.id);
         name->setCheckState(byDefault ? Qt::Checked : Qt::Unchecked);
         name->setData(Qt::UserRole, static_cast<int>(info.id));
+        name->setToolTip(parameterMeaning(info));
         m_free->setItem(row, 0, name);
         m_free->setItem(row, 1, new QTableWidgetItem(QString::number(info.lower, 'g', 5)));
         m_free->setItem(row, 2, new QTableWidgetItem(QString::number(info.upper, 'g', 5)));

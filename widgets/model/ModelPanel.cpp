@@ -1,5 +1,7 @@
 #include "model/ModelPanel.h"
 
+#include "model/ParameterTexts.h"
+
 #include "common/PlotStack.h"
 #include "common/Series.h"
 #include "common/Units.h"
@@ -166,8 +168,8 @@ void ModelPanel::fillTable() {
                                 fromView(info.unit),
                                 QString::number(info.lower, 'g', 4),
                                 QString::number(info.upper, 'g', 4),
-                                fromView(info.source),
-                                fromView(info.meaning)};
+                                parameterSource(info),
+                                parameterMeaning(info)};
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
             if (c != 1 || info.fixed) {

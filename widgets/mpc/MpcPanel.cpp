@@ -6,6 +6,7 @@
 #include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 #include "control/BundledScenarios.h"
+#include "mpc/ScenarioForm.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -18,8 +19,10 @@
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QStandardPaths>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -69,7 +72,15 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     top->addWidget(m_scenario, 1);
     top->addWidget(openFile);
     ll->addLayout(top);
-    ll->addWidget(m_editor, 2);
+    // The scenario as a form, its JSON one tab away; both edit the same text.
+    m_form = new ScenarioForm;
+    auto* formScroll = new QScrollArea;
+    formScroll->setWidget(m_form);
+    formScroll->setWidgetResizable(true);
+    m_scenarioTabs = new QTabWidget;
+    m_scenarioTabs->addTab(formScroll, tr("Form"));
+    m_scenarioTabs->addTab(m_editor, tr("JSON"));
+    ll->addWidget(m_scenarioTabs, 2);
     auto* controllerBox = new QWidget;
     controllerBox->setLayout(controllers);
     ll->addWidget(controllerBox);
@@ -95,6 +106,22 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
         }
     };
     connect(m_scenario, &QComboBox::currentTextChanged, this, load);
+    connect(m_form, &ScenarioForm::edited, this, [this] {
+        m_editor->blockSignals(true);
+        m_editor->setPlainText(m_form->json());
+        m_editor->blockSignals(false);
+    });
+    // Text typed in the JSON tab shows in the form when the form is looked at next.
+    connect(m_editor, &QPlainTextEdit::textChanged, this, [this] {
+        if (m_scenarioTabs->currentIndex() == 0) {
+            m_form->setJson(m_editor->toPlainText());
+        }
+    });
+    connect(m_scenarioTabs, &QTabWidget::currentChanged, this, [this](int index) {
+        if (index == 0) {
+            m_form->setJson(m_editor->toPlainText());
+        }
+    });
     load();
     connect(openFile, &QPushButton::clicked, this, [this] {
         const QString p = askOpenFile(this, tr("Open scenario"), tr("Scenarios (*.json)"));

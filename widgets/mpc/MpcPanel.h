@@ -8,10 +8,12 @@ class QLabel;
 class QPlainTextEdit;
 class QSpinBox;
 class QTableWidget;
+class QTabWidget;
 
 namespace drytwin::widgets {
 
 class ModelStateBar;
+class ScenarioForm;
 class PlotStack;
 class Workbench;
 
@@ -25,6 +27,9 @@ public:
     PlotStack* plots() const { return m_plots; }
     QTableWidget* table() const { return m_table; }
     QPlainTextEdit* editor() const { return m_editor; }
+    /// @brief The scenario as a form (the first tab; the JSON editor is the second).
+    ScenarioForm* form() const { return m_form; }
+    QTabWidget* scenarioTabs() const { return m_scenarioTabs; }
     QComboBox* scenarios() const { return m_scenario; }
     void run();
     /// @brief The controller tick boxes, one per controller, enabled where its model exists.
@@ -40,6 +45,8 @@ private:
     Workbench& m_workbench;
     QComboBox* m_scenario = nullptr;
     QPlainTextEdit* m_editor = nullptr;
+    ScenarioForm* m_form = nullptr;
+    QTabWidget* m_scenarioTabs = nullptr;
     QCheckBox* m_controllers[5] = {};
     ModelStateBar* m_state = nullptr;
     QComboBox* m_prediction = nullptr;

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <QJsonObject>
+#include <QWidget>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QSpinBox;
+class QTableWidget;
+
+namespace drytwin::widgets {
+
+/// @brief A what-if scenario as a form: the plant, its length, the initial setpoint and band, and
+/// three tables (setpoint steps, input changes, hidden mechanisms). It edits the scenario's JSON
+/// (docs/mpc.md), which stays one tab away: keys the form has no field for (noise, fluctuation, the
+/// initial input levels) are kept as they are. The engine's parser checks the result when it runs.
+class ScenarioForm : public QWidget {
+    Q_OBJECT
+public:
+    explicit ScenarioForm(QWidget* parent = nullptr);
+    /// @brief Fills the form from scenario JSON; false (form unchanged, a note says why) when the
+    /// text is not a JSON object.
+    bool setJson(const QString& text);
+    /// @brief The scenario as JSON: what setJson() read, with the form's values in place.
+    QString json() const;
+
+    QTableWidget* setpointSteps() const { return m_steps; }
+    QTableWidget* inputChanges() const { return m_inputs; }
+    QTableWidget* mechanisms() const { return m_mechanisms; }
+    /// @brief Appends a row to a table (the form's "Add" buttons), with these cells.
+    void addSetpointStep(double atS, double toPct);
+    void addInputChange(const QString& input, double atS, double durationS, double to);
+    void addMechanism(const QString& mechanism, double strength, double atS);
+
+Q_SIGNALS:
+    /// @brief The user changed a value (not emitted by setJson()).
+    void edited();
+
+private:
+    QTableWidget* makeTable(const QStringList& headers);
+    void emitEdited();
+
+    QJsonObject m_base;
+    bool m_filling = false;
+    QLabel* m_note = nullptr;
+    QLineEdit* m_name = nullptr;
+    QComboBox* m_plant = nullptr;
+    QComboBox* m_sensors = nullptr;
+    QSpinBox* m_seed = nullptr;
+    QSpinBox* m_length = nullptr;
+    QDoubleSpinBox* m_setpoint = nullptr;
+    QDoubleSpinBox* m_band = nullptr;
+    QTableWidget* m_steps = nullptr;
+    QTableWidget* m_inputs = nullptr;
+    QTableWidget* m_mechanisms = nullptr;
+};
+
+} // namespace drytwin::widgets
