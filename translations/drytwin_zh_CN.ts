@@ -352,247 +352,247 @@
         <translation>出口混合：X_out 和 T_out 的一阶滞后（输送带和风选机存料）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="46"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="47"/>
         <source>tube wall heat loss: T_gas = T_hot - theta (T_hot - T_amb)</source>
         <translation>管壁散热：T_gas = T_hot - theta (T_hot - T_amb)</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="47"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="48"/>
         <source>gas-phase coupling: T_gas falls by theta L_v (X_in - X) m_dry / (c_air m_air) along the tube</source>
         <translation>气相耦合：沿管 T_gas 降低 theta L_v (X_in - X) m_dry / (c_air m_air)</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="48"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="51"/>
         <source>fouling: h = h_HDT (1 - theta t), t since the batch started</source>
         <translation>结垢：h = h_HDT (1 - theta t)，t 为批次开始后的时间</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="49"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="52"/>
         <source>first-order lag of the outlet moisture meter</source>
         <translation>出口水分仪的一阶滞后</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="50"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="53"/>
         <source>constant offset of the outlet moisture meter</source>
         <translation>出口水分仪的恒定偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="51"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="54"/>
         <source>conveyor transport time minus tau_conv</source>
         <translation>输送时间减去 tau_conv</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="52"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="55"/>
         <source>falling-rate drying: Eq. 10 times 1 - theta (X_cr - X)/X_cr below X_cr = 0.25 kg/kg</source>
         <translation>降速干燥：低于 X_cr = 0.25 kg/kg 时公式 10 乘以 1 - theta (X_cr - X)/X_cr</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="53"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="57"/>
         <source>re-absorption on the conveyor: dX/dt gains theta RH</source>
         <translation>输送机上的回潮：dX/dt 增加 theta RH</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="54"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="58"/>
         <source>offset of the inlet moisture gauge: the line sees X_in measured minus it</source>
         <translation>入口水分仪偏差：产线实际含水率为 X_in 测量值减去它</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="55"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="60"/>
         <source>time constant of the hot-air sensor: the line sees T_hot + tau dT_hot/dt (its inverse lag)</source>
         <translation>热风传感器时间常数：产线实际为 T_hot + tau dT_hot/dt（其逆滞后）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="56"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="63"/>
         <source>share of the inlet gauge&apos;s fast variation (about its 20 s zero-phase mean) that is scatter, not moisture: the line sees X_in with that share removed</source>
         <translation>入口水分仪快速变化（相对其 20 s 零相位均值）中属于仪表波动而非真实水分的比例：产线实际为去掉这一部分的 X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="57"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="66"/>
         <source>onset of the mechanism extensions since each batch&apos;s start (0: from the start; transport_delay_error always acts from the start)</source>
         <translation>机理扩展自各批次开始起的起始时间（0：从开始；transport_delay_error 总是从开始起作用）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="58"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="68"/>
         <source>paper App. A</source>
         <translation>论文附录 A</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="59"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="69"/>
         <source>paper App. A (bounds: sign kept, tenfold range)</source>
         <translation>论文附录 A（范围：保持符号，十倍区间）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="60"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="70"/>
         <source>gives D_eff ≈ 1.7e-10 m²/s at 57 °C, the order reported for tobacco lamina</source>
         <translation>在 57 °C 时 D_eff ≈ 1.7e-10 m²/s，与烟叶文献报道的量级一致</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="61"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="72"/>
         <source>typical of leaf materials (20–40 kJ/mol)</source>
         <translation>叶类物料的典型值（20–40 kJ/mol）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="62"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="73"/>
         <source>heat of sorption of tobacco adds up to about a third near dryness</source>
         <translation>接近干燥时烟草的吸附热可增加约三分之一</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="63"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="74"/>
         <source>humid air halves the surface gradient at saturation</source>
         <translation>饱和时湿空气使表面梯度减半</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="64"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="75"/>
         <source>cut tobacco strands (lamina with air spaces)</source>
         <translation>烟丝（含气隙的叶片）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="65"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="76"/>
         <source>cut width about 1 mm</source>
         <translation>切丝宽度约 1 mm</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="66"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="77"/>
         <source>cut tobacco strands of 1–3 cm</source>
         <translation>长 1–3 cm 的烟丝</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="67"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="78"/>
         <source>paper §IV.C calibrated value</source>
         <translation>论文 §IV.C 标定值</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="68"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="79"/>
         <source>recirculated hot air of a tobacco dryer is humid</source>
         <translation>烟草干燥机的循环热风较湿</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="69"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="80"/>
         <source>atmospheric</source>
         <translation>大气压</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="70"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="81"/>
         <source>0 °C, the reference of the 2501 kJ/kg in Eq. 4</source>
         <translation>0 °C，即公式 4 中 2501 kJ/kg 的参考温度</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="71"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="82"/>
         <source>loose single layer</source>
         <translation>松散单层</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="72"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="83"/>
         <source>gives about 1 % dry-basis loss of the top layer on a 60 s belt</source>
         <translation>在 60 s 的输送带上表层约损失 1 %（干基）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="73"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="84"/>
         <source>natural convection of a horizontal layer</source>
         <translation>水平料层的自然对流</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="74"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="85"/>
         <source>top layer of about 2 kg/m²</source>
         <translation>表层约 2 kg/m²</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="75"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="86"/>
         <source>top third of the layer exchanges with the air</source>
         <translation>料层上部三分之一与空气交换</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="76"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="87"/>
         <source>about 0.4 % wb flash loss at 35 K excess temperature</source>
         <translation>过热 35 K 时约 0.4 %（湿基）的闪蒸损失</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="77"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="88"/>
         <source>turbulent air, short contact</source>
         <translation>湍流空气，接触时间短</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="78"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="89"/>
         <source>a few seconds</source>
         <translation>几秒</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="79"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="90"/>
         <source>tube of about 70 m at 10 m/s particle speed</source>
         <translation>管长约 70 m，颗粒速度 10 m/s</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="80"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="91"/>
         <source>belt of 12 m at 0.2 m/s</source>
         <translation>输送带长 12 m，速度 0.2 m/s</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="81"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="92"/>
         <source>heat exchanger and duct lag; used when T_hot follows its setpoint (MPC)</source>
         <translation>换热器和风道的滞后；用于 T_hot 跟随设定值时（MPC）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="82"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="94"/>
         <source>distributed line: axial mixing on the belt, the winnower&apos;s stirred volume</source>
         <translation>分布式产线：输送带上的轴向混合、风选机的搅拌容积</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="83"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="96"/>
         <source>extension tube_wall_heat_loss</source>
         <translation>扩展 tube_wall_heat_loss</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="84"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="97"/>
         <source>extension gas_phase_coupling</source>
         <translation>扩展 gas_phase_coupling</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="85"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="98"/>
         <source>extension heat_transfer_fouling</source>
         <translation>扩展 heat_transfer_fouling</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="86"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="99"/>
         <source>extension moisture_meter_lag</source>
         <translation>扩展 moisture_meter_lag</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="87"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="100"/>
         <source>extension moisture_meter_offset</source>
         <translation>扩展 moisture_meter_offset</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="88"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="101"/>
         <source>extension transport_delay_error</source>
         <translation>扩展 transport_delay_error</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="89"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="102"/>
         <source>extension falling_rate_drying</source>
         <translation>扩展 falling_rate_drying</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="90"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="103"/>
         <source>extension ambient_reabsorption</source>
         <translation>扩展 ambient_reabsorption</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="91"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="104"/>
         <source>extension inlet_moisture_sensor_offset</source>
         <translation>扩展 inlet_moisture_sensor_offset</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="92"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="105"/>
         <source>extension hot_air_sensor_lag</source>
         <translation>扩展 hot_air_sensor_lag</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="93"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="106"/>
         <source>extension inlet_moisture_sensor_noise</source>
         <translation>扩展 inlet_moisture_sensor_noise</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="94"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="107"/>
         <source>set by discovery for a cause that starts mid-batch</source>
         <translation>由发现功能为批次中途出现的原因设定</translation>
     </message>
@@ -869,31 +869,36 @@
     </message>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="210"/>
+        <source>On %1: </source>
+        <translation>数据 %1：</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="211"/>
         <source>%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. Intervals: %10.</source>
         <translation>%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口 MAE %6 → %7 % 湿基，%8 → %9 °C。区间：%10。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="235"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="236"/>
         <source>loss evaluations [-]</source>
         <translation>损失评估次数 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="236"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="237"/>
         <source>best loss</source>
         <translation>最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="268"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="269"/>
         <source>measured %1</source>
         <translation>实测 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="271"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="272"/>
         <source>before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="274"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="275"/>
         <source>after</source>
         <translation>之后</translation>
     </message>
@@ -1301,7 +1306,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="26"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="66"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="67"/>
         <source>Extend the model</source>
         <translation>扩展模型</translation>
     </message>
@@ -1386,232 +1391,252 @@
         <translation>留出数据上的改进：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="70"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="71"/>
         <source>the model was extended by discovery</source>
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="72"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="73"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="78"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="79"/>
         <source>Run Discover to see the physics model&apos;s error over the batches</source>
         <translation>运行发现，可看到物理模型在各批次上的误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="91"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="92"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="94"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)</source>
         <translation>误差随进料量和入口水分增大（按 feed_kg_h 和 X_in_pct 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="98"/>
         <source>the error drifts within every batch and resets at each batch start</source>
         <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="99"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="100"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="103"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="104"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="106"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="107"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="108"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="109"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="112"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="113"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="116"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="117"/>
         <source>a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less</source>
         <translation>干燥管出口与出口水分有相同的稳定偏差，干燥管干燥越少处越大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="119"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="120"/>
         <source>after each hot-air setpoint step the outlet temperature and moisture move before the simulation, which follows the slow reading</source>
         <translation>每次热风设定值阶跃后，出口温度和水分先于仿真变化，仿真跟随的是迟缓的读数</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="122"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="123"/>
         <source>the inlet-moisture reading scatters from second to second while the outlet does not follow it, and the simulated outlet does</source>
         <translation>入口水分读数逐秒跳动，出口并不跟随，而仿真的出口却跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="132"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="133"/>
         <source>a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet temperature&apos;s response as much as the moisture&apos;s, a meter lag delays the moisture reading alone; or grab samples timed against the meter</source>
         <translation>以 1 s 记录一次热风设定值阶跃：输送时间误差使出口温度与水分的响应同样延迟，水分仪滞后只延迟水分读数；或对照水分仪定时取样</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="139"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="140"/>
         <source>oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter offset does not</source>
         <translation>在出口对照水分仪、在入口对照入口水分计做烘箱法实验室取样；或增加干燥管出口水分通道（X_hdt）：入口水分计偏差会使其变化，出口水分仪偏差不会</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="146"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="147"/>
         <source>a gas-temperature reading at the tube&apos;s outlet end at two feed rates: wall loss does not change with the feed, gas-phase cooling grows with it</source>
         <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="156"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
         <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
         <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="159"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="160"/>
         <source>its size is not consistent across batches or operating regions</source>
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="162"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="163"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="165"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="166"/>
         <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
         <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="169"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="170"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="172"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="173"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="189"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="190"/>
         <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
         <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="194"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="195"/>
         <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
         <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="197"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="198"/>
         <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
         <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="202"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="203"/>
         <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
         <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="208"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="209"/>
         <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="222"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="220"/>
+        <source>a periodic error of %1 s period (power %2 times its background)</source>
+        <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="225"/>
+        <source>the error follows %1 %2 s later (|ccf| %3)</source>
+        <translation>误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="235"/>
+        <source>batches %1 are shifted by %2 against the others</source>
+        <translation>批次 %1 相对其他批次偏移 %2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="240"/>
+        <source>the error drifts by %1 per hour within the batches</source>
+        <translation>误差在批次内每小时漂移 %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="251"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="229"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="258"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="244"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="273"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="249"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="278"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="249"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="278"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="252"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="281"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="256"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="285"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="263"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="292"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="264"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="293"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="271"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="300"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="283"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="312"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="287"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="316"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="288"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="317"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="292"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="321"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="292"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="321"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="317"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="346"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="318"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="347"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="333"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="362"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -1628,135 +1653,135 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="377"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="377"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="369"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="398"/>
         <source>%1 at %2 s (ccf %3%4)</source>
         <translation>%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="402"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="376"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="405"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="384"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="413"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="219"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="248"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="336"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="365"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="339"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="368"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="340"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="369"/>
         <source>, </source>
         <translation>、</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="341"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="370"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="394"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="423"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="410"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="439"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="415"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="444"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="423"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="451"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="428"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="456"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="436"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="464"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="447"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="475"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="278"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="448"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="455"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="307"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="476"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="483"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="449"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="477"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="278"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="450"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="307"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="478"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="451"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="479"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="452"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="480"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="455"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="483"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="472"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="500"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="473"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="501"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -1990,170 +2015,175 @@
         <translation>为未能识别的文件打开列映射对话框</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="199"/>
+        <location filename="../widgets/MainWindow.cpp" line="201"/>
         <source>%1: %2 %</source>
         <translation>%1：%2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="200"/>
+        <location filename="../widgets/MainWindow.cpp" line="202"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="247"/>
+        <location filename="../widgets/MainWindow.cpp" line="254"/>
         <source>Opening the recording beside %1; the data-set list at the top right switches back.</source>
         <translation>正在 %1 之外另行打开该记录；用右上角的数据集列表可切换回去。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="280"/>
+        <location filename="../widgets/MainWindow.cpp" line="287"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="281"/>
+        <location filename="../widgets/MainWindow.cpp" line="288"/>
         <source>&amp;Open batch file…</source>
         <translation>打开批次文件(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="282"/>
+        <location filename="../widgets/MainWindow.cpp" line="289"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="282"/>
+        <location filename="../widgets/MainWindow.cpp" line="289"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="288"/>
+        <location filename="../widgets/MainWindow.cpp" line="295"/>
         <source>Open data set &amp;folder…</source>
         <translation>打开数据集文件夹(&amp;F)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="289"/>
+        <location filename="../widgets/MainWindow.cpp" line="296"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="294"/>
+        <location filename="../widgets/MainWindow.cpp" line="301"/>
         <source>Open the bundled &amp;demo</source>
         <translation>打开自带演示数据(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="295"/>
+        <location filename="../widgets/MainWindow.cpp" line="302"/>
         <source>&amp;Generate virtual-plant data…</source>
         <translation>生成虚拟装置数据(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="296"/>
+        <location filename="../widgets/MainWindow.cpp" line="303"/>
         <source>Folder for the virtual plant&apos;s batches</source>
         <translation>虚拟装置批次的文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="305"/>
+        <location filename="../widgets/MainWindow.cpp" line="312"/>
         <source>Open &amp;model…</source>
         <translation>打开模型(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="306"/>
+        <location filename="../widgets/MainWindow.cpp" line="313"/>
         <source>Open model</source>
         <translation>打开模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="306"/>
         <location filename="../widgets/MainWindow.cpp" line="313"/>
+        <location filename="../widgets/MainWindow.cpp" line="320"/>
         <source>Model files (*.json)</source>
         <translation>模型文件 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="311"/>
+        <location filename="../widgets/MainWindow.cpp" line="318"/>
         <source>Save model &amp;as…</source>
         <translation>模型另存为(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="313"/>
+        <location filename="../widgets/MainWindow.cpp" line="320"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="319"/>
+        <location filename="../widgets/MainWindow.cpp" line="326"/>
         <source>Open &amp;project…</source>
         <translation>打开项目(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="320"/>
-        <location filename="../widgets/MainWindow.cpp" line="323"/>
-        <location filename="../widgets/MainWindow.cpp" line="707"/>
+        <location filename="../widgets/MainWindow.cpp" line="327"/>
+        <location filename="../widgets/MainWindow.cpp" line="330"/>
+        <location filename="../widgets/MainWindow.cpp" line="719"/>
         <source>Open project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="320"/>
-        <location filename="../widgets/MainWindow.cpp" line="330"/>
-        <location filename="../widgets/MainWindow.cpp" line="340"/>
+        <location filename="../widgets/MainWindow.cpp" line="327"/>
+        <location filename="../widgets/MainWindow.cpp" line="337"/>
+        <location filename="../widgets/MainWindow.cpp" line="347"/>
         <source>DryTwin projects (*.drytwin)</source>
         <translation>DryTwin 项目 (*.drytwin)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="326"/>
+        <location filename="../widgets/MainWindow.cpp" line="333"/>
         <source>&amp;Save project</source>
         <translation>保存项目(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="329"/>
-        <location filename="../widgets/MainWindow.cpp" line="334"/>
-        <location filename="../widgets/MainWindow.cpp" line="339"/>
-        <location filename="../widgets/MainWindow.cpp" line="343"/>
+        <location filename="../widgets/MainWindow.cpp" line="336"/>
+        <location filename="../widgets/MainWindow.cpp" line="341"/>
+        <location filename="../widgets/MainWindow.cpp" line="346"/>
+        <location filename="../widgets/MainWindow.cpp" line="350"/>
         <source>Save project</source>
         <translation>保存项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="338"/>
+        <location filename="../widgets/MainWindow.cpp" line="345"/>
         <source>Save project as…</source>
         <translation>项目另存为…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="346"/>
+        <location filename="../widgets/MainWindow.cpp" line="353"/>
         <source>Recent projects</source>
         <translation>最近的项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="349"/>
+        <location filename="../widgets/MainWindow.cpp" line="356"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="352"/>
+        <location filename="../widgets/MainWindow.cpp" line="359"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="353"/>
+        <location filename="../widgets/MainWindow.cpp" line="360"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="371"/>
+        <location filename="../widgets/MainWindow.cpp" line="378"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="500"/>
+        <location filename="../widgets/MainWindow.cpp" line="483"/>
+        <source>Ready.</source>
+        <translation>就绪。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="512"/>
         <source>Project saved to %1 (model, results and view)</source>
         <translation>项目已保存到 %1（模型、结果和视图）</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="555"/>
+        <location filename="../widgets/MainWindow.cpp" line="567"/>
         <source>Saving the project to %1…</source>
         <translation>正在保存项目到 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="603"/>
+        <location filename="../widgets/MainWindow.cpp" line="615"/>
         <source>The project&apos;s results could not be read (%1); it opens without them.</source>
         <translation>无法读取项目的结果（%1）；项目将不带结果打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="654"/>
+        <location filename="../widgets/MainWindow.cpp" line="666"/>
         <source>Wait until the running job has finished (or cancel it), then switch the language.</source>
         <translation>请等待当前任务完成（或取消它），然后再切换语言。</translation>
     </message>
@@ -2162,109 +2192,109 @@
         <translation>语言将在 DryTwin 重新启动后生效。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="375"/>
+        <location filename="../widgets/MainWindow.cpp" line="382"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="376"/>
+        <location filename="../widgets/MainWindow.cpp" line="383"/>
         <source>&amp;User guide</source>
         <translation>用户指南(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="379"/>
+        <location filename="../widgets/MainWindow.cpp" line="386"/>
         <source>&amp;About DryTwin</source>
         <translation>关于 DryTwin(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="380"/>
+        <location filename="../widgets/MainWindow.cpp" line="387"/>
         <source>About DryTwin</source>
         <translation>关于 DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="381"/>
+        <location filename="../widgets/MainWindow.cpp" line="388"/>
         <source>About &amp;Qt</source>
         <translation>关于 Qt(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="400"/>
+        <location filename="../widgets/MainWindow.cpp" line="407"/>
         <source>DryTwin user guide</source>
         <translation>DryTwin 用户指南</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="410"/>
+        <location filename="../widgets/MainWindow.cpp" line="417"/>
         <source>No data loaded. File ▸ Open data set folder… (or File ▸ Open the bundled demo)</source>
         <translation>未加载数据。文件 ▸ 打开数据集文件夹…（或 文件 ▸ 打开自带演示数据）</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="416"/>
+        <location filename="../widgets/MainWindow.cpp" line="423"/>
         <source>Loading</source>
         <translation>正在加载</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="417"/>
+        <location filename="../widgets/MainWindow.cpp" line="424"/>
         <source>Simulating</source>
         <translation>正在模拟</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="418"/>
+        <location filename="../widgets/MainWindow.cpp" line="425"/>
         <source>Calibrating</source>
         <translation>正在标定</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="419"/>
+        <location filename="../widgets/MainWindow.cpp" line="426"/>
         <source>Learning the correction models</source>
         <translation>正在学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="420"/>
+        <location filename="../widgets/MainWindow.cpp" line="427"/>
         <source>Training the LSTM</source>
         <translation>正在训练 LSTM</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="421"/>
+        <location filename="../widgets/MainWindow.cpp" line="428"/>
         <source>Scoring on the held-out part</source>
         <translation>正在留出部分上评分</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="422"/>
+        <location filename="../widgets/MainWindow.cpp" line="429"/>
         <source>Discovering</source>
         <translation>正在发现</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="423"/>
+        <location filename="../widgets/MainWindow.cpp" line="430"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="424"/>
+        <location filename="../widgets/MainWindow.cpp" line="431"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="425"/>
+        <location filename="../widgets/MainWindow.cpp" line="432"/>
         <source>Generating plant data</source>
         <translation>正在生成工厂数据</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="426"/>
+        <location filename="../widgets/MainWindow.cpp" line="433"/>
         <source>Training session</source>
         <translation>培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="432"/>
+        <location filename="../widgets/MainWindow.cpp" line="439"/>
         <source>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;Digital-twin workbench for pneumatic drying lines, implementing the PGRL-CC method.&lt;/p&gt;&lt;table&gt;</source>
         <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="461"/>
+        <location filename="../widgets/MainWindow.cpp" line="468"/>
         <source>Writing the bundled demo (10 batches of the virtual plant) to %1…</source>
         <translation>正在把自带演示数据（虚拟工厂的 10 个批次）写入 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="495"/>
-        <location filename="../widgets/MainWindow.cpp" line="539"/>
-        <location filename="../widgets/MainWindow.cpp" line="546"/>
+        <location filename="../widgets/MainWindow.cpp" line="507"/>
+        <location filename="../widgets/MainWindow.cpp" line="551"/>
+        <location filename="../widgets/MainWindow.cpp" line="558"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -2273,12 +2303,12 @@
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="563"/>
+        <location filename="../widgets/MainWindow.cpp" line="575"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="572"/>
+        <location filename="../widgets/MainWindow.cpp" line="584"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
@@ -2443,167 +2473,167 @@
         <translation>以 JSON 表示的情景（格式见 docs/mpc.md）：设定值阶跃、输入阶跃与斜坡、运行中途开启的隐藏机理、噪声。运行时检查修改。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="56"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="58"/>
         <source>Run scenario</source>
         <translation>运行情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="59"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="61"/>
         <source>Show the horizon the controllers predicted at this decision</source>
         <translation>显示控制器在此决策时刻预测的时域</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="60"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
         <source>Runs the scenario against the virtual plant once per controller.</source>
         <translation>对虚拟装置逐个控制器运行该情景。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="64"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="64"/>
         <source>IAE [%·s]</source>
         <translation>IAE [%·s]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="64"/>
         <source>Effort [K²]</source>
         <translation>控制量 [K²]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="64"/>
         <source>Violations [%]</source>
         <translation>越限 [%]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="65"/>
         <source>Solve median [ms]</source>
         <translation>求解时间中位数 [ms]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="65"/>
         <source>Fallbacks</source>
         <translation>回退次数</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="65"/>
         <source>Model gain [%/K]</source>
         <translation>模型增益 [%/K]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="65"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
         <source>X_out, true [% wb]</source>
         <translation>X_out 真实值 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="66"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="68"/>
         <source>T_hot setpoint [°C]</source>
         <translation>T_hot 设定值 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="81"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="83"/>
         <source>Form</source>
         <translation>表单</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="82"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="84"/>
         <source>JSON</source>
         <translation>JSON</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="89"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="91"/>
         <source>prediction at</source>
         <translation>预测时刻</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="127"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="130"/>
         <source>Open scenario</source>
         <translation>打开情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="127"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="130"/>
         <source>Scenarios (*.json)</source>
         <translation>情景 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="137"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="140"/>
         <source>Run a scenario to see each controller&apos;s outlet moisture and hot-air setpoint</source>
         <translation>运行一个情景，可看到各控制器的出口含水率和热风设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="150"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="153"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="167"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="170"/>
         <source>Cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="181"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="187"/>
         <source>Choose at least one controller.</source>
         <translation>请至少选择一个控制器。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="184"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="190"/>
         <source>Running…</source>
         <translation>正在运行…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="195"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="201"/>
         <source>Contract key: %1</source>
         <translation>接口代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="197"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="203"/>
         <source>%1 (stale)</source>
         <translation>%1（过期）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="198"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="204"/>
         <source>Learnt before %1: retrain it to run it.</source>
         <translation>学习于以下变化之前：%1；需重新训练才能运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="200"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="206"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="201"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="207"/>
         <source>Learn the correction models on the Residual model tab to run it.</source>
         <translation>在残差模型页学习修正模型后才能运行它。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="229"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="233"/>
         <source>skipped</source>
         <translation>已跳过</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="230"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="234"/>
         <source>the model holds no such prediction model</source>
         <translation>模型中没有这种预测模型</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="243"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="247"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="251"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="255"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="267"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="271"/>
         <source>%1 predicted at %2 s</source>
         <translation>%1 在 %2 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="276"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="280"/>
         <source>%1. IAE and violations on the product&apos;s true outlet moisture; the plant&apos;s own gain is %2 % wb/K.</source>
         <translation>%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。</translation>
     </message>
@@ -2781,27 +2811,26 @@
         <translation>实部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="67"/>
         <source>skill: MAE over the better reference [-]</source>
         <translation>技能值：MAE 与较优参考之比 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="68"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="70"/>
         <source>forecast horizon [steps of 1 s]</source>
         <translation>预测步长 [1 s 步]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="71"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="73"/>
         <source>Ablation (paper Table 3)</source>
         <translation>消融实验（论文表 3）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="72"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="74"/>
         <source>Train and evaluate every variant of Table 3 on this model (a few minutes)</source>
         <translation>在此模型上训练并评估表 3 的每个变体（需几分钟）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="74"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="76"/>
         <source>Variant</source>
         <translation>变体</translation>
     </message>
@@ -2856,7 +2885,7 @@
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="74"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="76"/>
         <source>MAE X_out
 [% wb]</source>
         <translation>MAE X_out
@@ -2864,7 +2893,7 @@
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="74"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="76"/>
         <source>R² X_out
 [-]</source>
         <translation>R² X_out
@@ -2872,7 +2901,7 @@
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="61"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="75"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="77"/>
         <source>MAE T_out
 [°C]</source>
         <translation>MAE T_out
@@ -2893,79 +2922,89 @@
 30 步</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="75"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="67"/>
+        <source>skill [-]</source>
+        <translation>技能 [-]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="68"/>
+        <source>Skill: a model&apos;s MAE over the better of the two reference forecasts at that horizon; below 1 it beats both</source>
+        <translation>技能：模型在该步长上的 MAE 除以两个参考预测中较好者的 MAE；小于 1 即优于二者</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="77"/>
         <source>MAE X_out,
 extrapolation</source>
         <translation>MAE X_out，
 外推</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="76"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="78"/>
         <source>Learn the correction models to see the eigenvalues of their state matrix</source>
         <translation>学习修正模型后可看到其状态矩阵的特征值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="77"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="79"/>
         <source>Learn the correction models to see their skill by forecast horizon</source>
         <translation>学习修正模型后可看到其随预测步长的技能</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="136"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="138"/>
         <source>%1 %2 (%3 %)</source>
         <translation>%1 %2（%3 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="142"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="144"/>
         <source>Steady gain of X_out to the hot-air setpoint [% wb per K] at the scenario&apos;s start: the plant (open-loop step test) %1; each model as its MPC saw it, and how far from the plant&apos;s: %2. A learnt residual&apos;s response to the setpoint plan comes from the physics model, since data under the plant&apos;s own loop cannot tell it from the disturbances the loop answered.</source>
         <translation>情景起点处 X_out 对热风设定值的稳态增益 [% wb/K]：装置（开环阶跃试验）%1；各模型在其 MPC 中的增益及与装置的偏差：%2。学习得到的残差对设定值计划的响应取自物理模型，因为装置自身闭环下的数据无法将其与闭环所应对的扰动区分开。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="171"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="173"/>
         <source>Training…</source>
         <translation>正在训练…</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="185"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="187"/>
         <source>Learn the correction models on %1: they train on the chronological 70 % and are scored on the rest.</source>
         <translation>在 %1 上学习修正模型：用按时间顺序的前 70 % 训练，其余部分评分。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="188"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="190"/>
         <source>Open a data set first (File ▸ Open data set folder…, or the bundled demo).</source>
         <translation>请先打开数据集（文件 ▸ 打开数据集文件夹…，或自带演示数据）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="211"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="213"/>
         <source>Key: %1</source>
         <translation>代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="223"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="225"/>
         <source>skill 1 (ties the better reference)</source>
         <translation>技能值 1（与较优参考持平）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="233"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="235"/>
         <source>unit circle</source>
         <translation>单位圆</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="247"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="249"/>
         <source>A unconstrained (ρ = %1)</source>
         <translation>无约束 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="253"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="255"/>
         <source>A with Eq. 30 (ρ = %1)</source>
         <translation>式 30 约束后的 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="280"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="282"/>
         <source> Slowest contraction of A: %1 per step (half-life %2 s).</source>
         <translation> A 的最慢收缩：每步 %1（半衰期 %2 s）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="285"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="287"/>
         <source>On %1, held-out part: %2 rows. Skill below 1 beats both reference predictors (the last measurement held, and the physics model with its last error held). R² below 0 means a model predicts worse than the batch&apos;s mean (hover an R² for what it says).</source>
         <translation>数据 %1，留出部分：%2 行。技能小于 1 表示优于两个参考预测（保持最后测量值；物理模型保持最后误差）。R² 小于 0 表示模型预测比批次均值还差（鼠标悬停在 R² 上可看说明）。</translation>
     </message>
@@ -3109,18 +3148,18 @@ extrapolation</source>
         <translation>工厂中的隐藏原因（控制器均不知道）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="117"/>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="204"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="116"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="203"/>
         <source>The scenario as a form; the JSON tab shows the same scenario as text.</source>
         <translation>以表单显示的情景；JSON 页以文本显示同一情景。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="183"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="182"/>
         <source>%1; strength in %2</source>
         <translation>%1；强度单位 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="198"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="197"/>
         <source>The JSON tab&apos;s text is not a scenario the form can show (%1); fix it there.</source>
         <translation>JSON 页的文本不是表单可显示的情景（%1）；请在那里修改。</translation>
     </message>
@@ -3847,7 +3886,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/common/Workbench.cpp" line="447"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="115"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="117"/>
         <source>Learn the correction models</source>
         <translation>学习修正模型</translation>
     </message>
@@ -3896,7 +3935,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/common/Workbench.cpp" line="496"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="116"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="118"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>

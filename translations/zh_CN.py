@@ -740,6 +740,14 @@ ZH = {
     "The scenario as a form; the JSON tab shows the same scenario as text.": "以表单显示的情景；JSON 页以文本显示同一情景。",
     "%1; strength in %2": "%1；强度单位 %2",
     "The JSON tab's text is not a scenario the form can show (%1); fix it there.": "JSON 页的文本不是表单可显示的情景（%1）；请在那里修改。",
+    "On %1: ": "数据 %1：",
+    "a periodic error of %1 s period (power %2 times its background)": "周期为 %1 s 的周期性误差（功率为背景的 %2 倍）",
+    "the error follows %1 %2 s later (|ccf| %3)": "误差在 %1 之后 %2 s 跟随变化（|ccf| %3）",
+    "batches %1 are shifted by %2 against the others": "批次 %1 相对其他批次偏移 %2",
+    "the error drifts by %1 per hour within the batches": "误差在批次内每小时漂移 %1",
+    "Ready.": "就绪。",
+    "skill [-]": "技能 [-]",
+    "Skill: a model's MAE over the better of the two reference forecasts at that horizon; below 1 it beats both": "技能：模型在该步长上的 MAE 除以两个参考预测中较好者的 MAE；小于 1 即优于二者",
 }
 
 

@@ -195,12 +195,19 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             if (stage == m_progressStage) {
                 m_progressBar->setValue(std::max(m_progressBar->value(), static_cast<int>(fraction * 100)));
             }
-            m_statusLabel->setText(detail.isEmpty()
+            // The engine's detail is English (the CLI prints it): shown in the English window; the
+            // stage and its share in every language.
+            m_statusLabel->setText(detail.isEmpty() || currentLanguage() != QLatin1String("en")
                                        ? tr("%1: %2 %").arg(stageText(stage)).arg(fraction * 100, 0, 'f', 0)
                                        : tr("%1: %2").arg(stageText(stage), detail));
+            m_statusIsProgress = true;
         });
     connect(m_cancelButton, &QPushButton::clicked, &m_workbench, &Workbench::cancelAll);
-    connect(&m_workbench, &Workbench::status, m_statusLabel, &QLabel::setText);
+    connect(&m_workbench, &Workbench::status, this, [this](const QString& text) {
+        m_lastStatus = text;
+        m_statusIsProgress = false;
+        m_statusLabel->setText(text);
+    });
     connect(&m_workbench, &Workbench::dataChanged, this, [this] {
         Q_EMIT loadFinished(true);
         m_mapButton->setVisible(false);
@@ -471,6 +478,11 @@ void MainWindow::setBusy(bool busy) {
     m_cancelButton->setVisible(busy);
     if (!busy) {
         m_progressBar->setValue(0);
+        // A progress line of a job that has ended ("Simulating: 0 %") would say it still runs.
+        if (m_statusIsProgress) {
+            m_statusLabel->setText(m_lastStatus.isEmpty() ? tr("Ready.") : m_lastStatus);
+            m_statusIsProgress = false;
+        }
     }
 }
 

@@ -135,6 +135,8 @@ private:
     QString m_mapFile;
     QString m_projectPath;
     JobId m_progressJob = 0;
+    QString m_lastStatus;            ///< the Workbench's last status line
+    bool m_statusIsProgress = false; ///< the status line shows a job's progress
     QString m_progressStage;
     QString m_pendingModel; ///< a project's model, opened once its data is in
     QStringList m_pendingActions;

@@ -207,7 +207,8 @@ void CalibrationPanel::showResult() {
         setTableRow(m_estimates, static_cast<int>(i), cells);
     }
     m_estimates->resizeColumnsToContents();
-    m_fit->setText(tr("%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. "
+    m_fit->setText(tr("On %1: ").arg(m_workbench.dataSetLabel()) +
+                   tr("%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. "
                       "Intervals: %10.")
                        .arg(terminationText(r->ending.termination))
                        .arg(c.evaluations)

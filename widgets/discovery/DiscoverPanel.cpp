@@ -56,6 +56,7 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
     auto* split = new QSplitter;
     split->addWidget(left);
     split->addWidget(right);
+    split->setSizes({470, 810}); // the ranking and gain tables whole, the evidence beside them
     split->setStretchFactor(1, 1);
     auto* layout = new QHBoxLayout(this);
     layout->addWidget(split);
@@ -211,6 +212,35 @@ QString noteText(const std::string& note) {
             .arg(numbers().at(0), numbers().at(1));
     }
     return n;
+}
+
+/// A signature no cause explains (Signature::type), in the GUI's language.
+QString signatureText(const discovery::Signature& u) {
+    if (u.type == "periodic") {
+        return DiscoverPanel::tr("a periodic error of %1 s period (power %2 times its background)")
+            .arg(u.periodS, 0, 'f', 0)
+            .arg(u.strength, 0, 'g', 3);
+    }
+    if (u.type == "lagged_input") {
+        return DiscoverPanel::tr("the error follows %1 %2 s later (|ccf| %3)")
+            .arg(QString::fromStdString(u.column))
+            .arg(u.lagS, 0, 'f', 0)
+            .arg(u.strength, 0, 'f', 2);
+    }
+    if (u.type == "batch_shift") {
+        QStringList batches;
+        for (const auto& b : u.batches) {
+            batches << QString::fromStdString(b);
+        }
+        return DiscoverPanel::tr("batches %1 are shifted by %2 against the others")
+            .arg(batches.join(QStringLiteral(", ")))
+            .arg(u.strength, 0, 'g', 3);
+    }
+    if (u.type == "drift") {
+        return DiscoverPanel::tr("the error drifts by %1 per hour within the batches")
+            .arg(u.strength, 0, 'g', 3);
+    }
+    return QString::fromStdString(u.type);
 }
 
 /// Why a round stopped, worded here from the round's numbers (the engine's sentence is English).
@@ -421,7 +451,7 @@ void DiscoverPanel::show() {
         } else {
             html +=
                 tr("<p><b>Unexplained</b> (%1): %2</p>")
-                    .arg(QString::fromStdString(u.output).toHtmlEscaped(), QString::fromStdString(u.type));
+                    .arg(QString::fromStdString(u.output).toHtmlEscaped(), signatureText(u).toHtmlEscaped());
         }
     }
     if (r->keptStartingModel) {

@@ -50,6 +50,8 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     for (int i = 0; i < 5; ++i) {
         m_controllers[i] = new QCheckBox(controllerDisplayName(kKinds[i]));
         m_controllers[i]->setChecked(true);
+        // The user's tick, kept while the box is greyed out (its model not learnt yet).
+        connect(m_controllers[i], &QCheckBox::clicked, this, [this, i](bool on) { m_wanted[i] = on; });
         controllers->addWidget(m_controllers[i]);
     }
     m_state = new ModelStateBar(m_workbench);
@@ -95,6 +97,7 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     split->addWidget(left);
     split->addWidget(m_plots);
     split->setStretchFactor(1, 1);
+    split->setSizes({560, 720}); // the plots need room as much as the form
     auto* layout = new QHBoxLayout(this);
     layout->addWidget(split);
 
@@ -173,7 +176,10 @@ void MpcPanel::run() {
     o.scenarioPath = m_tempScenario.toStdString();
     o.closedLoop.controllers.clear();
     for (int i = 0; i < 5; ++i) {
-        if (m_controllers[i]->isChecked() && m_controllers[i]->isEnabled()) {
+        // A model being learnt right now counts: the run is queued behind the training (--run
+        // train,mpc; a click on Run while Learn runs), and the engine skips what is still missing.
+        const bool exists = m_controllers[i]->isEnabled() || m_workbench.isRunning(Action::Train);
+        if (exists && (m_controllers[i]->isEnabled() ? m_controllers[i]->isChecked() : m_wanted[i])) {
             o.closedLoop.controllers.push_back(kKinds[i]);
         }
     }
@@ -202,9 +208,7 @@ void MpcPanel::offerControllers() {
         }
         m_controllers[i]->setText(label);
         m_controllers[i]->setToolTip(tip);
-        if (m_controllers[i]->isEnabled() != exists) {
-            m_controllers[i]->setChecked(exists);
-        }
+        m_controllers[i]->setChecked(exists && m_wanted[i]);
         m_controllers[i]->setEnabled(exists);
     }
 }

@@ -48,6 +48,7 @@ private:
     ScenarioForm* m_form = nullptr;
     QTabWidget* m_scenarioTabs = nullptr;
     QCheckBox* m_controllers[5] = {};
+    bool m_wanted[5] = {true, true, true, true, true};
     ModelStateBar* m_state = nullptr;
     QComboBox* m_prediction = nullptr;
     QTableWidget* m_table = nullptr;

@@ -64,7 +64,9 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     m_eigen->addPlot(tr("imaginary part"));
     m_eigen->setXTitle(tr("real part"));
     m_skill = new PlotStack;
-    m_skill->addPlot(tr("skill: MAE over the better reference [-]"));
+    m_skill->addPlot(tr("skill [-]"));
+    m_skill->plot(0)->setToolTip(tr("Skill: a model's MAE over the better of the two reference forecasts at "
+                                    "that horizon; below 1 it beats both"));
     m_skill->setXTitle(tr("forecast horizon [steps of 1 s]"));
     m_skill->setLogScale(0, true, false);
 
