@@ -631,82 +631,82 @@
 <context>
     <name>TrainingPanel</name>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="56"/>
         <source>PI loop (the plant&apos;s own)</source>
         <translation>PI 回路（装置自带）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="58"/>
         <source>MPC on the physics model</source>
         <translation>基于物理模型的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="60"/>
         <source>MPC on PGRL-CC</source>
         <translation>基于 PGRL-CC 的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="62"/>
         <source>MPC on the external-input residual model</source>
         <translation>基于外部输入残差模型的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="64"/>
         <source>MPC on the LSTM</source>
         <translation>基于 LSTM 的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="72"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="58"/>
+        <source>MPC on: %1</source>
+        <translation>MPC，基于：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="64"/>
         <source>Tube wall heat loss</source>
         <translation>管壁散热损失</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="74"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="66"/>
         <source>Gas-phase coupling</source>
         <translation>气相耦合</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="76"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="68"/>
         <source>Heat-transfer fouling</source>
         <translation>传热结垢</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="78"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="70"/>
         <source>Moisture meter lag</source>
         <translation>水分仪滞后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="80"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="72"/>
         <source>Moisture meter offset</source>
         <translation>水分仪偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="82"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="74"/>
         <source>Transport delay error</source>
         <translation>输送延时误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="84"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="76"/>
         <source>Falling-rate drying</source>
         <translation>降速干燥</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="86"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="78"/>
         <source>Ambient re-absorption</source>
         <translation>环境回潮</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="88"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="80"/>
         <source>Inlet moisture gauge offset</source>
         <translation>入口水分仪零点偏移</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="90"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="82"/>
         <source>Hot-air thermocouple lag</source>
         <translation>热风热电偶滞后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="92"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="84"/>
         <source>Inlet moisture gauge scatter</source>
         <translation>入口水分仪读数离散</translation>
     </message>
@@ -1551,92 +1551,92 @@
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="251"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="252"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="258"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="259"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="273"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="274"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="278"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="279"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="278"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="279"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="281"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="282"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="285"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="286"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="292"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="293"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="293"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="294"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="300"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="301"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="312"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="313"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="316"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="317"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="317"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="318"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="321"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="322"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="321"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="322"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="346"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="347"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="347"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="362"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="363"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -1653,135 +1653,135 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="377"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="378"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="377"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="378"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="398"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="399"/>
         <source>%1 at %2 s (ccf %3%4)</source>
         <translation>%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="402"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="403"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="405"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="406"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="413"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="414"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="248"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="249"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="365"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="366"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="368"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="369"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="369"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="370"/>
         <source>, </source>
         <translation>、</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="370"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="371"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="423"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="424"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="439"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="440"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="444"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="445"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="451"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="453"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="456"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="458"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="464"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="466"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="475"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="477"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="307"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="476"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="483"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="308"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="478"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="485"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="477"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="479"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="307"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="478"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="308"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="480"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="479"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="481"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="480"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="482"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="483"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="485"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="500"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="502"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="501"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="503"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -2025,165 +2025,165 @@
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="254"/>
+        <location filename="../widgets/MainWindow.cpp" line="258"/>
         <source>Opening the recording beside %1; the data-set list at the top right switches back.</source>
         <translation>正在 %1 之外另行打开该记录；用右上角的数据集列表可切换回去。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="287"/>
+        <location filename="../widgets/MainWindow.cpp" line="291"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="288"/>
+        <location filename="../widgets/MainWindow.cpp" line="292"/>
         <source>&amp;Open batch file…</source>
         <translation>打开批次文件(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="289"/>
+        <location filename="../widgets/MainWindow.cpp" line="293"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="289"/>
+        <location filename="../widgets/MainWindow.cpp" line="293"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="295"/>
+        <location filename="../widgets/MainWindow.cpp" line="299"/>
         <source>Open data set &amp;folder…</source>
         <translation>打开数据集文件夹(&amp;F)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="296"/>
+        <location filename="../widgets/MainWindow.cpp" line="300"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="301"/>
+        <location filename="../widgets/MainWindow.cpp" line="305"/>
         <source>Open the bundled &amp;demo</source>
         <translation>打开自带演示数据(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="302"/>
+        <location filename="../widgets/MainWindow.cpp" line="306"/>
         <source>&amp;Generate virtual-plant data…</source>
         <translation>生成虚拟装置数据(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="303"/>
+        <location filename="../widgets/MainWindow.cpp" line="307"/>
         <source>Folder for the virtual plant&apos;s batches</source>
         <translation>虚拟装置批次的文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="312"/>
+        <location filename="../widgets/MainWindow.cpp" line="316"/>
         <source>Open &amp;model…</source>
         <translation>打开模型(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="313"/>
+        <location filename="../widgets/MainWindow.cpp" line="317"/>
         <source>Open model</source>
         <translation>打开模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="313"/>
-        <location filename="../widgets/MainWindow.cpp" line="320"/>
+        <location filename="../widgets/MainWindow.cpp" line="317"/>
+        <location filename="../widgets/MainWindow.cpp" line="324"/>
         <source>Model files (*.json)</source>
         <translation>模型文件 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="318"/>
+        <location filename="../widgets/MainWindow.cpp" line="322"/>
         <source>Save model &amp;as…</source>
         <translation>模型另存为(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="320"/>
+        <location filename="../widgets/MainWindow.cpp" line="324"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="326"/>
+        <location filename="../widgets/MainWindow.cpp" line="330"/>
         <source>Open &amp;project…</source>
         <translation>打开项目(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="327"/>
-        <location filename="../widgets/MainWindow.cpp" line="330"/>
-        <location filename="../widgets/MainWindow.cpp" line="719"/>
+        <location filename="../widgets/MainWindow.cpp" line="331"/>
+        <location filename="../widgets/MainWindow.cpp" line="334"/>
+        <location filename="../widgets/MainWindow.cpp" line="723"/>
         <source>Open project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="327"/>
-        <location filename="../widgets/MainWindow.cpp" line="337"/>
-        <location filename="../widgets/MainWindow.cpp" line="347"/>
+        <location filename="../widgets/MainWindow.cpp" line="331"/>
+        <location filename="../widgets/MainWindow.cpp" line="341"/>
+        <location filename="../widgets/MainWindow.cpp" line="351"/>
         <source>DryTwin projects (*.drytwin)</source>
         <translation>DryTwin 项目 (*.drytwin)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="333"/>
+        <location filename="../widgets/MainWindow.cpp" line="337"/>
         <source>&amp;Save project</source>
         <translation>保存项目(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="336"/>
-        <location filename="../widgets/MainWindow.cpp" line="341"/>
-        <location filename="../widgets/MainWindow.cpp" line="346"/>
+        <location filename="../widgets/MainWindow.cpp" line="340"/>
+        <location filename="../widgets/MainWindow.cpp" line="345"/>
         <location filename="../widgets/MainWindow.cpp" line="350"/>
+        <location filename="../widgets/MainWindow.cpp" line="354"/>
         <source>Save project</source>
         <translation>保存项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="345"/>
+        <location filename="../widgets/MainWindow.cpp" line="349"/>
         <source>Save project as…</source>
         <translation>项目另存为…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="353"/>
+        <location filename="../widgets/MainWindow.cpp" line="357"/>
         <source>Recent projects</source>
         <translation>最近的项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="356"/>
+        <location filename="../widgets/MainWindow.cpp" line="360"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="359"/>
+        <location filename="../widgets/MainWindow.cpp" line="363"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="360"/>
+        <location filename="../widgets/MainWindow.cpp" line="364"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="378"/>
+        <location filename="../widgets/MainWindow.cpp" line="382"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="483"/>
+        <location filename="../widgets/MainWindow.cpp" line="487"/>
         <source>Ready.</source>
         <translation>就绪。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="512"/>
+        <location filename="../widgets/MainWindow.cpp" line="516"/>
         <source>Project saved to %1 (model, results and view)</source>
         <translation>项目已保存到 %1（模型、结果和视图）</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="567"/>
+        <location filename="../widgets/MainWindow.cpp" line="571"/>
         <source>Saving the project to %1…</source>
         <translation>正在保存项目到 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="615"/>
+        <location filename="../widgets/MainWindow.cpp" line="619"/>
         <source>The project&apos;s results could not be read (%1); it opens without them.</source>
         <translation>无法读取项目的结果（%1）；项目将不带结果打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="666"/>
+        <location filename="../widgets/MainWindow.cpp" line="670"/>
         <source>Wait until the running job has finished (or cancel it), then switch the language.</source>
         <translation>请等待当前任务完成（或取消它），然后再切换语言。</translation>
     </message>
@@ -2192,109 +2192,109 @@
         <translation>语言将在 DryTwin 重新启动后生效。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="382"/>
+        <location filename="../widgets/MainWindow.cpp" line="386"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="383"/>
+        <location filename="../widgets/MainWindow.cpp" line="387"/>
         <source>&amp;User guide</source>
         <translation>用户指南(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="386"/>
+        <location filename="../widgets/MainWindow.cpp" line="390"/>
         <source>&amp;About DryTwin</source>
         <translation>关于 DryTwin(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="387"/>
+        <location filename="../widgets/MainWindow.cpp" line="391"/>
         <source>About DryTwin</source>
         <translation>关于 DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="388"/>
+        <location filename="../widgets/MainWindow.cpp" line="392"/>
         <source>About &amp;Qt</source>
         <translation>关于 Qt(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="407"/>
+        <location filename="../widgets/MainWindow.cpp" line="411"/>
         <source>DryTwin user guide</source>
         <translation>DryTwin 用户指南</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="417"/>
+        <location filename="../widgets/MainWindow.cpp" line="421"/>
         <source>No data loaded. File ▸ Open data set folder… (or File ▸ Open the bundled demo)</source>
         <translation>未加载数据。文件 ▸ 打开数据集文件夹…（或 文件 ▸ 打开自带演示数据）</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="423"/>
+        <location filename="../widgets/MainWindow.cpp" line="427"/>
         <source>Loading</source>
         <translation>正在加载</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="424"/>
+        <location filename="../widgets/MainWindow.cpp" line="428"/>
         <source>Simulating</source>
         <translation>正在模拟</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="425"/>
+        <location filename="../widgets/MainWindow.cpp" line="429"/>
         <source>Calibrating</source>
         <translation>正在标定</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="426"/>
+        <location filename="../widgets/MainWindow.cpp" line="430"/>
         <source>Learning the correction models</source>
         <translation>正在学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="427"/>
+        <location filename="../widgets/MainWindow.cpp" line="431"/>
         <source>Training the LSTM</source>
         <translation>正在训练 LSTM</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="428"/>
+        <location filename="../widgets/MainWindow.cpp" line="432"/>
         <source>Scoring on the held-out part</source>
         <translation>正在留出部分上评分</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="429"/>
+        <location filename="../widgets/MainWindow.cpp" line="433"/>
         <source>Discovering</source>
         <translation>正在发现</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="430"/>
+        <location filename="../widgets/MainWindow.cpp" line="434"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="431"/>
+        <location filename="../widgets/MainWindow.cpp" line="435"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="432"/>
+        <location filename="../widgets/MainWindow.cpp" line="436"/>
         <source>Generating plant data</source>
         <translation>正在生成工厂数据</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="433"/>
+        <location filename="../widgets/MainWindow.cpp" line="437"/>
         <source>Training session</source>
         <translation>培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="439"/>
+        <location filename="../widgets/MainWindow.cpp" line="443"/>
         <source>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;Digital-twin workbench for pneumatic drying lines, implementing the PGRL-CC method.&lt;/p&gt;&lt;table&gt;</source>
         <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="468"/>
+        <location filename="../widgets/MainWindow.cpp" line="472"/>
         <source>Writing the bundled demo (10 batches of the virtual plant) to %1…</source>
         <translation>正在把自带演示数据（虚拟工厂的 10 个批次）写入 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="507"/>
-        <location filename="../widgets/MainWindow.cpp" line="551"/>
-        <location filename="../widgets/MainWindow.cpp" line="558"/>
+        <location filename="../widgets/MainWindow.cpp" line="511"/>
+        <location filename="../widgets/MainWindow.cpp" line="555"/>
+        <location filename="../widgets/MainWindow.cpp" line="562"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -2303,12 +2303,12 @@
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="575"/>
+        <location filename="../widgets/MainWindow.cpp" line="579"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="584"/>
+        <location filename="../widgets/MainWindow.cpp" line="588"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
@@ -2463,177 +2463,177 @@
 <context>
     <name>drytwin::widgets::MpcPanel</name>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="43"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="44"/>
         <source>Open scenario…</source>
         <translation>打开情景…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="47"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="48"/>
         <source>The scenario as JSON (schema in docs/mpc.md): setpoint steps, input steps and ramps, hidden mechanisms switched on mid-run, noise. Edits are checked when you run.</source>
         <translation>以 JSON 表示的情景（格式见 docs/mpc.md）：设定值阶跃、输入阶跃与斜坡、运行中途开启的隐藏机理、噪声。运行时检查修改。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="58"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="60"/>
         <source>Run scenario</source>
         <translation>运行情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="61"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
         <source>Show the horizon the controllers predicted at this decision</source>
         <translation>显示控制器在此决策时刻预测的时域</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="64"/>
         <source>Runs the scenario against the virtual plant once per controller.</source>
         <translation>对虚拟装置逐个控制器运行该情景。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="64"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="66"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="64"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="66"/>
         <source>IAE [%·s]</source>
         <translation>IAE [%·s]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="64"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="66"/>
         <source>Effort [K²]</source>
         <translation>控制量 [K²]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="64"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="66"/>
         <source>Violations [%]</source>
         <translation>越限 [%]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="65"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
         <source>Solve median [ms]</source>
         <translation>求解时间中位数 [ms]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="65"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
         <source>Fallbacks</source>
         <translation>回退次数</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="65"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
         <source>Model gain [%/K]</source>
         <translation>模型增益 [%/K]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="69"/>
         <source>X_out, true [% wb]</source>
         <translation>X_out 真实值 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="68"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="70"/>
         <source>T_hot setpoint [°C]</source>
         <translation>T_hot 设定值 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="83"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="85"/>
         <source>Form</source>
         <translation>表单</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="84"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="86"/>
         <source>JSON</source>
         <translation>JSON</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="91"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="93"/>
         <source>prediction at</source>
         <translation>预测时刻</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="130"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="132"/>
         <source>Open scenario</source>
         <translation>打开情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="130"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="132"/>
         <source>Scenarios (*.json)</source>
         <translation>情景 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="140"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="142"/>
         <source>Run a scenario to see each controller&apos;s outlet moisture and hot-air setpoint</source>
         <translation>运行一个情景，可看到各控制器的出口含水率和热风设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="153"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="155"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="170"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="172"/>
         <source>Cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="187"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="189"/>
         <source>Choose at least one controller.</source>
         <translation>请至少选择一个控制器。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="190"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="192"/>
         <source>Running…</source>
         <translation>正在运行…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="201"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="203"/>
         <source>Contract key: %1</source>
         <translation>接口代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="203"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="205"/>
         <source>%1 (stale)</source>
         <translation>%1（过期）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="204"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="206"/>
         <source>Learnt before %1: retrain it to run it.</source>
         <translation>学习于以下变化之前：%1；需重新训练才能运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="206"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="208"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="207"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="209"/>
         <source>Learn the correction models on the Residual model tab to run it.</source>
         <translation>在残差模型页学习修正模型后才能运行它。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="233"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="235"/>
         <source>skipped</source>
         <translation>已跳过</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="234"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="236"/>
         <source>the model holds no such prediction model</source>
         <translation>模型中没有这种预测模型</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="247"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="249"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="255"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="257"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="271"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="273"/>
         <source>%1 predicted at %2 s</source>
         <translation>%1 在 %2 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="280"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="282"/>
         <source>%1. IAE and violations on the product&apos;s true outlet moisture; the plant&apos;s own gain is %2 % wb/K.</source>
         <translation>%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。</translation>
     </message>
@@ -3210,12 +3210,12 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::TrainingPanel</name>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="115"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="107"/>
         <source>The line&apos;s conditions: initial levels, load changes, seed (docs/mpc.md)</source>
         <translation>产线条件：初始水平、负荷变化、随机种子（docs/mpc.md）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="116"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="108"/>
         <source>Start session</source>
         <translation>开始会话</translation>
     </message>
@@ -3228,280 +3228,280 @@ extrapolation</source>
         <translation>显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="119"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="111"/>
         <source>Instructor window…</source>
         <translation>教员窗口…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="120"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="112"/>
         <source>Opens the instructor&apos;s window: clock, snapshots, faults, the true moisture and the score. Not on the trainee&apos;s screen.</source>
         <translation>打开教员窗口：时钟、快照、故障、真实水分和得分。不显示在学员屏幕上。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="122"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="114"/>
         <source>No session</source>
         <translation>无会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="131"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="123"/>
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="138"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="130"/>
         <source> % wb</source>
         <translation> % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="140"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="132"/>
         <source>Apply</source>
         <translation>应用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="149"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="141"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="151"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="143"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="155"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="147"/>
         <source>X_out setpoint</source>
         <translation>X_out 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="156"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="148"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="160"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="152"/>
         <source>Diagnose the recording…</source>
         <translation>诊断记录…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="161"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="153"/>
         <source>Saves what the line recorded so far as a batch file and opens it, so that the Discover tab can show what the model gets wrong</source>
         <translation>将产线至今的记录保存为批次文件并打开，以便“发现”页显示模型哪里出错</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="164"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="583"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="156"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="575"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="168"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="160"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="171"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="568"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="163"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="560"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="172"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="164"/>
         <source>Stops the line&apos;s clock while you think; press again to continue</source>
         <translation>思考时暂停产线时钟；再按一次继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="173"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="165"/>
         <source>Trainee</source>
         <translation>学员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="183"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="175"/>
         <source>Causes named (session time):</source>
         <translation>已给出的原因（会话时间）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="187"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="567"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="179"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="559"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="191"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="183"/>
         <source> min</source>
         <translation> 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="192"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="184"/>
         <source>Run ahead</source>
         <translation>快进</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="185"/>
         <source>Runs the line this much further at full speed</source>
         <translation>以最快速度让产线再运行这么久</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="195"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="187"/>
         <source>label (default: the time)</source>
         <translation>标签（默认：时间）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="196"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="188"/>
         <source>Take snapshot</source>
         <translation>拍摄快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="191"/>
         <source>Restore selected</source>
         <translation>恢复所选快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="209"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="201"/>
         <source> s from now</source>
         <translation> 秒后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="210"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="202"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="211"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="203"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="211"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="203"/>
         <source>Strength</source>
         <translation>强度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="211"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="203"/>
         <source>Acts from</source>
         <translation>起作用时间</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="211"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="203"/>
         <source>Found after</source>
         <translation>发现用时</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="215"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="207"/>
         <source>Save session…</source>
         <translation>保存会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="216"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="208"/>
         <source>Open session…</source>
         <translation>打开会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="217"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="256"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="342"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="209"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="248"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="334"/>
         <source>Instructor</source>
         <translation>教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="230"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="222"/>
         <source>Clock and snapshots</source>
         <translation>时钟与快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="238"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="230"/>
         <source>Faults</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="242"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="234"/>
         <source>A session file holds the scenario, every event (faults, snapshots, answers) and the recording as a batch file; reopening replays it to the same data.</source>
         <translation>会话文件包含工况、每个事件（故障、快照、回答）以及作为批次文件的记录；重新打开时会回放得到相同的数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="250"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="242"/>
         <source>Set instructor password…</source>
         <translation>设置教员密码…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="251"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="243"/>
         <source>Asked before the instructor window opens (empty: no password)</source>
         <translation>打开教员窗口前询问（留空：不设密码）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="257"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="249"/>
         <source>New instructor password (empty: none):</source>
         <translation>新的教员密码（留空：无）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="264"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="256"/>
         <source>Session file</source>
         <translation>会话文件</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="267"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="259"/>
         <source>Start a session: the line runs live under its PI loop.</source>
         <translation>开始会话：产线在其 PI 回路下实时运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="283"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="298"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="275"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="290"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="284"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="276"/>
         <source>T_hot [°C]</source>
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="285"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="277"/>
         <source>Feed [t/h]</source>
         <translation>进料 [t/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="286"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="278"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="287"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="299"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="279"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="291"/>
         <source>session time [min]</source>
         <translation>会话时间 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="289"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="281"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="291"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="283"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="292"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="302"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="284"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="294"/>
         <source>X_out measured</source>
         <translation>X_out 测量值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="295"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="287"/>
         <source>DryTwin — instructor</source>
         <translation>DryTwin — 教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="304"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="296"/>
         <source>X_out true</source>
         <translation>X_out 真实值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="414"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="406"/>
         <source>Save the session as a folder</source>
         <translation>把会话保存为文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="417"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="409"/>
         <source>Session folder (*)</source>
         <translation>会话文件夹 (*)</translation>
     </message>
@@ -3510,52 +3510,52 @@ extrapolation</source>
         <translation>X_out 真实值（教员）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="309"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="301"/>
         <source>T_hot setpoint</source>
         <translation>T_hot 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="310"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="302"/>
         <source>T_hot</source>
         <translation>T_hot</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="311"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="303"/>
         <source>feed</source>
         <translation>进料</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="304"/>
         <source>X_in</source>
         <translation>X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="317"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="309"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="318"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="310"/>
         <source>Stops the replay or the run ahead; the line stays where it got to</source>
         <translation>停止回放或快进；产线停留在已运行到的位置</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="320"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
         <source>Scenario</source>
         <translation>工况</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="342"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="334"/>
         <source>Instructor password:</source>
         <translation>教员密码：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="345"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="337"/>
         <source>Wrong password: the instructor window stays closed.</source>
         <translation>密码错误：教员窗口保持关闭。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="402"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="394"/>
         <source>Select a snapshot to restore.</source>
         <translation>请选择要恢复的快照。</translation>
     </message>
@@ -3564,127 +3564,127 @@ extrapolation</source>
         <translation>将会话保存到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="423"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="415"/>
         <source>Open a training session</source>
         <translation>打开培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="423"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="415"/>
         <source>Sessions (*.json)</source>
         <translation>会话 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="432"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="424"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="439"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="431"/>
         <source>Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录以供诊断：%1。请在其上运行“发现”，然后在此给出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="443"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="435"/>
         <source>Session saved: %1</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="476"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="468"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="480"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="472"/>
         <source>The previous session was saved in %1.</source>
         <translation>上一个会话已保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="493"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="485"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="513"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="505"/>
         <source>%1 (stale: retrain)</source>
         <translation>%1（过期：需重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="514"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="506"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="562"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="554"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="564"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="556"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="564"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="556"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="564"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="556"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="566"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="558"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="567"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="559"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="568"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="560"/>
         <source>Continue</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="578"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="570"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="579"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="571"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="583"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="575"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="590"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="582"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="600"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="592"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="600"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="592"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="603"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="614"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="606"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>
@@ -3760,144 +3760,144 @@ extrapolation</source>
         <translation>%1（%2 个批次）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="158"/>
+        <location filename="../widgets/common/Workbench.cpp" line="157"/>
         <source>%1 changes the physics model that %2 learnt its corrections on: they will no longer match it and are set aside as stale.</source>
         <translation>“%1”会改变 %2 学习修正时所依据的物理模型：它们将不再匹配，并被标为过期。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="162"/>
+        <location filename="../widgets/common/Workbench.cpp" line="161"/>
         <source>%1, then retrain them</source>
         <translation>%1，然后重新训练它们</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="163"/>
+        <location filename="../widgets/common/Workbench.cpp" line="162"/>
         <source>%1 only (retrain later)</source>
         <translation>仅%1（稍后重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="183"/>
+        <location filename="../widgets/common/Workbench.cpp" line="182"/>
         <source>Physics model calibrated (%1 fitted to data).</source>
         <translation>物理模型已标定（%1 已拟合到数据）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="185"/>
+        <location filename="../widgets/common/Workbench.cpp" line="184"/>
         <source>Physics model with its default parameters (not calibrated).</source>
         <translation>物理模型使用默认参数（未标定）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="192"/>
+        <location filename="../widgets/common/Workbench.cpp" line="191"/>
         <source>Extended by discovery with: %1.</source>
         <translation>已由发现功能扩展：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="198"/>
+        <location filename="../widgets/common/Workbench.cpp" line="197"/>
         <source>%1: not learnt yet.</source>
         <translation>%1：尚未学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="201"/>
+        <location filename="../widgets/common/Workbench.cpp" line="200"/>
         <source>%1: learnt.</source>
         <translation>%1：已学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="202"/>
+        <location filename="../widgets/common/Workbench.cpp" line="201"/>
         <source>%1: learnt on %2.</source>
         <translation>%1：在 %2 上学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="205"/>
+        <location filename="../widgets/common/Workbench.cpp" line="204"/>
         <source>%1: stale, since %2; retrain it to use it.</source>
         <translation>%1：已过期，因为%2；需重新训练才能使用。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="219"/>
+        <location filename="../widgets/common/Workbench.cpp" line="218"/>
         <source>Read the model</source>
         <translation>读取模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="234"/>
+        <location filename="../widgets/common/Workbench.cpp" line="233"/>
         <source>Loading %1…</source>
         <translation>正在加载 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="243"/>
+        <location filename="../widgets/common/Workbench.cpp" line="242"/>
         <source>Load %1</source>
         <translation>加载 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="278"/>
+        <location filename="../widgets/common/Workbench.cpp" line="277"/>
         <source>%1: %2 batches, %3 rows, %4 missing cells; the cleaning keeps %5 rows</source>
         <translation>%1：%2 个批次，%3 行，%4 个缺失值；清洗后保留 %5 行</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="304"/>
+        <location filename="../widgets/common/Workbench.cpp" line="303"/>
         <source>Open model %1</source>
         <translation>打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="308"/>
+        <location filename="../widgets/common/Workbench.cpp" line="307"/>
         <source>Model %1 opened</source>
         <translation>已打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="309"/>
+        <location filename="../widgets/common/Workbench.cpp" line="308"/>
         <source>model file %1</source>
         <translation>模型文件 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="352"/>
+        <location filename="../widgets/common/Workbench.cpp" line="351"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="361"/>
+        <location filename="../widgets/common/Workbench.cpp" line="360"/>
         <source>Model saved to %1</source>
         <translation>模型已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="367"/>
+        <location filename="../widgets/common/Workbench.cpp" line="366"/>
         <source>Set %1</source>
         <translation>设置 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="383"/>
+        <location filename="../widgets/common/Workbench.cpp" line="382"/>
         <source>Set the model</source>
         <translation>设置模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="400"/>
+        <location filename="../widgets/common/Workbench.cpp" line="399"/>
         <source>Simulate</source>
         <translation>仿真</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="408"/>
+        <location filename="../widgets/common/Workbench.cpp" line="407"/>
         <source>Simulated %1 batches; mean outlet-moisture MAE %2 % wb</source>
         <translation>已仿真 %1 个批次；出口含水率平均 MAE %2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="421"/>
+        <location filename="../widgets/common/Workbench.cpp" line="420"/>
         <source>Calibration: %1; loss %2 → %3</source>
         <translation>标定：%1；损失 %2 → %3</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="431"/>
+        <location filename="../widgets/common/Workbench.cpp" line="430"/>
         <source>the physics model was calibrated after it was learnt</source>
         <translation>学习之后物理模型又经过了标定</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="447"/>
+        <location filename="../widgets/common/Workbench.cpp" line="446"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="117"/>
         <source>Learn the correction models</source>
         <translation>学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="451"/>
+        <location filename="../widgets/common/Workbench.cpp" line="450"/>
         <source>Learnt the correction models (PGRL-CC) and the two comparison models</source>
         <translation>已学习修正模型（PGRL-CC）和两个对比模型</translation>
     </message>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="139"/>
-        <location filename="../widgets/common/Workbench.cpp" line="417"/>
+        <location filename="../widgets/common/Workbench.cpp" line="416"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
@@ -3914,43 +3914,43 @@ extrapolation</source>
         <translation>已训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="460"/>
+        <location filename="../widgets/common/Workbench.cpp" line="459"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="470"/>
+        <location filename="../widgets/common/Workbench.cpp" line="469"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="474"/>
+        <location filename="../widgets/common/Workbench.cpp" line="473"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="481"/>
+        <location filename="../widgets/common/Workbench.cpp" line="480"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="496"/>
+        <location filename="../widgets/common/Workbench.cpp" line="495"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="118"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="500"/>
+        <location filename="../widgets/common/Workbench.cpp" line="499"/>
         <source>Ablation: %1 variants trained and evaluated</source>
         <translation>消融实验：已训练并评估 %1 个变体</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="507"/>
+        <location filename="../widgets/common/Workbench.cpp" line="506"/>
         <source>Generate</source>
         <translation>生成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="510"/>
+        <location filename="../widgets/common/Workbench.cpp" line="509"/>
         <source>Wrote %1 virtual-plant batches to %2</source>
         <translation>已将 %1 个虚拟装置批次写入 %2</translation>
     </message>

@@ -748,6 +748,7 @@ ZH = {
     "Ready.": "就绪。",
     "skill [-]": "技能 [-]",
     "Skill: a model's MAE over the better of the two reference forecasts at that horizon; below 1 it beats both": "技能：模型在该步长上的 MAE 除以两个参考预测中较好者的 MAE；小于 1 即优于二者",
+    "MPC on: %1": "MPC，基于：%1",
 }
 
 

@@ -203,6 +203,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             m_statusIsProgress = true;
         });
     connect(m_cancelButton, &QPushButton::clicked, &m_workbench, &Workbench::cancelAll);
+    connect(&m_workbench, &Workbench::queued, this, [this](const QString& text) {
+        m_statusLabel->setText(text);
+        m_statusIsProgress = true;
+    });
     connect(&m_workbench, &Workbench::status, this, [this](const QString& text) {
         m_lastStatus = text;
         m_statusIsProgress = false;

@@ -223,10 +223,14 @@ private Q_SLOTS:
         QCOMPARE(runner.frame().timeS, pausedAt);
         QTest::mouseClick(panel->pauseButton(), Qt::LeftButton);
         QTRY_VERIFY(!runner.frame().frozen && runner.frame().timeS > pausedAt);
+        // Opened on a paused line (no new frames), its plot shows the measured and the true moisture.
+        QTest::mouseClick(panel->pauseButton(), Qt::LeftButton);
+        QTRY_VERIFY(runner.frame().frozen);
+        QCoreApplication::processEvents();
         panel->setInstructorView(true);
         QVERIFY(panel->instructorWindow()->isVisible());
         QVERIFY(panel->instructorView());
-        QTRY_VERIFY(panel->truthPlots()->curveCount(0) >= 2); // measured and true moisture
+        QVERIFY(panel->truthPlots()->curveCount(0) >= 2);
         panel->setInstructorView(false);
         QTemporaryDir dir;
         const QString folder = dir.filePath(QStringLiteral("not/yet/there"));

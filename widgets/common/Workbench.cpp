@@ -45,7 +45,7 @@ template <class R, class Work, class Done>
 JobId Workbench::start(Action kind, const QString& action, Work work, Done done,
                        std::function<void(const QString&, const Error&)> onFailure) {
     if (m_jobs.busy()) {
-        Q_EMIT status(Workbench::tr("%1 is queued behind the running job").arg(action));
+        Q_EMIT queued(Workbench::tr("%1 is queued behind the running job").arg(action));
     }
     ++m_running[kind];
     Q_EMIT runningChanged();
@@ -119,10 +119,9 @@ bool holdsPart(const hybrid::HybridModel& m, control::ControllerKind k) {
 
 void Workbench::takeModel(const hybrid::HybridModel& model, const QString& why, const QString& learntOn,
                           bool fromFile) {
-    const auto holds = holdsPart;
     for (auto& p : m_parts) {
-        const bool before = holds(m_model, p.kind);
-        const bool after = holds(model, p.kind);
+        const bool before = holdsPart(m_model, p.kind);
+        const bool after = holdsPart(model, p.kind);
         if (after && (!before || !learntOn.isEmpty())) {
             p.state = PartState::Current;
             p.learntOn = learntOn;

@@ -165,6 +165,8 @@ Q_SIGNALS:
     void dataLoadFailed(const QString& message, const QString& path = {}, bool mappingMayHelp = false);
     /// @brief A line for the status bar.
     void status(const QString& text);
+    /// @brief A line for the status bar while jobs run ("X is queued …"), gone when they are done.
+    void queued(const QString& text);
     /// @brief An action was queued or finished (isRunning() changed).
     void runningChanged();
     /// @brief An action finished (successfully or not), for scripts and tests.

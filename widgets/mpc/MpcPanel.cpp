@@ -14,6 +14,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileDialog>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -46,13 +47,14 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     m_editor->setToolTip(
         tr("The scenario as JSON (schema in docs/mpc.md): setpoint steps, input steps and ramps, "
            "hidden mechanisms switched on mid-run, noise. Edits are checked when you run."));
-    auto* controllers = new QHBoxLayout;
+    // Three to a row: five names on one line would make the left side too wide for the plots.
+    auto* controllers = new QGridLayout;
     for (int i = 0; i < 5; ++i) {
         m_controllers[i] = new QCheckBox(controllerDisplayName(kKinds[i]));
         m_controllers[i]->setChecked(true);
         // The user's tick, kept while the box is greyed out (its model not learnt yet).
         connect(m_controllers[i], &QCheckBox::clicked, this, [this, i](bool on) { m_wanted[i] = on; });
-        controllers->addWidget(m_controllers[i]);
+        controllers->addWidget(m_controllers[i], i / 3, i % 3);
     }
     m_state = new ModelStateBar(m_workbench);
     auto* run = new QPushButton(tr("Run scenario"));

@@ -1,5 +1,6 @@
 #include "training/TrainingPanel.h"
 
+#include "common/DisplayNames.h"
 #include "common/PlotStack.h"
 #include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
@@ -51,19 +52,10 @@ const control::ControllerKind kControllers[] = {
     control::ControllerKind::ExtInputResidual, control::ControllerKind::Lstm};
 
 QString controllerLabel(control::ControllerKind k) {
-    switch (k) {
-    case control::ControllerKind::Pi:
-        return QCoreApplication::translate("TrainingPanel", "PI loop (the plant's own)");
-    case control::ControllerKind::Pbm:
-        return QCoreApplication::translate("TrainingPanel", "MPC on the physics model");
-    case control::ControllerKind::PgrlCc:
-        return QCoreApplication::translate("TrainingPanel", "MPC on PGRL-CC");
-    case control::ControllerKind::ExtInputResidual:
-        return QCoreApplication::translate("TrainingPanel", "MPC on the external-input residual model");
-    case control::ControllerKind::Lstm:
-        return QCoreApplication::translate("TrainingPanel", "MPC on the LSTM");
-    }
-    return {};
+    // The models' names are the ones every tab uses (DisplayNames); an MPC runs on each.
+    return k == control::ControllerKind::Pi
+               ? controllerDisplayName(k)
+               : QCoreApplication::translate("TrainingPanel", "MPC on: %1").arg(controllerDisplayName(k));
 }
 
 QString mechanismLabel(plant::Mechanism m) {
@@ -498,6 +490,9 @@ void TrainingPanel::setInstructorView(bool on) {
     m_instructorWindow->setVisible(on);
     if (on) {
         m_instructorWindow->raise();
+        if (m_runner->frame().started) {
+            redrawPlots(); // its plot is drawn only while it is open; a frozen line sends no frames
+        }
     }
 }
 

@@ -3,6 +3,7 @@
 #include "common/AtomicFile.h"
 #include "common/Units.h"
 #include "io/ModelFile.h"
+#include "workflow/ResultArchive.h"
 #include "workflow/Session.h"
 
 #include <QTemporaryDir>
@@ -451,6 +452,32 @@ private Q_SLOTS:
                  r->mpc.closedLoop.runs.front().metrics.iaePctS);
         QVERIFY(mpc["controllers"].contains("pi") && mpc["controllers"].contains("pgrl_cc"));
         QVERIFY(report->find("Closed-loop MPC (paper Table 2)") != std::string::npos);
+
+        // A project keeps these results (issue #26): the archive reads back into the same structs,
+        // NaN included, and writes the same text again.
+        const std::string archived = workflow::latestResultsJson(s.latest());
+        auto back = workflow::parseLatestResults(archived, "p.drytwin.results.json");
+        QVERIFY2(back.ok(), back ? "" : back.error().message().c_str());
+        QCOMPARE(workflow::latestResultsJson(*back), archived);
+        QCOMPARE(back->discover->discovery.findings.size(), r->discover.discovery.findings.size());
+        QCOMPARE(back->discover->discovery.verdict, r->discover.discovery.verdict);
+        QCOMPARE(back->discover->extendedModel.parameters[Param::k_HDT],
+                 r->discover.extendedModel.parameters[Param::k_HDT]);
+        QCOMPARE(back->discover->extendedModel.pgrlCc != nullptr,
+                 r->discover.extendedModel.pgrlCc != nullptr);
+        QCOMPARE(back->evaluate->evaluation.models.back().moisture.mae,
+                 r->evaluate.evaluation.models.back().moisture.mae);
+        QCOMPARE(back->mpc->closedLoop.runs.front().xOutTruePct, r->mpc.closedLoop.runs.front().xOutTruePct);
+        QCOMPARE(back->mpc->closedLoop.scenario.setpointSteps.size(), std::size_t(1));
+        QCOMPARE(back->calibrate->calibration.estimates.size(), r->calibrate.calibration.estimates.size());
+        QCOMPARE(back->ablation->rows.size(), std::size_t(11));
+        QVERIFY(!back->simulate && !back->train); // re-run on opening / in the model file
+        auto damaged =
+            workflow::parseLatestResults(archived.substr(0, archived.size() / 2), "p.results.json");
+        QVERIFY(!damaged.ok() && damaged.error().place == "p.results.json");
+        auto foreign = workflow::parseLatestResults(R"({"format": "something else"})", "x.json");
+        QVERIFY(!foreign.ok() &&
+                foreign.error().reason.find("not a DryTwin results file") != std::string::npos);
 
         // A cancelled pipeline keeps the model it started with.
         workflow::Session c;
