@@ -241,6 +241,14 @@ void DiagnosticsPanel::redrawCrossCorrelation() {
     }
     m_ccf->setXTitle(tr("lag of the input [s]"));
     m_ccf->rescale();
+    // Lags are 0–300 s: from 0, and wide enough to read when every correlate sits at one lag.
+    double longest = 0;
+    for (const auto& o : d->discovery.residuals) {
+        for (const auto& c : o.correlates) {
+            longest = o.output == "X_out" ? std::max(longest, c.lagS) : longest;
+        }
+    }
+    m_ccf->setXRange(-5, std::max(60.0, 1.1 * longest));
 }
 
 } // namespace drytwin::widgets
