@@ -764,6 +764,11 @@ private Q_SLOTS:
                 }
             }
         }
+        // A missing sample is left out of the curve, not drawn as a line to a point off the canvas.
+        auto* gap = plots->addCurve(0, "with a gap", {0, 1, 2, 3}, {1.0, NAN, 2.0, 3.0}, Qt::magenta);
+        QCOMPARE(int(gap->dataSize()), 3);
+        QCOMPARE(gap->sample(1), QPointF(2, 2.0));
+        w.dataPanel()->selectBatches({0, 1});
         const QString csv = m_dir.filePath("plots.csv");
         QVERIFY(plots->exportTo(csv));
         QFile f(csv);

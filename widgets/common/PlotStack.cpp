@@ -256,7 +256,26 @@ QwtPlotCurve* PlotStack::addCurve(int index, const QString& name, const QVector<
     // Long series: drop points that fall on the same pixel, clip to the canvas.
     c->setPaintAttribute(QwtPlotCurve::FilterPoints, true);
     c->setPaintAttribute(QwtPlotCurve::ClipPolygons, true);
-    c->setSamples(x, y);
+    // Missing samples (NaN: a sensor dropout, a cell the cleaning rejected) are left out: Qwt maps
+    // a NaN to a pixel far off the canvas and draws a fan of lines to it.
+    bool allFinite = true;
+    for (int i = 0; i < x.size() && i < y.size() && allFinite; ++i) {
+        allFinite = std::isfinite(x[i]) && std::isfinite(y[i]);
+    }
+    if (allFinite) {
+        c->setSamples(x, y);
+    } else {
+        QVector<double> fx, fy;
+        fx.reserve(x.size());
+        fy.reserve(y.size());
+        for (int i = 0; i < x.size() && i < y.size(); ++i) {
+            if (std::isfinite(x[i]) && std::isfinite(y[i])) {
+                fx << x[i];
+                fy << y[i];
+            }
+        }
+        c->setSamples(fx, fy);
+    }
     c->attach(plot);
     // One legend entry per name, on the top plot; curves elsewhere share it.
     bool named = false;
