@@ -1886,52 +1886,52 @@
 <context>
     <name>drytwin::widgets::MainWindow</name>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="66"/>
+        <location filename="../widgets/MainWindow.cpp" line="67"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="80"/>
+        <location filename="../widgets/MainWindow.cpp" line="81"/>
         <source>Data</source>
         <translation>数据</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="81"/>
+        <location filename="../widgets/MainWindow.cpp" line="82"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="82"/>
+        <location filename="../widgets/MainWindow.cpp" line="83"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="83"/>
+        <location filename="../widgets/MainWindow.cpp" line="84"/>
         <source>Residual model</source>
         <translation>残差模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="84"/>
+        <location filename="../widgets/MainWindow.cpp" line="85"/>
         <source>Diagnostics</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="85"/>
+        <location filename="../widgets/MainWindow.cpp" line="86"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="86"/>
+        <location filename="../widgets/MainWindow.cpp" line="87"/>
         <source>What-if MPC</source>
         <translation>假设分析 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="87"/>
+        <location filename="../widgets/MainWindow.cpp" line="88"/>
         <source>3D line</source>
         <translation>三维产线</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="89"/>
+        <location filename="../widgets/MainWindow.cpp" line="90"/>
         <source>Training</source>
         <translation>培训</translation>
     </message>
@@ -1940,361 +1940,366 @@
         <translation>未加载数据。文件 ▸ 打开数据集…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="93"/>
+        <location filename="../widgets/MainWindow.cpp" line="94"/>
         <source>&lt;b&gt;Data&lt;/b&gt;: the loaded batches, their rows kept by the cleaning, and every measured channel over time. Select several batches to overlay them; drop files here to open them. Files with other column names open through Column mapping…</source>
         <translation>&lt;b&gt;数据&lt;/b&gt;：已加载的批次、清洗后保留的行，以及每个测量通道随时间的变化。选择多个批次可叠加显示；把文件拖到这里即可打开。列名不同的文件通过“列映射…”打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="97"/>
+        <location filename="../widgets/MainWindow.cpp" line="98"/>
         <source>&lt;b&gt;Model&lt;/b&gt;: the physics model&apos;s parameters with units and bounds (paper Eqs. 1–19), and its simulation against the measurements. Edit a value to try it; Undo takes it back.</source>
         <translation>&lt;b&gt;模型&lt;/b&gt;：物理模型的参数及其单位和范围（论文公式 1–19），以及模拟与测量的对比。修改数值即可试验；“撤销”可恢复。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="101"/>
+        <location filename="../widgets/MainWindow.cpp" line="102"/>
         <source>&lt;b&gt;Calibrate&lt;/b&gt;: fits the ticked parameters to the data (a global search, then BOBYQA) and gives each its 95 % interval. Stop keeps the best so far.</source>
         <translation>&lt;b&gt;标定&lt;/b&gt;：把勾选的参数拟合到数据（先全局搜索，再 BOBYQA），并给出各自的 95 % 区间。停止时保留目前最优。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="104"/>
+        <location filename="../widgets/MainWindow.cpp" line="105"/>
         <source>&lt;b&gt;Residual model&lt;/b&gt;: learns a correction of the physics model from the data (PGRL-CC, paper Eqs. 20–30) and scores it on held-out data beside the comparison models and the two trivial forecasts. Skill below 1 beats both.</source>
         <translation>&lt;b&gt;残差模型&lt;/b&gt;：从数据学习物理模型的修正（PGRL-CC，论文公式 20–30），并在留出数据上与对比模型及两个平凡预测一起评分。技能小于 1 即优于二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="108"/>
+        <location filename="../widgets/MainWindow.cpp" line="109"/>
         <source>&lt;b&gt;Diagnostics&lt;/b&gt;: the residuals&apos; autocorrelation and spectrum (white noise is what a complete model leaves), where in the operating range the physics model errs, and what its error moves with.</source>
         <translation>&lt;b&gt;诊断&lt;/b&gt;：残差的自相关和频谱（完整的模型只留下白噪声）、物理模型在工况范围内何处出错，以及其误差随什么变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="112"/>
+        <location filename="../widgets/MainWindow.cpp" line="113"/>
         <source>&lt;b&gt;Discover&lt;/b&gt;: what the simulation gets wrong, the physical cause when one is specific (better on every output it touches, consistent across batches, told apart from its look-alikes), and the gain of the extended model.</source>
         <translation>&lt;b&gt;发现&lt;/b&gt;：模拟哪里不准；当某个物理原因具有特异性时给出它（在其影响的每个输出上都更好、各批次间一致、能与相似原因区分），以及扩展模型的收益。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="116"/>
+        <location filename="../widgets/MainWindow.cpp" line="117"/>
         <source>&lt;b&gt;What-if MPC&lt;/b&gt;: a scenario run against the virtual plant once per controller, an MPC on each model that exists and the plant&apos;s own PI loop, with the paper&apos;s Table 2 metrics.</source>
         <translation>&lt;b&gt;假设分析 MPC&lt;/b&gt;：针对虚拟工厂，为每个控制器运行一次情景：每个已有模型上的 MPC 以及工厂自己的 PI 回路，并给出论文表 2 的指标。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="120"/>
+        <location filename="../widgets/MainWindow.cpp" line="121"/>
         <source>&lt;b&gt;3D line&lt;/b&gt;: the drying tube, conveyor and winnower with the material parcels coloured by moisture at the time cursor; the slider moves every plot&apos;s cursor.</source>
         <translation>&lt;b&gt;三维产线&lt;/b&gt;：干燥管、输送机和风选机，物料颗粒按时间光标处的含水率着色；滑块同时移动所有曲线图的光标。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="123"/>
+        <location filename="../widgets/MainWindow.cpp" line="124"/>
         <source>&lt;b&gt;Training&lt;/b&gt;: the line runs live for a trainee; the instructor&apos;s window injects faults, freezes the clock and scores the answers.</source>
         <translation>&lt;b&gt;培训&lt;/b&gt;：产线为学员实时运行；教员窗口可注入故障、冻结时钟并为回答评分。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="128"/>
+        <location filename="../widgets/MainWindow.cpp" line="129"/>
         <source>The data set every tab shows; the others opened in this window stay here</source>
         <translation>各页显示的数据集；在本窗口打开过的其他数据集也保留在这里</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="134"/>
+        <location filename="../widgets/MainWindow.cpp" line="135"/>
         <source>Data set:</source>
         <translation>数据集：</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="145"/>
+        <location filename="../widgets/MainWindow.cpp" line="146"/>
         <source>none loaded</source>
         <translation>未加载</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="159"/>
+        <location filename="../widgets/MainWindow.cpp" line="160"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="161"/>
+        <location filename="../widgets/MainWindow.cpp" line="162"/>
         <source>Map its columns…</source>
         <translation>映射其列…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="162"/>
+        <location filename="../widgets/MainWindow.cpp" line="163"/>
         <source>Open the column-mapping dialog for the file that was not recognised</source>
         <translation>为未能识别的文件打开列映射对话框</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="201"/>
+        <location filename="../widgets/MainWindow.cpp" line="202"/>
         <source>%1: %2 %</source>
         <translation>%1：%2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="202"/>
+        <location filename="../widgets/MainWindow.cpp" line="203"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="258"/>
+        <location filename="../widgets/MainWindow.cpp" line="259"/>
         <source>Opening the recording beside %1; the data-set list at the top right switches back.</source>
         <translation>正在 %1 之外另行打开该记录；用右上角的数据集列表可切换回去。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="291"/>
+        <location filename="../widgets/MainWindow.cpp" line="292"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="292"/>
+        <location filename="../widgets/MainWindow.cpp" line="293"/>
         <source>&amp;Open batch file…</source>
         <translation>打开批次文件(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="293"/>
+        <location filename="../widgets/MainWindow.cpp" line="294"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="293"/>
+        <location filename="../widgets/MainWindow.cpp" line="294"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="299"/>
+        <location filename="../widgets/MainWindow.cpp" line="300"/>
         <source>Open data set &amp;folder…</source>
         <translation>打开数据集文件夹(&amp;F)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="300"/>
+        <location filename="../widgets/MainWindow.cpp" line="301"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="305"/>
+        <location filename="../widgets/MainWindow.cpp" line="306"/>
         <source>Open the bundled &amp;demo</source>
         <translation>打开自带演示数据(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="306"/>
+        <location filename="../widgets/MainWindow.cpp" line="307"/>
         <source>&amp;Generate virtual-plant data…</source>
         <translation>生成虚拟装置数据(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="307"/>
+        <location filename="../widgets/MainWindow.cpp" line="308"/>
         <source>Folder for the virtual plant&apos;s batches</source>
         <translation>虚拟装置批次的文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="316"/>
+        <location filename="../widgets/MainWindow.cpp" line="317"/>
         <source>Open &amp;model…</source>
         <translation>打开模型(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="317"/>
+        <location filename="../widgets/MainWindow.cpp" line="318"/>
         <source>Open model</source>
         <translation>打开模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="317"/>
-        <location filename="../widgets/MainWindow.cpp" line="324"/>
+        <location filename="../widgets/MainWindow.cpp" line="318"/>
+        <location filename="../widgets/MainWindow.cpp" line="325"/>
         <source>Model files (*.json)</source>
         <translation>模型文件 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="322"/>
+        <location filename="../widgets/MainWindow.cpp" line="323"/>
         <source>Save model &amp;as…</source>
         <translation>模型另存为(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="324"/>
+        <location filename="../widgets/MainWindow.cpp" line="325"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="330"/>
+        <location filename="../widgets/MainWindow.cpp" line="331"/>
         <source>Open &amp;project…</source>
         <translation>打开项目(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="331"/>
-        <location filename="../widgets/MainWindow.cpp" line="334"/>
-        <location filename="../widgets/MainWindow.cpp" line="723"/>
+        <location filename="../widgets/MainWindow.cpp" line="332"/>
+        <location filename="../widgets/MainWindow.cpp" line="335"/>
+        <location filename="../widgets/MainWindow.cpp" line="734"/>
         <source>Open project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="331"/>
-        <location filename="../widgets/MainWindow.cpp" line="341"/>
-        <location filename="../widgets/MainWindow.cpp" line="351"/>
+        <location filename="../widgets/MainWindow.cpp" line="332"/>
+        <location filename="../widgets/MainWindow.cpp" line="342"/>
+        <location filename="../widgets/MainWindow.cpp" line="352"/>
         <source>DryTwin projects (*.drytwin)</source>
         <translation>DryTwin 项目 (*.drytwin)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="337"/>
+        <location filename="../widgets/MainWindow.cpp" line="338"/>
         <source>&amp;Save project</source>
         <translation>保存项目(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="340"/>
-        <location filename="../widgets/MainWindow.cpp" line="345"/>
-        <location filename="../widgets/MainWindow.cpp" line="350"/>
-        <location filename="../widgets/MainWindow.cpp" line="354"/>
+        <location filename="../widgets/MainWindow.cpp" line="341"/>
+        <location filename="../widgets/MainWindow.cpp" line="346"/>
+        <location filename="../widgets/MainWindow.cpp" line="351"/>
+        <location filename="../widgets/MainWindow.cpp" line="355"/>
         <source>Save project</source>
         <translation>保存项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="349"/>
+        <location filename="../widgets/MainWindow.cpp" line="350"/>
         <source>Save project as…</source>
         <translation>项目另存为…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="357"/>
+        <location filename="../widgets/MainWindow.cpp" line="358"/>
         <source>Recent projects</source>
         <translation>最近的项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="360"/>
+        <location filename="../widgets/MainWindow.cpp" line="361"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="363"/>
+        <location filename="../widgets/MainWindow.cpp" line="364"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="364"/>
+        <location filename="../widgets/MainWindow.cpp" line="365"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="382"/>
+        <location filename="../widgets/MainWindow.cpp" line="383"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="487"/>
+        <location filename="../widgets/MainWindow.cpp" line="488"/>
         <source>Ready.</source>
         <translation>就绪。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="516"/>
+        <location filename="../widgets/MainWindow.cpp" line="517"/>
         <source>Project saved to %1 (model, results and view)</source>
         <translation>项目已保存到 %1（模型、结果和视图）</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="571"/>
+        <location filename="../widgets/MainWindow.cpp" line="572"/>
         <source>Saving the project to %1…</source>
         <translation>正在保存项目到 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="619"/>
+        <location filename="../widgets/MainWindow.cpp" line="620"/>
         <source>The project&apos;s results could not be read (%1); it opens without them.</source>
         <translation>无法读取项目的结果（%1）；项目将不带结果打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="670"/>
+        <location filename="../widgets/MainWindow.cpp" line="671"/>
         <source>Wait until the running job has finished (or cancel it), then switch the language.</source>
         <translation>请等待当前任务完成（或取消它），然后再切换语言。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="704"/>
+        <source>The training session under way was saved in %1 when the language changed: the instructor window&apos;s Session file ▸ Open session… continues it.</source>
+        <translation>切换语言时，进行中的培训会话已保存到 %1：在教员窗口的 会话文件 ▸ 打开会话… 可继续。</translation>
     </message>
     <message>
         <source>The language changes when DryTwin is started again.</source>
         <translation>语言将在 DryTwin 重新启动后生效。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="386"/>
+        <location filename="../widgets/MainWindow.cpp" line="387"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="387"/>
+        <location filename="../widgets/MainWindow.cpp" line="388"/>
         <source>&amp;User guide</source>
         <translation>用户指南(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="390"/>
+        <location filename="../widgets/MainWindow.cpp" line="391"/>
         <source>&amp;About DryTwin</source>
         <translation>关于 DryTwin(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="391"/>
+        <location filename="../widgets/MainWindow.cpp" line="392"/>
         <source>About DryTwin</source>
         <translation>关于 DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="392"/>
+        <location filename="../widgets/MainWindow.cpp" line="393"/>
         <source>About &amp;Qt</source>
         <translation>关于 Qt(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="411"/>
+        <location filename="../widgets/MainWindow.cpp" line="412"/>
         <source>DryTwin user guide</source>
         <translation>DryTwin 用户指南</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="421"/>
+        <location filename="../widgets/MainWindow.cpp" line="422"/>
         <source>No data loaded. File ▸ Open data set folder… (or File ▸ Open the bundled demo)</source>
         <translation>未加载数据。文件 ▸ 打开数据集文件夹…（或 文件 ▸ 打开自带演示数据）</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="427"/>
+        <location filename="../widgets/MainWindow.cpp" line="428"/>
         <source>Loading</source>
         <translation>正在加载</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="428"/>
+        <location filename="../widgets/MainWindow.cpp" line="429"/>
         <source>Simulating</source>
         <translation>正在模拟</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="429"/>
+        <location filename="../widgets/MainWindow.cpp" line="430"/>
         <source>Calibrating</source>
         <translation>正在标定</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="430"/>
+        <location filename="../widgets/MainWindow.cpp" line="431"/>
         <source>Learning the correction models</source>
         <translation>正在学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="431"/>
+        <location filename="../widgets/MainWindow.cpp" line="432"/>
         <source>Training the LSTM</source>
         <translation>正在训练 LSTM</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="432"/>
+        <location filename="../widgets/MainWindow.cpp" line="433"/>
         <source>Scoring on the held-out part</source>
         <translation>正在留出部分上评分</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="433"/>
+        <location filename="../widgets/MainWindow.cpp" line="434"/>
         <source>Discovering</source>
         <translation>正在发现</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="434"/>
+        <location filename="../widgets/MainWindow.cpp" line="435"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="435"/>
+        <location filename="../widgets/MainWindow.cpp" line="436"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="436"/>
+        <location filename="../widgets/MainWindow.cpp" line="437"/>
         <source>Generating plant data</source>
         <translation>正在生成工厂数据</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="437"/>
+        <location filename="../widgets/MainWindow.cpp" line="438"/>
         <source>Training session</source>
         <translation>培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="443"/>
+        <location filename="../widgets/MainWindow.cpp" line="444"/>
         <source>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;Digital-twin workbench for pneumatic drying lines, implementing the PGRL-CC method.&lt;/p&gt;&lt;table&gt;</source>
         <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="472"/>
+        <location filename="../widgets/MainWindow.cpp" line="473"/>
         <source>Writing the bundled demo (10 batches of the virtual plant) to %1…</source>
         <translation>正在把自带演示数据（虚拟工厂的 10 个批次）写入 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="511"/>
-        <location filename="../widgets/MainWindow.cpp" line="555"/>
-        <location filename="../widgets/MainWindow.cpp" line="562"/>
+        <location filename="../widgets/MainWindow.cpp" line="512"/>
+        <location filename="../widgets/MainWindow.cpp" line="556"/>
+        <location filename="../widgets/MainWindow.cpp" line="563"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -2303,12 +2308,12 @@
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="579"/>
+        <location filename="../widgets/MainWindow.cpp" line="580"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="588"/>
+        <location filename="../widgets/MainWindow.cpp" line="589"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
@@ -2665,47 +2670,47 @@
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="426"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="445"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="429"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="448"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="432"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="451"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="436"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="455"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="440"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="459"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="514"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="533"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="542"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="561"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
         <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="576"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="595"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="492"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="511"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
@@ -2714,7 +2719,7 @@
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="575"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="594"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
@@ -2723,12 +2728,12 @@
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="583"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="602"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="585"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="604"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
@@ -3289,7 +3294,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="156"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="575"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="578"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
@@ -3300,7 +3305,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="163"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="560"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="563"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
@@ -3321,7 +3326,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="179"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="559"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="562"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
@@ -3604,87 +3609,87 @@ extrapolation</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="505"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="508"/>
         <source>%1 (stale: retrain)</source>
         <translation>%1（过期：需重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="506"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="509"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="554"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="557"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="556"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="559"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="556"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="559"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="556"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="559"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="558"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="561"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="559"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="562"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="560"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="563"/>
         <source>Continue</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="570"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="573"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="571"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="574"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="575"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="578"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="582"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="585"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="592"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="592"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="598"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="606"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="609"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>

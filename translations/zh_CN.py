@@ -749,6 +749,7 @@ ZH = {
     "skill [-]": "技能 [-]",
     "Skill: a model's MAE over the better of the two reference forecasts at that horizon; below 1 it beats both": "技能：模型在该步长上的 MAE 除以两个参考预测中较好者的 MAE；小于 1 即优于二者",
     "MPC on: %1": "MPC，基于：%1",
+    "The training session under way was saved in %1 when the language changed: the instructor window's Session file ▸ Open session… continues it.": "切换语言时，进行中的培训会话已保存到 %1：在教员窗口的 会话文件 ▸ 打开会话… 可继续。",
 }
 
 

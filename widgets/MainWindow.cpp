@@ -13,6 +13,7 @@
 #include "mpc/MpcPanel.h"
 #include "residual/ResidualPanel.h"
 #include "training/TrainingPanel.h"
+#include "training/TrainingRunner.h"
 #include "view3d/LineView3D.h"
 #include "workflow/ResultArchive.h"
 
@@ -694,6 +695,16 @@ MainWindow* MainWindow::reopenInLanguage(const QString& language, QString* error
         return nullptr;
     }
     next->m_tabs->setCurrentIndex(m_tabs->currentIndex());
+    // This window stays alive until it is closed (the first one lives as long as the program): a
+    // live training line in it must not run on hidden.
+    if (m_training->runner().frame().started) {
+        const QString kept = m_training->keepCurrentSession();
+        m_training->runner().freeze();
+        next->m_training->noteLabel()->setText(
+            tr("The training session under way was saved in %1 when the language changed: the instructor "
+               "window's Session file ▸ Open session… continues it.")
+                .arg(QDir::toNativeSeparators(kept)));
+    }
     hide();
     if (testAttribute(Qt::WA_DeleteOnClose)) {
         deleteLater();

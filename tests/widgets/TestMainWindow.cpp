@@ -18,6 +18,7 @@
 #include "mpc/ScenarioForm.h"
 #include "residual/ResidualPanel.h"
 #include "training/TrainingPanel.h"
+#include "training/TrainingRunner.h"
 #include "view3d/LineView3D.h"
 #include "workflow/Session.h"
 
@@ -33,6 +34,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardItemModel>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -111,6 +113,7 @@ class TestMainWindow : public QObject {
 
 private Q_SLOTS:
     void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true); // autosaved training sessions go to ~/.qttest
         QVERIFY(m_dir.isValid());
         m_data = m_dir.filePath("plant");
         workflow::GenerateOptions g;
@@ -665,11 +668,17 @@ private Q_SLOTS:
         w->openDataSet(m_data);
         QVERIFY(waitIdle(*w));
         w->tabs()->setCurrentIndex(2);
+        // A live training line in the window being replaced is saved and frozen, not left running.
+        QTest::mouseClick(w->trainingPanel()->startButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(w->trainingPanel()->runner().frame().started, 10000);
         QString error;
         MainWindow* zh = w->reopenInLanguage("zh_CN", &error);
         QVERIFY2(zh, qPrintable(error));
         QVERIFY(waitIdle(*zh));
         QVERIFY(!w->isVisible());
+        QTRY_VERIFY(w->trainingPanel()->runner().frame().frozen);
+        QVERIFY2(zh->trainingPanel()->noteLabel()->text().contains("training-autosave"),
+                 qPrintable(zh->trainingPanel()->noteLabel()->text()));
         QCOMPARE(zh->dataPanel()->batchTable()->rowCount(), 2);
         QCOMPARE(zh->tabs()->currentIndex(), 2);
         QVERIFY2(zh->menuBar()->actions().first()->text().contains(QString::fromUtf8("文件")),

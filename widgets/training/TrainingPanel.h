@@ -72,6 +72,10 @@ public:
     void saveSession(const QString& folder);
     /// @brief Reopens a saved session (replayed to where it ended, frozen).
     void openSession(const QString& sessionFile);
+    /// @brief Saves the session under way (if any) into the application's data folder before
+    /// another replaces it (a new session, the window reopened in another language), so that no
+    /// session is lost silently; returns the folder (empty: none).
+    QString keepCurrentSession();
     /// @brief True from openSession() until its replay has arrived or failed.
     bool isOpening() const { return m_opening; }
 
@@ -81,9 +85,6 @@ Q_SIGNALS:
 
 private:
     void startSession();
-    /// Saves the session under way (if any) into the application's data folder before another
-    /// replaces it, so that no session is lost silently; returns the folder (empty: none).
-    QString keepCurrentSession();
     void showFrame();
     void redrawPlots();
     void updateFaultUnit();
