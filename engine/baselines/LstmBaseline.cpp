@@ -190,7 +190,6 @@ Expected<LstmBaseline> LstmBaseline::train(const std::vector<residual::BatchView
 residual::HybridPrediction LstmBaseline::predictAhead(const residual::BatchView& v, int horizon) const {
     torch::NoGradGuard noGrad;
     const auto& im = *m_impl;
-    const std::size_t n = v.batch->rows();
     const std::size_t count = v.rows.size();
     residual::HybridPrediction out = residual::HybridPrediction::unknown(count);
     const torch::Tensor f = im.batchFeatures(*v.batch);

@@ -127,7 +127,7 @@ void Workbench::takeModel(const hybrid::HybridModel& model, const QString& why, 
             p.learntOn = learntOn;
             p.staleBecause.clear();
         } else if (!after && fromFile) {
-            p = LearntPart{p.kind}; // a model file opened: what it lacks was never learnt for it
+            p = LearntPart::absent(p.kind); // a model file opened: what it lacks was never learnt for it
         } else if (!after && before) {
             p.state = why.isEmpty() ? PartState::Absent : PartState::Stale;
             p.staleBecause = why;

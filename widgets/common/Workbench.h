@@ -27,6 +27,12 @@ struct LearntPart {
     PartState state = PartState::Absent;
     QString learntOn;     ///< the data set's label, or "model file x.json"
     QString staleBecause; ///< the action that made it stale, worded for the user
+
+    static LearntPart absent(control::ControllerKind kind) {
+        LearntPart part;
+        part.kind = kind;
+        return part;
+    }
 };
 
 /// @brief The actions a button starts, for Workbench::isRunning() (a running action's button is
@@ -195,9 +201,9 @@ private:
     QString m_dataPath, m_modelPath, m_mappingPath;
     JobId m_calibrationJob = 0;
     std::map<Action, int> m_running; ///< queued or running jobs per action
-    std::array<LearntPart, 3> m_parts{LearntPart{control::ControllerKind::PgrlCc},
-                                      LearntPart{control::ControllerKind::ExtInputResidual},
-                                      LearntPart{control::ControllerKind::Lstm}};
+    std::array<LearntPart, 3> m_parts{LearntPart::absent(control::ControllerKind::PgrlCc),
+                                      LearntPart::absent(control::ControllerKind::ExtInputResidual),
+                                      LearntPart::absent(control::ControllerKind::Lstm)};
     AfterInvalidation m_invalidationPolicy = AfterInvalidation::Ask;
     std::optional<workflow::TrainOptions> m_lastTrainOptions;
     std::vector<DataSetEntry> m_dataSets;
