@@ -1,5 +1,6 @@
 #include "residual/ResidualModel.h"
 
+#include "common/Parallel.h"
 #include "common/Units.h"
 #include "diagnostics/Stability.h"
 #include "residual/OrthogonalProjection.h"
@@ -375,6 +376,10 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
         double aa = 0, ab = 0, bb = 0, at = 0, bt = 0;
     };
     std::vector<std::array<Normal, kOutputs>> normal(kShrinkGrid.size());
+    // For the absolute-error criterion every (a, b, t) is kept (floats: 12 bytes a row, horizon
+    // and output; 30 MB for the demo's training part).
+    std::vector<std::array<std::vector<std::array<float, 3>>, kOutputs>> samples(
+        options.correctionByAbsoluteError ? kShrinkGrid.size() : 0);
     for (const auto& [fit, validation] : folds) {
         auto first = trainOnce(fit, options);
         if (!first) {
@@ -409,6 +414,10 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
                         q.bb += b * b;
                         q.at += a * t;
                         q.bt += b * t;
+                        if (!samples.empty()) {
+                            samples[g][static_cast<std::size_t>(j)].push_back(
+                                {static_cast<float>(a), static_cast<float>(b), static_cast<float>(t)});
+                        }
                     }
                 }
             }
@@ -440,6 +449,40 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
         }
         return best;
     };
+    // The least-absolute-error (s, κ) in [0, 1]²: Σ|t − s a − κ b| is convex, so a grid of step
+    // 0.05 and a second of step 0.005 about its best cell find the minimum to within 0.005 (no
+    // library call: a boxed two-variable L1 fit is two loops).
+    const auto solveAbsolute = [](const std::vector<std::array<float, 3>>& rows) -> Eigen::Vector2d {
+        const auto sae = [&](double sv, double kv) {
+            double sum = 0;
+            for (const auto& r : rows) {
+                sum += std::abs(double(r[2]) - sv * double(r[0]) - kv * double(r[1]));
+            }
+            return sum;
+        };
+        Eigen::Vector2d best(0, 0);
+        double bestSae = sae(0, 0);
+        const auto scan = [&](const Eigen::Vector2d centre, double half, double step) { // a copy: best moves
+            for (double sv = centre(0) - half; sv <= centre(0) + half + 1e-9; sv += step) {
+                for (double kv = centre(1) - half; kv <= centre(1) + half + 1e-9; kv += step) {
+                    const double sc = std::clamp(sv, 0.0, 1.0), kc = std::clamp(kv, 0.0, 1.0);
+                    if (const double v = sae(sc, kc); v < bestSae) {
+                        bestSae = v;
+                        best = {sc, kc};
+                    }
+                }
+            }
+        };
+        scan({0.5, 0.5}, 0.5, 0.05);
+        scan(best, 0.05, 0.005);
+        return best;
+    };
+    std::vector<std::array<Eigen::Vector2d, kOutputs>> chosen(kShrinkGrid.size());
+    parallelFor(kShrinkGrid.size() * kOutputs, [&](std::size_t i) {
+        const std::size_t g = i / kOutputs, j = i % kOutputs;
+        chosen[g][j] =
+            samples.empty() || samples[g][j].empty() ? solve(normal[g][j]) : solveAbsolute(samples[g][j]);
+    });
     auto m = trainOnce(training, options);
     if (!m) {
         return m.error();
@@ -449,7 +492,7 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
     m->m_referenceByHorizon.assign(kShrinkGrid.size(), Eigen::Vector2d::Constant(m->m_referenceChange));
     for (std::size_t g = 0; g < kShrinkGrid.size(); ++g) {
         for (int j = 0; j < kOutputs; ++j) {
-            const Eigen::Vector2d sk = solve(normal[g][static_cast<std::size_t>(j)]);
+            const Eigen::Vector2d sk = chosen[g][static_cast<std::size_t>(j)];
             m->m_referenceByHorizon[g](j) = sk(0);
             m->m_shrink[g](j) = sk(1);
         }
@@ -1062,6 +1105,7 @@ std::string ResidualModel::toJson() const {
                     {"nest_references", o.nestReferences},
                     {"shrink_validation_fraction", o.shrinkValidationFraction},
                     {"correction_folds", o.correctionFolds},
+                    {"correction_criterion", o.correctionByAbsoluteError ? "absolute" : "squared"},
                     {"control_consistent_weights", o.controlConsistentWeights},
                     {"stability_constraint", o.stabilityConstraint},
                     {"stability_method",
@@ -1146,6 +1190,7 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
         o.nestReferences = jo.value("nest_references", false);
         o.shrinkValidationFraction = jo.value("shrink_validation_fraction", 0.0);
         o.correctionFolds = jo.value("correction_folds", 0);
+        o.correctionByAbsoluteError = jo.value("correction_criterion", std::string("squared")) == "absolute";
         o.controlConsistentWeights = jo.at("control_consistent_weights");
         o.stabilityConstraint = jo.at("stability_constraint");
         // Files written before Eq. (30) was solved as stated used the eigenvalue pull.

@@ -68,6 +68,10 @@ struct ResidualOptions {
     /// With 2 or more: s_H and κ_H from blocked cross-validation instead, each of this many
     /// contiguous blocks of every batch's training rows held out once (the fit on the others).
     int correctionFolds = 3;
+    /// true: (s_H, κ_H) minimise the held-out blocks' absolute error, the measure the forecasts are
+    /// judged by (MAE, skill) and one the transmitters' spikes and dropouts' edges do not dominate;
+    /// false: their squared error (least squares, the form of model files before 2026-11-24).
+    bool correctionByAbsoluteError = true;
     bool controlConsistentWeights = true; ///< ω of Eq. 29 (else W = I)
     bool stabilityConstraint = true;      ///< A with a certificate (Eq. 30)
     StabilityMethod stabilityMethod = StabilityMethod::Constrained;
