@@ -11,6 +11,7 @@
 
 #include <QtTest>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <random>
 
 using namespace drytwin;
@@ -525,6 +526,13 @@ private Q_SLOTS:
         }
         QVERIFY(!ResidualModel::fromJson("{\"options\": {}}").ok());
         QVERIFY(!ResidualModel::fromJson("not json").ok());
+        // The criterion of s_H and κ_H is kept; a file from before it existed was least squares.
+        QVERIFY(m->options().correctionByAbsoluteError && back->options().correctionByAbsoluteError);
+        auto older = nlohmann::json::parse(m->toJson());
+        older["options"].erase("correction_criterion");
+        auto old = ResidualModel::fromJson(older.dump());
+        QVERIFY2(old.ok(), old.ok() ? "" : old.error().message().c_str());
+        QVERIFY(!old->options().correctionByAbsoluteError);
     }
 
     void externalInputBaselineAndOptions() {
