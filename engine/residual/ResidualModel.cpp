@@ -450,9 +450,10 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
         }
         return best;
     };
-    // The least-absolute-error (s, κ) in [0, 1]²: Σ|t − s a − κ b| is convex, so a grid of step
-    // 0.05 and a second of step 0.005 about its best cell find the minimum to within 0.005 (no
-    // library call: a boxed two-variable L1 fit is two loops).
+    // The least-absolute-error (s, κ) in [0, 1]²: a grid of step 0.05, then one of step 0.005
+    // about its best point. Σ|t − s a − κ b| is convex, so the refined point is the minimum to
+    // within 0.005 unless its valley is long and narrow (a and b strongly correlated), where it is
+    // a point of nearly the same error (no library call: a boxed two-variable L1 fit is two loops).
     const auto solveAbsolute = [](const std::vector<std::array<float, 3>>& rows) -> Eigen::Vector2d {
         const auto sae = [&](double sv, double kv) {
             double sum = 0;
