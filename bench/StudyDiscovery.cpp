@@ -4,7 +4,7 @@
 // (or a look-alike group holding it) is named first, how often a cause is named that is not there,
 // and how close the onsets are, as Markdown tables.
 // Run: build/bench/study_discovery [--quick] [--plant distributed|lumped] [--sensors realistic|ideal|default]
-//      [--part mechanisms|nulls|onsets]
+//      [--part mechanisms|nulls|onsets] [--mechanism NAME (e.g. moisture_meter_lag)] [--verbose]
 // (lumped, its built-in sensors: about 8 min on 2 cores; --quick: one seed). The default plant is
 // the distributed one with realistic sensors (issue #22), whose nulls include its own structure.
 #include "discovery/Discovery.h"
@@ -13,6 +13,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -21,6 +22,16 @@
 using namespace drytwin;
 
 namespace {
+
+std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
+std::string format(const char* fmt, ...) {
+    char buffer[512];
+    va_list args;
+    va_start(args, fmt);
+    std::vsnprintf(buffer, sizeof buffer, fmt, args);
+    va_end(args);
+    return buffer;
+}
 
 struct Outcome {
     bool rightFirst = false; ///< the hidden cause first, alone or in its look-alike group
@@ -31,6 +42,8 @@ struct Outcome {
     bool hasOnset = false;
     double onsetS = 0;
 };
+
+bool verbose = false; ///< --verbose: each turned-down candidate's reason, not only its code
 
 Outcome run(plant::PlantOptions o, const std::string& hidden) {
     o.batches = 4;
@@ -70,12 +83,32 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
         out.hasOnset = f.hasOnset;
         out.onsetS = f.onsetS;
     }
+    if (verbose && !out.named.empty()) { // the look-alikes' numbers and what was turned down
+        for (const auto& f : r->findings) {
+            out.named += format(" [%s %.3g", f.cause.c_str(), f.value);
+            for (const auto& l : f.lookAlikes) {
+                out.named += format("; %s %.3g ratio %.3g p %.2g%s", l.cause.c_str(), l.value,
+                                    l.heldOutLossRatio, l.pValue, l.ruledOut ? " out" : "");
+                if (l.byChannels) {
+                    out.named +=
+                        format(" (channels: X %.3g s, T %.3g s)", l.moistureDelayS, l.temperatureDelayS);
+                }
+            }
+            out.named += "]";
+        }
+        for (const auto& rd : r->rounds) {
+            for (const auto& x : rd.rejected) {
+                out.named += " {" + x.cause + ": " + x.code + ": " + x.reason + "}";
+            }
+        }
+    }
     if (out.named.empty()) {
         // Why nothing was named: each candidate that was tried and turned down, with its reason.
         std::string why;
         for (const auto& rd : r->rounds) {
             for (const auto& x : rd.rejected) {
-                why += (why.empty() ? "; " : ", ") + x.cause + ": " + x.code;
+                why += (why.empty() ? "; " : ", ") + x.cause + ": " + x.code +
+                       (verbose ? " [" + x.reason + "]" : "");
             }
         }
         out.named = "(" + r->verdict + why + ")";
@@ -88,6 +121,7 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
 int main(int argc, char** argv) {
     bool quick = false;
     std::string part = "all";
+    std::string only; ///< one mechanism's runs alone (mechanisms and onsets), for a quick look
     plant::PlantKind kind = plant::PlantKind::Distributed;
     plant::SensorMode sensors = plant::SensorMode::Default;
     for (int i = 1; i < argc; ++i) {
@@ -106,9 +140,15 @@ int main(int argc, char** argv) {
         } else if (a == "--part" && (next == "mechanisms" || next == "nulls" || next == "onsets")) {
             part = next;
             ++i;
+        } else if (a == "--verbose") {
+            verbose = true;
+        } else if (a == "--mechanism" && !next.empty()) {
+            only = next;
+            ++i;
         } else {
             std::fprintf(stderr, "usage: study_discovery [--quick] [--plant distributed|lumped] "
-                                 "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets]\n");
+                                 "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
+                                 "[--mechanism NAME] [--verbose]\n");
             return 2;
         }
     }
@@ -144,6 +184,9 @@ int main(int argc, char** argv) {
             "| mechanism | strength | seed | named | right first | s |\n| --- | --- | --- | --- | --- | --- "
             "|\n");
         for (const auto& [m, strength, other] : cases) {
+            if (!only.empty() && only != plant::info(m).name) {
+                continue;
+            }
             for (double scale : {1.0, other}) {
                 for (int s = 0; s < nSeeds; ++s) {
                     plant::PlantOptions o = options();
@@ -194,6 +237,9 @@ int main(int argc, char** argv) {
             {plant::Mechanism::HotAirSensorLag, 60},
             {plant::Mechanism::InletMoistureSensorOffset, 1.0}};
         for (const auto& [m, strength] : onsetCases) {
+            if (!only.empty() && only != plant::info(m).name) {
+                continue;
+            }
             for (int s = 0; s < nSeeds; ++s) {
                 plant::PlantOptions o = options();
                 o.seed = seeds[s] + 100;

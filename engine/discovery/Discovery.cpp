@@ -76,12 +76,13 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             nuisance.push_back(m); // extensions the model already holds stay free
         }
     }
-    auto refit = [&](const ParameterSet& start, const std::vector<Param>& free,
-                     bool global) -> Expected<calibration::CalibrationResult> {
+    auto refit = [&](const ParameterSet& start, const std::vector<Param>& free, bool global,
+                     const calibration::LossWeights* weights =
+                         nullptr) -> Expected<calibration::CalibrationResult> {
         calibration::CalibrationOptions co;
         co.freeParameters = free;
         co.rows = pr.subsetRefs;
-        co.weights = options.weights;
+        co.weights = weights ? *weights : options.weights;
         co.maxEvaluations = options.maxEvaluationsPerFit * (global ? 2 : 1);
         co.globalSearch = global;
         co.intervals = false;
@@ -202,6 +203,52 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             fits[c.parameter] = Fit{fit->parameters, fit->after.loss, {}};
             return {};
         };
+        // A fitted cause, refitted from its onset where it has one. One onset for the model
+        // (t_onset): searched while no cause has one yet; a transport time acts from the start.
+        const auto fittedFromOnset = [&](const Candidate& cand) -> Expected<Fit> {
+            Fit fit = fits[cand.parameter];
+            if (!options.searchOnset || current[Param::t_onset] != 0 || cand.parameter == Param::dtau_conv) {
+                return fit;
+            }
+            fit.onset = findOnset(*st, nuisanceCols, columnOf(cand.parameter));
+            if (fit.onset.found) { // refit where it acts
+                Candidate again = cand;
+                if (stop(frac0 + 0.2, "fitting " + cand.cause + " from its onset")) {
+                    return cancelledError("discover");
+                }
+                if (auto fs = fitCause(again, fit.onset.s); fs) {
+                    fit.parameters = fits[cand.parameter].parameters;
+                    fit.loss = fits[cand.parameter].loss;
+                } else if (fs.error().kind == ErrorKind::Cancelled) {
+                    return fs.error();
+                }
+            }
+            return fit;
+        };
+        // The channel test of a meter lag against a transport time: the delay each outlet
+        // channel asks for alone (dtau_conv fitted to it, everything else as it stands).
+        const auto timingOfChannels = [&]() -> Expected<ChannelTiming> {
+            double delay[2] = {0, 0};
+            std::optional<HeldOut> held[2];
+            for (int c = 0; c < 2; ++c) {
+                calibration::LossWeights alone{0, 0, 0, 0};
+                (c == 0 ? alone.xOut : alone.tOut) = c == 0 ? options.weights.xOut : options.weights.tOut;
+                ParameterSet start = current;
+                start[Param::dtau_conv] =
+                    fits.count(Param::dtau_conv) ? fits[Param::dtau_conv].parameters[Param::dtau_conv] : 0.0;
+                auto one = refit(start, {Param::dtau_conv}, false, &alone);
+                if (!one) {
+                    return one.error();
+                }
+                delay[c] = one->parameters[Param::dtau_conv];
+                auto h = heldOut(pr, one->parameters);
+                if (!h) {
+                    return h.error();
+                }
+                held[c] = std::move(*h);
+            }
+            return channelTiming(pr, delay[0], delay[1], *held[0], *held[1]);
+        };
         int fitted = 0;
         for (std::size_t i = 0; i < cands.size() && fitted < options.candidatesToFit; ++i) {
             if (cands[i].pValue >= options.screenAlpha) {
@@ -254,105 +301,34 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             if (record.best.empty()) {
                 record.best = cand.cause;
             }
-            Fit fit = fits[cand.parameter];
-            const int col = columnOf(cand.parameter);
-            // One onset for the model (t_onset): searched while no cause has one yet.
-            if (options.searchOnset && current[Param::t_onset] == 0 && cand.parameter != Param::dtau_conv) {
-                fit.onset = findOnset(*st, nuisanceCols, col);
-                if (fit.onset.found) { // refit where it acts
-                    Candidate again = cand;
-                    if (stop(frac0 + 0.2, "fitting " + cand.cause + " from its onset")) {
-                        return cancelledError("discover");
-                    }
-                    if (auto fs = fitCause(again, fit.onset.s); fs) {
-                        fit.parameters = fits[cand.parameter].parameters;
-                        fit.loss = fits[cand.parameter].loss;
-                    } else if (fs.error().kind == ErrorKind::Cancelled) {
-                        return fs.error();
-                    }
-                }
+            auto withOnset = fittedFromOnset(cand);
+            if (!withOnset) {
+                return withOnset.error();
             }
-            auto afterHeld = heldOut(pr, fit.parameters);
-            if (!afterHeld) {
-                return afterHeld.error();
+            const Fit& fit = *withOnset;
+            auto conf = confirmCandidate({pr, cand, fit.parameters, fit.onset, options.gainAlpha / tried,
+                                          prepared->meanBatchHours, *currentHeld, *st, nuisanceCols,
+                                          columnOf(cand.parameter), nuisance, currentSims});
+            if (!conf) {
+                return conf.error();
             }
-            Gain gain = gainOf(*currentHeld, *afterHeld);
-            const auto [explained, explainedFast] = explainedShares(*currentHeld, *afterHeld, options);
             if (tried == 1) {
-                record.heldOutPValue = gain.pValue;
-                record.explainedFraction = explained;
-                record.explainedFractionFast = explainedFast;
+                record.heldOutPValue = conf->pValue;
+                record.explainedFraction = conf->explained;
+                record.explainedFractionFast = conf->explainedFast;
             }
-            const double level = options.gainAlpha / tried;
-            if (!(gain.pValue < level &&
-                  std::max(explained, explainedFast) >= options.minExplainedFraction)) {
-                // It fits the training part but does not predict clearly better: not a cause.
-                const std::string why =
-                    gain.pValue >= level
-                        ? format("held-out gain not significant (p = %.2g, needs < %.2g)", gain.pValue, level)
-                        : format("removes only %.0f %% of the held-out error left and %.0f %% of its fast "
-                                 "part (needs %.0f %% of either)",
-                                 100 * explained, 100 * explainedFast, 100 * options.minExplainedFraction);
+            if (!conf->finding) {
                 if (tried == 1) {
-                    record.reason = why;
+                    record.reason = conf->why;
                 }
-                record.rejected.push_back({cand.cause, "no_held_out_gain", why});
+                record.rejected.push_back({cand.cause, conf->code, conf->why});
                 continue;
             }
-            // Specificity: it predicts better; is it this cause?
-            std::vector<Param> sensAt = nuisance;
-            sensAt.push_back(cand.parameter);
-            auto at = stackAt(pr, fit.parameters, sensAt);
-            if (!at) {
-                return at.error();
-            }
-            const int atCol = static_cast<int>(nuisance.size());
-            const double value = fit.parameters[cand.parameter];
-            auto judged =
-                judgeSpecificity({pr, cand.parameter, value, prepared->meanBatchHours, *currentHeld,
-                                  *afterHeld, fit.parameters, *at, *st, nuisanceCols, atCol, currentSims});
-            if (!judged) {
-                return judged.error();
-            }
-            const std::string& code = judged->code;
-            const std::string& why = judged->why;
-            const Consistency& consistency = judged->consistency;
-            const Transfer& transfer = judged->transfer;
-            if (!code.empty()) {
-                record.rejected.push_back({cand.cause, code, why});
-                if (tried == 1) {
-                    record.reason = why;
-                }
-                continue;
-            }
-            // Named. Its interval: the sandwich (HAC) standard error at the fit.
-            double se = cand.linearSe;
-            if (const auto sc = scoreTest(*at, nuisanceCols, atCol); sc.se > 0) {
-                se = sc.se;
-            }
-            Finding f;
-            f.cause = cand.cause;
-            f.parameter = cand.parameter;
-            f.value = value;
-            f.ci95Low = value - 1.96 * se;
-            f.ci95High = value + 1.96 * se;
-            f.explainedFraction = explained;
-            f.explainedFractionFast = explainedFast;
-            f.fastPartCounted = explained < options.minExplainedFraction;
-            f.gain = gain;
-            f.perPart = consistency.parts;
-            f.consistent = consistency.consistent;
-            f.transferChecked = transfer.checked;
-            f.transferReduction = transfer.reduction;
-            f.hasOnset = fit.onset.found;
-            f.onsetS = fit.onset.s;
-            f.onsetLowS = fit.onset.lowS;
-            f.onsetHighS = fit.onset.highS;
             record.best = cand.cause;
-            named = f;
+            named = std::move(conf->finding);
             namedParams = fit.parameters;
             namedLoss = fit.loss;
-            namedHeld = std::move(*afterHeld);
+            namedHeld = std::move(conf->held);
         }
         if (!named) {
             if (record.reason.empty()) {
@@ -362,8 +338,83 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             result.rounds.push_back(record);
             break;
         }
+        // The outlet response time: a meter lag delays the moisture reading alone, a transport
+        // time both outlet channels. A line that is not the model answers later than it in the
+        // temperature too (the product's heat capacity, the pyrometer); a transport time then
+        // takes a meter's lag with that and wins any comparison in its place. The delay each
+        // channel asks for alone tells: the moisture later than the temperature is a meter's;
+        // alike is a transport time's; the temperature later (or apart without the held-out
+        // part confirming which is later) leaves both possible: a group.
+        std::optional<ChannelTiming> timing;
+        const auto isRemaining = [&](Param p) {
+            return std::find(remaining.begin(), remaining.end(), p) != remaining.end();
+        };
+        if ((named->parameter == Param::tau_meter || named->parameter == Param::dtau_conv) &&
+            isRemaining(Param::tau_meter) && isRemaining(Param::dtau_conv)) {
+            if (stop(frac0 + 0.25, "the delay of each outlet channel")) {
+                return cancelledError("discover");
+            }
+            auto t = timingOfChannels();
+            if (!t) {
+                if (t.error().kind == ErrorKind::Cancelled) {
+                    return t.error();
+                }
+            } else if (t->pattern != "alike") {
+                timing = *t;
+            }
+        }
+        if (timing && timing->pattern == "moisture_later" && named->parameter == Param::dtau_conv) {
+            // Only a meter lag makes the moisture later than the temperature: confirm it alone.
+            auto meterCand = std::find_if(cands.begin(), cands.end(),
+                                          [&](const auto& c) { return c.parameter == Param::tau_meter; });
+            bool confirmed = false;
+            if (!fits.count(Param::tau_meter)) {
+                if (stop(frac0 + 0.25, "fitting " + meterCand->cause)) {
+                    return cancelledError("discover");
+                }
+                if (auto fs = fitCause(*meterCand, current[Param::t_onset]);
+                    !fs && fs.error().kind == ErrorKind::Cancelled) {
+                    return fs.error();
+                }
+            }
+            if (fits.count(Param::tau_meter)) {
+                ++tried;
+                auto withOnset = fittedFromOnset(*meterCand);
+                if (!withOnset) {
+                    return withOnset.error();
+                }
+                auto conf =
+                    confirmCandidate({pr, *meterCand, withOnset->parameters, withOnset->onset,
+                                      options.gainAlpha / tried, prepared->meanBatchHours, *currentHeld, *st,
+                                      nuisanceCols, columnOf(Param::tau_meter), nuisance, currentSims});
+                if (!conf) {
+                    return conf.error();
+                }
+                if (conf->finding) {
+                    record.rejected.push_back(
+                        {named->cause, "channels",
+                         format("the moisture answers %.3g s later than the model and the outlet temperature "
+                                "%.3g s (p = %.2g): a transport time delays both alike",
+                                timing->moistureDelayS, timing->temperatureDelayS, timing->pValue)});
+                    named = std::move(conf->finding);
+                    namedParams = withOnset->parameters;
+                    namedLoss = withOnset->loss;
+                    namedHeld = std::move(conf->held);
+                    record.best = meterCand->cause;
+                    confirmed = true;
+                } else {
+                    record.rejected.push_back({meterCand->cause, conf->code, conf->why});
+                }
+            }
+            if (!confirmed) {
+                // Not a transport time, yet the lag alone does not predict clearly better: the
+                // moisture channel's response time, either of the two.
+                timing->pattern = "undecided";
+            }
+        }
         Finding& f = *named;
-        // Look-alikes: fitted in its place and judged on the same held-out part.
+        // Look-alikes: fitted in its place and judged on the same held-out part; a meter lag and
+        // a transport time by the outlet channels' timing where it tells (above).
         if (const LookAlikeGroup* group = lookAlikeGroupOf(f.parameter)) {
             for (Param other : group->members) {
                 if (other == f.parameter ||
@@ -388,6 +439,14 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                 auto l = compareLookAlike(pr, other, fits[other].parameters, *namedHeld, options);
                 if (!l) {
                     return l.error();
+                }
+                if (timing) {
+                    l->byChannels = true;
+                    l->moistureDelayS = timing->moistureDelayS;
+                    l->temperatureDelayS = timing->temperatureDelayS;
+                    l->pValue = timing->pValue;
+                    // The moisture later: not a transport time. Otherwise either: a group.
+                    l->ruledOut = timing->pattern == "moisture_later";
                 }
                 if (!l->ruledOut) {
                     f.group = group->name;

@@ -162,6 +162,13 @@ struct LookAlike {
     double heldOutLossRatio = 1; ///< its held-out weighted squared error over the named cause's
     double pValue = 1;           ///< one-sided Diebold-Mariano that the named cause predicts better
     bool ruledOut = false;       ///< pValue below DiscoveryOptions::gainAlpha
+    /// Judged by the outlet channels' timing instead (a meter lag against a transport time): the
+    /// delay the moisture and the temperature each ask for alone; pValue is then the one-sided
+    /// held-out p that the later channel is later. Ruled out when the moisture is later (only a
+    /// meter lag does that); not when the temperature is (the line's own thermal dynamics can
+    /// delay it, so either cause fits) or the held-out part does not confirm which is later.
+    bool byChannels = false;
+    double moistureDelayS = 0, temperatureDelayS = 0;
 };
 
 /// @brief A named cause with its fitted parameter, evidence and gain.
@@ -220,8 +227,9 @@ struct Round {
     double explainedFractionFast = 0;  ///< of its fast part (DiscoveryOptions::fastBandWindowS)
     bool named = false;
     std::string reason; ///< why it stopped here, when not named
-    /// Candidates that passed the held-out test but were not specific, and why ("compensation",
-    /// "inconsistent", "below_floor", "line_dynamics"), with the sentence that explains it.
+    /// Candidates that were tried and not named, and why ("no_held_out_gain", "compensation",
+    /// "inconsistent", "below_floor", "line_dynamics", or "channels": a transport time where the
+    /// moisture answers later than the temperature), with the sentence that explains it.
     struct Rejection {
         std::string cause, code, reason;
     };

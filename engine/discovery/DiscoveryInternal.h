@@ -214,6 +214,45 @@ Expected<std::optional<Finding>> inletScatterFinding(const Problem& pr, const Pa
                                                      const std::vector<OutputResidual>& residuals,
                                                      const DiscoveryOptions& options);
 
+/// A fitted candidate judged on the held-out part and for specificity (Confirmation.cpp).
+struct ConfirmationInput {
+    const Problem& pr;
+    const Candidate& cand;
+    const ParameterSet& fitParameters; ///< the candidate's fit (nuisance and the cause free)
+    Onset onset;                       ///< where it was fitted from its onset
+    double level;                      ///< the held-out test's level for this candidate
+    double meanBatchHours;
+    const HeldOut& currentHeld;                                ///< the model without it
+    const Stack& roundStack;                                   ///< the round's stack at that model
+    const std::vector<int>& nuisanceCols;                      ///< its nuisance columns
+    int roundCol;                                              ///< the candidate's column in it
+    const std::vector<Param>& nuisance;                        ///< the nuisance parameters
+    const std::vector<physics::SimulationResult>& currentSims; ///< the model without it, every row
+};
+struct Confirmation {
+    std::optional<Finding> finding; ///< set when it is named
+    std::optional<HeldOut> held;    ///< the fit's held-out errors
+    std::string code, why;          ///< when not named: "no_held_out_gain" or a specificity code
+    double pValue = 1, explained = 0, explainedFast = 0;
+};
+Expected<Confirmation> confirmCandidate(const ConfirmationInput& in);
+/// The channel test of the outlet response time. A transport time delays both outlet channels
+/// alike, a meter lag the moisture reading alone, and the line's own thermal dynamics (the
+/// product's heat capacity, a pyrometer's response) can only make the temperature later. The
+/// delay each channel asks for alone (dtau_conv fitted to it), and which channel is later.
+struct ChannelTiming {
+    double moistureDelayS = 0, temperatureDelayS = 0;
+    /// One-sided held-out p that the later channel is better predicted at its own delay than at
+    /// the other channel's.
+    double pValue = 1;
+    /// "moisture_later": only a meter lag does that; "alike" (within a transport time's floor):
+    /// what a transport time does; "temperature_later": the temperature has dynamics of its own,
+    /// so its timing cannot tell a transport time from a meter lag; "undecided": apart, but the
+    /// held-out part does not confirm which channel is later.
+    std::string pattern = "alike";
+};
+ChannelTiming channelTiming(const Problem& pr, double moistureDelayS, double temperatureDelayS,
+                            const HeldOut& atMoistureDelay, const HeldOut& atTemperatureDelay);
 /// A look-alike @p other fitted in the named cause's place (@p fitted), judged on the same held-out
 /// part: its loss ratio and the one-sided DM p that the named cause predicts better.
 Expected<LookAlike> compareLookAlike(const Problem& pr, Param other, const ParameterSet& fitted,

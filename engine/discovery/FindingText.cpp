@@ -116,6 +116,21 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
                        f.onsetLowS / 60, f.onsetHighS / 60);
     }
     for (const auto& l : f.lookAlikes) {
+        if (l.byChannels) {
+            // The outlet channels' timing told (or showed that it cannot tell).
+            text +=
+                l.ruledOut
+                    ? format(" Not %s: the moisture answers %.3g s later than the model and the outlet "
+                             "temperature %.3g s (each fitted alone, p = %.2g); a transport time delays "
+                             "both alike.",
+                             l.cause.c_str(), l.moistureDelayS, l.temperatureDelayS, l.pValue)
+                    : format(" %s fits too: the moisture answers %.3g s later than the model and the outlet "
+                             "temperature %.3g s (each fitted alone, p = %.2g); the channels' timing cannot "
+                             "tell them apart (the temperature has dynamics of its own, or the difference is "
+                             "within the noise).",
+                             l.cause.c_str(), l.moistureDelayS, l.temperatureDelayS, l.pValue);
+            continue;
+        }
         text +=
             l.ruledOut
                 ? format(" Not %s: fitted in its place it leaves %.2g times the held-out error (p = %.2g).",

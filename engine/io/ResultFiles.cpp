@@ -346,7 +346,10 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                                           {"value", num(l.value)},
                                           {"held_out_loss_ratio", num(l.heldOutLossRatio)},
                                           {"p_value", num(l.pValue)},
-                                          {"ruled_out", l.ruledOut}});
+                                          {"ruled_out", l.ruledOut},
+                                          {"by_channels", l.byChannels},
+                                          {"moisture_delay_s", num(l.moistureDelayS)},
+                                          {"temperature_delay_s", num(l.temperatureDelayS)}});
         }
         if (!f.tellApart.empty()) {
             out["tell_apart"] = f.tellApart;

@@ -166,6 +166,11 @@ QString rejectionText(const std::string& code) {
         return DiscoverPanel::tr("it does not predict the held-out part clearly better (too small a share of "
                                  "the error, or not significant)");
     }
+    if (code == "channels") {
+        return DiscoverPanel::tr(
+            "the outlet channels' timing points to its look-alike (the moisture answers later "
+            "than the temperature: a meter, not the transport)");
+    }
     if (code == "line_dynamics") {
         return DiscoverPanel::tr("the outlet temperature lags the model as much: the line is slower than the "
                                  "model, not the meter");
@@ -289,6 +294,26 @@ QString DiscoverPanel::specificityText(const discovery::Finding& f) {
                      .arg(f.onsetHighS / 60, 0, 'f', 0);
     }
     for (const auto& l : f.lookAlikes) {
+        if (l.byChannels) {
+            parts
+                << (l.ruledOut
+                        ? tr("Not %1: the moisture answers %2 s later than the model and the outlet "
+                             "temperature "
+                             "%3 s (each fitted alone, p = %4); a transport time delays both alike.")
+                              .arg(causeDisplayName(l.cause))
+                              .arg(l.moistureDelayS, 0, 'g', 3)
+                              .arg(l.temperatureDelayS, 0, 'g', 3)
+                        : tr("%1 fits too: the moisture answers %2 s later than the model and the outlet "
+                             "temperature %3 s (each fitted alone, p = %4); the channels' timing cannot tell "
+                             "them apart (the temperature has dynamics of its own, or the difference is "
+                             "within "
+                             "the noise).")
+                              .arg(causeDisplayName(l.cause))
+                              .arg(l.moistureDelayS, 0, 'g', 3)
+                              .arg(l.temperatureDelayS, 0, 'g', 3))
+                       .arg(l.pValue, 0, 'g', 2);
+            continue;
+        }
         parts << (l.ruledOut
                       ? tr("Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).")
                       : tr("%1 fits these data about as well (held-out error %2 times, p = %3): the data "

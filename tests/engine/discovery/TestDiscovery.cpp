@@ -270,6 +270,49 @@ private Q_SLOTS:
         QVERIFY(f.cause == "moisture_meter_offset" || !other.ruledOut);
     }
 
+    void outletChannelsTellMeterLagFromTransportTime_data() {
+        QTest::addColumn<int>("mechanism");
+        QTest::addColumn<double>("strength");
+        QTest::newRow("moisture_meter_lag") << int(Mechanism::MoistureMeterLag) << 30.0;
+        QTest::newRow("transport_delay_error") << int(Mechanism::TransportDelayError) << 15.0;
+    }
+    void outletChannelsTellMeterLagFromTransportTime() {
+        // The distributed line answers later than the model in the outlet temperature even with
+        // nothing hidden (its product's heat capacity, the pyrometer), so a transport time fitted
+        // in a meter lag's place also fixes that and wins any comparison in its place. The delay
+        // each outlet channel asks for alone decides: the moisture later than the temperature is
+        // a meter's; otherwise the finding names the group, never the wrong cause alone.
+        QFETCH(int, mechanism);
+        QFETCH(double, strength);
+        plant::PlantOptions o;
+        o.plant = plant::PlantKind::Distributed;
+        o.effects[static_cast<Mechanism>(mechanism)] = strength;
+        const auto r = discoverIn(o);
+        const std::string hidden(plant::info(static_cast<Mechanism>(mechanism)).name);
+        QVERIFY2(!r.findings.empty(), qPrintable(names(r)));
+        const auto& f = r.findings.front();
+        const auto other = std::find_if(f.lookAlikes.begin(), f.lookAlikes.end(), [](const auto& l) {
+            return l.cause == "moisture_meter_lag" || l.cause == "transport_delay_error";
+        });
+        QVERIFY2(other != f.lookAlikes.end(), qPrintable(names(r)));
+        qInfo("%s first; %s: channels %d, moisture %.1f s, temperature %.1f s, p %.2g, ruled out %d",
+              f.cause.c_str(), other->cause.c_str(), other->byChannels, other->moistureDelayS,
+              other->temperatureDelayS, other->pValue, other->ruledOut);
+        // The hidden cause is named, alone or in the group with its look-alike.
+        QVERIFY2(f.cause == hidden || (!other->ruledOut && other->cause == hidden), qPrintable(names(r)));
+        if (!other->ruledOut) {
+            QCOMPARE(f.group, std::string("outlet_response_time"));
+            QVERIFY(f.evidence.find("To tell them apart") != std::string::npos);
+        }
+        if (other->byChannels) {
+            // The channels' delays are the ones that decided, and the evidence gives them.
+            QVERIFY(other->moistureDelayS > 0 && other->temperatureDelayS > 0);
+            QCOMPARE(other->ruledOut,
+                     f.cause == "moisture_meter_lag" && other->moistureDelayS > other->temperatureDelayS);
+            QVERIFY2(f.evidence.find("fitted alone") != std::string::npos, f.evidence.c_str());
+        }
+    }
+
     void distributedDriftNamesNothingAndSaysWhy() {
         // The distributed plant under unmeasured drift: the candidates that fit the training part
         // are tried, and each is turned down with its reason; none is named.

@@ -1,0 +1,102 @@
+// Question 3, its confirmatory half: a candidate that fits the training part is named only when
+// it predicts clearly better on the held-out part and is specific; and where a meter lag and a
+// transport-time error compete, the outlet channels tell them apart.
+#include "discovery/DiscoveryInternal.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace drytwin::discovery::detail {
+
+Expected<Confirmation> confirmCandidate(const ConfirmationInput& in) {
+    const auto& options = in.pr.options;
+    Confirmation out;
+    auto afterHeld = heldOut(in.pr, in.fitParameters);
+    if (!afterHeld) {
+        return afterHeld.error();
+    }
+    const Gain gain = gainOf(in.currentHeld, *afterHeld);
+    const auto [explained, explainedFast] = explainedShares(in.currentHeld, *afterHeld, options);
+    out.pValue = gain.pValue;
+    out.explained = explained;
+    out.explainedFast = explainedFast;
+    if (!(gain.pValue < in.level && std::max(explained, explainedFast) >= options.minExplainedFraction)) {
+        // It fits the training part but does not predict clearly better: not a cause.
+        out.code = "no_held_out_gain";
+        out.why =
+            gain.pValue >= in.level
+                ? format("held-out gain not significant (p = %.2g, needs < %.2g)", gain.pValue, in.level)
+                : format("removes only %.0f %% of the held-out error left and %.0f %% of its fast "
+                         "part (needs %.0f %% of either)",
+                         100 * explained, 100 * explainedFast, 100 * options.minExplainedFraction);
+        out.held = std::move(*afterHeld);
+        return out;
+    }
+    // Specificity: it predicts better; is it this cause?
+    std::vector<Param> sensAt = in.nuisance;
+    sensAt.push_back(in.cand.parameter);
+    auto at = stackAt(in.pr, in.fitParameters, sensAt);
+    if (!at) {
+        return at.error();
+    }
+    const int atCol = static_cast<int>(in.nuisance.size());
+    const double value = in.fitParameters[in.cand.parameter];
+    auto judged =
+        judgeSpecificity({in.pr, in.cand.parameter, value, in.meanBatchHours, in.currentHeld, *afterHeld,
+                          in.fitParameters, *at, in.roundStack, in.nuisanceCols, atCol, in.currentSims});
+    if (!judged) {
+        return judged.error();
+    }
+    if (!judged->code.empty()) {
+        out.code = judged->code;
+        out.why = judged->why;
+        out.held = std::move(*afterHeld);
+        return out;
+    }
+    // Named. Its interval: the sandwich (HAC) standard error at the fit.
+    double se = in.cand.linearSe;
+    if (const auto sc = scoreTest(*at, in.nuisanceCols, atCol); sc.se > 0) {
+        se = sc.se;
+    }
+    Finding f;
+    f.cause = in.cand.cause;
+    f.parameter = in.cand.parameter;
+    f.value = value;
+    f.ci95Low = value - 1.96 * se;
+    f.ci95High = value + 1.96 * se;
+    f.explainedFraction = explained;
+    f.explainedFractionFast = explainedFast;
+    f.fastPartCounted = explained < options.minExplainedFraction;
+    f.gain = gain;
+    f.perPart = judged->consistency.parts;
+    f.consistent = judged->consistency.consistent;
+    f.transferChecked = judged->transfer.checked;
+    f.transferReduction = judged->transfer.reduction;
+    f.hasOnset = in.onset.found;
+    f.onsetS = in.onset.s;
+    f.onsetLowS = in.onset.lowS;
+    f.onsetHighS = in.onset.highS;
+    out.finding = std::move(f);
+    out.held = std::move(*afterHeld);
+    return out;
+}
+
+ChannelTiming channelTiming(const Problem& pr, double moistureDelayS, double temperatureDelayS,
+                            const HeldOut& atMoistureDelay, const HeldOut& atTemperatureDelay) {
+    ChannelTiming out;
+    out.moistureDelayS = moistureDelayS;
+    out.temperatureDelayS = temperatureDelayS;
+    // Apart by more than a transport time's own floor, and the later channel predicted better on
+    // the held-out part at its own delay than at the other's.
+    const double apart = std::max(2 * pr.samplingStepS, pr.options.floors.transportTimeS);
+    if (moistureDelayS - temperatureDelayS >= apart) {
+        out.pValue = channelChanges(atMoistureDelay, atTemperatureDelay)[kXOut].pWorse;
+        out.pattern = out.pValue < pr.options.gainAlpha ? "moisture_later" : "undecided";
+    } else if (temperatureDelayS - moistureDelayS >= apart) {
+        out.pValue = channelChanges(atTemperatureDelay, atMoistureDelay)[kTOut].pWorse;
+        out.pattern = out.pValue < pr.options.gainAlpha ? "temperature_later" : "undecided";
+    }
+    return out;
+}
+
+} // namespace drytwin::discovery::detail
