@@ -99,4 +99,65 @@ ChannelTiming channelTiming(const Problem& pr, double moistureDelayS, double tem
     return out;
 }
 
+Expected<ChannelTiming> timeOutletChannels(const Problem& pr, const ParameterSet& current, double startDelayS,
+                                           const DelayFit& fitDelay) {
+    double delay[2] = {0, 0};
+    std::optional<HeldOut> held[2];
+    for (int c = 0; c < 2; ++c) {
+        calibration::LossWeights alone{0, 0, 0, 0};
+        (c == 0 ? alone.xOut : alone.tOut) = c == 0 ? pr.options.weights.xOut : pr.options.weights.tOut;
+        ParameterSet start = current;
+        start[Param::dtau_conv] = startDelayS;
+        auto one = fitDelay(start, alone);
+        if (!one) {
+            return one.error();
+        }
+        delay[c] = one->parameters[Param::dtau_conv];
+        auto h = heldOut(pr, one->parameters);
+        if (!h) {
+            return h.error();
+        }
+        held[c] = std::move(*h);
+    }
+    return channelTiming(pr, delay[0], delay[1], *held[0], *held[1]);
+}
+
+void restateAtExtendedModel(const Problem& pr, const ParameterSet& extended,
+                            const std::vector<Param>& nuisance, std::vector<Finding>& findings) {
+    auto at = stackAt(pr, extended, nuisance);
+    if (!at) {
+        return; // the intervals of the rounds stand
+    }
+    for (auto& f : findings) {
+        const auto col =
+            static_cast<int>(std::find(nuisance.begin(), nuisance.end(), f.parameter) - nuisance.begin());
+        std::vector<int> others;
+        for (int i = 0; i < static_cast<int>(nuisance.size()); ++i) {
+            if (i != col) {
+                others.push_back(i);
+            }
+        }
+        const auto sc = scoreTest(*at, others, col);
+        f.value = extended[f.parameter];
+        const double se = sc.se > 0 ? sc.se : 0.5 * (f.ci95High - f.ci95Low) / 1.96;
+        f.ci95Low = f.value - 1.96 * se;
+        f.ci95High = f.value + 1.96 * se;
+    }
+}
+
+std::vector<Bound> boundsOf(const std::vector<Candidate>& tested) {
+    std::vector<Bound> out;
+    for (const auto& c : tested) {
+        const auto& info = properties::info(c.parameter);
+        Bound b;
+        b.cause = c.cause;
+        b.parameter = c.parameter;
+        b.estimate = c.linearEstimate;
+        b.ci95Low = std::clamp(c.linearEstimate - 1.96 * c.linearSe, info.lower, info.upper);
+        b.ci95High = std::clamp(c.linearEstimate + 1.96 * c.linearSe, info.lower, info.upper);
+        out.push_back(b);
+    }
+    return out;
+}
+
 } // namespace drytwin::discovery::detail

@@ -225,30 +225,6 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             }
             return fit;
         };
-        // The channel test of a meter lag against a transport time: the delay each outlet
-        // channel asks for alone (dtau_conv fitted to it, everything else as it stands).
-        const auto timingOfChannels = [&]() -> Expected<ChannelTiming> {
-            double delay[2] = {0, 0};
-            std::optional<HeldOut> held[2];
-            for (int c = 0; c < 2; ++c) {
-                calibration::LossWeights alone{0, 0, 0, 0};
-                (c == 0 ? alone.xOut : alone.tOut) = c == 0 ? options.weights.xOut : options.weights.tOut;
-                ParameterSet start = current;
-                start[Param::dtau_conv] =
-                    fits.count(Param::dtau_conv) ? fits[Param::dtau_conv].parameters[Param::dtau_conv] : 0.0;
-                auto one = refit(start, {Param::dtau_conv}, false, &alone);
-                if (!one) {
-                    return one.error();
-                }
-                delay[c] = one->parameters[Param::dtau_conv];
-                auto h = heldOut(pr, one->parameters);
-                if (!h) {
-                    return h.error();
-                }
-                held[c] = std::move(*h);
-            }
-            return channelTiming(pr, delay[0], delay[1], *held[0], *held[1]);
-        };
         int fitted = 0;
         for (std::size_t i = 0; i < cands.size() && fitted < options.candidatesToFit; ++i) {
             if (cands[i].pValue >= options.screenAlpha) {
@@ -354,7 +330,12 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             if (stop(frac0 + 0.25, "the delay of each outlet channel")) {
                 return cancelledError("discover");
             }
-            auto t = timingOfChannels();
+            auto t = timeOutletChannels(
+                pr, current,
+                fits.count(Param::dtau_conv) ? fits[Param::dtau_conv].parameters[Param::dtau_conv] : 0.0,
+                [&](const ParameterSet& start, const calibration::LossWeights& weights) {
+                    return refit(start, {Param::dtau_conv}, false, &weights);
+                });
             if (!t) {
                 if (t.error().kind == ErrorKind::Cancelled) {
                     return t.error();
@@ -457,20 +438,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
         }
         record.named = true;
         result.rounds.push_back(record);
-        // The output it helps most, and what its residual looked like before.
-        const auto& gain = f.gain;
-        const bool moistureHelped =
-            gain.maeMoistureBefore > 0 &&
-            (gain.maeMoistureBefore - gain.maeMoistureAfter) / gain.maeMoistureBefore >=
-                (gain.maeTemperatureBefore - gain.maeTemperatureAfter) /
-                    std::max(1e-12, gain.maeTemperatureBefore);
-        f.output = moistureHelped ? "X_out" : "T_out";
-        for (const auto& o : currentResiduals) {
-            if (o.output == f.output) {
-                f.biasBefore = o.bias;
-                f.trendPerHourBefore = o.trendPerHour;
-            }
-        }
+        describeOutput(f, currentResiduals);
         f.evidence = findingEvidence(f, options);
         result.findings.push_back(f);
         auto sims = physics::simulateBatches(pr.inputs, namedParams, pr.simulation);
@@ -492,37 +460,12 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
     // Later rounds refit the causes named before: report every cause at the extended model's
     // value, with its interval from the score of the final fit (the others held as nuisance).
     if (result.findings.size() > 1) {
-        if (auto at = stackAt(pr, current, nuisance); at) {
-            for (auto& f : result.findings) {
-                const auto col = static_cast<int>(std::find(nuisance.begin(), nuisance.end(), f.parameter) -
-                                                  nuisance.begin());
-                std::vector<int> others;
-                for (int i = 0; i < static_cast<int>(nuisance.size()); ++i) {
-                    if (i != col) {
-                        others.push_back(i);
-                    }
-                }
-                const auto sc = scoreTest(*at, others, col);
-                f.value = current[f.parameter];
-                const double se = sc.se > 0 ? sc.se : 0.5 * (f.ci95High - f.ci95Low) / 1.96;
-                f.ci95Low = f.value - 1.96 * se;
-                f.ci95High = f.value + 1.96 * se;
-            }
-        }
+        restateAtExtendedModel(pr, current, nuisance, result.findings);
     }
     // Bounds for what was tested last and not named: that round's score tests ran at the final
     // model. (When selection ended on a named cause, no round tested the rest at that model.)
     if (!result.rounds.empty() && !result.rounds.back().named) {
-        for (const auto& c : result.rounds.back().candidates) {
-            const auto& info = properties::info(c.parameter);
-            Bound b;
-            b.cause = c.cause;
-            b.parameter = c.parameter;
-            b.estimate = c.linearEstimate;
-            b.ci95Low = std::clamp(c.linearEstimate - 1.96 * c.linearSe, info.lower, info.upper);
-            b.ci95High = std::clamp(c.linearEstimate + 1.96 * c.linearSe, info.lower, info.upper);
-            result.bounds.push_back(b);
-        }
+        result.bounds = boundsOf(result.rounds.back().candidates);
     }
     // The residual of the extended model was analysed when its last cause was added (or is the
     // starting model's, when none was): no further simulation.

@@ -10,6 +10,7 @@
 
 #include <Eigen/Dense>
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -253,6 +254,19 @@ struct ChannelTiming {
 };
 ChannelTiming channelTiming(const Problem& pr, double moistureDelayS, double temperatureDelayS,
                             const HeldOut& atMoistureDelay, const HeldOut& atTemperatureDelay);
+/// A fit of dtau_conv alone from @p start with the given channel weights (discovery's refit).
+using DelayFit = std::function<Expected<calibration::CalibrationResult>(
+    const ParameterSet& start, const calibration::LossWeights& weights)>;
+/// The channel test on the model @p current: dtau_conv fitted to the outlet moisture alone and
+/// to the outlet temperature alone (from @p startDelayS), each judged on the held-out part.
+Expected<ChannelTiming> timeOutletChannels(const Problem& pr, const ParameterSet& current, double startDelayS,
+                                           const DelayFit& fitDelay);
+/// Every finding at the extended model's value, its interval from the score of the final fit
+/// (the others held as nuisance); later rounds refit the causes named before.
+void restateAtExtendedModel(const Problem& pr, const ParameterSet& extended,
+                            const std::vector<Param>& nuisance, std::vector<Finding>& findings);
+/// What the data allow for each cause tested in the last round and not named.
+std::vector<Bound> boundsOf(const std::vector<Candidate>& tested);
 /// A look-alike @p other fitted in the named cause's place (@p fitted), judged on the same held-out
 /// part: its loss ratio and the one-sided DM p that the named cause predicts better.
 Expected<LookAlike> compareLookAlike(const Problem& pr, Param other, const ParameterSet& fitted,
@@ -266,6 +280,8 @@ struct LookAlikeGroup {
 };
 /// The group of @p p, or null when it has no look-alike.
 const LookAlikeGroup* lookAlikeGroupOf(Param p);
+/// The output a finding helps most ("X_out" or "T_out") and that output's residual before it.
+void describeOutput(Finding& f, const std::vector<OutputResidual>& before);
 /// The evidence sentences of a finding (its numbers filled in).
 std::string findingEvidence(const Finding& f, const DiscoveryOptions& options);
 

@@ -77,6 +77,21 @@ const LookAlikeGroup* lookAlikeGroupOf(Param p) {
     return nullptr;
 }
 
+void describeOutput(Finding& f, const std::vector<OutputResidual>& before) {
+    const auto& gain = f.gain;
+    const bool moistureHelped = gain.maeMoistureBefore > 0 &&
+                                (gain.maeMoistureBefore - gain.maeMoistureAfter) / gain.maeMoistureBefore >=
+                                    (gain.maeTemperatureBefore - gain.maeTemperatureAfter) /
+                                        std::max(1e-12, gain.maeTemperatureBefore);
+    f.output = moistureHelped ? "X_out" : "T_out";
+    for (const auto& o : before) {
+        if (o.output == f.output) {
+            f.biasBefore = o.bias;
+            f.trendPerHourBefore = o.trendPerHour;
+        }
+    }
+}
+
 std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
     const auto& info = properties::info(f.parameter);
     const auto& gain = f.gain;
