@@ -160,6 +160,36 @@ private Q_SLOTS:
         QVERIFY2(!translated.contains(QLatin1String("tell them apart")) &&
                      !translated.contains(QLatin1String("Fitted")),
                  qPrintable(translated));
+
+        // A meter lag told from a transport time by the outlet channels' timing: both delays are
+        // given, ruled out or as a group, in either language.
+        discovery::Finding lag;
+        lag.cause = "moisture_meter_lag";
+        lag.parameter = properties::Param::tau_meter;
+        lag.value = 29.2;
+        lag.output = "X_out";
+        discovery::LookAlike transport{
+            "transport_delay_error", properties::Param::dtau_conv, 20.7, 0.93, 0.001, true};
+        transport.byChannels = true;
+        transport.moistureDelayS = 20.7;
+        transport.temperatureDelayS = 16.5;
+        lag.lookAlikes.push_back(transport);
+        const QString told = widgets::DiscoverPanel::specificityText(lag);
+        QVERIFY2(told.contains("Not conveyor transport time off: the moisture answers 20.7 s later") &&
+                     told.contains("16.5 s") && told.contains("delays both alike"),
+                 qPrintable(told));
+        lag.lookAlikes.front().ruledOut = false;
+        lag.group = "outlet_response_time";
+        const QString notTold = widgets::DiscoverPanel::specificityText(lag);
+        QVERIFY2(notTold.contains("fits too") && notTold.contains("cannot tell them apart"),
+                 qPrintable(notTold));
+        QCoreApplication::installTranslator(&chinese);
+        const QString notToldZh = widgets::DiscoverPanel::specificityText(lag);
+        QCoreApplication::removeTranslator(&chinese);
+        QVERIFY2(notToldZh.contains(QString::fromUtf8("各自单独拟合")) &&
+                     notToldZh.contains(QLatin1String("20.7")) &&
+                     !notToldZh.contains(QLatin1String("fits too")),
+                 qPrintable(notToldZh));
     }
 
     // Every physics parameter's meaning and source are shown in Chinese in the Chinese window (the
@@ -419,6 +449,9 @@ private Q_SLOTS:
                  qPrintable(verdict));
         QVERIFY(disc->verdict()->toolTip().contains(
             QString::fromStdString(w.workbench().latest().discover->discovery.verdict)));
+        // The status bar says it in words too, not the contract's key.
+        const QString status = w.statusBar()->findChild<QLabel*>()->text();
+        QVERIFY2(status.startsWith("Discovery: ") && !status.contains('_'), qPrintable(status));
         // Each finding's evidence is worded by the panel from the finding's numbers (translatable).
         for (const auto& f : w.workbench().latest().discover->discovery.findings) {
             const QString sentence = widgets::DiscoverPanel::evidenceText(f);

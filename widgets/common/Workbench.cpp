@@ -470,7 +470,13 @@ void Workbench::discover() {
         [](workflow::Session& s, const Progress& p) { return s.discover({}, p); },
         [this](const workflow::DiscoverResult& r) {
             m_latest.discover = r;
-            Q_EMIT status(tr("Discovery: %1").arg(QString::fromStdString(r.discovery.verdict)));
+            // The verdict in words, with the first cause (its group's name where it names one).
+            QString first;
+            if (!r.discovery.findings.empty()) {
+                const auto& f = r.discovery.findings.front();
+                first = f.group.empty() ? causeDisplayName(f.cause) : groupDisplayName(f.group);
+            }
+            Q_EMIT status(tr("Discovery: %1").arg(verdictDisplayText(r.discovery.verdict, first)));
             Q_EMIT discovered();
         });
 }
