@@ -13,7 +13,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -22,16 +21,6 @@
 using namespace drytwin;
 
 namespace {
-
-std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
-std::string format(const char* fmt, ...) {
-    char buffer[512];
-    va_list args;
-    va_start(args, fmt);
-    std::vsnprintf(buffer, sizeof buffer, fmt, args);
-    va_end(args);
-    return buffer;
-}
 
 struct Outcome {
     bool rightFirst = false; ///< the hidden cause first, alone or in its look-alike group
@@ -84,14 +73,18 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
         out.onsetS = f.onsetS;
     }
     if (verbose && !out.named.empty()) { // the look-alikes' numbers and what was turned down
+        char text[256];
         for (const auto& f : r->findings) {
-            out.named += format(" [%s %.3g", f.cause.c_str(), f.value);
+            std::snprintf(text, sizeof text, " [%s %.3g", f.cause.c_str(), f.value);
+            out.named += text;
             for (const auto& l : f.lookAlikes) {
-                out.named += format("; %s %.3g ratio %.3g p %.2g%s", l.cause.c_str(), l.value,
-                                    l.heldOutLossRatio, l.pValue, l.ruledOut ? " out" : "");
+                std::snprintf(text, sizeof text, "; %s %.3g ratio %.3g p %.2g%s", l.cause.c_str(), l.value,
+                              l.heldOutLossRatio, l.pValue, l.ruledOut ? " out" : "");
+                out.named += text;
                 if (l.byChannels) {
-                    out.named +=
-                        format(" (channels: X %.3g s, T %.3g s)", l.moistureDelayS, l.temperatureDelayS);
+                    std::snprintf(text, sizeof text, " (channels: X %.3g s, T %.3g s)", l.moistureDelayS,
+                                  l.temperatureDelayS);
+                    out.named += text;
                 }
             }
             out.named += "]";

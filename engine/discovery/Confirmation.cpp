@@ -91,10 +91,12 @@ ChannelTiming channelTiming(const Problem& pr, double moistureDelayS, double tem
     const double apart = std::max(2 * pr.samplingStepS, pr.options.floors.transportTimeS);
     if (moistureDelayS - temperatureDelayS >= apart) {
         out.pValue = channelChanges(atMoistureDelay, atTemperatureDelay)[kXOut].pWorse;
-        out.pattern = out.pValue < pr.options.gainAlpha ? "moisture_later" : "undecided";
+        out.pattern = out.pValue < pr.options.gainAlpha ? ChannelTiming::Pattern::MoistureLater
+                                                        : ChannelTiming::Pattern::Undecided;
     } else if (temperatureDelayS - moistureDelayS >= apart) {
         out.pValue = channelChanges(atTemperatureDelay, atMoistureDelay)[kTOut].pWorse;
-        out.pattern = out.pValue < pr.options.gainAlpha ? "temperature_later" : "undecided";
+        out.pattern = out.pValue < pr.options.gainAlpha ? ChannelTiming::Pattern::TemperatureLater
+                                                        : ChannelTiming::Pattern::Undecided;
     }
     return out;
 }

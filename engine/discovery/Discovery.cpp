@@ -340,11 +340,12 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                 if (t.error().kind == ErrorKind::Cancelled) {
                     return t.error();
                 }
-            } else if (t->pattern != "alike") {
+            } else if (t->pattern != ChannelTiming::Pattern::Alike) {
                 timing = *t;
             }
         }
-        if (timing && timing->pattern == "moisture_later" && named->parameter == Param::dtau_conv) {
+        if (timing && timing->pattern == ChannelTiming::Pattern::MoistureLater &&
+            named->parameter == Param::dtau_conv) {
             // Only a meter lag makes the moisture later than the temperature: confirm it alone.
             auto meterCand = std::find_if(cands.begin(), cands.end(),
                                           [&](const auto& c) { return c.parameter == Param::tau_meter; });
@@ -390,7 +391,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             if (!confirmed) {
                 // Not a transport time, yet the lag alone does not predict clearly better: the
                 // moisture channel's response time, either of the two.
-                timing->pattern = "undecided";
+                timing->pattern = ChannelTiming::Pattern::Undecided;
             }
         }
         Finding& f = *named;
@@ -427,7 +428,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                     l->temperatureDelayS = timing->temperatureDelayS;
                     l->pValue = timing->pValue;
                     // The moisture later: not a transport time. Otherwise either: a group.
-                    l->ruledOut = timing->pattern == "moisture_later";
+                    l->ruledOut = timing->pattern == ChannelTiming::Pattern::MoistureLater;
                 }
                 if (!l->ruledOut) {
                     f.group = group->name;

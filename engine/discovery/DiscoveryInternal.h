@@ -246,11 +246,13 @@ struct ChannelTiming {
     /// One-sided held-out p that the later channel is better predicted at its own delay than at
     /// the other channel's.
     double pValue = 1;
-    /// "moisture_later": only a meter lag does that; "alike" (within a transport time's floor):
-    /// what a transport time does; "temperature_later": the temperature has dynamics of its own,
-    /// so its timing cannot tell a transport time from a meter lag; "undecided": apart, but the
-    /// held-out part does not confirm which channel is later.
-    std::string pattern = "alike";
+    enum class Pattern {
+        Alike,            ///< within a transport time's floor: what a transport time does
+        MoistureLater,    ///< only a meter lag does that
+        TemperatureLater, ///< the temperature has dynamics of its own: its timing cannot tell
+        Undecided,        ///< apart, but the held-out part does not confirm which is later
+    };
+    Pattern pattern = Pattern::Alike;
 };
 ChannelTiming channelTiming(const Problem& pr, double moistureDelayS, double temperatureDelayS,
                             const HeldOut& atMoistureDelay, const HeldOut& atTemperatureDelay);
