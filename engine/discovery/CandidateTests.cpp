@@ -331,6 +331,16 @@ std::pair<double, double> explainedShares(const HeldOut& before, const HeldOut& 
     return {whole, fast};
 }
 
+std::vector<int> columnsBut(int count, int skip) {
+    std::vector<int> out;
+    for (int i = 0; i < count; ++i) {
+        if (i != skip) {
+            out.push_back(i);
+        }
+    }
+    return out;
+}
+
 double heldOutPValue(const HeldOut& worse, const HeldOut& better) {
     // One-sided Diebold-Mariano on the weighted squared error: d = L_worse − L_better.
     std::vector<std::vector<double>> d(worse.loss.size());

@@ -106,8 +106,12 @@ Expected<ChannelTiming> timeOutletChannels(const Problem& pr, const ParameterSet
     double delay[2] = {0, 0};
     std::optional<HeldOut> held[2];
     for (int c = 0; c < 2; ++c) {
-        calibration::LossWeights alone{0, 0, 0, 0};
-        (c == 0 ? alone.xOut : alone.tOut) = c == 0 ? pr.options.weights.xOut : pr.options.weights.tOut;
+        calibration::LossWeights alone{0, 0, 0, 0}; // the one channel at its usual weight
+        if (c == 0) {
+            alone.xOut = pr.options.weights.xOut;
+        } else {
+            alone.tOut = pr.options.weights.tOut;
+        }
         ParameterSet start = current;
         start[Param::dtau_conv] = startDelayS;
         auto one = fitDelay(start, alone);
@@ -133,13 +137,7 @@ void restateAtExtendedModel(const Problem& pr, const ParameterSet& extended,
     for (auto& f : findings) {
         const auto col =
             static_cast<int>(std::find(nuisance.begin(), nuisance.end(), f.parameter) - nuisance.begin());
-        std::vector<int> others;
-        for (int i = 0; i < static_cast<int>(nuisance.size()); ++i) {
-            if (i != col) {
-                others.push_back(i);
-            }
-        }
-        const auto sc = scoreTest(*at, others, col);
+        const auto sc = scoreTest(*at, columnsBut(static_cast<int>(nuisance.size()), col), col);
         f.value = extended[f.parameter];
         const double se = sc.se > 0 ? sc.se : 0.5 * (f.ci95High - f.ci95Low) / 1.96;
         f.ci95Low = f.value - 1.96 * se;

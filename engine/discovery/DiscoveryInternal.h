@@ -88,6 +88,8 @@ struct ScoreResult {
 /// Column @p cand of the stack projected off the nuisance columns.
 Eigen::VectorXd projectedColumn(const Stack& st, const std::vector<int>& nuisance, int cand);
 ScoreResult scoreTest(const Stack& st, const std::vector<int>& nuisance, int cand);
+/// The columns 0..count-1 without @p skip: the others as nuisance when one column is tested.
+std::vector<int> columnsBut(int count, int skip);
 /// The score test of every remaining cause (the stack's columns after the nuisance ones, in the
 /// order of @p remaining), with Holm's correction over them.
 std::vector<Candidate> scoreCandidates(const Stack& st, const std::vector<int>& nuisance,

@@ -405,13 +405,7 @@ Expected<std::optional<Finding>> inletScatterFinding(const Problem& pr, const Pa
     double se = 0;
     if (auto at = stackAt(pr, current, nuisance); at) {
         const int c = static_cast<int>(col - nuisance.begin());
-        std::vector<int> others;
-        for (int i = 0; i < static_cast<int>(nuisance.size()); ++i) {
-            if (i != c) {
-                others.push_back(i);
-            }
-        }
-        se = scoreTest(*at, others, c).se;
+        se = scoreTest(*at, columnsBut(static_cast<int>(nuisance.size()), c), c).se;
     }
     f.ci95Low = std::max(0.0, f.value - 1.96 * se);
     f.ci95High = std::min(1.0, f.value + 1.96 * se);
