@@ -263,6 +263,20 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
         double namedLoss = 0;
         std::optional<HeldOut> namedHeld;
         int tried = 0;
+        // The outlet response time: a meter lag delays the moisture reading alone, a transport
+        // time both outlet channels. A line that is not the model answers later than it in the
+        // temperature too (the product's heat capacity, the pyrometer); a transport time then
+        // takes a meter's lag with that and wins any comparison in its place. The delay each
+        // channel asks for alone tells: the moisture later than the temperature is a meter's;
+        // alike is a transport time's; the temperature later (or apart without the held-out
+        // part confirming which is later) leaves both possible: a group; the temperature later
+        // while the moisture asks for no delay of its own is neither (the line's own dynamics).
+        // Measured once per round, when the first of the two is confirmed.
+        std::optional<ChannelTiming> timing;
+        bool timed = false;
+        const auto isRemaining = [&](Param p) {
+            return std::find(remaining.begin(), remaining.end(), p) != remaining.end();
+        };
         for (const auto& cand : record.candidates) {
             if (!cand.fitted || named) {
                 continue;
@@ -300,6 +314,42 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                 record.rejected.push_back({cand.cause, conf->code, conf->why});
                 continue;
             }
+            if ((cand.parameter == Param::tau_meter || cand.parameter == Param::dtau_conv) &&
+                isRemaining(Param::tau_meter) && isRemaining(Param::dtau_conv) && !timed) {
+                timed = true;
+                if (stop(frac0 + 0.25, "the delay of each outlet channel")) {
+                    return cancelledError("discover");
+                }
+                auto t = timeOutletChannels(
+                    pr, current, *currentHeld,
+                    fits.count(Param::dtau_conv) ? fits[Param::dtau_conv].parameters[Param::dtau_conv] : 0.0,
+                    [&](const ParameterSet& start, const calibration::LossWeights& weights) {
+                        return refit(start, {Param::dtau_conv}, false, &weights);
+                    });
+                if (!t) {
+                    if (t.error().kind == ErrorKind::Cancelled) {
+                        return t.error();
+                    }
+                } else if (t->pattern != ChannelTiming::Pattern::Alike) {
+                    timing = *t;
+                }
+            }
+            if (timing && timing->pattern == ChannelTiming::Pattern::TemperatureOnly &&
+                (cand.parameter == Param::tau_meter || cand.parameter == Param::dtau_conv)) {
+                record.rejected.push_back(
+                    {cand.cause, "line_dynamics",
+                     format("the outlet temperature answers %.3g s later than the model, the moisture only "
+                            "%.3g s (within a meter's normal response of %.3g s, or not better on the "
+                            "held-out part): the line's thermal dynamics (product heat capacity, "
+                            "pyrometer), neither a transport time (it delays both) nor a meter lag (the "
+                            "moisture alone)",
+                            timing->temperatureDelayS, timing->moistureDelayS,
+                            std::max(options.floors.moistureResponseS, options.floors.transportTimeS))});
+                if (tried == 1) {
+                    record.reason = record.rejected.back().reason;
+                }
+                continue;
+            }
             record.best = cand.cause;
             named = std::move(conf->finding);
             namedParams = fit.parameters;
@@ -313,36 +363,6 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             }
             result.rounds.push_back(record);
             break;
-        }
-        // The outlet response time: a meter lag delays the moisture reading alone, a transport
-        // time both outlet channels. A line that is not the model answers later than it in the
-        // temperature too (the product's heat capacity, the pyrometer); a transport time then
-        // takes a meter's lag with that and wins any comparison in its place. The delay each
-        // channel asks for alone tells: the moisture later than the temperature is a meter's;
-        // alike is a transport time's; the temperature later (or apart without the held-out
-        // part confirming which is later) leaves both possible: a group.
-        std::optional<ChannelTiming> timing;
-        const auto isRemaining = [&](Param p) {
-            return std::find(remaining.begin(), remaining.end(), p) != remaining.end();
-        };
-        if ((named->parameter == Param::tau_meter || named->parameter == Param::dtau_conv) &&
-            isRemaining(Param::tau_meter) && isRemaining(Param::dtau_conv)) {
-            if (stop(frac0 + 0.25, "the delay of each outlet channel")) {
-                return cancelledError("discover");
-            }
-            auto t = timeOutletChannels(
-                pr, current,
-                fits.count(Param::dtau_conv) ? fits[Param::dtau_conv].parameters[Param::dtau_conv] : 0.0,
-                [&](const ParameterSet& start, const calibration::LossWeights& weights) {
-                    return refit(start, {Param::dtau_conv}, false, &weights);
-                });
-            if (!t) {
-                if (t.error().kind == ErrorKind::Cancelled) {
-                    return t.error();
-                }
-            } else if (t->pattern != ChannelTiming::Pattern::Alike) {
-                timing = *t;
-            }
         }
         if (timing && timing->pattern == ChannelTiming::Pattern::MoistureLater &&
             named->parameter == Param::dtau_conv) {

@@ -60,8 +60,13 @@ struct DiscoveryOptions {
         /// The inlet gauge's fast scatter (1σ of X_in about its 30 s mean) that is still normal;
         /// inlet_moisture_sensor_noise needs the measured scatter above it [% wb].
         double inletGaugeScatterPct = 0.3;
-        double foulingShare = 0.02;       ///< h_HDT lost over a mean batch
-        double transportTimeS = 3;        ///< transport_delay_error [s] (and at least 2 sampling steps)
+        double foulingShare = 0.02; ///< h_HDT lost over a mean batch
+        double transportTimeS = 3;  ///< transport_delay_error [s] (and at least 2 sampling steps)
+        /// The outlet moisture's own response that is still normal (a meter's output filter, the
+        /// product's spread on the belt) [s]: where the outlet temperature answers later than the
+        /// model, the moisture must ask for more delay than this before a transport time or a
+        /// meter lag is named (chosen on nulls of seeds 301-320, docs/discovery-study.md).
+        double moistureResponseS = 5;
         double moistureEffectPct = 0.03;  ///< a cause must move X_out (rms, held-out) by this [% wb] ...
         double temperatureEffectK = 0.05; ///< ... or T_out by this [K]
     } floors;
