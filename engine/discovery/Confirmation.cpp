@@ -82,8 +82,8 @@ Expected<Confirmation> confirmCandidate(const ConfirmationInput& in) {
 }
 
 ChannelTiming channelTiming(const Problem& pr, double currentDelayS, double moistureDelayS,
-                            double temperatureDelayS, const HeldOut& atCurrent,
-                            const HeldOut& atMoistureDelay, const HeldOut& atTemperatureDelay) {
+                            double temperatureDelayS, const HeldOut& atMoistureDelay,
+                            const HeldOut& atTemperatureDelay) {
     ChannelTiming out;
     out.moistureDelayS = moistureDelayS;
     out.temperatureDelayS = temperatureDelayS;
@@ -102,17 +102,18 @@ ChannelTiming channelTiming(const Problem& pr, double currentDelayS, double mois
     // Does the moisture ask for a delay at all? Both causes delay it (a meter lag nothing else);
     // the distributed line's outlet temperature answers 15-20 s later than the model with nothing
     // hidden (docs/discovery-study.md), and that alone is neither cause.
+    // The size of the moisture's own delay decides, not a held-out test: it was measured
+    // (seed 102, a 15 s meter lag: 13 s asked, p = 0.05 on the quiet held-out part) that the
+    // test turns down a real lag, while the nulls ask for 1-5 s (docs/discovery-study.md).
     const bool moistureAsks =
-        moistureDelayS - currentDelayS >= std::max(apart, pr.options.floors.moistureResponseS) &&
-        channelChanges(atMoistureDelay, atCurrent)[kXOut].pWorse < pr.options.gainAlpha;
+        moistureDelayS - currentDelayS >= std::max(apart, pr.options.floors.moistureResponseS);
     if (!moistureAsks && temperatureDelayS - moistureDelayS >= apart) {
         out.pattern = ChannelTiming::Pattern::TemperatureOnly;
     }
     return out;
 }
 
-Expected<ChannelTiming> timeOutletChannels(const Problem& pr, const ParameterSet& current,
-                                           const HeldOut& atCurrent, double startDelayS,
+Expected<ChannelTiming> timeOutletChannels(const Problem& pr, const ParameterSet& current, double startDelayS,
                                            const DelayFit& fitDelay) {
     double delay[2] = {0, 0};
     std::optional<HeldOut> held[2];
@@ -136,7 +137,7 @@ Expected<ChannelTiming> timeOutletChannels(const Problem& pr, const ParameterSet
         }
         held[c] = std::move(*h);
     }
-    return channelTiming(pr, current[Param::dtau_conv], delay[0], delay[1], atCurrent, *held[0], *held[1]);
+    return channelTiming(pr, current[Param::dtau_conv], delay[0], delay[1], *held[0], *held[1]);
 }
 
 void restateAtExtendedModel(const Problem& pr, const ParameterSet& extended,

@@ -321,7 +321,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                     return cancelledError("discover");
                 }
                 auto t = timeOutletChannels(
-                    pr, current, *currentHeld,
+                    pr, current,
                     fits.count(Param::dtau_conv) ? fits[Param::dtau_conv].parameters[Param::dtau_conv] : 0.0,
                     [&](const ParameterSet& start, const calibration::LossWeights& weights) {
                         return refit(start, {Param::dtau_conv}, false, &weights);
@@ -339,8 +339,8 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                 record.rejected.push_back(
                     {cand.cause, "line_dynamics",
                      format("the outlet temperature answers %.3g s later than the model, the moisture only "
-                            "%.3g s (within a meter's normal response of %.3g s, or not better on the "
-                            "held-out part): the line's thermal dynamics (product heat capacity, "
+                            "%.3g s (within a meter's normal response of %.3g s): the line's thermal "
+                            "dynamics (product heat capacity, "
                             "pyrometer), neither a transport time (it delays both) nor a meter lag (the "
                             "moisture alone)",
                             timing->temperatureDelayS, timing->moistureDelayS,

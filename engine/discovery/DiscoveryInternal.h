@@ -253,24 +253,23 @@ struct ChannelTiming {
         MoistureLater,    ///< only a meter lag does that
         TemperatureLater, ///< the temperature has dynamics of its own: its timing cannot tell
         Undecided,        ///< apart, but the held-out part does not confirm which is later
-        /// The temperature later and the moisture asking for no delay of its own (within the
-        /// floor of the model's, or not better on the held-out part): the temperature's own
+        /// The temperature later and the moisture asking for no delay of its own (within a
+        /// meter's normal response of the model's, Floors::moistureResponseS): the temperature's own
         /// dynamics, neither a transport time (both channels) nor a meter lag (the moisture).
         TemperatureOnly,
     };
     Pattern pattern = Pattern::Alike;
 };
-/// @p atCurrent: the held-out part at the model's own delay @p currentDelayS.
+/// @p currentDelayS: the model's own conveyor delay before the fits.
 ChannelTiming channelTiming(const Problem& pr, double currentDelayS, double moistureDelayS,
-                            double temperatureDelayS, const HeldOut& atCurrent,
-                            const HeldOut& atMoistureDelay, const HeldOut& atTemperatureDelay);
+                            double temperatureDelayS, const HeldOut& atMoistureDelay,
+                            const HeldOut& atTemperatureDelay);
 /// A fit of dtau_conv alone from @p start with the given channel weights (discovery's refit).
 using DelayFit = std::function<Expected<calibration::CalibrationResult>(
     const ParameterSet& start, const calibration::LossWeights& weights)>;
 /// The channel test on the model @p current: dtau_conv fitted to the outlet moisture alone and
 /// to the outlet temperature alone (from @p startDelayS), each judged on the held-out part.
-Expected<ChannelTiming> timeOutletChannels(const Problem& pr, const ParameterSet& current,
-                                           const HeldOut& atCurrent, double startDelayS,
+Expected<ChannelTiming> timeOutletChannels(const Problem& pr, const ParameterSet& current, double startDelayS,
                                            const DelayFit& fitDelay);
 /// Every finding at the extended model's value, its interval from the score of the final fit
 /// (the others held as nuisance); later rounds refit the causes named before.
