@@ -101,10 +101,9 @@ ChannelTiming channelTiming(const Problem& pr, double currentDelayS, double mois
     }
     // Does the moisture ask for a delay at all? Both causes delay it (a meter lag nothing else);
     // the distributed line's outlet temperature answers 15-20 s later than the model with nothing
-    // hidden (docs/discovery-study.md), and that alone is neither cause.
-    // The size of the moisture's own delay decides, not a held-out test: it was measured
-    // (seed 102, a 15 s meter lag: 13 s asked, p = 0.05 on the quiet held-out part) that the
-    // test turns down a real lag, while the nulls ask for 1-5 s (docs/discovery-study.md).
+    // hidden, and that alone is neither cause. The size of the moisture's own delay decides, not
+    // a held-out test, which turned down a real 15 s meter lag (seed 102: 13 s asked) while the
+    // nulls ask for 1-5 s (docs/discovery-study.md).
     const bool moistureAsks =
         moistureDelayS - currentDelayS >= std::max(apart, pr.options.floors.moistureResponseS);
     if (!moistureAsks && temperatureDelayS - moistureDelayS >= apart) {

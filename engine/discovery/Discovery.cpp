@@ -277,6 +277,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
         const auto isRemaining = [&](Param p) {
             return std::find(remaining.begin(), remaining.end(), p) != remaining.end();
         };
+        const auto isOutletDelay = [](Param p) { return p == Param::tau_meter || p == Param::dtau_conv; };
         for (const auto& cand : record.candidates) {
             if (!cand.fitted || named) {
                 continue;
@@ -314,8 +315,8 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                 record.rejected.push_back({cand.cause, conf->code, conf->why});
                 continue;
             }
-            if ((cand.parameter == Param::tau_meter || cand.parameter == Param::dtau_conv) &&
-                isRemaining(Param::tau_meter) && isRemaining(Param::dtau_conv) && !timed) {
+            if (isOutletDelay(cand.parameter) && isRemaining(Param::tau_meter) &&
+                isRemaining(Param::dtau_conv) && !timed) {
                 timed = true;
                 if (stop(frac0 + 0.25, "the delay of each outlet channel")) {
                     return cancelledError("discover");
@@ -335,14 +336,13 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                 }
             }
             if (timing && timing->pattern == ChannelTiming::Pattern::TemperatureOnly &&
-                (cand.parameter == Param::tau_meter || cand.parameter == Param::dtau_conv)) {
+                isOutletDelay(cand.parameter)) {
                 record.rejected.push_back(
                     {cand.cause, "line_dynamics",
                      format("the outlet temperature answers %.3g s later than the model, the moisture only "
                             "%.3g s (within a meter's normal response of %.3g s): the line's thermal "
-                            "dynamics (product heat capacity, "
-                            "pyrometer), neither a transport time (it delays both) nor a meter lag (the "
-                            "moisture alone)",
+                            "dynamics (product heat capacity, pyrometer), neither a transport time (it "
+                            "delays both) nor a meter lag (the moisture alone)",
                             timing->temperatureDelayS, timing->moistureDelayS,
                             std::max(options.floors.moistureResponseS, options.floors.transportTimeS))});
                 if (tried == 1) {
