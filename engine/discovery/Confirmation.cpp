@@ -104,8 +104,8 @@ ChannelTiming channelTiming(const Problem& pr, double currentDelayS, double mois
     // hidden, and that alone is neither cause. The size of the moisture's own delay decides, not
     // a held-out test, which turned down a real 15 s meter lag (seed 102: 13 s asked) while the
     // nulls ask for 1-5 s (docs/discovery-study.md).
-    const bool moistureAsks =
-        moistureDelayS - currentDelayS >= std::max(apart, pr.options.floors.moistureResponseS);
+    out.moistureFloorS = std::max(apart, pr.options.floors.moistureResponseS);
+    const bool moistureAsks = moistureDelayS - currentDelayS >= out.moistureFloorS;
     if (!moistureAsks && temperatureDelayS - moistureDelayS >= apart) {
         out.pattern = ChannelTiming::Pattern::TemperatureOnly;
     }

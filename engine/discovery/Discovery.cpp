@@ -343,8 +343,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                             "%.3g s (within a meter's normal response of %.3g s): the line's thermal "
                             "dynamics (product heat capacity, pyrometer), neither a transport time (it "
                             "delays both) nor a meter lag (the moisture alone)",
-                            timing->temperatureDelayS, timing->moistureDelayS,
-                            std::max(options.floors.moistureResponseS, options.floors.transportTimeS))});
+                            timing->temperatureDelayS, timing->moistureDelayS, timing->moistureFloorS)});
                 if (tried == 1) {
                     record.reason = record.rejected.back().reason;
                 }

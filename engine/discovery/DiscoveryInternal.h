@@ -253,12 +253,15 @@ struct ChannelTiming {
         MoistureLater,    ///< only a meter lag does that
         TemperatureLater, ///< the temperature has dynamics of its own: its timing cannot tell
         Undecided,        ///< apart, but the held-out part does not confirm which is later
-        /// The temperature later and the moisture asking for no delay of its own (within a
-        /// meter's normal response of the model's, Floors::moistureResponseS): the temperature's own
-        /// dynamics, neither a transport time (both channels) nor a meter lag (the moisture).
+        /// The temperature later and the moisture asking for no more delay than the model's
+        /// plus moistureFloorS: the temperature's own dynamics, neither a transport time (both
+        /// channels) nor a meter lag (the moisture).
         TemperatureOnly,
     };
     Pattern pattern = Pattern::Alike;
+    /// The moisture's own delay that is still normal [s]: Floors::moistureResponseS, at least
+    /// the transport time's floor.
+    double moistureFloorS = 0;
 };
 /// @p currentDelayS: the model's own conveyor delay before the fits.
 ChannelTiming channelTiming(const Problem& pr, double currentDelayS, double moistureDelayS,
