@@ -6,6 +6,7 @@
 // Run: build/bench/study_discovery [--quick] [--plant distributed|lumped] [--sensors realistic|ideal|default]
 //      [--part mechanisms|nulls|onsets] [--mechanism NAME (e.g. moisture_meter_lag)] [--verbose]
 //      [--null-seeds FIRST (20 seeds from it; default 201)] [--min-explained SHARE (default 0.15)]
+//      [--candidates N (fitted per round; default 3)]
 // (lumped, its built-in sensors: about 8 min on 2 cores; --quick: one seed). The default plant is
 // the distributed one with realistic sensors (issue #22), whose nulls include its own structure.
 #include "discovery/Discovery.h"
@@ -109,6 +110,16 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
         }
         out.named = "(" + r->verdict + why + ")";
     }
+    if (verbose) { // the first round's candidates: fitted or not, the screen and the predicted share
+        std::string ranking;
+        for (const auto& c : r->ranking) {
+            char text[160];
+            std::snprintf(text, sizeof text, "%s%s p %.2g pred %.0f %%%s", ranking.empty() ? "" : ", ",
+                          c.cause.c_str(), c.pValue, 100 * c.predictedReduction, c.fitted ? " fitted" : "");
+            ranking += text;
+        }
+        out.named += " <ranking: " + ranking + ">";
+    }
     return out;
 }
 
@@ -150,11 +161,14 @@ int main(int argc, char** argv) {
         } else if (a == "--min-explained" && std::atof(next.c_str()) >= 0 && std::atof(next.c_str()) < 1) {
             discoveryOptions.minExplainedFraction = std::atof(next.c_str());
             ++i;
+        } else if (a == "--candidates" && std::atoi(next.c_str()) > 0) {
+            discoveryOptions.candidatesToFit = std::atoi(next.c_str());
+            ++i;
         } else {
             std::fprintf(stderr,
                          "usage: study_discovery [--quick] [--plant distributed|lumped] "
                          "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
-                         "[--mechanism NAME] [--verbose] [--null-seeds FIRST] [--min-explained SHARE]\n");
+                         "[--mechanism NAME] [--verbose] [--null-seeds FIRST] [--min-explained SHARE] [--candidates N]\n");
             return 2;
         }
     }
