@@ -3,6 +3,7 @@
 #include "control/BundledScenarios.h"
 
 #include "common/AtomicFile.h"
+#include "common/Parallel.h"
 #include "common/Units.h"
 #include "data/BatchReader.h"
 #include "data/BatchWriter.h"
@@ -15,6 +16,7 @@
 #include "physics/LineInputs.h"
 #include "plant/PlantExport.h"
 
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <limits>
@@ -416,15 +418,19 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
         std::shared_ptr<const residual::ResidualModel> before;
         hybrid::HybridModel start = m_model;
         start.parameters = found->baseParameters; // the same refit, without the causes
-        if (auto st =
-                pgrlHeldOut(start, before, result.hybridMaeMoistureBefore, result.hybridMaeTemperatureBefore);
-            !st) {
-            return st.error();
-        }
-        if (auto st =
-                pgrlHeldOut(ext, ext.pgrlCc, result.hybridMaeMoistureAfter, result.hybridMaeTemperatureAfter);
-            !st) {
-            return st.error();
+        // The two trainings are independent and mostly on one core each: side by side they take
+        // the time of one (demo seed 2025: 11 s one after the other on 2 cores).
+        std::array<Status, 2> trainedStatus;
+        parallelFor(2, [&](std::size_t i) {
+            trainedStatus[i] = i == 0 ? pgrlHeldOut(start, before, result.hybridMaeMoistureBefore,
+                                                    result.hybridMaeTemperatureBefore)
+                                      : pgrlHeldOut(ext, ext.pgrlCc, result.hybridMaeMoistureAfter,
+                                                    result.hybridMaeTemperatureAfter);
+        });
+        for (const auto& st : trainedStatus) {
+            if (!st) {
+                return st.error();
+            }
         }
         result.hasHybrid = true;
         // Never make the hybrid worse (issue #23): where PGRL-CC on the extended physics model
