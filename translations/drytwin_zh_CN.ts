@@ -1295,363 +1295,363 @@
 <context>
     <name>drytwin::widgets::DiscoverPanel</name>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="24"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="25"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="25"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="26"/>
         <source>What does the simulation get wrong, and why? (score tests, fits, held-out gain)</source>
         <translation>仿真哪里出错，为什么？（得分检验、拟合、留出数据上的改进）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="26"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="67"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="68"/>
         <source>Extend the model</source>
         <translation>扩展模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="29"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
         <source>Make the extended model (named causes, refitted h_HDT and k_HDT, residual models retrained) the session&apos;s model</source>
         <translation>将扩展后的模型（已命名的原因、重新拟合的 h_HDT 与 k_HDT、重新训练的残差模型）设为当前模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
         <source>Run discovery on the loaded data with the current model.</source>
         <translation>用当前模型在已加载的数据上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="33"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="33"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="33"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>p (Holm)</source>
         <translation>p（Holm）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="33"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>Fitted</source>
         <translation>已拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="33"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>Loss</source>
         <translation>损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
         <source>Held-out</source>
         <translation>留出数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
         <source>Before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
         <source>After</source>
         <translation>之后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="37"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
         <source>X_out residual [% wb]</source>
         <translation>X_out 残差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
         <source>T_out residual [°C]</source>
         <translation>T_out 残差 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="40"/>
         <source>time, batches one after another [h]</source>
         <translation>时间，批次首尾相接 [h]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
         <source>Candidate causes, first round:</source>
         <translation>候选原因（第一轮）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="50"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="51"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="71"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="72"/>
         <source>the model was extended by discovery</source>
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="73"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="74"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="79"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="80"/>
         <source>Run Discover to see the physics model&apos;s error over the batches</source>
         <translation>运行发现，可看到物理模型在各批次上的误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="92"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="93"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)</source>
         <translation>误差随进料量和入口水分增大（按 feed_kg_h 和 X_in_pct 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="98"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="99"/>
         <source>the error drifts within every batch and resets at each batch start</source>
         <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="100"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="101"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="104"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="105"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="107"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="108"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="109"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="110"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="113"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="114"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="117"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="118"/>
         <source>a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less</source>
         <translation>干燥管出口与出口水分有相同的稳定偏差，干燥管干燥越少处越大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="120"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="121"/>
         <source>after each hot-air setpoint step the outlet temperature and moisture move before the simulation, which follows the slow reading</source>
         <translation>每次热风设定值阶跃后，出口温度和水分先于仿真变化，仿真跟随的是迟缓的读数</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="123"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="124"/>
         <source>the inlet-moisture reading scatters from second to second while the outlet does not follow it, and the simulated outlet does</source>
         <translation>入口水分读数逐秒跳动，出口并不跟随，而仿真的出口却跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="133"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="134"/>
         <source>a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet temperature&apos;s response as much as the moisture&apos;s, a meter lag delays the moisture reading alone; or grab samples timed against the meter</source>
         <translation>以 1 s 记录一次热风设定值阶跃：输送时间误差使出口温度与水分的响应同样延迟，水分仪滞后只延迟水分读数；或对照水分仪定时取样</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="140"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="141"/>
         <source>oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter offset does not</source>
         <translation>在出口对照水分仪、在入口对照入口水分计做烘箱法实验室取样；或增加干燥管出口水分通道（X_hdt）：入口水分计偏差会使其变化，出口水分仪偏差不会</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="147"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="148"/>
         <source>a gas-temperature reading at the tube&apos;s outlet end at two feed rates: wall loss does not change with the feed, gas-phase cooling grows with it</source>
         <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="158"/>
         <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
         <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="160"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="161"/>
         <source>its size is not consistent across batches or operating regions</source>
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="163"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="164"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="166"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="167"/>
         <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
         <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="170"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="171"/>
         <source>the outlet channels&apos; timing points to its look-alike (the moisture answers later than the temperature: a meter, not the transport)</source>
         <translation>出口两个通道的时序指向它的相似原因（水分比温度响应更晚：是水分仪，而非输送）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="174"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="176"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="177"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="179"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="194"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="196"/>
         <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
         <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="199"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="201"/>
         <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
         <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="202"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="204"/>
         <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
         <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="207"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="209"/>
         <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
         <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="213"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="215"/>
         <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="224"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="226"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="229"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="231"/>
         <source>the error follows %1 %2 s later (|ccf| %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="239"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="241"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="244"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="246"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="256"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="258"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="263"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="265"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="278"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="280"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="283"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="285"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="283"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="285"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="286"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="288"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="290"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="292"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="298"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="301"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="303"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="307"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="314"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="319"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="315"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="320"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="322"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="327"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="334"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="339"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="338"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="343"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="339"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="344"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="343"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="343"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="368"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="369"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="374"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="384"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="389"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -1668,135 +1668,147 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="399"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="404"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="399"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="404"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="420"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="425"/>
         <source>%1 at %2 s (ccf %3%4)</source>
         <translation>%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="424"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="429"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="427"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="432"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="435"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="440"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="253"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="255"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="387"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="392"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="390"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="395"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="391"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="396"/>
         <source>, </source>
         <translation>、</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="392"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="397"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="445"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="450"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="461"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="466"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="466"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="471"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="474"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="479"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="479"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="484"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="487"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="492"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="498"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="503"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="329"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="499"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="506"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="334"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="504"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="511"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="516"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="518"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="500"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="505"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="329"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="501"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="334"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="506"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="502"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="507"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="503"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="508"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="506"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="511"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="523"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="515"/>
+        <source>MAE X_out (last value held)</source>
+        <translation>MAE X_out（保持上一测量值）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="517"/>
+        <source>MAE X_out (physics, last error held)</source>
+        <translation>MAE X_out（物理模型，保持上一误差）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="536"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="524"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="537"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -3944,33 +3956,33 @@ extrapolation</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="473"/>
+        <location filename="../widgets/common/Workbench.cpp" line="479"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="480"/>
+        <location filename="../widgets/common/Workbench.cpp" line="486"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="495"/>
+        <location filename="../widgets/common/Workbench.cpp" line="501"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="118"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="499"/>
+        <location filename="../widgets/common/Workbench.cpp" line="505"/>
         <source>Ablation: %1 variants trained and evaluated</source>
         <translation>消融实验：已训练并评估 %1 个变体</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="506"/>
+        <location filename="../widgets/common/Workbench.cpp" line="512"/>
         <source>Generate</source>
         <translation>生成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="509"/>
+        <location filename="../widgets/common/Workbench.cpp" line="515"/>
         <source>Wrote %1 virtual-plant batches to %2</source>
         <translation>已将 %1 个虚拟装置批次写入 %2</translation>
     </message>

@@ -131,6 +131,24 @@ int runDiscover(const CommandOptions& o) {
             std::printf("The hybrid on the extended physics model is worse on the held-out part: the model "
                         "written keeps the starting physics and its residual model (the findings stand).\n");
         }
+        const auto& ref = result->references;
+        if (std::isfinite(ref.persistenceMoisture)) {
+            const bool kept = result->keptStartingModel;
+            const double maeX = kept ? result->hybridMaeMoistureBefore : result->hybridMaeMoistureAfter;
+            const double maeT = kept ? result->hybridMaeTemperatureBefore : result->hybridMaeTemperatureAfter;
+            std::printf(
+                "References on the same rows: the last measurement held X_out %.4f %% wb, T_out %.4f °C; "
+                "the PBM with its last error held X_out %.4f -> %.4f %% wb, T_out %.4f -> %.4f °C.\n",
+                ref.persistenceMoisture, ref.persistenceTemperature, ref.pbmHoldMoistureBefore,
+                ref.pbmHoldMoistureAfter, ref.pbmHoldTemperatureBefore, ref.pbmHoldTemperatureAfter);
+            const auto verdict = [](double mae, double best) {
+                return mae < best ? "beats both" : "does NOT beat the better of them";
+            };
+            std::printf("PGRL-CC on the model written: X_out %s (%.4f against %.4f), T_out %s (%.4f against "
+                        "%.4f).\n",
+                        verdict(maeX, ref.bestMoisture(kept)), maeX, ref.bestMoisture(kept),
+                        verdict(maeT, ref.bestTemperature(kept)), maeT, ref.bestTemperature(kept));
+        }
     }
     std::printf("\n%.1f s\n", result->ending.elapsedSeconds);
     if (!o.jsonPath.empty()) {
@@ -138,7 +156,8 @@ int runDiscover(const CommandOptions& o) {
                 o.jsonPath,
                 io::discoveryJson(d, result->hasHybrid, result->hybridMaeMoistureBefore,
                                   result->hybridMaeMoistureAfter, result->hybridMaeTemperatureBefore,
-                                  result->hybridMaeTemperatureAfter, result->keptStartingModel));
+                                  result->hybridMaeTemperatureAfter, result->keptStartingModel,
+                                  result->references));
             !st) {
             return fail(st.error());
         }

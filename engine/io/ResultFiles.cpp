@@ -293,9 +293,18 @@ std::string simulationCsv(const std::vector<data::SiBatch>& batches,
     return out;
 }
 
+double HybridReferences::bestMoisture(bool keptStartingModel) const {
+    return std::fmin(persistenceMoisture, keptStartingModel ? pbmHoldMoistureBefore : pbmHoldMoistureAfter);
+}
+
+double HybridReferences::bestTemperature(bool keptStartingModel) const {
+    return std::fmin(persistenceTemperature,
+                     keptStartingModel ? pbmHoldTemperatureBefore : pbmHoldTemperatureAfter);
+}
+
 std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, double hybridMaeXBefore,
                           double hybridMaeXAfter, double hybridMaeTBefore, double hybridMaeTAfter,
-                          bool keptStartingModel) {
+                          bool keptStartingModel, const HybridReferences& references) {
     const auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
     json j;
     j["verdict"] = r.verdict;
@@ -432,6 +441,23 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                        {"mae_temperature_before", num(hybridMaeTBefore)},
                        {"mae_temperature_after", num(hybridMaeTAfter)},
                        {"model_kept", keptStartingModel ? "starting" : "extended"}};
+        if (std::isfinite(references.persistenceMoisture)) {
+            const auto& ref = references;
+            j["hybrid"]["references"] = {{evaluation::kPersistenceKey,
+                                          {{"mae_moisture", num(ref.persistenceMoisture)},
+                                           {"mae_temperature", num(ref.persistenceTemperature)}}},
+                                         {evaluation::kPbmResidualHoldKey,
+                                          {{"mae_moisture_before", num(ref.pbmHoldMoistureBefore)},
+                                           {"mae_moisture_after", num(ref.pbmHoldMoistureAfter)},
+                                           {"mae_temperature_before", num(ref.pbmHoldTemperatureBefore)},
+                                           {"mae_temperature_after", num(ref.pbmHoldTemperatureAfter)}}}};
+            // Whether the model offered for forecasting earns its place, per output.
+            const double maeX = keptStartingModel ? hybridMaeXBefore : hybridMaeXAfter;
+            const double maeT = keptStartingModel ? hybridMaeTBefore : hybridMaeTAfter;
+            j["hybrid"]["beats_references"] = {
+                {"moisture", maeX < ref.bestMoisture(keptStartingModel)},
+                {"temperature", maeT < ref.bestTemperature(keptStartingModel)}};
+        }
     }
     const auto residualsJson = [&](const std::vector<discovery::OutputResidual>& rs) {
         json a = json::array();

@@ -9,6 +9,7 @@
 #include "hybrid/HybridTraining.h"
 #include "hybrid/ResidualDiagnostics.h"
 #include "physics/LineSimulator.h"
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -35,9 +36,25 @@ std::string inspectJson(const data::DataSetSummary& summary);
 std::string simulationCsv(const std::vector<data::SiBatch>& batches,
                           const std::vector<physics::SimulationResult>& simulations);
 
+/// @brief The two forecasts every learnt one must beat (CONTRACT.md §3), one step ahead on the
+/// rows PGRL-CC is scored on after discovery: the last measurement held, and the PBM with its
+/// last measured error held, on the starting and on the extended physics model. NaN: not scored.
+struct HybridReferences {
+    double persistenceMoisture = std::numeric_limits<double>::quiet_NaN();    ///< % wb
+    double persistenceTemperature = std::numeric_limits<double>::quiet_NaN(); ///< °C
+    double pbmHoldMoistureBefore = std::numeric_limits<double>::quiet_NaN(),  ///< % wb
+        pbmHoldMoistureAfter = std::numeric_limits<double>::quiet_NaN();
+    double pbmHoldTemperatureBefore = std::numeric_limits<double>::quiet_NaN(), ///< °C
+        pbmHoldTemperatureAfter = std::numeric_limits<double>::quiet_NaN();
+    /// The better of the two references on the model offered for forecasting (the extended one,
+    /// or the starting one where it was kept).
+    double bestMoisture(bool keptStartingModel) const;
+    double bestTemperature(bool keptStartingModel) const;
+};
+
 /// @brief The JSON of CONTRACT.md §3 for `discover`, with the residual analysis beside it.
 std::string discoveryJson(const discovery::DiscoveryResult& result, bool hasHybrid, double hybridMaeXBefore,
                           double hybridMaeXAfter, double hybridMaeTBefore, double hybridMaeTAfter,
-                          bool keptStartingModel = false);
+                          bool keptStartingModel = false, const HybridReferences& references = {});
 
 } // namespace drytwin::io

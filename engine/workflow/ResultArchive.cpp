@@ -215,6 +215,11 @@ std::string latestResultsJson(const LatestResults& r) {
             {"hybrid_mae_moisture", {d.hybridMaeMoistureBefore, d.hybridMaeMoistureAfter}},
             {"hybrid_mae_temperature", {d.hybridMaeTemperatureBefore, d.hybridMaeTemperatureAfter}},
             {"kept_starting_model", d.keptStartingModel},
+            {"hybrid_references",
+             {{"persistence", {d.references.persistenceMoisture, d.references.persistenceTemperature}},
+              {"pbm_hold_moisture", {d.references.pbmHoldMoistureBefore, d.references.pbmHoldMoistureAfter}},
+              {"pbm_hold_temperature",
+               {d.references.pbmHoldTemperatureBefore, d.references.pbmHoldTemperatureAfter}}}},
             {"ending", d.ending}};
     }
     if (r.mpc) {
@@ -286,6 +291,20 @@ Expected<LatestResults> parseLatestResults(const std::string& text, const std::s
             pair("hybrid_mae_moisture", out.hybridMaeMoistureBefore, out.hybridMaeMoistureAfter);
             pair("hybrid_mae_temperature", out.hybridMaeTemperatureBefore, out.hybridMaeTemperatureAfter);
             out.keptStartingModel = d.value("kept_starting_model", false);
+            if (d.contains("hybrid_references") &&
+                d["hybrid_references"].is_object()) { // older archives: NaN
+                const json refs = d["hybrid_references"];
+                const auto refPair = [&](const char* key, double& first, double& second) {
+                    if (refs.contains(key) && refs[key].is_array() && refs[key].size() == 2) {
+                        first = refs[key][0].get<double>();
+                        second = refs[key][1].get<double>();
+                    }
+                };
+                auto& ref = out.references;
+                refPair("persistence", ref.persistenceMoisture, ref.persistenceTemperature);
+                refPair("pbm_hold_moisture", ref.pbmHoldMoistureBefore, ref.pbmHoldMoistureAfter);
+                refPair("pbm_hold_temperature", ref.pbmHoldTemperatureBefore, ref.pbmHoldTemperatureAfter);
+            }
             d.at("ending").get_to(out.ending);
             r.discover = std::move(out);
         }

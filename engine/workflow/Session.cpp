@@ -390,9 +390,13 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
     ext.pgrlCc.reset();
     ext.extInput.reset();
     if (options.retrainResidual) {
+        // PGRL-CC trained on a physics model and scored one step ahead on the held-out part,
+        // with the PBM-with-its-last-error-held reference on the same rows (and persistence,
+        // which does not depend on the model, where asked).
         const auto pgrlHeldOut = [&](const hybrid::HybridModel& m,
                                      std::shared_ptr<const residual::ResidualModel>& out, double& maeX,
-                                     double& maeT) -> Status {
+                                     double& maeT, double& holdX, double& holdT, double* persistenceX,
+                                     double* persistenceT) -> Status {
             auto sims = hybrid::simulatePbm(m_si, m, m.switches);
             if (!sims) {
                 return sims.error();
@@ -404,11 +408,27 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
             if (!trained) {
                 return trained.error();
             }
+            const auto heldOutViews = hybrid::splitViews(m_si, *sims, true);
             const auto scored = evaluation::scorePredictions(
-                hybrid::splitViews(m_si, *sims, true),
-                [&](const residual::BatchView& v) { return trained->predictOneStep(v); }, 20);
+                heldOutViews, [&](const residual::BatchView& v) { return trained->predictOneStep(v); }, 20);
             maeX = scored.moisture.mae;
             maeT = scored.temperature.mae;
+            const auto reference = [&](bool holdPbmError) {
+                return evaluation::scorePredictions(
+                    heldOutViews,
+                    [&](const residual::BatchView& v) {
+                        return evaluation::referencePrediction(v, 1, holdPbmError);
+                    },
+                    20);
+            };
+            const auto held = reference(true);
+            holdX = held.moisture.mae;
+            holdT = held.temperature.mae;
+            if (persistenceX && persistenceT) {
+                const auto persistence = reference(false);
+                *persistenceX = persistence.moisture.mae;
+                *persistenceT = persistence.temperature.mae;
+            }
             out = std::make_shared<const residual::ResidualModel>(std::move(*trained));
             return {};
         };
@@ -421,11 +441,16 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
         // The two trainings are independent and mostly on one core each: side by side they take
         // the time of one (demo seed 2025: 11 s one after the other on 2 cores).
         std::array<Status, 2> trainedStatus;
+        auto& ref = result.references;
         parallelFor(2, [&](std::size_t i) {
-            trainedStatus[i] = i == 0 ? pgrlHeldOut(start, before, result.hybridMaeMoistureBefore,
-                                                    result.hybridMaeTemperatureBefore)
-                                      : pgrlHeldOut(ext, ext.pgrlCc, result.hybridMaeMoistureAfter,
-                                                    result.hybridMaeTemperatureAfter);
+            trainedStatus[i] = i == 0
+                                   ? pgrlHeldOut(start, before, result.hybridMaeMoistureBefore,
+                                                 result.hybridMaeTemperatureBefore, ref.pbmHoldMoistureBefore,
+                                                 ref.pbmHoldTemperatureBefore, &ref.persistenceMoisture,
+                                                 &ref.persistenceTemperature)
+                                   : pgrlHeldOut(ext, ext.pgrlCc, result.hybridMaeMoistureAfter,
+                                                 result.hybridMaeTemperatureAfter, ref.pbmHoldMoistureAfter,
+                                                 ref.pbmHoldTemperatureAfter, nullptr, nullptr);
         });
         for (const auto& st : trainedStatus) {
             if (!st) {
@@ -632,7 +657,7 @@ Expected<PipelineResult> Session::pipeline(const PipelineOptions& options, const
     if (auto st = write(in("discover.json"),
                         io::discoveryJson(dd.discovery, dd.hasHybrid, dd.hybridMaeMoistureBefore,
                                           dd.hybridMaeMoistureAfter, dd.hybridMaeTemperatureBefore,
-                                          dd.hybridMaeTemperatureAfter, dd.keptStartingModel));
+                                          dd.hybridMaeTemperatureAfter, dd.keptStartingModel, dd.references));
         !st) {
         return failWith(st.error());
     }

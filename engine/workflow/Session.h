@@ -14,6 +14,7 @@
 #include "hybrid/HybridModel.h"
 #include "hybrid/HybridTraining.h"
 #include "hybrid/ResidualDiagnostics.h"
+#include "io/ResultFiles.h"
 #include "plant/VirtualPlant.h"
 #include "training/TrainingScript.h"
 
@@ -146,6 +147,9 @@ struct DiscoverResult {
     /// PGRL-CC on the extended model lost to PGRL-CC on the starting one on the held-out part:
     /// extendedModel is then the starting model (h_HDT, k_HDT refitted) with its residual model.
     bool keptStartingModel = false;
+    /// On the same held-out rows: the last measurement held and the PBM with its last error held
+    /// (the forecasts PGRL-CC must beat to earn its place).
+    io::HybridReferences references;
     Ending ending;
 };
 

@@ -16,6 +16,7 @@
 #include <QTextBrowser>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <cmath>
 
 namespace drytwin::widgets {
 
@@ -508,6 +509,14 @@ void DiscoverPanel::show() {
             g.lowFrequencyShareAfter, QString());
         if (r->hasHybrid) {
             row(tr("MAE X_out (PGRL-CC)"), r->hybridMaeMoistureBefore, r->hybridMaeMoistureAfter, tr("% wb"));
+            // The forecasts PGRL-CC must beat to earn its place, on the same rows.
+            const auto& ref = r->references;
+            if (std::isfinite(ref.persistenceMoisture)) {
+                row(tr("MAE X_out (last value held)"), ref.persistenceMoisture, ref.persistenceMoisture,
+                    tr("% wb"));
+                row(tr("MAE X_out (physics, last error held)"), ref.pbmHoldMoistureBefore,
+                    ref.pbmHoldMoistureAfter, tr("% wb"));
+            }
         }
         m_gains->resizeColumnsToContents();
     }

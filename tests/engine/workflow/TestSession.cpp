@@ -382,6 +382,31 @@ private Q_SLOTS:
         QCOMPARE(ext.parameters[Param::k_HDT], r->discovery.parameters[Param::k_HDT]);
         QVERIFY(r->hasHybrid && ext.pgrlCc); // the residual model is retrained on the extended model
         QVERIFY(std::isfinite(r->hybridMaeMoistureAfter));
+        // The references PGRL-CC must beat are scored on the same held-out rows: the last
+        // measurement held does not depend on the model, so it is evaluate()'s persistence.
+        auto ev = s.evaluate();
+        QVERIFY2(ev.ok(), ev ? "" : ev.error().message().c_str());
+        const auto persistence = std::find_if(ev->evaluation.models.begin(), ev->evaluation.models.end(),
+                                              [](const auto& m) { return m.name == "persistence"; });
+        QVERIFY(persistence != ev->evaluation.models.end());
+        const auto& ref = r->references;
+        QCOMPARE(ref.persistenceMoisture, persistence->moisture.mae);
+        QCOMPARE(ref.persistenceTemperature, persistence->temperature.mae);
+        for (double mae : {ref.pbmHoldMoistureBefore, ref.pbmHoldMoistureAfter, ref.pbmHoldTemperatureBefore,
+                           ref.pbmHoldTemperatureAfter}) {
+            QVERIFY(std::isfinite(mae) && mae > 0);
+        }
+        // The JSON says whether the model offered for forecasting beats the better of the two.
+        const auto j = nlohmann::json::parse(io::discoveryJson(
+            r->discovery, r->hasHybrid, r->hybridMaeMoistureBefore, r->hybridMaeMoistureAfter,
+            r->hybridMaeTemperatureBefore, r->hybridMaeTemperatureAfter, r->keptStartingModel, ref));
+        const double offeredX = r->keptStartingModel ? r->hybridMaeMoistureBefore : r->hybridMaeMoistureAfter;
+        QCOMPARE(j["hybrid"]["references"]["persistence"]["mae_moisture"].get<double>(),
+                 ref.persistenceMoisture);
+        QCOMPARE(j["hybrid"]["beats_references"]["moisture"].get<bool>(),
+                 offeredX < std::min(ref.persistenceMoisture, r->keptStartingModel
+                                                                  ? ref.pbmHoldMoistureBefore
+                                                                  : ref.pbmHoldMoistureAfter));
         // Extended model files keep the mechanisms with their intervals.
         const std::string path = m_dir.filePath("extended.json").toStdString();
         QVERIFY(io::writeModelFile(ext, path).ok());
@@ -473,6 +498,9 @@ private Q_SLOTS:
                  r->discover.extendedModel.parameters[Param::k_HDT]);
         QCOMPARE(back->discover->extendedModel.pgrlCc != nullptr,
                  r->discover.extendedModel.pgrlCc != nullptr);
+        QCOMPARE(back->discover->references.persistenceMoisture, r->discover.references.persistenceMoisture);
+        QCOMPARE(back->discover->references.pbmHoldTemperatureAfter,
+                 r->discover.references.pbmHoldTemperatureAfter);
         QCOMPARE(back->evaluate->evaluation.models.back().moisture.mae,
                  r->evaluate.evaluation.models.back().moisture.mae);
         QCOMPARE(back->mpc->closedLoop.runs.front().xOutTruePct, r->mpc.closedLoop.runs.front().xOutTruePct);
