@@ -1753,62 +1753,80 @@
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="503"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="502"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="334"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="504"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="511"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="516"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="503"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="515"/>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="518"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="520"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="505"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="504"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="334"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="506"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="505"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="522"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="525"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="527"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="507"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="506"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="508"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="507"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="511"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="515"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="515"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="517"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="517"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="519"/>
         <source>MAE X_out (physics, last error held)</source>
-        <translation>MAE X_out（物理模型，保持上一误差）</translation>
+        <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="536"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="522"/>
+        <source>MAE T_out (PGRL-CC)</source>
+        <translation>MAE T_out（PGRL-CC）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="524"/>
+        <source>MAE T_out (last value held)</source>
+        <translation>MAE T_out（保持上一测量值）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="526"/>
+        <source>MAE T_out (physics, last error held)</source>
+        <translation>MAE T_out（机理，保持上一误差）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="544"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="537"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="545"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>

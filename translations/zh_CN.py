@@ -116,7 +116,10 @@ ZH = {
     "MAE T_out [°C]": "MAE T_out [°C]",
     "MAE X_out (PGRL-CC)": "MAE X_out（PGRL-CC）",
     "MAE X_out (last value held)": "MAE X_out（保持上一测量值）",
-    "MAE X_out (physics, last error held)": "MAE X_out（物理模型，保持上一误差）",
+    "MAE X_out (physics, last error held)": "MAE X_out（机理，保持上一误差）",
+    "MAE T_out (PGRL-CC)": "MAE T_out（PGRL-CC）",
+    "MAE T_out (last value held)": "MAE T_out（保持上一测量值）",
+    "MAE T_out (physics, last error held)": "MAE T_out（机理，保持上一误差）",
     "MAE X_out (physics)": "MAE X_out（机理）",
     "MAE X_out [% wb]": "MAE X_out [% 湿基]",
     "Make the extended model (named causes, refitted h_HDT and k_HDT, residual models retrained) the session's model":

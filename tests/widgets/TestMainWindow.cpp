@@ -467,6 +467,15 @@ private Q_SLOTS:
             QVERIFY2(evidence.contains(QStringLiteral("Round %1:").arg(i + 1)), qPrintable(evidence));
         }
         QVERIFY(curvesWithData(w.diagnosticsPanel()->crossCorrelation()->plot(0)) >= 1);
+        // The gains table puts PGRL-CC beside the forecasts it must beat, named or not.
+        QStringList gainRows;
+        for (int i = 0; i < disc->gains()->rowCount(); ++i) {
+            gainRows << disc->gains()->item(i, 0)->text();
+        }
+        QVERIFY2(gainRows.contains("MAE X_out (PGRL-CC)") &&
+                     gainRows.contains("MAE X_out (last value held)") &&
+                     gainRows.contains("MAE T_out (physics, last error held)"),
+                 qPrintable(gainRows.join(", ")));
         if (disc->extendButton()->isEnabled()) {
             const auto k =
                 w.workbench().latest().discover->extendedModel.parameters[properties::Param::k_HDT];
@@ -523,6 +532,7 @@ private Q_SLOTS:
                  w.discoverPanel()->evidence()->toPlainText());
         QVERIFY(w.discoverPanel()->verdict()->text().startsWith(reopened.discoverPanel()->verdict()->text()));
         QCOMPARE(reopened.discoverPanel()->ranking()->rowCount(), w.discoverPanel()->ranking()->rowCount());
+        QCOMPARE(reopened.discoverPanel()->gains()->rowCount(), w.discoverPanel()->gains()->rowCount());
         QCOMPARE(reopened.mpcPanel()->table()->rowCount(), 5);
         QVERIFY(curvesWithData(reopened.mpcPanel()->plots()->plot(0)) >= 3);
         QCOMPARE(reopened.calibrationPanel()->estimates()->rowCount(), 3);

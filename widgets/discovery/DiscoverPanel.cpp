@@ -491,15 +491,14 @@ void DiscoverPanel::show() {
     }
     m_evidence->setHtml(html.isEmpty() ? tr("<p>No structure that a mechanism explains.</p>") : html);
     m_gains->setRowCount(0);
+    const auto row = [&](const QString& what, double before, double after, const QString& unit) {
+        const int r2 = m_gains->rowCount();
+        m_gains->insertRow(r2);
+        const QStringList cells{what, QString::number(before, 'g', 4), QString::number(after, 'g', 4), unit};
+        setTableRow(m_gains, r2, cells);
+    };
     if (!d.findings.empty()) {
         const auto& g = d.findings.back().gain;
-        const auto row = [&](const QString& what, double before, double after, const QString& unit) {
-            const int r2 = m_gains->rowCount();
-            m_gains->insertRow(r2);
-            const QStringList cells{what, QString::number(before, 'g', 4), QString::number(after, 'g', 4),
-                                    unit};
-            setTableRow(m_gains, r2, cells);
-        };
         row(tr("MAE X_out (physics)"), d.findings.front().gain.maeMoistureBefore, g.maeMoistureAfter,
             tr("% wb"));
         row(tr("MAE T_out (physics)"), d.findings.front().gain.maeTemperatureBefore, g.maeTemperatureAfter,
@@ -507,19 +506,28 @@ void DiscoverPanel::show() {
         row(tr("R² X_out"), d.findings.front().gain.r2MoistureBefore, g.r2MoistureAfter, QString());
         row(tr("low-frequency share"), d.findings.front().gain.lowFrequencyShareBefore,
             g.lowFrequencyShareAfter, QString());
-        if (r->hasHybrid) {
-            row(tr("MAE X_out (PGRL-CC)"), r->hybridMaeMoistureBefore, r->hybridMaeMoistureAfter, tr("% wb"));
-            // The forecasts PGRL-CC must beat to earn its place, on the same rows.
-            const auto& ref = r->references;
-            if (std::isfinite(ref.persistenceMoisture)) {
-                row(tr("MAE X_out (last value held)"), ref.persistenceMoisture, ref.persistenceMoisture,
-                    tr("% wb"));
-                row(tr("MAE X_out (physics, last error held)"), ref.pbmHoldMoistureBefore,
-                    ref.pbmHoldMoistureAfter, tr("% wb"));
-            }
-        }
-        m_gains->resizeColumnsToContents();
     }
+    // PGRL-CC on each physics model, and the forecasts it must beat to earn its place on the same
+    // rows, also where nothing was named (then before and after are the same model).
+    if (r->hasHybrid) {
+        const auto& ref = r->references;
+        const bool references = std::isfinite(ref.persistenceMoisture);
+        row(tr("MAE X_out (PGRL-CC)"), r->hybridMaeMoistureBefore, r->hybridMaeMoistureAfter, tr("% wb"));
+        if (references) {
+            row(tr("MAE X_out (last value held)"), ref.persistenceMoisture, ref.persistenceMoisture,
+                tr("% wb"));
+            row(tr("MAE X_out (physics, last error held)"), ref.pbmHoldMoistureBefore,
+                ref.pbmHoldMoistureAfter, tr("% wb"));
+        }
+        row(tr("MAE T_out (PGRL-CC)"), r->hybridMaeTemperatureBefore, r->hybridMaeTemperatureAfter, tr("°C"));
+        if (references) {
+            row(tr("MAE T_out (last value held)"), ref.persistenceTemperature, ref.persistenceTemperature,
+                tr("°C"));
+            row(tr("MAE T_out (physics, last error held)"), ref.pbmHoldTemperatureBefore,
+                ref.pbmHoldTemperatureAfter, tr("°C"));
+        }
+    }
+    m_gains->resizeColumnsToContents();
     m_plots->clearCurves();
     const auto curve = [&](const std::vector<discovery::OutputResidual>& rs, const QColor& colour,
                            const QString& name) {
