@@ -165,10 +165,10 @@ int main(int argc, char** argv) {
             discoveryOptions.candidatesToFit = std::atoi(next.c_str());
             ++i;
         } else {
-            std::fprintf(stderr,
-                         "usage: study_discovery [--quick] [--plant distributed|lumped] "
-                         "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
-                         "[--mechanism NAME] [--verbose] [--null-seeds FIRST] [--min-explained SHARE] [--candidates N]\n");
+            std::fprintf(stderr, "usage: study_discovery [--quick] [--plant distributed|lumped] "
+                                 "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
+                                 "[--mechanism NAME] [--verbose] [--null-seeds FIRST] [--min-explained "
+                                 "SHARE] [--candidates N]\n");
             return 2;
         }
     }

@@ -282,28 +282,23 @@ Expected<LatestResults> parseLatestResults(const std::string& text, const std::s
             d.at("discovery").get_to(out.discovery);
             out.extendedModel = std::move(*model);
             out.hasHybrid = d.value("has_hybrid", false);
-            const auto pair = [&](const char* key, double& before, double& after) {
-                if (d.contains(key) && d[key].is_array() && d[key].size() == 2) {
-                    before = d[key][0].get<double>();
-                    after = d[key][1].get<double>();
+            // Two numbers under one key (before and after, or moisture and temperature); a key
+            // missing (an older archive) leaves them as they are (NaN for the references).
+            const auto pair = [](const json& from, const char* key, double& first, double& second) {
+                if (from.contains(key) && from[key].is_array() && from[key].size() == 2) {
+                    first = from[key][0].get<double>();
+                    second = from[key][1].get<double>();
                 }
             };
-            pair("hybrid_mae_moisture", out.hybridMaeMoistureBefore, out.hybridMaeMoistureAfter);
-            pair("hybrid_mae_temperature", out.hybridMaeTemperatureBefore, out.hybridMaeTemperatureAfter);
+            pair(d, "hybrid_mae_moisture", out.hybridMaeMoistureBefore, out.hybridMaeMoistureAfter);
+            pair(d, "hybrid_mae_temperature", out.hybridMaeTemperatureBefore, out.hybridMaeTemperatureAfter);
             out.keptStartingModel = d.value("kept_starting_model", false);
-            if (d.contains("hybrid_references") &&
-                d["hybrid_references"].is_object()) { // older archives: NaN
-                const json refs = d["hybrid_references"];
-                const auto refPair = [&](const char* key, double& first, double& second) {
-                    if (refs.contains(key) && refs[key].is_array() && refs[key].size() == 2) {
-                        first = refs[key][0].get<double>();
-                        second = refs[key][1].get<double>();
-                    }
-                };
+            if (d.contains("hybrid_references") && d["hybrid_references"].is_object()) {
+                const json& refs = d["hybrid_references"];
                 auto& ref = out.references;
-                refPair("persistence", ref.persistenceMoisture, ref.persistenceTemperature);
-                refPair("pbm_hold_moisture", ref.pbmHoldMoistureBefore, ref.pbmHoldMoistureAfter);
-                refPair("pbm_hold_temperature", ref.pbmHoldTemperatureBefore, ref.pbmHoldTemperatureAfter);
+                pair(refs, "persistence", ref.persistenceMoisture, ref.persistenceTemperature);
+                pair(refs, "pbm_hold_moisture", ref.pbmHoldMoistureBefore, ref.pbmHoldMoistureAfter);
+                pair(refs, "pbm_hold_temperature", ref.pbmHoldTemperatureBefore, ref.pbmHoldTemperatureAfter);
             }
             d.at("ending").get_to(out.ending);
             r.discover = std::move(out);

@@ -512,19 +512,24 @@ void DiscoverPanel::show() {
     if (r->hasHybrid) {
         const auto& ref = r->references;
         const bool references = std::isfinite(ref.persistenceMoisture);
-        row(tr("MAE X_out (PGRL-CC)"), r->hybridMaeMoistureBefore, r->hybridMaeMoistureAfter, tr("% wb"));
-        if (references) {
-            row(tr("MAE X_out (last value held)"), ref.persistenceMoisture, ref.persistenceMoisture,
-                tr("% wb"));
-            row(tr("MAE X_out (physics, last error held)"), ref.pbmHoldMoistureBefore,
-                ref.pbmHoldMoistureAfter, tr("% wb"));
-        }
-        row(tr("MAE T_out (PGRL-CC)"), r->hybridMaeTemperatureBefore, r->hybridMaeTemperatureAfter, tr("°C"));
-        if (references) {
-            row(tr("MAE T_out (last value held)"), ref.persistenceTemperature, ref.persistenceTemperature,
-                tr("°C"));
-            row(tr("MAE T_out (physics, last error held)"), ref.pbmHoldTemperatureBefore,
-                ref.pbmHoldTemperatureAfter, tr("°C"));
+        struct Forecasts {
+            QString pgrlCc, lastValue, lastError, unit;
+            double before, after, persistence, holdBefore, holdAfter;
+        };
+        for (const Forecasts& f :
+             {Forecasts{tr("MAE X_out (PGRL-CC)"), tr("MAE X_out (last value held)"),
+                        tr("MAE X_out (physics, last error held)"), tr("% wb"), r->hybridMaeMoistureBefore,
+                        r->hybridMaeMoistureAfter, ref.persistenceMoisture, ref.pbmHoldMoistureBefore,
+                        ref.pbmHoldMoistureAfter},
+              Forecasts{tr("MAE T_out (PGRL-CC)"), tr("MAE T_out (last value held)"),
+                        tr("MAE T_out (physics, last error held)"), tr("°C"), r->hybridMaeTemperatureBefore,
+                        r->hybridMaeTemperatureAfter, ref.persistenceTemperature,
+                        ref.pbmHoldTemperatureBefore, ref.pbmHoldTemperatureAfter}}) {
+            row(f.pgrlCc, f.before, f.after, f.unit);
+            if (references) {
+                row(f.lastValue, f.persistence, f.persistence, f.unit);
+                row(f.lastError, f.holdBefore, f.holdAfter, f.unit);
+            }
         }
     }
     m_gains->resizeColumnsToContents();
