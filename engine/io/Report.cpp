@@ -365,6 +365,27 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
                       : std::string()) +
                  "\n";
         }
+        // PGRL-CC retrained on each physics model beside the forecasts it must beat (same rows).
+        if (d.contains("hybrid") && d["hybrid"].contains("references")) {
+            const auto& h = d["hybrid"];
+            const auto& persistence = h["references"]["persistence"];
+            const auto& held = h["references"]["pbm_residual_hold"];
+            r += "\nOne step ahead on the held-out part, starting → extended physics model (model written: " +
+                 h.value("model_kept", std::string()) +
+                 "):\n\n| forecast | MAE X_out [% wb] | MAE T_out [°C] |\n| --- | --- | --- |\n"
+                 "| PGRL-CC retrained on each | " +
+                 num(h["mae_moisture_before"]) + " → " + num(h["mae_moisture_after"]) + " | " +
+                 num(h["mae_temperature_before"]) + " → " + num(h["mae_temperature_after"]) +
+                 " |\n| the last measurement held | " + num(persistence["mae_moisture"]) + " | " +
+                 num(persistence["mae_temperature"]) + " |\n| the PBM with its last error held | " +
+                 num(held["mae_moisture_before"]) + " → " + num(held["mae_moisture_after"]) + " | " +
+                 num(held["mae_temperature_before"]) + " → " + num(held["mae_temperature_after"]) + " |\n\n";
+            const auto& beats = h["beats_references"];
+            r += std::string("PGRL-CC on the model written ") +
+                 (beats.value("moisture", false) ? "beats" : "does **not** beat") +
+                 " the better reference in X_out and " +
+                 (beats.value("temperature", false) ? "beats" : "does **not** beat") + " it in T_out.\n";
+        }
         for (const auto& rd : d["rounds"]) {
             if (!rd.value("named", false)) {
                 r += "\nSelection stopped: " + rd.value("best", std::string()) +

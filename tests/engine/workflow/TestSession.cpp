@@ -485,6 +485,13 @@ private Q_SLOTS:
                  r->mpc.closedLoop.runs.front().metrics.iaePctS);
         QVERIFY(mpc["controllers"].contains("pi") && mpc["controllers"].contains("pgrl_cc"));
         QVERIFY(report->find("Closed-loop MPC (paper Table 2)") != std::string::npos);
+        // Discovery's section puts PGRL-CC beside the two references, with the numbers of discover.json.
+        const auto disc = nlohmann::json::parse(*readWholeFile(p.outFolder + "/discover.json"));
+        const double persistenceX = disc["hybrid"]["references"]["persistence"]["mae_moisture"].get<double>();
+        QVERIFY(persistenceX > 0);
+        char row[96];
+        std::snprintf(row, sizeof row, "| the last measurement held | %.4g | ", persistenceX);
+        QVERIFY2(report->find(row) != std::string::npos, row);
 
         // A project keeps these results (issue #26): the archive reads back into the same structs,
         // NaN included, and writes the same text again.
