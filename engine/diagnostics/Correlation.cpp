@@ -9,7 +9,7 @@ namespace drytwin::diagnostics {
 
 // Direct O(n·maxLag) sums: for the lag counts used here (≤ a few hundred) they are exact
 // and as fast as an FFT-based estimate, and they avoid FFT round-off in the fixtures' 1e-9 check.
-std::vector<double> autocorrelation(const std::vector<double>& x, int maxLag) {
+std::vector<double> autocorrelation(const std::vector<double>& x, int maxLag, double stopBelow) {
     const std::size_t n = x.size();
     const int lags = std::max(0, std::min<int>(maxLag, static_cast<int>(n) - 1));
     std::vector<double> out(static_cast<std::size_t>(lags) + 1, 0.0);
@@ -27,6 +27,10 @@ std::vector<double> autocorrelation(const std::vector<double>& x, int maxLag) {
             s += (x[t] - m) * (x[t + static_cast<std::size_t>(k)] - m);
         }
         out[static_cast<std::size_t>(k)] = denom > 0 ? s / denom : 0.0;
+        if (k > 0 && stopBelow > 0 && !(std::abs(out[static_cast<std::size_t>(k)]) >= stopBelow)) {
+            out.resize(static_cast<std::size_t>(k) + 1);
+            break;
+        }
     }
     return out;
 }

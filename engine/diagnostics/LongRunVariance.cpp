@@ -1,6 +1,6 @@
 #include "diagnostics/LongRunVariance.h"
 
-#include "diagnostics/Metrics.h"
+#include "diagnostics/Correlation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -35,24 +35,11 @@ double longRunVariance(const std::vector<double>& x, int lag, bool demean) {
 
 int bandwidthFromAutocorrelation(const std::vector<double>& x, double threshold, int maxLag) {
     maxLag = std::max(1, std::min(maxLag, static_cast<int>(x.size()) / 2));
-    // autocorrelation()'s values lag by lag, stopping at the first below the threshold: the
-    // bandwidth is usually a few lags of a maxLag in the hundreds, and discovery asks for it
-    // thousands of times (it was a tenth of `drytwin discover`'s time on the demo).
-    const std::size_t n = x.size();
-    const int lags = std::max(0, std::min<int>(maxLag, static_cast<int>(n) - 1));
-    const double m = n ? mean(x) : 0.0;
-    double denom = 0;
-    for (double v : x) {
-        denom += (v - m) * (v - m);
-    }
-    for (int l = 1; l <= lags; ++l) {
-        const auto k = static_cast<std::size_t>(l);
-        double s = 0;
-        for (std::size_t t = 0; t + k < n; ++t) {
-            s += (x[t] - m) * (x[t + k] - m);
-        }
-        const double acf = denom > 0 ? s / denom : 0.0;
-        if (!(std::abs(acf) >= threshold)) {
+    // Computed only up to the first lag below the threshold (discovery asks for this thousands of
+    // times; the whole autocorrelation up to maxLag was a tenth of `drytwin discover`'s time).
+    const auto acf = autocorrelation(x, maxLag, threshold);
+    for (int l = 1; l < static_cast<int>(acf.size()); ++l) {
+        if (!(std::abs(acf[static_cast<std::size_t>(l)]) >= threshold)) {
             return l;
         }
     }
