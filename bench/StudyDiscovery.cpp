@@ -6,7 +6,8 @@
 // Run: build/bench/study_discovery [--quick] [--plant distributed|lumped] [--sensors realistic|ideal|default]
 //      [--part mechanisms|nulls|onsets] [--mechanism NAME (e.g. moisture_meter_lag)] [--verbose]
 //      [--null-seeds FIRST (20 seeds from it; default 201)] [--min-explained SHARE (default 0.15)]
-//      [--candidates N (fitted per round; default 3)]
+//      [--candidates N (fitted per round; default 3)] [--seeds FIRST (mechanism runs' three seeds;
+//      default 101, onsets FIRST+100)] [--unimproved-alpha A (default 0.05; 1: the rule before)]
 // (lumped, its built-in sensors: about 8 min on 2 cores; --quick: one seed). The default plant is
 // the distributed one with realistic sensors (issue #22), whose nulls include its own structure.
 #include "discovery/Discovery.h"
@@ -132,6 +133,9 @@ int main(int argc, char** argv) {
     // The nulls' seeds: 201-220 by default; other seeds choose a setting on nulls the study's
     // own nulls then judge (never choose it on the runs that report it).
     unsigned firstNullSeed = 201;
+    // The mechanism runs' seeds (three from it; the onsets add 100): 101 by default, others to
+    // choose a setting on runs the study does not report.
+    unsigned firstSeed = 101;
     plant::PlantKind kind = plant::PlantKind::Distributed;
     plant::SensorMode sensors = plant::SensorMode::Default;
     for (int i = 1; i < argc; ++i) {
@@ -158,6 +162,12 @@ int main(int argc, char** argv) {
         } else if (a == "--null-seeds" && std::atoi(next.c_str()) > 0) {
             firstNullSeed = static_cast<unsigned>(std::atoi(next.c_str()));
             ++i;
+        } else if (a == "--seeds" && std::atoi(next.c_str()) > 0) {
+            firstSeed = static_cast<unsigned>(std::atoi(next.c_str()));
+            ++i;
+        } else if (a == "--unimproved-alpha" && std::atof(next.c_str()) > 0 && std::atof(next.c_str()) <= 1) {
+            discoveryOptions.unimprovedChannelAlpha = std::atof(next.c_str());
+            ++i;
         } else if (a == "--min-explained" && std::atof(next.c_str()) >= 0 && std::atof(next.c_str()) < 1) {
             discoveryOptions.minExplainedFraction = std::atof(next.c_str());
             ++i;
@@ -167,8 +177,8 @@ int main(int argc, char** argv) {
         } else {
             std::fprintf(stderr, "usage: study_discovery [--quick] [--plant distributed|lumped] "
                                  "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
-                                 "[--mechanism NAME] [--verbose] [--null-seeds FIRST] [--min-explained "
-                                 "SHARE] [--candidates N]\n");
+                                 "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
+                                 "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N]\n");
             return 2;
         }
     }
@@ -185,7 +195,7 @@ int main(int argc, char** argv) {
     std::printf("A named cause removes at least %.0f %% of the held-out error left (or of its fast part); "
                 "nulls from seed %u.\n\n",
                 100 * discoveryOptions.minExplainedFraction, firstNullSeed);
-    const unsigned seeds[] = {101, 102, 103};
+    const unsigned seeds[] = {firstSeed, firstSeed + 1, firstSeed + 2};
     const int nSeeds = quick ? 1 : 3;
     // A realistic strength, and half of it (the sensor causes: the plant's typical value and twice
     // it, since half would be within the instruments' stated accuracy).

@@ -384,8 +384,19 @@ std::array<ChannelChange, 4> channelChanges(const HeldOut& before, const HeldOut
         ch.mseAfter = sumAfter / static_cast<double>(n);
         const double var = hacVarianceOfSum(d, true);
         ch.pWorse = var > 0 ? upperTail(sumD / std::sqrt(var)) : (sumD > 0 ? 0.0 : 1.0);
+        ch.changeSe = var > 0 ? std::sqrt(var) / static_cast<double>(n) : 0.0;
     }
     return out;
+}
+
+double unimprovedChannelP(const ChannelChange& change, double effectMeanSquare) {
+    if (!(change.changeSe > 0)) {
+        return 0.0;
+    }
+    // Right on this channel, the cause's effect d would remove itself from the error: the mean
+    // square falls by about mean(d²) (the rest of the error being unrelated to d).
+    const double expectedChange = -effectMeanSquare;
+    return upperTail((change.mseAfter - change.mseBefore - expectedChange) / change.changeSe);
 }
 
 namespace {

@@ -23,6 +23,9 @@ Status DiscoveryOptions::validate() const {
         !(minExplainedFraction >= 0 && minExplainedFraction < 1)) {
         return invalidOption("alpha", "test levels must lie in (0, 0.5), the explained share in [0, 1)");
     }
+    if (!(unimprovedChannelAlpha > 0 && unimprovedChannelAlpha <= 1)) {
+        return invalidOption("unimproved-channel level", "must lie in (0, 1]");
+    }
     if (!(fastBandWindowS == 0 || (fastBandWindowS >= 10 && fastBandWindowS <= 1e5))) {
         return invalidOption("fast-band window", "must be 0 (off) or lie in [10, 1e5] s");
     }

@@ -41,6 +41,10 @@ struct DiscoveryOptions {
     /// Compensation: a cause that raises any measured channel's held-out squared error by more
     /// than this share (and significantly, one-sided p < 0.05) while lowering another's is not named.
     double maxChannelWorsening = 0.05;
+    /// A channel the cause acts on whose held-out error does not fall counts against it when the
+    /// fall its own effect predicts is missed significantly: one-sided p below this. 1: any such
+    /// channel turns it down, however noisy (the rule before 2026-11-25).
+    double unimprovedChannelAlpha = 0.05;
     /// Per-batch consistency: a batch's estimate may differ from the pooled value by its 95 %
     /// interval plus this share of the pooled value (the plant's forms are not the model's).
     double consistencyTolerance = 0.5;

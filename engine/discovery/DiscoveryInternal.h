@@ -122,9 +122,15 @@ double heldOutPValue(const HeldOut& worse, const HeldOut& better);
 /// worse than @p before on it; NaN where the channel is not measured.
 struct ChannelChange {
     double mseBefore = 0, mseAfter = 0, pWorse = 1;
+    double changeSe = 0; ///< HAC standard error of mseAfter − mseBefore (0: unknown)
     bool measured = false;
 };
 std::array<ChannelChange, 4> channelChanges(const HeldOut& before, const HeldOut& after);
+/// A channel a cause acts on, whose held-out error did not fall: the one-sided p that the fall
+/// its own effect predicts (its weighted mean square @p effectMeanSquare, were the cause right on
+/// that channel) was missed by chance. Small: the channel had the power to show the cause and did
+/// not. Where the change's standard error is unknown, 0 (the channel counts against the cause).
+double unimprovedChannelP(const ChannelChange& change, double effectMeanSquare);
 
 /// Question 1 for every measured channel, over all kept rows of every batch.
 std::vector<OutputResidual> analyse(const Problem& pr, const std::vector<physics::SimulationResult>& sims);

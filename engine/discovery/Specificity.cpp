@@ -294,6 +294,7 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
     // does to it.
     const auto& floors = in.pr.options.floors;
     std::array<bool, 4> actsOn{};
+    std::array<double, 4> effectMs{}; // the cause's own effect, weighted mean square per channel
     for (int c = 0; c < 4; ++c) {
         double sum = 0;
         std::size_t n = 0;
@@ -306,19 +307,33 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
             }
         }
         const double w = std::max(1e-12, channelWeight(in.pr.options.weights, c));
-        const double rms = n ? std::sqrt(sum / static_cast<double>(n) / w) : 0.0;
+        effectMs[static_cast<std::size_t>(c)] = n ? sum / static_cast<double>(n) : 0.0;
+        const double rms = std::sqrt(effectMs[static_cast<std::size_t>(c)] / w);
         actsOn[static_cast<std::size_t>(c)] =
             rms > (c == kXOut || c == kXHdt ? floors.moistureEffectPct : floors.temperatureEffectK);
     }
     const auto changes = channelChanges(in.before, in.after);
     // Every channel it acts on must improve: a conveyor delay shifts moisture and temperature
     // alike, and one that helps the temperature while the moisture gets worse is some other
-    // timing error of the line.
+    // timing error of the line. "Does not improve" is evidence only where the data could have
+    // shown the improvement: were the cause right on that channel, its own effect d would have
+    // removed itself from the error, lowering the mean square by about mean(d²). A channel whose
+    // error did not fall is held against the cause when that shortfall is significant (one-sided,
+    // HAC standard error of the change); where the channel's noise hides an effect of that size,
+    // the channel cannot judge it (a 30 s hot-air sensor lag moves the outlet temperature by a
+    // tenth of a kelvin under 0.6 K of the line's own error). Its raising the error
+    // significantly is compensation either way (worsenedChannel).
     int notImproved = -1;
+    double shortfallP = 1;
     for (int c = 0; c < 4 && notImproved < 0; ++c) {
         const auto& ch = changes[static_cast<std::size_t>(c)];
-        if (actsOn[static_cast<std::size_t>(c)] && ch.measured && !(ch.mseAfter < ch.mseBefore)) {
+        if (!actsOn[static_cast<std::size_t>(c)] || !ch.measured || ch.mseAfter < ch.mseBefore) {
+            continue;
+        }
+        const double p = unimprovedChannelP(ch, effectMs[static_cast<std::size_t>(c)]);
+        if (p < in.pr.options.unimprovedChannelAlpha) {
             notImproved = c;
+            shortfallP = p;
         }
     }
     const int worse = worsenedChannel(in.before, in.after, in.pr.options, actsOn);
@@ -330,9 +345,11 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
         out.why =
             format(worse >= 0 ? "it lowers the error overall but raises the held-out rms error of %s from "
                                 "%.3g to %.3g %s: compensation, not a cause"
-                              : "it acts on %s but does not improve it (held-out rms error %.3g to %.3g %s): "
-                                "not this cause",
-                   kChannelName[c], std::sqrt(ch.mseBefore / w), std::sqrt(ch.mseAfter / w), kChannelUnit[c]);
+                              : "it acts on %s but does not improve it (held-out rms error %.3g to %.3g %s, "
+                                "where its own effect of %.3g %s rms should have lowered it; p = %.2g): not "
+                                "this cause",
+                   kChannelName[c], std::sqrt(ch.mseBefore / w), std::sqrt(ch.mseAfter / w), kChannelUnit[c],
+                   std::sqrt(effectMs[static_cast<std::size_t>(c)] / w), kChannelUnit[c], shortfallP);
     } else if (auto floor =
                    belowFloor(in.pr, in.parameter, in.value, in.meanBatchHours, *withoutIt, in.after);
                !floor.empty()) {

@@ -1,0 +1,92 @@
+// Compensation's "does not improve" half (issue #23): a channel a cause acts on whose held-out
+// error did not fall counts against the cause only where the channel could have shown the fall the
+// cause's own effect predicts. Synthetic held-out errors with known effect sizes and serially
+// correlated noise (as a line's error is), so the HAC standard error matters.
+#include "discovery/DiscoveryInternal.h"
+
+#include <QtTest>
+#include <cmath>
+#include <random>
+
+using namespace drytwin::discovery::detail;
+
+namespace {
+
+constexpr int kChannel = 1; // the outlet temperature's slot; any channel is judged alike
+
+/// Three test batches of 2,000 rows each: AR(1) noise of rms @p noise (φ = 0.9) and @p removed
+/// times a slow wave of rms 1 in "before" (the part of the cause's effect that is in the error);
+/// "after" has the noise and @p added times the wave (what the fitted effect put there that the
+/// line does not have).
+std::pair<HeldOut, HeldOut> heldOutPair(double noise, double removed, double added, unsigned seed) {
+    constexpr std::size_t rows = 2000;
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> z(0, 1);
+    HeldOut before, after;
+    for (int b = 0; b < 3; ++b) {
+        before.channels.emplace_back();
+        after.channels.emplace_back();
+        auto& e0 = before.channels.back()[kChannel].weightedError;
+        auto& e1 = after.channels.back()[kChannel].weightedError;
+        double ar = 0;
+        for (std::size_t i = 0; i < rows; ++i) {
+            ar = 0.9 * ar + std::sqrt(1 - 0.81) * z(rng);
+            // The effect: a slow wave, as a sensor's lag leaves in the outlet temperature.
+            const double wave = std::sqrt(2.0) * std::sin(2 * M_PI * static_cast<double>(i) / 400);
+            e0.push_back(noise * ar + removed * wave);
+            e1.push_back(noise * ar + added * wave);
+        }
+    }
+    return {before, after};
+}
+
+} // namespace
+
+class TestChannelJudgement : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void changesCarryTheirStandardError() {
+        const auto [before, after] = heldOutPair(1.0, 0.0, 0.0, 1);
+        const auto ch = channelChanges(before, after)[kChannel];
+        QVERIFY(ch.measured);
+        QCOMPARE(ch.mseAfter, ch.mseBefore);         // nothing changed
+        QCOMPARE(ch.changeSe, 0.0);                  // and the change has no spread
+        QCOMPARE(unimprovedChannelP(ch, 0.25), 0.0); // no spread: the channel counts against it
+        QVERIFY(!channelChanges(before, after)[0].measured);
+    }
+
+    void aLargeEffectThatMissesCountsAgainstTheCause() {
+        // The fitted effect (rms 0.5 against an error of 1) is not in the data at all: it adds
+        // itself to the error. The channel had every chance to show it.
+        const auto [before, after] = heldOutPair(1.0, 0.0, 0.5, 2);
+        const auto ch = channelChanges(before, after)[kChannel];
+        QVERIFY(ch.mseAfter > ch.mseBefore);
+        const double p = unimprovedChannelP(ch, 0.25);
+        QVERIFY2(p < 1e-6, qPrintable(QString::number(p)));
+    }
+
+    void aSmallEffectUnderNoiseCannotBeJudged() {
+        // The same miss with an effect of rms 0.05 under an error of rms 3 (a tenth of a kelvin
+        // against the line's own error): the fall a right cause would bring (0.0025) is within
+        // the change's noise, so this channel cannot judge the cause either way.
+        const auto [before, after] = heldOutPair(3.0, 0.0, 0.05, 3);
+        const auto ch = channelChanges(before, after)[kChannel];
+        QVERIFY(ch.changeSe > 0);
+        const double p = unimprovedChannelP(ch, 0.05 * 0.05);
+        QVERIFY2(p > 0.05, qPrintable(QString::number(p)));
+    }
+
+    void theRightCauseMeetsItsPrediction() {
+        // A cause right on the channel removes its own effect: the change is what it predicts,
+        // within its noise, and a shortfall is not significant.
+        const auto [before, after] = heldOutPair(1.0, 0.5, 0.0, 4);
+        const auto ch = channelChanges(before, after)[kChannel];
+        QVERIFY(ch.mseAfter < ch.mseBefore);
+        QVERIFY(std::abs((ch.mseBefore - ch.mseAfter) - 0.25) < 3 * ch.changeSe);
+        const double p = unimprovedChannelP(ch, 0.25);
+        QVERIFY2(p > 0.01, qPrintable(QString::number(p)));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestChannelJudgement)
+#include "TestChannelJudgement.moc"
