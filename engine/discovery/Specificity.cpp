@@ -320,8 +320,8 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
     // removed itself from the error, lowering the mean square by about mean(d²). A channel whose
     // error did not fall is held against the cause when that shortfall is significant (one-sided,
     // HAC standard error of the change); where the channel's noise hides an effect of that size,
-    // the channel cannot judge it (a 30 s hot-air sensor lag moves the outlet temperature by a
-    // tenth of a kelvin under 0.6 K of the line's own error). Its raising the error
+    // the channel cannot judge it (a 30 s hot-air sensor lag moves the outlet temperature by
+    // 0.2 K rms under 0.6-0.7 K of the line's own error). Its raising the error
     // significantly is compensation either way (worsenedChannel).
     int notImproved = -1;
     double shortfallP = 1;
@@ -342,14 +342,18 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
         const auto& ch = changes[static_cast<std::size_t>(c)];
         const double w = std::max(1e-12, channelWeight(in.pr.options.weights, c));
         out.code = "compensation";
+        const double rmsBefore = std::sqrt(ch.mseBefore / w);
+        const double rmsAfter = std::sqrt(ch.mseAfter / w);
         out.why =
-            format(worse >= 0 ? "it lowers the error overall but raises the held-out rms error of %s from "
-                                "%.3g to %.3g %s: compensation, not a cause"
-                              : "it acts on %s but does not improve it (held-out rms error %.3g to %.3g %s, "
-                                "where its own effect of %.3g %s rms should have lowered it; p = %.2g): not "
-                                "this cause",
-                   kChannelName[c], std::sqrt(ch.mseBefore / w), std::sqrt(ch.mseAfter / w), kChannelUnit[c],
-                   std::sqrt(effectMs[static_cast<std::size_t>(c)] / w), kChannelUnit[c], shortfallP);
+            worse >= 0
+                ? format("it lowers the error overall but raises the held-out rms error of %s from "
+                         "%.3g to %.3g %s: compensation, not a cause",
+                         kChannelName[c], rmsBefore, rmsAfter, kChannelUnit[c])
+                : format("it acts on %s but does not improve it (held-out rms error %.3g to %.3g "
+                         "%s, where its own effect of %.3g %s rms should have lowered it; p = "
+                         "%.2g): not this cause",
+                         kChannelName[c], rmsBefore, rmsAfter, kChannelUnit[c],
+                         std::sqrt(effectMs[static_cast<std::size_t>(c)] / w), kChannelUnit[c], shortfallP);
     } else if (auto floor =
                    belowFloor(in.pr, in.parameter, in.value, in.meanBatchHours, *withoutIt, in.after);
                !floor.empty()) {
