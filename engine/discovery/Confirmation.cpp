@@ -1,6 +1,7 @@
 // Question 3, its confirmatory half: a candidate that fits the training part is named only when
 // it predicts clearly better on the held-out part and is specific; and where a meter lag and a
-// transport-time error compete, the outlet channels tell them apart.
+// transport-time error compete, the outlet channels tell them apart; its look-alikes; and the end
+// of selection (the findings restated at the extended model, bounds, what is left).
 #include "discovery/DiscoveryInternal.h"
 
 #include <algorithm>
@@ -112,6 +113,20 @@ ChannelTiming channelTiming(const Problem& pr, double currentDelayS, double mois
     return out;
 }
 
+std::string lineDynamicsReason(const ChannelTiming& timing) {
+    return format("the outlet temperature answers %.3g s later than the model, the moisture only %.3g s "
+                  "(within a meter's normal response of %.3g s): the line's thermal dynamics (product heat "
+                  "capacity, pyrometer), neither a transport time (it delays both) nor a meter lag (the "
+                  "moisture alone)",
+                  timing.temperatureDelayS, timing.moistureDelayS, timing.moistureFloorS);
+}
+
+std::string moistureLaterReason(const ChannelTiming& timing) {
+    return format("the moisture answers %.3g s later than the model and the outlet temperature %.3g s "
+                  "(p = %.2g): a transport time delays both alike",
+                  timing.moistureDelayS, timing.temperatureDelayS, timing.pValue);
+}
+
 Expected<ChannelTiming> timeOutletChannels(const Problem& pr, const ParameterSet& current, double startDelayS,
                                            const DelayFit& fitDelay) {
     double delay[2] = {0, 0};
@@ -139,6 +154,49 @@ Expected<ChannelTiming> timeOutletChannels(const Problem& pr, const ParameterSet
     return channelTiming(pr, current[Param::dtau_conv], delay[0], delay[1], *held[0], *held[1]);
 }
 
+Status addLookAlikes(const Problem& pr, Finding& f, const std::vector<Param>& remaining,
+                     const PlaceFit& fitInPlace, const HeldOut& namedHeld,
+                     const std::optional<ChannelTiming>& timing) {
+    const LookAlikeGroup* group = lookAlikeGroupOf(f.parameter);
+    if (!group) {
+        return {};
+    }
+    for (Param other : group->members) {
+        if (other == f.parameter || std::find(remaining.begin(), remaining.end(), other) == remaining.end()) {
+            continue; // itself, or already part of the model
+        }
+        auto fitted = fitInPlace(other);
+        if (!fitted) {
+            return fitted.error();
+        }
+        if (!*fitted) {
+            continue; // its fit failed: no evidence either way
+        }
+        auto l = compareLookAlike(pr, other, **fitted, namedHeld, pr.options);
+        if (!l) {
+            return l.error();
+        }
+        if (timing) {
+            l->byChannels = true;
+            l->moistureDelayS = timing->moistureDelayS;
+            l->temperatureDelayS = timing->temperatureDelayS;
+            l->pValue = timing->pValue;
+            // The moisture later: not a transport time. Otherwise either: a group.
+            l->ruledOut = timing->pattern == ChannelTiming::Pattern::MoistureLater;
+        }
+        if (!l->ruledOut) {
+            f.group = group->name;
+            f.tellApart = group->tellApart;
+        }
+        f.lookAlikes.push_back(*l);
+    }
+    return {};
+}
+
+namespace {
+
+/// Every finding at the extended model's value, its interval from the score of the final fit
+/// (the others held as nuisance); later rounds refit the causes named before.
 void restateAtExtendedModel(const Problem& pr, const ParameterSet& extended,
                             const std::vector<Param>& nuisance, std::vector<Finding>& findings) {
     auto at = stackAt(pr, extended, nuisance);
@@ -156,6 +214,7 @@ void restateAtExtendedModel(const Problem& pr, const ParameterSet& extended,
     }
 }
 
+/// What the data allow for each cause tested in the last round and not named.
 std::vector<Bound> boundsOf(const std::vector<Candidate>& tested) {
     std::vector<Bound> out;
     for (const auto& c : tested) {
@@ -169,6 +228,36 @@ std::vector<Bound> boundsOf(const std::vector<Candidate>& tested) {
         out.push_back(b);
     }
     return out;
+}
+
+} // namespace
+
+void conclude(const Problem& pr, const ParameterSet& extended, const std::vector<Param>& nuisance,
+              const std::vector<physics::SimulationResult>& sims, std::vector<OutputResidual> residuals,
+              DiscoveryResult& result) {
+    // Later rounds refit the causes named before: report every cause at the extended model's
+    // value, with its interval from the score of the final fit (the others held as nuisance).
+    if (result.findings.size() > 1) {
+        restateAtExtendedModel(pr, extended, nuisance, result.findings);
+    }
+    // Bounds for what was tested last and not named: that round's score tests ran at the final
+    // model. (When selection ended on a named cause, no round tested the rest at that model.)
+    if (!result.rounds.empty() && !result.rounds.back().named) {
+        result.bounds = boundsOf(result.rounds.back().candidates);
+    }
+    // The residual of the extended model was analysed when its last cause was added (or is the
+    // starting model's, when none was): no further simulation.
+    result.residualsAfter = std::move(residuals);
+    result.unexplained = signatures(result.residualsAfter);
+    for (int c : {kXOut, kTOut}) { // the line's own dynamics, where no cause took them
+        if (const auto lag = dynamicsSignature(pr, sims, c); lag) {
+            result.unexplained.push_back(*lag);
+        }
+    }
+    result.parameters = extended;
+    result.verdict = !result.findings.empty()      ? "cause_found"
+                     : !result.unexplained.empty() ? "unexplained_structure"
+                                                   : "no_structural_cause";
 }
 
 } // namespace drytwin::discovery::detail

@@ -228,6 +228,24 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             }
             return fit;
         };
+        // A fitted cause (from its onset where it has one), the k-th tried judged at level α/k.
+        struct Judged {
+            Fit fit;
+            Confirmation confirmation;
+        };
+        const auto judgeFitted = [&](const Candidate& cand, int k) -> Expected<Judged> {
+            auto withOnset = fittedFromOnset(cand);
+            if (!withOnset) {
+                return withOnset.error();
+            }
+            auto conf = confirmCandidate({pr, cand, withOnset->parameters, withOnset->onset,
+                                          options.gainAlpha / k, prepared->meanBatchHours, *currentHeld, *st,
+                                          nuisanceCols, columnOf(cand.parameter), nuisance, currentSims});
+            if (!conf) {
+                return conf.error();
+            }
+            return Judged{std::move(*withOnset), std::move(*conf)};
+        };
         int fitted = 0;
         for (std::size_t i = 0; i < cands.size() && fitted < options.candidatesToFit; ++i) {
             if (cands[i].pValue >= options.screenAlpha) {
@@ -295,27 +313,22 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             if (record.best.empty()) {
                 record.best = cand.cause;
             }
-            auto withOnset = fittedFromOnset(cand);
-            if (!withOnset) {
-                return withOnset.error();
+            auto judged = judgeFitted(cand, tried);
+            if (!judged) {
+                return judged.error();
             }
-            const Fit& fit = *withOnset;
-            auto conf = confirmCandidate({pr, cand, fit.parameters, fit.onset, options.gainAlpha / tried,
-                                          prepared->meanBatchHours, *currentHeld, *st, nuisanceCols,
-                                          columnOf(cand.parameter), nuisance, currentSims});
-            if (!conf) {
-                return conf.error();
-            }
+            const Fit& fit = judged->fit;
+            auto& conf = judged->confirmation;
             if (tried == 1) {
-                record.heldOutPValue = conf->pValue;
-                record.explainedFraction = conf->explained;
-                record.explainedFractionFast = conf->explainedFast;
+                record.heldOutPValue = conf.pValue;
+                record.explainedFraction = conf.explained;
+                record.explainedFractionFast = conf.explainedFast;
             }
-            if (!conf->finding) {
+            if (!conf.finding) {
                 if (tried == 1) {
-                    record.reason = conf->why;
+                    record.reason = conf.why;
                 }
-                record.rejected.push_back({cand.cause, conf->code, conf->why});
+                record.rejected.push_back({cand.cause, conf.code, conf.why});
                 continue;
             }
             if (isOutletDelay(cand.parameter) && isRemaining(Param::tau_meter) &&
@@ -340,23 +353,17 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             }
             if (timing && timing->pattern == ChannelTiming::Pattern::TemperatureOnly &&
                 isOutletDelay(cand.parameter)) {
-                record.rejected.push_back(
-                    {cand.cause, "line_dynamics",
-                     format("the outlet temperature answers %.3g s later than the model, the moisture only "
-                            "%.3g s (within a meter's normal response of %.3g s): the line's thermal "
-                            "dynamics (product heat capacity, pyrometer), neither a transport time (it "
-                            "delays both) nor a meter lag (the moisture alone)",
-                            timing->temperatureDelayS, timing->moistureDelayS, timing->moistureFloorS)});
+                record.rejected.push_back({cand.cause, "line_dynamics", lineDynamicsReason(*timing)});
                 if (tried == 1) {
                     record.reason = record.rejected.back().reason;
                 }
                 continue;
             }
             record.best = cand.cause;
-            named = std::move(conf->finding);
+            named = std::move(conf.finding);
             namedParams = fit.parameters;
             namedLoss = fit.loss;
-            namedHeld = std::move(conf->held);
+            namedHeld = std::move(conf.held);
         }
         if (!named) {
             if (record.reason.empty()) {
@@ -382,32 +389,21 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                 }
             }
             if (fits.count(Param::tau_meter)) {
-                ++tried;
-                auto withOnset = fittedFromOnset(*meterCand);
-                if (!withOnset) {
-                    return withOnset.error();
+                auto judged = judgeFitted(*meterCand, ++tried);
+                if (!judged) {
+                    return judged.error();
                 }
-                auto conf =
-                    confirmCandidate({pr, *meterCand, withOnset->parameters, withOnset->onset,
-                                      options.gainAlpha / tried, prepared->meanBatchHours, *currentHeld, *st,
-                                      nuisanceCols, columnOf(Param::tau_meter), nuisance, currentSims});
-                if (!conf) {
-                    return conf.error();
-                }
-                if (conf->finding) {
-                    record.rejected.push_back(
-                        {named->cause, "channels",
-                         format("the moisture answers %.3g s later than the model and the outlet temperature "
-                                "%.3g s (p = %.2g): a transport time delays both alike",
-                                timing->moistureDelayS, timing->temperatureDelayS, timing->pValue)});
-                    named = std::move(conf->finding);
-                    namedParams = withOnset->parameters;
-                    namedLoss = withOnset->loss;
-                    namedHeld = std::move(conf->held);
+                auto& conf = judged->confirmation;
+                if (conf.finding) {
+                    record.rejected.push_back({named->cause, "channels", moistureLaterReason(*timing)});
+                    named = std::move(conf.finding);
+                    namedParams = judged->fit.parameters;
+                    namedLoss = judged->fit.loss;
+                    namedHeld = std::move(conf.held);
                     record.best = meterCand->cause;
                     confirmed = true;
                 } else {
-                    record.rejected.push_back({meterCand->cause, conf->code, conf->why});
+                    record.rejected.push_back({meterCand->cause, conf.code, conf.why});
                 }
             }
             if (!confirmed) {
@@ -417,47 +413,27 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             }
         }
         Finding& f = *named;
-        // Look-alikes: fitted in its place and judged on the same held-out part; a meter lag and
-        // a transport time by the outlet channels' timing where it tells (above).
-        if (const LookAlikeGroup* group = lookAlikeGroupOf(f.parameter)) {
-            for (Param other : group->members) {
-                if (other == f.parameter ||
-                    std::find(remaining.begin(), remaining.end(), other) == remaining.end()) {
-                    continue;
+        // Look-alikes: fitted in its place and judged on the same held-out part.
+        const auto fitInPlace = [&](Param other) -> Expected<const ParameterSet*> {
+            if (!fits.count(other)) {
+                auto it = std::find_if(cands.begin(), cands.end(),
+                                       [&](const auto& c) { return c.parameter == other; });
+                if (stop(frac0 + 0.25, "fitting the look-alike " + it->cause)) {
+                    return cancelledError("discover");
                 }
-                if (!fits.count(other)) {
-                    auto it = std::find_if(cands.begin(), cands.end(),
-                                           [&](const auto& c) { return c.parameter == other; });
-                    if (stop(frac0 + 0.25, "fitting the look-alike " + it->cause)) {
-                        return cancelledError("discover");
+                if (auto fs = fitCause(*it, current[Param::t_onset] > 0 ? current[Param::t_onset]
+                                                                        : (f.hasOnset ? f.onsetS : 0));
+                    !fs) {
+                    if (fs.error().kind == ErrorKind::Cancelled) {
+                        return fs.error();
                     }
-                    if (auto fs = fitCause(*it, current[Param::t_onset] > 0 ? current[Param::t_onset]
-                                                                            : (f.hasOnset ? f.onsetS : 0));
-                        !fs) {
-                        if (fs.error().kind == ErrorKind::Cancelled) {
-                            return fs.error();
-                        }
-                        continue;
-                    }
+                    return static_cast<const ParameterSet*>(nullptr);
                 }
-                auto l = compareLookAlike(pr, other, fits[other].parameters, *namedHeld, options);
-                if (!l) {
-                    return l.error();
-                }
-                if (timing) {
-                    l->byChannels = true;
-                    l->moistureDelayS = timing->moistureDelayS;
-                    l->temperatureDelayS = timing->temperatureDelayS;
-                    l->pValue = timing->pValue;
-                    // The moisture later: not a transport time. Otherwise either: a group.
-                    l->ruledOut = timing->pattern == ChannelTiming::Pattern::MoistureLater;
-                }
-                if (!l->ruledOut) {
-                    f.group = group->name;
-                    f.tellApart = group->tellApart;
-                }
-                f.lookAlikes.push_back(*l);
             }
+            return &fits[other].parameters;
+        };
+        if (auto added = addLookAlikes(pr, f, remaining, fitInPlace, *namedHeld, timing); !added) {
+            return added.error();
         }
         record.named = true;
         result.rounds.push_back(record);
@@ -480,29 +456,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
     if (stop(0.95, "what is left")) {
         return cancelledError("discover");
     }
-    // Later rounds refit the causes named before: report every cause at the extended model's
-    // value, with its interval from the score of the final fit (the others held as nuisance).
-    if (result.findings.size() > 1) {
-        restateAtExtendedModel(pr, current, nuisance, result.findings);
-    }
-    // Bounds for what was tested last and not named: that round's score tests ran at the final
-    // model. (When selection ended on a named cause, no round tested the rest at that model.)
-    if (!result.rounds.empty() && !result.rounds.back().named) {
-        result.bounds = boundsOf(result.rounds.back().candidates);
-    }
-    // The residual of the extended model was analysed when its last cause was added (or is the
-    // starting model's, when none was): no further simulation.
-    result.residualsAfter = currentResiduals;
-    result.unexplained = signatures(result.residualsAfter);
-    for (int c : {kXOut, kTOut}) { // the line's own dynamics, where no cause took them
-        if (const auto lag = dynamicsSignature(pr, currentSims, c); lag) {
-            result.unexplained.push_back(*lag);
-        }
-    }
-    result.parameters = current;
-    result.verdict = !result.findings.empty()      ? "cause_found"
-                     : !result.unexplained.empty() ? "unexplained_structure"
-                                                   : "no_structural_cause";
+    conclude(pr, current, nuisance, currentSims, std::move(currentResiduals), result);
     reportProgress(progress, "discover", 1.0, "done");
     result.ending = {Termination::Completed,
                      std::to_string(result.findings.size()) + " cause(s) named, " +

@@ -273,6 +273,10 @@ struct ChannelTiming {
 ChannelTiming channelTiming(const Problem& pr, double currentDelayS, double moistureDelayS,
                             double temperatureDelayS, const HeldOut& atMoistureDelay,
                             const HeldOut& atTemperatureDelay);
+/// Why an outlet delay is the line's own dynamics (Pattern::TemperatureOnly), in numbers.
+std::string lineDynamicsReason(const ChannelTiming& timing);
+/// Why a transport time is ruled out by a later moisture (Pattern::MoistureLater), in numbers.
+std::string moistureLaterReason(const ChannelTiming& timing);
 /// A fit of dtau_conv alone from @p start with the given channel weights (discovery's refit).
 using DelayFit = std::function<Expected<calibration::CalibrationResult>(
     const ParameterSet& start, const calibration::LossWeights& weights)>;
@@ -280,12 +284,22 @@ using DelayFit = std::function<Expected<calibration::CalibrationResult>(
 /// to the outlet temperature alone (from @p startDelayS), each judged on the held-out part.
 Expected<ChannelTiming> timeOutletChannels(const Problem& pr, const ParameterSet& current, double startDelayS,
                                            const DelayFit& fitDelay);
-/// Every finding at the extended model's value, its interval from the score of the final fit
-/// (the others held as nuisance); later rounds refit the causes named before.
-void restateAtExtendedModel(const Problem& pr, const ParameterSet& extended,
-                            const std::vector<Param>& nuisance, std::vector<Finding>& findings);
-/// What the data allow for each cause tested in the last round and not named.
-std::vector<Bound> boundsOf(const std::vector<Candidate>& tested);
+/// A cause fitted in the named cause's place (the round's fit, made when not yet made): null
+/// when its fit failed otherwise than by a cancel.
+using PlaceFit = std::function<Expected<const ParameterSet*>(Param other)>;
+/// The look-alikes of the named cause @p f still outside the model, each fitted in its place and
+/// judged on the same held-out part (a meter lag and a transport time by @p timing, the outlet
+/// channels', where it was measured); the finding names the group where one is not ruled out.
+Status addLookAlikes(const Problem& pr, Finding& f, const std::vector<Param>& remaining,
+                     const PlaceFit& fitInPlace, const HeldOut& namedHeld,
+                     const std::optional<ChannelTiming>& timing);
+/// The end of selection: every finding restated at the extended model @p extended (later rounds
+/// refit the causes named before), the bounds of what the last round tested and did not name,
+/// what no cause explains (@p residuals: the extended model's, @p sims its simulation), the
+/// verdict.
+void conclude(const Problem& pr, const ParameterSet& extended, const std::vector<Param>& nuisance,
+              const std::vector<physics::SimulationResult>& sims, std::vector<OutputResidual> residuals,
+              DiscoveryResult& result);
 /// A look-alike @p other fitted in the named cause's place (@p fitted), judged on the same held-out
 /// part: its loss ratio and the one-sided DM p that the named cause predicts better.
 Expected<LookAlike> compareLookAlike(const Problem& pr, Param other, const ParameterSet& fitted,

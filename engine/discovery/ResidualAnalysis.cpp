@@ -3,6 +3,7 @@
 #include "discovery/DiscoveryInternal.h"
 
 #include "common/MovingAverage.h"
+#include "common/Parallel.h"
 #include "common/Units.h"
 #include "diagnostics/Correlation.h"
 #include "diagnostics/LjungBox.h"
@@ -10,8 +11,10 @@
 #include "diagnostics/Metrics.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
+#include <optional>
 
 namespace drytwin::discovery::detail {
 
@@ -115,8 +118,11 @@ void spectralPeak(const std::vector<std::vector<double>>& records, double& perio
 /// Question 1 for every measured channel, over all kept rows of every batch.
 std::vector<OutputResidual> analyse(const Problem& pr, const std::vector<physics::SimulationResult>& sims) {
     const auto& batches = *pr.batches;
-    std::vector<OutputResidual> out;
-    for (int c = 0; c < 4; ++c) {
+    // The channels are independent: side by side, each into its own slot, gathered in channel
+    // order (the same result on any number of cores). An unmeasured channel stays empty.
+    std::array<std::optional<OutputResidual>, 4> perChannel;
+    parallelFor(perChannel.size(), [&](std::size_t channel) {
+        const int c = static_cast<int>(channel);
         OutputResidual o;
         o.output = kChannelName[c];
         o.unit = kChannelUnit[c];
@@ -211,7 +217,7 @@ std::vector<OutputResidual> analyse(const Problem& pr, const std::vector<physics
             trendScore.push_back(std::move(score));
         }
         if (o.rows == 0) {
-            continue;
+            return;
         }
         o.bias = diagnostics::mean(all);
         o.withinBatchSd = std::sqrt(within / static_cast<double>(o.rows));
@@ -276,7 +282,13 @@ std::vector<OutputResidual> analyse(const Problem& pr, const std::vector<physics
             }
             o.regions.push_back(rb);
         }
-        out.push_back(std::move(o));
+        perChannel[channel] = std::move(o);
+    });
+    std::vector<OutputResidual> out;
+    for (auto& o : perChannel) {
+        if (o) {
+            out.push_back(std::move(*o));
+        }
     }
     return out;
 }
