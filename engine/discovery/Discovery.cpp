@@ -238,11 +238,41 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             if (!withOnset) {
                 return withOnset.error();
             }
-            auto conf = confirmCandidate({pr, cand, withOnset->parameters, withOnset->onset,
-                                          options.gainAlpha / k, prepared->meanBatchHours, *currentHeld, *st,
-                                          nuisanceCols, columnOf(cand.parameter), nuisance, currentSims});
+            const auto confirm = [&](const Fit& fit) {
+                return confirmCandidate({pr, cand, fit.parameters, fit.onset, options.gainAlpha / k,
+                                         prepared->meanBatchHours, *currentHeld, *st, nuisanceCols,
+                                         columnOf(cand.parameter), nuisance, currentSims});
+            };
+            auto conf = confirm(*withOnset);
             if (!conf) {
                 return conf.error();
+            }
+            // Its estimate strays part by part and no onset was found on its tangent: an effect
+            // that starts mid-batch and is far from linear in its parameter (a long meter lag
+            // switched on at 5 min) looks so. Its own effect at the fit tells where it starts.
+            if (conf->code == "inconsistent" && options.searchOnset && current[Param::t_onset] == 0 &&
+                !withOnset->onset.found && cand.parameter != Param::dtau_conv) {
+                auto onset = findOnsetOfEffect(pr, *st, nuisanceCols, columnOf(cand.parameter),
+                                               cand.parameter, withOnset->parameters);
+                if (!onset) {
+                    return onset.error();
+                }
+                if (onset->found) {
+                    if (stop(fraction, "fitting " + cand.cause + " from its onset")) {
+                        return cancelledError("discover");
+                    }
+                    Candidate again = cand;
+                    if (auto fs = fitCause(again, onset->s); fs) {
+                        Fit refitted{fits[cand.parameter].parameters, fits[cand.parameter].loss, *onset};
+                        auto second = confirm(refitted);
+                        if (!second) {
+                            return second.error();
+                        }
+                        return Judged{std::move(refitted), std::move(*second)};
+                    } else if (fs.error().kind == ErrorKind::Cancelled) {
+                        return fs.error();
+                    }
+                }
             }
             return Judged{std::move(*withOnset), std::move(*conf)};
         };

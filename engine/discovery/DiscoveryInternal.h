@@ -158,12 +158,15 @@ Transfer transferBetweenRegions(const Problem& pr, const Stack& atStart, const S
                                 const std::vector<int>& nuisance, int fitCol, double pooled);
 /// The time constant of a first-order lag that would explain a channel's training error
 /// (measured ≈ simulated − τ d(simulated)/dt, batch biases removed), with its HAC standard
-/// error, z and the share of the error's variance it explains.
+/// error, z and the share of the error's variance it explains. With @p atTauS > 0 the regressor
+/// is the exact first-order response at that τ (per second of τ) instead of −d/dt, so that a long
+/// lag is judged by what it does; rows before @p fromS (since each batch's start) are left out.
 struct ChannelLag {
     double tauS = 0, se = 0, z = 0, share = 0;
     bool ok = false;
 };
-ChannelLag lagOnChannel(const Problem& pr, const std::vector<physics::SimulationResult>& sims, int channel);
+ChannelLag lagOnChannel(const Problem& pr, const std::vector<physics::SimulationResult>& sims, int channel,
+                        double atTauS = 0, double fromS = 0);
 /// An onset (time since each batch's start) from which the cause's column explains most: a scan
 /// of the score test's reduction, with its likelihood ratio over "from the start" and its
 /// profile interval.
@@ -172,6 +175,13 @@ struct Onset {
     double s = 0, lowS = 0, highS = 0, likelihoodRatio = 0;
 };
 Onset findOnset(const Stack& st, const std::vector<int>& nuisance, int cand);
+/// findOnset on the cause's own effect at its fitted value @p fitted (the simulation with it
+/// against the same with the cause at 0, from the start) instead of its tangent at 0, with the
+/// round's residual: for a cause whose effect is far from linear in its parameter (a long meter
+/// lag), whose tangent at 0 finds no onset. Not found when the stacks' entries differ.
+Expected<Onset> findOnsetOfEffect(const Problem& pr, const Stack& roundStack,
+                                  const std::vector<int>& nuisance, int cand, Param cause,
+                                  const ParameterSet& fitted);
 /// The "dynamics" signature of a channel: its error follows its simulated rate of change
 /// strongly enough that a colleague would see it (|z| > 6, a time constant above two sampling
 /// steps, a tenth of the error's variance); none otherwise.

@@ -362,7 +362,8 @@ std::vector<Signature> signatures(const std::vector<OutputResidual>& residuals) 
     return out;
 }
 
-ChannelLag lagOnChannel(const Problem& pr, const std::vector<physics::SimulationResult>& sims, int channel) {
+ChannelLag lagOnChannel(const Problem& pr, const std::vector<physics::SimulationResult>& sims, int channel,
+                        double atTauS, double fromS) {
     ChannelLag out;
     const auto& batches = *pr.batches;
     // Over a window of 30 s: the sample-to-sample scatter of the inputs passes through the
@@ -377,7 +378,7 @@ ChannelLag lagOnChannel(const Problem& pr, const std::vector<physics::Simulation
         std::vector<double> t, obs, pred;
         for (std::size_t k = pr.train[b].begin; k < pr.train[b].end; ++k) {
             double o = 0, p = 0, f = 1;
-            if (channelAt(bt, sims[b], k, k, channel, o, p, f)) {
+            if (bt.timeS[k] - bt.timeS.front() >= fromS && channelAt(bt, sims[b], k, k, channel, o, p, f)) {
                 t.push_back(bt.timeS[k]);
                 obs.push_back(o);
                 pred.push_back(p);
@@ -391,6 +392,22 @@ ChannelLag lagOnChannel(const Problem& pr, const std::vector<physics::Simulation
             err[i] = obs[i] - pred[i];
         }
         const auto smoothErr = centredMovingAverage(t, err, kWindowS);
+        // At a lag of τ the reading's error is the first-order response of the simulation minus
+        // the simulation (exact for an input linear between samples, from the first row on), per
+        // second of τ: −dX/dt for a short lag, its smoothed form for a long one.
+        std::vector<double> effectPerS;
+        if (atTauS > 0) {
+            effectPerS.assign(t.size(), 0.0);
+            double lagged = pred[0];
+            for (std::size_t i = 1; i < t.size(); ++i) {
+                const double dt = t[i] - t[i - 1];
+                const double a = std::exp(-dt / atTauS);
+                const double ramp = (pred[i] - pred[i - 1]) * atTauS / dt;
+                lagged = pred[i] - ramp + (lagged - pred[i - 1] + ramp) * a;
+                effectPerS[i] = (lagged - pred[i]) / atTauS;
+            }
+            effectPerS = centredMovingAverage(t, effectPerS, kWindowS);
+        }
         std::vector<double> gb, eb;
         std::size_t lo = 0, hi = 0;
         for (std::size_t i = 0; i < t.size(); ++i) {
@@ -405,7 +422,7 @@ ChannelLag lagOnChannel(const Problem& pr, const std::vector<physics::Simulation
                 continue; // at the edges and across gaps
             }
             // A first-order lag τ on the reading: measured ≈ simulated − τ d(simulated)/dt.
-            gb.push_back(-(pred[hi] - pred[lo]) / (t[hi] - t[lo]));
+            gb.push_back(atTauS > 0 ? effectPerS[i] : -(pred[hi] - pred[lo]) / (t[hi] - t[lo]));
             eb.push_back(smoothErr[i]);
         }
         if (eb.size() < 60) {

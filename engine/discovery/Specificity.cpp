@@ -115,6 +115,32 @@ Consistency consistencyAt(const Problem& pr, const Stack& atFit, const std::vect
     return out;
 }
 
+Expected<Onset> findOnsetOfEffect(const Problem& pr, const Stack& roundStack,
+                                  const std::vector<int>& nuisance, int cand, Param cause,
+                                  const ParameterSet& fitted) {
+    // The cause's own effect at its fitted value: the fit against the same fit with the cause at 0.
+    ParameterSet without = fitted;
+    without[cause] = 0;
+    without[Param::t_onset] = 0;
+    auto at = stackAt(pr, fitted, {});
+    if (!at) {
+        return at.error();
+    }
+    auto off = stackAt(pr, without, {});
+    if (!off) {
+        return off.error();
+    }
+    // Both stacks hold the same entries as the round's (the same rows and channels) unless a
+    // simulation left one out; then there is nothing to scan.
+    if (at->r.size() != roundStack.r.size() || off->r.size() != roundStack.r.size() ||
+        at->batch != roundStack.batch || at->row != roundStack.row || off->row != roundStack.row) {
+        return Onset{};
+    }
+    Stack scan = roundStack;
+    scan.s.col(cand) = off->r - at->r; // the effect, weighted as the residuals (predicted with − without)
+    return findOnset(scan, nuisance, cand);
+}
+
 Transfer transferBetweenRegions(const Problem& pr, const Stack& atStart, const Stack& atFit,
                                 const std::vector<int>& nuisance, int fitCol, double pooled) {
     Transfer out;
@@ -379,8 +405,10 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
         // change over tens of seconds (not merely be smoothed: a lag also filters the input
         // scatter the simulation carries), and the outlet temperature's must not, or the
         // slowness is the line's.
-        const ChannelLag lagX = lagOnChannel(in.pr, in.currentSims, kXOut);
-        const ChannelLag lagT = lagOnChannel(in.pr, in.currentSims, kTOut);
+        // Judged at the fitted lag and from its onset: a long lag smooths what −d/dt sees.
+        const double onsetS = in.fitParameters[Param::t_onset];
+        const ChannelLag lagX = lagOnChannel(in.pr, in.currentSims, kXOut, in.value, onsetS);
+        const ChannelLag lagT = lagOnChannel(in.pr, in.currentSims, kTOut, in.value, onsetS);
         if (!(lagX.ok && lagX.z > 3 && lagX.tauS >= 0.25 * in.value)) {
             out.code = "line_dynamics";
             out.why = format("over 30 s the outlet-moisture error does not follow its rate of change (tau = "
