@@ -1,8 +1,33 @@
-// The data of a discovery run: the chronological split, the training rows the tests and fits
-// use, and what the files cannot give.
+// The data of a discovery run: its options checked, the chronological split, the training rows
+// the tests and fits use, and what the files cannot give.
 #include "discovery/DiscoveryInternal.h"
 
 #include <algorithm>
+
+namespace drytwin::discovery {
+
+Status DiscoveryOptions::validate() const {
+    if (!(trainFraction > 0.2 && trainFraction < 0.95)) {
+        return invalidOption("train fraction", "must lie in (0.2, 0.95)");
+    }
+    if (!(screenAlpha > 0 && screenAlpha < 0.5) || !(gainAlpha > 0 && gainAlpha < 0.5) ||
+        !(minExplainedFraction >= 0 && minExplainedFraction < 1)) {
+        return invalidOption("alpha", "test levels must lie in (0, 0.5), the explained share in [0, 1)");
+    }
+    if (!(unimprovedChannelAlpha > 0 && unimprovedChannelAlpha <= 1)) {
+        return invalidOption("unimproved-channel level", "must lie in (0, 1]");
+    }
+    if (!(fastBandWindowS == 0 || (fastBandWindowS >= 10 && fastBandWindowS <= 1e5))) {
+        return invalidOption("fast-band window", "must be 0 (off) or lie in [10, 1e5] s");
+    }
+    if (maxCauses < 0 || candidatesToFit < 1 || maxEvaluationsPerFit < 10) {
+        return invalidOption("discovery limits",
+                             "max causes ≥ 0, candidates to fit ≥ 1, evaluations per fit ≥ 10");
+    }
+    return {};
+}
+
+} // namespace drytwin::discovery
 
 namespace drytwin::discovery::detail {
 

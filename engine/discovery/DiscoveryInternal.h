@@ -1,8 +1,10 @@
 #pragma once
 // Internals shared by the discovery files (not part of the engine's interface). Discovery answers
-// four questions, one file each: what the simulation gets wrong (ResidualAnalysis.cpp), which
-// cause could explain it and how large (CandidateTests.cpp), which cause to name and whether it
-// is specific (Discovery.cpp: selection and confirmation), and how to say so (FindingText.cpp).
+// four questions: what the simulation gets wrong (ResidualAnalysis.cpp), which cause could
+// explain it and how large (CandidateTests.cpp), which cause to name and whether it is specific
+// (Discovery.cpp: selection; Confirmation.cpp, Specificity.cpp, PracticalFloors.cpp and, for
+// onsets and lags, Dynamics.cpp), and how to say so (FindingText.cpp). DiscoveryData.cpp: the
+// options and the data split.
 
 #include "discovery/Discovery.h"
 #include "physics/LineInputs.h"

@@ -1,6 +1,6 @@
 // Question 3, its second half: is a cause that predicts better also specific? Per-part
 // estimates, transfer between operating regions, the line's own dynamics against a meter's lag,
-// onsets, and practical floors in physical units.
+// and practical floors in physical units (onsets and lags: Dynamics.cpp).
 #include "discovery/DiscoveryInternal.h"
 
 #include "common/MovingAverage.h"
@@ -15,13 +15,6 @@
 namespace drytwin::discovery::detail {
 
 namespace {
-
-/// Onset search: the likelihood-ratio (in units of the residual's long-run variance) an onset
-/// must reach over "from the start". A searched break point needs far more than χ²(1)'s 3.84
-/// (Andrews' sup-LR critical values are 8-10 at 5 %); 15 also covers the misfit of a model that
-/// is wrong everywhere a little.
-constexpr double kOnsetLikelihoodRatio = 15;
-constexpr double kProfileInterval = 3.84; ///< χ²(1) at 95 %: the onset's profile interval
 
 /// The part of each stack entry: its batch when there are three or more batches, else a third
 /// of its batch's training span (a single recording still shows whether a cause holds throughout).
@@ -115,32 +108,6 @@ Consistency consistencyAt(const Problem& pr, const Stack& atFit, const std::vect
     return out;
 }
 
-Expected<Onset> findOnsetOfEffect(const Problem& pr, const Stack& roundStack,
-                                  const std::vector<int>& nuisance, int cand, Param cause,
-                                  const ParameterSet& fitted) {
-    // The cause's own effect at its fitted value: the fit against the same fit with the cause at 0.
-    ParameterSet without = fitted;
-    without[cause] = 0;
-    without[Param::t_onset] = 0;
-    auto at = stackAt(pr, fitted, {});
-    if (!at) {
-        return at.error();
-    }
-    auto off = stackAt(pr, without, {});
-    if (!off) {
-        return off.error();
-    }
-    // Both stacks hold the same entries as the round's (the same rows and channels) unless a
-    // simulation left one out; then there is nothing to scan.
-    if (at->r.size() != roundStack.r.size() || off->r.size() != roundStack.r.size() ||
-        at->batch != roundStack.batch || at->row != roundStack.row || off->row != roundStack.row) {
-        return Onset{};
-    }
-    Stack scan = roundStack;
-    scan.s.col(cand) = off->r - at->r; // the effect, weighted as the residuals (predicted with − without)
-    return findOnset(scan, nuisance, cand);
-}
-
 Transfer transferBetweenRegions(const Problem& pr, const Stack& atStart, const Stack& atFit,
                                 const std::vector<int>& nuisance, int fitCol, double pooled) {
     Transfer out;
@@ -206,79 +173,6 @@ Transfer transferBetweenRegions(const Problem& pr, const Stack& atStart, const S
     }
     out.checked = true;
     out.reduction = 1.0 - lossCool / lossWithout;
-    return out;
-}
-
-Onset findOnset(const Stack& st, const std::vector<int>& nuisance, int cand) {
-    Onset out;
-    const auto n = st.s.rows();
-    double span = 0;
-    for (double t : st.timeS) {
-        span = std::max(span, t);
-    }
-    if (n < 100 || span < 1200) {
-        return out;
-    }
-    // The nuisance directions once (thin Q), then each onset's column projected off them.
-    Eigen::MatrixXd q;
-    if (!nuisance.empty()) {
-        Eigen::MatrixXd nm(n, static_cast<Eigen::Index>(nuisance.size()));
-        for (std::size_t i = 0; i < nuisance.size(); ++i) {
-            nm.col(static_cast<Eigen::Index>(i)) = st.s.col(nuisance[i]);
-        }
-        Eigen::HouseholderQR<Eigen::MatrixXd> qr(nm);
-        q = qr.householderQ() * Eigen::MatrixXd::Identity(n, nm.cols());
-    }
-    const auto reductionFrom = [&](double onset) {
-        Eigen::VectorXd c = st.s.col(cand);
-        for (Eigen::Index i = 0; i < n; ++i) {
-            if (st.timeS[static_cast<std::size_t>(i)] < onset) {
-                c(i) = 0;
-            }
-        }
-        if (q.size() > 0) {
-            c -= q * (q.transpose() * c);
-        }
-        const double info = c.squaredNorm();
-        const double u = c.dot(st.r);
-        return info > 0 ? u * u / info : 0.0;
-    };
-    // The residual's variance per entry, scaled by its long-run (autocorrelated) variance.
-    const auto series = perRowSeries(st, st.r);
-    double plain = 0;
-    for (const auto& s : series) {
-        if (s.size() > 2) {
-            plain += static_cast<double>(s.size()) * diagnostics::longRunVariance(s, 0, true);
-        }
-    }
-    const double longRun = hacVarianceOfSum(series, true);
-    const double sigma2 = st.r.squaredNorm() / static_cast<double>(n) * (plain > 0 ? longRun / plain : 1.0);
-    if (!(sigma2 > 0)) {
-        return out;
-    }
-    const double step = std::max(60.0, span / 120);
-    std::vector<double> grid, reduction;
-    for (double g = 0; g <= 0.9 * span; g += step) {
-        grid.push_back(g);
-        reduction.push_back(reductionFrom(g));
-    }
-    const auto best =
-        static_cast<std::size_t>(std::max_element(reduction.begin(), reduction.end()) - reduction.begin());
-    out.likelihoodRatio = (reduction[best] - reduction.front()) / sigma2;
-    if (best == 0 || out.likelihoodRatio < kOnsetLikelihoodRatio) {
-        return out;
-    }
-    out.found = true;
-    out.s = grid[best];
-    std::size_t lo = best, hi = best;
-    while (lo > 0 && reduction[lo - 1] >= reduction[best] - kProfileInterval * sigma2) {
-        --lo;
-    }
-    while (hi + 1 < grid.size() && reduction[hi + 1] >= reduction[best] - kProfileInterval * sigma2) {
-        ++hi;
-    }
-    out.lowS = std::max(0.0, grid[lo] - step / 2);
-    out.highS = grid[hi] + step / 2;
     return out;
 }
 
