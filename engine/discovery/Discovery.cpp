@@ -183,6 +183,22 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             fits[c.parameter] = Fit{fit->parameters, fit->after.loss, {}};
             return {};
         };
+        // The cause refitted from @p onset, where it acts; none where that refit fails (no
+        // evidence either way).
+        const auto refitFromOnset = [&](const Candidate& cand,
+                                        const Onset& onset) -> Expected<std::optional<Fit>> {
+            if (stop(frac0 + 0.2, "fitting " + cand.cause + " from its onset")) {
+                return cancelledError("discover");
+            }
+            Candidate again = cand;
+            if (auto fs = fitCause(again, onset.s); !fs) {
+                if (fs.error().kind == ErrorKind::Cancelled) {
+                    return fs.error();
+                }
+                return std::optional<Fit>{};
+            }
+            return std::optional<Fit>{Fit{fits[cand.parameter].parameters, fits[cand.parameter].loss, onset}};
+        };
         // A fitted cause, refitted from its onset where it has one. One onset for the model
         // (t_onset): searched while no cause has one yet; a transport time acts from the start.
         const auto fittedFromOnset = [&](const Candidate& cand) -> Expected<Fit> {
@@ -191,19 +207,14 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                 return fit;
             }
             fit.onset = findOnset(*st, nuisanceCols, columnOf(cand.parameter));
-            if (fit.onset.found) { // refit where it acts
-                Candidate again = cand;
-                if (stop(frac0 + 0.2, "fitting " + cand.cause + " from its onset")) {
-                    return cancelledError("discover");
-                }
-                if (auto fs = fitCause(again, fit.onset.s); fs) {
-                    fit.parameters = fits[cand.parameter].parameters;
-                    fit.loss = fits[cand.parameter].loss;
-                } else if (fs.error().kind == ErrorKind::Cancelled) {
-                    return fs.error();
-                }
+            if (!fit.onset.found) {
+                return fit;
             }
-            return fit;
+            auto refitted = refitFromOnset(cand, fit.onset);
+            if (!refitted) {
+                return refitted.error();
+            }
+            return refitted->value_or(fit);
         };
         // A fitted cause (from its onset where it has one), the k-th tried judged at level α/k.
         struct Judged {
@@ -235,19 +246,16 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                     return onset.error();
                 }
                 if (onset->found) {
-                    if (stop(fraction, "fitting " + cand.cause + " from its onset")) {
-                        return cancelledError("discover");
+                    auto refitted = refitFromOnset(cand, *onset);
+                    if (!refitted) {
+                        return refitted.error();
                     }
-                    Candidate again = cand;
-                    if (auto fs = fitCause(again, onset->s); fs) {
-                        Fit refitted{fits[cand.parameter].parameters, fits[cand.parameter].loss, *onset};
-                        auto second = confirm(refitted);
+                    if (*refitted) { // judged again where it acts
+                        auto second = confirm(**refitted);
                         if (!second) {
                             return second.error();
                         }
-                        return Judged{std::move(refitted), std::move(*second)};
-                    } else if (fs.error().kind == ErrorKind::Cancelled) {
-                        return fs.error();
+                        return Judged{std::move(**refitted), std::move(*second)};
                     }
                 }
             }

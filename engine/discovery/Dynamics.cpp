@@ -112,8 +112,11 @@ Expected<Onset> findOnsetOfEffect(const Problem& pr, const Stack& roundStack,
     }
     // Both stacks hold the same entries as the round's (the same rows and channels) unless a
     // simulation left one out; then there is nothing to scan.
-    if (at->r.size() != roundStack.r.size() || off->r.size() != roundStack.r.size() ||
-        at->batch != roundStack.batch || at->row != roundStack.row || off->row != roundStack.row) {
+    const auto sameEntries = [&](const Stack& other) {
+        return other.batch == roundStack.batch && other.row == roundStack.row &&
+               other.channel == roundStack.channel;
+    };
+    if (!sameEntries(*at) || !sameEntries(*off)) {
         return Onset{};
     }
     Stack scan = roundStack;

@@ -375,22 +375,15 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
     struct Normal {
         double aa = 0, ab = 0, bb = 0, at = 0, bt = 0;
     };
-    using Samples = std::vector<std::array<float, 3>>; // (a, b, t) per row, horizon and output
-    struct FoldSums {
-        Status status;
-        std::vector<std::array<Normal, kOutputs>> normal;
-        // For the absolute-error criterion every (a, b, t) is kept (floats: 12 bytes a row, horizon
-        // and output; about 12 MB for the demo's 41,000 training rows).
-        std::vector<std::array<Samples, kOutputs>> samples;
-    };
-    const auto sumsOfFold = [&](const std::vector<BatchView>& fit, const std::vector<BatchView>& validation,
-                                FoldSums& out) {
-        out.normal.assign(kShrinkGrid.size(), {});
-        out.samples.assign(options.correctionByAbsoluteError ? kShrinkGrid.size() : 0, {});
+    std::vector<std::array<Normal, kOutputs>> normal(kShrinkGrid.size());
+    // For the absolute-error criterion every (a, b, t) is kept (floats: 12 bytes a row, horizon
+    // and output; about 12 MB for the demo's 41,000 training rows).
+    std::vector<std::array<std::vector<std::array<float, 3>>, kOutputs>> samples(
+        options.correctionByAbsoluteError ? kShrinkGrid.size() : 0);
+    for (const auto& [fit, validation] : folds) {
         auto first = trainOnce(fit, options);
         if (!first) {
-            out.status = first.error();
-            return;
+            return first.error();
         }
         for (const auto& v : validation) {
             const auto predicted = first->predictHorizons(v, kShrinkGrid);
@@ -416,48 +409,17 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
                         const double a = -pbmChange(j), b = model(j) - reference(j),
                                      t = truth(j) - atOrigin(j);
                         if (options.correctionByAbsoluteError) {
-                            out.samples[g][static_cast<std::size_t>(j)].push_back(
+                            samples[g][static_cast<std::size_t>(j)].push_back(
                                 {static_cast<float>(a), static_cast<float>(b), static_cast<float>(t)});
                             continue;
                         }
-                        auto& q = out.normal[g][static_cast<std::size_t>(j)];
+                        auto& q = normal[g][static_cast<std::size_t>(j)];
                         q.aa += a * a;
                         q.ab += a * b;
                         q.bb += b * b;
                         q.at += a * t;
                         q.bt += b * t;
                     }
-                }
-            }
-        }
-    };
-    // One fold after another: side by side they gave no time here (discover already trains two
-    // models at once on the two cores) and raised its peak memory from 0.8 to 1.1 GB. Each fold
-    // keeps its own sums, joined in fold order.
-    std::vector<FoldSums> perFold(folds.size());
-    for (std::size_t f = 0; f < folds.size(); ++f) {
-        sumsOfFold(folds[f].first, folds[f].second, perFold[f]);
-    }
-    std::vector<std::array<Normal, kOutputs>> normal(kShrinkGrid.size());
-    std::vector<std::array<Samples, kOutputs>> samples(options.correctionByAbsoluteError ? kShrinkGrid.size()
-                                                                                         : 0);
-    for (auto& fold : perFold) {
-        if (!fold.status) {
-            return fold.status.error();
-        }
-        for (std::size_t g = 0; g < kShrinkGrid.size(); ++g) {
-            for (std::size_t j = 0; j < kOutputs; ++j) {
-                auto& q = normal[g][j];
-                const auto& f = fold.normal[g][j];
-                q.aa += f.aa;
-                q.ab += f.ab;
-                q.bb += f.bb;
-                q.at += f.at;
-                q.bt += f.bt;
-                if (!samples.empty()) {
-                    auto& into = samples[g][j];
-                    into.insert(into.end(), fold.samples[g][j].begin(), fold.samples[g][j].end());
-                    Samples().swap(fold.samples[g][j]);
                 }
             }
         }
@@ -494,9 +456,9 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
     // a point of nearly the same error (no library call: a boxed two-variable L1 fit is two loops).
     const auto solveAbsolute = [](const std::vector<std::array<float, 3>>& rows) -> Eigen::Vector2d {
         Eigen::Vector2d best(0, 0);
-        double bestSae = 0;
+        double bestSae = 0; // at (s, κ) = (0, 0)
         for (const auto& r : rows) {
-            bestSae += std::abs(double(r[2]) - 0.0 * double(r[0]) - 0.0 * double(r[1]));
+            bestSae += std::abs(double(r[2]));
         }
         // One pass over the rows per s, every κ of the line summed side by side (each sum still
         // in row order, so the same sums and the same minimum as one pass per point; 20 times
