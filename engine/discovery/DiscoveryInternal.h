@@ -285,6 +285,9 @@ struct ChannelTiming {
 ChannelTiming channelTiming(const Problem& pr, double currentDelayS, double moistureDelayS,
                             double temperatureDelayS, const HeldOut& atMoistureDelay,
                             const HeldOut& atTemperatureDelay);
+/// Why a cause is `inconsistent` part by part, in numbers: the pooled value, how many parts stray
+/// (or that one has the opposite sign) and each part's estimate with its 95 % interval.
+std::string inconsistencyReason(const Consistency& c, Param p, double pooled);
 /// Why an outlet delay is the line's own dynamics (Pattern::TemperatureOnly), in numbers.
 std::string lineDynamicsReason(const ChannelTiming& timing);
 /// Why a transport time is ruled out by a later moisture (Pattern::MoistureLater), in numbers.

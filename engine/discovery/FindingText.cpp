@@ -160,4 +160,23 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
     return text;
 }
 
+std::string inconsistencyReason(const Consistency& c, Param p, double pooled) {
+    // The numbers a process engineer needs to judge it: the pooled value and each part's, with
+    // its 95 % interval, in the parameter's unit.
+    const std::string unit(properties::info(p).unit);
+    std::string text = c.opposite
+                           ? format("its estimate has the opposite sign in part of the data (pooled %.3g %s)",
+                                    pooled, unit.c_str())
+                           : format("its estimate strays from the pooled value (%.3g %s) in %d of %zu parts",
+                                    pooled, unit.c_str(), c.strays, c.parts.size());
+    if (!c.parts.empty()) {
+        text += "; per part:";
+        for (const auto& e : c.parts) {
+            text += format(" %s %.3g±%.2g", e.part.c_str(), e.value, 1.96 * e.se);
+            text += &e == &c.parts.back() ? " " + unit : ";";
+        }
+    }
+    return text;
+}
+
 } // namespace drytwin::discovery::detail

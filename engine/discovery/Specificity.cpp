@@ -285,10 +285,7 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
     out.transfer = transferBetweenRegions(in.pr, in.atStart, in.atFit, in.nuisance, in.atCol, in.value);
     if (out.code.empty() && !out.consistency.consistent) {
         out.code = "inconsistent";
-        out.why = out.consistency.opposite
-                      ? std::string("its estimate has the opposite sign in part of the data")
-                      : format("its estimate strays from the pooled value in %d of %zu parts",
-                               out.consistency.strays, out.consistency.parts.size());
+        out.why = inconsistencyReason(out.consistency, in.parameter, in.value);
     }
     if (out.code.empty() && out.transfer.checked && out.transfer.reduction < 0) {
         out.code = "inconsistent";

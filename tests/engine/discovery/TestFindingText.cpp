@@ -1,0 +1,46 @@
+// The findings' wording (issue #23): a cause turned down as `inconsistent` says by how much, in
+// the parameter's unit, part by part, so that an engineer can weigh it (one batch with a trouble
+// of its own, or a cause that is not the same everywhere).
+#include "discovery/DiscoveryInternal.h"
+
+#include <QtTest>
+
+using namespace drytwin::discovery::detail;
+using drytwin::discovery::PartEstimate;
+
+class TestFindingText : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void inconsistentNamesThePooledValueAndEveryPart() {
+        Consistency c;
+        c.parts = {PartEstimate{"recording, part 1/3", 24.0, 5.0},
+                   PartEstimate{"recording, part 2/3", 80.0, 6.0},
+                   PartEstimate{"recording, part 3/3", 90.0, 7.5}};
+        c.consistent = false;
+        c.strays = 2;
+        const std::string why = inconsistencyReason(c, Param::tau_meter, 63.0);
+        qInfo("%s", why.c_str());
+        QVERIFY2(why.find("strays from the pooled value (63 s) in 2 of 3 parts") != std::string::npos,
+                 why.c_str());
+        // Each part with its 95 % interval (1.96 standard errors), the unit once at the end.
+        QVERIFY2(why.find("recording, part 1/3 24±9.8;") != std::string::npos, why.c_str());
+        QVERIFY2(why.find("recording, part 2/3 80±12;") != std::string::npos, why.c_str());
+        QVERIFY2(why.find("recording, part 3/3 90±15 s") != std::string::npos, why.c_str());
+        QCOMPARE(why.substr(why.size() - 2), std::string(" s"));
+    }
+
+    void anOppositeSignIsSaidAsSuch() {
+        Consistency c;
+        c.parts = {PartEstimate{"B01", 0.4, 0.05}, PartEstimate{"B02", -0.3, 0.05}};
+        c.consistent = false;
+        c.opposite = true;
+        c.strays = 1;
+        const std::string why = inconsistencyReason(c, Param::X_in_offset, 0.05);
+        QVERIFY2(why.find("opposite sign in part of the data (pooled 0.05 % wb)") != std::string::npos,
+                 why.c_str());
+        QVERIFY2(why.find("B02 -0.3±0.098 % wb") != std::string::npos, why.c_str());
+    }
+};
+
+QTEST_APPLESS_MAIN(TestFindingText)
+#include "TestFindingText.moc"
