@@ -86,11 +86,7 @@ int runDiscover(const CommandOptions& o) {
                         f.evidence.c_str());
         }
         if (!f.perPart.empty()) {
-            std::printf("  per part:");
-            for (const auto& e : f.perPart) {
-                std::printf(" %s %.3g±%.2g;", e.part.c_str(), e.value, 1.96 * e.se);
-            }
-            std::printf("\n");
+            std::printf("  per part: %s\n", discovery::describeParts(f.perPart).c_str());
         }
     }
     if (!d.bounds.empty()) {

@@ -161,6 +161,9 @@ struct PartEstimate {
     double value = 0;
     double se = 0; ///< HAC standard error
 };
+/// @brief "B01 0.039±0.015; B02 …": each part's estimate with its 95 % interval (1.96 standard
+/// errors), for a finding's per-part line and a turned-down cause's reason alike.
+std::string describeParts(const std::vector<PartEstimate>& parts);
 
 /// @brief A look-alike of a named cause: a cause that leaves much the same signature on these
 /// data, fitted in its place and judged on the same held-out part.

@@ -170,13 +170,22 @@ std::string inconsistencyReason(const Consistency& c, Param p, double pooled) {
                            : format("its estimate strays from the pooled value (%.3g %s) in %d of %zu parts",
                                     pooled, unit.c_str(), c.strays, c.parts.size());
     if (!c.parts.empty()) {
-        text += "; per part:";
-        for (const auto& e : c.parts) {
-            text += format(" %s %.3g±%.2g", e.part.c_str(), e.value, 1.96 * e.se);
-            text += &e == &c.parts.back() ? " " + unit : ";";
-        }
+        text += "; per part: " + describeParts(c.parts) + " " + unit;
     }
     return text;
 }
 
 } // namespace drytwin::discovery::detail
+
+namespace drytwin::discovery {
+
+std::string describeParts(const std::vector<PartEstimate>& parts) {
+    std::string text;
+    for (const auto& e : parts) {
+        text +=
+            detail::format("%s%s %.3g±%.2g", text.empty() ? "" : "; ", e.part.c_str(), e.value, 1.96 * e.se);
+    }
+    return text;
+}
+
+} // namespace drytwin::discovery
