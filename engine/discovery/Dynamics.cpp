@@ -2,6 +2,7 @@
 // shows against the simulation's rate of change (a meter's, or the line's own dynamics).
 #include "discovery/DiscoveryInternal.h"
 
+#include "common/FirstOrderLag.h"
 #include "common/MovingAverage.h"
 #include "diagnostics/LongRunVariance.h"
 #include "diagnostics/Metrics.h"
@@ -159,14 +160,9 @@ ChannelLag lagOnChannel(const Problem& pr, const std::vector<physics::Simulation
         // second of τ: −dX/dt for a short lag, its smoothed form for a long one.
         std::vector<double> effectPerS;
         if (atTauS > 0) {
-            effectPerS.assign(t.size(), 0.0);
-            double lagged = pred[0];
-            for (std::size_t i = 1; i < t.size(); ++i) {
-                const double dt = t[i] - t[i - 1];
-                const double a = std::exp(-dt / atTauS);
-                const double ramp = (pred[i] - pred[i - 1]) * atTauS / dt;
-                lagged = pred[i] - ramp + (lagged - pred[i - 1] + ramp) * a;
-                effectPerS[i] = (lagged - pred[i]) / atTauS;
+            effectPerS = lagOfPiecewiseLinear(t, pred, atTauS);
+            for (std::size_t i = 0; i < t.size(); ++i) {
+                effectPerS[i] = (effectPerS[i] - pred[i]) / atTauS;
             }
             effectPerS = centredMovingAverage(t, effectPerS, kWindowS);
         }

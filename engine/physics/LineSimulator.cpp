@@ -1,5 +1,6 @@
 #include "physics/LineSimulator.h"
 
+#include "common/FirstOrderLag.h"
 #include "common/MovingAverage.h"
 #include "common/Units.h"
 #include "physics/SectionRates.h"
@@ -735,22 +736,12 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
         }
         return u;
     };
+    std::vector<double> historyTimeS(historyRows.size());
+    for (std::size_t h = 0; h < historyRows.size(); ++h) {
+        historyTimeS[h] = in.timeS[historyRows[h]];
+    }
     const auto lagOver = [&](std::vector<double> u, double tau) {
-        if (tau <= 0) {
-            return u;
-        }
-        std::vector<double> out(u.size());
-        for (std::size_t h = 0; h < out.size(); ++h) {
-            if (h == 0) {
-                out[h] = u[h];
-            } else {
-                const double dt = in.timeS[historyRows[h]] - in.timeS[historyRows[h - 1]];
-                const double a = std::exp(-dt / tau);
-                const double ramp = (u[h] - u[h - 1]) * tau / dt;
-                out[h] = u[h] - ramp + (out[h - 1] - u[h - 1] + ramp) * a;
-            }
-        }
-        return out;
+        return lagOfPiecewiseLinear(historyTimeS, std::move(u), tau);
     };
     // The line's outlet mixing acts on both outlet channels; the meter's lag on top of it, on X_out.
     const auto xOutMixed =
