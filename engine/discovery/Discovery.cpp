@@ -275,6 +275,26 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                 return fs.error(); // a fit that fails otherwise counts as no evidence for this cause
             }
         }
+        // The two outlet delays are fitted as a pair: a transport time that lowers the moisture's
+        // error while raising the temperature's is a moisture-only delay, the meter's, and the
+        // meter lag must then be there to be tried (it is fitted in its place as a look-alike
+        // anyway when the transport time is named). Only one that passes the screen.
+        for (const auto& [fittedOne, partner] :
+             {std::pair{Param::dtau_conv, Param::tau_meter}, std::pair{Param::tau_meter, Param::dtau_conv}}) {
+            auto other = std::find_if(cands.begin(), cands.end(), [&, p = partner](const auto& c) {
+                return c.parameter == p && !c.fitted && c.pValue < options.screenAlpha;
+            });
+            if (!fits.count(fittedOne) || other == cands.end()) {
+                continue;
+            }
+            if (stop(frac0 + 0.2, "fitting " + other->cause)) {
+                return cancelledError("discover");
+            }
+            if (auto fs = fitCause(*other, current[Param::t_onset]);
+                !fs && fs.error().kind == ErrorKind::Cancelled) {
+                return fs.error();
+            }
+        }
         Round record;
         record.candidates = cands;
         // The ranking a user reads: fitted causes by training loss removed, then the rest by evidence.

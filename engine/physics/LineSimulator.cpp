@@ -301,10 +301,14 @@ IntegratorSettings settingsFor(const SimulationOptions& o, int states) {
     return s;
 }
 
-/// Core simulation; sensitivities only for rate (non-duration) parameters.
+/// Core simulation; sensitivities only for rate (non-duration) parameters. Rows flagged in
+/// @p outletOnly (same length as @p rows; empty: none) are wanted for the line's outlet alone, as
+/// the meter lag's history is: their tube-outlet values (X_HDT, T_HDT and their sensitivities) are
+/// NaN, and the tube integrates one parcel for them instead of two.
 Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet& params,
                                         const SimulationOptions& o, const std::vector<std::size_t>& rows,
-                                        const std::vector<Param>& odeSens) {
+                                        const std::vector<Param>& odeSens,
+                                        const std::vector<std::uint8_t>& outletOnly = {}) {
     SimulationResult res;
     res.rows = rows;
     const bool uniform = isUniform(in.timeS);
@@ -329,15 +333,19 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
     // of earlier rows, so equal entry times share one integration.
     std::vector<double> entryTube;
     entryTube.reserve(2 * n);
+    constexpr std::size_t kNoParcel = std::numeric_limits<std::size_t>::max();
     std::vector<std::size_t> tubeOfA(n);
-    std::vector<std::size_t> tubeOfB(n);
+    std::vector<std::size_t> tubeOfB(n, kNoParcel);
+    const auto wantsTubeOutlet = [&](std::size_t j) { return outletOnly.empty() || !outletOnly[j]; };
     {
         std::vector<std::pair<double, std::size_t>> wanted; // (entry time, slot: j for A, n + j for B)
         wanted.reserve(2 * n);
         for (std::size_t j = 0; j < n; ++j) {
             const double tOut = in.timeS[rows[j]];
             wanted.emplace_back(tOut - (tauH + tauC + tW), j);
-            wanted.emplace_back(tOut - tauH, n + j);
+            if (wantsTubeOutlet(j)) {
+                wanted.emplace_back(tOut - tauH, n + j);
+            }
         }
         std::sort(wanted.begin(), wanted.end());
         for (const auto& [t, slot] : wanted) {
@@ -384,11 +392,13 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
     res.tHdtK.resize(n);
     res.proxyXHdtDb.resize(n);
     res.proxyTHdtK.resize(n);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t j = 0; j < n; ++j) {
         res.proxyXHdtDb[j] = y[2 * tubeOfA[j]];
         res.proxyTHdtK[j] = y[2 * tubeOfA[j] + 1];
-        res.xHdtDb[j] = y[2 * tubeOfB[j]];
-        res.tHdtK[j] = y[2 * tubeOfB[j] + 1];
+        const bool b = tubeOfB[j] != kNoParcel;
+        res.xHdtDb[j] = b ? y[2 * tubeOfB[j]] : nan;
+        res.tHdtK[j] = b ? y[2 * tubeOfB[j] + 1] : nan;
     }
     for (std::size_t q = 0; q < ns; ++q) {
         OutputSensitivity os;
@@ -396,8 +406,9 @@ Expected<SimulationResult> simulateCore(const LineInputs& in, const ParameterSet
         os.dXHdt.resize(n);
         os.dTHdt.resize(n);
         for (std::size_t j = 0; j < n; ++j) {
-            os.dXHdt[j] = yS[q][2 * tubeOfB[j]];
-            os.dTHdt[j] = yS[q][2 * tubeOfB[j] + 1];
+            const bool b = tubeOfB[j] != kNoParcel;
+            os.dXHdt[j] = b ? yS[q][2 * tubeOfB[j]] : nan;
+            os.dTHdt[j] = b ? yS[q][2 * tubeOfB[j] + 1] : nan;
         }
         res.sensitivities.push_back(std::move(os));
     }
@@ -643,22 +654,60 @@ void applyMeterOffset(SimulationResult& res, double offsetPct, const std::vector
     }
 }
 
+/// ∂X_out/∂X_meter_offset of the reading after the offset: dX/dw = 100/(100 − w)² per % wb from
+/// the onset on, 0 before it.
+OutputSensitivity meterOffsetSensitivity(const SimulationResult& res, const std::vector<double>& timeS,
+                                         double onsetS) {
+    const std::size_t n = res.xOutDb.size();
+    OutputSensitivity os{Param::X_meter_offset, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0),
+                         std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
+    for (std::size_t j = 0; j < n; ++j) {
+        if (timeS[res.rows[j]] >= onsetS) {
+            const double wet = units::dryToWetPct(res.xOutDb[j]);
+            os.dXOut[j] = 100.0 / ((100.0 - wet) * (100.0 - wet));
+        }
+    }
+    return os;
+}
+
+/// Step and span of the central difference in a lag time @p v [s], one-sided at its lower bound
+/// 0 (the same steps the whole-run differences of simulateLine take).
+struct LagStep {
+    double up, down, span;
+};
+LagStep lagStep(double v) {
+    const double h = 1e-3 * std::max(1.0, std::abs(v));
+    const bool oneSided = v - h < 0;
+    return {v + h, oneSided ? v : v - h, oneSided ? h : 2 * h};
+}
+
 /// The outlet as measured: the line's outlet mixing (tau_mix, a first-order lag on X_out and
 /// T_out), then the moisture_meter_lag and moisture_meter_offset extensions (first-order lag, then
 /// a constant offset in % wb) on X_out, each applied to the prediction and its sensitivities.
+/// @p outputSens (tau_mix, tau_meter, X_meter_offset) act on the outlet only: their sensitivities
+/// come from this one run's outlet history (differences of the lags, the offset's slope) instead
+/// of two more runs of the line each, and carry no solver noise.
 Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const ParameterSet& params,
                                             const SimulationOptions& o, const std::vector<std::size_t>& rows,
-                                            const std::vector<Param>& odeSens) {
+                                            const std::vector<Param>& odeSens,
+                                            const std::vector<Param>& outputSens) {
     const auto corrected = correctedInputs(measured, params);
     const LineInputs& in = corrected ? *corrected : measured;
     const double tauMeter = params[Param::tau_meter];
     const double tauMix = params[Param::tau_mix];
     const double offsetPct = params[Param::X_meter_offset];
     const double onsetS = in.timeS.front() + params[Param::t_onset];
-    if ((tauMeter <= 0 && tauMix <= 0) || rows.empty()) {
+    const auto wants = [&](Param q) {
+        return std::find(outputSens.begin(), outputSens.end(), q) != outputSens.end();
+    };
+    const bool lagged = tauMeter > 0 || tauMix > 0;
+    if ((!lagged && !wants(Param::tau_meter) && !wants(Param::tau_mix)) || rows.empty()) {
         auto res = simulateCore(in, params, o, rows, odeSens);
         if (res && offsetPct != 0) {
             applyMeterOffset(*res, offsetPct, in.timeS, onsetS);
+        }
+        if (res && wants(Param::X_meter_offset)) {
+            res->sensitivities.push_back(meterOffsetSensitivity(*res, in.timeS, onsetS));
         }
         return res;
     }
@@ -677,17 +726,21 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
     for (std::size_t j = 0; j < rows.size() && everyRow; ++j) {
         everyRow = rows[j] == j;
     }
-    const bool onGrid = o.meterGridS > 0 && !everyRow;
+    // Without a lag (a lag's sensitivity at 0 alone) the history that counts is the wanted row and
+    // the sample before it: a lag of the difference step (1 ms) forgets anything older (e^-1000 a
+    // second back), so the grid is not run.
+    const bool rawTailOnly = !lagged && !everyRow;
+    const bool onGrid = o.meterGridS > 0 && !everyRow && !rawTailOnly;
     // The history: the grid on averaged inputs, and the wanted row and the one before it on the
     // raw inputs. So the filtered value tends to the raw output as τ → 0 (the score test's
     // difference at τ = 0 is then −dX/dt of the raw output); a longer raw tail measured no more
     // accurate (tests/engine/physics).
     constexpr double kRawTailS = 2;
     enum : std::uint8_t { kNone = 0, kGrid = 1, kRaw = 2 };
-    std::vector<std::uint8_t> kind(last + 1, onGrid ? kNone : kRaw);
-    if (onGrid) {
+    std::vector<std::uint8_t> kind(last + 1, onGrid || rawTailOnly ? kNone : kRaw);
+    if (onGrid || rawTailOnly) {
         double lastGridTime = -std::numeric_limits<double>::infinity();
-        for (std::size_t j = 0; j <= last; ++j) {
+        for (std::size_t j = 0; j <= last && onGrid; ++j) {
             if (in.timeS[j] - lastGridTime >= o.meterGridS - 1e-9) {
                 kind[j] = kGrid;
                 lastGridTime = in.timeS[j];
@@ -703,6 +756,11 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
                 kind[j] = kRaw;
             }
         }
+        for (std::size_t r : rows) {
+            if (rawTailOnly && r > 0) {
+                kind[r - 1] = kRaw; // the sample before, however far back
+            }
+        }
     }
     std::vector<std::size_t> historyRows, rawRows, gridRows;
     std::vector<std::uint8_t> historyKind;
@@ -716,19 +774,28 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
             list.push_back(j);
         }
     }
-    auto raw = simulateCore(in, params, o, rawRows, odeSens);
+    // Only the wanted rows need the tube's outlet; the raw tail before each and the grid are
+    // there for the outlet's history.
+    std::vector<std::uint8_t> tailOnly(rawRows.size(), 1);
+    for (std::size_t r : rows) {
+        tailOnly[static_cast<std::size_t>(std::lower_bound(rawRows.begin(), rawRows.end(), r) -
+                                          rawRows.begin())] = 0;
+    }
+    auto raw = simulateCore(in, params, o, rawRows, odeSens, tailOnly);
     if (!raw) {
         return raw;
     }
+    // Without a lag the rate parameters' outlet sensitivities are the wanted rows' own, so the
+    // grid, there only for the lags' differences, is run without them.
     std::optional<Expected<SimulationResult>> grid;
     if (!gridRows.empty()) {
-        grid.emplace(simulateCore(boxSmoothed(in, o.meterGridS), params, o, gridRows, odeSens));
+        grid.emplace(simulateCore(boxSmoothed(in, o.meterGridS), params, o, gridRows,
+                                  lagged ? odeSens : std::vector<Param>{},
+                                  std::vector<std::uint8_t>(gridRows.size(), 1)));
         if (!*grid) {
             return grid->error();
         }
     }
-    // Exact first-order response to an input linear between history points: as τ → 0 it tends to
-    // the input minus τ times its slope, so the sensitivity at τ = 0 is −dX/dt, not 0.
     const auto historyOf = [&](auto member) {
         std::vector<double> u(historyRows.size());
         for (std::size_t h = 0; h < u.size(); ++h) {
@@ -740,16 +807,18 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
     for (std::size_t h = 0; h < historyRows.size(); ++h) {
         historyTimeS[h] = in.timeS[historyRows[h]];
     }
-    const auto lagOver = [&](std::vector<double> u, double tau) {
-        return lagOfPiecewiseLinear(historyTimeS, std::move(u), tau);
+    // Exact first-order response to an input linear between history points: as τ → 0 it tends to
+    // the input minus τ times its slope, so the sensitivity at τ = 0 is −dX/dt, not 0.
+    const auto lagOver = [&](const std::vector<double>& u, double tau) {
+        return lagOfPiecewiseLinear(historyTimeS, u, tau);
     };
     // The line's outlet mixing acts on both outlet channels; the meter's lag on top of it, on X_out.
-    const auto xOutMixed =
-        lagOver(historyOf([](const SimulationResult& r) -> const auto& { return r.xOutDb; }), tauMix);
-    const auto tOutMixed =
-        lagOver(historyOf([](const SimulationResult& r) -> const auto& { return r.tOutK; }), tauMix);
+    const auto xOutHistory = historyOf([](const SimulationResult& r) -> const auto& { return r.xOutDb; });
+    const auto tOutHistory = historyOf([](const SimulationResult& r) -> const auto& { return r.tOutK; });
+    const auto xOutMixed = lagOver(xOutHistory, tauMix);
+    const auto tOutMixed = lagOver(tOutHistory, tauMix);
     std::vector<std::vector<double>> sensXMixed, sensTMixed;
-    for (std::size_t q = 0; q < raw->sensitivities.size(); ++q) {
+    for (std::size_t q = 0; q < raw->sensitivities.size() && lagged; ++q) {
         sensXMixed.push_back(lagOver(
             historyOf([q](const SimulationResult& r) -> const auto& { return r.sensitivities[q].dXOut; }),
             tauMix));
@@ -772,14 +841,6 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
         }
         v = std::move(out);
     };
-    for (auto* v : {&res.xHdtDb, &res.tHdtK, &res.proxyXHdtDb, &res.proxyTHdtK, &res.proxyXConvDb,
-                    &res.proxyTConvK, &res.proxyXMixDb, &res.proxyTMixK}) {
-        pick(*v);
-    }
-    for (auto& sens : res.sensitivities) {
-        pick(sens.dXHdt);
-        pick(sens.dTHdt);
-    }
     const auto atWanted = [&](const std::vector<double>& history) {
         std::vector<double> out(rows.size());
         for (std::size_t j = 0; j < rows.size(); ++j) {
@@ -788,9 +849,9 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
         return out;
     };
     // Before the onset the meter reads without its lag (the mixed outlet at the wanted rows).
-    const auto meterReading = [&](const std::vector<double>& mixedHistory) {
-        auto out = atWanted(lagOver(mixedHistory, tauMeter));
-        if (tauMeter > 0 && onsetS > in.timeS.front()) {
+    const auto meterReading = [&](const std::vector<double>& mixedHistory, double tau) {
+        auto out = atWanted(lagOver(mixedHistory, tau));
+        if (tau > 0 && onsetS > in.timeS.front()) {
             const auto mixed = atWanted(mixedHistory);
             for (std::size_t j = 0; j < rows.size(); ++j) {
                 if (in.timeS[rows[j]] < onsetS) {
@@ -800,15 +861,54 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
         }
         return out;
     };
-    res.xOutDb = meterReading(xOutMixed);
-    res.tOutK = atWanted(tOutMixed);
     for (std::size_t q = 0; q < res.sensitivities.size(); ++q) {
-        res.sensitivities[q].dXOut = meterReading(sensXMixed[q]);
-        res.sensitivities[q].dTOut = atWanted(sensTMixed[q]);
+        auto& sens = res.sensitivities[q];
+        if (lagged) {
+            sens.dXOut = meterReading(sensXMixed[q], tauMeter);
+            sens.dTOut = atWanted(sensTMixed[q]);
+        } else {
+            pick(sens.dXOut);
+            pick(sens.dTOut);
+        }
+        pick(sens.dXHdt);
+        pick(sens.dTHdt);
+    }
+    for (auto* v : {&res.xHdtDb, &res.tHdtK, &res.proxyXHdtDb, &res.proxyTHdtK, &res.proxyXConvDb,
+                    &res.proxyTConvK, &res.proxyXMixDb, &res.proxyTMixK}) {
+        pick(*v);
+    }
+    res.xOutDb = meterReading(xOutMixed, tauMeter);
+    res.tOutK = atWanted(tOutMixed);
+    const auto zeros = std::vector<double>(rows.size(), 0.0);
+    const auto difference = [&](const std::vector<double>& up, const std::vector<double>& down, double span) {
+        std::vector<double> d(up.size());
+        for (std::size_t j = 0; j < d.size(); ++j) {
+            d[j] = (up[j] - down[j]) / span;
+        }
+        return d;
+    };
+    if (wants(Param::tau_mix)) {
+        const LagStep s = lagStep(tauMix);
+        res.sensitivities.push_back(
+            {Param::tau_mix,
+             difference(meterReading(lagOver(xOutHistory, s.up), tauMeter),
+                        meterReading(lagOver(xOutHistory, s.down), tauMeter), s.span),
+             difference(atWanted(lagOver(tOutHistory, s.up)), atWanted(lagOver(tOutHistory, s.down)), s.span),
+             zeros, zeros});
+    }
+    if (wants(Param::tau_meter)) {
+        const LagStep s = lagStep(tauMeter);
+        res.sensitivities.push_back(
+            {Param::tau_meter,
+             difference(meterReading(xOutMixed, s.up), meterReading(xOutMixed, s.down), s.span), zeros, zeros,
+             zeros});
     }
     res.rows = rows;
     if (offsetPct != 0) {
         applyMeterOffset(res, offsetPct, in.timeS, onsetS);
+    }
+    if (wants(Param::X_meter_offset)) {
+        res.sensitivities.push_back(meterOffsetSensitivity(res, in.timeS, onsetS));
     }
     return res;
 }
@@ -876,12 +976,12 @@ Expected<SimulationResult> simulateLine(const LineInputs& inputs, const Paramete
                          "row " + std::to_string(r) + " is past the end of the batch"};
         }
     }
-    std::vector<Param> odeSens;
-    std::vector<Param> durationSens;
+    std::vector<Param> odeSens, outputSens, durationSens;
     for (Param q : options.sensitivities) {
-        (properties::info(q).duration ? durationSens : odeSens).push_back(q);
+        const bool outletOnly = q == Param::tau_mix || q == Param::tau_meter || q == Param::X_meter_offset;
+        (outletOnly ? outputSens : properties::info(q).duration ? durationSens : odeSens).push_back(q);
     }
-    auto res = simulateMeasured(inputs, params, options, rows, odeSens);
+    auto res = simulateMeasured(inputs, params, options, rows, odeSens, outputSens);
     if (!res) {
         return res;
     }
@@ -900,8 +1000,8 @@ Expected<SimulationResult> simulateLine(const LineInputs& inputs, const Paramete
         const bool oneSided = v - h < properties::info(q).lower;
         dn[q] = oneSided ? v : v - h;
         const double span = oneSided ? h : 2 * h;
-        auto ru = simulateMeasured(inputs, up, plain, rows, {});
-        auto rd = simulateMeasured(inputs, dn, plain, rows, {});
+        auto ru = simulateMeasured(inputs, up, plain, rows, {}, {});
+        auto rd = simulateMeasured(inputs, dn, plain, rows, {}, {});
         if (!ru || !rd) {
             return ru ? rd.error() : ru.error();
         }
