@@ -1,5 +1,7 @@
 #include "diagnostics/WelchPsd.h"
 
+#include "diagnostics/FftwPlanner.h"
+
 #include <cmath>
 #include <fftw3.h>
 #include <memory>
@@ -9,11 +11,12 @@ namespace drytwin::diagnostics {
 
 namespace {
 constexpr double kPi = 3.141592653589793238462643383279502884;
+} // namespace
+
 std::mutex& fftwPlanMutex() {
     static std::mutex m; // FFTW's planner is not thread-safe; execution is.
     return m;
 }
-} // namespace
 
 Status WelchOptions::validate() const {
     if (!(sampleRateHz > 0 && std::isfinite(sampleRateHz))) {

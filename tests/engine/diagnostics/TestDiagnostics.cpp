@@ -1,6 +1,7 @@
 #include "diagnostics/Correlation.h"
 #include "diagnostics/DieboldMariano.h"
 #include "diagnostics/LjungBox.h"
+#include "diagnostics/LongRunVariance.h"
 #include "diagnostics/Metrics.h"
 #include "diagnostics/Stability.h"
 #include "diagnostics/WelchPsd.h"
@@ -143,6 +144,75 @@ private Q_SLOTS:
         // White noise spreads power evenly: about 0.02/0.5 of it below 0.02 Hz.
         QVERIFY(white > 0.01 && white < 0.1);
         QVERIFY(coloured > 3 * white);
+    }
+
+    void longRunVarianceAndBandwidthMatchDirectSums_data() {
+        QTest::addColumn<double>("phi");
+        QTest::addColumn<int>("n");
+        QTest::addColumn<int>("lag");
+        QTest::addColumn<bool>("demean");
+        QTest::newRow("white, short window (direct)") << 0.0 << 500 << 5 << true;
+        QTest::newRow("AR(1) 0.995, 6300 rows, 700 lags (FFT)") << 0.995 << 6300 << 700 << true;
+        QTest::newRow("AR(1) 0.99 about 0, 5000 rows, 2000 lags (FFT)") << 0.99 << 5000 << 2000 << false;
+        QTest::newRow("window longer than the series") << 0.9 << 300 << 1000 << true;
+    }
+    void longRunVarianceAndBandwidthMatchDirectSums() {
+        // Long series with long windows go through FFTW; the result must be the textbook sum.
+        QFETCH(double, phi);
+        QFETCH(int, n);
+        QFETCH(int, lag);
+        QFETCH(bool, demean);
+        std::mt19937 rng(7);
+        std::normal_distribution<double> e(0, 1);
+        std::vector<double> x(static_cast<std::size_t>(n));
+        double state = 0;
+        for (auto& v : x) {
+            state = phi * state + e(rng);
+            v = 0.3 + state;
+        }
+        double m = 0;
+        for (double v : x) {
+            m += demean ? v / n : 0.0;
+        }
+        const auto gamma = [&](int k) {
+            double s = 0;
+            for (int t = k; t < n; ++t) {
+                s += (x[t] - m) * (x[t - k] - m);
+            }
+            return s / n;
+        };
+        double expected = gamma(0);
+        for (int l = 1; l <= lag && l < n; ++l) {
+            expected += 2.0 * (1.0 - static_cast<double>(l) / (lag + 1)) * gamma(l);
+        }
+        const double got = longRunVariance(x, lag, demean);
+        QVERIFY2(std::abs(got - expected) <= 1e-10 * std::abs(expected),
+                 qPrintable(QString("%1 vs %2").arg(got, 0, 'g', 17).arg(expected, 0, 'g', 17)));
+        // The bandwidth: the first lag whose autocorrelation (about the mean) falls below 0.1.
+        double mean = 0;
+        for (double v : x) {
+            mean += v / n;
+        }
+        double denom = 0;
+        for (double v : x) {
+            denom += (v - mean) * (v - mean);
+        }
+        const int maxLag = std::min(n / 3, n / 2);
+        int first = maxLag;
+        for (int k = 1; k <= maxLag; ++k) {
+            double s = 0;
+            for (int t = k; t < n; ++t) {
+                s += (x[t] - mean) * (x[t - k] - mean);
+            }
+            if (!(std::abs(s / denom) >= 0.1)) {
+                first = k;
+                break;
+            }
+        }
+        QCOMPARE(bandwidthFromAutocorrelation(x, 0.1, n / 3), first);
+        if (phi > 0.98) {
+            QVERIFY(first > 100); // long memory: the FFT part of the search decided
+        }
     }
 
     void maeAndR2() {
