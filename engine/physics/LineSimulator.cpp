@@ -670,15 +670,25 @@ OutputSensitivity meterOffsetSensitivity(const SimulationResult& res, const std:
     return os;
 }
 
-/// Step and span of the central difference in a lag time @p v [s], one-sided at its lower bound
-/// 0 (the same steps the whole-run differences of simulateLine take).
-struct LagStep {
+/// The two values of a parameter at @p v a sensitivity's difference is taken between, and their
+/// span: central, one-sided at the parameter's lower bound @p lower (a meter lag of 0).
+struct DifferenceStep {
     double up, down, span;
 };
-LagStep lagStep(double v) {
+DifferenceStep differenceStep(double v, double lower) {
     const double h = 1e-3 * std::max(1.0, std::abs(v));
-    const bool oneSided = v - h < 0;
+    const bool oneSided = v - h < lower;
     return {v + h, oneSided ? v : v - h, oneSided ? h : 2 * h};
+}
+
+/// (up − down) / span, element by element.
+std::vector<double> dividedDifference(const std::vector<double>& up, const std::vector<double>& down,
+                                      double span) {
+    std::vector<double> d(up.size());
+    for (std::size_t j = 0; j < d.size(); ++j) {
+        d[j] = (up[j] - down[j]) / span;
+    }
+    return d;
 }
 
 /// The outlet as measured: the line's outlet mixing (tau_mix, a first-order lag on X_out and
@@ -880,28 +890,22 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
     res.xOutDb = meterReading(xOutMixed, tauMeter);
     res.tOutK = atWanted(tOutMixed);
     const auto zeros = std::vector<double>(rows.size(), 0.0);
-    const auto difference = [&](const std::vector<double>& up, const std::vector<double>& down, double span) {
-        std::vector<double> d(up.size());
-        for (std::size_t j = 0; j < d.size(); ++j) {
-            d[j] = (up[j] - down[j]) / span;
-        }
-        return d;
-    };
     if (wants(Param::tau_mix)) {
-        const LagStep s = lagStep(tauMix);
+        const auto s = differenceStep(tauMix, properties::info(Param::tau_mix).lower);
         res.sensitivities.push_back(
             {Param::tau_mix,
-             difference(meterReading(lagOver(xOutHistory, s.up), tauMeter),
-                        meterReading(lagOver(xOutHistory, s.down), tauMeter), s.span),
-             difference(atWanted(lagOver(tOutHistory, s.up)), atWanted(lagOver(tOutHistory, s.down)), s.span),
+             dividedDifference(meterReading(lagOver(xOutHistory, s.up), tauMeter),
+                               meterReading(lagOver(xOutHistory, s.down), tauMeter), s.span),
+             dividedDifference(atWanted(lagOver(tOutHistory, s.up)), atWanted(lagOver(tOutHistory, s.down)),
+                               s.span),
              zeros, zeros});
     }
     if (wants(Param::tau_meter)) {
-        const LagStep s = lagStep(tauMeter);
+        const auto s = differenceStep(tauMeter, properties::info(Param::tau_meter).lower);
         res.sensitivities.push_back(
             {Param::tau_meter,
-             difference(meterReading(xOutMixed, s.up), meterReading(xOutMixed, s.down), s.span), zeros, zeros,
-             zeros});
+             dividedDifference(meterReading(xOutMixed, s.up), meterReading(xOutMixed, s.down), s.span), zeros,
+             zeros, zeros});
     }
     res.rows = rows;
     if (offsetPct != 0) {
@@ -991,15 +995,11 @@ Expected<SimulationResult> simulateLine(const LineInputs& inputs, const Paramete
         plain.sensitivities.clear();
         // Solver noise divided by the step would swamp the difference: tighten the tolerance.
         plain.relTol = std::min(options.relTol, 1e-9);
-        const double v = params[q];
-        const double h = 1e-3 * std::max(1.0, std::abs(v));
+        const auto step = differenceStep(params[q], properties::info(q).lower);
         ParameterSet up = params;
         ParameterSet dn = params;
-        up[q] = v + h;
-        // At a lower bound (a meter lag of 0) the difference is one-sided.
-        const bool oneSided = v - h < properties::info(q).lower;
-        dn[q] = oneSided ? v : v - h;
-        const double span = oneSided ? h : 2 * h;
+        up[q] = step.up;
+        dn[q] = step.down;
         auto ru = simulateMeasured(inputs, up, plain, rows, {}, {});
         auto rd = simulateMeasured(inputs, dn, plain, rows, {}, {});
         if (!ru || !rd) {
@@ -1007,17 +1007,10 @@ Expected<SimulationResult> simulateLine(const LineInputs& inputs, const Paramete
         }
         OutputSensitivity os;
         os.param = q;
-        const auto diff = [&](const std::vector<double>& a, const std::vector<double>& b) {
-            std::vector<double> d(a.size());
-            for (std::size_t i = 0; i < a.size(); ++i) {
-                d[i] = (a[i] - b[i]) / span;
-            }
-            return d;
-        };
-        os.dXOut = diff(ru->xOutDb, rd->xOutDb);
-        os.dTOut = diff(ru->tOutK, rd->tOutK);
-        os.dXHdt = diff(ru->xHdtDb, rd->xHdtDb);
-        os.dTHdt = diff(ru->tHdtK, rd->tHdtK);
+        os.dXOut = dividedDifference(ru->xOutDb, rd->xOutDb, step.span);
+        os.dTOut = dividedDifference(ru->tOutK, rd->tOutK, step.span);
+        os.dXHdt = dividedDifference(ru->xHdtDb, rd->xHdtDb, step.span);
+        os.dTHdt = dividedDifference(ru->tHdtK, rd->tHdtK, step.span);
         res->sensitivities.push_back(std::move(os));
     }
     // Report sensitivities in the order they were asked for.
