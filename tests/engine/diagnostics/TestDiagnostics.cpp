@@ -197,7 +197,7 @@ private Q_SLOTS:
         for (double v : x) {
             denom += (v - mean) * (v - mean);
         }
-        const int maxLag = std::min(n / 3, n / 2);
+        const int maxLag = n / 3; // the window asked for, within the function's own cap of n/2
         int first = maxLag;
         for (int k = 1; k <= maxLag; ++k) {
             double s = 0;
