@@ -73,25 +73,24 @@ double longRunVariance(const std::vector<double>& x, int lag, bool demean) {
     }
     const double m = demean ? meanOf(x) : 0.0;
     const int summed = std::max(0, std::min(lag, static_cast<int>(n) - 1)); // lags that exist
+    // Σ_t (x_t − m)(x_{t+l} − m) for l = 0..summed: directly while cheap, by FFT beyond.
+    std::vector<double> sums;
     if (static_cast<double>(n) * (summed + 1) > kDirectProducts) {
-        const auto sums = laggedProductsByFft(x, m, summed);
-        double v = sums[0] / static_cast<double>(n);
-        for (int l = 1; l <= summed; ++l) {
-            v += 2.0 * (1.0 - static_cast<double>(l) / (lag + 1)) * sums[static_cast<std::size_t>(l)] /
-                 static_cast<double>(n);
+        sums = laggedProductsByFft(x, m, summed);
+    } else {
+        sums.resize(static_cast<std::size_t>(summed) + 1);
+        for (std::size_t k = 0; k < sums.size(); ++k) {
+            double s = 0;
+            for (std::size_t t = k; t < n; ++t) {
+                s += (x[t] - m) * (x[t - k] - m);
+            }
+            sums[k] = s;
         }
-        return std::max(v, 0.0);
     }
-    auto gamma = [&](std::size_t k) {
-        double s = 0;
-        for (std::size_t t = k; t < n; ++t) {
-            s += (x[t] - m) * (x[t - k] - m);
-        }
-        return s / static_cast<double>(n);
-    };
-    double v = gamma(0);
-    for (int l = 1; l <= lag && static_cast<std::size_t>(l) < n; ++l) {
-        v += 2.0 * (1.0 - static_cast<double>(l) / (lag + 1)) * gamma(static_cast<std::size_t>(l));
+    double v = sums[0] / static_cast<double>(n);
+    for (int l = 1; l <= summed; ++l) {
+        v += 2.0 * (1.0 - static_cast<double>(l) / (lag + 1)) *
+             (sums[static_cast<std::size_t>(l)] / static_cast<double>(n));
     }
     return std::max(v, 0.0);
 }

@@ -670,6 +670,18 @@ OutputSensitivity meterOffsetSensitivity(const SimulationResult& res, const std:
     return os;
 }
 
+/// The meter's offset on a simulated outlet reading (from the onset on), and the offset's own
+/// sensitivity where it is asked for.
+void readThroughMeterOffset(SimulationResult& res, double offsetPct, bool withSensitivity,
+                            const std::vector<double>& timeS, double onsetS) {
+    if (offsetPct != 0) {
+        applyMeterOffset(res, offsetPct, timeS, onsetS);
+    }
+    if (withSensitivity) {
+        res.sensitivities.push_back(meterOffsetSensitivity(res, timeS, onsetS));
+    }
+}
+
 /// The two values of a parameter at @p v a sensitivity's difference is taken between, and their
 /// span: central, one-sided at the parameter's lower bound @p lower (a meter lag of 0).
 struct DifferenceStep {
@@ -713,11 +725,8 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
     const bool lagged = tauMeter > 0 || tauMix > 0;
     if ((!lagged && !wants(Param::tau_meter) && !wants(Param::tau_mix)) || rows.empty()) {
         auto res = simulateCore(in, params, o, rows, odeSens);
-        if (res && offsetPct != 0) {
-            applyMeterOffset(*res, offsetPct, in.timeS, onsetS);
-        }
-        if (res && wants(Param::X_meter_offset)) {
-            res->sensitivities.push_back(meterOffsetSensitivity(*res, in.timeS, onsetS));
+        if (res) {
+            readThroughMeterOffset(*res, offsetPct, wants(Param::X_meter_offset), in.timeS, onsetS);
         }
         return res;
     }
@@ -908,12 +917,7 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
              zeros, zeros});
     }
     res.rows = rows;
-    if (offsetPct != 0) {
-        applyMeterOffset(res, offsetPct, in.timeS, onsetS);
-    }
-    if (wants(Param::X_meter_offset)) {
-        res.sensitivities.push_back(meterOffsetSensitivity(res, in.timeS, onsetS));
-    }
+    readThroughMeterOffset(res, offsetPct, wants(Param::X_meter_offset), in.timeS, onsetS);
     return res;
 }
 
