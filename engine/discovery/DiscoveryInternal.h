@@ -2,9 +2,9 @@
 // Internals shared by the discovery files (not part of the engine's interface). Discovery answers
 // four questions: what the simulation gets wrong (ResidualAnalysis.cpp), which cause could
 // explain it and how large (CandidateTests.cpp), which cause to name and whether it is specific
-// (Discovery.cpp: selection; Confirmation.cpp, Specificity.cpp, PracticalFloors.cpp and, for
-// onsets and lags, Dynamics.cpp), and how to say so (FindingText.cpp). DiscoveryData.cpp: the
-// options and the data split.
+// (Discovery.cpp: the starting model and the rounds; Selection.cpp: one round; Confirmation.cpp,
+// Specificity.cpp, PracticalFloors.cpp and, for onsets and lags, Dynamics.cpp), and how to say so
+// (FindingText.cpp). DiscoveryData.cpp: the options and the data split.
 
 #include "discovery/Discovery.h"
 #include "physics/LineInputs.h"
@@ -308,6 +308,30 @@ using PlaceFit = std::function<Expected<const ParameterSet*>(Param other)>;
 Status addLookAlikes(const Problem& pr, Finding& f, const std::vector<Param>& remaining,
                      const PlaceFit& fitInPlace, const HeldOut& namedHeld,
                      const std::optional<ChannelTiming>& timing);
+/// The model as selection has extended it so far.
+struct ModelSoFar {
+    ParameterSet parameters;
+    double loss = 0;              ///< on the training subset
+    std::vector<Param> nuisance;  ///< refitted with every cause: h_HDT, k_HDT, ..., the causes named
+    std::vector<Param> remaining; ///< the causes not yet named
+    std::vector<physics::SimulationResult> sims; ///< every row of every batch
+    std::vector<OutputResidual> residuals;       ///< question 1 on those
+    HeldOut held;
+};
+/// Discovery's fit: @p free from @p start on the training subset, globally too when @p global,
+/// with the loss's channel weights @p weights (null: the options').
+using CauseFit = std::function<Expected<calibration::CalibrationResult>(
+    const ParameterSet& start, const std::vector<Param>& free, bool global,
+    const calibration::LossWeights* weights)>;
+/// Progress at a fraction of the whole discovery; true when the user stopped it.
+using StopAt = std::function<bool(double fraction, const std::string& detail)>;
+/// One round of selection (Selection.cpp): the remaining causes' score tests at @p model, the
+/// leading ones fitted, tried by training loss (the k-th at α/k) on the held-out part and for
+/// specificity, the outlet channels' timing where an outlet delay is confirmed. Records the round
+/// in @p result; where a cause is named, adds its finding with its look-alikes and extends
+/// @p model by it. True when a cause was named.
+Expected<bool> selectionRound(const Prepared& prepared, int round, const CauseFit& refit, const StopAt& stop,
+                              ModelSoFar& model, DiscoveryResult& result);
 /// The end of selection: every finding restated at the extended model @p extended (later rounds
 /// refit the causes named before), the bounds of what the last round tested and did not name,
 /// what no cause explains (@p residuals: the extended model's, @p sims its simulation), the
