@@ -197,14 +197,17 @@ int main(int argc, char** argv) {
                 100 * discoveryOptions.minExplainedFraction, firstNullSeed);
     const unsigned seeds[] = {firstSeed, firstSeed + 1, firstSeed + 2};
     const int nSeeds = quick ? 1 : 3;
-    // A realistic strength, and half of it (the sensor causes: the plant's typical value and twice
-    // it, since half would be within the instruments' stated accuracy).
+    // A realistic strength, and half of it. The sensor causes, the outlet meter's offset among
+    // them: the plant's typical value and twice it, since half would be within the instrument's
+    // stated accuracy, below which a cause is not named (a 0.1 % wb meter offset is within the
+    // meter's 0.15 % wb: turning it down as below_floor is the right answer, not a miss; until
+    // 2026-11-25 the meter offset ran at 0.2 and 0.1 against this rule).
     const std::tuple<plant::Mechanism, double, double> cases[] = {
         {plant::Mechanism::TubeWallHeatLoss, 0.3, 0.5},
         {plant::Mechanism::GasPhaseCoupling, 0.5, 0.5},
         {plant::Mechanism::HeatTransferFouling, 0.2, 0.5},
         {plant::Mechanism::MoistureMeterLag, 30, 0.5},
-        {plant::Mechanism::MoistureMeterOffset, 0.2, 0.5},
+        {plant::Mechanism::MoistureMeterOffset, 0.2, 2},
         {plant::Mechanism::TransportDelayError, 15, 0.5},
         {plant::Mechanism::FallingRateDrying, 0.5, 0.5},
         {plant::Mechanism::AmbientReabsorption, 3, 0.5},

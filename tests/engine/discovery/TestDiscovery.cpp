@@ -65,6 +65,36 @@ QString names(const discovery::DiscoveryResult& r) {
     return n.join(',') + " / " + QString::fromStdString(r.verdict) + "\n  " + rounds.join("\n  ");
 }
 
+/// Discovery on data with mechanism @p m at @p strength from @p onsetS into each batch.
+discovery::DiscoveryResult discoverFromOnset(Mechanism m, double strength, double onsetS) {
+    plant::PlantOptions o;
+    o.effects[m] = strength;
+    o.effectOnsetS[m] = onsetS;
+    return discoverIn(o);
+}
+
+/// Empty when the first finding of @p r acts from an onset within ±10 min of @p onsetS, inside
+/// its own interval; else what is wrong.
+QString onsetMismatch(const discovery::DiscoveryResult& r, double onsetS) {
+    if (r.findings.empty()) {
+        return "nothing named: " + names(r);
+    }
+    const auto& f = r.findings.front();
+    if (!f.hasOnset) {
+        return "no onset: " + names(r);
+    }
+    if (std::abs(f.onsetS - onsetS) > 600) {
+        return QStringLiteral("onset at %1 s").arg(f.onsetS);
+    }
+    if (!(f.onsetLowS <= f.onsetS && f.onsetS <= f.onsetHighS)) {
+        return QStringLiteral("onset %1 s outside [%2, %3] s")
+            .arg(f.onsetS)
+            .arg(f.onsetLowS)
+            .arg(f.onsetHighS);
+    }
+    return {};
+}
+
 } // namespace
 
 class TestDiscovery : public QObject {
@@ -212,18 +242,30 @@ private Q_SLOTS:
     void midBatchOnsetIsFoundWithItsTime() {
         // A meter offset that appears 20 min into each 50 min batch (a knocked sensor head):
         // named, with the onset within ±10 min and an interval around it.
-        plant::PlantOptions o;
-        o.effects[Mechanism::MoistureMeterOffset] = 0.5;
-        o.effectOnsetS[Mechanism::MoistureMeterOffset] = 1200;
-        const auto r = discoverIn(o);
-        QVERIFY2(!r.findings.empty(), qPrintable(names(r)));
+        const auto r = discoverFromOnset(Mechanism::MoistureMeterOffset, 0.5, 1200);
+        const QString onset = onsetMismatch(r, 1200);
+        QVERIFY2(onset.isEmpty(), qPrintable(onset));
         const auto& f = r.findings.front();
         QCOMPARE(f.cause, std::string("moisture_meter_offset"));
-        QVERIFY2(f.hasOnset, qPrintable(names(r)));
-        QVERIFY2(std::abs(f.onsetS - 1200) <= 600, qPrintable(QString::number(f.onsetS)));
-        QVERIFY(f.onsetLowS <= f.onsetS && f.onsetS <= f.onsetHighS);
         // Fitted where it acts, the offset is near the plant's (0.5 % wb at 55 °C).
         QVERIFY2(f.value > 0.3 && f.value < 0.8, qPrintable(QString::number(f.value)));
+    }
+
+    void midBatchMeterLagIsFoundOnItsEffect() {
+        // A 60 s meter lag from 20 min into each 50 min batch (a fouled sample window). Its
+        // tangent at 0 (the outlet's rate of change) shows no onset, and fitted from the start
+        // the lag is diluted by the 20 min without it, which the held-out part does not confirm.
+        // Its onset is found on its own effect on the training part: named, from its onset.
+        const auto r = discoverFromOnset(Mechanism::MoistureMeterLag, 60, 1200);
+        const QString onset = onsetMismatch(r, 1200);
+        QVERIFY2(onset.isEmpty(), qPrintable(onset));
+        // Alone, or in the outlet response time's group with a transport time.
+        const auto& f = r.findings.front();
+        const bool asLookAlike = std::any_of(f.lookAlikes.begin(), f.lookAlikes.end(), [](const auto& l) {
+            return l.cause == "moisture_meter_lag" && !l.ruledOut;
+        });
+        QVERIFY2(f.cause == "moisture_meter_lag" || (f.group == "outlet_response_time" && asLookAlike),
+                 qPrintable(names(r)));
     }
 
     void distributedNullNamesNothing() {
