@@ -40,13 +40,11 @@ Status SelectionRound::scoreAndFit() {
         if (m_cands[i].pValue >= m_options.screenAlpha) {
             break;
         }
-        if (m_stop(m_frac0 + 0.05 * (fitted + 1), "fitting " + m_cands[i].cause)) {
-            return cancelledError("discover");
-        }
         ++fitted;
-        if (auto fs = fitCause(m_cands[i], m_model.parameters[Param::t_onset]);
-            !fs && fs.error().kind == ErrorKind::Cancelled) {
-            return fs.error(); // a fit that fails otherwise counts as no evidence for this cause
+        if (auto fs = fitCause(m_cands[i], m_model.parameters[Param::t_onset], m_frac0 + 0.05 * fitted,
+                               "fitting " + m_cands[i].cause);
+            !fs) {
+            return fs.error();
         }
     }
     // The two outlet delays are fitted as a pair: a transport time that lowers the moisture's
@@ -61,11 +59,9 @@ Status SelectionRound::scoreAndFit() {
         if (!m_fits.count(fittedOne) || other == m_cands.end()) {
             continue;
         }
-        if (m_stop(m_frac0 + 0.2, "fitting " + other->cause)) {
-            return cancelledError("discover");
-        }
-        if (auto fs = fitCause(*other, m_model.parameters[Param::t_onset]);
-            !fs && fs.error().kind == ErrorKind::Cancelled) {
+        if (auto fs = fitCause(*other, m_model.parameters[Param::t_onset], m_frac0 + 0.2,
+                               "fitting " + other->cause);
+            !fs) {
             return fs.error();
         }
     }
@@ -79,8 +75,14 @@ int SelectionRound::columnOf(Param p) const {
         static_cast<std::size_t>(std::find(remaining.begin(), remaining.end(), p) - remaining.begin()));
 }
 
-/// The cause fitted with the nuisance parameters, acting from @p onsetS (0: throughout).
-Status SelectionRound::fitCause(Candidate& c, double onsetS) {
+/// The cause fitted with the nuisance parameters, acting from @p onsetS (0: throughout), with
+/// progress @p detail at @p fraction. False where the fit fails otherwise than by a cancel: no
+/// evidence for the cause either way; a cancel is an error.
+Expected<bool> SelectionRound::fitCause(Candidate& c, double onsetS, double fraction,
+                                        const std::string& detail) {
+    if (m_stop(fraction, detail)) {
+        return cancelledError("discover");
+    }
     std::vector<Param> free = m_model.nuisance;
     free.push_back(c.parameter);
     ParameterSet start = m_model.parameters;
@@ -90,27 +92,28 @@ Status SelectionRound::fitCause(Candidate& c, double onsetS) {
     start[Param::t_onset] = onsetS;
     auto fit = m_refit(start, free, false, nullptr);
     if (!fit) {
-        return fit.error();
+        if (fit.error().kind == ErrorKind::Cancelled) {
+            return fit.error();
+        }
+        return false;
     }
     c.fitted = true;
     c.fitLossBefore = m_model.loss;
     c.fitLossAfter = fit->after.loss;
     m_fits[c.parameter] = Fit{fit->parameters, fit->after.loss, {}};
-    return {};
+    return true;
 }
 
 /// The cause refitted from @p onset, where it acts; none where that refit fails (no
 /// evidence either way).
 Expected<std::optional<SelectionRound::Fit>> SelectionRound::refitFromOnset(const Candidate& cand,
                                                                             const Onset& onset) {
-    if (m_stop(m_frac0 + 0.2, "fitting " + cand.cause + " from its onset")) {
-        return cancelledError("discover");
-    }
     Candidate again = cand;
-    if (auto fs = fitCause(again, onset.s); !fs) {
-        if (fs.error().kind == ErrorKind::Cancelled) {
-            return fs.error();
-        }
+    auto fs = fitCause(again, onset.s, m_frac0 + 0.2, "fitting " + cand.cause + " from its onset");
+    if (!fs) {
+        return fs.error();
+    }
+    if (!*fs) {
         return std::optional<Fit>{};
     }
     return std::optional<Fit>{Fit{m_fits[cand.parameter].parameters, m_fits[cand.parameter].loss, onset}};

@@ -168,11 +168,9 @@ Status SelectionRound::confirmMeterLagAlone() {
                                   [&](const auto& c) { return c.parameter == Param::tau_meter; });
     bool confirmed = false;
     if (!m_fits.count(Param::tau_meter)) {
-        if (m_stop(m_frac0 + 0.25, "fitting " + meterCand->cause)) {
-            return cancelledError("discover");
-        }
-        if (auto fs = fitCause(*meterCand, m_model.parameters[Param::t_onset]);
-            !fs && fs.error().kind == ErrorKind::Cancelled) {
+        if (auto fs = fitCause(*meterCand, m_model.parameters[Param::t_onset], m_frac0 + 0.25,
+                               "fitting " + meterCand->cause);
+            !fs) {
             return fs.error();
         }
     }
@@ -208,15 +206,13 @@ Status SelectionRound::nameWithLookAlikes() {
         if (!m_fits.count(other)) {
             auto it = std::find_if(m_cands.begin(), m_cands.end(),
                                    [&](const auto& c) { return c.parameter == other; });
-            if (m_stop(m_frac0 + 0.25, "fitting the look-alike " + it->cause)) {
-                return cancelledError("discover");
-            }
             const double onsetS = m_model.parameters[Param::t_onset] > 0 ? m_model.parameters[Param::t_onset]
                                                                          : (f.hasOnset ? f.onsetS : 0);
-            if (auto fs = fitCause(*it, onsetS); !fs) {
-                if (fs.error().kind == ErrorKind::Cancelled) {
-                    return fs.error();
-                }
+            auto fs = fitCause(*it, onsetS, m_frac0 + 0.25, "fitting the look-alike " + it->cause);
+            if (!fs) {
+                return fs.error();
+            }
+            if (!*fs) {
                 return static_cast<const ParameterSet*>(nullptr);
             }
         }

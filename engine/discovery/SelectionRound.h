@@ -42,7 +42,7 @@ private:
     // CandidateFits.cpp
     Status scoreAndFit();
     int columnOf(Param p) const;
-    Status fitCause(Candidate& c, double onsetS);
+    Expected<bool> fitCause(Candidate& c, double onsetS, double fraction, const std::string& detail);
     Expected<std::optional<Fit>> refitFromOnset(const Candidate& cand, const Onset& onset);
     Expected<Fit> fittedFromOnset(const Candidate& cand);
     Expected<Confirmation> confirm(const Candidate& cand, const Fit& fit, int k) const;
