@@ -194,6 +194,11 @@ CommandLine::CommandLine() : m_impl(new Impl) {
                      "remove to be named")
         ->capture_default_str();
     discover
+        ->add_option("--causes", o.causes,
+                     "only these candidate causes (CONTRACT.md §4 names, comma-separated; default: all "
+                     "eleven): ask about one suspect")
+        ->delimiter(',');
+    discover
         ->add_option("--fast-window", o.fastWindowS,
                      "seconds: the error's fast part is the error about its centred moving average over "
                      "this window, per batch (0: judge the whole error only)")

@@ -41,6 +41,7 @@ struct CommandOptions {
     bool sensorModeGiven = false;
     plant::SensorFaultRates sensorFaults; ///< generate: per channel and hour
     int maxCauses = 3;                    ///< discover
+    std::vector<std::string> causes;      ///< discover: only these candidate causes (empty: all)
     double minExplained = discovery::DiscoveryOptions{}.minExplainedFraction; ///< discover
     double fastWindowS = discovery::DiscoveryOptions{}.fastBandWindowS;       ///< discover
     std::vector<std::string> effects;

@@ -6,8 +6,9 @@
 // Run: build/bench/study_discovery [--quick] [--plant distributed|lumped] [--sensors realistic|ideal|default]
 //      [--part mechanisms|nulls|onsets] [--mechanism NAME (e.g. moisture_meter_lag)] [--verbose]
 //      [--null-seeds FIRST (20 seeds from it; default 201)] [--min-explained SHARE (default 0.15)]
-//      [--candidates N (fitted per round; default 3)] [--seeds FIRST (mechanism runs' three seeds;
-//      default 101, onsets FIRST+100)] [--unimproved-alpha A (default 0.05; 1: the rule before)]
+//      [--candidates N (fitted per round; default 3)] [--evaluations N (per fit; default 120)]
+//      [--oracle (each mechanism run asks about its hidden cause alone)] [--seeds FIRST (mechanism runs'
+//      three seeds; default 101, onsets FIRST+100)] [--unimproved-alpha A (default 0.05; 1: the rule before)]
 // (lumped, its built-in sensors: about 8 min on 2 cores; --quick: one seed). The default plant is
 // the distributed one with realistic sensors (issue #22), whose nulls include its own structure.
 #include "discovery/Discovery.h"
@@ -37,6 +38,10 @@ struct Outcome {
 };
 
 bool verbose = false; ///< --verbose: each turned-down candidate's reason, not only its code
+/// --oracle: each mechanism run asks about its hidden cause alone (fitted whenever its score points
+/// the way that helps) and reports how the judgement rules see it: the bound on what any choice
+/// among the candidates can reach with these rules.
+bool oracle = false;
 discovery::DiscoveryOptions discoveryOptions; ///< --min-explained changes its share
 
 Outcome run(plant::PlantOptions o, const std::string& hidden) {
@@ -49,7 +54,13 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
         return out;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    auto r = discovery::discover(plant::toSiBatches(*p, o.seed), hybrid::HybridModel{}, discoveryOptions);
+    auto asked = discoveryOptions;
+    if (oracle && !hidden.empty()) {
+        asked.causes = {hidden};
+        asked.screenAlpha = 0.49; // fitted whenever its tangent points the way that helps
+        asked.maxCauses = 1;
+    }
+    auto r = discovery::discover(plant::toSiBatches(*p, o.seed), hybrid::HybridModel{}, asked);
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!r) {
         out.named = "error: " + r.error().message();
@@ -111,6 +122,22 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
         }
         out.named = "(" + r->verdict + why + ")";
     }
+    if (oracle && !hidden.empty()) { // the hidden cause's own held-out evidence, named or not
+        char text[200];
+        if (!r->findings.empty()) {
+            const auto& f = r->findings.front();
+            std::snprintf(text, sizeof text, " <oracle named p %.2g share %.3f fast %.3f>", f.gain.pValue,
+                          f.explainedFraction, f.explainedFractionFast);
+        } else if (!r->rounds.empty() && !r->rounds.front().rejected.empty()) {
+            const auto& rd = r->rounds.front();
+            std::snprintf(text, sizeof text, " <oracle %s p %.2g share %.3f fast %.3f>",
+                          rd.rejected.front().code.c_str(), rd.heldOutPValue, rd.explainedFraction,
+                          rd.explainedFractionFast);
+        } else {
+            std::snprintf(text, sizeof text, " <oracle not_fitted>");
+        }
+        out.named += text;
+    }
     if (verbose) { // the first round's candidates: fitted or not, the screen and the predicted share
         std::string ranking;
         for (const auto& c : r->ranking) {
@@ -156,6 +183,8 @@ int main(int argc, char** argv) {
             ++i;
         } else if (a == "--verbose") {
             verbose = true;
+        } else if (a == "--oracle") {
+            oracle = true;
         } else if (a == "--mechanism" && !next.empty()) {
             only = next;
             ++i;
@@ -174,11 +203,15 @@ int main(int argc, char** argv) {
         } else if (a == "--candidates" && std::atoi(next.c_str()) > 0) {
             discoveryOptions.candidatesToFit = std::atoi(next.c_str());
             ++i;
+        } else if (a == "--evaluations" && std::atoi(next.c_str()) >= 10) {
+            discoveryOptions.maxEvaluationsPerFit = std::atoi(next.c_str());
+            ++i;
         } else {
             std::fprintf(stderr, "usage: study_discovery [--quick] [--plant distributed|lumped] "
                                  "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
                                  "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
-                                 "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N]\n");
+                                 "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
+                                 "[--evaluations N] [--oracle]\n");
             return 2;
         }
     }

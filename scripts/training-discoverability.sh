@@ -5,6 +5,8 @@
 # two recording lengths: `drytwin training` writes the recording, `drytwin discover` reads it.
 # Prints one line per run and a summary (docs/training.md quotes it).
 #   bash scripts/training-discoverability.sh [BUILD_DIR]      (JOBS=2 runs in parallel)
+# ORACLE=1: Discover is asked about the fault alone (`discover --causes CAUSE`): the bound on what
+# any choice among the candidates can reach with discovery's judgement rules.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$here/build}"
@@ -26,7 +28,9 @@ run() {
 JSON
   "$drytwin" -q training --script "$dir/script.json" --out "$dir/out" >/dev/null
   local named
-  named=$("$drytwin" -q discover --data "$dir/out/recording" --json "$dir/d.json" >/dev/null 2>&1;
+  local only=()
+  if [ -n "${ORACLE:-}" ]; then only=(--causes "$cause"); fi
+  named=$("$drytwin" -q discover --data "$dir/out/recording" "${only[@]}" --json "$dir/d.json" >/dev/null 2>&1;
           python3 -c "import json,sys; d=json.load(open('$dir/d.json')); print(','.join(f['cause'] for f in d.get('findings',[])) or '-')")
   local first=${named%%,*}
   echo "$cause seed=$seed ${minutes}min named=$named first_right=$([ "$first" = "$cause" ] && echo yes || echo no)"

@@ -24,6 +24,7 @@ int runDiscover(const CommandOptions& o) {
     options.discovery.maxCauses = o.maxCauses;
     options.discovery.minExplainedFraction = o.minExplained;
     options.discovery.fastBandWindowS = o.fastWindowS;
+    options.discovery.causes = o.causes;
     workflow::Session session;
     int rc = 0;
     if (auto st = options.validate(); !st) {

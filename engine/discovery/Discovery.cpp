@@ -87,6 +87,13 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
     DiscoveryResult result;
     result.baseParameters = current;
     result.notes = dataNotes(batches);
+    if (!options.causes.empty()) { // a finding's absence then says nothing about the causes not asked
+        std::string asked;
+        for (const auto& c : options.causes) {
+            asked += (asked.empty() ? "" : ", ") + c;
+        }
+        result.notes.push_back("only the causes asked were tried: " + asked);
+    }
     if (options.freeOutletMixing) {
         result.notes.push_back(format("the line's outlet mixing (belt and winnower, both outlet channels): a "
                                       "first-order lag of %.1f s fitted with h_HDT and k_HDT (0: plug flow)",
@@ -106,7 +113,15 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
     if (!currentHeld) {
         return currentHeld.error();
     }
-    if (auto scatter = inletScatterFinding(pr, current, nuisance, *currentHeld, currentResiduals, options);
+    const auto asked = [&](Param m) {
+        const auto name = properties::mechanismOf(m);
+        return options.causes.empty() || (name && std::find(options.causes.begin(), options.causes.end(),
+                                                            *name) != options.causes.end());
+    };
+    if (auto scatter =
+            asked(Param::phi_X_in_scatter)
+                ? inletScatterFinding(pr, current, nuisance, *currentHeld, currentResiduals, options)
+                : Expected<std::optional<Finding>>(std::optional<Finding>{});
         !scatter) {
         return scatter.error();
     } else if (scatter->has_value()) {
@@ -128,7 +143,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
 
     std::vector<Param> remaining;
     for (Param m : properties::mechanismParams()) {
-        if (std::find(nuisance.begin(), nuisance.end(), m) == nuisance.end()) {
+        if (std::find(nuisance.begin(), nuisance.end(), m) == nuisance.end() && asked(m)) {
             remaining.push_back(m);
         }
     }

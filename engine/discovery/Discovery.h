@@ -77,6 +77,10 @@ struct DiscoveryOptions {
     int maxCauses = 3;       ///< causes added one at a time, at most this many
     int candidatesToFit = 3; ///< significant candidates fitted per round, best score first
     int maxEvaluationsPerFit = 120;
+    /// Only these causes (CONTRACT.md §4 names) are candidates; empty: all. For an engineer who
+    /// asks about one suspect, and for the study's bound on what the judgement rules allow
+    /// (bench/StudyDiscovery.cpp --oracle: the hidden cause alone).
+    std::vector<std::string> causes;
     calibration::LossWeights weights; ///< as in calibration: 1 K weighs like 0.1 % wb
     Status validate() const;
 };

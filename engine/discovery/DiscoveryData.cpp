@@ -24,6 +24,11 @@ Status DiscoveryOptions::validate() const {
         return invalidOption("discovery limits",
                              "max causes ≥ 0, candidates to fit ≥ 1, evaluations per fit ≥ 10");
     }
+    for (const auto& cause : causes) {
+        if (!properties::mechanismParam(cause)) {
+            return invalidOption("causes", "'" + cause + "' is not a cause of CONTRACT.md §4");
+        }
+    }
     return {};
 }
 

@@ -411,6 +411,37 @@ private Q_SLOTS:
         QVERIFY2(tried >= 1, qPrintable(names(r)));
     }
 
+    void onlyTheCausesAskedAreTried() {
+        // An engineer asks about two suspects: only they are scored, and the hidden one is named;
+        // asked about another alone, discovery does not reach for the hidden one.
+        plant::PlantOptions o;
+        o.effects[Mechanism::MoistureMeterOffset] = 0.4;
+        const auto data = plantData(o);
+        discovery::DiscoveryOptions asked;
+        asked.causes = {"tube_wall_heat_loss", "moisture_meter_offset"};
+        auto both = discovery::discover(data, hybrid::HybridModel{}, asked);
+        QVERIFY(both.ok());
+        QCOMPARE(both->ranking.size(), std::size_t{2});
+        for (const auto& c : both->ranking) {
+            QVERIFY2(c.cause == "tube_wall_heat_loss" || c.cause == "moisture_meter_offset", c.cause.c_str());
+        }
+        QVERIFY2(!both->findings.empty() && both->findings.front().cause == "moisture_meter_offset",
+                 qPrintable(names(*both)));
+        asked.causes = {"tube_wall_heat_loss"};
+        auto other = discovery::discover(data, hybrid::HybridModel{}, asked);
+        QVERIFY(other.ok());
+        QCOMPARE(other->ranking.size(), std::size_t{1});
+        QVERIFY(std::any_of(other->notes.begin(), other->notes.end(), [](const std::string& n) {
+            return n.find("only the causes asked") != std::string::npos;
+        }));
+        for (const auto& f : other->findings) {
+            QVERIFY2(f.cause == "tube_wall_heat_loss", qPrintable(names(*other)));
+        }
+        asked.causes = {"moisture_meter_ofset"};
+        QCOMPARE(discovery::discover(data, hybrid::HybridModel{}, asked).error().code,
+                 ErrorCode::InvalidOption);
+    }
+
     void badInputAndCancelAreErrors() {
         // Too few rows: a short batch leaves too little to test and to judge.
         plant::PlantOptions o;
