@@ -93,6 +93,11 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
         for (const auto& f : r->findings) {
             std::snprintf(text, sizeof text, " [%s %.3g", f.cause.c_str(), f.value);
             out.named += text;
+            if (f.hasOnset) {
+                std::snprintf(text, sizeof text, " from %.1f min [%.1f, %.1f]", f.onsetS / 60,
+                              f.onsetLowS / 60, f.onsetHighS / 60);
+                out.named += text;
+            }
             for (const auto& l : f.lookAlikes) {
                 std::snprintf(text, sizeof text, "; %s %.3g ratio %.3g p %.2g%s", l.cause.c_str(), l.value,
                               l.heldOutLossRatio, l.pValue, l.ruledOut ? " out" : "");

@@ -60,9 +60,11 @@ int runDiscover(const CommandOptions& o) {
     std::printf("\nCandidate causes (score test on the training part, HAC variance, Holm-corrected):\n");
     std::printf("%-24s %8s %10s %10s %12s %14s\n", "cause", "z", "p", "p (Holm)", "fitted", "train loss");
     for (const auto& c : d.ranking) {
-        std::printf("%-24s %8.2f %10.3g %10.3g %12s %14s\n", c.cause.c_str(), c.score, c.pValue, c.pHolm,
-                    c.fitted ? "yes" : "no",
-                    c.fitted ? (fmt(c.fitLossBefore, 4) + " -> " + fmt(c.fitLossAfter, 4)).c_str() : "-");
+        std::printf(
+            "%-24s %8.2f %10.3g %10.3g %12s %14s%s\n", c.cause.c_str(), c.score, c.pValue, c.pHolm,
+            c.fitted ? "yes" : "no",
+            c.fitted ? (fmt(c.fitLossBefore, 4) + " -> " + fmt(c.fitLossAfter, 4)).c_str() : "-",
+            c.screenedFromS >= 0 ? ("  (tested from " + fmt(c.screenedFromS / 60, 0) + " min)").c_str() : "");
     }
     for (std::size_t i = 0; i < d.rounds.size(); ++i) {
         const auto& rd = d.rounds[i];

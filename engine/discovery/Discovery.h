@@ -139,6 +139,10 @@ struct Candidate {
     double predictedReduction = 0; ///< share of the training loss one Gauss-Newton step would remove
     double linearEstimate = 0;     ///< one Gauss-Newton step from 0: U / (s̃ᵀs̃)
     double linearSe = 0;           ///< its HAC standard error
+    /// Where its tangent shows an onset mid-batch and the score test from there is stronger, the
+    /// screen, the ranking and the one-step estimate are from there [s into each batch]; -1: from
+    /// each batch's start.
+    double screenedFromS = -1;
     bool fitted = false;
     double fitLossBefore = 0; ///< training loss of the model without it (after its own refit)
     double fitLossAfter = 0;  ///< training loss with it fitted (h_HDT, k_HDT free again)

@@ -41,6 +41,7 @@ private:
 
     // CandidateFits.cpp
     Status scoreAndFit();
+    void screenFromOnsets();
     int columnOf(Param p) const;
     Expected<bool> fitCause(Candidate& c, double onsetS, double fraction, const std::string& detail);
     Expected<std::optional<Fit>> refitFromOnset(const Candidate& cand, const Onset& onset);

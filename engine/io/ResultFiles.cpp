@@ -384,6 +384,9 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                   {"fitted", c.fitted},
                   {"linear_estimate", num(c.linearEstimate)},
                   {"linear_se", num(c.linearSe)}};
+        if (c.screenedFromS >= 0) { // screened from the onset its tangent shows
+            e["screened_from_s"] = num(c.screenedFromS);
+        }
         if (c.fitted) {
             e["training_loss_before"] = num(c.fitLossBefore);
             e["training_loss_after"] = num(c.fitLossAfter);

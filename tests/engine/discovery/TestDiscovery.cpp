@@ -268,6 +268,17 @@ private Q_SLOTS:
                  qPrintable(names(r)));
     }
 
+    void midBatchInletOffsetIsScreenedFromItsOnset() {
+        // An inlet-gauge offset of 1 % wb from 20 min into each 50 min batch (a knocked gauge
+        // head). Screened from each batch's start its tangent is diluted by the time before, and
+        // the score test does not pass the screen, so it was never fitted. Screened from the onset
+        // its tangent shows, it is fitted, named, and its onset reported.
+        const auto r = discoverFromOnset(Mechanism::InletMoistureSensorOffset, 1.0, 1200);
+        const QString onset = onsetMismatch(r, 1200);
+        QVERIFY2(onset.isEmpty(), qPrintable(onset));
+        QCOMPARE(r.findings.front().cause, std::string("inlet_moisture_sensor_offset"));
+    }
+
     void distributedNullNamesNothing() {
         // The distributed plant with realistic sensors and no hidden effect: the model is wrong
         // everywhere a little, and nothing may be named for it.
