@@ -198,6 +198,16 @@ CommandLine::CommandLine() : m_impl(new Impl) {
                      "only these candidate causes (CONTRACT.md §4 names, comma-separated; default: all "
                      "eleven): ask about one suspect")
         ->delimiter(',');
+    discover->add_option("--reference", o.referencePath,
+                         "a period when the line ran as it should (batch file or folder): judge the data "
+                         "by what changed against it (detection, onset, cause)");
+    discover->add_option("--reference-mapping", o.referenceMappingPath,
+                         "column mapping of the reference's files (default: --mapping's)");
+    discover
+        ->add_option("--false-alarm-rate", o.falseAlarmRate,
+                     "with --reference: the chance that each detector flags a data set as changed when "
+                     "nothing changed")
+        ->capture_default_str();
     discover
         ->add_option("--fast-window", o.fastWindowS,
                      "seconds: the error's fast part is the error about its centred moving average over "

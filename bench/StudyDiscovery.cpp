@@ -7,7 +7,10 @@
 //      [--part mechanisms|nulls|onsets] [--mechanism NAME (e.g. moisture_meter_lag)] [--verbose]
 //      [--null-seeds FIRST (20 seeds from it; default 201)] [--min-explained SHARE (default 0.15)]
 //      [--candidates N (fitted per round; default 3)] [--evaluations N (per fit; default 120)]
-//      [--oracle (each mechanism run asks about its hidden cause alone)] [--seeds FIRST (mechanism runs'
+//      [--oracle (each mechanism run asks about its hidden cause alone)]
+//      [--reference (issue #41: each run judged against healthy data of another seed, 4 x 3,000 s,
+//      by discoverChange; the detectors' flags in each row)] [--no-structure (with --reference: the
+//      line's own structure not learnt, the causes' normal values alone)] [--seeds FIRST (mechanism runs'
 //      three seeds; default 101, onsets FIRST+100)] [--unimproved-alpha A (default 0.05; 1: the rule before)]
 // (lumped, its built-in sensors: about 8 min on 2 cores; --quick: one seed). The default plant is
 // the distributed one with realistic sensors (issue #22), whose nulls include its own structure.
@@ -35,6 +38,7 @@ struct Outcome {
     double seconds = 0;
     bool hasOnset = false;
     double onsetS = 0;
+    bool drytwinFlags = false, pcaFlags = false; ///< --reference: each detector's run-level decision
 };
 
 bool verbose = false; ///< --verbose: each turned-down candidate's reason, not only its code
@@ -43,6 +47,10 @@ bool verbose = false; ///< --verbose: each turned-down candidate's reason, not o
 /// among the candidates can reach with these rules.
 bool oracle = false;
 discovery::DiscoveryOptions discoveryOptions; ///< --min-explained changes its share
+/// --reference: judged against healthy data of another seed (the same plant and sensors, no
+/// mechanism, no onset), as an engineer judges a line against the weeks when it ran well.
+bool againstReference = false;
+constexpr unsigned kReferenceSeedOffset = 7000;
 
 Outcome run(plant::PlantOptions o, const std::string& hidden) {
     o.batches = 4;
@@ -60,7 +68,27 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
         asked.screenAlpha = 0.49; // fitted whenever its tangent points the way that helps
         asked.maxCauses = 1;
     }
-    auto r = discovery::discover(plant::toSiBatches(*p, o.seed), hybrid::HybridModel{}, asked);
+    Expected<discovery::DiscoveryResult> r = Error{};
+    if (againstReference) {
+        plant::PlantOptions healthy = o;
+        healthy.effects.clear();
+        healthy.effectOnsetS.clear();
+        healthy.unmeasuredDrift = false;
+        healthy.seed = o.seed + kReferenceSeedOffset;
+        auto ref = plant::runPlant(healthy);
+        if (!ref) {
+            out.named = "reference plant failed: " + ref.error().message();
+            return out;
+        }
+        r = discovery::discoverChange(plant::toSiBatches(*ref, healthy.seed), plant::toSiBatches(*p, o.seed),
+                                      hybrid::HybridModel{}, asked);
+        if (r) {
+            out.drytwinFlags = r->detection.drytwin.changed;
+            out.pcaFlags = r->detection.pca.changed;
+        }
+    } else {
+        r = discovery::discover(plant::toSiBatches(*p, o.seed), hybrid::HybridModel{}, asked);
+    }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!r) {
         out.named = "error: " + r.error().message();
@@ -190,6 +218,10 @@ int main(int argc, char** argv) {
             verbose = true;
         } else if (a == "--oracle") {
             oracle = true;
+        } else if (a == "--reference") {
+            againstReference = true;
+        } else if (a == "--no-structure") { // against a reference: the causes' normal values alone
+            discoveryOptions.learnLineStructure = false;
         } else if (a == "--mechanism" && !next.empty()) {
             only = next;
             ++i;
@@ -216,7 +248,7 @@ int main(int argc, char** argv) {
                                  "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
                                  "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
                                  "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
-                                 "[--evaluations N] [--oracle]\n");
+                                 "[--evaluations N] [--oracle] [--reference]\n");
             return 2;
         }
     }
@@ -253,10 +285,15 @@ int main(int argc, char** argv) {
         {plant::Mechanism::HotAirSensorLag, 30, 2},
         {plant::Mechanism::InletMoistureSensorNoise, 0.4, 2}};
     int runs = 0, right = 0, asGroup = 0, withFalse = 0;
+    int flaggedEither = 0, rightWhenFlagged = 0, pcaFlagged = 0, pcaMissedByDrytwin = 0;
+    const auto flags = [](const Outcome& out) {
+        return againstReference ? std::string(out.drytwinFlags ? "D" : "-") + (out.pcaFlags ? "P" : "-")
+                                : std::string("");
+    };
     if (part == "all" || part == "mechanisms") {
         std::printf(
-            "| mechanism | strength | seed | named | right first | s |\n| --- | --- | --- | --- | --- | --- "
-            "|\n");
+            "| mechanism | strength | seed | named | right first | detected (D DryTwin, P PCA) | s |\n| --- | "
+            "--- | --- | --- | --- | --- | --- |\n");
         for (const auto& [m, strength, other] : cases) {
             if (!only.empty() && only != plant::info(m).name) {
                 continue;
@@ -272,17 +309,22 @@ int main(int argc, char** argv) {
                     right += out.rightFirst;
                     asGroup += out.rightFirst && out.asGroup;
                     withFalse += out.falseNames > 0;
-                    std::printf("| %s | %g | %u | %s | %s | %.1f |\n", hidden.c_str(), strength * scale,
+                    flaggedEither += out.drytwinFlags || out.pcaFlags;
+                    rightWhenFlagged += (out.drytwinFlags || out.pcaFlags) && out.rightFirst;
+                    pcaFlagged += out.pcaFlags;
+                    pcaMissedByDrytwin += out.pcaFlags && !out.drytwinFlags;
+                    std::printf("| %s | %g | %u | %s | %s | %s | %.1f |\n", hidden.c_str(), strength * scale,
                                 o.seed, out.named.c_str(),
-                                out.rightFirst ? (out.asGroup ? "yes (group)" : "yes") : "no", out.seconds);
+                                out.rightFirst ? (out.asGroup ? "yes (group)" : "yes") : "no", flags(out).c_str(),
+                                out.seconds);
                     std::fflush(stdout);
                 }
             }
         }
     }
-    int nullRuns = 0, nullFalse = 0;
+    int nullRuns = 0, nullFalse = 0, nullAlarms = 0;
     if (part == "all" || part == "nulls") {
-        std::printf("\n| null | seed | named | s |\n| --- | --- | --- | --- |\n");
+        std::printf("\n| null | seed | named | detected | s |\n| --- | --- | --- | --- | --- |\n");
         for (int s = 0; s < (quick ? 4 : 20); ++s) {
             plant::PlantOptions o = options();
             o.seed = firstNullSeed + static_cast<unsigned>(s);
@@ -294,8 +336,10 @@ int main(int argc, char** argv) {
             const auto out = run(o, "");
             ++nullRuns;
             nullFalse += out.falseNames > 0;
-            std::printf("| none%s%s | %u | %s | %.1f |\n", o.unmeasuredDrift ? ", drift" : "",
-                        faults ? ", sensor faults" : "", o.seed, out.named.c_str(), out.seconds);
+            nullAlarms += out.drytwinFlags || out.pcaFlags;
+            std::printf("| none%s%s | %u | %s | %s | %.1f |\n", o.unmeasuredDrift ? ", drift" : "",
+                        faults ? ", sensor faults" : "", o.seed, out.named.c_str(), flags(out).c_str(),
+                        out.seconds);
             std::fflush(stdout);
         }
     }
@@ -323,7 +367,9 @@ int main(int argc, char** argv) {
                 const std::string hidden(plant::info(m).name);
                 const auto out = run(o, hidden);
                 ++onsetRuns;
-                const bool close = out.rightFirst && out.hasOnset && std::abs(out.onsetS - onset) <= 600;
+                // Against a reference the issue asks for ±5 min; alone, ±10 min (issue #23).
+                const bool close = out.rightFirst && out.hasOnset &&
+                                   std::abs(out.onsetS - onset) <= (againstReference ? 300 : 600);
                 onsetRight += close;
                 std::printf("| %s | %u | %.0f | %s | %s | %s |\n", hidden.c_str(), o.seed, onset / 60,
                             out.named.c_str(),
@@ -337,10 +383,18 @@ int main(int argc, char** argv) {
         std::printf("\nHidden cause named first: %d of %d (%.0f %%), %d of them as a look-alike group. Runs "
                     "naming a cause that is not there: %d of %d.\n",
                     right, runs, 100.0 * right / runs, asGroup, withFalse, runs);
+        if (againstReference) {
+            std::printf("Flagged by either detector: %d of %d; of those, hidden cause named first: %d. PCA flags "
+                        "%d, of which DryTwin's detector misses %d.\n",
+                        flaggedEither, runs, rightWhenFlagged, pcaFlagged, pcaMissedByDrytwin);
+        }
     }
     if (nullRuns > 0) {
         std::printf("Nulls naming a cause: %d of %d (%.0f %%).\n", nullFalse, nullRuns,
                     100.0 * nullFalse / nullRuns);
+        if (againstReference) {
+            std::printf("Nulls with an alarm (either detector): %d of %d.\n", nullAlarms, nullRuns);
+        }
     }
     if (onsetRuns > 0) {
         std::printf("Onsets named with the onset within 10 min: %d of %d (%.0f %%).\n", onsetRight, onsetRuns,

@@ -19,12 +19,51 @@ namespace drytwin::app {
 
 using namespace detail;
 
+namespace {
+
+/// Detection first: whether the data differ from the reference, by each detector, from when, and
+/// in which columns.
+void printDetection(const discovery::DiscoveryResult& d) {
+    const auto& det = d.detection;
+    std::printf("Against the reference period %s (%zu batch(es), %zu rows; the model commissioned there):\n",
+                d.referencePath.c_str(), d.referenceBatches, d.referenceRows);
+    std::printf("  %s (each detector's false-alarm rate %.3g per data set)\n",
+                det.changed ? "CHANGED" : "no change detected", det.falseAlarmRate);
+    const auto line = [](const char* name, const monitoring::Detection& m) {
+        std::printf("  %-38s %s, p %.3g (%s)", name, m.changed ? "flags a change" : "no change", m.pValue,
+                    m.statistic.c_str());
+        if (m.hasFirstAlarm) {
+            std::printf(", first alarm %s at %.1f min", m.firstAlarmRun.c_str(), m.firstAlarmTimeS / 60);
+        }
+        if (m.hasOnset) {
+            std::printf(", onset %s at %.1f min [%.1f, %.1f]", m.onsetRun.c_str(), m.onsetS / 60, m.onsetLowS / 60,
+                        m.onsetHighS / 60);
+        }
+        std::printf("\n");
+        if (m.changed && !m.contributions.empty()) {
+            std::printf("  %-38s", "  largest contributions (SPE share):");
+            for (std::size_t i = 0; i < m.contributions.size() && i < 3; ++i) {
+                std::printf(" %s %.0f %%", m.contributions[i].column.c_str(), 100 * m.contributions[i].speShare);
+            }
+            std::printf("\n");
+        }
+    };
+    line("DryTwin (inputs and the model's errors):", det.drytwin);
+    line("dynamic PCA (the measured columns):", det.pca);
+    std::printf("\n");
+}
+
+} // namespace
+
 int runDiscover(const CommandOptions& o) {
     workflow::DiscoverOptions options;
     options.discovery.maxCauses = o.maxCauses;
     options.discovery.minExplainedFraction = o.minExplained;
     options.discovery.fastBandWindowS = o.fastWindowS;
     options.discovery.causes = o.causes;
+    options.discovery.falseAlarmRate = o.falseAlarmRate;
+    options.referencePath = o.referencePath;
+    options.referenceMappingPath = o.referenceMappingPath.empty() ? o.mappingPath : o.referenceMappingPath;
     workflow::Session session;
     int rc = 0;
     if (auto st = options.validate(); !st) {
@@ -38,6 +77,9 @@ int runDiscover(const CommandOptions& o) {
         return fail(result.error());
     }
     const auto& d = result->discovery;
+    if (d.hasReference) {
+        printDetection(d);
+    }
     std::printf(
         "What the simulation gets wrong (after refitting h_HDT, k_HDT on the training part; residual = "
         "measured - simulated):\n");
@@ -90,6 +132,13 @@ int runDiscover(const CommandOptions& o) {
         }
         if (!f.perPart.empty()) {
             std::printf("  per part: %s\n", discovery::describeParts(f.perPart).c_str());
+        }
+        if (f.hasReference) {
+            const auto& info = properties::info(f.parameter);
+            std::printf("  changed from the reference: %s %.4g %s here, %.4g (normal range %.4g to %.4g) on the "
+                        "reference\n",
+                        std::string(info.symbol).c_str(), f.value, std::string(info.unit).c_str(),
+                        f.referenceValue, f.referenceCi95Low, f.referenceCi95High);
         }
     }
     if (!d.bounds.empty()) {

@@ -36,6 +36,7 @@ Status SelectionRound::scoreAndFit() {
     std::iota(m_nuisanceCols.begin(), m_nuisanceCols.end(), 0);
     m_cands = scoreCandidates(m_stack, m_nuisanceCols, m_model.remaining);
     screenFromOnsets();
+    scoreAgainstReference(m_pr, m_cands);
     std::sort(m_cands.begin(), m_cands.end(), [&](const auto& a, const auto& b) {
         const bool pa = a.pValue < m_options.screenAlpha;
         const bool pb = b.pValue < m_options.screenAlpha;
@@ -152,9 +153,10 @@ Expected<bool> SelectionRound::fitCause(Candidate& c, double onsetS, double frac
     std::vector<Param> free = m_model.nuisance;
     free.push_back(c.parameter);
     ParameterSet start = m_model.parameters;
-    // Start at the one-step estimate when it lies inside the range; BOBYQA refines it.
+    // Start at the one-step estimate (a step from the parameter's value in the model, 0 for a
+    // cause not yet in it) when it lies inside the range; BOBYQA refines it.
     const auto& info = properties::info(c.parameter);
-    start[c.parameter] = std::clamp(c.linearEstimate, info.lower, info.upper);
+    start[c.parameter] = std::clamp(start[c.parameter] + c.linearEstimate, info.lower, info.upper);
     start[Param::t_onset] = onsetS;
     auto fit = m_refit(start, free, false, nullptr);
     if (!fit) {

@@ -11,6 +11,33 @@ namespace drytwin::discovery {
 
 using namespace detail;
 
+namespace detail {
+
+CauseFit makeCauseFit(const std::vector<data::SiBatch>& batches, const Problem& pr, const Progress& progress,
+                      const double& fraction) {
+    return [&batches, &pr, progress, &fraction](const ParameterSet& start, const std::vector<Param>& free,
+                                                 bool global, const calibration::LossWeights* weights)
+               -> Expected<calibration::CalibrationResult> {
+        calibration::CalibrationOptions co;
+        co.freeParameters = free;
+        co.rows = pr.subsetRefs;
+        co.weights = weights ? *weights : pr.options.weights;
+        co.maxEvaluations = pr.options.maxEvaluationsPerFit * (global ? 2 : 1);
+        co.globalSearch = global;
+        co.intervals = false;
+        co.simulation = pr.simulation;
+        // The fit's own progress reaches the user as discovery's; any stop cancels discovery.
+        return calibration::calibrate(batches, start, co, [&](const ProgressInfo& info) {
+            return progress && progress(ProgressInfo{"discover", fraction, "fitting: " + info.detail}) !=
+                                   ProgressAction::Continue
+                       ? ProgressAction::Stop
+                       : ProgressAction::Continue;
+        });
+    };
+}
+
+} // namespace detail
+
 Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                                    const hybrid::HybridModel& model, const DiscoveryOptions& options,
                                    const Progress& progress) {
@@ -54,29 +81,11 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
             nuisance.push_back(m); // extensions the model already holds stay free
         }
     }
-    auto refit = [&](const ParameterSet& start, const std::vector<Param>& free, bool global,
-                     const calibration::LossWeights* weights =
-                         nullptr) -> Expected<calibration::CalibrationResult> {
-        calibration::CalibrationOptions co;
-        co.freeParameters = free;
-        co.rows = pr.subsetRefs;
-        co.weights = weights ? *weights : options.weights;
-        co.maxEvaluations = options.maxEvaluationsPerFit * (global ? 2 : 1);
-        co.globalSearch = global;
-        co.intervals = false;
-        co.simulation = pr.simulation;
-        // The fit's own progress reaches the user as discovery's; any stop cancels discovery.
-        return calibration::calibrate(batches, start, co, [&](const ProgressInfo& info) {
-            return progress && progress(ProgressInfo{"discover", fraction, "fitting: " + info.detail}) !=
-                                   ProgressAction::Continue
-                       ? ProgressAction::Stop
-                       : ProgressAction::Continue;
-        });
-    };
+    const CauseFit refit = makeCauseFit(batches, pr, progress, fraction);
     if (stop(0.02, "refitting h_HDT and k_HDT on the training part")) {
         return cancelledError("discover");
     }
-    auto base = refit(model.parameters, nuisance, !model.calibration.has_value());
+    auto base = refit(model.parameters, nuisance, !model.calibration.has_value(), nullptr);
     if (!base) {
         return base.error();
     }
@@ -151,10 +160,9 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                         std::move(nuisance),    std::move(remaining),
                         std::move(currentSims), std::move(currentResiduals),
                         std::move(*currentHeld)};
-    const CauseFit causeFit = refit;
     const StopAt stopAt = stop;
     for (int round = 0; round < options.maxCauses && !extended.remaining.empty(); ++round) {
-        auto named = selectionRound(*prepared, round, causeFit, stopAt, extended, result);
+        auto named = selectionRound(*prepared, round, refit, stopAt, extended, result);
         if (!named) {
             return named.error();
         }

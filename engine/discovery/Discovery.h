@@ -5,6 +5,7 @@
 #include "common/Progress.h"
 #include "data/SiBatch.h"
 #include "hybrid/HybridModel.h"
+#include "monitoring/Monitor.h"
 #include "properties/Parameters.h"
 
 #include <map>
@@ -82,6 +83,14 @@ struct DiscoveryOptions {
     /// (bench/StudyDiscovery.cpp --oracle: the hidden cause alone).
     std::vector<std::string> causes;
     calibration::LossWeights weights; ///< as in calibration: 1 K weighs like 0.1 % wb
+    /// Against a reference period: the chance that each detector calls a data set changed when
+    /// nothing changed (the detectors' run-level decision).
+    double falseAlarmRate = 0.01;
+    /// Against a reference period: learn the line's own structure there (what the commissioned
+    /// model always gets wrong, as a ridge regression on the inputs and the model's outputs) and
+    /// take it off every period's measurements before a change is looked for. false: the
+    /// causes' normal values alone carry the structure.
+    bool learnLineStructure = true;
     Status validate() const;
 };
 
@@ -221,6 +230,11 @@ struct Finding {
     std::string group; ///< "" when the cause stands alone; else the group's name
     std::vector<LookAlike> lookAlikes;
     std::string tellApart; ///< the measurement that would tell the group's members apart
+    /// Judged against a reference period: the cause's parameter fitted there (its normal value)
+    /// and the interval a period's value normally falls in (its error and the spread between the
+    /// reference's parts), so that the finding is a change, not a level.
+    bool hasReference = false;
+    double referenceValue = 0, referenceCi95Low = 0, referenceCi95High = 0;
 };
 
 /// @brief Structure left after the named causes that matches no mechanism (never forced onto one).
@@ -266,6 +280,17 @@ struct Bound {
     double ci95Low = 0, ci95High = 0;
 };
 
+/// @brief Whether the data differ from the reference period at a stated false-alarm rate, by
+/// DryTwin's physics-residual detector (the measured inputs and the commissioned model's errors)
+/// and by a dynamic PCA monitor of the measured columns, both trained on the same reference.
+struct ChangeDetection {
+    bool changed = false;       ///< either detector
+    double falseAlarmRate = 0;  ///< per data set, per detector
+    std::string decidedBy;      ///< "drytwin", "pca", "both" or ""
+    monitoring::Detection drytwin, pca;
+    std::vector<std::string> drytwinColumns, pcaColumns;
+};
+
 /// @brief The answer to the four questions.
 struct DiscoveryResult {
     std::string verdict;                   ///< "cause_found", "no_structural_cause", "unexplained_structure"
@@ -281,6 +306,12 @@ struct DiscoveryResult {
     std::size_t trainingRows = 0, heldOutRows = 0;
     /// What the data could not give: channels not measured, inputs that took their default.
     std::vector<std::string> notes;
+    /// Judged against a reference period (discoverChange): what it held and whether, from when
+    /// and by which detector the data differ from it.
+    bool hasReference = false;
+    std::string referencePath; ///< set by the caller that read it
+    std::size_t referenceBatches = 0, referenceRows = 0;
+    ChangeDetection detection;
     Ending ending;
 };
 
@@ -295,5 +326,18 @@ struct DiscoveryResult {
 Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                                    const hybrid::HybridModel& model, const DiscoveryOptions& options = {},
                                    const Progress& progress = {});
+
+/// @brief What changed since the line ran well (CONTRACT.md §2 `discover --reference`). The
+/// model is commissioned on @p reference (h_HDT, k_HDT and the inlet gauge's scatter share
+/// fitted on all of it; each cause's estimate there, with its spread between the reference's
+/// parts, as its normal value), then @p batches are judged against it: detection by both
+/// monitors, and a cause named only when its estimate moved beyond its normal spread, its fit
+/// predicts the held-out part better on every channel it acts on (the rules of discover(): held
+/// out, specific, look-alikes, floors, onsets) and the fitted value lies outside the reference's
+/// normal interval. The commissioned parameters stay fixed: a change is what they do not explain.
+Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& reference,
+                                         const std::vector<data::SiBatch>& batches,
+                                         const hybrid::HybridModel& model, const DiscoveryOptions& options = {},
+                                         const Progress& progress = {});
 
 } // namespace drytwin::discovery

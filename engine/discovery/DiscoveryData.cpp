@@ -14,6 +14,9 @@ Status DiscoveryOptions::validate() const {
         !(minExplainedFraction >= 0 && minExplainedFraction < 1)) {
         return invalidOption("alpha", "test levels must lie in (0, 0.5), the explained share in [0, 1)");
     }
+    if (!(falseAlarmRate > 0 && falseAlarmRate < 0.5)) {
+        return invalidOption("false-alarm rate", "must lie in (0, 0.5)");
+    }
     if (!(unimprovedChannelAlpha > 0 && unimprovedChannelAlpha <= 1)) {
         return invalidOption("unimproved-channel level", "must lie in (0, 1]");
     }
@@ -37,7 +40,7 @@ Status DiscoveryOptions::validate() const {
 namespace drytwin::discovery::detail {
 
 Expected<Prepared> prepare(const std::vector<data::SiBatch>& batches, const hybrid::HybridModel& model,
-                           const DiscoveryOptions& options) {
+                           const DiscoveryOptions& options, bool allRowsTrain) {
     Prepared out;
     Problem& pr = out.pr;
     pr.batches = &batches;
@@ -58,9 +61,16 @@ Expected<Prepared> prepare(const std::vector<data::SiBatch>& batches, const hybr
         std::nth_element(steps.begin(), steps.begin() + static_cast<long>(steps.size() / 2), steps.end());
         pr.samplingStepS = steps[steps.size() / 2];
     }
-    const auto split = data::chronologicalSplit(rowsPerBatch, options.trainFraction);
-    pr.train = split.train;
-    pr.test = split.test;
+    if (allRowsTrain) {
+        for (std::size_t b = 0; b < batches.size(); ++b) {
+            pr.train.push_back({0, rowsPerBatch[b]});
+            pr.test.push_back({rowsPerBatch[b], rowsPerBatch[b]});
+        }
+    } else {
+        const auto split = data::chronologicalSplit(rowsPerBatch, options.trainFraction);
+        pr.train = split.train;
+        pr.test = split.test;
+    }
     pr.subset.resize(batches.size());
     std::size_t stride = options.subsetStride;
     if (stride == 0) {
@@ -87,7 +97,7 @@ Expected<Prepared> prepare(const std::vector<data::SiBatch>& batches, const hybr
             out.keptTest += batches[b].keep[k];
         }
     }
-    if (pr.subsetRefs.size() < 100 || out.keptTest < 100) {
+    if (pr.subsetRefs.size() < 100 || (!allRowsTrain && out.keptTest < 100)) {
         return Error{ErrorKind::BadInput,
                      "discover",
                      "too few rows: " + std::to_string(pr.subsetRefs.size()) +

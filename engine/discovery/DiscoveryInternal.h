@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -50,6 +51,22 @@ struct Stack {
     std::vector<double> timeS; ///< per entry: time since its batch started [s]
 };
 
+/// A cause's parameter on a reference period (a time when the line ran as it should): its
+/// value, the standard error of that value and the normal spread of one period about it.
+struct ReferenceValue {
+    double value = 0;
+    double se = 0;     ///< HAC standard error of the pooled value
+    double spread = 0; ///< between-part standard deviation beyond the parts' own errors
+    std::vector<PartEstimate> parts;
+};
+/// The reference a change is judged against (ReferenceDiscovery.cpp): each cause's one-step
+/// estimate at the commissioned model, and its fit on the reference alone when asked.
+struct Reference {
+    std::map<Param, ReferenceValue> linear;
+    /// The cause fitted alone on the reference from the commissioned model (cached by the caller).
+    std::function<Expected<ReferenceValue>(Param)> fitted;
+};
+
 /// The data of one discovery run: batches, their split, and the training rows the tests use.
 struct Problem {
     const std::vector<data::SiBatch>* batches = nullptr;
@@ -60,6 +77,9 @@ struct Problem {
     physics::SimulationOptions simulation;
     DiscoveryOptions options;
     double samplingStepS = 1; ///< median sampling step of the batches
+    /// Set when the data are judged against a reference period: a cause is then screened by how
+    /// far its estimate moved from the reference's, and named only beyond its normal spread.
+    const Reference* reference = nullptr;
 };
 
 /// The problem with the counts discovery reports.
@@ -69,8 +89,10 @@ struct Prepared {
     double meanBatchHours = 0;
 };
 /// The split and the training subset (DiscoveryData.cpp); NotEnoughData when too few rows pass.
+/// With @p allRowsTrain every kept row is a training row and nothing is held out (a reference
+/// period: commissioned, never judged).
 Expected<Prepared> prepare(const std::vector<data::SiBatch>& batches, const hybrid::HybridModel& model,
-                           const DiscoveryOptions& options);
+                           const DiscoveryOptions& options, bool allRowsTrain = false);
 /// What the data cannot give (channels not measured, inputs that are constant).
 std::vector<std::string> dataNotes(const std::vector<data::SiBatch>& batches);
 
@@ -323,6 +345,45 @@ struct ModelSoFar {
 using CauseFit = std::function<Expected<calibration::CalibrationResult>(
     const ParameterSet& start, const std::vector<Param>& free, bool global,
     const calibration::LossWeights* weights)>;
+/// Discovery's fit on @p pr's training subset of @p batches, its own progress reported as
+/// discovery's at @p fraction (read at each call), any stop a cancel.
+CauseFit makeCauseFit(const std::vector<data::SiBatch>& batches, const Problem& pr, const Progress& progress,
+                      const double& fraction);
+/// The change test of each candidate against the reference (@p pr.reference): its score,
+/// p-value and ranking by how far its one-step estimate moved from the reference's, in units of
+/// the two estimates' errors and the reference's normal spread. No-op without a reference.
+void scoreAgainstReference(const Problem& pr, std::vector<Candidate>& cands);
+/// Whether a fitted finding moved beyond the reference's normal spread; fills its reference
+/// value and interval. "" when it did, else the reason (code "within_normal_spread").
+Expected<std::string> judgeAgainstReference(const Problem& pr, Finding& f);
+/// Detection against a reference period (ChangeDetection.cpp): a dynamic PCA monitor of the
+/// measured columns and DryTwin's physics-residual monitor (the measured inputs and the
+/// commissioned model's error on each measured output), both fitted on @p reference and its
+/// simulation @p refSims and judged on @p batches with theirs, @p sims.
+/// The DryTwin monitor reads the model's error on @p referenceForModel and @p batchesForModel
+/// (the measurements with the line's own structure taken off, LineStructure), the PCA monitor
+/// the raw measured columns of @p reference and @p batches.
+Expected<ChangeDetection> detectChange(const std::vector<data::SiBatch>& reference,
+                                       const std::vector<data::SiBatch>& referenceForModel,
+                                       const std::vector<physics::SimulationResult>& refSims,
+                                       const std::vector<data::SiBatch>& batches,
+                                       const std::vector<data::SiBatch>& batchesForModel,
+                                       const std::vector<physics::SimulationResult>& sims,
+                                       const DiscoveryOptions& options);
+/// The line's own structure learnt on a reference period (LineStructure.cpp): the commissioned
+/// model's error on each measured output as a ridge regression on the inputs and the model's
+/// outputs (raw and causally filtered), to be taken off the measurements of any period.
+struct LineStructure {
+    double lambda = 0;           ///< the ridge penalty chosen by cross-validation over the reference's parts
+    std::array<bool, 4> fitted{}; ///< per channel (too few measured rows: not fitted, nothing taken off)
+    /// A batch's measurements with the predicted structural error taken off (its simulation at
+    /// the commissioned model gives the model's outputs).
+    std::function<data::SiBatch(const data::SiBatch&, const physics::SimulationResult&)> apply;
+    /// The reference so corrected, each part by a fit on the other parts (an honest null).
+    std::vector<data::SiBatch> referenceCorrected;
+};
+LineStructure learnLineStructure(const std::vector<data::SiBatch>& reference,
+                                 const std::vector<physics::SimulationResult>& refSims);
 /// Progress at a fraction of the whole discovery; true when the user stopped it.
 using StopAt = std::function<bool(double fraction, const std::string& detail)>;
 /// One round of selection (Selection.cpp): the remaining causes' score tests at @p model, the

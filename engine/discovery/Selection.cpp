@@ -108,6 +108,20 @@ Status SelectionRound::tryFitted() {
             m_record.rejected.push_back({cand.cause, conf.code, conf.why});
             continue;
         }
+        if (m_pr.reference) {
+            // A level the line always had is its own structure, not a change.
+            auto why = judgeAgainstReference(m_pr, *conf.finding);
+            if (!why) {
+                return why.error();
+            }
+            if (!why->empty()) {
+                m_record.rejected.push_back({cand.cause, "within_normal_spread", *why});
+                if (m_tried == 1) {
+                    m_record.reason = *why;
+                }
+                continue;
+            }
+        }
         if (isOutletDelay(cand.parameter) && isRemaining(Param::tau_meter) && isRemaining(Param::dtau_conv) &&
             !timed) {
             timed = true;

@@ -302,6 +302,58 @@ double HybridReferences::bestTemperature(bool keptStartingModel) const {
                      keptStartingModel ? pbmHoldTemperatureBefore : pbmHoldTemperatureAfter);
 }
 
+namespace {
+
+/// One detector's judgement against the reference, with its window series for plots.
+json detectionJson(const monitoring::Detection& d, const std::vector<std::string>& columns) {
+    const auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+    const auto judgement = [&](const monitoring::StatisticJudgement& s) {
+        return json{{"changed", s.changed},        {"p_value", num(s.pValue)},
+                    {"glr", num(s.glr)},           {"glr_threshold", num(s.glrThreshold)},
+                    {"cusum_threshold", num(s.cusumThreshold)}};
+    };
+    json j = {{"changed", d.changed},
+              {"p_value", num(d.pValue)},
+              {"statistic", d.statistic},
+              {"false_alarm_rate", num(d.falseAlarmRate)},
+              {"columns", columns},
+              {"components", d.components},
+              {"variance_explained", num(d.varianceExplainedActual)},
+              {"t2", judgement(d.t2)},
+              {"spe", judgement(d.spe)},
+              {"limits",
+               {{"t2_theoretical", num(d.limits.t2Theoretical)},
+                {"spe_theoretical", num(d.limits.speTheoretical)},
+                {"t2_empirical", num(d.limits.t2Empirical)},
+                {"spe_empirical", num(d.limits.speEmpirical)},
+                {"t2_window", num(d.limits.t2Window)},
+                {"spe_window", num(d.limits.speWindow)}}}};
+    j["first_alarm"] = d.hasFirstAlarm ? json{{"batch", d.firstAlarmRun}, {"time_s", num(d.firstAlarmTimeS)}}
+                                       : json(nullptr);
+    j["onset"] = d.hasOnset ? json{{"batch", d.onsetRun},
+                                   {"time_s", num(d.onsetS)},
+                                   {"ci95", {num(d.onsetLowS), num(d.onsetHighS)}}}
+                            : json(nullptr);
+    j["contributions"] = json::array();
+    for (const auto& c : d.contributions) {
+        j["contributions"].push_back(
+            {{"column", c.column}, {"spe_share", num(c.speShare)}, {"t2_share", num(c.t2Share)}});
+    }
+    json series = {{"batch", json::array()}, {"time_s", json::array()},   {"t2", json::array()},
+                   {"spe", json::array()},   {"alarm", json::array()}};
+    for (const auto& w : d.series) {
+        series["batch"].push_back(w.run);
+        series["time_s"].push_back(num(w.timeS));
+        series["t2"].push_back(num(w.t2));
+        series["spe"].push_back(num(w.spe));
+        series["alarm"].push_back(w.alarm);
+    }
+    j["series"] = series;
+    return j;
+}
+
+} // namespace
+
 std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, double hybridMaeXBefore,
                           double hybridMaeXAfter, double hybridMaeTBefore, double hybridMaeTAfter,
                           bool keptStartingModel, const HybridReferences& references) {
@@ -374,6 +426,31 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
             out["onset_s"] = num(f.onsetS);
             out["onset_ci95"] = {num(f.onsetLowS), num(f.onsetHighS)};
         }
+        if (f.hasReference) { // CONTRACT.md §3: the finding is a change from the reference's value
+            out["parameter"]["reference_value"] = num(f.referenceValue);
+            out["parameter"]["reference_ci95"] = {num(f.referenceCi95Low), num(f.referenceCi95High)};
+        }
+    }
+    if (r.hasReference) {
+        j["reference"] = {{"path", r.referencePath}, {"batches", r.referenceBatches}, {"rows", r.referenceRows}};
+        const auto& d = r.detection;
+        j["detection"] = {{"changed", d.changed},
+                          {"statistic", "run-level GLR of a mean shift in the window means of log T² and log "
+                                        "SPE (dynamic PCA, leave-one-out reference null), either detector"},
+                          {"false_alarm_rate", num(d.falseAlarmRate)},
+                          {"decided_by", d.decidedBy},
+                          {"detectors", {{"drytwin", detectionJson(d.drytwin, d.drytwinColumns)},
+                                         {"pca", detectionJson(d.pca, d.pcaColumns)}}}};
+        // The first alarm of the deciding detectors (the earlier where both alarm).
+        const monitoring::Detection* first = nullptr;
+        for (const auto* det : {&d.drytwin, &d.pca}) {
+            if (det->changed && det->hasFirstAlarm &&
+                (!first || det->firstAlarmWindow < first->firstAlarmWindow)) {
+                first = det;
+            }
+        }
+        j["detection"]["first_alarm"] =
+            first ? json{{"batch", first->firstAlarmRun}, {"time_s", num(first->firstAlarmTimeS)}} : json(nullptr);
     }
     j["ranking"] = json::array();
     for (const auto& c : r.ranking) {

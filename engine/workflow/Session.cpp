@@ -152,6 +152,34 @@ Expected<OpenResult> Session::open(const OpenOptions& options, const Progress& p
     return result;
 }
 
+Expected<std::vector<data::SiBatch>> Session::loadReference(const std::string& path,
+                                                           const std::string& mappingPath,
+                                                           const Progress& progress) const {
+    data::ReadOptions ro;
+    if (!mappingPath.empty()) {
+        auto mapping = data::readColumnMapping(mappingPath);
+        if (!mapping) {
+            return mapping.error();
+        }
+        ro.mapping = *mapping;
+    }
+    auto loaded = data::loadDataSet(path, ro, progress);
+    if (loaded.cancelled) {
+        return cancelledError("load");
+    }
+    if (!loaded.errors.empty()) {
+        Error e = loaded.errors.front();
+        e.reason = "the reference period: " + e.reason;
+        e.causes = std::move(loaded.errors);
+        return e;
+    }
+    if (loaded.dataSet.batches.empty()) {
+        return Error{ErrorKind::BadInput, path, "the reference period holds no batch file",
+                     ErrorCode::NotEnoughData, {"reference batches", "0"}};
+    }
+    return data::toSi(loaded.dataSet, data::clean(loaded.dataSet, m_cleaning));
+}
+
 namespace {
 /// The first @p maxBytes of a file, cut after its last whole line (0: all of it).
 Expected<std::string> headOf(const std::string& path, std::size_t maxBytes) {
@@ -366,7 +394,19 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
     if (auto st = ready(options, "discover"); !st) {
         return st.error();
     }
-    auto found = discovery::discover(m_si, m_model, options.discovery, progress);
+    Expected<discovery::DiscoveryResult> found = Error{};
+    if (options.referencePath.empty()) {
+        found = discovery::discover(m_si, m_model, options.discovery, progress);
+    } else {
+        auto reference = loadReference(options.referencePath, options.referenceMappingPath, progress);
+        if (!reference) {
+            return reference.error();
+        }
+        found = discovery::discoverChange(*reference, m_si, m_model, options.discovery, progress);
+        if (found) {
+            found->referencePath = options.referencePath;
+        }
+    }
     if (!found) {
         return found.error();
     }

@@ -130,6 +130,12 @@ struct EvaluateResult {
 /// @brief Discovery on the loaded data with the session's model (CONTRACT.md §2 `discover`).
 struct DiscoverOptions {
     discovery::DiscoveryOptions discovery;
+    /// A period when the line ran as it should (a batch file or folder, CONTRACT.md §2
+    /// `discover --reference`): the loaded data are then judged by what changed against it.
+    /// Read with the session's cleaning rules and @p referenceMappingPath (empty: the contract's
+    /// columns). Empty: the loaded data alone.
+    std::string referencePath;
+    std::string referenceMappingPath;
     bool retrainResidual =
         true; ///< retrain PGRL-CC on the starting and the extended model for the hybrid gain
     Status validate() const { return discovery.validate(); }
@@ -287,6 +293,10 @@ public:
     const LatestResults& latest() const { return m_latest; }
 
 private:
+    /// A reference period read with the session's cleaning rules (a rejected file: its error).
+    Expected<std::vector<data::SiBatch>> loadReference(const std::string& path, const std::string& mappingPath,
+                                                       const Progress& progress) const;
+
     Status requireData(const std::string& action) const;
     /// Options valid and data loaded: the precondition of every action on the data.
     template <class Options> Status ready(const Options& options, const std::string& action) const;
