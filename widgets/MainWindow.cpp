@@ -534,6 +534,9 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
     o[QStringLiteral("model_path")] = base.relativeFilePath(modelPath);
     o[QStringLiteral("mapping_path")] =
         m_workbench.mappingPath().isEmpty() ? QString() : base.relativeFilePath(m_workbench.mappingPath());
+    // The reference period discovery compares with: the project remembers it (issue #41).
+    o[QStringLiteral("reference_path")] =
+        m_workbench.referencePath().isEmpty() ? QString() : base.relativeFilePath(m_workbench.referencePath());
     o[QStringLiteral("tab")] = QString::fromLatin1(kTabKeys[std::max(0, m_tabs->currentIndex())]);
     QJsonArray batches;
     for (const auto& r : m_data->batchTable()->selectionModel()->selectedRows()) {
@@ -642,6 +645,8 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
         m_pendingModel = base.filePath(model);
     }
     const QString mapping = o.value(QStringLiteral("mapping_path")).toString();
+    const QString reference = o.value(QStringLiteral("reference_path")).toString();
+    m_workbench.setReferencePath(reference.isEmpty() ? QString() : base.filePath(reference));
     if (!data.isEmpty()) {
         m_workbench.openData(base.filePath(data), mapping.isEmpty() ? QString() : base.filePath(mapping));
     } else {

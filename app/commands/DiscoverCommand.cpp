@@ -41,14 +41,16 @@ void printDetection(const discovery::DiscoveryResult& d) {
         }
         std::printf("\n");
         if (m.changed && !m.contributions.empty()) {
-            std::printf("  %-38s", "  largest contributions (SPE share):");
+            std::printf("  %-38s", "  largest contributions:");
             for (std::size_t i = 0; i < m.contributions.size() && i < 3; ++i) {
-                std::printf(" %s %.0f %%", m.contributions[i].column.c_str(), 100 * m.contributions[i].speShare);
+                const auto& c = m.contributions[i];
+                std::printf(" %s %.0f %%", c.column.c_str(),
+                            100 * (m.statistic == "SPE" ? c.speReconstructionShare : c.t2ReconstructionShare));
             }
             std::printf("\n");
         }
     };
-    line("DryTwin (inputs and the model's errors):", det.drytwin);
+    line("DryTwin (the model's errors):", det.drytwin);
     line("dynamic PCA (the measured columns):", det.pca);
     std::printf("\n");
 }
@@ -80,9 +82,11 @@ int runDiscover(const CommandOptions& o) {
     if (d.hasReference) {
         printDetection(d);
     }
-    std::printf(
-        "What the simulation gets wrong (after refitting h_HDT, k_HDT on the training part; residual = "
-        "measured - simulated):\n");
+    std::printf(d.hasReference
+                    ? "What the simulation gets wrong beyond the line's own structure on the reference (model as "
+                      "commissioned there; residual = measured - structure - simulated):\n"
+                    : "What the simulation gets wrong (after refitting h_HDT, k_HDT on the training part; residual "
+                      "= measured - simulated):\n");
     std::printf("%-6s %-5s %10s %10s %12s %10s %12s  %s\n", "output", "unit", "bias", "± se", "trend [/h]",
                 "± se", "line [s]", "strongest correlate (differences)");
     for (const auto& r : d.residuals) {
@@ -99,7 +103,9 @@ int runDiscover(const CommandOptions& o) {
     for (const auto& note : d.notes) {
         std::printf("note: %s\n", note.c_str());
     }
-    std::printf("\nCandidate causes (score test on the training part, HAC variance, Holm-corrected):\n");
+    std::printf(d.hasReference ? "\nCandidate causes (change of the one-step estimate from the reference's, in units of "
+                                 "both errors and the reference's spread; Bonferroni):\n"
+                               : "\nCandidate causes (score test on the training part, HAC variance, Holm-corrected):\n");
     std::printf("%-24s %8s %10s %10s %12s %14s\n", "cause", "z", "p", "p (Holm)", "fitted", "train loss");
     for (const auto& c : d.ranking) {
         std::printf(

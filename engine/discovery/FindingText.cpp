@@ -105,13 +105,20 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
                      100 * f.explainedFraction, 100 * f.explainedFractionFast, options.fastBandWindowS / 60);
     std::string text = format(
         "%s error before: bias %+.3g %s, within-batch trend %+.3g %s/h. With %s (%s = %.4g %s, 95 %% CI "
-        "[%.3g, %.3g]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %.3f to %.3f %% "
+        "[%.3g, %.3g]) and %s, the held-out MAE of X_out falls from %.3f to %.3f %% "
         "wb and of T_out from %.2f to %.2f °C (Diebold-Mariano p = %.2g); %s. Check on the plots: %s.",
         moisture ? "Outlet-moisture" : "Outlet-temperature", f.biasBefore, moisture ? "% wb" : "°C",
         f.trendPerHourBefore, moisture ? "% wb" : "°C", f.cause.c_str(), std::string(info.symbol).c_str(),
-        f.value, std::string(info.unit).c_str(), f.ci95Low, f.ci95High, gain.maeMoistureBefore,
+        f.value, std::string(info.unit).c_str(), f.ci95Low, f.ci95High,
+        f.hasReference ? "h_HDT, k_HDT as commissioned on the reference period" : "h_HDT, k_HDT refitted",
+        gain.maeMoistureBefore,
         gain.maeMoistureAfter, gain.maeTemperatureBefore, gain.maeTemperatureAfter, gain.pValue,
         share.c_str(), lookFor(f.parameter));
+    if (f.hasReference) {
+        text += format(" On the reference period it was %.4g %s (a period's normal range %.3g to %.3g): it "
+                       "changed.",
+                       f.referenceValue, std::string(info.unit).c_str(), f.referenceCi95Low, f.referenceCi95High);
+    }
     if (!f.perPart.empty()) {
         double lo = f.perPart.front().value, hi = lo;
         for (const auto& e : f.perPart) {

@@ -336,8 +336,13 @@ json detectionJson(const monitoring::Detection& d, const std::vector<std::string
                             : json(nullptr);
     j["contributions"] = json::array();
     for (const auto& c : d.contributions) {
-        j["contributions"].push_back(
-            {{"column", c.column}, {"spe_share", num(c.speShare)}, {"t2_share", num(c.t2Share)}});
+        // Ranked by the reconstruction-based shares (Alcala & Qin 2009): the plain squared-residual
+        // shares smear a fault onto the columns it correlates with.
+        j["contributions"].push_back({{"column", c.column},
+                                      {"spe_reconstruction_share", num(c.speReconstructionShare)},
+                                      {"t2_reconstruction_share", num(c.t2ReconstructionShare)},
+                                      {"spe_share", num(c.speShare)},
+                                      {"t2_share", num(c.t2Share)}});
     }
     json series = {{"batch", json::array()}, {"time_s", json::array()},   {"t2", json::array()},
                    {"spe", json::array()},   {"alarm", json::array()}};

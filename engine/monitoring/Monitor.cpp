@@ -12,6 +12,12 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+/// NotEnoughData with its arguments {what, count}.
+Error notEnoughData(const std::string& place, const std::string& reason, const std::string& what,
+                    std::size_t count) {
+    return Error{ErrorKind::BadInput, place, reason, ErrorCode::NotEnoughData, {what, std::to_string(count)}};
+}
+
 NullModel nullModelOf(const LongRunNull& null, const std::vector<int>& runWindows) {
     NullModel m;
     m.runLengths = runWindows;
@@ -111,11 +117,7 @@ Expected<Monitor> Monitor::fit(const std::vector<MonitorRun>& reference,
         return Error{ErrorKind::BadInput, place, "no columns to monitor"};
     }
     if (reference.empty()) {
-        return Error{ErrorKind::BadInput,
-                     place,
-                     "no reference runs: give at least one healthy run",
-                     ErrorCode::NotEnoughData,
-                     {"reference runs", "0"}};
+        return notEnoughData(place, "no reference runs: give at least one healthy run", "reference runs", 0);
     }
     if (Status s = checkRuns(reference, columns.size(), place); !s) {
         return s.error();
@@ -150,13 +152,11 @@ Expected<Monitor> Monitor::fit(const std::vector<MonitorRun>& reference,
     }
     const auto tooShort = [&](const std::string& why) {
         const MonitorRun& run = reference.front();
-        return Error{ErrorKind::BadInput,
-                     place + ": reference run '" + run.id + "'",
-                     "a single reference run of " + std::to_string(run.values.rows()) +
-                         " rows is too short to split in three parts for the leave-one-out null (" + why +
-                         "); give a longer run or more runs",
-                     ErrorCode::NotEnoughData,
-                     {"reference rows", std::to_string(run.values.rows())}};
+        return notEnoughData(place + ": reference run '" + run.id + "'",
+                             "a single reference run of " + std::to_string(run.values.rows()) +
+                                 " rows is too short to split in three parts for the leave-one-out null (" +
+                                 why + "); give a longer run or more runs",
+                             "reference rows", static_cast<std::size_t>(run.values.rows()));
     };
 
     auto full = thirds
@@ -216,13 +216,11 @@ Expected<Monitor> Monitor::fit(const std::vector<MonitorRun>& reference,
         }
     }
     if (static_cast<int>(windowT2.size()) < 3 * minWindows) {
-        return Error{ErrorKind::BadInput,
-                     place,
-                     "the reference gives only " + std::to_string(windowT2.size()) +
-                         " valid leave-one-out windows; the null needs at least " +
-                         std::to_string(3 * minWindows) + " (three times minSegmentS)",
-                     ErrorCode::NotEnoughData,
-                     {"reference windows", std::to_string(windowT2.size())}};
+        return notEnoughData(place,
+                             "the reference gives only " + std::to_string(windowT2.size()) +
+                                 " valid leave-one-out windows; the null needs at least " +
+                                 std::to_string(3 * minWindows) + " (three times minSegmentS)",
+                             "reference windows", windowT2.size());
     }
     auto t2Null = longRunNull(seriesT2, place + ": T2 null");
     auto speNull = longRunNull(seriesSpe, place + ": SPE null");
@@ -278,7 +276,7 @@ Expected<Detection> Monitor::judge(const std::vector<MonitorRun>& runs) const {
     const auto started = std::chrono::steady_clock::now();
     const std::string place = "monitor.judge";
     if (runs.empty()) {
-        return Error{ErrorKind::BadInput, place, "no runs to judge", ErrorCode::NotEnoughData, {"runs", "0"}};
+        return notEnoughData(place, "no runs to judge", "runs", 0);
     }
     if (Status s = checkRuns(runs, m_columns.size(), place); !s) {
         return s.error();
@@ -308,17 +306,18 @@ Expected<Detection> Monitor::judge(const std::vector<MonitorRun>& runs) const {
         d.runStarts.push_back(static_cast<int>(d.series.size()));
         runWindows.push_back(0);
         for (std::size_t w = 0; w < logT2.size(); ++w) {
-            WindowPoint pt;
-            pt.run = runs[r].id;
-            pt.runIndex = static_cast<int>(r);
-            pt.timeS = static_cast<double>(w + 1) * windowLen;
-            pt.t2 = std::exp(logT2[w]);
-            pt.spe = std::exp(logSpe[w]);
-            pt.t2Limit = m_limits.t2Window;
-            pt.speLimit = m_limits.speWindow;
-            pt.zT2 = (logT2[w] - m_t2Null.mean) / m_t2Null.longRunSd;
-            pt.zSpe = (logSpe[w] - m_speNull.mean) / m_speNull.longRunSd;
-            pt.cusumT2 = pt.cusumSpe = kNaN;
+            const WindowPoint pt{runs[r].id,
+                                 static_cast<int>(r),
+                                 static_cast<double>(w + 1) * windowLen,
+                                 std::exp(logT2[w]),
+                                 std::exp(logSpe[w]),
+                                 m_limits.t2Window,
+                                 m_limits.speWindow,
+                                 (logT2[w] - m_t2Null.mean) / m_t2Null.longRunSd,
+                                 (logSpe[w] - m_speNull.mean) / m_speNull.longRunSd,
+                                 kNaN,
+                                 kNaN,
+                                 false};
             if (std::isfinite(logT2[w])) {
                 zT2.push_back(pt.zT2);
                 zSpe.push_back(pt.zSpe);
@@ -346,17 +345,10 @@ Expected<Detection> Monitor::judge(const std::vector<MonitorRun>& runs) const {
         pt.alarm = pt.cusumT2 > t2->cusumThreshold || pt.cusumSpe > spe->cusumThreshold;
     }
     const auto judgement = [&](const ChangePointResult& c) {
-        StatisticJudgement j;
-        j.changed = c.changed;
-        j.pValue = c.pValue;
-        j.glr = c.glr;
-        j.glrThreshold = c.glrThreshold;
-        j.cusumThreshold = c.cusumThreshold;
-        j.firstAlarmWindow = toSeries(c.firstAlarm);
-        j.onsetWindow = toSeries(c.scan.onset);
-        j.onsetLowWindow = toSeries(c.scan.low);
-        j.onsetHighWindow = toSeries(c.scan.high);
-        return j;
+        const GlrScan& g = c.scan;
+        return StatisticJudgement{c.changed,         c.pValue,         c.glr,
+                                  c.glrThreshold,    c.cusumThreshold, toSeries(c.firstAlarm),
+                                  toSeries(g.onset), toSeries(g.low),  toSeries(g.high)};
     };
     d.t2 = judgement(*t2);
     d.spe = judgement(*spe);

@@ -34,6 +34,30 @@ QString modelDisplayName(const std::string& key) {
     return QString::fromStdString(key);
 }
 
+QString columnDisplayName(const std::string& column) {
+    static const std::map<std::string, const char*> names{
+        {"T_hot_sp_C", QT_TRANSLATE_NOOP("DisplayNames", "hot-air setpoint")},
+        {"T_hot_C", QT_TRANSLATE_NOOP("DisplayNames", "hot-air temperature")},
+        {"air_speed_m_s", QT_TRANSLATE_NOOP("DisplayNames", "air speed")},
+        {"feed_kg_h", QT_TRANSLATE_NOOP("DisplayNames", "feed rate")},
+        {"X_in_pct", QT_TRANSLATE_NOOP("DisplayNames", "inlet moisture")},
+        {"T_in_C", QT_TRANSLATE_NOOP("DisplayNames", "inlet material temperature")},
+        {"T_amb_C", QT_TRANSLATE_NOOP("DisplayNames", "ambient temperature")},
+        {"RH_amb_pct", QT_TRANSLATE_NOOP("DisplayNames", "ambient humidity")},
+        {"X_out_pct", QT_TRANSLATE_NOOP("DisplayNames", "outlet moisture")},
+        {"T_out_C", QT_TRANSLATE_NOOP("DisplayNames", "outlet temperature")},
+        {"X_hdt_pct", QT_TRANSLATE_NOOP("DisplayNames", "tube-outlet moisture")},
+        {"T_hdt_C", QT_TRANSLATE_NOOP("DisplayNames", "tube-outlet temperature")},
+        {"error_X_out_pct", QT_TRANSLATE_NOOP("DisplayNames", "model error, outlet moisture")},
+        {"error_T_out_C", QT_TRANSLATE_NOOP("DisplayNames", "model error, outlet temperature")},
+        {"error_X_hdt_pct", QT_TRANSLATE_NOOP("DisplayNames", "model error, tube-outlet moisture")},
+        {"error_T_hdt_C", QT_TRANSLATE_NOOP("DisplayNames", "model error, tube-outlet temperature")},
+    };
+    const auto it = names.find(column);
+    return it == names.end() ? QString::fromStdString(column)
+                             : QCoreApplication::translate("DisplayNames", it->second);
+}
+
 QString causeDisplayName(const std::string& cause) {
     // QT_TRANSLATE_NOOP marks them for lupdate; translate() words them when called.
     static const std::map<std::string, const char*> names{

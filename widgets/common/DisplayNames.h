@@ -19,6 +19,9 @@ QString controllerDisplayName(control::ControllerKind kind);
 QString modelDisplayName(const std::string& key);
 /// @brief A cause of CONTRACT.md §4 by its name ("heat-transfer fouling"); the name when unknown.
 QString causeDisplayName(const std::string& cause);
+/// @brief A monitored column by its contract name ("T_hot_C": "hot-air temperature", "error_X_out_pct":
+/// "model error, outlet moisture"); the name when unknown.
+QString columnDisplayName(const std::string& column);
 /// @brief A look-alike group by its name ("outlet response time: meter lag or transport time").
 QString groupDisplayName(const std::string& group);
 /// @brief Discovery's verdict as a heading ("Cause found: heat-transfer fouling").

@@ -464,10 +464,22 @@ void Workbench::evaluate() {
         });
 }
 
+void Workbench::setReferencePath(const QString& path) {
+    if (path == m_referencePath) {
+        return;
+    }
+    m_referencePath = path;
+    Q_EMIT referenceChanged();
+}
+
 void Workbench::discover() {
+    workflow::DiscoverOptions options;
+    options.referencePath = m_referencePath.toStdString();
+    // The reference is read with the loaded data's column mapping: the same historian, the same tags.
+    options.referenceMappingPath = m_mappingPath.toStdString();
     start<workflow::DiscoverResult>(
-        Action::Discover, tr("Discover"),
-        [](workflow::Session& s, const Progress& p) { return s.discover({}, p); },
+        Action::Discover, m_referencePath.isEmpty() ? tr("Discover") : tr("Discover against the reference"),
+        [options](workflow::Session& s, const Progress& p) { return s.discover(options, p); },
         [this](const workflow::DiscoverResult& r) {
             m_latest.discover = r;
             // The verdict in words, with the first cause (its group's name where it names one).

@@ -74,6 +74,10 @@ public:
     QString dataPath() const { return m_dataPath; }
     QString modelPath() const { return m_modelPath; }
     QString mappingPath() const { return m_mappingPath; }
+    /// @brief The reference period discovery compares the data with (a batch file or folder
+    /// when the line ran as it should; empty: the data are judged alone). A project keeps it.
+    QString referencePath() const { return m_referencePath; }
+    void setReferencePath(const QString& path);
     /// @brief The loaded data set in a few words ("plant: 10 batches"), for "learnt on" and
     /// "results of" lines; empty without data.
     QString dataSetLabel() const;
@@ -161,6 +165,8 @@ Q_SIGNALS:
     void trained();
     void evaluated();
     void discovered();
+    /// @brief The reference period was set or cleared.
+    void referenceChanged();
     void mpcFinished();
     void ablationFinished();
     /// @brief An action failed or was cancelled; @p message is worded for the user.
@@ -198,7 +204,7 @@ private:
     data::DataSetSummary m_summary;
     hybrid::HybridModel m_model;
     workflow::LatestResults m_latest;
-    QString m_dataPath, m_modelPath, m_mappingPath;
+    QString m_dataPath, m_modelPath, m_mappingPath, m_referencePath;
     JobId m_calibrationJob = 0;
     std::map<Action, int> m_running; ///< queued or running jobs per action
     std::array<LearntPart, 3> m_parts{LearntPart::absent(control::ControllerKind::PgrlCc),

@@ -6,10 +6,14 @@
 #include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QMenu>
 #include <QPushButton>
+#include <QTabWidget>
 #include <QRegularExpression>
 #include <QSplitter>
 #include <QTableWidget>
@@ -39,12 +43,62 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
     m_plots->addPlot(tr("T_out residual [°C]"));
     m_plots->setXTitle(tr("time, batches one after another [h]"));
 
+    // What changed since the line ran well (issue #41): a reference period, the project keeps it.
+    m_referenceButton = new QPushButton(tr("Compare with a reference period…"));
+    m_referenceButton->setToolTip(
+        tr("Choose batches from a time when the line ran as it should (the weeks after a cleaning, "
+           "commissioning runs): Discover then says whether, from when and why the loaded data differ"));
+    auto* referenceMenu = new QMenu(m_referenceButton);
+    referenceMenu->addAction(tr("A folder of batch files…"), this, [this] {
+        const QString dir = QFileDialog::getExistingDirectory(this, tr("Reference period: a folder of batch files"),
+                                                              m_workbench.dataPath());
+        if (!dir.isEmpty()) {
+            m_workbench.setReferencePath(dir);
+        }
+    });
+    referenceMenu->addAction(tr("One batch or historian file…"), this, [this] {
+        const QString file = QFileDialog::getOpenFileName(this, tr("Reference period: a batch or historian file"),
+                                                          m_workbench.dataPath(), tr("CSV files (*.csv *.txt)"));
+        if (!file.isEmpty()) {
+            m_workbench.setReferencePath(file);
+        }
+    });
+    referenceMenu->addAction(tr("No reference: judge the data alone"), this,
+                             [this] { m_workbench.setReferencePath({}); });
+    m_referenceButton->setMenu(referenceMenu);
+    m_referenceLabel = new QLabel;
+    m_referenceLabel->setWordWrap(true);
+    m_detection = new QLabel;
+    m_detection->setWordWrap(true);
+    m_detection->setTextFormat(Qt::RichText);
+    m_monitorPlots = new PlotStack;
+    m_monitorPlots->addPlot(tr("T² (model error) [-]"));
+    m_monitorPlots->addPlot(tr("SPE (model error) [-]"));
+    m_monitorPlots->setXTitle(tr("time, batches one after another [h]"));
+    m_monitorPlots->setLogScale(0, false, true);
+    m_monitorPlots->setLogScale(1, false, true);
+    m_monitorPlots->setEmptyText(tr("Choose a reference period and run Discover to see the monitor"));
+    m_contributions = makeResultTable({tr("Column"), tr("Share of the change"), tr("Detector")});
+    m_contributions->setToolTip(
+        tr("How much each column contributes to the monitor's statistic after the onset "
+           "(reconstruction-based contributions: the column that, put back to normal, removes most of it)"));
+    auto* monitorPage = new QSplitter(Qt::Vertical);
+    monitorPage->addWidget(m_monitorPlots);
+    monitorPage->addWidget(m_contributions);
+    monitorPage->setStretchFactor(0, 3);
+    m_views = new QTabWidget;
+    m_views->addTab(m_plots, tr("Model error"));
+    m_views->addTab(monitorPage, tr("Monitor against the reference"));
+
     auto* left = new QWidget;
     auto* ll = new QVBoxLayout(left);
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(run);
     buttons->addWidget(m_extend);
     ll->addLayout(buttons);
+    ll->addWidget(m_referenceButton);
+    ll->addWidget(m_referenceLabel);
+    ll->addWidget(m_detection);
     ll->addWidget(m_verdict);
     ll->addWidget(new QLabel(tr("Candidate causes, first round:")));
     ll->addWidget(m_ranking, 1);
@@ -52,7 +106,7 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
     ll->addWidget(m_gains, 1);
     auto* right = new QSplitter(Qt::Vertical);
     right->addWidget(m_evidence);
-    right->addWidget(m_plots);
+    right->addWidget(m_views);
     right->setStretchFactor(1, 2);
     auto* split = new QSplitter;
     split->addWidget(left);
@@ -75,10 +129,108 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
         }
     });
     connect(&m_workbench, &Workbench::discovered, this, &DiscoverPanel::show);
+    connect(&m_workbench, &Workbench::referenceChanged, this, &DiscoverPanel::showReference);
     connect(&m_workbench, &Workbench::dataChanged, this, &DiscoverPanel::show);
     connect(&m_workbench, &Workbench::resultsRestored, this, &DiscoverPanel::show);
     m_plots->setEmptyText(tr("Run Discover to see the physics model's error over the batches"));
     m_workbench.bindButton(run, Action::Discover);
+    showReference();
+}
+
+void DiscoverPanel::showReference() {
+    const QString path = m_workbench.referencePath();
+    m_referenceLabel->setText(path.isEmpty() ? tr("No reference period: the data are judged alone.")
+                                             : tr("Reference period: %1").arg(QFileInfo(path).fileName()));
+    m_referenceLabel->setToolTip(path);
+}
+
+void DiscoverPanel::showDetection() {
+    const auto& r = m_workbench.latest().discover;
+    m_monitorPlots->clearCurves();
+    m_contributions->setRowCount(0);
+    if (!r || !r->discovery.hasReference) {
+        m_detection->clear();
+        m_detection->setVisible(false);
+        m_monitorPlots->rescale();
+        return;
+    }
+    const auto& det = r->discovery.detection;
+    const auto describe = [&](const QString& name, const monitoring::Detection& d) {
+        QString line = d.changed ? tr("%1: <b>changed</b> (p = %2)").arg(name).arg(d.pValue, 0, 'g', 2)
+                                 : tr("%1: no change (p = %2)").arg(name).arg(d.pValue, 0, 'g', 2);
+        if (d.changed && d.hasFirstAlarm) {
+            line += tr(", first alarm in %1 at %2 min")
+                        .arg(QString::fromStdString(d.firstAlarmRun).toHtmlEscaped())
+                        .arg(d.firstAlarmTimeS / 60, 0, 'f', 0);
+        }
+        if (d.changed && d.hasOnset) {
+            line += tr(", from %1 at %2 min (95 %: %3 to %4 min)")
+                        .arg(QString::fromStdString(d.onsetRun).toHtmlEscaped())
+                        .arg(d.onsetS / 60, 0, 'f', 0)
+                        .arg(d.onsetLowS / 60, 0, 'f', 0)
+                        .arg(d.onsetHighS / 60, 0, 'f', 0);
+        }
+        return line;
+    };
+    m_detection->setText(
+        (det.changed ? tr("<b>The line has changed since the reference period.</b>")
+                     : tr("<b>No change against the reference period.</b>")) +
+        tr(" Each detector's false-alarm rate: %1 % per data set.").arg(100 * det.falseAlarmRate, 0, 'g', 2) +
+        QStringLiteral("<br>") + describe(tr("DryTwin (the model's error)"), det.drytwin) + QStringLiteral("<br>") +
+        describe(tr("Dynamic PCA (the measured columns)"), det.pca));
+    m_detection->setVisible(true);
+    // The windows of both monitors, batches one after another, each statistic over its limit's
+    // scale so that both detectors share one axis: above 1 is beyond the reference's 99 %.
+    const auto hoursOf = [](const monitoring::Detection& d, QVector<double>& x) {
+        double offset = 0, last = 0;
+        std::string run;
+        for (const auto& w : d.series) {
+            if (w.run != run) {
+                offset += last;
+                run = w.run;
+            }
+            last = w.timeS;
+            x << (offset + w.timeS) / 3600.0;
+        }
+    };
+    for (const auto* d : {&det.drytwin, &det.pca}) {
+        const bool ours = d == &det.drytwin;
+        QVector<double> x, t2, spe, t2Limit, speLimit;
+        hoursOf(*d, x);
+        for (const auto& w : d->series) {
+            t2 << w.t2;
+            spe << w.spe;
+        }
+        const QColor colour = ours ? QColor(214, 39, 40) : QColor(31, 119, 180);
+        const QString name = ours ? tr("DryTwin") : tr("dynamic PCA");
+        if (ours && !x.isEmpty()) { // the limits belong to one monitor: the one the plot is named after
+            m_monitorPlots->addCurve(0, tr("99 % limit"), {x.front(), x.back()},
+                                     {d->limits.t2Window, d->limits.t2Window}, Qt::black, Qt::DashLine);
+            m_monitorPlots->addCurve(1, tr("99 % limit"), {x.front(), x.back()},
+                                     {d->limits.speWindow, d->limits.speWindow}, Qt::black, Qt::DashLine);
+        }
+        if (ours) {
+            m_monitorPlots->addCurve(0, name, x, t2, colour);
+            m_monitorPlots->addCurve(1, name, x, spe, colour);
+        }
+    }
+    for (const auto* d : {&det.drytwin, &det.pca}) {
+        if (!d->changed) {
+            continue;
+        }
+        const QString name = d == &det.drytwin ? tr("DryTwin") : tr("dynamic PCA");
+        for (std::size_t i = 0; i < d->contributions.size() && i < 6; ++i) {
+            const auto& c = d->contributions[i];
+            const double share = d->statistic == "SPE" ? c.speReconstructionShare : c.t2ReconstructionShare;
+            const int row = m_contributions->rowCount();
+            m_contributions->insertRow(row);
+            setTableRow(m_contributions, row,
+                        {columnDisplayName(c.column), QStringLiteral("%1 %").arg(100 * share, 0, 'f', 0), name});
+        }
+    }
+    m_contributions->resizeColumnsToContents();
+    m_monitorPlots->rescale();
+    m_views->setCurrentIndex(det.changed ? 1 : 0);
 }
 
 namespace {
@@ -378,8 +530,10 @@ void DiscoverPanel::show() {
         m_evidence->clear();
         m_plots->clearCurves();
         m_plots->rescale();
+        showDetection();
         return;
     }
+    showDetection();
     const auto& d = r->discovery;
     QStringList named;
     for (const auto& f : d.findings) {

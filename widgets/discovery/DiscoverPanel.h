@@ -4,6 +4,7 @@
 
 class QLabel;
 class QPushButton;
+class QTabWidget;
 class QTableWidget;
 class QTextBrowser;
 
@@ -33,9 +34,19 @@ public:
     /// language.
     static QString specificityText(const discovery::Finding& f);
     PlotStack* plots() const { return m_plots; }
+    /// @brief The reference period's controls and what detection found against it.
+    QPushButton* referenceButton() const { return m_referenceButton; }
+    QLabel* referenceLabel() const { return m_referenceLabel; }
+    QLabel* detection() const { return m_detection; }
+    PlotStack* monitorPlots() const { return m_monitorPlots; }
+    QTableWidget* contributions() const { return m_contributions; }
 
 private:
     void show();
+    void showReference();
+    /// Detection against the reference: both detectors' verdicts, the monitor's T² and SPE with
+    /// their limits, and each column's contribution after the onset.
+    void showDetection();
 
     Workbench& m_workbench;
     QLabel* m_verdict = nullptr;
@@ -44,6 +55,12 @@ private:
     QTextBrowser* m_evidence = nullptr;
     QPushButton* m_extend = nullptr;
     PlotStack* m_plots = nullptr;
+    QPushButton* m_referenceButton = nullptr;
+    QLabel* m_referenceLabel = nullptr;
+    QLabel* m_detection = nullptr;
+    PlotStack* m_monitorPlots = nullptr;
+    QTableWidget* m_contributions = nullptr;
+    QTabWidget* m_views = nullptr;
 };
 
 } // namespace drytwin::widgets
