@@ -25,6 +25,7 @@ struct CommandLine::Impl {
     std::string language;
     std::string guiModelPath;
     std::string runActions;
+    std::string guiReferencePath;
     std::string trainingSession;
 };
 
@@ -43,6 +44,9 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     app.add_option("--model", m_impl->guiModelPath, "GUI: open this model file with the data");
     app.add_option("--training", m_impl->trainingSession,
                    "GUI: reopen this saved training session on the Training tab");
+    app.add_option("--reference", m_impl->guiReferencePath,
+                   "GUI: compare the data with this reference period (a batch file or folder from a time "
+                   "when the line ran as it should) when Discover runs");
     app.add_option("--run", m_impl->runActions,
                    "GUI: after loading, run these actions in order, e.g. calibrate,train,discover,mpc");
     app.add_option("--lang", m_impl->language,
@@ -283,6 +287,7 @@ ParsedCommandLine CommandLine::parse(int argc, char** argv) {
         result.language = m_impl->language;
         result.modelPath = m_impl->guiModelPath;
         result.runActions = m_impl->runActions;
+        result.referencePath = m_impl->guiReferencePath;
         result.trainingSession = m_impl->trainingSession;
     }
     m_impl->options.quiet = m_impl->quiet;

@@ -110,6 +110,9 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
                              });
         }
     }
+    if (!parsed.referencePath.empty()) {
+        window.workbench().setReferencePath(QString::fromStdString(parsed.referencePath));
+    }
     if (!projectPath.isEmpty()) {
         QString error;
         if (!window.openProject(projectPath, &error)) {

@@ -72,8 +72,8 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
     m_detection->setWordWrap(true);
     m_detection->setTextFormat(Qt::RichText);
     m_monitorPlots = new PlotStack;
-    m_monitorPlots->addPlot(tr("T² (model error) [-]"));
-    m_monitorPlots->addPlot(tr("SPE (model error) [-]"));
+    m_monitorPlots->addPlot(tr("T² [-]"));
+    m_monitorPlots->addPlot(tr("SPE [-]"));
     m_monitorPlots->setXTitle(tr("time, batches one after another [h]"));
     m_monitorPlots->setLogScale(0, false, true);
     m_monitorPlots->setLogScale(1, false, true);
@@ -493,9 +493,19 @@ QString DiscoverPanel::evidenceText(const discovery::Finding& f) {
                   .arg(100 * f.explainedFraction, 0, 'f', 0)
                   .arg(100 * f.explainedFractionFast, 0, 'f', 0)
             : tr("it removes %1 % of the held-out squared error").arg(100 * f.explainedFraction, 0, 'f', 0);
+    const QString commissioned = f.hasReference ? tr("h_HDT, k_HDT as commissioned on the reference period")
+                                                : tr("h_HDT, k_HDT refitted");
+    // Against a reference the finding is a change: the value it had there, and its normal range.
+    const QString changed =
+        f.hasReference ? tr(" On the reference period it was %1 %2 (a period's normal range %3 to %4): it changed.")
+                             .arg(f.referenceValue, 0, 'g', 4)
+                             .arg(QString::fromUtf8(info.unit.data(), static_cast<int>(info.unit.size())))
+                             .arg(f.referenceCi95Low, 0, 'g', 3)
+                             .arg(f.referenceCi95High, 0, 'g', 3)
+                       : QString();
     return tr("%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, "
               "%10]) "
-              "and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out "
+              "and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out "
               "from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.")
         .arg(moisture ? tr("Outlet-moisture") : tr("Outlet-temperature"))
         .arg(f.biasBefore, 0, 'g', 3)
@@ -513,7 +523,9 @@ QString DiscoverPanel::evidenceText(const discovery::Finding& f) {
         .arg(g.maeTemperatureAfter, 0, 'f', 2)
         .arg(g.pValue, 0, 'g', 2)
         .arg(share)
-        .arg(lookForText(f.parameter));
+        .arg(lookForText(f.parameter))
+        .arg(commissioned) +
+           changed;
 }
 
 void DiscoverPanel::show() {
