@@ -39,152 +39,232 @@
         <translation>物理模型，保持最后误差</translation>
     </message>
     <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="39"/>
+        <source>hot-air setpoint</source>
+        <translation>热风设定值</translation>
+    </message>
+    <message>
         <location filename="../widgets/common/DisplayNames.cpp" line="40"/>
+        <source>hot-air temperature</source>
+        <translation>热风温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="41"/>
+        <source>air speed</source>
+        <translation>风速</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="42"/>
+        <source>feed rate</source>
+        <translation>进料量</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="43"/>
+        <source>inlet moisture</source>
+        <translation>入口水分</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="44"/>
+        <source>inlet material temperature</source>
+        <translation>入口物料温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="45"/>
+        <source>ambient temperature</source>
+        <translation>环境温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="46"/>
+        <source>ambient humidity</source>
+        <translation>环境湿度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="47"/>
+        <source>outlet moisture</source>
+        <translation>出口水分</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="48"/>
+        <source>outlet temperature</source>
+        <translation>出口温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="49"/>
+        <source>tube-outlet moisture</source>
+        <translation>管道出口水分</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="50"/>
+        <source>tube-outlet temperature</source>
+        <translation>管道出口温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="51"/>
+        <source>model error, outlet moisture</source>
+        <translation>模型误差，出口水分</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="52"/>
+        <source>model error, outlet temperature</source>
+        <translation>模型误差，出口温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="53"/>
+        <source>model error, tube-outlet moisture</source>
+        <translation>模型误差，管道出口水分</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="54"/>
+        <source>model error, tube-outlet temperature</source>
+        <translation>模型误差，管道出口温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="64"/>
         <source>tube-wall heat loss</source>
         <translation>管壁散热</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="41"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="65"/>
         <source>drying air cooling along the tube</source>
         <translation>干燥风沿管降温</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="42"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="66"/>
         <source>heat-transfer fouling</source>
         <translation>传热结垢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="43"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="67"/>
         <source>slow outlet moisture meter</source>
         <translation>出口水分仪响应慢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="44"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="68"/>
         <source>outlet moisture meter offset</source>
         <translation>出口水分仪偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="45"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="69"/>
         <source>conveyor transport time off</source>
         <translation>输送时间偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="46"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="70"/>
         <source>slower drying below critical moisture</source>
         <translation>低于临界含水率时干燥变慢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="47"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="71"/>
         <source>moisture taken back on the conveyor</source>
         <translation>输送中回潮</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="48"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="72"/>
         <source>inlet moisture gauge offset</source>
         <translation>入口水分仪偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="49"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="73"/>
         <source>slow hot-air thermocouple</source>
         <translation>热风热电偶响应慢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="50"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="74"/>
         <source>noisy inlet moisture gauge</source>
         <translation>入口水分仪噪声大</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="51"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="75"/>
         <source>outlet mixing</source>
         <translation>出口混合</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="60"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="84"/>
         <source>outlet response time (meter lag or transport time)</source>
         <translation>出口响应时间（仪表滞后或输送时间）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="64"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="88"/>
         <source>moisture offset (outlet meter or inlet gauge)</source>
         <translation>水分偏差（出口水分仪或入口水分仪）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="67"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="91"/>
         <source>air temperature in the tube (wall loss or air cooling)</source>
         <translation>管内风温（管壁散热或风冷却）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="76"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="100"/>
         <source>Cause found</source>
         <translation>找到原因</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="77"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="101"/>
         <source>Cause found: %1</source>
         <translation>找到原因：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="80"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="104"/>
         <source>No cause found: what the model gets wrong is within the measurements&apos; noise</source>
         <translation>未找到原因：模型的误差在测量噪声范围之内</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="84"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="108"/>
         <source>Something is left that no known cause explains</source>
         <translation>仍有已知原因无法解释的结构</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="92"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="116"/>
         <source>Completed</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="94"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="118"/>
         <source>Converged</source>
         <translation>已收敛</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="96"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="120"/>
         <source>Evaluation budget used up</source>
         <translation>评估次数已用完</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="98"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="122"/>
         <source>Stopped by you, best so far kept</source>
         <translation>已由您停止，保留目前最优</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="105"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="129"/>
         <source>Stopped by you; the runs so far are kept, the last one is partial</source>
         <translation>已由您停止；保留已完成的运行，最后一次不完整</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="112"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="136"/>
         <source>Scenario %1: %2 of %3 controllers run over %4 scored seconds</source>
         <translation>情景 %1：%3 个控制器中运行了 %2 个，评分时长 %4 秒</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="122"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="146"/>
         <source>none (the sensitivities could not be computed)</source>
         <translation>无（无法计算灵敏度）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="125"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="149"/>
         <source>robust to correlated rows (sandwich covariance with a Newey-West middle term)</source>
         <translation>对相关样本稳健（夹心协方差，中间项为 Newey-West）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="133"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="157"/>
         <source>R² could not be computed (too few rows).</source>
         <translation>无法计算 R²（行数太少）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="136"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="160"/>
         <source>R² below 0: the model predicts worse than the batch&apos;s mean would. Usual for the physics model alone on a short held-out part with little movement; compare MAE instead.</source>
         <translation>R² 小于 0：模型的预测比批次均值还差。对于变化很小的短留出段，单独的物理模型常出现这种情况；请改为比较 MAE。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="141"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="165"/>
         <source>R² %1: the model explains %2 % of the variation of the measured values about their mean.</source>
         <translation>R² %1：模型解释了测量值围绕其均值变化的 %2 %。</translation>
     </message>
@@ -1295,363 +1375,521 @@
 <context>
     <name>drytwin::widgets::DiscoverPanel</name>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="25"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="29"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="26"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
         <source>What does the simulation get wrong, and why? (score tests, fits, held-out gain)</source>
         <translation>仿真哪里出错，为什么？（得分检验、拟合、留出数据上的改进）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="27"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="68"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="122"/>
         <source>Extend the model</source>
         <translation>扩展模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
         <source>Make the extended model (named causes, refitted h_HDT and k_HDT, residual models retrained) the session&apos;s model</source>
         <translation>将扩展后的模型（已命名的原因、重新拟合的 h_HDT 与 k_HDT、重新训练的残差模型）设为当前模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
         <source>Run discovery on the loaded data with the current model.</source>
         <translation>用当前模型在已加载的数据上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
         <source>p (Holm)</source>
         <translation>p（Holm）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
         <source>Fitted</source>
         <translation>已拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
         <source>Loss</source>
         <translation>损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
         <source>Held-out</source>
         <translation>留出数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
         <source>Before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
         <source>After</source>
         <translation>之后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="42"/>
         <source>X_out residual [% wb]</source>
         <translation>X_out 残差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="43"/>
         <source>T_out residual [°C]</source>
         <translation>T_out 残差 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="40"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="44"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="77"/>
         <source>time, batches one after another [h]</source>
         <translation>时间，批次首尾相接 [h]</translation>
     </message>
     <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="47"/>
+        <source>Compare with a reference period…</source>
+        <translation>与参考期比较…</translation>
+    </message>
+    <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
+        <source>Choose batches from a time when the line ran as it should (the weeks after a cleaning, commissioning runs): Discover then says whether, from when and why the loaded data differ</source>
+        <translation>选择产线正常运行时期的批次（清洗后的几周、调试运行）：发现功能将说明已加载的数据是否、从何时起以及为何与之不同</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
+        <source>A folder of batch files…</source>
+        <translation>批次文件所在的文件夹…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="53"/>
+        <source>Reference period: a folder of batch files</source>
+        <translation>参考期：批次文件所在的文件夹</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="59"/>
+        <source>One batch or historian file…</source>
+        <translation>单个批次或历史库文件…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="60"/>
+        <source>Reference period: a batch or historian file</source>
+        <translation>参考期：批次或历史库文件</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="61"/>
+        <source>CSV files (*.csv *.txt)</source>
+        <translation>CSV 文件 (*.csv *.txt)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="66"/>
+        <source>No reference: judge the data alone</source>
+        <translation>不用参考期：单独判断数据</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="75"/>
+        <source>T² [-]</source>
+        <translation>T² [-]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="76"/>
+        <source>SPE [-]</source>
+        <translation>SPE [-]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="80"/>
+        <source>Choose a reference period and run Discover to see the monitor</source>
+        <translation>选择参考期并运行“发现”以查看监控图</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="81"/>
+        <source>Column</source>
+        <translation>列</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="81"/>
+        <source>Share of the change</source>
+        <translation>在变化中的占比</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="81"/>
+        <source>Detector</source>
+        <translation>检测器</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="83"/>
+        <source>How much each column contributes to the monitor&apos;s statistic after the onset (reconstruction-based contributions: the column that, put back to normal, removes most of it)</source>
+        <translation>起始点之后各列对监控统计量的贡献（基于重构的贡献：将该列恢复正常后消除的部分最多者）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
+        <source>Model error</source>
+        <translation>模型误差</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="91"/>
+        <source>Monitor against the reference</source>
+        <translation>相对参考期的监控</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="103"/>
         <source>Candidate causes, first round:</source>
         <translation>候选原因（第一轮）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="51"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="105"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="72"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="126"/>
         <source>the model was extended by discovery</source>
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="74"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="128"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="80"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="135"/>
         <source>Run Discover to see the physics model&apos;s error over the batches</source>
         <translation>运行发现，可看到物理模型在各批次上的误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="93"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="142"/>
+        <source>No reference period: the data are judged alone.</source>
+        <translation>无参考期：单独判断数据。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="143"/>
+        <source>Reference period: %1</source>
+        <translation>参考期：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="159"/>
+        <source>%1: &lt;b&gt;changed&lt;/b&gt; (p = %2)</source>
+        <translation>%1：&lt;b&gt;已变化&lt;/b&gt;（p = %2）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="160"/>
+        <source>%1: no change (p = %2)</source>
+        <translation>%1：无变化（p = %2）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="162"/>
+        <source>, first alarm in %1 at %2 min</source>
+        <translation>，首次报警于 %1 第 %2 分钟</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="167"/>
+        <source>, from %1 at %2 min (95 %: %3 to %4 min)</source>
+        <translation>，自 %1 第 %2 分钟起（95 %：%3 至 %4 分钟）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="176"/>
+        <source>&lt;b&gt;The line has changed since the reference period.&lt;/b&gt;</source>
+        <translation>&lt;b&gt;自参考期以来产线已发生变化。&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="177"/>
+        <source>&lt;b&gt;No change against the reference period.&lt;/b&gt;</source>
+        <translation>&lt;b&gt;与参考期相比无变化。&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="178"/>
+        <source> Each detector&apos;s false-alarm rate: %1 % per data set.</source>
+        <translation> 每个检测器的误报率：每个数据集 %1 %。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="179"/>
+        <source>DryTwin (the model&apos;s error)</source>
+        <translation>DryTwin（模型误差）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="180"/>
+        <source>Dynamic PCA (the measured columns)</source>
+        <translation>动态 PCA（测量列）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="205"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="221"/>
+        <source>DryTwin</source>
+        <translation>DryTwin</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="205"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="221"/>
+        <source>dynamic PCA</source>
+        <translation>动态 PCA</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="207"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="209"/>
+        <source>99 % limit</source>
+        <translation>99 % 限值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="245"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="248"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)</source>
         <translation>误差随进料量和入口水分增大（按 feed_kg_h 和 X_in_pct 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="99"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="251"/>
         <source>the error drifts within every batch and resets at each batch start</source>
         <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="101"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="253"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="105"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="257"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="108"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="260"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="110"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="262"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="114"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="266"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="118"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="270"/>
         <source>a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less</source>
         <translation>干燥管出口与出口水分有相同的稳定偏差，干燥管干燥越少处越大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="121"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="273"/>
         <source>after each hot-air setpoint step the outlet temperature and moisture move before the simulation, which follows the slow reading</source>
         <translation>每次热风设定值阶跃后，出口温度和水分先于仿真变化，仿真跟随的是迟缓的读数</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="124"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="276"/>
         <source>the inlet-moisture reading scatters from second to second while the outlet does not follow it, and the simulated outlet does</source>
         <translation>入口水分读数逐秒跳动，出口并不跟随，而仿真的出口却跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="134"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="286"/>
         <source>a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet temperature&apos;s response as much as the moisture&apos;s, a meter lag delays the moisture reading alone; or grab samples timed against the meter</source>
         <translation>以 1 s 记录一次热风设定值阶跃：输送时间误差使出口温度与水分的响应同样延迟，水分仪滞后只延迟水分读数；或对照水分仪定时取样</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="141"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="293"/>
         <source>oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter offset does not</source>
         <translation>在出口对照水分仪、在入口对照入口水分计做烘箱法实验室取样；或增加干燥管出口水分通道（X_hdt）：入口水分计偏差会使其变化，出口水分仪偏差不会</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="148"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="300"/>
         <source>a gas-temperature reading at the tube&apos;s outlet end at two feed rates: wall loss does not change with the feed, gas-phase cooling grows with it</source>
         <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="158"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="310"/>
         <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
         <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="161"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="313"/>
         <source>its size is not consistent across batches or operating regions</source>
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="164"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="316"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="167"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="319"/>
         <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
         <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="171"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="323"/>
         <source>the outlet channels&apos; timing points to its look-alike (the moisture answers later than the temperature: a meter, not the transport)</source>
         <translation>出口两个通道的时序指向它的相似原因（水分比温度响应更晚：是水分仪，而非输送）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="176"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="328"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="179"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="331"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="196"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
         <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
         <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="201"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="353"/>
         <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
         <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="204"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="356"/>
         <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
         <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="209"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="361"/>
         <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
         <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="215"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="367"/>
         <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="226"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="378"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="231"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="383"/>
         <source>the error follows %1 %2 s later (|ccf| %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="241"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="393"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="246"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="398"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="258"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="410"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="265"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="417"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="280"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="432"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="285"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="437"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="285"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="437"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="288"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="440"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="292"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="444"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="301"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="453"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="307"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="459"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="319"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="471"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="320"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="472"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="327"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="479"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="339"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="491"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="343"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="495"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="344"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="510"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="510"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="537"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="374"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="538"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="389"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="555"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -1668,165 +1906,181 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="404"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="570"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="404"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="570"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="425"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="591"/>
         <source>%1 at %2 s (ccf %3%4)</source>
         <translation>%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="429"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="595"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="432"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="598"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="440"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="606"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="255"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="407"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="392"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="496"/>
+        <source>h_HDT, k_HDT as commissioned on the reference period</source>
+        <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="497"/>
+        <source>h_HDT, k_HDT refitted</source>
+        <translation>并重新拟合 h_HDT、k_HDT 后</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="500"/>
+        <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
+        <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="506"/>
+        <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.</source>
+        <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="558"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="395"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="561"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="396"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="562"/>
         <source>, </source>
         <translation>、</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="397"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="563"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="450"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="616"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="466"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="632"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="471"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="637"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="479"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="645"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="484"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="650"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="492"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="658"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="502"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="668"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="334"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="503"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="515"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="518"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="520"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="486"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="669"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="687"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="504"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="670"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="334"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="505"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="522"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="525"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="527"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="486"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="671"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="691"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="506"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="672"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="507"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="673"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="515"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="686"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="517"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="686"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="519"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="687"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="522"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="690"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="524"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="690"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="526"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="691"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="544"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="545"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="716"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -2153,7 +2407,7 @@
     <message>
         <location filename="../widgets/MainWindow.cpp" line="332"/>
         <location filename="../widgets/MainWindow.cpp" line="335"/>
-        <location filename="../widgets/MainWindow.cpp" line="734"/>
+        <location filename="../widgets/MainWindow.cpp" line="739"/>
         <source>Open project</source>
         <translation>打开项目</translation>
     </message>
@@ -2218,22 +2472,22 @@
         <translation>项目已保存到 %1（模型、结果和视图）</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="572"/>
+        <location filename="../widgets/MainWindow.cpp" line="575"/>
         <source>Saving the project to %1…</source>
         <translation>正在保存项目到 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="620"/>
+        <location filename="../widgets/MainWindow.cpp" line="623"/>
         <source>The project&apos;s results could not be read (%1); it opens without them.</source>
         <translation>无法读取项目的结果（%1）；项目将不带结果打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="671"/>
+        <location filename="../widgets/MainWindow.cpp" line="676"/>
         <source>Wait until the running job has finished (or cancel it), then switch the language.</source>
         <translation>请等待当前任务完成（或取消它），然后再切换语言。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="704"/>
+        <location filename="../widgets/MainWindow.cpp" line="709"/>
         <source>The training session under way was saved in %1 when the language changed: the instructor window&apos;s Session file ▸ Open session… continues it.</source>
         <translation>切换语言时，进行中的培训会话已保存到 %1：在教员窗口的 会话文件 ▸ 打开会话… 可继续。</translation>
     </message>
@@ -2343,8 +2597,8 @@
     </message>
     <message>
         <location filename="../widgets/MainWindow.cpp" line="512"/>
-        <location filename="../widgets/MainWindow.cpp" line="556"/>
-        <location filename="../widgets/MainWindow.cpp" line="563"/>
+        <location filename="../widgets/MainWindow.cpp" line="559"/>
+        <location filename="../widgets/MainWindow.cpp" line="566"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -2353,12 +2607,12 @@
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="580"/>
+        <location filename="../widgets/MainWindow.cpp" line="583"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="589"/>
+        <location filename="../widgets/MainWindow.cpp" line="592"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
@@ -3969,38 +4223,43 @@ extrapolation</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="469"/>
+        <location filename="../widgets/common/Workbench.cpp" line="481"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="479"/>
+        <location filename="../widgets/common/Workbench.cpp" line="481"/>
+        <source>Discover against the reference</source>
+        <translation>相对参考期发现</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.cpp" line="491"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="486"/>
+        <location filename="../widgets/common/Workbench.cpp" line="498"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="501"/>
+        <location filename="../widgets/common/Workbench.cpp" line="513"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="118"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="505"/>
+        <location filename="../widgets/common/Workbench.cpp" line="517"/>
         <source>Ablation: %1 variants trained and evaluated</source>
         <translation>消融实验：已训练并评估 %1 个变体</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="512"/>
+        <location filename="../widgets/common/Workbench.cpp" line="524"/>
         <source>Generate</source>
         <translation>生成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="515"/>
+        <location filename="../widgets/common/Workbench.cpp" line="527"/>
         <source>Wrote %1 virtual-plant batches to %2</source>
         <translation>已将 %1 个虚拟装置批次写入 %2</translation>
     </message>
