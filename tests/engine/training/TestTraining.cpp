@@ -2,6 +2,7 @@
 // their onset in the plant's own form and stay out of the operator's view, the score by its rule,
 // and scripted sessions that replay to the same recording for the same seed.
 #include "data/BatchWriter.h"
+#include "training/LineMonitor.h"
 #include "training/TrainingScript.h"
 #include "training/TrainingSession.h"
 
@@ -65,6 +66,43 @@ const char* kScript = R"({
 class TestTraining : public QObject {
     Q_OBJECT
 private Q_SLOTS:
+    /// The live line's monitor (issue #41): commissioned on healthy runs of the scenario (other
+    /// seeds), quiet on a healthy session, alarmed after a fault's onset with the onset near the
+    /// truth, and sent back with the line by a restore.
+    void lineMonitorAlarmsOnAFaultAndNotOnAHealthyLine() {
+        control::Scenario s = shortScenario(7);
+        s.lengthS = 2400;
+        auto monitor = training::LineMonitor::commission(s, 3);
+        QVERIFY2(monitor, monitor ? "" : monitor.error().message().c_str());
+        QCOMPARE(monitor->commissioningRuns().size(), std::size_t(3));
+
+        auto healthy = started(s);
+        healthy.advance(2400);
+        auto quiet = *monitor;
+        QVERIFY(quiet.feed(healthy.trace()));
+        QVERIFY(quiet.state().ready);
+        QVERIFY2(!quiet.state().alarmed, qPrintable(QStringLiteral("alarm at %1 s").arg(quiet.state().alarmAtS)));
+        QVERIFY(quiet.state().timeS.size() >= 35); // a point a minute
+
+        auto faulty = started(s);
+        QVERIFY(faulty.injectFault(Mechanism::MoistureMeterOffset, 0.8, 900));
+        auto watching = *monitor;
+        for (int minute = 0; minute < 40; ++minute) { // fed as the GUI feeds it, a piece at a time
+            faulty.advance(60);
+            const auto fed = watching.feed(faulty.trace());
+            QVERIFY2(fed, fed ? "" : fed.error().message().c_str());
+        }
+        const auto& st = watching.state();
+        QVERIFY2(st.alarmed, "no alarm after the meter's offset");
+        QVERIFY2(st.alarmAtS > 900, qPrintable(QStringLiteral("alarm at %1 s, before the onset").arg(st.alarmAtS)));
+        QVERIFY(st.hasOnset);
+        QVERIFY2(std::abs(st.onsetS - 900) <= 300, qPrintable(QStringLiteral("onset %1 s").arg(st.onsetS)));
+        // A trace cut back (a restore to before the fault): the monitor starts again with it.
+        std::vector<training::LiveSample> before(faulty.trace().begin(), faulty.trace().begin() + 600);
+        QVERIFY(watching.feed(before));
+        QVERIFY(!watching.state().alarmed);
+    }
+
     void snapshotRestoreContinuesExactly() {
         auto s = started(shortScenario());
         QCOMPARE(s.timeS(), 0.0);
