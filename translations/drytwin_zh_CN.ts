@@ -794,26 +794,26 @@
 <context>
     <name>TrainingRunner</name>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="31"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="36"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="33"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="38"/>
         <source>Start</source>
         <translation>开始</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="45"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="51"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="47"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="53"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="61"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="93"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="63"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="95"/>
         <source>Start a session first.</source>
         <translation>请先开始一个会话。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="92"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="98"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="94"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="100"/>
         <source>Save session</source>
         <translation>保存会话</translation>
     </message>
@@ -2324,170 +2324,175 @@
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="259"/>
+        <location filename="../widgets/MainWindow.cpp" line="262"/>
+        <source>The line&apos;s commissioning runs are in %1: choose them under &quot;Compare with a reference period&quot; to ask what changed since commissioning.</source>
+        <translation>产线的调试运行数据位于 %1：在“与参考期比较”中选择它们，即可查看自调试以来发生了什么变化。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/MainWindow.cpp" line="270"/>
         <source>Opening the recording beside %1; the data-set list at the top right switches back.</source>
         <translation>正在 %1 之外另行打开该记录；用右上角的数据集列表可切换回去。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="292"/>
+        <location filename="../widgets/MainWindow.cpp" line="303"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="293"/>
+        <location filename="../widgets/MainWindow.cpp" line="304"/>
         <source>&amp;Open batch file…</source>
         <translation>打开批次文件(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="294"/>
+        <location filename="../widgets/MainWindow.cpp" line="305"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="294"/>
+        <location filename="../widgets/MainWindow.cpp" line="305"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="300"/>
+        <location filename="../widgets/MainWindow.cpp" line="311"/>
         <source>Open data set &amp;folder…</source>
         <translation>打开数据集文件夹(&amp;F)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="301"/>
+        <location filename="../widgets/MainWindow.cpp" line="312"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="306"/>
+        <location filename="../widgets/MainWindow.cpp" line="317"/>
         <source>Open the bundled &amp;demo</source>
         <translation>打开自带演示数据(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="307"/>
+        <location filename="../widgets/MainWindow.cpp" line="318"/>
         <source>&amp;Generate virtual-plant data…</source>
         <translation>生成虚拟装置数据(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="308"/>
+        <location filename="../widgets/MainWindow.cpp" line="319"/>
         <source>Folder for the virtual plant&apos;s batches</source>
         <translation>虚拟装置批次的文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="317"/>
+        <location filename="../widgets/MainWindow.cpp" line="328"/>
         <source>Open &amp;model…</source>
         <translation>打开模型(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="318"/>
+        <location filename="../widgets/MainWindow.cpp" line="329"/>
         <source>Open model</source>
         <translation>打开模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="318"/>
-        <location filename="../widgets/MainWindow.cpp" line="325"/>
+        <location filename="../widgets/MainWindow.cpp" line="329"/>
+        <location filename="../widgets/MainWindow.cpp" line="336"/>
         <source>Model files (*.json)</source>
         <translation>模型文件 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="323"/>
+        <location filename="../widgets/MainWindow.cpp" line="334"/>
         <source>Save model &amp;as…</source>
         <translation>模型另存为(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="325"/>
+        <location filename="../widgets/MainWindow.cpp" line="336"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="331"/>
+        <location filename="../widgets/MainWindow.cpp" line="342"/>
         <source>Open &amp;project…</source>
         <translation>打开项目(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="332"/>
-        <location filename="../widgets/MainWindow.cpp" line="335"/>
-        <location filename="../widgets/MainWindow.cpp" line="739"/>
+        <location filename="../widgets/MainWindow.cpp" line="343"/>
+        <location filename="../widgets/MainWindow.cpp" line="346"/>
+        <location filename="../widgets/MainWindow.cpp" line="750"/>
         <source>Open project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="332"/>
-        <location filename="../widgets/MainWindow.cpp" line="342"/>
-        <location filename="../widgets/MainWindow.cpp" line="352"/>
+        <location filename="../widgets/MainWindow.cpp" line="343"/>
+        <location filename="../widgets/MainWindow.cpp" line="353"/>
+        <location filename="../widgets/MainWindow.cpp" line="363"/>
         <source>DryTwin projects (*.drytwin)</source>
         <translation>DryTwin 项目 (*.drytwin)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="338"/>
+        <location filename="../widgets/MainWindow.cpp" line="349"/>
         <source>&amp;Save project</source>
         <translation>保存项目(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="341"/>
-        <location filename="../widgets/MainWindow.cpp" line="346"/>
-        <location filename="../widgets/MainWindow.cpp" line="351"/>
-        <location filename="../widgets/MainWindow.cpp" line="355"/>
+        <location filename="../widgets/MainWindow.cpp" line="352"/>
+        <location filename="../widgets/MainWindow.cpp" line="357"/>
+        <location filename="../widgets/MainWindow.cpp" line="362"/>
+        <location filename="../widgets/MainWindow.cpp" line="366"/>
         <source>Save project</source>
         <translation>保存项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="350"/>
+        <location filename="../widgets/MainWindow.cpp" line="361"/>
         <source>Save project as…</source>
         <translation>项目另存为…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="358"/>
+        <location filename="../widgets/MainWindow.cpp" line="369"/>
         <source>Recent projects</source>
         <translation>最近的项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="361"/>
+        <location filename="../widgets/MainWindow.cpp" line="372"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="364"/>
+        <location filename="../widgets/MainWindow.cpp" line="375"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="365"/>
+        <location filename="../widgets/MainWindow.cpp" line="376"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="383"/>
+        <location filename="../widgets/MainWindow.cpp" line="394"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="488"/>
+        <location filename="../widgets/MainWindow.cpp" line="499"/>
         <source>Ready.</source>
         <translation>就绪。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="517"/>
+        <location filename="../widgets/MainWindow.cpp" line="528"/>
         <source>Project saved to %1 (model, results and view)</source>
         <translation>项目已保存到 %1（模型、结果和视图）</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="575"/>
+        <location filename="../widgets/MainWindow.cpp" line="586"/>
         <source>Saving the project to %1…</source>
         <translation>正在保存项目到 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="623"/>
+        <location filename="../widgets/MainWindow.cpp" line="634"/>
         <source>The project&apos;s results could not be read (%1); it opens without them.</source>
         <translation>无法读取项目的结果（%1）；项目将不带结果打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="676"/>
+        <location filename="../widgets/MainWindow.cpp" line="687"/>
         <source>Wait until the running job has finished (or cancel it), then switch the language.</source>
         <translation>请等待当前任务完成（或取消它），然后再切换语言。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="709"/>
+        <location filename="../widgets/MainWindow.cpp" line="720"/>
         <source>The training session under way was saved in %1 when the language changed: the instructor window&apos;s Session file ▸ Open session… continues it.</source>
         <translation>切换语言时，进行中的培训会话已保存到 %1：在教员窗口的 会话文件 ▸ 打开会话… 可继续。</translation>
     </message>
@@ -2496,109 +2501,109 @@
         <translation>语言将在 DryTwin 重新启动后生效。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="387"/>
+        <location filename="../widgets/MainWindow.cpp" line="398"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="388"/>
+        <location filename="../widgets/MainWindow.cpp" line="399"/>
         <source>&amp;User guide</source>
         <translation>用户指南(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="391"/>
+        <location filename="../widgets/MainWindow.cpp" line="402"/>
         <source>&amp;About DryTwin</source>
         <translation>关于 DryTwin(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="392"/>
+        <location filename="../widgets/MainWindow.cpp" line="403"/>
         <source>About DryTwin</source>
         <translation>关于 DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="393"/>
+        <location filename="../widgets/MainWindow.cpp" line="404"/>
         <source>About &amp;Qt</source>
         <translation>关于 Qt(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="412"/>
+        <location filename="../widgets/MainWindow.cpp" line="423"/>
         <source>DryTwin user guide</source>
         <translation>DryTwin 用户指南</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="422"/>
+        <location filename="../widgets/MainWindow.cpp" line="433"/>
         <source>No data loaded. File ▸ Open data set folder… (or File ▸ Open the bundled demo)</source>
         <translation>未加载数据。文件 ▸ 打开数据集文件夹…（或 文件 ▸ 打开自带演示数据）</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="428"/>
+        <location filename="../widgets/MainWindow.cpp" line="439"/>
         <source>Loading</source>
         <translation>正在加载</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="429"/>
+        <location filename="../widgets/MainWindow.cpp" line="440"/>
         <source>Simulating</source>
         <translation>正在模拟</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="430"/>
+        <location filename="../widgets/MainWindow.cpp" line="441"/>
         <source>Calibrating</source>
         <translation>正在标定</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="431"/>
+        <location filename="../widgets/MainWindow.cpp" line="442"/>
         <source>Learning the correction models</source>
         <translation>正在学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="432"/>
+        <location filename="../widgets/MainWindow.cpp" line="443"/>
         <source>Training the LSTM</source>
         <translation>正在训练 LSTM</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="433"/>
+        <location filename="../widgets/MainWindow.cpp" line="444"/>
         <source>Scoring on the held-out part</source>
         <translation>正在留出部分上评分</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="434"/>
+        <location filename="../widgets/MainWindow.cpp" line="445"/>
         <source>Discovering</source>
         <translation>正在发现</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="435"/>
+        <location filename="../widgets/MainWindow.cpp" line="446"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="436"/>
+        <location filename="../widgets/MainWindow.cpp" line="447"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="437"/>
+        <location filename="../widgets/MainWindow.cpp" line="448"/>
         <source>Generating plant data</source>
         <translation>正在生成工厂数据</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="438"/>
+        <location filename="../widgets/MainWindow.cpp" line="449"/>
         <source>Training session</source>
         <translation>培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="444"/>
+        <location filename="../widgets/MainWindow.cpp" line="455"/>
         <source>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;Digital-twin workbench for pneumatic drying lines, implementing the PGRL-CC method.&lt;/p&gt;&lt;table&gt;</source>
         <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="473"/>
+        <location filename="../widgets/MainWindow.cpp" line="484"/>
         <source>Writing the bundled demo (10 batches of the virtual plant) to %1…</source>
         <translation>正在把自带演示数据（虚拟工厂的 10 个批次）写入 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="512"/>
-        <location filename="../widgets/MainWindow.cpp" line="559"/>
-        <location filename="../widgets/MainWindow.cpp" line="566"/>
+        <location filename="../widgets/MainWindow.cpp" line="523"/>
+        <location filename="../widgets/MainWindow.cpp" line="570"/>
+        <location filename="../widgets/MainWindow.cpp" line="577"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -2607,12 +2612,12 @@
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="583"/>
+        <location filename="../widgets/MainWindow.cpp" line="594"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="592"/>
+        <location filename="../widgets/MainWindow.cpp" line="603"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
@@ -3593,7 +3598,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="156"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="578"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="596"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
@@ -3604,7 +3609,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="163"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="563"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="581"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
@@ -3625,7 +3630,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="179"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="562"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="580"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
@@ -3702,7 +3707,7 @@ extrapolation</source>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="209"/>
         <location filename="../widgets/training/TrainingPanel.cpp" line="248"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="334"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="347"/>
         <source>Instructor</source>
         <translation>教员</translation>
     </message>
@@ -3747,119 +3752,169 @@ extrapolation</source>
         <translation>开始会话：产线在其 PI 回路下实时运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="275"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="290"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="265"/>
+        <source>Two detectors commissioned on healthy runs of this line: the physics model&apos;s error, and a dynamic PCA monitor of the screens&apos; signals. Each alarms when the line leaves its normal (1 % chance of a false alarm over the session)</source>
+        <translation>两个检测器在本产线的健康运行数据上调试：物理模型误差，以及画面信号的动态 PCA 监控。产线偏离正常状态时各自报警（整个会话的误报概率为 1 %）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="283"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="298"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="276"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="284"/>
         <source>T_hot [°C]</source>
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="277"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="285"/>
         <source>Feed [t/h]</source>
         <translation>进料 [t/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="278"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="286"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="279"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="291"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="287"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="299"/>
         <source>session time [min]</source>
         <translation>会话时间 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="281"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="289"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="283"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="291"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="284"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="294"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="292"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="302"/>
         <source>X_out measured</source>
         <translation>X_out 测量值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="287"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="295"/>
         <source>DryTwin — instructor</source>
         <translation>DryTwin — 教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="296"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="304"/>
         <source>X_out true</source>
         <translation>X_out 真实值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="406"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="313"/>
+        <source>Monitor T² [-]</source>
+        <translation>监控 T² [-]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="315"/>
+        <source>99 % limit</source>
+        <translation>99 % 限值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="317"/>
+        <source>T² of the model&apos;s error</source>
+        <translation>模型误差的 T²</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="419"/>
         <source>Save the session as a folder</source>
         <translation>把会话保存为文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="409"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="422"/>
         <source>Session folder (*)</source>
         <translation>会话文件夹 (*)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="639"/>
+        <source>Line monitor unavailable: %1</source>
+        <translation>产线监控不可用：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="641"/>
+        <source>Line monitor: normal (as on its commissioning runs).</source>
+        <translation>产线监控：正常（与调试运行一致）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="646"/>
+        <source>the model&apos;s error</source>
+        <translation>模型误差</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="646"/>
+        <source>the screens&apos; signals (PCA)</source>
+        <translation>画面信号（PCA）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="648"/>
+        <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal; the change began at about %3. Diagnose the recording to name the cause.</source>
+        <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态；变化约始于 %3。请诊断记录以确定原因。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="651"/>
+        <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal. Diagnose the recording to name the cause.</source>
+        <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态。请诊断记录以确定原因。</translation>
     </message>
     <message>
         <source>X_out true (instructor)</source>
         <translation>X_out 真实值（教员）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="301"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="309"/>
         <source>T_hot setpoint</source>
         <translation>T_hot 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="302"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="310"/>
         <source>T_hot</source>
         <translation>T_hot</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="303"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="311"/>
         <source>feed</source>
         <translation>进料</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="304"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
         <source>X_in</source>
         <translation>X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="309"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="322"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="310"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="323"/>
         <source>Stops the replay or the run ahead; the line stays where it got to</source>
         <translation>停止回放或快进；产线停留在已运行到的位置</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="325"/>
         <source>Scenario</source>
         <translation>工况</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="334"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="347"/>
         <source>Instructor password:</source>
         <translation>教员密码：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="337"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="350"/>
         <source>Wrong password: the instructor window stays closed.</source>
         <translation>密码错误：教员窗口保持关闭。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="394"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="407"/>
         <source>Select a snapshot to restore.</source>
         <translation>请选择要恢复的快照。</translation>
     </message>
@@ -3868,127 +3923,132 @@ extrapolation</source>
         <translation>将会话保存到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="415"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="428"/>
         <source>Open a training session</source>
         <translation>打开培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="415"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="428"/>
         <source>Sessions (*.json)</source>
         <translation>会话 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="424"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="437"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="431"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="446"/>
         <source>Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录以供诊断：%1。请在其上运行“发现”，然后在此给出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="435"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="448"/>
+        <source>Recording opened for diagnosis: %1; the line&apos;s commissioning runs are in %2. Run Discover on it, then name the cause here.</source>
+        <translation>已打开记录用于诊断：%1；产线的调试运行数据位于 %2。对其运行“发现”，然后在此处指出原因。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="453"/>
         <source>Session saved: %1</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="468"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="486"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="472"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="490"/>
         <source>The previous session was saved in %1.</source>
         <translation>上一个会话已保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="485"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="503"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="508"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="526"/>
         <source>%1 (stale: retrain)</source>
         <translation>%1（过期：需重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="509"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="527"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="557"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="575"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="559"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="577"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="559"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="577"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="559"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="577"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="561"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="579"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="562"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="580"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="563"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="581"/>
         <source>Continue</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="573"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="591"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="574"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="592"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="578"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="596"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="585"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="603"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="613"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="613"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="598"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="616"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="609"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="627"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>
@@ -3996,42 +4056,42 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::TrainingRunner</name>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="263"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="298"/>
         <source>Setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="269"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="304"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="277"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="312"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="285"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="320"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="294"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="329"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="303"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="338"/>
         <source>Snapshot</source>
         <translation>快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="309"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="344"/>
         <source>Restore</source>
         <translation>恢复</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="315"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="350"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>

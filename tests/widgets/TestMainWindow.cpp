@@ -614,8 +614,11 @@ private Q_SLOTS:
         w.calibrationPanel()->run();
         QVERIFY(waitIdle(w, 120000));
         QCOMPARE(w.calibrationPanel()->estimates()->rowCount(), 3);
-        Q_EMIT w.trainingPanel()->recordingReady(m_data + "/B01.csv");
+        // A reference chosen for the loaded data belongs to another line: the recording is judged alone.
+        w.workbench().setReferencePath(m_data);
+        Q_EMIT w.trainingPanel()->recordingReady(m_data + "/B01.csv", QString());
         QVERIFY(waitIdle(w));
+        QVERIFY(w.workbench().referencePath().isEmpty());
         QCOMPARE(w.dataSetChooser()->count(), 2);
         QCOMPARE(w.workbench().currentDataSet(), 1);
         QCOMPARE(w.dataSetChooser()->currentIndex(), 1);

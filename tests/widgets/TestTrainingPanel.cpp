@@ -109,6 +109,12 @@ private Q_SLOTS:
         QVERIFY(runner.trace().back().hotAirSetpointC >
                 runner.trace().at(static_cast<std::size_t>(frozenAt)).hotAirSetpointC + 2);
 
+        // The line's monitor (commissioned on healthy runs of this scenario) has left "normal".
+        QVERIFY2(runner.frame().monitor.ready, qPrintable(runner.frame().monitorNote));
+        QVERIFY2(panel->monitorLabel()->text().contains("ALARM"), qPrintable(panel->monitorLabel()->text()));
+        QVERIFY(runner.frame().monitor.drytwin.alarmed);
+        QVERIFY(runner.frame().monitor.drytwin.alarmAtS > frozenAt - 60);
+
         // The trainee diagnoses the recording on the Discover tab and names what it found.
         panel->setInstructorView(false);
         QTest::mouseClick(panel->diagnoseButton(), Qt::LeftButton);
@@ -121,7 +127,16 @@ private Q_SLOTS:
         window.workbench().discover();
         QVERIFY(discovered.wait(120000));
         const auto& found = window.workbench().latest().discover->discovery.findings;
-        QVERIFY(!found.empty());
+        QString why;
+        for (const auto& rd : window.workbench().latest().discover->discovery.rounds) {
+            for (const auto& x : rd.rejected) {
+                why += QString::fromStdString(x.cause + ": " + x.code + ": " + x.reason + "\n");
+            }
+        }
+        for (const auto& c : window.workbench().latest().discover->discovery.ranking) {
+            why += QString::fromStdString(c.cause) + QStringLiteral(" p %1 est %2\n").arg(c.pValue).arg(c.linearEstimate);
+        }
+        QVERIFY2(!found.empty(), qPrintable(why));
         QCOMPARE(found.front().cause, std::string("heat_transfer_fouling"));
         window.tabs()->setCurrentWidget(panel);
         panel->cause()->setCurrentIndex(

@@ -258,11 +258,19 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
 
     m_note = new QLabel(tr("Start a session: the line runs live under its PI loop."));
     m_note->setWordWrap(true);
+    m_monitorLabel = new QLabel;
+    m_monitorLabel->setWordWrap(true);
+    m_monitorLabel->setTextFormat(Qt::RichText);
+    m_monitorLabel->setToolTip(
+        tr("Two detectors commissioned on healthy runs of this line: the physics model's error, and a dynamic "
+           "PCA monitor of the screens' signals. Each alarms when the line leaves its normal (1 % chance of a "
+           "false alarm over the session)"));
 
     auto* side = new QWidget;
     auto* sl = new QVBoxLayout(side);
     sl->addWidget(operatorBox);
     sl->addWidget(traineeBox);
+    sl->addWidget(m_monitorLabel);
     sl->addWidget(m_note);
     sl->addStretch(1);
     auto* scroll = new QScrollArea;
@@ -302,6 +310,11 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_hot = m_plots->addCurve(1, tr("T_hot"), none, none, seriesColour(2));
     m_feed = m_plots->addCurve(2, tr("feed"), none, none, seriesColour(5));
     m_xIn = m_plots->addCurve(3, tr("X_in"), none, none, seriesColour(3));
+    m_plots->addPlot(tr("Monitor T² [-]"));
+    m_plots->setLogScale(4, false, true);
+    m_monitorLimit = m_plots->addCurve(4, tr("99 % limit"), none, none, Qt::black, Qt::DashLine, 1.0);
+    m_monitorT2 =
+        m_plots->addCurve(4, tr("T² of the model's error"), none, none, QColor(214, 39, 40), Qt::SolidLine, 1.3);
 
     m_progress = new QProgressBar;
     m_progress->setRange(0, 100);
@@ -424,13 +437,18 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
         m_note->setText(tr("%1: %2").arg(action, message));
     });
     connect(
-        m_runner, &TrainingRunner::saved, this, [this](const QString& sessionFile, const QStringList& csv) {
+        m_runner, &TrainingRunner::saved, this,
+        [this](const QString& sessionFile, const QStringList& csv, const QString& referenceFolder) {
             if (m_diagnosePending && sessionFile.startsWith(m_diagnoseFolder)) {
                 m_diagnosePending = false;
                 m_note->setText(
-                    tr("Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.")
-                        .arg(QDir::toNativeSeparators(csv.value(0))));
-                Q_EMIT recordingReady(csv.value(0));
+                    referenceFolder.isEmpty()
+                        ? tr("Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.")
+                              .arg(QDir::toNativeSeparators(csv.value(0)))
+                        : tr("Recording opened for diagnosis: %1; the line's commissioning runs are in %2. Run "
+                             "Discover on it, then name the cause here.")
+                              .arg(QDir::toNativeSeparators(csv.value(0)), QDir::toNativeSeparators(referenceFolder)));
+                Q_EMIT recordingReady(csv.value(0), referenceFolder);
             } else {
                 m_note->setText(tr("Session saved: %1").arg(QDir::toNativeSeparators(sessionFile)));
             }
@@ -615,6 +633,25 @@ void TrainingPanel::showFrame() {
             .arg(f.score.wrongAnswers)
             .arg(f.score.offSpecPct, 0, 'f', 1)
             .arg(f.score.offSpecKg, 0, 'f', 0));
+    const auto& m = f.monitor;
+    if (!m.ready) {
+        m_monitorLabel->setText(f.monitorNote.isEmpty() ? QString()
+                                                        : tr("Line monitor unavailable: %1").arg(f.monitorNote));
+    } else if (!m.alarmed()) {
+        m_monitorLabel->setText(tr("Line monitor: normal (as on its commissioning runs)."));
+    } else {
+        // The earlier of the two detectors' alarms, and who raised it.
+        const bool ours = m.drytwin.alarmed && (!m.pca.alarmed || m.drytwin.alarmAtS <= m.pca.alarmAtS);
+        const auto& d = ours ? m.drytwin : m.pca;
+        const QString who = ours ? tr("the model's error") : tr("the screens' signals (PCA)");
+        m_monitorLabel->setText(
+            d.hasOnset ? tr("<b>Line monitor: ALARM</b> at %1 (%2) — the line has left its normal; the change "
+                            "began at about %3. Diagnose the recording to name the cause.")
+                             .arg(clockText(d.alarmAtS), who, clockText(d.onsetS))
+                       : tr("<b>Line monitor: ALARM</b> at %1 (%2) — the line has left its normal. Diagnose the "
+                            "recording to name the cause.")
+                             .arg(clockText(d.alarmAtS), who));
+    }
     redrawPlots();
 }
 
@@ -649,6 +686,18 @@ void TrainingPanel::redrawPlots() {
     m_hot->setSamples(t, h);
     m_feed->setSamples(t, feed);
     m_xIn->setSamples(t, xin);
+    // DryTwin's detector: the model's error, its T² per minute against its 99 % limit.
+    const auto& d = f.monitor.drytwin;
+    QVector<double> mt, mt2, limit;
+    for (std::size_t i = 0; i < d.timeS.size(); ++i) {
+        if (d.timeS[i] >= from && std::isfinite(d.t2[i])) {
+            mt << d.timeS[i] / 60.0;
+            mt2 << d.t2[i];
+            limit << d.t2Limit;
+        }
+    }
+    m_monitorT2->setSamples(mt, mt2);
+    m_monitorLimit->setSamples(mt, limit);
     m_plots->rescale();
     m_plots->setXRange(std::max(0.0, from) / 60.0, std::max(kWindowS, f.timeS) / 60.0);
     if (m_instructorWindow->isVisible()) {

@@ -61,6 +61,8 @@ public:
     QLabel* scoreLabel() const { return m_score; }
     QLabel* clockLabel() const { return m_clock; }
     QLabel* noteLabel() const { return m_note; }
+    /// @brief The live line's monitor in words: normal, or the alarm with its time and onset.
+    QLabel* monitorLabel() const { return m_monitorLabel; }
     /// @brief The trainee's pause (the clock stops; the same button continues).
     QPushButton* pauseButton() const { return m_pause; }
     /// @brief The instructor's own window (faults, score, the true moisture).
@@ -81,7 +83,9 @@ public:
 
 Q_SIGNALS:
     /// @brief The trainee asked to diagnose: the recording is saved as a batch file at @p csv.
-    void recordingReady(const QString& csv);
+    /// @p referenceFolder: the line's commissioning runs, the reference period to compare with
+    /// (empty: none; the recording is then judged alone).
+    void recordingReady(const QString& csv, const QString& referenceFolder);
 
 private:
     void startSession();
@@ -125,6 +129,9 @@ private:
     QTableWidget* m_faults = nullptr;
     QLabel* m_score = nullptr;
     QLabel* m_note = nullptr;
+    QLabel* m_monitorLabel = nullptr;
+    QwtPlotCurve* m_monitorT2 = nullptr;
+    QwtPlotCurve* m_monitorLimit = nullptr;
     QProgressBar* m_progress = nullptr;
     QPushButton* m_stop = nullptr;
     PlotStack* m_plots = nullptr;

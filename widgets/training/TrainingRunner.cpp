@@ -1,9 +1,11 @@
 #include "training/TrainingRunner.h"
 
 #include "common/ErrorText.h"
+#include "data/BatchWriter.h"
 #include "training/TrainingScript.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QElapsedTimer>
 #include <QTimer>
 #include <algorithm>
@@ -102,7 +104,21 @@ public:
         for (const auto& f : r->recordingFiles) {
             files << QString::fromStdString(f);
         }
-        Q_EMIT saved(QString::fromStdString(r->sessionFile), files);
+        // The commissioning runs beside it: the period when this line ran as it should, which a
+        // diagnosis of the recording compares with.
+        QString referenceFolder;
+        if (m_monitor) {
+            const QString dir = QDir(folder).filePath(QStringLiteral("commissioning"));
+            QDir().mkpath(dir);
+            bool ok = true;
+            for (const auto& run : m_monitor->commissioningRuns()) {
+                ok = ok && data::writeBatchFile(run, QDir(dir).filePath(QString::fromStdString(run.id) +
+                                                                        QStringLiteral(".csv"))
+                                                         .toStdString());
+            }
+            referenceFolder = ok ? dir : QString();
+        }
+        Q_EMIT saved(QString::fromStdString(r->sessionFile), files, referenceFolder);
     }
 
     void stop() {
@@ -114,10 +130,18 @@ Q_SIGNALS:
     void progress(double fraction);
     void frame(const drytwin::widgets::TrainingFrame& frame);
     void failed(const QString& action, const QString& message);
-    void saved(const QString& sessionFile, const QStringList& recordingFiles);
+    void saved(const QString& sessionFile, const QStringList& recordingFiles, const QString& referenceFolder);
 
 private:
     void adopt(training::TrainingSession session, const std::string& scenarioJson) {
+        // The line's monitor, commissioned on healthy runs of the same scenario (a second or two).
+        m_monitor.reset();
+        m_monitorNote.clear();
+        if (auto monitor = training::LineMonitor::commission(session.scenario()); monitor) {
+            m_monitor.emplace(std::move(*monitor));
+        } else {
+            m_monitorNote = errorText(monitor.error());
+        }
         m_session.emplace(std::move(session));
         m_scenarioJson = scenarioJson;
         m_sent = 0;
@@ -186,12 +210,23 @@ private:
             f.faults = s.faults();
             f.answers = s.answers();
             f.score = s.score();
+            if (m_monitor) {
+                if (auto st = m_monitor->feed(s); !st) {
+                    m_monitorNote = errorText(st.error());
+                    m_monitor.reset();
+                } else {
+                    f.monitor = m_monitor->state();
+                }
+            }
+            f.monitorNote = m_monitorNote;
         }
         Q_EMIT frame(f);
     }
 
     std::atomic<bool>& m_cancel;
     std::optional<training::TrainingSession> m_session;
+    std::optional<training::LineMonitor> m_monitor;
+    QString m_monitorNote;
     std::string m_scenarioJson;
     QTimer* m_tick = nullptr;
     QElapsedTimer m_clock;

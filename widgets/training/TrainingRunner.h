@@ -1,6 +1,7 @@
 #pragma once
 
 #include "hybrid/HybridModel.h"
+#include "training/LineMonitor.h"
 #include "training/TrainingSession.h"
 
 #include <QMetaType>
@@ -34,6 +35,10 @@ struct TrainingFrame {
     std::vector<training::InjectedFault> faults;
     std::vector<training::TraineeAnswer> answers;
     training::TrainingScore score;
+    /// The live line watched against its commissioning runs (issue #41); not ready when it could
+    /// not be commissioned (monitorNote says why).
+    training::LineMonitorState monitor;
+    QString monitorNote;
 };
 
 namespace detail {
@@ -87,7 +92,9 @@ Q_SIGNALS:
     void progress(double fraction);
     /// @brief A command failed; @p message is worded for the user.
     void failed(const QString& action, const QString& message);
-    void saved(const QString& sessionFile, const QStringList& recordingFiles);
+    /// @p referenceFolder: the line's commissioning runs as batch files beside the recording (the
+    /// reference period of a diagnosis), empty when the monitor could not be commissioned.
+    void saved(const QString& sessionFile, const QStringList& recordingFiles, const QString& referenceFolder);
 
 private:
     void post(std::function<void(detail::TrainingWorker&)> command);

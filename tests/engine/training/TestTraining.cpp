@@ -75,32 +75,40 @@ private Q_SLOTS:
         auto monitor = training::LineMonitor::commission(s, 3);
         QVERIFY2(monitor, monitor ? "" : monitor.error().message().c_str());
         QCOMPARE(monitor->commissioningRuns().size(), std::size_t(3));
+        QVERIFY(monitor->parameters()[properties::Param::h_HDT] > 0);
 
         auto healthy = started(s);
-        healthy.advance(2400);
         auto quiet = *monitor;
-        QVERIFY(quiet.feed(healthy.trace()));
+        for (int minute = 0; minute < 40; ++minute) { // fed as the GUI feeds it, a piece at a time
+            healthy.advance(60);
+            QVERIFY(quiet.feed(healthy));
+        }
         QVERIFY(quiet.state().ready);
-        QVERIFY2(!quiet.state().alarmed, qPrintable(QStringLiteral("alarm at %1 s").arg(quiet.state().alarmAtS)));
-        QVERIFY(quiet.state().timeS.size() >= 35); // a point a minute
+        QVERIFY2(!quiet.state().alarmed(),
+                 qPrintable(QStringLiteral("alarm at %1 s (DryTwin) / %2 s (PCA)")
+                                .arg(quiet.state().drytwin.alarmAtS)
+                                .arg(quiet.state().pca.alarmAtS)));
+        QVERIFY(quiet.state().drytwin.timeS.size() >= 35); // a point a minute
+        QVERIFY(quiet.state().pca.timeS.size() >= 35);
 
         auto faulty = started(s);
         QVERIFY(faulty.injectFault(Mechanism::MoistureMeterOffset, 0.8, 900));
         auto watching = *monitor;
-        for (int minute = 0; minute < 40; ++minute) { // fed as the GUI feeds it, a piece at a time
+        for (int minute = 0; minute < 40; ++minute) {
             faulty.advance(60);
-            const auto fed = watching.feed(faulty.trace());
+            const auto fed = watching.feed(faulty);
             QVERIFY2(fed, fed ? "" : fed.error().message().c_str());
         }
-        const auto& st = watching.state();
-        QVERIFY2(st.alarmed, "no alarm after the meter's offset");
+        const auto& st = watching.state().drytwin;
+        QVERIFY2(st.alarmed, "DryTwin's detector: no alarm after the meter's offset");
         QVERIFY2(st.alarmAtS > 900, qPrintable(QStringLiteral("alarm at %1 s, before the onset").arg(st.alarmAtS)));
         QVERIFY(st.hasOnset);
         QVERIFY2(std::abs(st.onsetS - 900) <= 300, qPrintable(QStringLiteral("onset %1 s").arg(st.onsetS)));
-        // A trace cut back (a restore to before the fault): the monitor starts again with it.
-        std::vector<training::LiveSample> before(faulty.trace().begin(), faulty.trace().begin() + 600);
-        QVERIFY(watching.feed(before));
-        QVERIFY(!watching.state().alarmed);
+        // A line sent back to before the fault (as a restore does): the monitors start again with it.
+        auto again = started(s);
+        again.advance(600);
+        QVERIFY(watching.feed(again));
+        QVERIFY(!watching.state().alarmed());
     }
 
     void snapshotRestoreContinuesExactly() {
