@@ -90,6 +90,11 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     auto* demo = generate->add_flag("--demo", o.demo, "the bundled demo mix of mechanisms and drift");
     generate->add_option("--effect", o.effects, "NAME[=STRENGTH] of a CONTRACT.md §4 mechanism; repeatable")
         ->excludes(demo);
+    generate
+        ->add_option("--onset", o.onsets,
+                     "NAME=SECONDS: the mechanism acts from this time into each batch (a meter window that "
+                     "fogs up, a gauge knocked mid-batch); repeatable")
+        ->excludes(demo);
     generate->add_option("--truth", o.truthPath, "write the hidden truth (parameters, effects) here");
     generate
         ->add_option("--periodic", o.periodic,

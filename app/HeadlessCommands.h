@@ -48,6 +48,7 @@ struct CommandOptions {
     double minExplained = discovery::DiscoveryOptions{}.minExplainedFraction; ///< discover
     double fastWindowS = discovery::DiscoveryOptions{}.fastBandWindowS;       ///< discover
     std::vector<std::string> effects;
+    std::vector<std::string> onsets; ///< generate: NAME=SECONDS, when a mechanism starts in each batch
     std::vector<std::string> freeParameters;
     std::vector<std::string> bounds;
     int maxEvaluations = 2000;

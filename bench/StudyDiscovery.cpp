@@ -84,7 +84,7 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
         r = discovery::discoverChange(plant::toSiBatches(*ref, healthy.seed), plant::toSiBatches(*p, o.seed),
                                       hybrid::HybridModel{}, asked);
         if (r) {
-            out.drytwinFlags = r->detection.drytwin.changed;
+            out.drytwinFlags = r->detection.drytwinChanged;
             out.pcaFlags = r->detection.pca.changed;
         }
     } else {

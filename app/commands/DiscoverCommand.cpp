@@ -27,7 +27,8 @@ void printDetection(const discovery::DiscoveryResult& d) {
     const auto& det = d.detection;
     std::printf("Against the reference period %s (%zu batch(es), %zu rows; the model commissioned there):\n",
                 d.referencePath.c_str(), d.referenceBatches, d.referenceRows);
-    std::printf("  %s (each detector's false-alarm rate %.3g per data set)\n",
+    std::printf("  %s (each detector's false-alarm rate %.3g per data set; DryTwin's split between its monitor "
+                "and its causes' test)\n",
                 det.changed ? "CHANGED" : "no change detected", det.falseAlarmRate);
     const auto line = [](const char* name, const monitoring::Detection& m) {
         std::printf("  %-38s %s, p %.3g (%s)", name, m.changed ? "flags a change" : "no change", m.pValue,
@@ -50,7 +51,10 @@ void printDetection(const discovery::DiscoveryResult& d) {
             std::printf("\n");
         }
     };
-    line("DryTwin (the model's errors):", det.drytwin);
+    line("DryTwin, monitor of the model's errors:", det.drytwin);
+    std::printf("  %-38s %s, p %.3g (Bonferroni; smallest: %s)\n", "DryTwin, the causes' parameters:",
+                det.causeTest.changed ? "one moved beyond its normal spread" : "none moved", det.causeTest.pValue,
+                det.causeTest.cause.empty() ? "-" : det.causeTest.cause.c_str());
     line("dynamic PCA (the measured columns):", det.pca);
     std::printf("\n");
 }

@@ -75,6 +75,26 @@ int runGenerate(const CommandOptions& o) {
         }
         go.plant.effects[*m] = strength;
     }
+    for (const auto& e : o.onsets) {
+        const auto eq = e.find('=');
+        const auto m = plant::mechanismByName(e.substr(0, eq));
+        if (!m || eq == std::string::npos) {
+            return fail(Error{ErrorKind::Usage, "--onset " + e, "expected NAME=SECONDS with a mechanism's name"});
+        }
+        try {
+            std::size_t used = 0;
+            const double s = std::stod(e.substr(eq + 1), &used);
+            if (used != e.size() - eq - 1 || !(s >= 0)) {
+                throw std::invalid_argument("not a time");
+            }
+            go.plant.effectOnsetS[*m] = s;
+        } catch (const std::exception&) {
+            return fail(Error{ErrorKind::Usage, "--onset " + e, "the onset is not a time in seconds >= 0"});
+        }
+        if (!go.plant.effects.count(*m)) {
+            return fail(Error{ErrorKind::Usage, "--onset " + e, "give the mechanism with --effect too"});
+        }
+    }
     auto result = workflow::Session().generate(go, o.progress);
     if (!result) {
         return fail(result.error());

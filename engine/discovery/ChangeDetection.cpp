@@ -129,8 +129,11 @@ Expected<ChangeDetection> detectChange(const std::vector<data::SiBatch>& referen
     mo.falseAlarmRate = options.falseAlarmRate;
     ChangeDetection out;
     out.falseAlarmRate = options.falseAlarmRate;
+    // DryTwin's monitor shares its detector's rate with the causes' change tests (Bonferroni).
+    monitoring::MonitorOptions half = mo;
+    half.falseAlarmRate = options.falseAlarmRate / 2;
     auto drytwin =
-        judgeWith(referenceForModel, refSims, batchesForModel, sims, channels, true, mo, out.drytwinColumns);
+        judgeWith(referenceForModel, refSims, batchesForModel, sims, channels, true, half, out.drytwinColumns);
     if (!drytwin) {
         return drytwin.error();
     }
@@ -140,12 +143,34 @@ Expected<ChangeDetection> detectChange(const std::vector<data::SiBatch>& referen
     }
     out.drytwin = std::move(*drytwin);
     out.pca = std::move(*pca);
-    out.changed = out.drytwin.changed || out.pca.changed;
-    out.decidedBy = out.drytwin.changed && out.pca.changed ? "both"
-                    : out.drytwin.changed                  ? "drytwin"
-                    : out.pca.changed                      ? "pca"
-                                                           : "";
+    decide(out);
     return out;
+}
+
+void decide(ChangeDetection& d) {
+    d.drytwinChanged = d.drytwin.changed || d.causeTest.changed;
+    d.changed = d.drytwinChanged || d.pca.changed;
+    d.decidedBy = d.drytwinChanged && d.pca.changed ? "both"
+                  : d.drytwinChanged                ? "drytwin"
+                  : d.pca.changed                   ? "pca"
+                                                    : "";
+}
+
+void testCauses(const std::vector<Candidate>& ranking, ChangeDetection& d) {
+    double best = 1;
+    for (const auto& c : ranking) {
+        const bool twoSided = properties::info(c.parameter).lower < 0;
+        // score holds the change z (scoreAgainstReference), also for a timing cause whose screen
+        // took its own score: the detector asks only whether the parameter moved.
+        const double p = twoSided ? 2 * upperTail(std::abs(c.score)) : upperTail(c.score);
+        if (p < best) {
+            best = p;
+            d.causeTest.cause = c.cause;
+        }
+    }
+    d.causeTest.pValue = std::min(1.0, best * static_cast<double>(std::max<std::size_t>(1, ranking.size())));
+    d.causeTest.changed = !ranking.empty() && d.causeTest.pValue <= d.falseAlarmRate / 2;
+    decide(d);
 }
 
 } // namespace drytwin::discovery::detail

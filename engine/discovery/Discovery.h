@@ -287,6 +287,17 @@ struct ChangeDetection {
     bool changed = false;       ///< either detector
     double falseAlarmRate = 0;  ///< per data set, per detector
     std::string decidedBy;      ///< "drytwin", "pca", "both" or ""
+    /// DryTwin's detector: its monitor of the model's error (drytwin) or its test of the causes'
+    /// parameters against their normal values (causeTest), each at half the rate (Bonferroni).
+    bool drytwinChanged = false;
+    /// The causes' change tests at the commissioned model: the smallest one-sided (two-sided for
+    /// an offset) p of a cause's one-step estimate against its normal value, Bonferroni over the
+    /// causes tested.
+    struct CauseTest {
+        bool changed = false;
+        double pValue = 1; ///< Bonferroni-adjusted
+        std::string cause; ///< the one with the smallest p
+    } causeTest;
     monitoring::Detection drytwin, pca;
     std::vector<std::string> drytwinColumns, pcaColumns;
 };

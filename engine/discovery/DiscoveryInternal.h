@@ -370,6 +370,12 @@ Expected<ChangeDetection> detectChange(const std::vector<data::SiBatch>& referen
                                        const std::vector<data::SiBatch>& batchesForModel,
                                        const std::vector<physics::SimulationResult>& sims,
                                        const DiscoveryOptions& options);
+/// DryTwin's second test (ChangeDetection.cpp): the first round's change tests of the causes
+/// (@p ranking, at the commissioned model), Bonferroni over them at half the false-alarm rate;
+/// then the decision of both detectors again.
+void testCauses(const std::vector<Candidate>& ranking, ChangeDetection& d);
+/// The detectors' decision from their parts: DryTwin's (monitor or causes), PCA's, either.
+void decide(ChangeDetection& d);
 /// The line's own structure learnt on a reference period (LineStructure.cpp): the commissioned
 /// model's error on each measured output as a ridge regression on the inputs and the model's
 /// outputs (raw and causally filtered), to be taken off the measurements of any period.

@@ -438,6 +438,7 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
             break;
         }
     }
+    testCauses(result.ranking, result.detection);
     if (stop(0.95, "what is left")) {
         return cancelledError("discover");
     }

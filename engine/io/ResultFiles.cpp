@@ -446,10 +446,18 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                           {"decided_by", d.decidedBy},
                           {"detectors", {{"drytwin", detectionJson(d.drytwin, d.drytwinColumns)},
                                          {"pca", detectionJson(d.pca, d.pcaColumns)}}}};
+        // DryTwin's detector is its monitor of the model's error or its test of the causes'
+        // parameters against their normal values, each at half the rate.
+        auto& ours = j["detection"]["detectors"]["drytwin"];
+        ours["monitor_changed"] = d.drytwin.changed;
+        ours["changed"] = d.drytwinChanged;
+        ours["cause_test"] = {{"changed", d.causeTest.changed},
+                              {"p_value", num(d.causeTest.pValue)},
+                              {"cause", d.causeTest.cause}};
         // The first alarm of the deciding detectors (the earlier where both alarm).
         const monitoring::Detection* first = nullptr;
         for (const auto* det : {&d.drytwin, &d.pca}) {
-            if (det->changed && det->hasFirstAlarm &&
+            if (d.changed && det->hasFirstAlarm &&
                 (!first || det->firstAlarmWindow < first->firstAlarmWindow)) {
                 first = det;
             }

@@ -88,7 +88,7 @@ private Q_SLOTS:
         // Both detectors' verdicts in words, the monitor drawn with its limits, the contributions.
         const QString detection = disc->detection()->text();
         QVERIFY2(detection.contains("DryTwin") && detection.contains("PCA"), qPrintable(detection));
-        QVERIFY2(latest->discovery.detection.drytwin.changed, qPrintable(detection));
+        QVERIFY2(latest->discovery.detection.drytwinChanged, qPrintable(detection));
         QVERIFY2(detection.contains("has changed"), qPrintable(detection));
         QCOMPARE(curvesWithData(disc->monitorPlots()->plot(0)), 2); // T² and its 99 % limit
         QCOMPARE(curvesWithData(disc->monitorPlots()->plot(1)), 2); // SPE and its limit

