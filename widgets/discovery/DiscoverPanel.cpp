@@ -78,6 +78,7 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
     m_monitorPlots->setLogScale(0, false, true);
     m_monitorPlots->setLogScale(1, false, true);
     m_monitorPlots->setEmptyText(tr("Choose a reference period and run Discover to see the monitor"));
+    m_monitorPlots->setHintVisible(false); // one mouse hint per tab: the model-error plots carry it
     m_contributions = makeResultTable({tr("Column"), tr("Share of the change"), tr("Detector")});
     m_contributions->setToolTip(
         tr("How much each column contributes to the monitor's statistic after the onset "
