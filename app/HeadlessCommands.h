@@ -44,7 +44,7 @@ struct CommandOptions {
     std::vector<std::string> causes;      ///< discover: only these candidate causes (empty: all)
     std::string referencePath;            ///< discover: a period when the line ran as it should
     std::string referenceMappingPath;     ///< discover: the reference's column mapping
-    double falseAlarmRate = discovery::DiscoveryOptions{}.falseAlarmRate; ///< discover --reference
+    double falseAlarmRate = discovery::DiscoveryOptions{}.falseAlarmRate;     ///< discover --reference
     double minExplained = discovery::DiscoveryOptions{}.minExplainedFraction; ///< discover
     double fastWindowS = discovery::DiscoveryOptions{}.fastBandWindowS;       ///< discover
     std::vector<std::string> effects;

@@ -176,9 +176,9 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
         std::string ranking;
         for (const auto& c : r->ranking) {
             char text[160];
-            std::snprintf(text, sizeof text, "%s%s p %.2g pred %.0f %% est %.3g±%.2g%s", ranking.empty() ? "" : ", ",
-                          c.cause.c_str(), c.pValue, 100 * c.predictedReduction, c.linearEstimate, c.linearSe,
-                          c.fitted ? " fitted" : "");
+            std::snprintf(text, sizeof text, "%s%s p %.2g pred %.0f %% est %.3g±%.2g%s",
+                          ranking.empty() ? "" : ", ", c.cause.c_str(), c.pValue, 100 * c.predictedReduction,
+                          c.linearEstimate, c.linearSe, c.fitted ? " fitted" : "");
             ranking += text;
         }
         out.named += " <ranking: " + ranking + ">";
@@ -293,9 +293,9 @@ int main(int argc, char** argv) {
                                 : std::string("");
     };
     if (part == "all" || part == "mechanisms") {
-        std::printf(
-            "| mechanism | strength | seed | named | right first | detected (D DryTwin, P PCA) | s |\n| --- | "
-            "--- | --- | --- | --- | --- | --- |\n");
+        std::printf("| mechanism | strength | seed | named | right first | detected (D DryTwin, P PCA) | s "
+                    "|\n| --- | "
+                    "--- | --- | --- | --- | --- | --- |\n");
         for (const auto& [m, strength, other] : cases) {
             if (!only.empty() && only != plant::info(m).name) {
                 continue;
@@ -317,8 +317,8 @@ int main(int argc, char** argv) {
                     pcaMissedByDrytwin += out.pcaFlags && !out.drytwinFlags;
                     std::printf("| %s | %g | %u | %s | %s | %s | %.1f |\n", hidden.c_str(), strength * scale,
                                 o.seed, out.named.c_str(),
-                                out.rightFirst ? (out.asGroup ? "yes (group)" : "yes") : "no", flags(out).c_str(),
-                                out.seconds);
+                                out.rightFirst ? (out.asGroup ? "yes (group)" : "yes") : "no",
+                                flags(out).c_str(), out.seconds);
                     std::fflush(stdout);
                 }
             }
@@ -386,9 +386,10 @@ int main(int argc, char** argv) {
                     "naming a cause that is not there: %d of %d.\n",
                     right, runs, 100.0 * right / runs, asGroup, withFalse, runs);
         if (againstReference) {
-            std::printf("Flagged by either detector: %d of %d; of those, hidden cause named first: %d. PCA flags "
-                        "%d, of which DryTwin's detector misses %d.\n",
-                        flaggedEither, runs, rightWhenFlagged, pcaFlagged, pcaMissedByDrytwin);
+            std::printf(
+                "Flagged by either detector: %d of %d; of those, hidden cause named first: %d. PCA flags "
+                "%d, of which DryTwin's detector misses %d.\n",
+                flaggedEither, runs, rightWhenFlagged, pcaFlagged, pcaMissedByDrytwin);
         }
     }
     if (nullRuns > 0) {

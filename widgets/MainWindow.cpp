@@ -250,27 +250,30 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             });
     // The trainee diagnoses the live line's recording on the Discover tab.
     // The recording opens beside the loaded data set (both stay in the data-set list).
-    connect(m_training, &TrainingPanel::recordingReady, this, [this](const QString& csv, const QString& reference) {
-        m_pendingTab = m_tabs->indexOf(m_discover);
-        // The recording is judged alone: a reference chosen for the loaded data belongs to another
-        // line. The line's commissioning runs are offered in the note as the reference to compare
-        // with; not set by default, because against three commissioning runs the change screen
-        // misses the fouling that the recording alone shows (measured 2026-11-26: theta_foul's
-        // change p 0.08; TestTrainingPanel names it alone).
-        m_workbench.setReferencePath({});
-        if (!reference.isEmpty()) {
-            m_statusLabel->setText(tr("The line's commissioning runs are in %1: choose them under \"Compare with "
-                                      "a reference period\" to ask what changed since commissioning.")
-                                       .arg(QDir::toNativeSeparators(reference)));
-        }
-        const QString before = m_workbench.dataSetLabel();
-        m_workbench.openData(csv);
-        if (!before.isEmpty()) {
-            m_statusLabel->setText(
-                tr("Opening the recording beside %1; the data-set list at the top right switches back.")
-                    .arg(before));
-        }
-    });
+    connect(
+        m_training, &TrainingPanel::recordingReady, this,
+        [this](const QString& csv, const QString& reference) {
+            m_pendingTab = m_tabs->indexOf(m_discover);
+            // The recording is judged alone: a reference chosen for the loaded data belongs to another
+            // line. The line's commissioning runs are offered in the note as the reference to compare
+            // with; not set by default, because against three commissioning runs the change screen
+            // misses the fouling that the recording alone shows (measured 2026-11-26: theta_foul's
+            // change p 0.08; TestTrainingPanel names it alone).
+            m_workbench.setReferencePath({});
+            if (!reference.isEmpty()) {
+                m_statusLabel->setText(
+                    tr("The line's commissioning runs are in %1: choose them under \"Compare with "
+                       "a reference period\" to ask what changed since commissioning.")
+                        .arg(QDir::toNativeSeparators(reference)));
+            }
+            const QString before = m_workbench.dataSetLabel();
+            m_workbench.openData(csv);
+            if (!before.isEmpty()) {
+                m_statusLabel->setText(
+                    tr("Opening the recording beside %1; the data-set list at the top right switches back.")
+                        .arg(before));
+            }
+        });
     // One time cursor for the 3D view and every time plot.
     const auto shareTime = [this](double t) {
         for (auto* stack : {m_data->plots(), m_model->plots()}) {
@@ -546,8 +549,9 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
     o[QStringLiteral("mapping_path")] =
         m_workbench.mappingPath().isEmpty() ? QString() : base.relativeFilePath(m_workbench.mappingPath());
     // The reference period discovery compares with: the project remembers it (issue #41).
-    o[QStringLiteral("reference_path")] =
-        m_workbench.referencePath().isEmpty() ? QString() : base.relativeFilePath(m_workbench.referencePath());
+    o[QStringLiteral("reference_path")] = m_workbench.referencePath().isEmpty()
+                                              ? QString()
+                                              : base.relativeFilePath(m_workbench.referencePath());
     o[QStringLiteral("tab")] = QString::fromLatin1(kTabKeys[std::max(0, m_tabs->currentIndex())]);
     QJsonArray batches;
     for (const auto& r : m_data->batchTable()->selectionModel()->selectedRows()) {

@@ -27,9 +27,10 @@ void printDetection(const discovery::DiscoveryResult& d) {
     const auto& det = d.detection;
     std::printf("Against the reference period %s (%zu batch(es), %zu rows; the model commissioned there):\n",
                 d.referencePath.c_str(), d.referenceBatches, d.referenceRows);
-    std::printf("  %s (each detector's false-alarm rate %.3g per data set; DryTwin's split between its monitor "
-                "and its causes' test)\n",
-                det.changed ? "CHANGED" : "no change detected", det.falseAlarmRate);
+    std::printf(
+        "  %s (each detector's false-alarm rate %.3g per data set; DryTwin's split between its monitor "
+        "and its causes' test)\n",
+        det.changed ? "CHANGED" : "no change detected", det.falseAlarmRate);
     const auto line = [](const char* name, const monitoring::Detection& m) {
         std::printf("  %-38s %s, p %.3g (%s)", name, m.changed ? "flags a change" : "no change", m.pValue,
                     m.statistic.c_str());
@@ -37,8 +38,8 @@ void printDetection(const discovery::DiscoveryResult& d) {
             std::printf(", first alarm %s at %.1f min", m.firstAlarmRun.c_str(), m.firstAlarmTimeS / 60);
         }
         if (m.hasOnset) {
-            std::printf(", onset %s at %.1f min [%.1f, %.1f]", m.onsetRun.c_str(), m.onsetS / 60, m.onsetLowS / 60,
-                        m.onsetHighS / 60);
+            std::printf(", onset %s at %.1f min [%.1f, %.1f]", m.onsetRun.c_str(), m.onsetS / 60,
+                        m.onsetLowS / 60, m.onsetHighS / 60);
         }
         std::printf("\n");
         if (m.changed && !m.contributions.empty()) {
@@ -46,15 +47,16 @@ void printDetection(const discovery::DiscoveryResult& d) {
             for (std::size_t i = 0; i < m.contributions.size() && i < 3; ++i) {
                 const auto& c = m.contributions[i];
                 std::printf(" %s %.0f %%", c.column.c_str(),
-                            100 * (m.statistic == "SPE" ? c.speReconstructionShare : c.t2ReconstructionShare));
+                            100 *
+                                (m.statistic == "SPE" ? c.speReconstructionShare : c.t2ReconstructionShare));
             }
             std::printf("\n");
         }
     };
     line("DryTwin, monitor of the model's errors:", det.drytwin);
     std::printf("  %-38s %s, p %.3g (Bonferroni; smallest: %s)\n", "DryTwin, the causes' parameters:",
-                det.causeTest.changed ? "one moved beyond its normal spread" : "none moved", det.causeTest.pValue,
-                det.causeTest.cause.empty() ? "-" : det.causeTest.cause.c_str());
+                det.causeTest.changed ? "one moved beyond its normal spread" : "none moved",
+                det.causeTest.pValue, det.causeTest.cause.empty() ? "-" : det.causeTest.cause.c_str());
     line("dynamic PCA (the measured columns):", det.pca);
     std::printf("\n");
 }
@@ -86,11 +88,12 @@ int runDiscover(const CommandOptions& o) {
     if (d.hasReference) {
         printDetection(d);
     }
-    std::printf(d.hasReference
-                    ? "What the simulation gets wrong beyond the line's own structure on the reference (model as "
-                      "commissioned there; residual = measured - structure - simulated):\n"
-                    : "What the simulation gets wrong (after refitting h_HDT, k_HDT on the training part; residual "
-                      "= measured - simulated):\n");
+    std::printf(
+        d.hasReference
+            ? "What the simulation gets wrong beyond the line's own structure on the reference (model as "
+              "commissioned there; residual = measured - structure - simulated):\n"
+            : "What the simulation gets wrong (after refitting h_HDT, k_HDT on the training part; residual "
+              "= measured - simulated):\n");
     std::printf("%-6s %-5s %10s %10s %12s %10s %12s  %s\n", "output", "unit", "bias", "± se", "trend [/h]",
                 "± se", "line [s]", "strongest correlate (differences)");
     for (const auto& r : d.residuals) {
@@ -107,9 +110,11 @@ int runDiscover(const CommandOptions& o) {
     for (const auto& note : d.notes) {
         std::printf("note: %s\n", note.c_str());
     }
-    std::printf(d.hasReference ? "\nCandidate causes (change of the one-step estimate from the reference's, in units of "
-                                 "both errors and the reference's spread; Bonferroni):\n"
-                               : "\nCandidate causes (score test on the training part, HAC variance, Holm-corrected):\n");
+    std::printf(
+        d.hasReference
+            ? "\nCandidate causes (change of the one-step estimate from the reference's, in units of "
+              "both errors and the reference's spread; Bonferroni):\n"
+            : "\nCandidate causes (score test on the training part, HAC variance, Holm-corrected):\n");
     std::printf("%-24s %8s %10s %10s %12s %14s\n", "cause", "z", "p", "p (Holm)", "fitted", "train loss");
     for (const auto& c : d.ranking) {
         std::printf(
@@ -145,10 +150,11 @@ int runDiscover(const CommandOptions& o) {
         }
         if (f.hasReference) {
             const auto& info = properties::info(f.parameter);
-            std::printf("  changed from the reference: %s %.4g %s here, %.4g (normal range %.4g to %.4g) on the "
-                        "reference\n",
-                        std::string(info.symbol).c_str(), f.value, std::string(info.unit).c_str(),
-                        f.referenceValue, f.referenceCi95Low, f.referenceCi95High);
+            std::printf(
+                "  changed from the reference: %s %.4g %s here, %.4g (normal range %.4g to %.4g) on the "
+                "reference\n",
+                std::string(info.symbol).c_str(), f.value, std::string(info.unit).c_str(), f.referenceValue,
+                f.referenceCi95Low, f.referenceCi95High);
         }
     }
     if (!d.bounds.empty()) {

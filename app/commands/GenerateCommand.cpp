@@ -79,7 +79,8 @@ int runGenerate(const CommandOptions& o) {
         const auto eq = e.find('=');
         const auto m = plant::mechanismByName(e.substr(0, eq));
         if (!m || eq == std::string::npos) {
-            return fail(Error{ErrorKind::Usage, "--onset " + e, "expected NAME=SECONDS with a mechanism's name"});
+            return fail(
+                Error{ErrorKind::Usage, "--onset " + e, "expected NAME=SECONDS with a mechanism's name"});
         }
         try {
             std::size_t used = 0;

@@ -24,7 +24,8 @@ struct Column {
 };
 
 const Column kInputs[] = {
-    {"T_hot_sp_C", [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tHotSpK[k]); }},
+    {"T_hot_sp_C",
+     [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tHotSpK[k]); }},
     {"T_hot_C", [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tHotK[k]); }},
     {"air_speed_m_s", [](const data::SiBatch& b, std::size_t k) { return b.airSpeedMPerS[k]; }},
     {"feed_kg_h", [](const data::SiBatch& b, std::size_t k) { return 3600 * b.feedKgPerS[k]; }},
@@ -54,8 +55,8 @@ bool measuredEverywhere(const std::vector<data::SiBatch>& a, const std::vector<d
 
 /// The monitored rows of one batch: the inputs and the measured outputs (PCA), or the model's
 /// error on each measured output alone (DryTwin: the inputs' own variation between periods, a
-/// new operating point, is not a change of the line, and the model already answers it). Rows the cleaning rules drop are
-/// missing, so a spike or a dropout is not read as a change.
+/// new operating point, is not a change of the line, and the model already answers it). Rows the cleaning
+/// rules drop are missing, so a spike or a dropout is not read as a change.
 monitoring::MonitorRun runOf(const data::SiBatch& b, const physics::SimulationResult& sim,
                              const std::vector<int>& channels, bool residuals) {
     monitoring::MonitorRun run;
@@ -79,12 +80,11 @@ monitoring::MonitorRun runOf(const data::SiBatch& b, const physics::SimulationRe
     return run;
 }
 
-Expected<monitoring::Detection> judgeWith(const std::vector<data::SiBatch>& reference,
-                                          const std::vector<physics::SimulationResult>& refSims,
-                                          const std::vector<data::SiBatch>& batches,
-                                          const std::vector<physics::SimulationResult>& sims,
-                                          const std::vector<int>& channels, bool residuals,
-                                          const monitoring::MonitorOptions& mo, std::vector<std::string>& columns) {
+Expected<monitoring::Detection>
+judgeWith(const std::vector<data::SiBatch>& reference, const std::vector<physics::SimulationResult>& refSims,
+          const std::vector<data::SiBatch>& batches, const std::vector<physics::SimulationResult>& sims,
+          const std::vector<int>& channels, bool residuals, const monitoring::MonitorOptions& mo,
+          std::vector<std::string>& columns) {
     columns.clear();
     if (!residuals) {
         for (const auto& in : kInputs) {
@@ -112,13 +112,11 @@ Expected<monitoring::Detection> judgeWith(const std::vector<data::SiBatch>& refe
 
 } // namespace
 
-Expected<ChangeDetection> detectChange(const std::vector<data::SiBatch>& reference,
-                                       const std::vector<data::SiBatch>& referenceForModel,
-                                       const std::vector<physics::SimulationResult>& refSims,
-                                       const std::vector<data::SiBatch>& batches,
-                                       const std::vector<data::SiBatch>& batchesForModel,
-                                       const std::vector<physics::SimulationResult>& sims,
-                                       const DiscoveryOptions& options) {
+Expected<ChangeDetection>
+detectChange(const std::vector<data::SiBatch>& reference, const std::vector<data::SiBatch>& referenceForModel,
+             const std::vector<physics::SimulationResult>& refSims, const std::vector<data::SiBatch>& batches,
+             const std::vector<data::SiBatch>& batchesForModel,
+             const std::vector<physics::SimulationResult>& sims, const DiscoveryOptions& options) {
     std::vector<int> channels;
     for (int c = 0; c < 4; ++c) {
         if (measuredEverywhere(reference, batches, c)) {
@@ -132,8 +130,8 @@ Expected<ChangeDetection> detectChange(const std::vector<data::SiBatch>& referen
     // DryTwin's monitor shares its detector's rate with the causes' change tests (Bonferroni).
     monitoring::MonitorOptions half = mo;
     half.falseAlarmRate = options.falseAlarmRate / 2;
-    auto drytwin =
-        judgeWith(referenceForModel, refSims, batchesForModel, sims, channels, true, half, out.drytwinColumns);
+    auto drytwin = judgeWith(referenceForModel, refSims, batchesForModel, sims, channels, true, half,
+                             out.drytwinColumns);
     if (!drytwin) {
         return drytwin.error();
     }

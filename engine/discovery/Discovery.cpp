@@ -15,9 +15,9 @@ namespace detail {
 
 CauseFit makeCauseFit(const std::vector<data::SiBatch>& batches, const Problem& pr, const Progress& progress,
                       const double& fraction) {
-    return [&batches, &pr, progress, &fraction](const ParameterSet& start, const std::vector<Param>& free,
-                                                 bool global, const calibration::LossWeights* weights)
-               -> Expected<calibration::CalibrationResult> {
+    return [&batches, &pr, progress,
+            &fraction](const ParameterSet& start, const std::vector<Param>& free, bool global,
+                       const calibration::LossWeights* weights) -> Expected<calibration::CalibrationResult> {
         calibration::CalibrationOptions co;
         co.freeParameters = free;
         co.rows = pr.subsetRefs;

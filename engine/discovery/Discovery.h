@@ -284,9 +284,9 @@ struct Bound {
 /// DryTwin's physics-residual detector (the measured inputs and the commissioned model's errors)
 /// and by a dynamic PCA monitor of the measured columns, both trained on the same reference.
 struct ChangeDetection {
-    bool changed = false;       ///< either detector
-    double falseAlarmRate = 0;  ///< per data set, per detector
-    std::string decidedBy;      ///< "drytwin", "pca", "both" or ""
+    bool changed = false;      ///< either detector
+    double falseAlarmRate = 0; ///< per data set, per detector
+    std::string decidedBy;     ///< "drytwin", "pca", "both" or ""
     /// DryTwin's detector: its monitor of the model's error (drytwin) or its test of the causes'
     /// parameters against their normal values (causeTest), each at half the rate (Bonferroni).
     bool drytwinChanged = false;
@@ -348,7 +348,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
 /// normal interval. The commissioned parameters stay fixed: a change is what they do not explain.
 Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& reference,
                                          const std::vector<data::SiBatch>& batches,
-                                         const hybrid::HybridModel& model, const DiscoveryOptions& options = {},
-                                         const Progress& progress = {});
+                                         const hybrid::HybridModel& model,
+                                         const DiscoveryOptions& options = {}, const Progress& progress = {});
 
 } // namespace drytwin::discovery

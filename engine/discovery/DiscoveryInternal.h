@@ -363,13 +363,11 @@ Expected<std::string> judgeAgainstReference(const Problem& pr, Finding& f);
 /// The DryTwin monitor reads the model's error on @p referenceForModel and @p batchesForModel
 /// (the measurements with the line's own structure taken off, LineStructure), the PCA monitor
 /// the raw measured columns of @p reference and @p batches.
-Expected<ChangeDetection> detectChange(const std::vector<data::SiBatch>& reference,
-                                       const std::vector<data::SiBatch>& referenceForModel,
-                                       const std::vector<physics::SimulationResult>& refSims,
-                                       const std::vector<data::SiBatch>& batches,
-                                       const std::vector<data::SiBatch>& batchesForModel,
-                                       const std::vector<physics::SimulationResult>& sims,
-                                       const DiscoveryOptions& options);
+Expected<ChangeDetection>
+detectChange(const std::vector<data::SiBatch>& reference, const std::vector<data::SiBatch>& referenceForModel,
+             const std::vector<physics::SimulationResult>& refSims, const std::vector<data::SiBatch>& batches,
+             const std::vector<data::SiBatch>& batchesForModel,
+             const std::vector<physics::SimulationResult>& sims, const DiscoveryOptions& options);
 /// DryTwin's second test (ChangeDetection.cpp): the first round's change tests of the causes
 /// (@p ranking, at the commissioned model), Bonferroni over them at half the false-alarm rate;
 /// then the decision of both detectors again.
@@ -380,7 +378,7 @@ void decide(ChangeDetection& d);
 /// model's error on each measured output as a ridge regression on the inputs and the model's
 /// outputs (raw and causally filtered), to be taken off the measurements of any period.
 struct LineStructure {
-    double lambda = 0;           ///< the ridge penalty chosen by cross-validation over the reference's parts
+    double lambda = 0;            ///< the ridge penalty chosen by cross-validation over the reference's parts
     std::array<bool, 4> fitted{}; ///< per channel (too few measured rows: not fitted, nothing taken off)
     /// A batch's measurements with the predicted structural error taken off (its simulation at
     /// the commissioned model gives the model's outputs).

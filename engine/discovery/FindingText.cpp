@@ -111,13 +111,13 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
         f.trendPerHourBefore, moisture ? "% wb" : "°C", f.cause.c_str(), std::string(info.symbol).c_str(),
         f.value, std::string(info.unit).c_str(), f.ci95Low, f.ci95High,
         f.hasReference ? "h_HDT, k_HDT as commissioned on the reference period" : "h_HDT, k_HDT refitted",
-        gain.maeMoistureBefore,
-        gain.maeMoistureAfter, gain.maeTemperatureBefore, gain.maeTemperatureAfter, gain.pValue,
-        share.c_str(), lookFor(f.parameter));
+        gain.maeMoistureBefore, gain.maeMoistureAfter, gain.maeTemperatureBefore, gain.maeTemperatureAfter,
+        gain.pValue, share.c_str(), lookFor(f.parameter));
     if (f.hasReference) {
-        text += format(" On the reference period it was %.4g %s (a period's normal range %.3g to %.3g): it "
-                       "changed.",
-                       f.referenceValue, std::string(info.unit).c_str(), f.referenceCi95Low, f.referenceCi95High);
+        text +=
+            format(" On the reference period it was %.4g %s (a period's normal range %.3g to %.3g): it "
+                   "changed.",
+                   f.referenceValue, std::string(info.unit).c_str(), f.referenceCi95Low, f.referenceCi95High);
     }
     if (!f.perPart.empty()) {
         double lo = f.perPart.front().value, hi = lo;

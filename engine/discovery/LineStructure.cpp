@@ -54,7 +54,8 @@ Eigen::MatrixXd featuresOf(const data::SiBatch& b, const physics::SimulationResu
         for (int i = 0; i < kRaw; ++i) {
             const double v = std::isfinite(raw[i]) ? raw[i] : (k ? filtered[0][i] : 0.0);
             for (int j = 0; j < 2; ++j) {
-                filtered[j][i] = k == 0 ? v : filtered[j][i] + (1 - std::exp(-dt / kFilterS[j])) * (v - filtered[j][i]);
+                filtered[j][i] =
+                    k == 0 ? v : filtered[j][i] + (1 - std::exp(-dt / kFilterS[j])) * (v - filtered[j][i]);
             }
             const auto row = static_cast<Eigen::Index>(k);
             f(row, i) = v;
@@ -71,7 +72,8 @@ struct Rows {
     Eigen::VectorXd y;
 };
 
-Rows rowsOf(const std::vector<const data::SiBatch*>& batches, const std::vector<const physics::SimulationResult*>& sims,
+Rows rowsOf(const std::vector<const data::SiBatch*>& batches,
+            const std::vector<const physics::SimulationResult*>& sims,
             const std::vector<Eigen::MatrixXd>& features, int channel) {
     std::size_t n = 0;
     std::vector<std::pair<std::size_t, std::size_t>> which;
@@ -90,7 +92,8 @@ Rows rowsOf(const std::vector<const data::SiBatch*>& batches, const std::vector<
     r.x.resize(static_cast<Eigen::Index>(n), kFeatures);
     r.y.resize(static_cast<Eigen::Index>(n));
     for (std::size_t j = 0; j < n; ++j) {
-        r.x.row(static_cast<Eigen::Index>(j)) = features[which[j].first].row(static_cast<Eigen::Index>(which[j].second));
+        r.x.row(static_cast<Eigen::Index>(j)) =
+            features[which[j].first].row(static_cast<Eigen::Index>(which[j].second));
         r.y(static_cast<Eigen::Index>(j)) = target[j];
     }
     return r;
@@ -179,7 +182,8 @@ partsOf(const std::vector<data::SiBatch>& ref) {
         parts.emplace_back();
         for (std::size_t b = 0; b < ref.size(); ++b) {
             const std::size_t n = ref[b].rows();
-            parts.back().push_back({b, {n * static_cast<std::size_t>(third) / 3, n * static_cast<std::size_t>(third + 1) / 3}});
+            parts.back().push_back(
+                {b, {n * static_cast<std::size_t>(third) / 3, n * static_cast<std::size_t>(third + 1) / 3}});
         }
     }
     return parts;
@@ -243,8 +247,11 @@ LineStructure learnLineStructure(const std::vector<data::SiBatch>& reference,
                     continue;
                 }
                 for (Eigen::Index i = 0; i < te.y.size(); ++i) {
-                    const double e = te.y(i) - (fit.intercept + ((te.x.row(i).transpose() - fit.mean).array() /
-                                                                 fit.sd.array()).matrix().dot(fit.beta));
+                    const double e =
+                        te.y(i) -
+                        (fit.intercept + ((te.x.row(i).transpose() - fit.mean).array() / fit.sd.array())
+                                             .matrix()
+                                             .dot(fit.beta));
                     sse += e * e;
                     sst += (te.y(i) - tr.y.mean()) * (te.y(i) - tr.y.mean());
                 }
@@ -292,7 +299,8 @@ LineStructure learnLineStructure(const std::vector<data::SiBatch>& reference,
         }
         std::array<ChannelFit, 4> partFits;
         for (int c = 0; c < 4; ++c) {
-            partFits[static_cast<std::size_t>(c)] = fitRidge(rowsOf(trainPtr, allSims, features, c), bestLambda);
+            partFits[static_cast<std::size_t>(c)] =
+                fitRidge(rowsOf(trainPtr, allSims, features, c), bestLambda);
         }
         for (const auto& [b, range] : parts[p]) {
             const data::SiBatch fixed = corrected(reference[b], features[b], partFits);

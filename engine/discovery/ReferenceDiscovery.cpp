@@ -89,7 +89,8 @@ void scoreAgainstReference(const Problem& pr, std::vector<Candidate>& cands) {
         c.score = (c.linearEstimate - rv.value) / se;
         c.pValue = twoSided(c.parameter) ? 2 * upperTail(std::abs(c.score)) : upperTail(c.score);
         if (isTiming(c.parameter)) {
-            c.pValue = std::min(c.pValue, ownP); // screened as alone; judged by its fit against the reference's
+            c.pValue =
+                std::min(c.pValue, ownP); // screened as alone; judged by its fit against the reference's
         }
     }
     // Bonferroni over the round's candidates, reported beside the raw p (the screen is liberal on
@@ -127,7 +128,8 @@ Expected<std::string> judgeAgainstReference(const Problem& pr, Finding& f) {
     }
     return format("within its normal spread: %.4g %s here against %.4g (normal range %.4g to %.4g) on the "
                   "reference period",
-                  f.value, std::string(info.unit).c_str(), rv->value, f.referenceCi95Low, f.referenceCi95High);
+                  f.value, std::string(info.unit).c_str(), rv->value, f.referenceCi95Low,
+                  f.referenceCi95High);
 }
 
 } // namespace detail
@@ -199,9 +201,10 @@ Status scatterChange(const Problem& pr, const Problem& referencePr, const CauseF
     f.referenceValue = model.parameters[phi];
     f.referenceCi95Low = f.referenceCi95High = f.referenceValue;
     describeOutput(f, model.residuals);
-    f.evidence = findingEvidence(f, pr.options) +
-                 format(" The inlet gauge's fast scatter is %.2g %% wb here against %.2g %% wb on the reference.",
-                        now, before);
+    f.evidence =
+        findingEvidence(f, pr.options) +
+        format(" The inlet gauge's fast scatter is %.2g %% wb here against %.2g %% wb on the reference.", now,
+               before);
     Round record;
     record.best = f.cause;
     record.named = true;
@@ -234,9 +237,11 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
         return st.error();
     }
     if (reference.empty() || batches.empty()) {
-        return Error{ErrorKind::BadInput, "discover",
+        return Error{ErrorKind::BadInput,
+                     "discover",
                      reference.empty() ? "the reference period holds no batches" : "no batches to judge",
-                     ErrorCode::NotEnoughData, {reference.empty() ? "reference batches" : "batches", "0"}};
+                     ErrorCode::NotEnoughData,
+                     {reference.empty() ? "reference batches" : "batches", "0"}};
     }
     double fraction = 0;
     const auto stop = [&](double f, const std::string& detail) {
@@ -339,7 +344,8 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
             if (std::getenv("DRYTWIN_DEBUG_REFERENCE")) {
                 const auto& rv = ref.linear[remaining[i]];
                 std::fprintf(stderr, "reference %s: %.4g se %.3g spread %.3g\n",
-                             std::string(properties::info(remaining[i]).symbol).c_str(), rv.value, rv.se, rv.spread);
+                             std::string(properties::info(remaining[i]).symbol).c_str(), rv.value, rv.se,
+                             rv.spread);
             }
         }
     }
@@ -379,13 +385,15 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     result.referenceRows = refPrepared->keptTrain;
     result.baseParameters = commissionedParameters;
     result.notes = dataNotes(batches);
-    result.notes.push_back(format("commissioned on the reference period (%zu batch(es), %zu rows): h_HDT %.4g "
-                                  "W/(m²·K), k_HDT %.4g m/s, held fixed on the data judged",
-                                  reference.size(), refPrepared->keptTrain,
-                                  commissionedParameters[Param::h_HDT], commissionedParameters[Param::k_HDT]));
+    result.notes.push_back(
+        format("commissioned on the reference period (%zu batch(es), %zu rows): h_HDT %.4g "
+               "W/(m²·K), k_HDT %.4g m/s, held fixed on the data judged",
+               reference.size(), refPrepared->keptTrain, commissionedParameters[Param::h_HDT],
+               commissionedParameters[Param::k_HDT]));
     if (options.learnLineStructure) {
         result.notes.push_back(format(
-            "the line's own structure (what the model always gets wrong, a ridge regression on the inputs and "
+            "the line's own structure (what the model always gets wrong, a ridge regression on the inputs "
+            "and "
             "the model's outputs, penalty %.0e) learnt on the reference and taken off the measurements: the "
             "residuals below are what is left",
             structure.lambda));
@@ -421,8 +429,9 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     }
     result.detection = std::move(*detection);
 
-    ModelSoFar extended{commissionedParameters, stackLoss(*lossStack), {}, std::move(remaining),
-                        std::move(sims),        result.residuals,      std::move(*held)};
+    ModelSoFar extended{commissionedParameters, stackLoss(*lossStack), {},
+                        std::move(remaining),   std::move(sims),       result.residuals,
+                        std::move(*held)};
     if (asked(Param::phi_X_in_scatter)) {
         if (auto st = scatterChange(pr, normalPr, refit, extended, result); !st) {
             return st.error();
@@ -442,7 +451,8 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     if (stop(0.95, "what is left")) {
         return cancelledError("discover");
     }
-    conclude(pr, extended.parameters, extended.nuisance, extended.sims, std::move(extended.residuals), result);
+    conclude(pr, extended.parameters, extended.nuisance, extended.sims, std::move(extended.residuals),
+             result);
     // The line's own structure is on the reference too: only a change the detectors see and no
     // cause explains is "unexplained structure" here.
     if (result.findings.empty()) {

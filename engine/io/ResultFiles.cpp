@@ -308,8 +308,10 @@ namespace {
 json detectionJson(const monitoring::Detection& d, const std::vector<std::string>& columns) {
     const auto num = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
     const auto judgement = [&](const monitoring::StatisticJudgement& s) {
-        return json{{"changed", s.changed},        {"p_value", num(s.pValue)},
-                    {"glr", num(s.glr)},           {"glr_threshold", num(s.glrThreshold)},
+        return json{{"changed", s.changed},
+                    {"p_value", num(s.pValue)},
+                    {"glr", num(s.glr)},
+                    {"glr_threshold", num(s.glrThreshold)},
                     {"cusum_threshold", num(s.cusumThreshold)}};
     };
     json j = {{"changed", d.changed},
@@ -344,8 +346,11 @@ json detectionJson(const monitoring::Detection& d, const std::vector<std::string
                                       {"spe_share", num(c.speShare)},
                                       {"t2_share", num(c.t2Share)}});
     }
-    json series = {{"batch", json::array()}, {"time_s", json::array()},   {"t2", json::array()},
-                   {"spe", json::array()},   {"alarm", json::array()}};
+    json series = {{"batch", json::array()},
+                   {"time_s", json::array()},
+                   {"t2", json::array()},
+                   {"spe", json::array()},
+                   {"alarm", json::array()}};
     for (const auto& w : d.series) {
         series["batch"].push_back(w.run);
         series["time_s"].push_back(num(w.timeS));
@@ -437,15 +442,17 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
         }
     }
     if (r.hasReference) {
-        j["reference"] = {{"path", r.referencePath}, {"batches", r.referenceBatches}, {"rows", r.referenceRows}};
+        j["reference"] = {
+            {"path", r.referencePath}, {"batches", r.referenceBatches}, {"rows", r.referenceRows}};
         const auto& d = r.detection;
         j["detection"] = {{"changed", d.changed},
                           {"statistic", "run-level GLR of a mean shift in the window means of log T² and log "
                                         "SPE (dynamic PCA, leave-one-out reference null), either detector"},
                           {"false_alarm_rate", num(d.falseAlarmRate)},
                           {"decided_by", d.decidedBy},
-                          {"detectors", {{"drytwin", detectionJson(d.drytwin, d.drytwinColumns)},
-                                         {"pca", detectionJson(d.pca, d.pcaColumns)}}}};
+                          {"detectors",
+                           {{"drytwin", detectionJson(d.drytwin, d.drytwinColumns)},
+                            {"pca", detectionJson(d.pca, d.pcaColumns)}}}};
         // DryTwin's detector is its monitor of the model's error or its test of the causes'
         // parameters against their normal values, each at half the rate.
         auto& ours = j["detection"]["detectors"]["drytwin"];
@@ -463,7 +470,8 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
             }
         }
         j["detection"]["first_alarm"] =
-            first ? json{{"batch", first->firstAlarmRun}, {"time_s", num(first->firstAlarmTimeS)}} : json(nullptr);
+            first ? json{{"batch", first->firstAlarmRun}, {"time_s", num(first->firstAlarmTimeS)}}
+                  : json(nullptr);
     }
     j["ranking"] = json::array();
     for (const auto& c : r.ranking) {

@@ -107,12 +107,13 @@ void record(const monitoring::StreamingWindow& w, double thresholdSpe, LineDetec
 } // namespace
 
 const std::vector<std::string>& LineMonitor::screenColumns() {
-    static const std::vector<std::string> names{"X_out_pct", "T_out_C",  "T_hot_sp_C",
+    static const std::vector<std::string> names{"X_out_pct", "T_out_C",   "T_hot_sp_C",
                                                 "T_hot_C",   "feed_kg_h", "X_in_pct"};
     return names;
 }
 
-Expected<LineMonitor> LineMonitor::commission(const control::Scenario& scenario, int runs, double falseAlarmRate) {
+Expected<LineMonitor> LineMonitor::commission(const control::Scenario& scenario, int runs,
+                                              double falseAlarmRate) {
     if (runs < 1) {
         return invalidOption("commissioning runs", "at least one");
     }

@@ -153,8 +153,8 @@ Expected<OpenResult> Session::open(const OpenOptions& options, const Progress& p
 }
 
 Expected<std::vector<data::SiBatch>> Session::loadReference(const std::string& path,
-                                                           const std::string& mappingPath,
-                                                           const Progress& progress) const {
+                                                            const std::string& mappingPath,
+                                                            const Progress& progress) const {
     data::ReadOptions ro;
     if (!mappingPath.empty()) {
         auto mapping = data::readColumnMapping(mappingPath);
@@ -174,8 +174,11 @@ Expected<std::vector<data::SiBatch>> Session::loadReference(const std::string& p
         return e;
     }
     if (loaded.dataSet.batches.empty()) {
-        return Error{ErrorKind::BadInput, path, "the reference period holds no batch file",
-                     ErrorCode::NotEnoughData, {"reference batches", "0"}};
+        return Error{ErrorKind::BadInput,
+                     path,
+                     "the reference period holds no batch file",
+                     ErrorCode::NotEnoughData,
+                     {"reference batches", "0"}};
     }
     return data::toSi(loaded.dataSet, data::clean(loaded.dataSet, m_cleaning));
 }

@@ -294,8 +294,8 @@ public:
 
 private:
     /// A reference period read with the session's cleaning rules (a rejected file: its error).
-    Expected<std::vector<data::SiBatch>> loadReference(const std::string& path, const std::string& mappingPath,
-                                                       const Progress& progress) const;
+    Expected<std::vector<data::SiBatch>>
+    loadReference(const std::string& path, const std::string& mappingPath, const Progress& progress) const;
 
     Status requireData(const std::string& action) const;
     /// Options valid and data loaded: the precondition of every action on the data.

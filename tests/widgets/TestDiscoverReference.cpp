@@ -77,7 +77,8 @@ private Q_SLOTS:
         auto* disc = w.discoverPanel();
         QVERIFY(disc->referenceLabel()->text().contains("No reference"));
         w.workbench().setReferencePath(reference);
-        QVERIFY2(disc->referenceLabel()->text().contains("healthy"), qPrintable(disc->referenceLabel()->text()));
+        QVERIFY2(disc->referenceLabel()->text().contains("healthy"),
+                 qPrintable(disc->referenceLabel()->text()));
         w.openDataSet(changed);
         QVERIFY(waitIdle(w));
         w.workbench().discover();

@@ -134,7 +134,8 @@ private Q_SLOTS:
             }
         }
         for (const auto& c : window.workbench().latest().discover->discovery.ranking) {
-            why += QString::fromStdString(c.cause) + QStringLiteral(" p %1 est %2\n").arg(c.pValue).arg(c.linearEstimate);
+            why += QString::fromStdString(c.cause) +
+                   QStringLiteral(" p %1 est %2\n").arg(c.pValue).arg(c.linearEstimate);
         }
         QVERIFY2(!found.empty(), qPrintable(why));
         QCOMPARE(found.front().cause, std::string("heat_transfer_fouling"));

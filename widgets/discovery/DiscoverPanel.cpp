@@ -13,9 +13,9 @@
 #include <QLabel>
 #include <QMenu>
 #include <QPushButton>
-#include <QTabWidget>
 #include <QRegularExpression>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTextBrowser>
 #include <QVBoxLayout>
@@ -50,15 +50,16 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
            "commissioning runs): Discover then says whether, from when and why the loaded data differ"));
     auto* referenceMenu = new QMenu(m_referenceButton);
     referenceMenu->addAction(tr("A folder of batch files…"), this, [this] {
-        const QString dir = QFileDialog::getExistingDirectory(this, tr("Reference period: a folder of batch files"),
-                                                              m_workbench.dataPath());
+        const QString dir = QFileDialog::getExistingDirectory(
+            this, tr("Reference period: a folder of batch files"), m_workbench.dataPath());
         if (!dir.isEmpty()) {
             m_workbench.setReferencePath(dir);
         }
     });
     referenceMenu->addAction(tr("One batch or historian file…"), this, [this] {
-        const QString file = QFileDialog::getOpenFileName(this, tr("Reference period: a batch or historian file"),
-                                                          m_workbench.dataPath(), tr("CSV files (*.csv *.txt)"));
+        const QString file =
+            QFileDialog::getOpenFileName(this, tr("Reference period: a batch or historian file"),
+                                         m_workbench.dataPath(), tr("CSV files (*.csv *.txt)"));
         if (!file.isEmpty()) {
             m_workbench.setReferencePath(file);
         }
@@ -176,7 +177,8 @@ void DiscoverPanel::showDetection() {
     // DryTwin's detector: its monitor of the model's error, or a cause's parameter beyond its spread.
     const QString causes =
         det.causeTest.changed
-            ? tr("DryTwin (the causes' parameters): <b>changed</b> (p = %1): %2 moved beyond its normal spread")
+            ? tr("DryTwin (the causes' parameters): <b>changed</b> (p = %1): %2 moved beyond its normal "
+                 "spread")
                   .arg(det.causeTest.pValue, 0, 'g', 2)
                   .arg(causeDisplayName(det.causeTest.cause).toHtmlEscaped())
             : tr("DryTwin (the causes' parameters): none moved beyond its normal spread (p = %1)")
@@ -185,8 +187,9 @@ void DiscoverPanel::showDetection() {
         (det.changed ? tr("<b>The line has changed since the reference period.</b>")
                      : tr("<b>No change against the reference period.</b>")) +
         tr(" Each detector's false-alarm rate: %1 % per data set.").arg(100 * det.falseAlarmRate, 0, 'g', 2) +
-        QStringLiteral("<br>") + describe(tr("DryTwin (the model's error)"), det.drytwin) + QStringLiteral("<br>") +
-        causes + QStringLiteral("<br>") + describe(tr("Dynamic PCA (the measured columns)"), det.pca));
+        QStringLiteral("<br>") + describe(tr("DryTwin (the model's error)"), det.drytwin) +
+        QStringLiteral("<br>") + causes + QStringLiteral("<br>") +
+        describe(tr("Dynamic PCA (the measured columns)"), det.pca));
     m_detection->setVisible(true);
     // The windows of both monitors, batches one after another, each statistic over its limit's
     // scale so that both detectors share one axis: above 1 is beyond the reference's 99 %.
@@ -233,8 +236,9 @@ void DiscoverPanel::showDetection() {
             const double share = d->statistic == "SPE" ? c.speReconstructionShare : c.t2ReconstructionShare;
             const int row = m_contributions->rowCount();
             m_contributions->insertRow(row);
-            setTableRow(m_contributions, row,
-                        {columnDisplayName(c.column), QStringLiteral("%1 %").arg(100 * share, 0, 'f', 0), name});
+            setTableRow(
+                m_contributions, row,
+                {columnDisplayName(c.column), QStringLiteral("%1 %").arg(100 * share, 0, 'f', 0), name});
         }
     }
     m_contributions->resizeColumnsToContents();
@@ -506,34 +510,35 @@ QString DiscoverPanel::evidenceText(const discovery::Finding& f) {
                                                 : tr("h_HDT, k_HDT refitted");
     // Against a reference the finding is a change: the value it had there, and its normal range.
     const QString changed =
-        f.hasReference ? tr(" On the reference period it was %1 %2 (a period's normal range %3 to %4): it changed.")
-                             .arg(f.referenceValue, 0, 'g', 4)
-                             .arg(QString::fromUtf8(info.unit.data(), static_cast<int>(info.unit.size())))
-                             .arg(f.referenceCi95Low, 0, 'g', 3)
-                             .arg(f.referenceCi95High, 0, 'g', 3)
-                       : QString();
+        f.hasReference
+            ? tr(" On the reference period it was %1 %2 (a period's normal range %3 to %4): it changed.")
+                  .arg(f.referenceValue, 0, 'g', 4)
+                  .arg(QString::fromUtf8(info.unit.data(), static_cast<int>(info.unit.size())))
+                  .arg(f.referenceCi95Low, 0, 'g', 3)
+                  .arg(f.referenceCi95High, 0, 'g', 3)
+            : QString();
     return tr("%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, "
               "%10]) "
               "and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out "
               "from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.")
-        .arg(moisture ? tr("Outlet-moisture") : tr("Outlet-temperature"))
-        .arg(f.biasBefore, 0, 'g', 3)
-        .arg(unit)
-        .arg(f.trendPerHourBefore, 0, 'g', 3)
-        .arg(causeDisplayName(f.cause))
-        .arg(QString::fromUtf8(info.symbol.data(), static_cast<int>(info.symbol.size())))
-        .arg(f.value, 0, 'g', 4)
-        .arg(QString::fromUtf8(info.unit.data(), static_cast<int>(info.unit.size())))
-        .arg(f.ci95Low, 0, 'g', 3)
-        .arg(f.ci95High, 0, 'g', 3)
-        .arg(g.maeMoistureBefore, 0, 'f', 3)
-        .arg(g.maeMoistureAfter, 0, 'f', 3)
-        .arg(g.maeTemperatureBefore, 0, 'f', 2)
-        .arg(g.maeTemperatureAfter, 0, 'f', 2)
-        .arg(g.pValue, 0, 'g', 2)
-        .arg(share)
-        .arg(lookForText(f.parameter))
-        .arg(commissioned) +
+               .arg(moisture ? tr("Outlet-moisture") : tr("Outlet-temperature"))
+               .arg(f.biasBefore, 0, 'g', 3)
+               .arg(unit)
+               .arg(f.trendPerHourBefore, 0, 'g', 3)
+               .arg(causeDisplayName(f.cause))
+               .arg(QString::fromUtf8(info.symbol.data(), static_cast<int>(info.symbol.size())))
+               .arg(f.value, 0, 'g', 4)
+               .arg(QString::fromUtf8(info.unit.data(), static_cast<int>(info.unit.size())))
+               .arg(f.ci95Low, 0, 'g', 3)
+               .arg(f.ci95High, 0, 'g', 3)
+               .arg(g.maeMoistureBefore, 0, 'f', 3)
+               .arg(g.maeMoistureAfter, 0, 'f', 3)
+               .arg(g.maeTemperatureBefore, 0, 'f', 2)
+               .arg(g.maeTemperatureAfter, 0, 'f', 2)
+               .arg(g.pValue, 0, 'g', 2)
+               .arg(share)
+               .arg(lookForText(f.parameter))
+               .arg(commissioned) +
            changed;
 }
 

@@ -261,10 +261,10 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_monitorLabel = new QLabel;
     m_monitorLabel->setWordWrap(true);
     m_monitorLabel->setTextFormat(Qt::RichText);
-    m_monitorLabel->setToolTip(
-        tr("Two detectors commissioned on healthy runs of this line: the physics model's error, and a dynamic "
-           "PCA monitor of the screens' signals. Each alarms when the line leaves its normal (1 % chance of a "
-           "false alarm over the session)"));
+    m_monitorLabel->setToolTip(tr(
+        "Two detectors commissioned on healthy runs of this line: the physics model's error, and a dynamic "
+        "PCA monitor of the screens' signals. Each alarms when the line leaves its normal (1 % chance of a "
+        "false alarm over the session)"));
 
     auto* side = new QWidget;
     auto* sl = new QVBoxLayout(side);
@@ -313,8 +313,8 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_plots->addPlot(tr("Monitor T² [-]"));
     m_plots->setLogScale(4, false, true);
     m_monitorLimit = m_plots->addCurve(4, tr("99 % limit"), none, none, Qt::black, Qt::DashLine, 1.0);
-    m_monitorT2 =
-        m_plots->addCurve(4, tr("T² of the model's error"), none, none, QColor(214, 39, 40), Qt::SolidLine, 1.3);
+    m_monitorT2 = m_plots->addCurve(4, tr("T² of the model's error"), none, none, QColor(214, 39, 40),
+                                    Qt::SolidLine, 1.3);
 
     m_progress = new QProgressBar;
     m_progress->setRange(0, 100);
@@ -436,23 +436,24 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
         setLongWork(false);
         m_note->setText(tr("%1: %2").arg(action, message));
     });
-    connect(
-        m_runner, &TrainingRunner::saved, this,
-        [this](const QString& sessionFile, const QStringList& csv, const QString& referenceFolder) {
-            if (m_diagnosePending && sessionFile.startsWith(m_diagnoseFolder)) {
-                m_diagnosePending = false;
-                m_note->setText(
-                    referenceFolder.isEmpty()
-                        ? tr("Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.")
-                              .arg(QDir::toNativeSeparators(csv.value(0)))
-                        : tr("Recording opened for diagnosis: %1; the line's commissioning runs are in %2. Run "
-                             "Discover on it, then name the cause here.")
-                              .arg(QDir::toNativeSeparators(csv.value(0)), QDir::toNativeSeparators(referenceFolder)));
-                Q_EMIT recordingReady(csv.value(0), referenceFolder);
-            } else {
-                m_note->setText(tr("Session saved: %1").arg(QDir::toNativeSeparators(sessionFile)));
-            }
-        });
+    connect(m_runner, &TrainingRunner::saved, this,
+            [this](const QString& sessionFile, const QStringList& csv, const QString& referenceFolder) {
+                if (m_diagnosePending && sessionFile.startsWith(m_diagnoseFolder)) {
+                    m_diagnosePending = false;
+                    m_note->setText(referenceFolder.isEmpty()
+                                        ? tr("Recording opened for diagnosis: %1. Run Discover on it, then "
+                                             "name the cause here.")
+                                              .arg(QDir::toNativeSeparators(csv.value(0)))
+                                        : tr("Recording opened for diagnosis: %1; the line's commissioning "
+                                             "runs are in %2. Run "
+                                             "Discover on it, then name the cause here.")
+                                              .arg(QDir::toNativeSeparators(csv.value(0)),
+                                                   QDir::toNativeSeparators(referenceFolder)));
+                    Q_EMIT recordingReady(csv.value(0), referenceFolder);
+                } else {
+                    m_note->setText(tr("Session saved: %1").arg(QDir::toNativeSeparators(sessionFile)));
+                }
+            });
     updateFaultUnit();
     setInstructorView(false);
     setLongWork(false);
@@ -635,8 +636,8 @@ void TrainingPanel::showFrame() {
             .arg(f.score.offSpecKg, 0, 'f', 0));
     const auto& m = f.monitor;
     if (!m.ready) {
-        m_monitorLabel->setText(f.monitorNote.isEmpty() ? QString()
-                                                        : tr("Line monitor unavailable: %1").arg(f.monitorNote));
+        m_monitorLabel->setText(
+            f.monitorNote.isEmpty() ? QString() : tr("Line monitor unavailable: %1").arg(f.monitorNote));
     } else if (!m.alarmed()) {
         m_monitorLabel->setText(tr("Line monitor: normal (as on its commissioning runs)."));
     } else {
@@ -645,12 +646,13 @@ void TrainingPanel::showFrame() {
         const auto& d = ours ? m.drytwin : m.pca;
         const QString who = ours ? tr("the model's error") : tr("the screens' signals (PCA)");
         m_monitorLabel->setText(
-            d.hasOnset ? tr("<b>Line monitor: ALARM</b> at %1 (%2) — the line has left its normal; the change "
-                            "began at about %3. Diagnose the recording to name the cause.")
-                             .arg(clockText(d.alarmAtS), who, clockText(d.onsetS))
-                       : tr("<b>Line monitor: ALARM</b> at %1 (%2) — the line has left its normal. Diagnose the "
-                            "recording to name the cause.")
-                             .arg(clockText(d.alarmAtS), who));
+            d.hasOnset
+                ? tr("<b>Line monitor: ALARM</b> at %1 (%2) — the line has left its normal; the change "
+                     "began at about %3. Diagnose the recording to name the cause.")
+                      .arg(clockText(d.alarmAtS), who, clockText(d.onsetS))
+                : tr("<b>Line monitor: ALARM</b> at %1 (%2) — the line has left its normal. Diagnose the "
+                     "recording to name the cause.")
+                      .arg(clockText(d.alarmAtS), who));
     }
     redrawPlots();
 }

@@ -112,9 +112,10 @@ public:
             QDir().mkpath(dir);
             bool ok = true;
             for (const auto& run : m_monitor->commissioningRuns()) {
-                ok = ok && data::writeBatchFile(run, QDir(dir).filePath(QString::fromStdString(run.id) +
-                                                                        QStringLiteral(".csv"))
-                                                         .toStdString());
+                ok = ok && data::writeBatchFile(
+                               run, QDir(dir)
+                                        .filePath(QString::fromStdString(run.id) + QStringLiteral(".csv"))
+                                        .toStdString());
             }
             referenceFolder = ok ? dir : QString();
         }

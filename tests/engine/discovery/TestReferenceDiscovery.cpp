@@ -72,7 +72,10 @@ QString story(const discovery::DiscoveryResult& r) {
         }
     }
     for (const auto& c : r.ranking) {
-        out << QStringLiteral("%1 z=%2 fitted=%3").arg(QString::fromStdString(c.cause)).arg(c.score).arg(c.fitted);
+        out << QStringLiteral("%1 z=%2 fitted=%3")
+                   .arg(QString::fromStdString(c.cause))
+                   .arg(c.score)
+                   .arg(c.fitted);
     }
     return out.join("\n  ");
 }
@@ -122,7 +125,8 @@ private Q_SLOTS:
                   d.limits.t2Window, d.limits.speWindow);
             for (std::size_t i = 0; i < d.series.size(); i += 5) {
                 const auto& w = d.series[i];
-                qInfo("%s %.0f t2 %.3g spe %.3g z %.2f %.2f", w.run.c_str(), w.timeS, w.t2, w.spe, w.zT2, w.zSpe);
+                qInfo("%s %.0f t2 %.3g spe %.3g z %.2f %.2f", w.run.c_str(), w.timeS, w.t2, w.spe, w.zT2,
+                      w.zSpe);
             }
             for (const auto& c : d.contributions) {
                 qInfo("%s spe %.3f t2 %.3f", c.column.c_str(), c.speShare, c.t2Share);
@@ -148,7 +152,10 @@ private Q_SLOTS:
         const auto& d = r.detection.drytwin;
         QVERIFY2(d.changed && d.hasOnset, qPrintable(story(r)));
         QVERIFY2(d.onsetLowS <= d.onsetS && d.onsetS <= d.onsetHighS,
-                 qPrintable(QStringLiteral("onset %1 outside [%2, %3]").arg(d.onsetS).arg(d.onsetLowS).arg(d.onsetHighS)));
+                 qPrintable(QStringLiteral("onset %1 outside [%2, %3]")
+                                .arg(d.onsetS)
+                                .arg(d.onsetLowS)
+                                .arg(d.onsetHighS)));
         // The change is in every batch from 20 min: the first batch's onset is the first one seen.
         QCOMPARE(QString::fromStdString(d.onsetRun), QString::fromStdString(plantData(45).front().id));
         QVERIFY2(std::abs(d.onsetS - onsetS) <= 5 * 60,

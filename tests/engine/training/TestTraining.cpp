@@ -84,10 +84,9 @@ private Q_SLOTS:
             QVERIFY(quiet.feed(healthy));
         }
         QVERIFY(quiet.state().ready);
-        QVERIFY2(!quiet.state().alarmed(),
-                 qPrintable(QStringLiteral("alarm at %1 s (DryTwin) / %2 s (PCA)")
-                                .arg(quiet.state().drytwin.alarmAtS)
-                                .arg(quiet.state().pca.alarmAtS)));
+        QVERIFY2(!quiet.state().alarmed(), qPrintable(QStringLiteral("alarm at %1 s (DryTwin) / %2 s (PCA)")
+                                                          .arg(quiet.state().drytwin.alarmAtS)
+                                                          .arg(quiet.state().pca.alarmAtS)));
         QVERIFY(quiet.state().drytwin.timeS.size() >= 35); // a point a minute
         QVERIFY(quiet.state().pca.timeS.size() >= 35);
 
@@ -101,7 +100,8 @@ private Q_SLOTS:
         }
         const auto& st = watching.state().drytwin;
         QVERIFY2(st.alarmed, "DryTwin's detector: no alarm after the meter's offset");
-        QVERIFY2(st.alarmAtS > 900, qPrintable(QStringLiteral("alarm at %1 s, before the onset").arg(st.alarmAtS)));
+        QVERIFY2(st.alarmAtS > 900,
+                 qPrintable(QStringLiteral("alarm at %1 s, before the onset").arg(st.alarmAtS)));
         QVERIFY(st.hasOnset);
         QVERIFY2(std::abs(st.onsetS - 900) <= 300, qPrintable(QStringLiteral("onset %1 s").arg(st.onsetS)));
         // A line sent back to before the fault (as a restore does): the monitors start again with it.
