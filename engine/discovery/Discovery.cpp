@@ -160,15 +160,8 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
                         std::move(nuisance),    std::move(remaining),
                         std::move(currentSims), std::move(currentResiduals),
                         std::move(*currentHeld)};
-    const StopAt stopAt = stop;
-    for (int round = 0; round < options.maxCauses && !extended.remaining.empty(); ++round) {
-        auto named = selectionRound(*prepared, round, refit, stopAt, extended, result);
-        if (!named) {
-            return named.error();
-        }
-        if (!*named) {
-            break;
-        }
+    if (auto st = selectCauses(*prepared, refit, stop, extended, result); !st) {
+        return st.error();
     }
 
     if (stop(0.95, "what is left")) {

@@ -397,6 +397,10 @@ using StopAt = std::function<bool(double fraction, const std::string& detail)>;
 /// @p model by it. True when a cause was named.
 Expected<bool> selectionRound(const Prepared& prepared, int round, const CauseFit& refit, const StopAt& stop,
                               ModelSoFar& model, DiscoveryResult& result);
+/// The rounds of selection, one cause at a time, until a round names none or
+/// DiscoveryOptions::maxCauses are named.
+Status selectCauses(const Prepared& prepared, const CauseFit& refit, const StopAt& stop, ModelSoFar& model,
+                    DiscoveryResult& result);
 /// The end of selection: every finding restated at the extended model @p extended (later rounds
 /// refit the causes named before), the bounds of what the last round tested and did not name,
 /// what no cause explains (@p residuals: the extended model's, @p sims its simulation), the

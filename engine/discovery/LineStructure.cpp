@@ -207,53 +207,61 @@ LineStructure learnLineStructure(const std::vector<data::SiBatch>& reference,
                                  const std::vector<physics::SimulationResult>& refSims) {
     LineStructure out;
     std::vector<Eigen::MatrixXd> features;
+    std::vector<const physics::SimulationResult*> sims;
     for (std::size_t b = 0; b < reference.size(); ++b) {
         features.push_back(featuresOf(reference[b], refSims[b]));
+        sims.push_back(&refSims[b]);
     }
+    // One fold per part: the rows of every other part train, the part's own rows test. Their
+    // rows per channel are gathered once; only the ridge fit changes with the penalty.
     const auto parts = partsOf(reference);
-    // The penalty by cross-validation over the parts (each predicted by a fit on the others),
-    // the channels' squared errors weighted alike (each in its own units, relative to its variance).
+    struct Fold {
+        std::array<Rows, 4> train, test;
+    };
+    std::vector<Fold> folds(parts.size());
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        std::vector<data::SiBatch> train, test;
+        for (std::size_t b = 0; b < reference.size(); ++b) {
+            std::size_t lo = 0, hi = 0;
+            for (const auto& [pb, range] : parts[p]) {
+                if (pb == b) {
+                    lo = range.first;
+                    hi = range.second;
+                }
+            }
+            train.push_back(masked(reference[b], lo, hi, false));
+            test.push_back(masked(reference[b], lo, hi, true));
+        }
+        std::vector<const data::SiBatch*> trainPtr, testPtr;
+        for (std::size_t b = 0; b < reference.size(); ++b) {
+            trainPtr.push_back(&train[b]);
+            testPtr.push_back(&test[b]);
+        }
+        for (int c = 0; c < 4; ++c) {
+            folds[p].train[static_cast<std::size_t>(c)] = rowsOf(trainPtr, sims, features, c);
+            folds[p].test[static_cast<std::size_t>(c)] = rowsOf(testPtr, sims, features, c);
+        }
+    }
+    // The penalty by cross-validation over the folds, the channels' squared errors weighted
+    // alike (each relative to its own variance about the training mean).
     double bestScore = INFINITY;
     double bestLambda = kLambdas[2];
     for (double lambda : kLambdas) {
         double score = 0;
-        for (int c = 0; c < 4; ++c) {
+        for (std::size_t c = 0; c < 4; ++c) {
             double sse = 0, sst = 0;
-            for (std::size_t p = 0; p < parts.size(); ++p) {
-                std::vector<data::SiBatch> train, test;
-                std::vector<const data::SiBatch*> trainPtr, testPtr;
-                std::vector<const physics::SimulationResult*> trainSim;
-                for (std::size_t b = 0; b < reference.size(); ++b) {
-                    // This batch's rows of part p are tested; its other rows train.
-                    std::size_t lo = 0, hi = 0;
-                    for (const auto& [pb, range] : parts[p]) {
-                        if (pb == b) {
-                            lo = range.first;
-                            hi = range.second;
-                        }
-                    }
-                    train.push_back(masked(reference[b], lo, hi, false));
-                    test.push_back(masked(reference[b], lo, hi, true));
-                }
-                for (std::size_t b = 0; b < reference.size(); ++b) {
-                    trainPtr.push_back(&train[b]);
-                    testPtr.push_back(&test[b]);
-                    trainSim.push_back(&refSims[b]);
-                }
-                const Rows tr = rowsOf(trainPtr, trainSim, features, c);
-                const Rows te = rowsOf(testPtr, trainSim, features, c);
+            for (const auto& fold : folds) {
+                const Rows& tr = fold.train[c];
+                const Rows& te = fold.test[c];
                 const ChannelFit fit = fitRidge(tr, lambda);
                 if (!fit.ok || te.y.size() == 0) {
                     continue;
                 }
+                const double trainMean = tr.y.mean();
                 for (Eigen::Index i = 0; i < te.y.size(); ++i) {
-                    const double e =
-                        te.y(i) -
-                        (fit.intercept + ((te.x.row(i).transpose() - fit.mean).array() / fit.sd.array())
-                                             .matrix()
-                                             .dot(fit.beta));
+                    const double e = te.y(i) - predictRow(fit, te.x, i);
                     sse += e * e;
-                    sst += (te.y(i) - tr.y.mean()) * (te.y(i) - tr.y.mean());
+                    sst += (te.y(i) - trainMean) * (te.y(i) - trainMean);
                 }
             }
             score += sst > 0 ? sse / sst : 0;
@@ -265,42 +273,24 @@ LineStructure learnLineStructure(const std::vector<data::SiBatch>& reference,
     }
     out.lambda = bestLambda;
     std::vector<const data::SiBatch*> all;
-    std::vector<const physics::SimulationResult*> allSims;
-    for (std::size_t b = 0; b < reference.size(); ++b) {
-        all.push_back(&reference[b]);
-        allSims.push_back(&refSims[b]);
+    for (const auto& b : reference) {
+        all.push_back(&b);
     }
     std::array<ChannelFit, 4> fits;
     for (int c = 0; c < 4; ++c) {
-        fits[static_cast<std::size_t>(c)] = fitRidge(rowsOf(all, allSims, features, c), bestLambda);
+        fits[static_cast<std::size_t>(c)] = fitRidge(rowsOf(all, sims, features, c), bestLambda);
         out.fitted[static_cast<std::size_t>(c)] = fits[static_cast<std::size_t>(c)].ok;
     }
     out.apply = [fits](const data::SiBatch& b, const physics::SimulationResult& s) {
         return corrected(b, featuresOf(b, s), fits);
     };
-    // The reference itself, each part corrected by a fit on the other parts: its normal values
-    // and its monitor's null then carry the structure model's own error, as new data will.
+    // The reference itself, each part corrected by its fold's fit on the other parts: its normal
+    // values and its monitor's null then carry the structure model's own error, as new data will.
     out.referenceCorrected = reference;
     for (std::size_t p = 0; p < parts.size(); ++p) {
-        std::vector<data::SiBatch> train;
-        std::vector<const data::SiBatch*> trainPtr;
-        for (std::size_t b = 0; b < reference.size(); ++b) {
-            std::size_t lo = 0, hi = 0;
-            for (const auto& [pb, range] : parts[p]) {
-                if (pb == b) {
-                    lo = range.first;
-                    hi = range.second;
-                }
-            }
-            train.push_back(masked(reference[b], lo, hi, false));
-        }
-        for (auto& t : train) {
-            trainPtr.push_back(&t);
-        }
         std::array<ChannelFit, 4> partFits;
-        for (int c = 0; c < 4; ++c) {
-            partFits[static_cast<std::size_t>(c)] =
-                fitRidge(rowsOf(trainPtr, allSims, features, c), bestLambda);
+        for (std::size_t c = 0; c < 4; ++c) {
+            partFits[c] = fitRidge(folds[p].train[c], bestLambda);
         }
         for (const auto& [b, range] : parts[p]) {
             const data::SiBatch fixed = corrected(reference[b], features[b], partFits);

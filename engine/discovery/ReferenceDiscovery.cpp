@@ -437,15 +437,8 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
             return st.error();
         }
     }
-    const StopAt stopAt = stop;
-    for (int round = 0; round < options.maxCauses && !extended.remaining.empty(); ++round) {
-        auto named = selectionRound(*prepared, round, refit, stopAt, extended, result);
-        if (!named) {
-            return named.error();
-        }
-        if (!*named) {
-            break;
-        }
+    if (auto st = selectCauses(*prepared, refit, stop, extended, result); !st) {
+        return st.error();
     }
     testCauses(result.ranking, result.detection);
     if (stop(0.95, "what is left")) {

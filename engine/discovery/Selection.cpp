@@ -254,6 +254,20 @@ Status SelectionRound::nameWithLookAlikes() {
     return {};
 }
 
+Status selectCauses(const Prepared& prepared, const CauseFit& refit, const StopAt& stop, ModelSoFar& model,
+                    DiscoveryResult& result) {
+    for (int round = 0; round < prepared.pr.options.maxCauses && !model.remaining.empty(); ++round) {
+        auto named = selectionRound(prepared, round, refit, stop, model, result);
+        if (!named) {
+            return named.error();
+        }
+        if (!*named) {
+            break;
+        }
+    }
+    return {};
+}
+
 Expected<bool> selectionRound(const Prepared& prepared, int round, const CauseFit& refit, const StopAt& stop,
                               ModelSoFar& model, DiscoveryResult& result) {
     return SelectionRound(prepared, round, refit, stop, model, result).run();
