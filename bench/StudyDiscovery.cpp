@@ -400,8 +400,8 @@ int main(int argc, char** argv) {
         }
     }
     if (onsetRuns > 0) {
-        std::printf("Onsets named with the onset within %d min: %d of %d (%.0f %%).\n", againstReference ? 5 : 10,
-                    onsetRight, onsetRuns, 100.0 * onsetRight / onsetRuns);
+        std::printf("Onsets named with the onset within %d min: %d of %d (%.0f %%).\n",
+                    againstReference ? 5 : 10, onsetRight, onsetRuns, 100.0 * onsetRight / onsetRuns);
     }
     return 0;
 }

@@ -16,8 +16,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace drytwin::discovery {
 
@@ -341,12 +339,6 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
         for (std::size_t i = 0; i < remaining.size(); ++i) {
             ref.linear[remaining[i]] =
                 normalValue(normalPr, *refStack, static_cast<int>(i), options.consistencyTolerance);
-            if (std::getenv("DRYTWIN_DEBUG_REFERENCE")) {
-                const auto& rv = ref.linear[remaining[i]];
-                std::fprintf(stderr, "reference %s: %.4g se %.3g spread %.3g\n",
-                             std::string(properties::info(remaining[i]).symbol).c_str(), rv.value, rv.se,
-                             rv.spread);
-            }
         }
     }
     // A cause fitted on the reference alone, once, when a finding asks for its normal value; a
@@ -408,7 +400,7 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     result.trainingRows = prepared->keptTrain;
     result.heldOutRows = prepared->keptTest;
 
-    std::vector<physics::SimulationResult> sims = *newSims;
+    std::vector<physics::SimulationResult> sims = std::move(*newSims);
     result.residuals = analyse(pr, sims);
     auto held = heldOut(pr, commissionedParameters);
     if (!held) {

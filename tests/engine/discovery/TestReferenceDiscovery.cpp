@@ -119,19 +119,6 @@ private Q_SLOTS:
     /// A meter that reads 0.4 % wb high: a change the outlet meter's own history shows.
     void meterOffsetAgainstAHealthyReferenceIsNamed() {
         const auto r = judge(plantData(43, {{Mechanism::MoistureMeterOffset, 0.4}}));
-        if (qEnvironmentVariableIsSet("DRYTWIN_DEBUG")) {
-            const auto& d = r.detection.drytwin;
-            qInfo("components %d var %.3f limits t2w %.3g spew %.3g", d.components, d.varianceExplainedActual,
-                  d.limits.t2Window, d.limits.speWindow);
-            for (std::size_t i = 0; i < d.series.size(); i += 5) {
-                const auto& w = d.series[i];
-                qInfo("%s %.0f t2 %.3g spe %.3g z %.2f %.2f", w.run.c_str(), w.timeS, w.t2, w.spe, w.zT2,
-                      w.zSpe);
-            }
-            for (const auto& c : d.contributions) {
-                qInfo("%s spe %.3f t2 %.3f", c.column.c_str(), c.speShare, c.t2Share);
-            }
-        }
         QVERIFY2(namesFirst(r, "moisture_meter_offset"), qPrintable(story(r)));
         QVERIFY2(r.detection.drytwinChanged, qPrintable(story(r)));
     }
