@@ -1,0 +1,512 @@
+// The input-driven correction of the PBM's free run (issue #42): basis, fit, cross-validation.
+#include "residual/InputDrivenCorrection.h"
+
+#include "common/Units.h"
+#include "residual/EigenJson.h"
+#include "residual/ResidualModel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+namespace drytwin::residual {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr int kOutputs = 2; // outlet moisture (% wb) and temperature (°C)
+constexpr int kProxyInputs = 8; // six proxy states and the PBM's two outlet outputs
+
+/// Median sample step of a batch [s]; 1 s when it cannot be told.
+double medianStep(const data::SiBatch& b) {
+    std::vector<double> d;
+    for (std::size_t k = 1; k < b.timeS.size(); ++k) {
+        const double s = b.timeS[k] - b.timeS[k - 1];
+        if (std::isfinite(s) && s > 0) {
+            d.push_back(s);
+        }
+    }
+    if (d.empty()) {
+        return 1.0;
+    }
+    std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+    return d[d.size() / 2];
+}
+
+/// The measured minus the PBM's outlet outputs at row k (% wb, °C).
+bool pbmError(const data::SiBatch& b, const physics::SimulationResult& pbm, std::size_t k, Eigen::Vector2d& e) {
+    e(0) = units::dryToWetPct(b.xOutDb[k]) - units::dryToWetPct(pbm.xOutDb[k]);
+    e(1) = b.tOutK[k] - pbm.tOutK[k];
+    return e.allFinite() && (b.keep.empty() || b.keep[k] != 0);
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) {
+        return 0;
+    }
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+/// A contiguous run of stacked training rows that belongs to one cross-validation fold.
+struct Segment {
+    Eigen::Index begin = 0, end = 0;
+    int fold = 0;
+};
+
+/// Ridge coefficients of one output from Gram G and right-hand side r; the constant (column 0)
+/// is not penalised.
+Eigen::VectorXd ridgeSolve(Eigen::MatrixXd gram, const Eigen::VectorXd& rhs, double penalty) {
+    gram.diagonal().tail(gram.rows() - 1).array() += penalty;
+    gram(0, 0) += 1e-9 * std::max(1.0, gram(0, 0));
+    return gram.ldlt().solve(rhs);
+}
+
+} // namespace
+
+Status InputDrivenOptions::validate() const {
+    if (basis == InputBasis::FilterBank) {
+        if (timeConstantsS.empty() || cascadeOrder < 1 || cascadeOrder > 4) {
+            return Error{ErrorKind::Usage, "input-driven correction",
+                         "needs at least one time constant and a cascade order of 1 to 4"};
+        }
+        for (double t : timeConstantsS) {
+            if (!(t > 0 && std::isfinite(t))) {
+                return Error{ErrorKind::Usage, "input-driven correction", "time constants must be positive seconds"};
+            }
+        }
+    } else if (!(lagStrideS > 0 && maxLagS >= 0 && maxLagS / lagStrideS <= 200)) {
+        return Error{ErrorKind::Usage, "input-driven correction",
+                     "lags need a positive stride and at most 200 of them"};
+    }
+    if (ridgeGrid.empty() || !(rangeMargin >= 0) || !(outlierCutoff > 1)) {
+        return Error{ErrorKind::Usage, "input-driven correction",
+                     "needs ridge penalties, a range margin ≥ 0 and an outlier cut-off > 1"};
+    }
+    for (double r : ridgeGrid) {
+        if (!(r > 0)) {
+            return Error{ErrorKind::Usage, "input-driven correction", "ridge penalties must be positive"};
+        }
+    }
+    return {};
+}
+
+int InputDrivenCorrection::inputCount() const {
+    return 7 + (m_options.useProxies ? kProxyInputs : 0);
+}
+
+Eigen::MatrixXd InputDrivenCorrection::inputSeries(const data::SiBatch& b, const physics::SimulationResult& p) const {
+    const std::size_t rows = std::min(b.rows(), p.xOutDb.size());
+    const int n = inputCount();
+    Eigen::MatrixXd z(static_cast<Eigen::Index>(rows), n);
+    for (std::size_t k = 0; k < rows; ++k) {
+        std::vector<double> row{b.tHotK[k], b.feedKgPerS[k], b.xInDb[k],          b.tInK[k],
+                                b.tAmbK[k], b.rhAmb[k],      b.airSpeedMPerS[k]};
+        if (m_options.useProxies) {
+            for (double x : {p.proxyXHdtDb[k], p.proxyTHdtK[k], p.proxyXConvDb[k], p.proxyTConvK[k],
+                             p.proxyXMixDb[k], p.proxyTMixK[k], units::dryToWetPct(p.xOutDb[k]), p.tOutK[k]}) {
+                row.push_back(x);
+            }
+        }
+        for (int j = 0; j < n; ++j) {
+            z(static_cast<Eigen::Index>(k), j) = row[static_cast<std::size_t>(j)];
+        }
+    }
+    // A dropout holds the last value (the first finite one before it), as a simulator must.
+    for (int j = 0; j < n; ++j) {
+        double last = kNaN;
+        for (Eigen::Index k = 0; k < z.rows(); ++k) {
+            if (std::isfinite(z(k, j))) {
+                last = z(k, j);
+                break;
+            }
+        }
+        for (Eigen::Index k = 0; k < z.rows(); ++k) {
+            if (std::isfinite(z(k, j))) {
+                last = z(k, j);
+            } else {
+                z(k, j) = last;
+            }
+        }
+    }
+    return z;
+}
+
+Eigen::MatrixXd InputDrivenCorrection::basisOf(const Eigen::MatrixXd& raw, double stepS) const {
+    const Eigen::Index rows = raw.rows(), n = raw.cols();
+    Eigen::MatrixXd z(rows, n);
+    for (Eigen::Index k = 0; k < rows; ++k) {
+        const Eigen::VectorXd s = (raw.row(k).transpose() - m_inputMean).cwiseQuotient(m_inputScale);
+        z.row(k) = s.cwiseMax(m_inputLow).cwiseMin(m_inputHigh).transpose();
+    }
+    if (m_options.basis == InputBasis::LaggedInputs) {
+        const int lags = static_cast<int>(std::floor(m_options.maxLagS / m_options.lagStrideS)) + 1;
+        const auto stride = std::max<Eigen::Index>(1, std::lround(m_options.lagStrideS / stepS));
+        Eigen::MatrixXd phi(rows, 1 + n * lags);
+        phi.col(0).setOnes();
+        for (int l = 0; l < lags; ++l) {
+            for (Eigen::Index k = 0; k < rows; ++k) {
+                // Before the batch's first row the line is taken to have stood at its first inputs.
+                phi.row(k).segment(1 + l * n, n) = z.row(std::max<Eigen::Index>(0, k - l * stride));
+            }
+        }
+        return phi;
+    }
+    const int stages = m_options.cascadeOrder;
+    const auto bank = static_cast<Eigen::Index>(m_options.timeConstantsS.size());
+    const bool quadratic = m_options.quadraticTimeConstantS > 0;
+    const Eigen::Index products = quadratic ? n * (n + 1) / 2 : 0;
+    Eigen::MatrixXd phi(rows, 1 + n + bank * stages * n + products);
+    phi.col(0).setOnes();
+    phi.middleCols(1, n) = z;
+    for (Eigen::Index t = 0; t < bank; ++t) {
+        const double a = std::exp(-stepS / m_options.timeConstantsS[static_cast<std::size_t>(t)]);
+        // Each stage starts settled at the first inputs: the line ran before the batch began.
+        Eigen::MatrixXd state = z.row(0).replicate(stages, 1);
+        for (Eigen::Index k = 0; k < rows; ++k) {
+            Eigen::RowVectorXd in = z.row(k);
+            for (int s = 0; s < stages; ++s) {
+                state.row(s) = a * state.row(s) + (1 - a) * in;
+                in = state.row(s);
+                phi.row(k).segment(1 + n + (t * stages + s) * n, n) = state.row(s);
+            }
+        }
+    }
+    if (quadratic) {
+        const double a = std::exp(-stepS / m_options.quadraticTimeConstantS);
+        Eigen::MatrixXd state = z.row(0).replicate(stages, 1);
+        const Eigen::Index at = 1 + n + bank * stages * n;
+        for (Eigen::Index k = 0; k < rows; ++k) {
+            Eigen::RowVectorXd in = z.row(k);
+            for (int s = 0; s < stages; ++s) {
+                state.row(s) = a * state.row(s) + (1 - a) * in;
+                in = state.row(s);
+            }
+            Eigen::Index c = at;
+            for (Eigen::Index i = 0; i < n; ++i) {
+                for (Eigen::Index j = i; j < n; ++j) {
+                    phi(k, c++) = in(i) * in(j);
+                }
+            }
+        }
+    }
+    return phi;
+}
+
+Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<BatchView>& views,
+                                                             const InputDrivenOptions& options) {
+    if (auto s = options.validate(); !s) {
+        return s.error();
+    }
+    InputDrivenCorrection m;
+    m.m_options = options;
+    const int n = m.inputCount();
+    // Raw inputs of every batch up to the end of its view, and the training rows' statistics.
+    std::vector<Eigen::MatrixXd> raw;
+    Eigen::VectorXd sum = Eigen::VectorXd::Zero(n), sumSq = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd low = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity());
+    Eigen::VectorXd high = -low;
+    double count = 0;
+    for (const auto& v : views) {
+        raw.push_back(m.inputSeries(*v.batch, *v.pbm));
+        const auto& z = raw.back();
+        for (std::size_t k = v.rows.begin; k < std::min<std::size_t>(v.rows.end, z.rows()); ++k) {
+            const Eigen::VectorXd r = z.row(static_cast<Eigen::Index>(k)).transpose();
+            if (!r.allFinite()) {
+                continue;
+            }
+            sum += r;
+            sumSq += r.cwiseProduct(r);
+            low = low.cwiseMin(r);
+            high = high.cwiseMax(r);
+            count += 1;
+        }
+    }
+    if (count < 50) {
+        return Error{ErrorKind::BadInput, "input-driven correction",
+                     "fewer than 50 training rows with every input present"};
+    }
+    m.m_stepS = medianStep(*views.front().batch);
+    m.m_inputMean = sum / count;
+    const Eigen::VectorXd var = (sumSq / count - m.m_inputMean.cwiseProduct(m.m_inputMean)).cwiseMax(0.0);
+    m.m_inputScale = var.cwiseSqrt().unaryExpr([](double s) { return s > 1e-12 ? s : 1.0; });
+    const Eigen::VectorXd lo = (low - m.m_inputMean).cwiseQuotient(m.m_inputScale);
+    const Eigen::VectorXd hi = (high - m.m_inputMean).cwiseQuotient(m.m_inputScale);
+    m.m_inputLow = lo - options.rangeMargin * (hi - lo);
+    m.m_inputHigh = hi + options.rangeMargin * (hi - lo);
+
+    // Stack the training rows' basis and targets, remembering each row's fold.
+    std::vector<Eigen::RowVectorXd> phiRows;
+    std::vector<Eigen::Vector2d> targets;
+    std::vector<Segment> segments;
+    const bool batchFolds = views.size() >= 3;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        const auto& v = views[i];
+        const Eigen::MatrixXd phi = m.basisOf(raw[i], medianStep(*v.batch));
+        const std::size_t end = std::min<std::size_t>(v.rows.end, static_cast<std::size_t>(phi.rows()));
+        const std::size_t span = end > v.rows.begin ? end - v.rows.begin : 0;
+        for (int block = 0; block < (batchFolds ? 1 : 3); ++block) {
+            Segment seg;
+            seg.begin = static_cast<Eigen::Index>(phiRows.size());
+            seg.fold = batchFolds ? static_cast<int>(i) : block;
+            const std::size_t from = v.rows.begin + (batchFolds ? 0 : span * block / 3);
+            const std::size_t to = batchFolds ? end : v.rows.begin + span * (block + 1) / 3;
+            for (std::size_t k = from; k < to; ++k) {
+                Eigen::Vector2d e;
+                const auto row = phi.row(static_cast<Eigen::Index>(k));
+                if (pbmError(*v.batch, *v.pbm, k, e) && row.allFinite()) {
+                    phiRows.push_back(row);
+                    targets.push_back(e);
+                }
+            }
+            seg.end = static_cast<Eigen::Index>(phiRows.size());
+            if (seg.end > seg.begin) {
+                segments.push_back(seg);
+            }
+        }
+    }
+    const auto rows = static_cast<Eigen::Index>(phiRows.size());
+    if (rows < 50) {
+        return Error{ErrorKind::BadInput, "input-driven correction",
+                     "fewer than 50 training rows with the outlet outputs measured"};
+    }
+    const Eigen::Index features = phiRows.front().size();
+    Eigen::MatrixXd phi(rows, features);
+    Eigen::MatrixXd y(rows, kOutputs);
+    for (Eigen::Index r = 0; r < rows; ++r) {
+        phi.row(r) = phiRows[static_cast<std::size_t>(r)];
+        y.row(r) = targets[static_cast<std::size_t>(r)].transpose();
+    }
+    phiRows.clear();
+    // Standardised basis columns (the constant stays 1), so that one penalty suits every column.
+    m.m_featureMean = phi.colwise().mean().transpose();
+    m.m_featureMean(0) = 0;
+    m.m_featureScale =
+        ((phi.rowwise() - m.m_featureMean.transpose()).colwise().squaredNorm().transpose() / double(rows))
+            .cwiseSqrt()
+            .unaryExpr([](double s) { return s > 1e-9 ? s : 1.0; });
+    m.m_featureScale(0) = 1;
+    phi = (phi.rowwise() - m.m_featureMean.transpose()).array().rowwise() / m.m_featureScale.transpose().array();
+
+    // Transmitter spikes in the outputs: one fit, rows far outside the robust spread dropped.
+    std::vector<char> inlier(static_cast<std::size_t>(rows), 1);
+    {
+        const double middle = options.ridgeGrid[options.ridgeGrid.size() / 2] * double(rows);
+        const Eigen::MatrixXd gram = phi.transpose() * phi;
+        const Eigen::MatrixXd rhs = phi.transpose() * y;
+        for (int o = 0; o < kOutputs; ++o) {
+            const Eigen::VectorXd res = y.col(o) - phi * ridgeSolve(gram, rhs.col(o), middle);
+            std::vector<double> abs(res.data(), res.data() + res.size());
+            for (double& a : abs) {
+                a = std::abs(a);
+            }
+            const double spread = 1.4826 * median(abs);
+            for (Eigen::Index r = 0; r < rows; ++r) {
+                if (spread > 0 && std::abs(res(r)) > options.outlierCutoff * spread) {
+                    inlier[static_cast<std::size_t>(r)] = 0;
+                }
+            }
+        }
+    }
+    int folds = 0;
+    for (const auto& s : segments) {
+        folds = std::max(folds, s.fold + 1);
+    }
+    std::vector<Eigen::MatrixXd> foldGram(static_cast<std::size_t>(folds), Eigen::MatrixXd::Zero(features, features));
+    std::vector<Eigen::MatrixXd> foldRhs(static_cast<std::size_t>(folds), Eigen::MatrixXd::Zero(features, kOutputs));
+    for (const auto& s : segments) {
+        Eigen::MatrixXd p = phi.middleRows(s.begin, s.end - s.begin);
+        Eigen::MatrixXd t = y.middleRows(s.begin, s.end - s.begin);
+        for (Eigen::Index r = 0; r < p.rows(); ++r) {
+            if (!inlier[static_cast<std::size_t>(s.begin + r)]) {
+                p.row(r).setZero();
+                t.row(r).setZero();
+            }
+        }
+        foldGram[static_cast<std::size_t>(s.fold)] += p.transpose() * p;
+        foldRhs[static_cast<std::size_t>(s.fold)] += p.transpose() * t;
+    }
+    Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(features, features);
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(features, kOutputs);
+    for (int f = 0; f < folds; ++f) {
+        gram += foldGram[static_cast<std::size_t>(f)];
+        rhs += foldRhs[static_cast<std::size_t>(f)];
+    }
+    // Cross-validated absolute error per penalty and output, judged on every row of the held-out
+    // fold (spikes included: that is what a user's data holds).
+    m.m_coefficients = Eigen::MatrixXd::Zero(features, kOutputs);
+    auto& val = m.m_validation;
+    val.folds = folds;
+    double pbmAbs[kOutputs] = {0, 0};
+    for (const auto& s : segments) {
+        pbmAbs[0] += y.col(0).segment(s.begin, s.end - s.begin).cwiseAbs().sum();
+        pbmAbs[1] += y.col(1).segment(s.begin, s.end - s.begin).cwiseAbs().sum();
+    }
+    for (int o = 0; o < kOutputs; ++o) {
+        double best = std::numeric_limits<double>::infinity();
+        double bestPenalty = options.ridgeGrid.front();
+        for (double ridge : options.ridgeGrid) {
+            const double penalty = ridge * double(rows);
+            std::vector<Eigen::VectorXd> beta(static_cast<std::size_t>(folds));
+            for (int f = 0; f < folds; ++f) {
+                beta[static_cast<std::size_t>(f)] =
+                    ridgeSolve(gram - foldGram[static_cast<std::size_t>(f)],
+                               rhs.col(o) - foldRhs[static_cast<std::size_t>(f)].col(o), penalty);
+            }
+            double abs = 0;
+            for (const auto& s : segments) {
+                abs += (y.col(o).segment(s.begin, s.end - s.begin) -
+                        phi.middleRows(s.begin, s.end - s.begin) * beta[static_cast<std::size_t>(s.fold)])
+                           .cwiseAbs()
+                           .sum();
+            }
+            if (abs < best) {
+                best = abs;
+                bestPenalty = ridge;
+            }
+        }
+        const bool better = best < pbmAbs[o];
+        (o == 0 ? val.maeMoisturePbm : val.maeTemperaturePbm) = pbmAbs[o] / double(rows);
+        (o == 0 ? val.maeMoistureCorrected : val.maeTemperatureCorrected) = (better ? best : pbmAbs[o]) / double(rows);
+        (o == 0 ? val.moistureUsed : val.temperatureUsed) = better;
+        if (o == 0) {
+            val.ridge = bestPenalty;
+        }
+        if (better) {
+            m.m_coefficients.col(o) = ridgeSolve(gram, rhs.col(o), bestPenalty * double(rows));
+        } else {
+            val.note += std::string(val.note.empty() ? "" : " ") + (o == 0 ? "Outlet moisture" : "Outlet temperature") +
+                        ": the input-driven correction did not beat the physics model on held-out parts of the "
+                        "training data, so the physics model's free run is used as it is.";
+        }
+    }
+    return m;
+}
+
+void InputDrivenCorrection::correct(const data::SiBatch& batch, const physics::SimulationResult& pbm,
+                                    std::vector<double>& moisturePct, std::vector<double>& temperatureC) const {
+    moisturePct.assign(batch.rows(), kNaN);
+    temperatureC.assign(batch.rows(), kNaN);
+    if (m_coefficients.size() == 0) {
+        return;
+    }
+    const Eigen::MatrixXd raw = inputSeries(batch, pbm);
+    if (raw.rows() == 0) {
+        return;
+    }
+    Eigen::MatrixXd phi = basisOf(raw, medianStep(batch));
+    phi = (phi.rowwise() - m_featureMean.transpose()).array().rowwise() / m_featureScale.transpose().array();
+    const Eigen::MatrixXd out = phi * m_coefficients;
+    for (Eigen::Index k = 0; k < out.rows(); ++k) {
+        if (out.row(k).allFinite()) {
+            moisturePct[static_cast<std::size_t>(k)] = out(k, 0);
+            temperatureC[static_cast<std::size_t>(k)] = out(k, 1);
+        }
+    }
+}
+
+physics::SimulationResult InputDrivenCorrection::corrected(const data::SiBatch& batch,
+                                                           const physics::SimulationResult& pbm) const {
+    physics::SimulationResult out = pbm;
+    if (!used()) {
+        return out;
+    }
+    std::vector<double> cx, ct;
+    correct(batch, pbm, cx, ct);
+    for (std::size_t k = 0; k < std::min(cx.size(), out.xOutDb.size()); ++k) {
+        if (std::isfinite(cx[k]) && std::isfinite(ct[k])) {
+            out.xOutDb[k] = units::wetPctToDry(units::dryToWetPct(out.xOutDb[k]) + cx[k]);
+            out.tOutK[k] += ct[k];
+        }
+    }
+    return out;
+}
+
+std::string InputDrivenCorrection::toJson() const {
+    nlohmann::json j;
+    const auto& o = m_options;
+    j["basis"] = o.basis == InputBasis::FilterBank ? "filter_bank" : "lagged_inputs";
+    j["use_proxies"] = o.useProxies;
+    j["time_constants_s"] = o.timeConstantsS;
+    j["cascade_order"] = o.cascadeOrder;
+    j["quadratic_time_constant_s"] = o.quadraticTimeConstantS;
+    j["max_lag_s"] = o.maxLagS;
+    j["lag_stride_s"] = o.lagStrideS;
+    j["range_margin"] = o.rangeMargin;
+    j["input_mean"] = vectorToJson(m_inputMean);
+    j["input_scale"] = vectorToJson(m_inputScale);
+    j["input_low"] = vectorToJson(m_inputLow);
+    j["input_high"] = vectorToJson(m_inputHigh);
+    j["feature_mean"] = vectorToJson(m_featureMean);
+    j["feature_scale"] = vectorToJson(m_featureScale);
+    j["coefficients"] = matrixToJson(m_coefficients);
+    j["step_s"] = m_stepS;
+    const auto& v = m_validation;
+    j["validation"] = {{"ridge", v.ridge},
+                       {"folds", v.folds},
+                       {"mae_moisture_pbm", v.maeMoisturePbm},
+                       {"mae_moisture_corrected", v.maeMoistureCorrected},
+                       {"mae_temperature_pbm", v.maeTemperaturePbm},
+                       {"mae_temperature_corrected", v.maeTemperatureCorrected},
+                       {"moisture_used", v.moistureUsed},
+                       {"temperature_used", v.temperatureUsed},
+                       {"note", v.note}};
+    return j.dump();
+}
+
+Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::string& text) {
+    try {
+        const auto j = nlohmann::json::parse(text);
+        InputDrivenCorrection m;
+        auto& o = m.m_options;
+        o.basis = j.at("basis").get<std::string>() == "lagged_inputs" ? InputBasis::LaggedInputs
+                                                                     : InputBasis::FilterBank;
+        o.useProxies = j.at("use_proxies").get<bool>();
+        o.timeConstantsS = j.at("time_constants_s").get<std::vector<double>>();
+        o.cascadeOrder = j.at("cascade_order").get<int>();
+        o.quadraticTimeConstantS = j.at("quadratic_time_constant_s").get<double>();
+        o.maxLagS = j.at("max_lag_s").get<double>();
+        o.lagStrideS = j.at("lag_stride_s").get<double>();
+        o.rangeMargin = j.at("range_margin").get<double>();
+        if (auto s = o.validate(); !s) {
+            return s.error();
+        }
+        m.m_inputMean = vectorFromJson(j.at("input_mean"));
+        m.m_inputScale = vectorFromJson(j.at("input_scale"));
+        m.m_inputLow = vectorFromJson(j.at("input_low"));
+        m.m_inputHigh = vectorFromJson(j.at("input_high"));
+        m.m_featureMean = vectorFromJson(j.at("feature_mean"));
+        m.m_featureScale = vectorFromJson(j.at("feature_scale"));
+        m.m_coefficients = matrixFromJson(j.at("coefficients"));
+        m.m_stepS = j.at("step_s").get<double>();
+        const auto& v = j.at("validation");
+        auto& val = m.m_validation;
+        val.ridge = v.at("ridge").get<double>();
+        val.folds = v.at("folds").get<int>();
+        val.maeMoisturePbm = v.at("mae_moisture_pbm").get<double>();
+        val.maeMoistureCorrected = v.at("mae_moisture_corrected").get<double>();
+        val.maeTemperaturePbm = v.at("mae_temperature_pbm").get<double>();
+        val.maeTemperatureCorrected = v.at("mae_temperature_corrected").get<double>();
+        val.moistureUsed = v.at("moisture_used").get<bool>();
+        val.temperatureUsed = v.at("temperature_used").get<bool>();
+        val.note = v.at("note").get<std::string>();
+        const int n = m.inputCount();
+        const Eigen::Index features = m.m_options.basis == InputBasis::FilterBank
+                                          ? 1 + n + static_cast<Eigen::Index>(o.timeConstantsS.size()) *
+                                                        o.cascadeOrder * n +
+                                                    (o.quadraticTimeConstantS > 0 ? n * (n + 1) / 2 : 0)
+                                          : 1 + n * (static_cast<Eigen::Index>(std::floor(o.maxLagS / o.lagStrideS)) + 1);
+        if (m.m_inputMean.size() != n || m.m_inputScale.size() != n || m.m_inputLow.size() != n ||
+            m.m_inputHigh.size() != n || m.m_featureMean.size() != features ||
+            m.m_featureScale.size() != features || m.m_coefficients.rows() != features ||
+            m.m_coefficients.cols() != kOutputs) {
+            return Error{ErrorKind::BadInput, "input_driven", "sizes of the stored correction do not agree"};
+        }
+        return m;
+    } catch (const std::exception& e) {
+        return Error{ErrorKind::BadInput, "input_driven", e.what()};
+    }
+}
+
+} // namespace drytwin::residual
