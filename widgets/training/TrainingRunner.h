@@ -49,7 +49,7 @@ class TrainingWorker;
 /// and MPC decisions never block the GUI), in real time or accelerated. Commands from the
 /// operator, the instructor and the trainee are queued to that thread in the order given; the
 /// GUI learns the result from frames and from failed(). Not a Workbench job: the session has its
-/// own clock and must run on while a Discover job holds the engine thread (README, Layout).
+/// own clock and must run on while a Discover job holds the engine thread (docs/architecture.md).
 /// Create and use from the GUI thread.
 class TrainingRunner : public QObject {
     Q_OBJECT
