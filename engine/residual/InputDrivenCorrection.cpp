@@ -15,7 +15,7 @@ namespace drytwin::residual {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr int kOutputs = 2; // outlet moisture (% wb) and temperature (°C)
+constexpr int kOutputs = 2;     // outlet moisture (% wb) and temperature (°C)
 constexpr int kProxyInputs = 8; // six proxy states and the PBM's two outlet outputs
 
 /// Median sample step of a batch [s]; 1 s when it cannot be told.
@@ -35,7 +35,8 @@ double medianStep(const data::SiBatch& b) {
 }
 
 /// The measured minus the PBM's outlet outputs at row k (% wb, °C).
-bool pbmError(const data::SiBatch& b, const physics::SimulationResult& pbm, std::size_t k, Eigen::Vector2d& e) {
+bool pbmError(const data::SiBatch& b, const physics::SimulationResult& pbm, std::size_t k,
+              Eigen::Vector2d& e) {
     e(0) = units::dryToWetPct(b.xOutDb[k]) - units::dryToWetPct(pbm.xOutDb[k]);
     e(1) = b.tOutK[k] - pbm.tOutK[k];
     return e.allFinite() && (b.keep.empty() || b.keep[k] != 0);
@@ -73,7 +74,8 @@ Status InputDrivenOptions::validate() const {
         }
         for (double t : timeConstantsS) {
             if (!(t > 0 && std::isfinite(t))) {
-                return Error{ErrorKind::Usage, "input-driven correction", "time constants must be positive seconds"};
+                return Error{ErrorKind::Usage, "input-driven correction",
+                             "time constants must be positive seconds"};
             }
         }
     } else if (!(lagStrideS > 0 && maxLagS >= 0 && maxLagS / lagStrideS <= 200)) {
@@ -96,16 +98,18 @@ int InputDrivenCorrection::inputCount() const {
     return 7 + (m_options.useProxies ? kProxyInputs : 0);
 }
 
-Eigen::MatrixXd InputDrivenCorrection::inputSeries(const data::SiBatch& b, const physics::SimulationResult& p) const {
+Eigen::MatrixXd InputDrivenCorrection::inputSeries(const data::SiBatch& b,
+                                                   const physics::SimulationResult& p) const {
     const std::size_t rows = std::min(b.rows(), p.xOutDb.size());
     const int n = inputCount();
     Eigen::MatrixXd z(static_cast<Eigen::Index>(rows), n);
     for (std::size_t k = 0; k < rows; ++k) {
-        std::vector<double> row{b.tHotK[k], b.feedKgPerS[k], b.xInDb[k],          b.tInK[k],
+        std::vector<double> row{b.tHotK[k], b.feedKgPerS[k], b.xInDb[k],        b.tInK[k],
                                 b.tAmbK[k], b.rhAmb[k],      b.airSpeedMPerS[k]};
         if (m_options.useProxies) {
-            for (double x : {p.proxyXHdtDb[k], p.proxyTHdtK[k], p.proxyXConvDb[k], p.proxyTConvK[k],
-                             p.proxyXMixDb[k], p.proxyTMixK[k], units::dryToWetPct(p.xOutDb[k]), p.tOutK[k]}) {
+            for (double x :
+                 {p.proxyXHdtDb[k], p.proxyTHdtK[k], p.proxyXConvDb[k], p.proxyTConvK[k], p.proxyXMixDb[k],
+                  p.proxyTMixK[k], units::dryToWetPct(p.xOutDb[k]), p.tOutK[k]}) {
                 row.push_back(x);
             }
         }
@@ -186,7 +190,7 @@ Eigen::MatrixXd InputDrivenCorrection::basisOf(const Eigen::MatrixXd& raw, doubl
             Eigen::Index c = at;
             for (Eigen::Index i = 0; i < n; ++i) {
                 for (Eigen::Index j = i; j < n; ++j) {
-                    phi(k, c++) = in(i) * in(j);
+                    phi(k, c++) = in(i)*in(j);
                 }
             }
         }
@@ -287,7 +291,8 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
             .cwiseSqrt()
             .unaryExpr([](double s) { return s > 1e-9 ? s : 1.0; });
     m.m_featureScale(0) = 1;
-    phi = (phi.rowwise() - m.m_featureMean.transpose()).array().rowwise() / m.m_featureScale.transpose().array();
+    phi = (phi.rowwise() - m.m_featureMean.transpose()).array().rowwise() /
+          m.m_featureScale.transpose().array();
 
     // Transmitter spikes in the outputs: one fit, rows far outside the robust spread dropped.
     std::vector<char> inlier(static_cast<std::size_t>(rows), 1);
@@ -313,8 +318,10 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
     for (const auto& s : segments) {
         folds = std::max(folds, s.fold + 1);
     }
-    std::vector<Eigen::MatrixXd> foldGram(static_cast<std::size_t>(folds), Eigen::MatrixXd::Zero(features, features));
-    std::vector<Eigen::MatrixXd> foldRhs(static_cast<std::size_t>(folds), Eigen::MatrixXd::Zero(features, kOutputs));
+    std::vector<Eigen::MatrixXd> foldGram(static_cast<std::size_t>(folds),
+                                          Eigen::MatrixXd::Zero(features, features));
+    std::vector<Eigen::MatrixXd> foldRhs(static_cast<std::size_t>(folds),
+                                         Eigen::MatrixXd::Zero(features, kOutputs));
     for (const auto& s : segments) {
         Eigen::MatrixXd p = phi.middleRows(s.begin, s.end - s.begin);
         Eigen::MatrixXd t = y.middleRows(s.begin, s.end - s.begin);
@@ -368,7 +375,8 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
         }
         const bool better = best < pbmAbs[o];
         (o == 0 ? val.maeMoisturePbm : val.maeTemperaturePbm) = pbmAbs[o] / double(rows);
-        (o == 0 ? val.maeMoistureCorrected : val.maeTemperatureCorrected) = (better ? best : pbmAbs[o]) / double(rows);
+        (o == 0 ? val.maeMoistureCorrected : val.maeTemperatureCorrected) =
+            (better ? best : pbmAbs[o]) / double(rows);
         (o == 0 ? val.moistureUsed : val.temperatureUsed) = better;
         if (o == 0) {
             val.ridge = bestPenalty;
@@ -376,16 +384,19 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
         if (better) {
             m.m_coefficients.col(o) = ridgeSolve(gram, rhs.col(o), bestPenalty * double(rows));
         } else {
-            val.note += std::string(val.note.empty() ? "" : " ") + (o == 0 ? "Outlet moisture" : "Outlet temperature") +
-                        ": the input-driven correction did not beat the physics model on held-out parts of the "
-                        "training data, so the physics model's free run is used as it is.";
+            val.note +=
+                std::string(val.note.empty() ? "" : " ") +
+                (o == 0 ? "Outlet moisture" : "Outlet temperature") +
+                ": the input-driven correction did not beat the physics model on held-out parts of the "
+                "training data, so the physics model's free run is used as it is.";
         }
     }
     return m;
 }
 
 void InputDrivenCorrection::correct(const data::SiBatch& batch, const physics::SimulationResult& pbm,
-                                    std::vector<double>& moisturePct, std::vector<double>& temperatureC) const {
+                                    std::vector<double>& moisturePct,
+                                    std::vector<double>& temperatureC) const {
     moisturePct.assign(batch.rows(), kNaN);
     temperatureC.assign(batch.rows(), kNaN);
     if (m_coefficients.size() == 0) {
@@ -461,7 +472,7 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::strin
         InputDrivenCorrection m;
         auto& o = m.m_options;
         o.basis = j.at("basis").get<std::string>() == "lagged_inputs" ? InputBasis::LaggedInputs
-                                                                     : InputBasis::FilterBank;
+                                                                      : InputBasis::FilterBank;
         o.useProxies = j.at("use_proxies").get<bool>();
         o.timeConstantsS = j.at("time_constants_s").get<std::vector<double>>();
         o.cascadeOrder = j.at("cascade_order").get<int>();
@@ -492,11 +503,11 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::strin
         val.temperatureUsed = v.at("temperature_used").get<bool>();
         val.note = v.at("note").get<std::string>();
         const int n = m.inputCount();
-        const Eigen::Index features = m.m_options.basis == InputBasis::FilterBank
-                                          ? 1 + n + static_cast<Eigen::Index>(o.timeConstantsS.size()) *
-                                                        o.cascadeOrder * n +
-                                                    (o.quadraticTimeConstantS > 0 ? n * (n + 1) / 2 : 0)
-                                          : 1 + n * (static_cast<Eigen::Index>(std::floor(o.maxLagS / o.lagStrideS)) + 1);
+        const Eigen::Index features =
+            m.m_options.basis == InputBasis::FilterBank
+                ? 1 + n + static_cast<Eigen::Index>(o.timeConstantsS.size()) * o.cascadeOrder * n +
+                      (o.quadraticTimeConstantS > 0 ? n * (n + 1) / 2 : 0)
+                : 1 + n * (static_cast<Eigen::Index>(std::floor(o.maxLagS / o.lagStrideS)) + 1);
         if (m.m_inputMean.size() != n || m.m_inputScale.size() != n || m.m_inputLow.size() != n ||
             m.m_inputHigh.size() != n || m.m_featureMean.size() != features ||
             m.m_featureScale.size() != features || m.m_coefficients.rows() != features ||
