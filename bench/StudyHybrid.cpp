@@ -244,25 +244,19 @@ int partFreeRun(bool quick) {
                 }
             };
             residual::InputDrivenOptions o;
-            o.quadraticTimeConstantS = 0;
-            add("linear bank", o);
-            o.timeConstantsS = {3, 10, 30, 90, 270, 810};
-            add("bank 3-810", o);
-            o.timeConstantsS = {6, 20, 60, 180, 540};
+            add("filter bank", o);
+            o.basis = residual::InputBasis::FilterBankAndLags;
+            add("bank and lags", o);
+            o.timeConstantsS = {20, 60, 180, 540, 1620};
+            add("bank 20-1620 and lags", o);
+            o = {};
             o.cascadeOrder = 1;
             add("order 1", o);
-            o.cascadeOrder = 3;
-            o.timeConstantsS = {10, 30, 60, 120, 240, 480};
-            add("order 3, 10-480", o);
             o = {};
             o.basis = residual::InputBasis::LaggedInputs;
             o.maxLagS = 600;
             o.lagStrideS = 15;
             add("lags 0-600/15", o);
-            o = {};
-            o.quadraticTimeConstantS = 0;
-            o.outlierCutoff = 1e9;
-            add("no outlier pass", o);
         }
         // The judged data straight from the plant, with the outlet's true values beside the
         // transmitters' readings: the instruments' floor says how close any simulator can come.
@@ -310,16 +304,6 @@ int partFreeRun(bool quick) {
         const auto ridgeMae = freeRunMae(views, corrected(*ridge));
         const auto bankMae = freeRunMae(views, corrected(*bank));
         if (!variants.empty()) { // what an input-driven model could reach at most: fitted on the judged rows
-            for (double q : {0.0, 60.0}) {
-                residual::InputDrivenOptions o;
-                o.quadraticTimeConstantS = q;
-                auto inSample = residual::InputDrivenCorrection::train(views, o);
-                if (inSample) {
-                    const auto m = freeRunMae(views, corrected(*inSample));
-                    std::fprintf(stderr, "  in-sample bank, quadratic at %g s: X %.4f T %.3f\n", q, m.first,
-                                 m.second);
-                }
-            }
             if (const char* dump = std::getenv("STUDY_HYBRID_DUMP")) { // rows of the judged set, for a look
                 FILE* f = std::fopen(dump, "w");
                 std::fprintf(f, "batch,t,x_meas,x_pbm,x_corr,t_meas,t_pbm,t_corr,t_hot,feed,x_in\n");

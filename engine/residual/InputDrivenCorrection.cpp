@@ -67,7 +67,7 @@ Eigen::VectorXd ridgeSolve(Eigen::MatrixXd gram, const Eigen::VectorXd& rhs, dou
 } // namespace
 
 Status InputDrivenOptions::validate() const {
-    if (basis == InputBasis::FilterBank) {
+    if (basis != InputBasis::LaggedInputs) {
         if (timeConstantsS.empty() || cascadeOrder < 1 || cascadeOrder > 4) {
             return Error{ErrorKind::Usage, "input-driven correction",
                          "needs at least one time constant and a cascade order of 1 to 4"};
@@ -78,7 +78,8 @@ Status InputDrivenOptions::validate() const {
                              "time constants must be positive seconds"};
             }
         }
-    } else if (!(lagStrideS > 0 && maxLagS >= 0 && maxLagS / lagStrideS <= 200)) {
+    }
+    if (basis != InputBasis::FilterBank && !(lagStrideS > 0 && maxLagS >= 0 && maxLagS / lagStrideS <= 200)) {
         return Error{ErrorKind::Usage, "input-driven correction",
                      "lags need a positive stride and at most 200 of them"};
     }
@@ -144,58 +145,52 @@ Eigen::MatrixXd InputDrivenCorrection::basisOf(const Eigen::MatrixXd& raw, doubl
         const Eigen::VectorXd s = (raw.row(k).transpose() - m_inputMean).cwiseQuotient(m_inputScale);
         z.row(k) = s.cwiseMax(m_inputLow).cwiseMin(m_inputHigh).transpose();
     }
-    if (m_options.basis == InputBasis::LaggedInputs) {
-        const int lags = static_cast<int>(std::floor(m_options.maxLagS / m_options.lagStrideS)) + 1;
-        const auto stride = std::max<Eigen::Index>(1, std::lround(m_options.lagStrideS / stepS));
-        Eigen::MatrixXd phi(rows, 1 + n * lags);
-        phi.col(0).setOnes();
-        for (int l = 0; l < lags; ++l) {
-            for (Eigen::Index k = 0; k < rows; ++k) {
-                // Before the batch's first row the line is taken to have stood at its first inputs.
-                phi.row(k).segment(1 + l * n, n) = z.row(std::max<Eigen::Index>(0, k - l * stride));
-            }
-        }
-        return phi;
-    }
+    const bool bank = m_options.basis != InputBasis::LaggedInputs;
+    const bool lagged = m_options.basis != InputBasis::FilterBank;
     const int stages = m_options.cascadeOrder;
-    const auto bank = static_cast<Eigen::Index>(m_options.timeConstantsS.size());
-    const bool quadratic = m_options.quadraticTimeConstantS > 0;
-    const Eigen::Index products = quadratic ? n * (n + 1) / 2 : 0;
-    Eigen::MatrixXd phi(rows, 1 + n + bank * stages * n + products);
+    const auto taus = bank ? static_cast<Eigen::Index>(m_options.timeConstantsS.size()) : 0;
+    const int lags = lagged ? static_cast<int>(std::floor(m_options.maxLagS / m_options.lagStrideS)) + 1 : 0;
+    Eigen::MatrixXd phi(rows, featureCountFor(n));
     phi.col(0).setOnes();
-    phi.middleCols(1, n) = z;
-    for (Eigen::Index t = 0; t < bank; ++t) {
-        const double a = std::exp(-stepS / m_options.timeConstantsS[static_cast<std::size_t>(t)]);
-        // Each stage starts settled at the first inputs: the line ran before the batch began.
-        Eigen::MatrixXd state = z.row(0).replicate(stages, 1);
-        for (Eigen::Index k = 0; k < rows; ++k) {
-            Eigen::RowVectorXd in = z.row(k);
-            for (int s = 0; s < stages; ++s) {
-                state.row(s) = a * state.row(s) + (1 - a) * in;
-                in = state.row(s);
-                phi.row(k).segment(1 + n + (t * stages + s) * n, n) = state.row(s);
-            }
-        }
-    }
-    if (quadratic) {
-        const double a = std::exp(-stepS / m_options.quadraticTimeConstantS);
-        Eigen::MatrixXd state = z.row(0).replicate(stages, 1);
-        const Eigen::Index at = 1 + n + bank * stages * n;
-        for (Eigen::Index k = 0; k < rows; ++k) {
-            Eigen::RowVectorXd in = z.row(k);
-            for (int s = 0; s < stages; ++s) {
-                state.row(s) = a * state.row(s) + (1 - a) * in;
-                in = state.row(s);
-            }
-            Eigen::Index c = at;
-            for (Eigen::Index i = 0; i < n; ++i) {
-                for (Eigen::Index j = i; j < n; ++j) {
-                    phi(k, c++) = in(i)*in(j);
+    Eigen::Index at = 1;
+    if (bank) {
+        phi.middleCols(at, n) = z;
+        at += n;
+        for (Eigen::Index t = 0; t < taus; ++t, at += stages * n) {
+            const double a = std::exp(-stepS / m_options.timeConstantsS[static_cast<std::size_t>(t)]);
+            // Each stage starts settled at the first inputs: the line ran before the batch began.
+            Eigen::MatrixXd state = z.row(0).replicate(stages, 1);
+            for (Eigen::Index k = 0; k < rows; ++k) {
+                Eigen::RowVectorXd in = z.row(k);
+                for (int s = 0; s < stages; ++s) {
+                    state.row(s) = a * state.row(s) + (1 - a) * in;
+                    in = state.row(s);
+                    phi.row(k).segment(at + s * n, n) = state.row(s);
                 }
             }
         }
     }
+    const auto stride = std::max<Eigen::Index>(1, std::lround(m_options.lagStrideS / stepS));
+    for (int l = 0; l < lags; ++l, at += n) {
+        for (Eigen::Index k = 0; k < rows; ++k) {
+            // Before the batch's first row the line is taken to have stood at its first inputs.
+            phi.row(k).segment(at, n) = z.row(std::max<Eigen::Index>(0, k - l * stride));
+        }
+    }
     return phi;
+}
+
+Eigen::Index InputDrivenCorrection::featureCountFor(int n) const {
+    const auto& o = m_options;
+    const Eigen::Index bank =
+        o.basis == InputBasis::LaggedInputs
+            ? 0
+            : n + static_cast<Eigen::Index>(o.timeConstantsS.size()) * o.cascadeOrder * n;
+    const Eigen::Index lagged =
+        o.basis == InputBasis::FilterBank
+            ? 0
+            : n * (static_cast<Eigen::Index>(std::floor(o.maxLagS / o.lagStrideS)) + 1);
+    return 1 + bank + lagged;
 }
 
 Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<BatchView>& views,
@@ -437,11 +432,12 @@ physics::SimulationResult InputDrivenCorrection::corrected(const data::SiBatch& 
 std::string InputDrivenCorrection::toJson() const {
     nlohmann::json j;
     const auto& o = m_options;
-    j["basis"] = o.basis == InputBasis::FilterBank ? "filter_bank" : "lagged_inputs";
+    j["basis"] = o.basis == InputBasis::FilterBank     ? "filter_bank"
+                 : o.basis == InputBasis::LaggedInputs ? "lagged_inputs"
+                                                       : "filter_bank_and_lags";
     j["use_proxies"] = o.useProxies;
     j["time_constants_s"] = o.timeConstantsS;
     j["cascade_order"] = o.cascadeOrder;
-    j["quadratic_time_constant_s"] = o.quadraticTimeConstantS;
     j["max_lag_s"] = o.maxLagS;
     j["lag_stride_s"] = o.lagStrideS;
     j["range_margin"] = o.rangeMargin;
@@ -471,12 +467,13 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::strin
         const auto j = nlohmann::json::parse(text);
         InputDrivenCorrection m;
         auto& o = m.m_options;
-        o.basis = j.at("basis").get<std::string>() == "lagged_inputs" ? InputBasis::LaggedInputs
-                                                                      : InputBasis::FilterBank;
+        const auto basis = j.at("basis").get<std::string>();
+        o.basis = basis == "lagged_inputs"          ? InputBasis::LaggedInputs
+                  : basis == "filter_bank_and_lags" ? InputBasis::FilterBankAndLags
+                                                    : InputBasis::FilterBank;
         o.useProxies = j.at("use_proxies").get<bool>();
         o.timeConstantsS = j.at("time_constants_s").get<std::vector<double>>();
         o.cascadeOrder = j.at("cascade_order").get<int>();
-        o.quadraticTimeConstantS = j.at("quadratic_time_constant_s").get<double>();
         o.maxLagS = j.at("max_lag_s").get<double>();
         o.lagStrideS = j.at("lag_stride_s").get<double>();
         o.rangeMargin = j.at("range_margin").get<double>();
@@ -503,11 +500,7 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::strin
         val.temperatureUsed = v.at("temperature_used").get<bool>();
         val.note = v.at("note").get<std::string>();
         const int n = m.inputCount();
-        const Eigen::Index features =
-            m.m_options.basis == InputBasis::FilterBank
-                ? 1 + n + static_cast<Eigen::Index>(o.timeConstantsS.size()) * o.cascadeOrder * n +
-                      (o.quadraticTimeConstantS > 0 ? n * (n + 1) / 2 : 0)
-                : 1 + n * (static_cast<Eigen::Index>(std::floor(o.maxLagS / o.lagStrideS)) + 1);
+        const Eigen::Index features = m.featureCountFor(n);
         if (m.m_inputMean.size() != n || m.m_inputScale.size() != n || m.m_inputLow.size() != n ||
             m.m_inputHigh.size() != n || m.m_featureMean.size() != features ||
             m.m_featureScale.size() != features || m.m_coefficients.rows() != features ||

@@ -22,6 +22,8 @@ enum class InputBasis {
     /// The inputs at lags 0, s, 2s … up to a maximum (a FIR ridge regression): the reference a
     /// system-identification reviewer would try first (issue #42's anchor).
     LaggedInputs,
+    /// Both side by side: the filter bank's long memory and the lags' sharp delays.
+    FilterBankAndLags,
 };
 
 /// @brief Options of the input-driven correction (issue #42): a linear model of the PBM's
@@ -34,13 +36,6 @@ struct InputDrivenOptions {
     /// (the second stage's impulse response peaks at τ, which carries transport delays).
     std::vector<double> timeConstantsS{6, 20, 60, 180, 540};
     int cascadeOrder = 2;
-    /// Filter bank: also every product of two inputs (squares too) after the last stage of the
-    /// cascade with this time constant [s] (0: none). The PBM's structural error is not linear
-    /// in the operating point (the gas cools more at a high load and a wet feed), and the
-    /// product of two delayed inputs is the lowest-order form of that. Off by default: on the
-    /// design seeds (700/701 of the distributed plant) the products did not survive the
-    /// cross-validation over batches (the operating points differ between batches and data sets).
-    double quadraticTimeConstantS = 0;
     /// Lagged inputs: the largest lag and the stride [s].
     double maxLagS = 300;
     double lagStrideS = 10;
@@ -105,6 +100,7 @@ private:
     /// clipped inputs.
     Eigen::MatrixXd basisOf(const Eigen::MatrixXd& inputs, double stepS) const;
     int inputCount() const;
+    Eigen::Index featureCountFor(int inputs) const;
 
     InputDrivenOptions m_options;
     Eigen::VectorXd m_inputMean, m_inputScale, m_inputLow, m_inputHigh; ///< standardised range

@@ -45,8 +45,8 @@ namespace {
 const std::vector<int> kShrinkGrid{1, 2, 5, 10, 20, 30, 45, 60, 90, 120, 150, 180};
 } // namespace
 
-Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& training,
-                                             const ResidualOptions& options) {
+Expected<ResidualModel> ResidualModel::trainOnBase(const std::vector<BatchView>& training,
+                                                   const ResidualOptions& options) {
     if (!options.nestReferences || (options.correctionFolds < 2 && options.shrinkValidationFraction <= 0)) {
         return trainOnce(training, options);
     }
@@ -59,7 +59,18 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
     // cross-validation: drift that changes within a batch is seen in every regime); else the
     // last shrinkValidationFraction of each batch's rows.
     std::vector<std::pair<std::vector<BatchView>, std::vector<BatchView>>> folds;
-    if (options.correctionFolds >= 2) {
+    if (options.correctionFolds >= 2 && options.correctionFoldsByBatch &&
+        training.size() >= std::max<std::size_t>(3, static_cast<std::size_t>(options.correctionFolds))) {
+        // Whole batches held out: the question is how the correction does on a batch it never saw.
+        const auto k = static_cast<std::size_t>(options.correctionFolds);
+        for (std::size_t f = 0; f < k; ++f) {
+            std::vector<BatchView> fit, validation;
+            for (std::size_t i = 0; i < training.size(); ++i) {
+                (i % k == f ? validation : fit).push_back(training[i]);
+            }
+            folds.emplace_back(std::move(fit), std::move(validation));
+        }
+    } else if (options.correctionFolds >= 2) {
         const auto k = static_cast<std::size_t>(options.correctionFolds);
         for (std::size_t f = 0; f < k; ++f) {
             std::vector<BatchView> fit, validation;
@@ -104,7 +115,11 @@ Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& train
     std::vector<std::array<std::vector<std::array<float, 3>>, kOutputs>> samples(
         options.correctionByAbsoluteError ? kShrinkGrid.size() : 0);
     for (const auto& [fit, validation] : folds) {
-        auto first = trainOnce(fit, options);
+        // κ_H is fitted to the learnt part as it comes out of the lifted model; the realised-weight
+        // guard acts on top of it afterwards, so it stays out of the folds' forecasts.
+        ResidualOptions foldOptions = options;
+        foldOptions.realisedWeightHalfLifeSteps = 0;
+        auto first = trainOnce(fit, foldOptions);
         if (!first) {
             return first.error();
         }

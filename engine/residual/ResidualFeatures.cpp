@@ -43,6 +43,13 @@ Eigen::VectorXd ResidualModel::inputsAt(const BatchView& v, std::size_t k) const
     for (double x : {b.feedKgPerS[k], b.xInDb[k], b.tInK[k], b.tAmbK[k], b.rhAmb[k]}) {
         z.push_back(x);
     }
+    if (static_cast<std::size_t>(m_inputLow.size()) == z.size()) {
+        // Issue #42: inside the training range widened by the margin (a missing value stays missing).
+        for (std::size_t i = 0; i < z.size(); ++i) {
+            const auto j = static_cast<Eigen::Index>(i);
+            z[i] = std::isfinite(z[i]) ? std::clamp(z[i], m_inputLow(j), m_inputHigh(j)) : z[i];
+        }
+    }
     return Eigen::Map<const Eigen::VectorXd>(z.data(), static_cast<Eigen::Index>(z.size()));
 }
 

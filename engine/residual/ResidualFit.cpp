@@ -132,6 +132,12 @@ Expected<ResidualModel> ResidualModel::trainOnce(const std::vector<BatchView>& t
         }
     }
     m.m_dict.fitScaling(zNow);
+    if (o.inputRangeMargin > 0) {
+        const Eigen::VectorXd low = zNow.colwise().minCoeff().transpose();
+        const Eigen::VectorXd high = zNow.colwise().maxCoeff().transpose();
+        m.m_inputLow = low - o.inputRangeMargin * (high - low);
+        m.m_inputHigh = high + o.inputRangeMargin * (high - low);
+    }
 
     // 3. Control-consistent weights, Eq. (29): ℓ = (X_out − target)², margin to [low, high].
     Eigen::VectorXd w = Eigen::VectorXd::Ones(n);

@@ -15,57 +15,25 @@ HybridPrediction ResidualModel::predictOneStep(const BatchView& v) const {
 }
 
 HybridPrediction ResidualModel::predictAhead(const BatchView& v, int horizon) const {
-    const std::size_t n = v.batch->rows();
-    const std::size_t count = v.rows.size();
-    HybridPrediction out = HybridPrediction::unknown(count);
-    const auto h = static_cast<std::size_t>(std::max(1, horizon));
-    // Residuals and exogenous inputs of the rows the predictions need, computed once: from the
-    // earliest origin's oldest lag to the end of the view.
-    const std::size_t back = h + static_cast<std::size_t>(m_options.residualLags);
-    const std::size_t first = v.rows.begin > back ? v.rows.begin - back : 0;
-    std::vector<double> ex(n, kNaN), et(n, kNaN);
-    std::vector<double> us(n, kNaN);
-    std::vector<Eigen::VectorXd> ds(n);
-    residualsOf(v, first, v.rows.end, ex, et);
-    for (std::size_t k = first; k < v.rows.end; ++k) {
-        Eigen::VectorXd z;
-        features(v, k, z, us[k], ds[k]);
-    }
-    for (std::size_t i = 0; i < count; ++i) {
-        const std::size_t target = v.rows.begin + i;
-        if (target < h) {
-            continue;
-        }
-        const std::size_t origin = target - h;
-        Eigen::VectorXd x;
-        double u = 0;
-        Eigen::VectorXd d;
-        if (!stateAt(v, origin, ex, et, x, u, d)) {
-            continue;
-        }
-        Eigen::Vector2d sum = Eigen::Vector2d::Zero(); // velocity form: Σ of the predicted v
-        for (std::size_t j = origin; j < target; ++j) {
-            x = m_a * x + m_b * us[j] + m_e * ds[j];
-            if (velocity()) {
-                sum += m_c * x;
-            }
-        }
-        const Eigen::Vector2d e =
-            velocity() ? Eigen::Vector2d(correctionWeight(static_cast<int>(h)).cwiseProduct(sum))
-                       : Eigen::Vector2d(m_c * x);
-        const Eigen::Vector2d base = levelOf(v, origin, target);
-        out.residualXPct[i] = e(0) * m_eScale(0) + base(0);
-        out.residualTC[i] = e(1) * m_eScale(1) + base(1);
-        out.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[target]) + out.residualXPct[i]; // Eq. (21)
-        out.tOutC[i] = v.pbm->tOutK[target] - units::kKelvinOffset + out.residualTC[i];
-    }
-    return out;
+    // One horizon of predictHorizons: the same numbers, and the realised-weight guard in one place.
+    return predictHorizons(v, {std::max(1, horizon)}).front();
 }
 
 std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
                                                              const std::vector<int>& horizons) const {
+    if (m_inputDriven && m_inputDriven->used() && !v.baseCorrected) {
+        std::vector<physics::SimulationResult> runs;
+        auto out = predictHorizons(correctedViews({v}, runs).front(), horizons);
+        for (auto& p : out) {
+            residualAgainstPbm(v, p);
+        }
+        return out;
+    }
     const std::size_t count = v.rows.size();
     std::vector<HybridPrediction> out(horizons.size(), HybridPrediction::unknown(count));
+    // The learnt part of each slot's forecasts (% wb, °C), for the realised-weight guard.
+    std::vector<std::vector<double>> learnedX(horizons.size(), std::vector<double>(count, kNaN));
+    auto learnedT = learnedX;
     int hMax = 1;
     for (int h : horizons) {
         hMax = std::max(hMax, h);
@@ -144,11 +112,19 @@ std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
             const Eigen::Vector2d base = velocity() ? levelOf(v, origin, target) : targetBase;
             for (std::size_t slot : slotsOf[h]) {
                 auto& p = out[slot];
+                learnedX[slot][i] = e(0) * m_eScale(0);
+                learnedT[slot][i] = e(1) * m_eScale(1);
                 p.residualXPct[i] = e(0) * m_eScale(0) + base(0);
                 p.residualTC[i] = e(1) * m_eScale(1) + base(1);
                 p.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[target]) + p.residualXPct[i]; // Eq. (21)
                 p.tOutC[i] = v.pbm->tOutK[target] - units::kKelvinOffset + p.residualTC[i];
             }
+        }
+    }
+    for (std::size_t slot = 0; slot < horizons.size(); ++slot) {
+        if (horizons[slot] >= 1) {
+            weighByRealisedSkill(v, static_cast<std::size_t>(horizons[slot]), learnedX[slot], learnedT[slot],
+                                 out[slot]);
         }
     }
     return out;
@@ -160,6 +136,20 @@ HybridPrediction ResidualModel::forecastFrom(const BatchView& v, std::size_t ori
 
 std::vector<HybridPrediction> ResidualModel::forecastFrom(const std::vector<BatchView>& views,
                                                           std::size_t origin, int horizon) const {
+    if (m_inputDriven && m_inputDriven->used() && !views.empty() && !views.front().baseCorrected) {
+        // The realised-weight guard needs the forecasts' history, which one origin does not have:
+        // the MPC's forecasts use the trained κ_H alone.
+        std::vector<physics::SimulationResult> runs;
+        auto out = forecastFrom(correctedViews(views, runs), origin, horizon);
+        for (std::size_t c = 0; c < out.size(); ++c) {
+            BatchView ahead = views[c];
+            ahead.rows = {origin + 1, origin + 1 + out[c].xOutPct.size()};
+            if (ahead.rows.end <= ahead.pbm->xOutDb.size()) {
+                residualAgainstPbm(ahead, out[c]);
+            }
+        }
+        return out;
+    }
     const auto count = static_cast<std::size_t>(std::max(0, horizon));
     std::vector<HybridPrediction> out(views.size(), HybridPrediction::unknown(count));
     const auto nv = static_cast<Eigen::Index>(views.size());
@@ -224,6 +214,14 @@ std::vector<HybridPrediction> ResidualModel::forecastFrom(const std::vector<Batc
 }
 
 HybridPrediction ResidualModel::predictFreeRun(const BatchView& v) const {
+    if (m_inputDriven && m_inputDriven->used() && !v.baseCorrected) {
+        // The free-run hybrid: the PBM plus the input-driven correction, and below it whatever
+        // the lifted model adds without a measured output.
+        std::vector<physics::SimulationResult> runs;
+        auto out = predictFreeRun(correctedViews({v}, runs).front());
+        residualAgainstPbm(v, out);
+        return out;
+    }
     const std::size_t count = v.rows.size();
     HybridPrediction out = HybridPrediction::unknown(count);
     const Eigen::Index lagPart = kOutputs * m_options.residualLags;

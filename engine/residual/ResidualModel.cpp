@@ -34,6 +34,14 @@ Status ResidualOptions::validate() const {
     if (!(shrinkValidationFraction >= 0 && shrinkValidationFraction < 0.6)) {
         return Error{ErrorKind::BadInput, "shrinkValidationFraction", "must lie in [0, 0.6)"};
     }
+    if (!(realisedWeightHalfLifeSteps >= 0 && realisedWeightPriorRows >= 0 && inputRangeMargin >= 0 &&
+          std::isfinite(realisedWeightHalfLifeSteps + realisedWeightPriorRows + inputRangeMargin))) {
+        return Error{ErrorKind::BadInput, "realised weights",
+                     "half-life, prior rows and the input range margin must be finite and ≥ 0"};
+    }
+    if (inputDriven) {
+        return inputDrivenOptions.validate();
+    }
     return {};
 }
 

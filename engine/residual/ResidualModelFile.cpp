@@ -1,4 +1,5 @@
 // How a residual model is stored: its options, dictionary and matrices as JSON, and read back.
+#include "residual/EigenJson.h"
 #include "residual/ResidualModelInternal.h"
 
 #include <algorithm>
@@ -8,42 +9,6 @@
 namespace drytwin::residual {
 
 using namespace detail;
-
-namespace {
-
-nlohmann::json matrixJson(const Eigen::MatrixXd& m) {
-    std::vector<double> data;
-    data.reserve(static_cast<std::size_t>(m.size()));
-    for (Eigen::Index r = 0; r < m.rows(); ++r) {
-        for (Eigen::Index c = 0; c < m.cols(); ++c) {
-            data.push_back(m(r, c));
-        }
-    }
-    return {{"rows", m.rows()}, {"cols", m.cols()}, {"data", data}};
-}
-
-Eigen::MatrixXd matrixFrom(const nlohmann::json& j) {
-    const auto rows = j.at("rows").get<Eigen::Index>();
-    const auto cols = j.at("cols").get<Eigen::Index>();
-    const auto data = j.at("data").get<std::vector<double>>();
-    if (static_cast<Eigen::Index>(data.size()) != rows * cols) {
-        throw std::runtime_error("matrix data size does not match rows × cols");
-    }
-    Eigen::MatrixXd m(rows, cols);
-    for (Eigen::Index r = 0; r < rows; ++r) {
-        for (Eigen::Index c = 0; c < cols; ++c) {
-            m(r, c) = data[static_cast<std::size_t>(r * cols + c)];
-        }
-    }
-    return m;
-}
-
-Eigen::VectorXd vectorFrom(const nlohmann::json& j) {
-    const auto v = j.get<std::vector<double>>();
-    return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
-}
-
-} // namespace
 
 std::string ResidualModel::toJson() const {
     nlohmann::json j;
@@ -74,7 +39,12 @@ std::string ResidualModel::toJson() const {
                     {"moisture_low_pct", o.moistureLowPct},
                     {"moisture_high_pct", o.moistureHighPct},
                     {"alpha_max", o.alphaMax},
-                    {"radius_max", o.radiusMax}};
+                    {"radius_max", o.radiusMax},
+                    {"input_driven", o.inputDriven},
+                    {"realised_weight_half_life_steps", o.realisedWeightHalfLifeSteps},
+                    {"realised_weight_prior_rows", o.realisedWeightPriorRows},
+                    {"input_range_margin", o.inputRangeMargin},
+                    {"correction_folds_by_batch", o.correctionFoldsByBatch}};
     j["dictionary"] = {
         {"inputs", m_dict.inputNames()},
         {"mean", std::vector<double>(m_dict.mean().data(), m_dict.mean().data() + m_dict.mean().size())},
@@ -82,16 +52,23 @@ std::string ResidualModel::toJson() const {
         {"features", m_dict.featureNames()}};
     j["base_features"] = m_baseIdx;
     j["residual_features"] = m_resIdx;
-    j["projection_G"] = matrixJson(m_projection);
-    j["residual_projection_g"] = matrixJson(m_residualProjection);
+    j["projection_G"] = matrixToJson(m_projection);
+    j["residual_projection_g"] = matrixToJson(m_residualProjection);
     j["feature_scale"] =
         std::vector<double>(m_featureScale.data(), m_featureScale.data() + m_featureScale.size());
     j["residual_scale"] = {m_eScale(0), m_eScale(1)};
-    j["A"] = matrixJson(m_a);
-    j["A_unconstrained"] = matrixJson(m_aFree);
-    j["B"] = matrixJson(m_b);
-    j["E"] = matrixJson(m_e);
-    j["C"] = matrixJson(m_c);
+    if (m_inputLow.size() > 0) {
+        j["input_low"] = vectorToJson(m_inputLow);
+        j["input_high"] = vectorToJson(m_inputHigh);
+    }
+    if (m_inputDriven) {
+        j["input_driven_correction"] = nlohmann::json::parse(m_inputDriven->toJson());
+    }
+    j["A"] = matrixToJson(m_a);
+    j["A_unconstrained"] = matrixToJson(m_aFree);
+    j["B"] = matrixToJson(m_b);
+    j["E"] = matrixToJson(m_e);
+    j["C"] = matrixToJson(m_c);
     j["stability"] = {{"spectral_radius_before", m_cert.spectralRadiusBefore},
                       {"spectral_radius_after", m_cert.spectralRadiusAfter},
                       {"alpha", m_cert.alpha},
@@ -99,7 +76,7 @@ std::string ResidualModel::toJson() const {
                       {"certified", m_cert.certified},
                       {"cholesky_passes", m_cert.choleskyPasses},
                       {"p_condition_number", m_cert.pConditionNumber},
-                      {"P", matrixJson(m_cert.p)}};
+                      {"P", matrixToJson(m_cert.p)}};
     const auto& cmp = m_comparison;
     j["stability_comparison"] = {{"loss_unconstrained", cmp.lossUnconstrained},
                                  {"loss_eigenvalue_pull", cmp.lossEigenvaluePull},
@@ -162,34 +139,56 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
         o.moistureHighPct = jo.at("moisture_high_pct");
         o.alphaMax = jo.at("alpha_max");
         o.radiusMax = jo.at("radius_max");
+        // Files from before issue #42: the PBM as the base, the trained κ_H alone, no clipping.
+        o.inputDriven = jo.value("input_driven", false);
+        o.realisedWeightHalfLifeSteps = jo.value("realised_weight_half_life_steps", 0.0);
+        o.realisedWeightPriorRows = jo.value("realised_weight_prior_rows", 0.0);
+        o.inputRangeMargin = jo.value("input_range_margin", 0.0);
+        o.correctionFoldsByBatch = jo.value("correction_folds_by_batch", false);
         if (auto st = o.validate(); !st) {
             return st.error();
         }
         m.m_dict =
             PolynomialDictionary(j.at("dictionary").at("inputs").get<std::vector<std::string>>(), o.degree);
-        m.m_dict.setScaling(vectorFrom(j.at("dictionary").at("mean")),
-                            vectorFrom(j.at("dictionary").at("scale")));
+        m.m_dict.setScaling(vectorFromJson(j.at("dictionary").at("mean")),
+                            vectorFromJson(j.at("dictionary").at("scale")));
         m.m_baseIdx = j.at("base_features").get<std::vector<int>>();
         m.m_resIdx = j.at("residual_features").get<std::vector<int>>();
-        m.m_projection = matrixFrom(j.at("projection_G"));
+        m.m_projection = matrixFromJson(j.at("projection_G"));
         if (j.contains("residual_projection_g")) {
-            m.m_residualProjection = matrixFrom(j.at("residual_projection_g"));
+            m.m_residualProjection = matrixFromJson(j.at("residual_projection_g"));
         }
-        m.m_featureScale = vectorFrom(j.at("feature_scale"));
+        m.m_featureScale = vectorFromJson(j.at("feature_scale"));
         const auto es = j.at("residual_scale").get<std::vector<double>>();
         m.m_eScale = Eigen::Vector2d(es.at(0), es.at(1));
-        m.m_a = matrixFrom(j.at("A"));
-        m.m_aFree = matrixFrom(j.at("A_unconstrained"));
-        m.m_b = matrixFrom(j.at("B"));
-        m.m_e = matrixFrom(j.at("E"));
-        m.m_c = matrixFrom(j.at("C"));
+        if (j.contains("input_low")) {
+            m.m_inputLow = vectorFromJson(j.at("input_low"));
+            m.m_inputHigh = vectorFromJson(j.at("input_high"));
+            if (m.m_inputLow.size() != m.m_dict.inputCount() ||
+                m.m_inputHigh.size() != m.m_dict.inputCount()) {
+                return Error{ErrorKind::BadInput, "residual model",
+                             "the inputs' range does not match the dictionary"};
+            }
+        }
+        if (j.contains("input_driven_correction")) {
+            auto c = InputDrivenCorrection::fromJson(j.at("input_driven_correction").dump());
+            if (!c) {
+                return c.error();
+            }
+            m.m_inputDriven = std::make_shared<const InputDrivenCorrection>(std::move(*c));
+        }
+        m.m_a = matrixFromJson(j.at("A"));
+        m.m_aFree = matrixFromJson(j.at("A_unconstrained"));
+        m.m_b = matrixFromJson(j.at("B"));
+        m.m_e = matrixFromJson(j.at("E"));
+        m.m_c = matrixFromJson(j.at("C"));
         const auto& s = j.at("stability");
         m.m_cert.spectralRadiusBefore = s.at("spectral_radius_before");
         m.m_cert.spectralRadiusAfter = s.at("spectral_radius_after");
         m.m_cert.alpha = s.at("alpha");
         m.m_cert.certificateMaxEig = s.at("certificate_max_eig");
         m.m_cert.certified = s.at("certified");
-        m.m_cert.p = matrixFrom(s.at("P"));
+        m.m_cert.p = matrixFromJson(s.at("P"));
         m.m_cert.choleskyPasses = s.value("cholesky_passes", false);
         m.m_cert.pConditionNumber = s.value("p_condition_number", 0.0);
         if (j.contains("stability_comparison")) {
