@@ -348,6 +348,7 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
     for (int o = 0; o < kOutputs; ++o) {
         double best = std::numeric_limits<double>::infinity();
         double bestPenalty = options.ridgeGrid.front();
+        Eigen::VectorXd bestHeldOut; // each row's forecast by the fit without its fold
         for (double ridge : options.ridgeGrid) {
             const double penalty = ridge * double(rows);
             std::vector<Eigen::VectorXd> beta(static_cast<std::size_t>(folds));
@@ -356,28 +357,41 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
                     ridgeSolve(gram - foldGram[static_cast<std::size_t>(f)],
                                rhs.col(o) - foldRhs[static_cast<std::size_t>(f)].col(o), penalty);
             }
-            double abs = 0;
+            Eigen::VectorXd heldOut(rows);
             for (const auto& s : segments) {
-                abs += (y.col(o).segment(s.begin, s.end - s.begin) -
-                        phi.middleRows(s.begin, s.end - s.begin) * beta[static_cast<std::size_t>(s.fold)])
-                           .cwiseAbs()
-                           .sum();
+                heldOut.segment(s.begin, s.end - s.begin) =
+                    phi.middleRows(s.begin, s.end - s.begin) * beta[static_cast<std::size_t>(s.fold)];
             }
+            const double abs = (y.col(o) - heldOut).cwiseAbs().sum();
             if (abs < best) {
                 best = abs;
                 bestPenalty = ridge;
+                bestHeldOut = std::move(heldOut);
             }
         }
-        const bool better = best < pbmAbs[o];
+        // How much of the correction to keep: the share κ ∈ [0, 1] (steps of 0.05) with the
+        // smallest held-out absolute error. A correction that partly does not carry over from one
+        // batch to the next (an unmeasured drift the closed loop's inputs echo) is shrunk, not
+        // taken whole; κ = 0 is the PBM itself.
+        double shrink = 0;
+        best = pbmAbs[o]; // κ = 0
+        for (int step = 1; step <= 20; ++step) {
+            const double kappa = 0.05 * step;
+            const double abs = (y.col(o) - kappa * bestHeldOut).cwiseAbs().sum();
+            if (abs < best) {
+                best = abs;
+                shrink = kappa;
+            }
+        }
+        const bool better = shrink > 0;
         (o == 0 ? val.maeMoisturePbm : val.maeTemperaturePbm) = pbmAbs[o] / double(rows);
-        (o == 0 ? val.maeMoistureCorrected : val.maeTemperatureCorrected) =
-            (better ? best : pbmAbs[o]) / double(rows);
+        (o == 0 ? val.maeMoistureCorrected : val.maeTemperatureCorrected) = best / double(rows);
         (o == 0 ? val.moistureUsed : val.temperatureUsed) = better;
         if (o == 0) {
             val.ridge = bestPenalty;
         }
         if (better) {
-            m.m_coefficients.col(o) = ridgeSolve(gram, rhs.col(o), bestPenalty * double(rows));
+            m.m_coefficients.col(o) = shrink * ridgeSolve(gram, rhs.col(o), bestPenalty * double(rows));
         } else {
             val.note +=
                 std::string(val.note.empty() ? "" : " ") +
