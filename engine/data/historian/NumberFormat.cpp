@@ -1,0 +1,321 @@
+#include "data/historian/NumberFormat.h"
+
+#include "data/historian/PlaceInFile.h"
+
+#include <charconv>
+#include <cmath>
+
+namespace drytwin::data::historian {
+
+namespace {
+
+bool isDigit(char c) {
+    return c >= '0' && c <= '9';
+}
+
+/// "6.497.250" grouped by @p mark: 1–3 digits (not starting with 0), then groups of exactly three.
+bool validGrouping(std::string_view part, char mark) {
+    std::size_t groups = 0;
+    std::size_t start = 0;
+    while (true) {
+        const auto end = part.find(mark, start);
+        const std::string_view g =
+            part.substr(start, end == std::string_view::npos ? part.size() - start : end - start);
+        for (char c : g) {
+            if (!isDigit(c)) {
+                return false;
+            }
+        }
+        if (groups == 0 ? (g.empty() || g.size() > 3 || g[0] == '0') : g.size() != 3) {
+            return false;
+        }
+        ++groups;
+        if (end == std::string_view::npos) {
+            break;
+        }
+        start = end + 1;
+    }
+    return groups >= 2;
+}
+
+} // namespace
+
+NumberCell readNumberCell(std::string_view cell) {
+    NumberCell r;
+    const std::string_view s = trimmed(cell);
+    if (s.empty() || s.size() > 64) {
+        return r;
+    }
+    std::size_t i = 0;
+    const bool negative = s[0] == '-';
+    if (s[0] == '+' || s[0] == '-') {
+        ++i;
+    }
+    const std::size_t mantissaStart = i;
+    std::size_t digits = 0, dots = 0, commas = 0, lastDot = 0, lastComma = 0;
+    for (; i < s.size() && (isDigit(s[i]) || s[i] == '.' || s[i] == ','); ++i) {
+        if (s[i] == '.') {
+            ++dots;
+            lastDot = i - mantissaStart;
+        } else if (s[i] == ',') {
+            ++commas;
+            lastComma = i - mantissaStart;
+        } else {
+            ++digits;
+        }
+    }
+    if (digits == 0) {
+        return r;
+    }
+    const std::string_view mantissa = s.substr(mantissaStart, i - mantissaStart);
+    const std::string_view exponent = s.substr(i);
+    if (!exponent.empty()) {
+        std::size_t k = 1;
+        if (exponent[0] != 'e' && exponent[0] != 'E') {
+            return r;
+        }
+        if (k < exponent.size() && (exponent[k] == '+' || exponent[k] == '-')) {
+            ++k;
+        }
+        if (k == exponent.size()) {
+            return r;
+        }
+        for (; k < exponent.size(); ++k) {
+            if (!isDigit(exponent[k])) {
+                return r;
+            }
+        }
+    }
+    char decimal = 0, group = 0;
+    if (dots + commas == 0) {
+        r.marks = NumberMarks::None;
+    } else if (dots + commas == 1) {
+        decimal = dots ? '.' : ',';
+        const std::size_t at = dots ? lastDot : lastComma;
+        const std::string_view whole = mantissa.substr(0, at);
+        const std::string_view fraction = mantissa.substr(at + 1);
+        const bool couldGroup = exponent.empty() && fraction.size() == 3 && !whole.empty() &&
+                                whole.size() <= 3 && whole[0] != '0';
+        r.marks = couldGroup ? (dots ? NumberMarks::PointOrThousands : NumberMarks::CommaOrThousands)
+                             : (dots ? NumberMarks::DecimalPoint : NumberMarks::DecimalComma);
+    } else if (dots == 0 || commas == 0) {
+        // One mark several times: it groups thousands, so the decimal mark is the other one.
+        group = dots ? '.' : ',';
+        if (!exponent.empty() || !validGrouping(mantissa, group)) {
+            return r;
+        }
+        r.marks = dots ? NumberMarks::DecimalComma : NumberMarks::DecimalPoint;
+    } else {
+        // Both marks: the last one is the decimal mark and appears once; the other groups thousands.
+        decimal = lastDot > lastComma ? '.' : ',';
+        group = decimal == '.' ? ',' : '.';
+        if ((decimal == '.' ? dots : commas) != 1 || !exponent.empty() ||
+            !validGrouping(mantissa.substr(0, decimal == '.' ? lastDot : lastComma), group)) {
+            return r;
+        }
+        r.marks = decimal == '.' ? NumberMarks::DecimalPoint : NumberMarks::DecimalComma;
+    }
+    char buf[80];
+    std::size_t n = 0;
+    if (negative) {
+        buf[n++] = '-';
+    }
+    for (char c : mantissa) {
+        if (c == group) {
+            continue;
+        }
+        buf[n++] = c == decimal ? '.' : c;
+    }
+    for (char c : exponent) {
+        buf[n++] = c;
+    }
+    double v = 0;
+    const auto [ptr, ec] = std::from_chars(buf, buf + n, v);
+    if (ec != std::errc() || ptr != buf + n || !std::isfinite(v)) {
+        return r;
+    }
+    r.isNumber = true;
+    r.value = v;
+    return r;
+}
+
+double thousandsValue(double decimalReading) {
+    return std::round(decimalReading * 1000.0);
+}
+
+bool parseNumber(std::string_view cell, char decimalMark, double& value) {
+    const NumberCell c = readNumberCell(cell);
+    if (!c.isNumber) {
+        return false;
+    }
+    switch (c.marks) {
+    case NumberMarks::None:
+        value = c.value;
+        return true;
+    case NumberMarks::DecimalPoint:
+    case NumberMarks::DecimalComma:
+        value = c.value;
+        return (c.marks == NumberMarks::DecimalPoint) == (decimalMark == '.');
+    case NumberMarks::PointOrThousands:
+        value = decimalMark == '.' ? c.value : thousandsValue(c.value);
+        return true;
+    case NumberMarks::CommaOrThousands:
+        value = decimalMark == ',' ? c.value : thousandsValue(c.value);
+        return true;
+    }
+    return false;
+}
+
+void DecimalMarkEvidence::add(const NumberCell& cell, std::uint32_t row, int line, std::string_view text) {
+    switch (cell.marks) {
+    case NumberMarks::None:
+        return;
+    case NumberMarks::DecimalPoint:
+        if (points++ == 0) {
+            firstPointLine = line;
+            firstPointCell = trimmed(text);
+        }
+        return;
+    case NumberMarks::DecimalComma:
+        if (commas++ == 0) {
+            firstCommaLine = line;
+            firstCommaCell = trimmed(text);
+        }
+        return;
+    case NumberMarks::PointOrThousands:
+    case NumberMarks::CommaOrThousands:
+        if (ambiguous++ == 0) {
+            firstAmbiguousLine = line;
+            firstAmbiguousCell = trimmed(text);
+        }
+        (cell.marks == NumberMarks::PointOrThousands ? pointOrThousandsRows : commaOrThousandsRows)
+            .push_back(row);
+        return;
+    }
+}
+
+DecimalMarkDecision decideDecimalMark(const std::vector<ColumnMarks>& columns, char mappingMark,
+                                      char delimiter, const std::string& file) {
+    DecimalMarkDecision d;
+    const ColumnMarks* firstPoint = nullptr;
+    const ColumnMarks* firstComma = nullptr;
+    const ColumnMarks* firstAmbiguous = nullptr;
+    bool pointOrThousands = false, commaOrThousands = false;
+    // The first cell of a kind in file order (line, then column).
+    const auto earlier = [](const ColumnMarks* best, int bestLine, const ColumnMarks& c, int line) {
+        return !best || line < bestLine || (line == bestLine && c.fileColumn < best->fileColumn);
+    };
+    int pointLine = 0, commaLine = 0, ambiguousLine = 0;
+    for (const auto& c : columns) {
+        const DecimalMarkEvidence& e = *c.evidence;
+        if (e.points > 0 && earlier(firstPoint, pointLine, c, e.firstPointLine)) {
+            firstPoint = &c;
+            pointLine = e.firstPointLine;
+        }
+        if (e.commas > 0 && earlier(firstComma, commaLine, c, e.firstCommaLine)) {
+            firstComma = &c;
+            commaLine = e.firstCommaLine;
+        }
+        if (e.ambiguous > 0 && earlier(firstAmbiguous, ambiguousLine, c, e.firstAmbiguousLine)) {
+            firstAmbiguous = &c;
+            ambiguousLine = e.firstAmbiguousLine;
+        }
+        pointOrThousands = pointOrThousands || !e.pointOrThousandsRows.empty();
+        commaOrThousands = commaOrThousands || !e.commaOrThousandsRows.empty();
+    }
+    const auto pointCell = [&] {
+        return "column '" + firstPoint->name + "', line " + std::to_string(pointLine) + ": '" +
+               firstPoint->evidence->firstPointCell + "'";
+    };
+    const auto commaCell = [&] {
+        return "column '" + firstComma->name + "', line " + std::to_string(commaLine) + ": '" +
+               firstComma->evidence->firstCommaCell + "'";
+    };
+    const auto fail = [&](const ColumnMarks* at, int line, std::string why) {
+        d.ok = false;
+        d.line = line;
+        d.fileColumn = at->fileColumn;
+        d.why = std::move(why);
+        return d;
+    };
+    if (mappingMark != 0) {
+        d.mark = mappingMark;
+        if (mappingMark == '.' && firstComma) {
+            return fail(firstComma, commaLine,
+                        "a decimal comma (" + commaCell() +
+                            "), but the column mapping's \"decimal_mark\" is \".\"");
+        }
+        if (mappingMark == ',' && firstPoint) {
+            return fail(firstPoint, pointLine,
+                        "a decimal point (" + pointCell() +
+                            "), but the column mapping's \"decimal_mark\" is \",\"");
+        }
+        return d;
+    }
+    if (firstPoint && firstComma) {
+        const bool commaLater = commaLine >= pointLine;
+        return fail(commaLater ? firstComma : firstPoint, commaLater ? commaLine : pointLine,
+                    "the file mixes a decimal point (" + pointCell() + ") and a decimal comma (" +
+                        commaCell() + "); export it with one number format");
+    }
+    if (firstPoint || firstComma) {
+        d.mark = firstPoint ? '.' : ',';
+        return d;
+    }
+    // Nothing in the file tells: a comma between fields cannot also be the decimal mark; otherwise
+    // a cell's only mark is taken as its decimal mark, and the choice is noted with its fix.
+    d.mark = delimiter != ',' && commaOrThousands && !pointOrThousands ? ',' : '.';
+    if (firstAmbiguous) {
+        d.guessed = true;
+        const char other = d.mark == '.' ? ',' : '.';
+        d.why =
+            placeInFile(file, ambiguousLine, firstAmbiguous->fileColumn) + ": numbers such as '" +
+            firstAmbiguous->evidence->firstAmbiguousCell + "' (column '" + firstAmbiguous->name + "') read " +
+            (d.mark == '.' ? "with a decimal point or with a point grouping thousands"
+                           : "with a decimal comma or with a comma grouping thousands") +
+            ", and no cell of the file tells which; read with a decimal " +
+            (d.mark == '.' ? "point" : "comma") + ". If the mark groups thousands, set \"decimal_mark\": \"" +
+            std::string(1, other) + "\" in the column mapping";
+    }
+    return d;
+}
+
+void applyDecimalMark(const DecimalMarkEvidence& e, char mark, std::vector<double>& values) {
+    for (std::uint32_t r : mark == '.' ? e.commaOrThousandsRows : e.pointOrThousandsRows) {
+        values[r] = thousandsValue(values[r]);
+    }
+}
+
+bool isMissingCell(std::string_view cell, std::string_view& state) {
+    const std::string_view s = trimmed(cell);
+    state = {};
+    if (s.empty()) {
+        return true;
+    }
+    if (s.size() > 16 || isDigit(s.back())) {
+        return false;
+    }
+    // Ordinary spellings of "no value", then the PI System's digital states that stand for one.
+    static const char* const kNoValue[] = {"nan", "null", "n/a", "#n/a", "na", "-nan"};
+    static const char* const kStates[] = {
+        "No Data",      "Comm Fail",    "Shutdown",    "Bad Input",  "Pt Created",   "Scan Off",
+        "Scan Timeout", "I/O Timeout",  "Bad",         "Bad Data",   "Bad Quality",  "Calc Failed",
+        "Calc Off",     "Calc Timeout", "Configure",   "Equip Fail", "Invalid Data", "Out of Serv",
+        "Over Range",   "Under Range",  "Not Connect", "No Sample",  "No Result",    "Intf Shut",
+        "Doubtful",     "Arc Off-line", "Failed",      "Unit Down",  "Not Sampled"};
+    const std::string l = lowerAscii(s);
+    for (const char* k : kNoValue) {
+        if (l == k) {
+            return true;
+        }
+    }
+    for (const char* k : kStates) {
+        if (l == lowerAscii(k)) {
+            state = k;
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace drytwin::data::historian
