@@ -266,7 +266,18 @@ namespace {
 Error jsonSyntaxError(const std::string& text, const std::string& path, std::size_t byte,
                       const std::string& what) {
     // nlohmann counts bytes from 1 and points at the character it could not take.
-    const std::size_t offset = std::min(byte == 0 ? 0 : byte - 1, text.size());
+    std::size_t offset = std::min(byte == 0 ? 0 : byte - 1, text.size());
+    // It reports the last character of the token it could not take: point at the token's start.
+    if (offset < text.size() && text[offset] == '"' && offset > 0) {
+        const auto open = text.rfind('"', offset - 1);
+        offset = open == std::string::npos ? offset : open;
+    } else {
+        while (offset > 0 && offset < text.size() && std::isalnum(static_cast<unsigned char>(text[offset])) &&
+               (std::isalnum(static_cast<unsigned char>(text[offset - 1])) || text[offset - 1] == '.' ||
+                text[offset - 1] == '-' || text[offset - 1] == '+')) {
+            --offset;
+        }
+    }
     int line = 0, column = 0;
     historian::lineAndColumnAt(text, offset, line, column);
     std::string reason = what;

@@ -23,17 +23,18 @@ using namespace historian;
 
 namespace {
 
-/// Relative seconds may group thousands ("1.000" after "999" in a German export): an ambiguous
-/// cell takes the reading nearer the stamp the last step leads to expect.
-double relativeSeconds(const NumberCell& n, const std::vector<RowStamp>& rows, double lastStep) {
+/// Relative time (in units of @p scale seconds) may group thousands ("1.000" after "999" in a
+/// German export): an ambiguous cell takes the reading nearer the stamp the last step leads to expect.
+double relativeSeconds(const NumberCell& n, double scale, const std::vector<RowStamp>& rows,
+                       double lastStep) {
     const bool ambiguous =
         n.marks == NumberMarks::PointOrThousands || n.marks == NumberMarks::CommaOrThousands;
     if (!ambiguous || rows.empty()) {
-        return n.value;
+        return n.value * scale;
     }
     const double expected = rows.back().t + lastStep;
-    const double grouped = thousandsValue(n.value);
-    return std::abs(grouped - expected) < std::abs(n.value - expected) ? grouped : n.value;
+    const double asDecimal = n.value * scale, asGrouped = thousandsValue(n.value) * scale;
+    return std::abs(asGrouped - expected) < std::abs(asDecimal - expected) ? asGrouped : asDecimal;
 }
 
 /// The rows of a historian export (UTF-8 @p text of shape result.shape) into runs.
@@ -65,6 +66,7 @@ Expected<PlantFileRuns> readHistorianRows(const std::string& text, const std::st
     std::string_view line;
     bool headerDone = false, unitsDone = !shape.unitsRow;
     double lastStep = runs.stepS;
+    Error cellError;
     std::size_t nextProgress = 0;
     rows.reserve(text.size() / 64);
     for (auto& c : columns) {
@@ -113,7 +115,7 @@ Expected<PlantFileRuns> readHistorianRows(const std::string& text, const std::st
         if (shape.timeFormat == TimeFormat::Seconds) {
             const NumberCell n = readNumberCell(fields[timeIndex]);
             stampOk = n.isNumber;
-            stamp.seconds = stampOk ? relativeSeconds(n, rows, lastStep) * layout.timeScale : 0;
+            stamp.seconds = stampOk ? relativeSeconds(n, layout.timeScale, rows, lastStep) : 0;
         } else {
             stampOk = parseTimeStamp(fields[timeIndex], shape.timeFormat, stamp);
         }
@@ -150,8 +152,8 @@ Expected<PlantFileRuns> readHistorianRows(const std::string& text, const std::st
             lastStep = r.t - rows.back().t;
         }
         for (auto& c : columns) {
-            if (auto st = c.readCell(fields[c.field], lineNo, file); !st) {
-                return st.error();
+            if (!c.readCell(fields[c.field], lineNo, file, cellError)) {
+                return cellError;
             }
         }
         rows.push_back(r);

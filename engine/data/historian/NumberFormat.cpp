@@ -167,116 +167,131 @@ bool parseNumber(std::string_view cell, char decimalMark, double& value) {
 }
 
 void DecimalMarkEvidence::add(const NumberCell& cell, std::uint32_t row, int line, std::string_view text) {
+    const auto first = [&](FirstCell& f) {
+        if (f.line == 0) {
+            f.line = line;
+            f.text = trimmed(text);
+        }
+    };
     switch (cell.marks) {
     case NumberMarks::None:
         return;
     case NumberMarks::DecimalPoint:
-        if (points++ == 0) {
-            firstPointLine = line;
-            firstPointCell = trimmed(text);
-        }
+        ++points;
+        first(firstPoint);
         return;
     case NumberMarks::DecimalComma:
-        if (commas++ == 0) {
-            firstCommaLine = line;
-            firstCommaCell = trimmed(text);
-        }
+        ++commas;
+        first(firstComma);
         return;
     case NumberMarks::PointOrThousands:
+        first(firstPointOrThousands);
+        pointOrThousandsRows.push_back(row);
+        return;
     case NumberMarks::CommaOrThousands:
-        if (ambiguous++ == 0) {
-            firstAmbiguousLine = line;
-            firstAmbiguousCell = trimmed(text);
-        }
-        (cell.marks == NumberMarks::PointOrThousands ? pointOrThousandsRows : commaOrThousandsRows)
-            .push_back(row);
+        first(firstCommaOrThousands);
+        commaOrThousandsRows.push_back(row);
         return;
     }
 }
 
+namespace {
+
+/// The first cell of one kind over all columns, in file order (line, then column).
+struct FoundCell {
+    const ColumnMarks* column = nullptr;
+    const DecimalMarkEvidence::FirstCell* cell = nullptr;
+    explicit operator bool() const { return column != nullptr; }
+    int line() const { return cell->line; }
+    std::string describe() const {
+        return "'" + cell->text + "' (column '" + column->name + "', line " + std::to_string(cell->line) +
+               ")";
+    }
+};
+
+FoundCell firstOfKind(const std::vector<ColumnMarks>& columns,
+                      const DecimalMarkEvidence::FirstCell DecimalMarkEvidence::*kind) {
+    FoundCell found;
+    for (const auto& c : columns) {
+        const auto& cell = c.evidence->*kind;
+        if (cell.line > 0 && (!found || cell.line < found.line() ||
+                              (cell.line == found.line() && c.fileColumn < found.column->fileColumn))) {
+            found = {&c, &cell};
+        }
+    }
+    return found;
+}
+
+} // namespace
+
 DecimalMarkDecision decideDecimalMark(const std::vector<ColumnMarks>& columns, char mappingMark,
                                       char delimiter, const std::string& file) {
     DecimalMarkDecision d;
-    const ColumnMarks* firstPoint = nullptr;
-    const ColumnMarks* firstComma = nullptr;
-    const ColumnMarks* firstAmbiguous = nullptr;
-    bool pointOrThousands = false, commaOrThousands = false;
-    // The first cell of a kind in file order (line, then column).
-    const auto earlier = [](const ColumnMarks* best, int bestLine, const ColumnMarks& c, int line) {
-        return !best || line < bestLine || (line == bestLine && c.fileColumn < best->fileColumn);
-    };
-    int pointLine = 0, commaLine = 0, ambiguousLine = 0;
-    for (const auto& c : columns) {
-        const DecimalMarkEvidence& e = *c.evidence;
-        if (e.points > 0 && earlier(firstPoint, pointLine, c, e.firstPointLine)) {
-            firstPoint = &c;
-            pointLine = e.firstPointLine;
-        }
-        if (e.commas > 0 && earlier(firstComma, commaLine, c, e.firstCommaLine)) {
-            firstComma = &c;
-            commaLine = e.firstCommaLine;
-        }
-        if (e.ambiguous > 0 && earlier(firstAmbiguous, ambiguousLine, c, e.firstAmbiguousLine)) {
-            firstAmbiguous = &c;
-            ambiguousLine = e.firstAmbiguousLine;
-        }
-        pointOrThousands = pointOrThousands || !e.pointOrThousandsRows.empty();
-        commaOrThousands = commaOrThousands || !e.commaOrThousandsRows.empty();
-    }
-    const auto pointCell = [&] {
-        return "column '" + firstPoint->name + "', line " + std::to_string(pointLine) + ": '" +
-               firstPoint->evidence->firstPointCell + "'";
-    };
-    const auto commaCell = [&] {
-        return "column '" + firstComma->name + "', line " + std::to_string(commaLine) + ": '" +
-               firstComma->evidence->firstCommaCell + "'";
-    };
-    const auto fail = [&](const ColumnMarks* at, int line, std::string why) {
+    const FoundCell point = firstOfKind(columns, &DecimalMarkEvidence::firstPoint);
+    const FoundCell comma = firstOfKind(columns, &DecimalMarkEvidence::firstComma);
+    const FoundCell pointOrThousands = firstOfKind(columns, &DecimalMarkEvidence::firstPointOrThousands);
+    const FoundCell commaOrThousands = firstOfKind(columns, &DecimalMarkEvidence::firstCommaOrThousands);
+    const auto fail = [&](const FoundCell& at, std::string why) {
         d.ok = false;
-        d.line = line;
-        d.fileColumn = at->fileColumn;
+        d.line = at.line();
+        d.fileColumn = at.column->fileColumn;
         d.why = std::move(why);
         return d;
     };
     if (mappingMark != 0) {
         d.mark = mappingMark;
-        if (mappingMark == '.' && firstComma) {
-            return fail(firstComma, commaLine,
-                        "a decimal comma (" + commaCell() +
-                            "), but the column mapping's \"decimal_mark\" is \".\"");
+        if (mappingMark == '.' && comma) {
+            return fail(comma, "a decimal comma " + comma.describe() +
+                                   ", but the column mapping's \"decimal_mark\" is \".\"");
         }
-        if (mappingMark == ',' && firstPoint) {
-            return fail(firstPoint, pointLine,
-                        "a decimal point (" + pointCell() +
-                            "), but the column mapping's \"decimal_mark\" is \",\"");
+        if (mappingMark == ',' && point) {
+            return fail(point, "a decimal point " + point.describe() +
+                                   ", but the column mapping's \"decimal_mark\" is \",\"");
         }
         return d;
     }
-    if (firstPoint && firstComma) {
-        const bool commaLater = commaLine >= pointLine;
-        return fail(commaLater ? firstComma : firstPoint, commaLater ? commaLine : pointLine,
-                    "the file mixes a decimal point (" + pointCell() + ") and a decimal comma (" +
-                        commaCell() + "); export it with one number format");
+    if (point && comma) {
+        return fail(comma.line() >= point.line() ? comma : point,
+                    "the file mixes a decimal point " + point.describe() + " and a decimal comma " +
+                        comma.describe() + "; export it with one number format");
     }
-    if (firstPoint || firstComma) {
-        d.mark = firstPoint ? '.' : ',';
+    if (point || comma) {
+        d.mark = point ? '.' : ',';
         return d;
     }
-    // Nothing in the file tells: a comma between fields cannot also be the decimal mark; otherwise
-    // a cell's only mark is taken as its decimal mark, and the choice is noted with its fix.
-    d.mark = delimiter != ',' && commaOrThousands && !pointOrThousands ? ',' : '.';
-    if (firstAmbiguous) {
-        d.guessed = true;
-        const char other = d.mark == '.' ? ',' : '.';
-        d.why =
-            placeInFile(file, ambiguousLine, firstAmbiguous->fileColumn) + ": numbers such as '" +
-            firstAmbiguous->evidence->firstAmbiguousCell + "' (column '" + firstAmbiguous->name + "') read " +
-            (d.mark == '.' ? "with a decimal point or with a point grouping thousands"
-                           : "with a decimal comma or with a comma grouping thousands") +
-            ", and no cell of the file tells which; read with a decimal " +
-            (d.mark == '.' ? "point" : "comma") + ". If the mark groups thousands, set \"decimal_mark\": \"" +
-            std::string(1, other) + "\" in the column mapping";
+    if (!pointOrThousands && !commaOrThousands) {
+        return d; // only whole numbers: the mark does not matter
     }
+    // Nothing in the file tells. One kind of cell: its mark is the decimal mark (a comma between
+    // fields cannot be one). Both kinds: the delimiter's convention, a tab's has none.
+    std::string cells;
+    if (pointOrThousands && commaOrThousands) {
+        if (delimiter == '\t') {
+            const FoundCell& later =
+                pointOrThousands.line() >= commaOrThousands.line() ? pointOrThousands : commaOrThousands;
+            return fail(later,
+                        "numbers such as " + pointOrThousands.describe() + " and " +
+                            commaOrThousands.describe() +
+                            " read with a decimal point and a comma grouping thousands or the other way "
+                            "round, and no cell of the file tells which; set \"decimal_mark\": \",\" or "
+                            "\".\" in the column mapping");
+        }
+        d.mark = delimiter == ';' ? ',' : '.';
+        cells = pointOrThousands.describe() + " and " + commaOrThousands.describe();
+    } else if (commaOrThousands) {
+        d.mark = delimiter == ',' ? '.' : ',';
+        cells = commaOrThousands.describe();
+    } else {
+        d.mark = '.';
+        cells = pointOrThousands.describe();
+    }
+    d.guessed = true;
+    const FoundCell& at = pointOrThousands ? pointOrThousands : commaOrThousands;
+    d.why = placeInFile(file, at.line(), at.column->fileColumn) + ": numbers such as " + cells +
+            " read with either mark as the decimal mark and the other grouping thousands, and no cell of "
+            "the file tells which; read with a decimal " +
+            (d.mark == '.' ? "point" : "comma") + ". If that is wrong, set \"decimal_mark\": \"" +
+            (d.mark == '.' ? "," : ".") + "\" in the column mapping";
     return d;
 }
 

@@ -40,13 +40,14 @@ bool parseNumber(std::string_view cell, char decimalMark, double& value);
 /// @brief What a column's cells say about its decimal mark, gathered over the whole file (a start-up
 /// ramp below 1,000 must not decide it for the "6.497" that follow).
 struct DecimalMarkEvidence {
+    /// The first cell of one kind: its file line and text (line 0: none yet).
+    struct FirstCell {
+        int line = 0;
+        std::string text;
+    };
     std::size_t points = 0, commas = 0; ///< cells that fit only one mark
-    int firstPointLine = 0, firstCommaLine = 0;
-    std::string firstPointCell, firstCommaCell;
-    std::size_t ambiguous = 0; ///< "6.497" or "6,497": it depends
-    int firstAmbiguousLine = 0;
-    std::string firstAmbiguousCell;
-    /// Values of the cells that depend on the decision, by row (read with the mark as decimal).
+    FirstCell firstPoint, firstComma, firstPointOrThousands, firstCommaOrThousands;
+    /// Rows of the cells that depend on the decision ("6.497", "6,497"), read with the mark as decimal.
     std::vector<std::uint32_t> pointOrThousandsRows, commaOrThousandsRows;
 
     /// @brief Counts @p cell (row @p row of the column, file line @p line).
@@ -74,7 +75,9 @@ struct DecimalMarkDecision {
 /// what the cells that fit only one mark say, over every column and every row (a start-up ramp
 /// below 1,000 does not decide it for the "6.497" that follow). Cells that contradict the mapping
 /// or each other are an error. When no cell tells, a cell's only mark is taken as its decimal mark
-/// unless @p delimiter is a comma, and the guess is noted with the setting that overrides it.
+/// (and with both kinds, a semicolon-separated file takes the decimal comma, a comma-separated one
+/// the point); the guess is noted with the setting that overrides it. Where even that cannot
+/// tell (both kinds in a tab-separated file), the setting is asked for.
 DecimalMarkDecision decideDecimalMark(const std::vector<ColumnMarks>& columns, char mappingMark,
                                       char delimiter, const std::string& file);
 

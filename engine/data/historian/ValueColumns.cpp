@@ -66,7 +66,7 @@ std::string ValueColumn::label() const {
     return "'" + header + "'" + (contract ? " (" + std::string(spec(*contract).name) + ")" : "");
 }
 
-Status ValueColumn::readCell(std::string_view cell, int line, const std::string& file) {
+bool ValueColumn::readCell(std::string_view cell, int line, const std::string& file, Error& error) {
     const auto row = static_cast<std::uint32_t>(values.size());
     std::string_view state;
     if (isMissingCell(cell, state)) {
@@ -74,7 +74,7 @@ Status ValueColumn::readCell(std::string_view cell, int line, const std::string&
             firstStateLine = line;
         }
         values.push_back(kNan);
-        return {};
+        return true;
     }
     const NumberCell n = readNumberCell(cell);
     if (!n.isNumber) {
@@ -86,15 +86,16 @@ Status ValueColumn::readCell(std::string_view cell, int line, const std::string&
                     " (a number, an empty cell or a PI digital state such as 'No Data' is expected)",
                 ErrorCode::TextInNumber);
             e.args = {file, std::to_string(line), std::to_string(field + 1), text, header};
-            return e;
+            error = std::move(e);
+            return false;
         }
         numeric = false; // a text column that is no contract column: not kept in runs
         values.push_back(kNan);
-        return {};
+        return true;
     }
     marks.add(n, row, line, cell);
     values.push_back(n.value);
-    return {};
+    return true;
 }
 
 Expected<ColumnLayout> layOutColumns(const FileShape& shape, const ColumnMapping& mapping,
@@ -171,9 +172,10 @@ Expected<ColumnLayout> layOutColumns(const FileShape& shape, const ColumnMapping
 Expected<char> finishColumns(std::vector<ValueColumn>& columns, const ColumnMapping& mapping,
                              const FileShape& shape, const std::string& file,
                              std::vector<std::string>& notes) {
+    // Only the contract columns' cells decide: a tag no column takes may come from another source.
     std::vector<ColumnMarks> marks;
     for (const auto& c : columns) {
-        if (c.numeric) {
+        if (c.numeric && c.contract) {
             marks.push_back({&c.marks, c.header, static_cast<int>(c.field) + 1});
         }
     }

@@ -31,9 +31,10 @@ struct ValueColumn {
 
     /// @brief "'FEED_WT201.PV' (feed_kg_h)", or "'Status'" for a column no contract column takes.
     std::string label() const;
-    /// @brief Reads one cell into values (NaN for a missing cell or a digital state); an error
-    /// names file:line:column when a contract column holds text.
-    Status readCell(std::string_view cell, int line, const std::string& file);
+    /// @brief Reads one cell into values (NaN for a missing cell or a digital state). False, with
+    /// @p error naming file:line:column, when a contract column holds text. (A bool rather than a
+    /// Status: this runs for every cell of a month at 1 s.)
+    bool readCell(std::string_view cell, int line, const std::string& file, Error& error);
 };
 
 /// @brief The columns of a plant file as the mapping lays them out.

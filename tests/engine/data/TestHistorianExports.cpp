@@ -388,13 +388,18 @@ private Q_SLOTS:
                 }
             }
         }
-        QCOMPARE(got.missing.size(), want.missing.size());
-        for (std::size_t m = 0; m < want.missing.size(); ++m) {
-            QCOMPARE(got.missing[m].columnName, want.missing[m].columnName);
-        }
-        if (f.state != "No Data" || format == 0) {
-            QVERIFY2(hasNote(*exported, "hold PI digital states"), notesOf(*exported).c_str());
-        }
+        // The same missing cells (listed in another order: the contract's reader goes line by line).
+        const auto columnsOf = [](const Batch& b) {
+            std::vector<std::string> names;
+            for (const auto& m : b.missing) {
+                names.push_back(m.columnName);
+            }
+            std::sort(names.begin(), names.end());
+            return names;
+        };
+        QCOMPARE(got.missing.size(), std::size_t(4));
+        QVERIFY(columnsOf(got) == columnsOf(want));
+        QVERIFY2(hasNote(*exported, "hold PI digital states"), notesOf(*exported).c_str());
     }
 
     // 1. Excel serial days from 00:00: the first stamp is a whole number, and still days.
@@ -485,7 +490,9 @@ private Q_SLOTS:
                                     600, [](int i) { return iso(i); }, ';', german),
                                 "german.csv", sevenTags());
         VERIFY_OK(r);
-        QVERIFY(r->shape.decimalComma);
+        QVERIFY(r->shape.decimalComma); // every cell has three decimals: the semicolon's convention decides
+        QVERIFY2(hasNote(*r, "read with a decimal comma. If that is wrong, set \"decimal_mark\": \".\""),
+                 notesOf(*r).c_str());
         QCOMPARE(r->runs.size(), std::size_t(1)); // not a line stop at 6.497 kg/h
         const auto& feed = *r->runs[0].values(Column::Feed);
         QCOMPARE(feed[299], 899.0);
@@ -502,11 +509,11 @@ private Q_SLOTS:
                                     400, [](int i) { return iso(i); }, ';', mixed),
                                 "mixed.csv", sevenTags());
         QVERIFY(!m.ok());
-        QCOMPARE(m.error().message(),
-                 std::string(
-                     "mixed.csv:32:5: the file mixes a decimal point (column 'FEED_WT201.PV', line 16: "
-                     "'1013.000') and a decimal comma (column 'HALL_TT301.PV', line 32: '24,5'); export it "
-                     "with one number format"));
+        QCOMPARE(
+            m.error().message(),
+            std::string("mixed.csv:32:5: the file mixes a decimal point '1013.000' (column 'FEED_WT201.PV', "
+                        "line 16) and a decimal comma '24,5' (column 'HALL_TT301.PV', line 32); export it "
+                        "with one number format"));
         // Nothing tells (every number has three decimals and lies below 1,000): read with points,
         // noted with the setting; the setting reads them as thousands.
         const auto threeDecimals = [](int, std::vector<std::string>& row) { row[1] = "900.250"; };
