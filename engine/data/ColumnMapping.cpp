@@ -239,16 +239,13 @@ Status ColumnMapping::checkHeadersPresent(const std::vector<std::string>& header
     }
     const std::string mappingName =
         sourceName.empty() ? "the column mapping" : "the column mapping " + sourceName;
-    Error e = historian::fileError(
+    return historian::fileError(
         file, headerLine, 1,
         mappingName + " names " +
             (lacking.size() == 1 ? "a header" : std::to_string(lacking.size()) + " headers") +
             " that the file's header row lacks: " + list +
             ". Correct the header in the mapping (or remove the entry: an optional column then takes its "
-            "documented default)",
-        ErrorCode::MissingColumn);
-    e.args = {file, lacking.front().first};
-    return e;
+            "documented default)");
 }
 
 Expected<ColumnMapping> readColumnMapping(const std::string& path) {

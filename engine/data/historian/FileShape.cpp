@@ -95,13 +95,13 @@ Expected<FileShape> sniffPlantText(const std::string& text, const std::string& f
                     " names the time column '" + mapped->second + "', which the header row lacks" +
                     (near.empty() ? "" : " (the file has '" + near + "')") +
                     "; correct \"time_s\" in the mapping",
-                ErrorCode::MissingColumn);
+                ErrorCode::MissingColumn, {file, "time_s"});
         }
         return fileError(
             file, shape.headerLine, 1,
             "no time column: neither 'time_s' nor a column named like a time stamp (Timestamp, Time, "
             "Date); name it in the column mapping (\"time_s\": {\"header\": …})",
-            ErrorCode::MissingColumn);
+            ErrorCode::MissingColumn, {file, "time_s"});
     }
     shape.timeHeader = shape.headers[timeIndex];
 

@@ -9,8 +9,11 @@ std::string placeInFile(const std::string& file, int line, int column) {
     return file + ":" + std::to_string(line) + ":" + std::to_string(column);
 }
 
-Error fileError(const std::string& file, int line, int column, std::string reason, ErrorCode code) {
-    std::vector<std::string> args{file, std::to_string(line), std::to_string(column), reason};
+Error fileError(const std::string& file, int line, int column, std::string reason, ErrorCode code,
+                std::vector<std::string> args) {
+    if (args.empty()) {
+        args = {file, std::to_string(line), std::to_string(column), reason};
+    }
     return Error{ErrorKind::BadInput, placeInFile(file, line, column), std::move(reason), code,
                  std::move(args)};
 }

@@ -13,10 +13,10 @@ namespace drytwin::data::historian {
 /// @brief "file:line:column", the place every message of the plant-file reader starts with.
 std::string placeInFile(const std::string& file, int line, int column);
 
-/// @brief A bad-input error at a place in a file. With the default code its arguments are
-/// ErrorCode::DataFileFormat's {file, line, column, English reason}.
+/// @brief A bad-input error at a place in a file. Its arguments are ErrorCode::DataFileFormat's
+/// {file, line, column, English reason} unless @p args gives those of another @p code.
 Error fileError(const std::string& file, int line, int column, std::string reason,
-                ErrorCode code = ErrorCode::DataFileFormat);
+                ErrorCode code = ErrorCode::DataFileFormat, std::vector<std::string> args = {});
 
 /// @brief The 1-based line and column (in bytes) of byte @p offset of @p text.
 void lineAndColumnAt(std::string_view text, std::size_t offset, int& line, int& column);
