@@ -143,29 +143,6 @@ double thousandsValue(double decimalReading) {
     return std::round(decimalReading * 1000.0);
 }
 
-bool parseNumber(std::string_view cell, char decimalMark, double& value) {
-    const NumberCell c = readNumberCell(cell);
-    if (!c.isNumber) {
-        return false;
-    }
-    switch (c.marks) {
-    case NumberMarks::None:
-        value = c.value;
-        return true;
-    case NumberMarks::DecimalPoint:
-    case NumberMarks::DecimalComma:
-        value = c.value;
-        return (c.marks == NumberMarks::DecimalPoint) == (decimalMark == '.');
-    case NumberMarks::PointOrThousands:
-        value = decimalMark == '.' ? c.value : thousandsValue(c.value);
-        return true;
-    case NumberMarks::CommaOrThousands:
-        value = decimalMark == ',' ? c.value : thousandsValue(c.value);
-        return true;
-    }
-    return false;
-}
-
 void DecimalMarkEvidence::add(const NumberCell& cell, std::uint32_t row, int line, std::string_view text) {
     const auto first = [&](FirstCell& f) {
         if (f.line == 0) {

@@ -33,10 +33,6 @@ NumberCell readNumberCell(std::string_view cell);
 /// @brief The value of an ambiguous cell ("6.497") read with its mark grouping thousands (6497).
 double thousandsValue(double decimalReading);
 
-/// @brief Reads @p cell as a number in a file whose decimal mark is @p decimalMark ('.' or ',');
-/// false for text and for a cell whose marks contradict it ("13,25" with a decimal point).
-bool parseNumber(std::string_view cell, char decimalMark, double& value);
-
 /// @brief What a column's cells say about its decimal mark, gathered over the whole file (a start-up
 /// ramp below 1,000 must not decide it for the "6.497" that follow).
 struct DecimalMarkEvidence {

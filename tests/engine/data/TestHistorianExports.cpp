@@ -5,6 +5,7 @@
 #include "data/DataSetSummary.h"
 #include "data/PlantFileReader.h"
 #include "data/SiBatch.h"
+#include "data/historian/NumberFormat.h"
 #include "physics/LineInputs.h"
 
 #include <QString>
@@ -530,6 +531,41 @@ private Q_SLOTS:
                                    "tab.csv", sevenTags("Timestamp", "\"decimal_mark\": \",\""));
         VERIFY_OK(told);
         QCOMPARE((*told->runs[0].values(Column::Feed))[0], 900250.0);
+    }
+
+    // 3. What one cell's marks say, before the file's decimal mark is known.
+    void numberCells_data() {
+        QTest::addColumn<QString>("cell");
+        QTest::addColumn<bool>("isNumber");
+        QTest::addColumn<int>("marks");
+        QTest::addColumn<double>("value");
+        using M = historian::NumberMarks;
+        QTest::newRow("6.497") << "6.497" << true << int(M::PointOrThousands) << 6.497;
+        QTest::newRow("-6,497") << "-6,497" << true << int(M::CommaOrThousands) << -6.497;
+        QTest::newRow("6.497,25") << "6.497,25" << true << int(M::DecimalComma) << 6497.25;
+        QTest::newRow("6,497.25") << "6,497.25" << true << int(M::DecimalPoint) << 6497.25;
+        QTest::newRow("1.234.567") << "1.234.567" << true << int(M::DecimalComma) << 1234567.0;
+        QTest::newRow("0.497") << "0.497" << true << int(M::DecimalPoint) << 0.497;
+        QTest::newRow("6200.000") << "6200.000" << true << int(M::DecimalPoint) << 6200.0;
+        QTest::newRow("13,2") << " 13,2 " << true << int(M::DecimalComma) << 13.2;
+        QTest::newRow("1,5E3") << "1,5E3" << true << int(M::DecimalComma) << 1500.0;
+        QTest::newRow("+5") << "+5" << true << int(M::None) << 5.0;
+        QTest::newRow("12.34.5") << "12.34.5" << false << int(M::None) << 0.0;
+        QTest::newRow("6 497") << "6 497" << false << int(M::None) << 0.0;
+        QTest::newRow("1.234,5,6") << "1.234,5,6" << false << int(M::None) << 0.0;
+    }
+    void numberCells() {
+        QFETCH(QString, cell);
+        QFETCH(bool, isNumber);
+        QFETCH(int, marks);
+        QFETCH(double, value);
+        const auto n = historian::readNumberCell(cell.toStdString());
+        QCOMPARE(n.isNumber, isNumber);
+        if (isNumber) {
+            QCOMPARE(int(n.marks), marks);
+            QCOMPARE(n.value, value);
+        }
+        QCOMPARE(historian::thousandsValue(6.497), 6497.0);
     }
 
     // 4. Time going backwards: a daylight-saving fall-back is a note, any other step back an error.
