@@ -5,6 +5,8 @@ set -euo pipefail
 
 PACKAGES=(
   build-essential cmake pkg-config git
+  # a faster build on two cores: Ninja's scheduling and lld's link (docs/build-speed.md)
+  ninja-build lld
   # Qt 5.15 (Qwt and VTK's Qt module exist for Qt 5 only on Debian 12)
   qtbase5-dev qttools5-dev qttools5-dev-tools libqt5svg5-dev libqt5opengl5-dev
   # Qt's own translations (qtbase_zh_CN.qm: file dialogs, message-box buttons in Chinese)

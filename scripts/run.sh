@@ -4,8 +4,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo
-cmake --build build -j"$(nproc)"
+source scripts/lib/configure-build.sh
+configure_build build
+# Only what the main job needs (the program and its translations): the tests and benchmarks are
+# built by scripts/test.sh, which reuses this build directory.
+cmake --build build -j"$(nproc)" --target drytwin drytwin_translations
 DRYTWIN=build/app/drytwin
 DEMO=build/demo-data
 if [ ! -f "$DEMO/.complete" ]; then

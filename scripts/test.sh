@@ -7,6 +7,7 @@ bash scripts/install-deps.sh
 SANITIZE="${DRYTWIN_SANITIZE:-OFF}"
 BUILD_DIR=build
 [ "$SANITIZE" = "ON" ] && BUILD_DIR=build-asan
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDRYTWIN_SANITIZE="$SANITIZE"
+source scripts/lib/configure-build.sh
+configure_build "$BUILD_DIR" -DDRYTWIN_SANITIZE="$SANITIZE"
 cmake --build "$BUILD_DIR" -j"$(nproc)"
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$(nproc)"
