@@ -232,8 +232,10 @@ int partFreeRun(bool quick) {
         auto bank = residual::InputDrivenCorrection::train(
             hybrid::splitViews(trained.siBatches(), *pbmA, false), residual::InputDrivenOptions{});
         if (!bank) {
-            fail(a.name + " filter bank", bank.error());
+            fail(a.name + " input-driven correction", bank.error());
         }
+        std::fprintf(stderr, "study_hybrid: %s: %s\n", a.name.c_str(),
+                     bank->validation().basisChoice.c_str());
         std::vector<std::pair<std::string, residual::InputDrivenCorrection>> variants;
         if (std::getenv("STUDY_HYBRID_VARIANTS")) {
             auto add = [&](const std::string& name, residual::InputDrivenOptions o) {
@@ -244,12 +246,14 @@ int partFreeRun(bool quick) {
                 }
             };
             residual::InputDrivenOptions o;
+            o.basis = residual::InputBasis::FilterBank;
             add("filter bank", o);
             o.basis = residual::InputBasis::FilterBankAndLags;
             add("bank and lags", o);
             o.timeConstantsS = {20, 60, 180, 540, 1620};
             add("bank 20-1620 and lags", o);
             o = {};
+            o.basis = residual::InputBasis::FilterBank;
             o.cascadeOrder = 1;
             add("order 1", o);
             o = {};
@@ -351,8 +355,9 @@ int partFreeRun(bool quick) {
             std::fprintf(stderr, "  variant %-20s X %.4f T %.3f (CV ridge %g)\n", name.c_str(), m.first,
                          m.second, c.validation().ridge);
         }
-        std::fprintf(stderr, "  filter bank alone: X %.4f T %.3f (CV ridge %g; %s)\n", bankMae.first,
-                     bankMae.second, bank->validation().ridge, bank->validation().note.c_str());
+        std::fprintf(stderr, "  input-driven correction alone: X %.4f T %.3f (CV ridge %g; %s)\n",
+                     bankMae.first, bankMae.second, bank->validation().ridge,
+                     bank->validation().note.c_str());
         const auto pgrl =
             freeRunMae(views, [&](const residual::BatchView& v) { return model.pgrlCc->predictFreeRun(v); });
         const auto pbmTrue = freeRunMae(truthViews, evaluation::pbmPrediction);

@@ -209,6 +209,9 @@ void printTraining(const workflow::TrainResult& t) {
                     m == t.pgrlCc.get() ? "pgrl_cc" : "ext_input_residual", v.folds, v.maeMoisturePbm,
                     v.maeMoistureCorrected, v.maeTemperaturePbm, v.maeTemperatureCorrected,
                     v.note.empty() ? "" : "; ", v.note.c_str());
+        if (!v.basisChoice.empty()) {
+            std::printf("%-20s   basis: %s\n", "", v.basisChoice.c_str());
+        }
     }
     for (const auto* m : {t.pgrlCc.get(), t.extInput.get()}) {
         if (!m->options().nestReferences || m->correctionWeightHorizons().empty()) {

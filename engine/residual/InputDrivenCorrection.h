@@ -24,13 +24,17 @@ enum class InputBasis {
     LaggedInputs,
     /// Both side by side: the filter bank's long memory and the lags' sharp delays.
     FilterBankAndLags,
+    /// Each of the three above fitted, the one with the smallest cross-validated error on the
+    /// training part kept (issue #42: neither basis won on every line; which one does is a
+    /// property of the line, to be found in its training data, never in the data it is judged on).
+    ChosenByValidation,
 };
 
 /// @brief Options of the input-driven correction (issue #42): a linear model of the PBM's
 /// free-run error from the inputs, the disturbances and the PBM's own proxy states and outputs,
 /// never from a measured output.
 struct InputDrivenOptions {
-    InputBasis basis = InputBasis::FilterBank;
+    InputBasis basis = InputBasis::ChosenByValidation;
     bool useProxies = true; ///< false: inputs and disturbances only (the external-input variant)
     /// Filter bank: time constants [s] of the cascades; each cascade has @ref cascadeOrder stages
     /// (the second stage's impulse response peaks at τ, which carries transport delays).
@@ -60,7 +64,13 @@ struct InputDrivenValidation {
     double maeTemperaturePbm = 0, maeTemperatureCorrected = 0; ///< °C
     bool moistureUsed = false, temperatureUsed = false;
     std::string note; ///< why an output's correction is not used, in plain words; empty if both are
+    /// With InputBasis::ChosenByValidation: each basis tried and its cross-validated error
+    /// relative to the PBM's (mean over the two outputs; < 1 beats the PBM), in plain words.
+    std::string basisChoice;
 };
+
+/// @brief The basis's name as model files and reports write it ("filter_bank", …).
+std::string basisName(InputBasis basis);
 
 /// @brief The input-driven part of the hybrid (issue #42): ê_free,k = C φ(z_0 … z_k) with φ the
 /// basis of the input history. The free-run hybrid is ŷ_mech + ê_free; the measured error's
@@ -93,6 +103,9 @@ public:
     static Expected<InputDrivenCorrection> fromJson(const std::string& json);
 
 private:
+    /// InputBasis::ChosenByValidation: each concrete basis trained, the best one kept.
+    static Expected<InputDrivenCorrection> trainChoosingBasis(const std::vector<BatchView>& views,
+                                                              const InputDrivenOptions& options);
     /// The raw inputs z of every row of a batch (rows × inputs), missing cells holding the
     /// last finite value (the first finite one before it).
     Eigen::MatrixXd inputSeries(const data::SiBatch& batch, const physics::SimulationResult& pbm) const;

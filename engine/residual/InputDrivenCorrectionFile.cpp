@@ -13,9 +13,7 @@ constexpr int kOutputs = 2; // outlet moisture (% wb) and temperature (°C)
 std::string InputDrivenCorrection::toJson() const {
     nlohmann::json j;
     const auto& o = m_options;
-    j["basis"] = o.basis == InputBasis::FilterBank     ? "filter_bank"
-                 : o.basis == InputBasis::LaggedInputs ? "lagged_inputs"
-                                                       : "filter_bank_and_lags";
+    j["basis"] = basisName(o.basis); // a trained correction's basis is always a concrete one
     j["use_proxies"] = o.useProxies;
     j["time_constants_s"] = o.timeConstantsS;
     j["cascade_order"] = o.cascadeOrder;
@@ -39,7 +37,8 @@ std::string InputDrivenCorrection::toJson() const {
                        {"mae_temperature_corrected", v.maeTemperatureCorrected},
                        {"moisture_used", v.moistureUsed},
                        {"temperature_used", v.temperatureUsed},
-                       {"note", v.note}};
+                       {"note", v.note},
+                       {"basis_choice", v.basisChoice}};
     return j.dump();
 }
 
@@ -49,9 +48,17 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::strin
         InputDrivenCorrection m;
         auto& o = m.m_options;
         const auto basis = j.at("basis").get<std::string>();
-        o.basis = basis == "lagged_inputs"          ? InputBasis::LaggedInputs
-                  : basis == "filter_bank_and_lags" ? InputBasis::FilterBankAndLags
-                                                    : InputBasis::FilterBank;
+        if (basis == "lagged_inputs") {
+            o.basis = InputBasis::LaggedInputs;
+        } else if (basis == "filter_bank_and_lags") {
+            o.basis = InputBasis::FilterBankAndLags;
+        } else if (basis == "filter_bank") {
+            o.basis = InputBasis::FilterBank;
+        } else {
+            return Error{ErrorKind::BadInput, "input_driven.basis",
+                         "\"" + basis +
+                             "\" is not a basis (filter_bank, lagged_inputs or filter_bank_and_lags)"};
+        }
         o.useProxies = j.at("use_proxies").get<bool>();
         o.timeConstantsS = j.at("time_constants_s").get<std::vector<double>>();
         o.cascadeOrder = j.at("cascade_order").get<int>();
@@ -80,6 +87,7 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::strin
         val.moistureUsed = v.at("moisture_used").get<bool>();
         val.temperatureUsed = v.at("temperature_used").get<bool>();
         val.note = v.at("note").get<std::string>();
+        val.basisChoice = v.value("basis_choice", std::string()); // files before the choice have none
         const int n = m.inputCount();
         const Eigen::Index features = m.featureCountFor(n);
         if (m.m_inputMean.size() != n || m.m_inputScale.size() != n || m.m_inputLow.size() != n ||

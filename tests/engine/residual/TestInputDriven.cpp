@@ -176,6 +176,35 @@ private slots:
         QVERIFY(!InputDrivenCorrection::fromJson(R"({"basis": "filter_bank"})").ok());
     }
 
+    void basisIsTheOneWithTheSmallestCrossValidatedError() {
+        const auto& train = distributed(4201);
+        auto chosen = InputDrivenCorrection::train(train.views(), InputDrivenOptions{});
+        QVERIFY2(chosen.ok(), chosen ? "" : chosen.error().message().c_str());
+        QVERIFY(chosen->options().basis != InputBasis::ChosenByValidation);
+        const auto relative = [](const InputDrivenValidation& v) {
+            return 0.5 * (std::min(1.0, v.maeMoistureCorrected / v.maeMoisturePbm) +
+                          std::min(1.0, v.maeTemperatureCorrected / v.maeTemperaturePbm));
+        };
+        const double chosenScore = relative(chosen->validation());
+        for (const auto basis :
+             {InputBasis::FilterBank, InputBasis::LaggedInputs, InputBasis::FilterBankAndLags}) {
+            InputDrivenOptions o;
+            o.basis = basis;
+            auto c = InputDrivenCorrection::train(train.views(), o);
+            QVERIFY(c.ok());
+            QVERIFY2(chosenScore <= relative(c->validation()) + 1e-12, basisName(basis).c_str());
+            QVERIFY2(chosen->validation().basisChoice.find(basisName(basis)) != std::string::npos,
+                     chosen->validation().basisChoice.c_str());
+        }
+        qInfo("%s", chosen->validation().basisChoice.c_str());
+        // A file names a concrete basis; the choice itself is not a basis one can predict with.
+        auto text = chosen->toJson();
+        const auto at = text.find(basisName(chosen->options().basis));
+        QVERIFY(at != std::string::npos);
+        text.replace(at, basisName(chosen->options().basis).size(), "chosen_by_validation");
+        QVERIFY(!InputDrivenCorrection::fromJson(text).ok());
+    }
+
     void residualModelsFreeRunIsThePbmPlusTheCorrection() {
         const auto& train = distributed(4201);
         const auto& judged = distributed(4202);
