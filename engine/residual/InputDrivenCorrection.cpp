@@ -3,6 +3,7 @@
 
 #include "common/Units.h"
 #include "residual/ResidualModel.h"
+#include "residual/TrailingHampel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,6 +18,13 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kOutputs = 2;     // outlet moisture (% wb) and temperature (°C)
 constexpr int kProxyInputs = 8; // six proxy states and the PBM's two outlet outputs
+constexpr int kMeasuredInputs =
+    7; // hot air, feed, inlet moisture and temperature, ambient T and RH, air speed
+// Transmitter spikes (TrailingHampel.h): up to 10 samples long, 6 robust standard deviations
+// from the last 21 samples' median and at least one standard deviation of the training data.
+constexpr int kDespikeWindow = 21;
+constexpr double kDespikeCutoff = 6.0;
+constexpr double kDespikeFloor = 1.0;
 
 /// Median sample step of a batch [s]; 1 s when it cannot be told.
 double medianStep(const data::SiBatch& b) {
@@ -96,7 +104,7 @@ Status InputDrivenOptions::validate() const {
 }
 
 int InputDrivenCorrection::inputCount() const {
-    return 7 + (m_options.useProxies ? kProxyInputs : 0);
+    return kMeasuredInputs + (m_options.useProxies ? kProxyInputs : 0);
 }
 
 Eigen::MatrixXd InputDrivenCorrection::inputSeries(const data::SiBatch& b,
@@ -142,8 +150,13 @@ Eigen::MatrixXd InputDrivenCorrection::basisOf(const Eigen::MatrixXd& raw, doubl
     const Eigen::Index rows = raw.rows(), n = raw.cols();
     Eigen::MatrixXd z(rows, n);
     for (Eigen::Index k = 0; k < rows; ++k) {
-        const Eigen::VectorXd s = (raw.row(k).transpose() - m_inputMean).cwiseQuotient(m_inputScale);
-        z.row(k) = s.cwiseMax(m_inputLow).cwiseMin(m_inputHigh).transpose();
+        z.row(k) = (raw.row(k).transpose() - m_inputMean).cwiseQuotient(m_inputScale).transpose();
+    }
+    // Transmitter spikes in the measured inputs (not the PBM's proxies, which are smooth): a
+    // lag basis would carry a spike's full height for as many rows as it has lags.
+    despikeTrailing(z, kMeasuredInputs, kDespikeWindow, kDespikeCutoff, kDespikeFloor);
+    for (Eigen::Index k = 0; k < rows; ++k) {
+        z.row(k) = z.row(k).cwiseMax(m_inputLow.transpose()).cwiseMin(m_inputHigh.transpose());
     }
     const bool bank = m_options.basis != InputBasis::LaggedInputs;
     const bool lagged = m_options.basis != InputBasis::FilterBank;
@@ -193,57 +206,6 @@ Eigen::Index InputDrivenCorrection::featureCountFor(int n) const {
     return 1 + bank + lagged;
 }
 
-std::string basisName(InputBasis basis) {
-    switch (basis) {
-    case InputBasis::FilterBank:
-        return "filter_bank";
-    case InputBasis::LaggedInputs:
-        return "lagged_inputs";
-    case InputBasis::FilterBankAndLags:
-        return "filter_bank_and_lags";
-    case InputBasis::ChosenByValidation:
-        break;
-    }
-    return "chosen_by_validation";
-}
-
-Expected<InputDrivenCorrection> InputDrivenCorrection::trainChoosingBasis(const std::vector<BatchView>& views,
-                                                                          const InputDrivenOptions& options) {
-    // The cross-validated error relative to the PBM's, averaged over the two outputs (an
-    // output the correction does not beat counts as 1: the PBM is then used for it).
-    const auto relativeError = [](const InputDrivenValidation& v) {
-        const auto ratio = [](double corrected, double pbm) {
-            return pbm > 0 ? std::min(1.0, corrected / pbm) : 1.0;
-        };
-        return 0.5 * (ratio(v.maeMoistureCorrected, v.maeMoisturePbm) +
-                      ratio(v.maeTemperatureCorrected, v.maeTemperaturePbm));
-    };
-    std::optional<InputDrivenCorrection> best;
-    double bestScore = std::numeric_limits<double>::infinity();
-    std::string tried;
-    for (const auto basis :
-         {InputBasis::FilterBank, InputBasis::LaggedInputs, InputBasis::FilterBankAndLags}) {
-        auto concrete = options;
-        concrete.basis = basis;
-        auto candidate = train(views, concrete);
-        if (!candidate) {
-            return candidate.error(); // the same rows feed every basis: no basis would do better
-        }
-        const double score = relativeError(candidate->validation());
-        char line[96];
-        std::snprintf(line, sizeof line, "%s%s %.3f", tried.empty() ? "" : ", ", basisName(basis).c_str(),
-                      score);
-        tried += line;
-        if (score < bestScore) { // ties keep the earlier, smaller basis
-            bestScore = score;
-            best = std::move(*candidate);
-        }
-    }
-    best->m_validation.basisChoice = basisName(best->m_options.basis) +
-                                     " kept; cross-validated error relative to the physics model's: " + tried;
-    return std::move(*best);
-}
-
 Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<BatchView>& views,
                                                              const InputDrivenOptions& options) {
     if (auto s = options.validate(); !s) {
@@ -258,8 +220,6 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
     // Raw inputs of every batch up to the end of its view, and the training rows' statistics.
     std::vector<Eigen::MatrixXd> raw;
     Eigen::VectorXd sum = Eigen::VectorXd::Zero(n), sumSq = Eigen::VectorXd::Zero(n);
-    Eigen::VectorXd low = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity());
-    Eigen::VectorXd high = -low;
     double count = 0;
     for (const auto& v : views) {
         raw.push_back(m.inputSeries(*v.batch, *v.pbm));
@@ -271,8 +231,6 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
             }
             sum += r;
             sumSq += r.cwiseProduct(r);
-            low = low.cwiseMin(r);
-            high = high.cwiseMax(r);
             count += 1;
         }
     }
@@ -284,8 +242,23 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
     m.m_inputMean = sum / count;
     const Eigen::VectorXd var = (sumSq / count - m.m_inputMean.cwiseProduct(m.m_inputMean)).cwiseMax(0.0);
     m.m_inputScale = var.cwiseSqrt().unaryExpr([](double s) { return s > 1e-12 ? s : 1.0; });
-    const Eigen::VectorXd lo = (low - m.m_inputMean).cwiseQuotient(m.m_inputScale);
-    const Eigen::VectorXd hi = (high - m.m_inputMean).cwiseQuotient(m.m_inputScale);
+    // The training range of the standardised inputs, after the spikes are taken out as basisOf
+    // takes them out: a spike in the training data must not widen what counts as seen.
+    Eigen::VectorXd lo = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity());
+    Eigen::VectorXd hi = -lo;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        Eigen::MatrixXd z = (raw[i].rowwise() - m.m_inputMean.transpose()).array().rowwise() /
+                            m.m_inputScale.transpose().array();
+        despikeTrailing(z, kMeasuredInputs, kDespikeWindow, kDespikeCutoff, kDespikeFloor);
+        for (std::size_t k = views[i].rows.begin; k < std::min<std::size_t>(views[i].rows.end, z.rows());
+             ++k) {
+            const Eigen::VectorXd r = z.row(static_cast<Eigen::Index>(k)).transpose();
+            if (r.allFinite()) {
+                lo = lo.cwiseMin(r);
+                hi = hi.cwiseMax(r);
+            }
+        }
+    }
     m.m_inputLow = lo - options.rangeMargin * (hi - lo);
     m.m_inputHigh = hi + options.rangeMargin * (hi - lo);
 

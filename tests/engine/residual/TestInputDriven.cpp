@@ -6,6 +6,7 @@
 #include "residual/InputDrivenCorrection.h"
 #include "residual/RealisedWeight.h"
 #include "residual/ResidualModel.h"
+#include "residual/TrailingHampel.h"
 
 #include <QtTest>
 #include <cmath>
@@ -174,6 +175,32 @@ private slots:
             QVERIFY(std::abs(ax[k] - bx[k]) < 1e-9 && std::abs(at[k] - bt[k]) < 1e-9);
         }
         QVERIFY(!InputDrivenCorrection::fromJson(R"({"basis": "filter_bank"})").ok());
+    }
+
+    void trailingHampelTakesSpikesOutAndLetsStepsThrough() {
+        Eigen::MatrixXd z(200, 2);
+        for (Eigen::Index k = 0; k < z.rows(); ++k) {
+            z(k, 0) = 0.01 * std::sin(0.3 * double(k)) + (k >= 120 ? 3.0 : 0.0); // a genuine step
+            z(k, 1) = 0.5;                                                       // not despiked
+        }
+        for (Eigen::Index k = 60; k < 66; ++k) {
+            z(k, 0) += 40; // a six-sample spike
+        }
+        z(70, 1) = 99;
+        const Eigen::MatrixXd before = z;
+        const auto replaced = despikeTrailing(z, 1, 21, 6.0, 1.0);
+        for (Eigen::Index k = 60; k < 66; ++k) {
+            QVERIFY(std::abs(z(k, 0)) < 0.05);
+        }
+        QCOMPARE(z(70, 1), 99.0);
+        // The step is held back for at most half the window, then passes unchanged.
+        for (Eigen::Index k = 120 + 11; k < z.rows(); ++k) {
+            QCOMPARE(z(k, 0), before(k, 0));
+        }
+        QVERIFY(replaced >= 6 && replaced <= 6 + 11);
+        for (Eigen::Index k = 0; k < 60; ++k) {
+            QCOMPARE(z(k, 0), before(k, 0)); // small variation is not a spike (the floor)
+        }
     }
 
     void basisIsTheOneWithTheSmallestCrossValidatedError() {
