@@ -104,7 +104,16 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    /// The data-set list at the tabs' top right (mainwindow/MainWindowData.cpp).
+    void createDataSetChooser();
+    /// The status line, the progress bar, Cancel and the column-mapping button
+    /// (mainwindow/MainWindowStatus.cpp).
+    void createStatusBar();
     void createMenus();
+    /// Jobs' progress, the Workbench's status and errors onto the status bar.
+    void connectProgress();
+    /// What follows a load, successful or not (mainwindow/MainWindowData.cpp).
+    void connectDataLoading();
     void startActions();
     void setBusy(bool busy);
     void rememberRecent(const QString& path);

@@ -1,0 +1,101 @@
+// How data come into the window and which data set it shows: the data-set list at the tabs' top
+// right, what follows a load (simulate, the project's model and results, the actions asked for),
+// the way to the column mapping when a file was not recognised, and the bundled demo.
+
+#include "MainWindow.h"
+
+#include "data/DataPanel.h"
+
+#include <QComboBox>
+#include <QDir>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QStandardPaths>
+#include <QTabWidget>
+#include <algorithm>
+#include <utility>
+
+namespace drytwin::widgets {
+
+void MainWindow::createDataSetChooser() {
+    // Which data set the tabs show, and the others opened in this window.
+    m_dataSetChooser = new QComboBox;
+    m_dataSetChooser->setToolTip(
+        tr("The data set every tab shows; the others opened in this window stay here"));
+    m_dataSetChooser->setMinimumContentsLength(24);
+    m_dataSetChooser->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    auto* chooserBox = new QWidget;
+    auto* chooserLayout = new QHBoxLayout(chooserBox);
+    chooserLayout->setContentsMargins(4, 0, 4, 0);
+    chooserLayout->addWidget(new QLabel(tr("Data set:")));
+    chooserLayout->addWidget(m_dataSetChooser);
+    m_tabs->setCornerWidget(chooserBox, Qt::TopRightCorner);
+    const auto fillChooser = [this] {
+        m_dataSetChooser->blockSignals(true);
+        m_dataSetChooser->clear();
+        for (const auto& e : m_workbench.dataSets()) {
+            m_dataSetChooser->addItem(e.label, e.path);
+            m_dataSetChooser->setItemData(m_dataSetChooser->count() - 1, e.path, Qt::ToolTipRole);
+        }
+        if (m_workbench.dataSets().empty()) {
+            m_dataSetChooser->addItem(tr("none loaded"));
+        }
+        m_dataSetChooser->setCurrentIndex(std::max(0, m_workbench.currentDataSet()));
+        m_dataSetChooser->blockSignals(false);
+    };
+    fillChooser();
+    connect(&m_workbench, &Workbench::dataSetsChanged, this, fillChooser);
+    connect(m_dataSetChooser, QOverload<int>::of(&QComboBox::activated), &m_workbench,
+            &Workbench::switchDataSet);
+}
+
+void MainWindow::connectDataLoading() {
+    connect(m_mapButton, &QPushButton::clicked, this, [this] {
+        m_mapButton->setVisible(false);
+        if (!m_mapFile.isEmpty()) {
+            m_data->mapAndOpen(m_mapFile);
+        }
+    });
+    connect(&m_workbench, &Workbench::dataChanged, this, [this] {
+        Q_EMIT loadFinished(true);
+        m_mapButton->setVisible(false);
+        m_workbench.simulate();
+        if (!m_pendingModel.isEmpty()) {
+            m_workbench.openModel(m_pendingModel, std::exchange(m_pendingParts, std::nullopt));
+            m_workbench.simulate(); // again, with the project's model
+            m_pendingModel.clear();
+        }
+        restorePending();
+        startActions();
+    });
+    connect(&m_workbench, &Workbench::dataLoadFailed, this,
+            [this](const QString&, const QString& path, bool mappingMayHelp) {
+                // A file whose columns were not recognised: the way to the column mapping, at hand.
+                m_mapFile = mappingMayHelp ? path : QString();
+                m_mapButton->setVisible(mappingMayHelp);
+                Q_EMIT loadFinished(false);
+            });
+}
+
+void MainWindow::openBundledDemo() {
+    // The demo of scripts/run.sh (drytwin generate --demo --seed 2025), written once per user.
+    const QString folder = QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation))
+                               .filePath(QStringLiteral("demo-data"));
+    if (!QDir(folder).entryList({QStringLiteral("*.csv")}, QDir::Files).isEmpty()) {
+        openDataSet(folder);
+        return;
+    }
+    workflow::GenerateOptions g;
+    g.plant = plant::PlantOptions::demo(2025); // distributed plant, realistic sensors
+    g.outFolder = folder.toStdString();
+    m_statusLabel->setText(
+        tr("Writing the bundled demo (10 batches of the virtual plant) to %1…").arg(folder));
+    m_workbench.generate(g);
+}
+
+void MainWindow::openDataSet(const QString& path) {
+    m_workbench.openData(path);
+}
+
+} // namespace drytwin::widgets

@@ -1,0 +1,254 @@
+// What a project file holds and how it comes back: saveProject() writes the paths (data, model,
+// mapping, reference period), the tab, the selected batches, the latest results and the learnt
+// parts' states; openProject() reads them and puts each back once the data and the model are in;
+// reopenInLanguage() carries the whole state into a new window through a temporary project.
+
+#include "MainWindow.h"
+
+#include "common/ErrorText.h"
+#include "common/Translations.h"
+#include "data/DataPanel.h"
+#include "mainwindow/MainWindowInternal.h"
+#include "training/TrainingPanel.h"
+#include "training/TrainingRunner.h"
+#include "workflow/ResultArchive.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QSaveFile>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <algorithm>
+#include <utility>
+
+namespace drytwin::widgets {
+
+bool MainWindow::saveProject(const QString& path, QString* error, bool remember) {
+    // The results beside the project, typed (workflow/ResultArchive.h): a reopened project shows
+    // its calibration, evaluation, ablation, discovery and what-if run without re-running them.
+    const QString resultsPath = path + QStringLiteral(".results.json");
+    {
+        QSaveFile results(resultsPath);
+        if (!results.open(QIODevice::WriteOnly) ||
+            results.write(QByteArray::fromStdString(workflow::latestResultsJson(m_workbench.latest()))) < 0 ||
+            !results.commit()) {
+            if (error) {
+                *error = tr("cannot write %1: %2").arg(resultsPath, results.errorString());
+            }
+            return false;
+        }
+    }
+    const QString savedMessage = tr("Project saved to %1 (model, results and view)").arg(path);
+    QString modelPath = m_workbench.modelPath();
+    bool modelQueued = false;
+    if (modelPath.isEmpty() || m_workbench.model().calibration || m_workbench.model().hasResidualModels()) {
+        // The session's model as it is now, beside the project.
+        // The session writes it (atomically) on the engine thread, queued before anything else the
+        // user starts; a project whose model file is missing opens with the data alone.
+        modelPath = path + QStringLiteral(".model.json");
+        m_workbench.saveModel(modelPath, savedMessage);
+        modelQueued = true;
+    }
+    QJsonObject o;
+    o[QStringLiteral("format")] = QStringLiteral("drytwin-project");
+    o[QStringLiteral("format_version")] = 1;
+    const QDir base = QFileInfo(path).absoluteDir();
+    o[QStringLiteral("data_path")] =
+        m_workbench.dataPath().isEmpty() ? QString() : base.relativeFilePath(m_workbench.dataPath());
+    o[QStringLiteral("model_path")] = base.relativeFilePath(modelPath);
+    o[QStringLiteral("mapping_path")] =
+        m_workbench.mappingPath().isEmpty() ? QString() : base.relativeFilePath(m_workbench.mappingPath());
+    // The reference period discovery compares with: the project remembers it (issue #41).
+    o[QStringLiteral("reference_path")] = m_workbench.referencePath().isEmpty()
+                                              ? QString()
+                                              : base.relativeFilePath(m_workbench.referencePath());
+    o[QStringLiteral("tab")] = QString::fromLatin1(kTabKeys[std::max(0, m_tabs->currentIndex())]);
+    QJsonArray batches;
+    for (const auto& r : m_data->batchTable()->selectionModel()->selectedRows()) {
+        batches.append(r.row());
+    }
+    o[QStringLiteral("selected_batches")] = batches;
+    o[QStringLiteral("results_path")] = base.relativeFilePath(resultsPath);
+    QJsonArray parts;
+    for (const auto& part : m_workbench.learntParts()) {
+        parts.append(
+            QJsonObject{{QStringLiteral("kind"), QString::fromLatin1(control::controllerName(part.kind))},
+                        {QStringLiteral("state"), static_cast<int>(part.state)},
+                        {QStringLiteral("learnt_on"), part.learntOn},
+                        {QStringLiteral("stale_because"), part.staleBecause}});
+    }
+    o[QStringLiteral("learnt_parts")] = parts;
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) {
+        if (error) {
+            *error = tr("cannot write %1: %2").arg(path, f.errorString());
+        }
+        return false;
+    }
+    f.write(QJsonDocument(o).toJson());
+    if (!f.commit()) {
+        if (error) {
+            *error = tr("cannot write %1: %2").arg(path, f.errorString());
+        }
+        return false;
+    }
+    if (remember) {
+        m_projectPath = path;
+        rememberRecent(path);
+    }
+    // With a model to write, the status says "saved" once the model file is written too.
+    m_statusLabel->setText(modelQueued ? tr("Saving the project to %1…").arg(path) : savedMessage);
+    return true;
+}
+
+bool MainWindow::openProject(const QString& path, QString* error, bool remember) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        if (error) {
+            *error = tr("cannot open %1: %2").arg(path, f.errorString());
+        }
+        return false;
+    }
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &parseError);
+    if (doc.isNull() || !doc.isObject() ||
+        doc.object().value(QStringLiteral("format")).toString() != QLatin1String("drytwin-project")) {
+        if (error) {
+            *error = tr("%1 is not a DryTwin project (%2)").arg(path, parseError.errorString());
+        }
+        return false;
+    }
+    const QJsonObject o = doc.object();
+    const QDir base = QFileInfo(path).absoluteDir();
+    const QString data = o.value(QStringLiteral("data_path")).toString();
+    const QString model = o.value(QStringLiteral("model_path")).toString();
+    m_pendingTab = -1;
+    const QString tab = o.value(QStringLiteral("tab")).toString();
+    for (int i = 0; i < 8; ++i) {
+        if (tab == QLatin1String(kTabKeys[i])) {
+            m_pendingTab = i;
+        }
+    }
+    if (remember) {
+        m_projectPath = path;
+        rememberRecent(path);
+    }
+    // Results and the learnt parts' states, put back once the data and the model are in.
+    m_pendingResults.reset();
+    const QString resultsFile = o.value(QStringLiteral("results_path")).toString();
+    if (!resultsFile.isEmpty() && QFileInfo::exists(base.filePath(resultsFile))) {
+        QFile rf(base.filePath(resultsFile));
+        if (rf.open(QIODevice::ReadOnly)) {
+            auto parsed = workflow::parseLatestResults(rf.readAll().toStdString(),
+                                                       base.filePath(resultsFile).toStdString());
+            if (parsed) {
+                m_pendingResults = std::move(*parsed);
+            } else {
+                m_statusLabel->setText(
+                    tr("The project's results could not be read (%1); it opens without them.")
+                        .arg(errorText(parsed.error())));
+            }
+        }
+    }
+    m_pendingParts.reset();
+    const QJsonArray parts = o.value(QStringLiteral("learnt_parts")).toArray();
+    if (parts.size() == 3) {
+        std::array<LearntPart, 3> restored;
+        for (int i = 0; i < 3; ++i) {
+            const QJsonObject p = parts[i].toObject();
+            const auto kind =
+                control::controllerByName(p.value(QStringLiteral("kind")).toString().toStdString());
+            restored[static_cast<std::size_t>(i)] =
+                LearntPart{kind.value_or(control::ControllerKind::Pi),
+                           static_cast<PartState>(std::clamp(p.value(QStringLiteral("state")).toInt(), 0, 2)),
+                           p.value(QStringLiteral("learnt_on")).toString(),
+                           p.value(QStringLiteral("stale_because")).toString()};
+        }
+        m_pendingParts = restored;
+    }
+    if (!model.isEmpty() && QFileInfo::exists(base.filePath(model))) {
+        m_pendingModel = base.filePath(model);
+    }
+    const QString mapping = o.value(QStringLiteral("mapping_path")).toString();
+    const QString reference = o.value(QStringLiteral("reference_path")).toString();
+    m_workbench.setReferencePath(reference.isEmpty() ? QString() : base.filePath(reference));
+    if (!data.isEmpty()) {
+        m_workbench.openData(base.filePath(data), mapping.isEmpty() ? QString() : base.filePath(mapping));
+    } else {
+        if (!m_pendingModel.isEmpty()) {
+            m_workbench.openModel(m_pendingModel, std::exchange(m_pendingParts, std::nullopt));
+            m_pendingModel.clear();
+        }
+        restorePending(); // no data: the results (an MPC run needs none) come back at once
+    }
+    return true;
+}
+
+void MainWindow::restorePending() {
+    if (m_pendingResults) {
+        m_workbench.restoreResults(*m_pendingResults);
+        m_pendingResults.reset();
+    }
+    if (m_pendingParts) { // a project without a model file: the states as saved, at once
+        m_workbench.restoreLearntParts(*m_pendingParts);
+        m_pendingParts.reset();
+    }
+}
+
+MainWindow* MainWindow::reopenInLanguage(const QString& language, QString* error) {
+    if (m_workbench.jobs().busy()) {
+        if (error) {
+            *error = tr("Wait until the running job has finished (or cancel it), then switch the language.");
+        }
+        return nullptr;
+    }
+    const QString temp =
+        QDir(QStandardPaths::writableLocation(QStandardPaths::TempLocation))
+            .filePath(QStringLiteral("drytwin-language-%1.drytwin").arg(QCoreApplication::applicationPid()));
+    if (!saveProject(temp, error, false)) {
+        return nullptr;
+    }
+    // The model file is written on the engine thread: wait for it before the new window reads it.
+    QElapsedTimer waited;
+    waited.start();
+    while (m_workbench.jobs().busy() && waited.elapsed() < 60000) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+    }
+    QSettings().setValue(QStringLiteral("language"), language);
+    setLanguage(language);
+    auto* next = new MainWindow;
+    next->setAttribute(Qt::WA_DeleteOnClose);
+    next->restoreGeometry(saveGeometry());
+    next->m_projectPath = m_projectPath;
+    if (!next->openProject(temp, error, false)) {
+        delete next;
+        return nullptr;
+    }
+    next->m_tabs->setCurrentIndex(m_tabs->currentIndex());
+    // This window stays alive until it is closed (the first one lives as long as the program): a
+    // live training line in it must not run on hidden.
+    if (m_training->runner().frame().started) {
+        const QString kept = m_training->keepCurrentSession();
+        m_training->runner().freeze();
+        next->m_training->noteLabel()->setText(
+            tr("The training session under way was saved in %1 when the language changed: the instructor "
+               "window's Session file ▸ Open session… continues it.")
+                .arg(QDir::toNativeSeparators(kept)));
+    }
+    hide();
+    if (testAttribute(Qt::WA_DeleteOnClose)) {
+        deleteLater();
+    }
+    return next;
+}
+
+} // namespace drytwin::widgets

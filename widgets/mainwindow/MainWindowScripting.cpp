@@ -1,0 +1,90 @@
+// What a demo, a screenshot run or the training command drives from outside: actions run once
+// the data is loaded, as if their buttons were pressed; a saved training session reopened on its
+// tab; one PNG per tab.
+
+#include "MainWindow.h"
+
+#include "calibration/CalibrationPanel.h"
+#include "mainwindow/MainWindowInternal.h"
+#include "mpc/MpcPanel.h"
+#include "residual/ResidualPanel.h"
+#include "training/TrainingPanel.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QTabWidget>
+#include <utility>
+
+namespace drytwin::widgets {
+
+void MainWindow::runAfterLoad(const QStringList& actions) {
+    m_pendingActions = actions;
+    if (m_workbench.hasData()) {
+        startActions();
+    }
+}
+
+void MainWindow::startActions() {
+    // Each is queued on the engine thread behind the one before; the panels show the results.
+    for (const auto& a : std::exchange(m_pendingActions, {})) {
+        if (a == QLatin1String("calibrate")) {
+            m_calibration->run();
+            m_workbench.simulate();
+        } else if (a == QLatin1String("train")) {
+            m_residual->train();
+        } else if (a == QLatin1String("evaluate")) {
+            m_workbench.evaluate();
+        } else if (a == QLatin1String("discover")) {
+            m_workbench.discover();
+        } else if (a == QLatin1String("mpc")) {
+            m_mpc->run();
+        }
+    }
+}
+
+bool MainWindow::hasPendingActions() const {
+    return !m_pendingActions.isEmpty() || m_training->isOpening();
+}
+
+void MainWindow::openTrainingSession(const QString& sessionFile) {
+    m_tabs->setCurrentWidget(m_training);
+    m_training->openSession(sessionFile);
+}
+
+QStringList MainWindow::saveTabScreenshots(const QString& folder) {
+    QDir().mkpath(folder);
+    QStringList files;
+    for (int i = 0; i < m_tabs->count(); ++i) {
+        // A job finishing while the events are processed may bring its own tab forward (a reopened
+        // training session does): the tab is set again until it stays.
+        for (int attempt = 0; attempt < 3; ++attempt) {
+            m_tabs->setCurrentIndex(i);
+            for (int k = 0; k < 5; ++k) {
+                QApplication::processEvents();
+            }
+            if (m_tabs->currentIndex() == i) {
+                break;
+            }
+        }
+        const QString file = QDir(folder).filePath(
+            QStringLiteral("%1-%2.png").arg(i + 1, 2, 10, QLatin1Char('0')).arg(QLatin1String(kTabKeys[i])));
+        if (grab().save(file)) {
+            files << file;
+        }
+        if (m_tabs->widget(i) == m_training) { // the instructor's window at the same moment
+            m_training->setInstructorView(true);
+            for (int k = 0; k < 5; ++k) {
+                QApplication::processEvents();
+            }
+            const QString instructor = QDir(folder).filePath(
+                QStringLiteral("%1-training-instructor.png").arg(i + 2, 2, 10, QLatin1Char('0')));
+            if (m_training->instructorWindow()->grab().save(instructor)) {
+                files << instructor;
+            }
+            m_training->setInstructorView(false);
+        }
+    }
+    return files;
+}
+
+} // namespace drytwin::widgets

@@ -1,0 +1,126 @@
+// What the status bar says while DryTwin works: the status line (the Workbench's last word, or a
+// job's stage and share in the user's language), one progress bar per action, Cancel, and errors
+// (on the status line, and in a box unless DRYTWIN_NO_MODAL is set).
+
+#include "MainWindow.h"
+
+#include "common/Translations.h"
+
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QStatusBar>
+#include <algorithm>
+#include <map>
+
+namespace drytwin::widgets {
+
+void MainWindow::createStatusBar() {
+    m_statusLabel = new QLabel(noDataHint());
+    m_progressBar = new QProgressBar;
+    m_progressBar->setMaximumWidth(200);
+    m_progressBar->setRange(0, 100);
+    m_cancelButton = new QPushButton(tr("Cancel"));
+    statusBar()->addWidget(m_statusLabel, 1);
+    m_mapButton = new QPushButton(tr("Map its columns…"));
+    m_mapButton->setToolTip(tr("Open the column-mapping dialog for the file that was not recognised"));
+    m_mapButton->setVisible(false);
+    statusBar()->addPermanentWidget(m_mapButton);
+    statusBar()->addPermanentWidget(m_progressBar);
+    statusBar()->addPermanentWidget(m_cancelButton);
+    setBusy(false);
+}
+
+void MainWindow::connectProgress() {
+    auto& jobs = m_workbench.jobs();
+    connect(&jobs, &JobRunner::busyChanged, this, &MainWindow::setBusy);
+    // One bar per action across its stages: the action's own stage (the first it reports) moves
+    // the bar, never back; the stages inside it (simulate, lstm …) are named in the status line.
+    connect(&jobs, &JobRunner::started, this, [this](JobId id, const QString& name) {
+        m_progressJob = id;
+        m_progressStage.clear();
+        m_progressBar->setValue(0);
+        m_progressBar->setFormat(QStringLiteral("%1 %p%").arg(name));
+    });
+    connect(
+        &jobs, &JobRunner::progress, this,
+        [this](JobId id, const QString& stage, double fraction, const QString& detail) {
+            if (id != m_progressJob) {
+                return;
+            }
+            if (m_progressStage.isEmpty()) {
+                m_progressStage = stage;
+            }
+            if (stage == m_progressStage) {
+                m_progressBar->setValue(std::max(m_progressBar->value(), static_cast<int>(fraction * 100)));
+            }
+            // The engine's detail is English (the CLI prints it): shown in the English window; the
+            // stage and its share in every language.
+            m_statusLabel->setText(detail.isEmpty() || currentLanguage() != QLatin1String("en")
+                                       ? tr("%1: %2 %").arg(stageText(stage)).arg(fraction * 100, 0, 'f', 0)
+                                       : tr("%1: %2").arg(stageText(stage), detail));
+            m_statusIsProgress = true;
+        });
+    connect(m_cancelButton, &QPushButton::clicked, &m_workbench, &Workbench::cancelAll);
+    connect(&m_workbench, &Workbench::queued, this, [this](const QString& text) {
+        m_statusLabel->setText(text);
+        m_statusIsProgress = true;
+    });
+    connect(&m_workbench, &Workbench::status, this, [this](const QString& text) {
+        m_lastStatus = text;
+        m_statusIsProgress = false;
+        m_statusLabel->setText(text);
+    });
+    connect(&m_workbench, &Workbench::failed, this,
+            [this](const QString& action, const QString& message, bool cancelled) {
+                if (!cancelled) {
+                    showError(action, message);
+                }
+            });
+}
+
+void MainWindow::setBusy(bool busy) {
+    m_progressBar->setVisible(busy);
+    m_cancelButton->setVisible(busy);
+    if (!busy) {
+        m_progressBar->setValue(0);
+        // A progress line of a job that has ended ("Simulating: 0 %") would say it still runs.
+        if (m_statusIsProgress) {
+            m_statusLabel->setText(m_lastStatus.isEmpty() ? tr("Ready.") : m_lastStatus);
+            m_statusIsProgress = false;
+        }
+    }
+}
+
+void MainWindow::showError(const QString& title, const QString& message) {
+    m_statusLabel->setText(message);
+    if (qEnvironmentVariableIsSet("DRYTWIN_NO_MODAL")) {
+        return;
+    }
+    QMessageBox::warning(this, title, message);
+}
+
+QString MainWindow::noDataHint() {
+    return tr("No data loaded. File ▸ Open data set folder… (or File ▸ Open the bundled demo)");
+}
+
+QString MainWindow::stageText(const QString& stage) {
+    // The engine's stage keys, in the user's language.
+    static const std::map<QString, const char*> words{
+        {QStringLiteral("load"), QT_TR_NOOP("Loading")},
+        {QStringLiteral("simulate"), QT_TR_NOOP("Simulating")},
+        {QStringLiteral("calibrate"), QT_TR_NOOP("Calibrating")},
+        {QStringLiteral("train"), QT_TR_NOOP("Learning the correction models")},
+        {QStringLiteral("lstm"), QT_TR_NOOP("Training the LSTM")},
+        {QStringLiteral("evaluate"), QT_TR_NOOP("Scoring on the held-out part")},
+        {QStringLiteral("discover"), QT_TR_NOOP("Discovering")},
+        {QStringLiteral("ablation"), QT_TR_NOOP("Ablation")},
+        {QStringLiteral("mpc"), QT_TR_NOOP("What-if scenario")},
+        {QStringLiteral("generate"), QT_TR_NOOP("Generating plant data")},
+        {QStringLiteral("training"), QT_TR_NOOP("Training session")}};
+    const auto it = words.find(stage);
+    return it == words.end() ? stage : tr(it->second);
+}
+
+} // namespace drytwin::widgets
