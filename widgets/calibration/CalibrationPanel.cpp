@@ -55,7 +55,7 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
         m_free->setItem(row, 3, unit);
         ++row;
     }
-    m_free->resizeColumnsToContents();
+    fitTableWidth(m_free);
     m_budget = new QSpinBox;
     m_budget->setRange(20, 100000);
     m_budget->setValue(2000);
@@ -125,6 +125,11 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
     connect(&m_workbench, &Workbench::dataChanged, this, &CalibrationPanel::showResult);
     connect(&m_workbench, &Workbench::resultsRestored, this, &CalibrationPanel::showResult);
     m_loss->setEmptyText(tr("Run Calibrate to see the loss fall and the parameters settle"));
+    // While it runs only the loss comes in: the parameters' plot keeps a sensible axis and says when
+    // its points come (θ / θ final is 1 at the end).
+    m_loss->setEmptyRange(1, 0, 2);
+    m_loss->setEmptyXRange(0, 1);
+    m_loss->setPlotEmptyText(1, tr("The parameters' paths are drawn when the calibration ends"));
     m_fitPlot->setEmptyText(tr("Run Calibrate to see the fit before and after"));
     m_fitPlot->setHintVisible(false);
     // Calibrate is disabled and Stop enabled exactly while a calibration is queued or running.

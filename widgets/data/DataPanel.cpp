@@ -40,7 +40,6 @@ DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m
                                tr("Mean X_out [% wb]"), tr("Mean T_hot [°C]"), tr("Source")});
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);
-    m_table->setMinimumWidth(320);
     m_plots = new PlotStack;
     for (const auto& s : batchSeries()) {
         m_plots->addPlot(s.title);
@@ -167,7 +166,7 @@ void DataPanel::fill() {
             item->setToolTip(cells.back()); // the source in full, when the column is scrolled away
         }
     }
-    m_table->resizeColumnsToContents();
+    fitTableWidth(m_table);
     m_table->blockSignals(false);
     const auto& c = summary.cleaning;
     // The chronological split of paper §IV.A over the rows in file order.

@@ -241,7 +241,7 @@ void DiscoverPanel::showDetection() {
                 {columnDisplayName(c.column), QStringLiteral("%1 %").arg(100 * share, 0, 'f', 0), name});
         }
     }
-    m_contributions->resizeColumnsToContents();
+    fitTableWidth(m_contributions);
     m_monitorPlots->rescale();
     m_views->setCurrentIndex(det.changed ? 1 : 0);
 }
@@ -587,7 +587,7 @@ void DiscoverPanel::show() {
                 : QStringLiteral("–")};
         setTableRow(m_ranking, static_cast<int>(i), cells);
     }
-    m_ranking->resizeColumnsToContents();
+    fitTableWidth(m_ranking);
     QString html;
     for (const auto& f : d.findings) {
         html += QStringLiteral("<h4>%1 = %2 [%3, %4]</h4><p>%5</p>")
@@ -712,7 +712,7 @@ void DiscoverPanel::show() {
             }
         }
     }
-    m_gains->resizeColumnsToContents();
+    fitTableWidth(m_gains);
     m_plots->clearCurves();
     const auto curve = [&](const std::vector<discovery::OutputResidual>& rs, const QColor& colour,
                            const QString& name) {

@@ -359,7 +359,7 @@ void MpcPanel::show() {
             }
         }
     }
-    m_table->resizeColumnsToContents();
+    fitTableWidth(m_table);
     m_plots->rescale();
     m_plots->setTimeCursor(at > 0 ? at : NAN);
     m_note->setText(

@@ -221,7 +221,7 @@ void ResidualPanel::showEvaluation() {
         m_skill->addCurve(0, modelDisplayName(m.name), h, s, modelColour(m.name),
                           reference ? Qt::DashLine : Qt::SolidLine, m.name == "pgrl_cc" ? 2.2 : 1.3);
     }
-    m_metrics->resizeColumnsToContents();
+    fitTableWidth(m_metrics);
     m_skill->addCurve(0, tr("skill 1 (ties the better reference)"), {1, 180}, {1, 1}, Qt::black, Qt::DotLine,
                       1.0);
     m_skill->rescale();
@@ -310,7 +310,7 @@ void ResidualPanel::showAblation() {
                      QString::number(r.r2Moisture, 'f', 3), QString::number(r.maeTemperature, 'f', 4),
                      QString::number(r.regimeMaeMoisture, 'f', 4)});
     }
-    m_ablation->resizeColumnsToContents();
+    fitTableWidth(m_ablation);
 }
 
 } // namespace drytwin::widgets
