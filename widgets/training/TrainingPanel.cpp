@@ -58,32 +58,10 @@ QString controllerLabel(control::ControllerKind k) {
                : QCoreApplication::translate("TrainingPanel", "MPC on: %1").arg(controllerDisplayName(k));
 }
 
+/// A mechanism by the one name every tab gives its cause (DisplayNames): the trainee names on
+/// Training the cause Discover found under the same words.
 QString mechanismLabel(plant::Mechanism m) {
-    switch (m) {
-    case plant::Mechanism::TubeWallHeatLoss:
-        return QCoreApplication::translate("TrainingPanel", "Tube wall heat loss");
-    case plant::Mechanism::GasPhaseCoupling:
-        return QCoreApplication::translate("TrainingPanel", "Gas-phase coupling");
-    case plant::Mechanism::HeatTransferFouling:
-        return QCoreApplication::translate("TrainingPanel", "Heat-transfer fouling");
-    case plant::Mechanism::MoistureMeterLag:
-        return QCoreApplication::translate("TrainingPanel", "Moisture meter lag");
-    case plant::Mechanism::MoistureMeterOffset:
-        return QCoreApplication::translate("TrainingPanel", "Moisture meter offset");
-    case plant::Mechanism::TransportDelayError:
-        return QCoreApplication::translate("TrainingPanel", "Transport delay error");
-    case plant::Mechanism::FallingRateDrying:
-        return QCoreApplication::translate("TrainingPanel", "Falling-rate drying");
-    case plant::Mechanism::AmbientReabsorption:
-        return QCoreApplication::translate("TrainingPanel", "Ambient re-absorption");
-    case plant::Mechanism::InletMoistureSensorOffset:
-        return QCoreApplication::translate("TrainingPanel", "Inlet moisture gauge offset");
-    case plant::Mechanism::HotAirSensorLag:
-        return QCoreApplication::translate("TrainingPanel", "Hot-air thermocouple lag");
-    case plant::Mechanism::InletMoistureSensorNoise:
-        return QCoreApplication::translate("TrainingPanel", "Inlet moisture gauge scatter");
-    }
-    return {};
+    return causeDisplayName(std::string(plant::info(m).name));
 }
 
 QString clockText(double s) {
