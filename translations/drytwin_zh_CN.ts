@@ -923,7 +923,7 @@
         <translation>学习之后物理模型又经过了标定</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.h" line="25"/>
+        <location filename="../widgets/common/Workbench.h" line="26"/>
         <source>the model was extended by discovery</source>
         <translation>模型已由发现功能扩展</translation>
     </message>
@@ -1455,58 +1455,58 @@
         <translation>来源</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="55"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="54"/>
         <source>Batches (select several to overlay; drop files here):</source>
         <translation>批次（多选可叠加；可将文件拖放到此处）：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="73"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="72"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="73"/>
-        <location filename="../widgets/data/DataPanel.cpp" line="86"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="72"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="85"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="79"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="78"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="86"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="85"/>
         <source>A batch file with your column names</source>
         <translation>一个使用您的列名的批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="95"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="94"/>
         <source>Open a data set: File ▸ Open data set folder…, or File ▸ Open the bundled demo</source>
         <translation>请打开数据集：文件 ▸ 打开数据集文件夹…，或 文件 ▸ 打开自带演示数据</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="104"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="103"/>
         <source>Save the column mapping</source>
         <translation>保存列映射</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="105"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="104"/>
         <source>Mappings (*.json)</source>
         <translation>映射 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="158"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="157"/>
         <source>%1, lines %2–%3, from %4, ended by %5</source>
         <translation>%1，第 %2–%3 行，始于 %4，结束原因：%5</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="186"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="185"/>
         <source>Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.</source>
         <translation>清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="200"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="199"/>
         <source>Noted while reading (%1):</source>
         <translation>读取时的提示（%1）：</translation>
     </message>
@@ -1610,12 +1610,12 @@
         <translation>白噪声 95 % 置信带</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="217"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="218"/>
         <source>every 10th kept row</source>
         <translation>保留行中每隔 10 行</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="245"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="246"/>
         <source>lag of the input [s]</source>
         <translation>输入的滞后 [s]</translation>
     </message>
@@ -1694,27 +1694,27 @@
         <translation>损失：模型加入该原因后拟合的误差；越低拟合越好。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
         <source>The held-out part: batches the fit did not see.</source>
         <translation>留出部分：拟合时未使用的批次。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
         <source>Held-out</source>
         <translation>留出数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
         <source>Before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
         <source>After</source>
         <translation>之后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
@@ -3175,140 +3175,140 @@
         <translation>预测时刻</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="149"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="150"/>
         <source>Open scenario</source>
         <translation>打开情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="149"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="150"/>
         <source>Scenarios (*.json)</source>
         <translation>情景 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="159"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="160"/>
         <source>Run a scenario to see each controller&apos;s outlet moisture and hot-air setpoint</source>
         <translation>运行一个情景，可看到各控制器的出口含水率和热风设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="175"/>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="176"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="177"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="178"/>
         <source>the scenario</source>
         <translation>该情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="180"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="183"/>
         <source>The run was cancelled; the results below are from the last complete run.</source>
         <translation>运行已取消；下方结果来自上一次完整运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="181"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="184"/>
         <source>The run was cancelled.</source>
         <translation>运行已取消。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="184"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="188"/>
         <source>%1
 The results below are from the last complete run.</source>
         <translation>%1
 下方结果来自上一次完整运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="195"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="199"/>
         <source>%1 (problems in the form: %2)</source>
         <translation>%1（表单中的问题：%2 个）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="205"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="210"/>
         <source>The scenario&apos;s JSON: %1</source>
         <translation>情景 JSON：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="206"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="211"/>
         <source>The scenario&apos;s JSON, line %1: %2</source>
         <translation>情景 JSON 第 %1 行：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="212"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="217"/>
         <source>Run is off until this is fixed: %1</source>
         <translation>修正以下问题前无法运行：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="225"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="230"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="238"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="243"/>
         <source>Not run: %1</source>
         <translation>未运行：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="248"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="253"/>
         <source>Cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="266"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="271"/>
         <source>Choose at least one controller.</source>
         <translation>请至少选择一个控制器。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="270"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="275"/>
         <source>Running…</source>
         <translation>正在运行…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="282"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="287"/>
         <source>Contract key: %1</source>
         <translation>接口代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="284"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="289"/>
         <source>%1 (stale)</source>
         <translation>%1（过期）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="285"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="290"/>
         <source>Learnt before %1: retrain it to run it.</source>
         <translation>学习于以下变化之前：%1；需重新训练才能运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="287"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="292"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="288"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="293"/>
         <source>Learn the correction models on the Residual model tab to run it.</source>
         <translation>在残差模型页学习修正模型后才能运行它。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="314"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="319"/>
         <source>skipped</source>
         <translation>已跳过</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="315"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="320"/>
         <source>the model holds no such prediction model</source>
         <translation>模型中没有这种预测模型</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="328"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="333"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="336"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="341"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="352"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="357"/>
         <source>%1 predicted at %2 s</source>
         <translation>%1 在 %2 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="361"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="366"/>
         <source>%1. IAE and violations on the product&apos;s true outlet moisture; the plant&apos;s own gain is %2 % wb/K.</source>
         <translation>%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。</translation>
     </message>
@@ -3316,7 +3316,7 @@ The results below are from the last complete run.</source>
 <context>
     <name>drytwin::widgets::PlotStack</name>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="181"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="185"/>
         <source>Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click to zoom out, middle drag to pan</source>
         <translation>Ctrl+单击：游标 A，Shift+单击：游标 B，Alt+单击：时间游标；拖动放大，右键缩小，中键拖动平移</translation>
     </message>
@@ -3335,57 +3335,57 @@ The results below are from the last complete run.</source>
         <translation>把这些曲线图保存为 PNG、SVG 或 PDF，或把数据保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="166"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="169"/>
         <source>time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="244"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="248"/>
         <source>No data yet</source>
         <translation>尚无数据</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="508"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="512"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="511"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="515"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="514"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="518"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="518"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="522"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="522"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="526"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="596"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="600"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="624"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="628"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
         <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="659"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="664"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="574"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="578"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
@@ -3394,7 +3394,7 @@ The results below are from the last complete run.</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="658"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="663"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
@@ -3403,12 +3403,12 @@ The results below are from the last complete run.</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="665"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="670"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="667"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="672"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
@@ -3843,98 +3843,98 @@ extrapolation</source>
         <translation>设定值阶跃</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="145"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="146"/>
         <source>Input changes (a ramp when &quot;over&quot; &gt; 0)</source>
         <translation>输入变化（“历时” &gt; 0 时为斜坡）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="147"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="148"/>
         <source>Hidden causes in the plant (no controller knows them)</source>
         <translation>工厂中的隐藏原因（控制器均不知道）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="150"/>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="393"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="151"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="397"/>
         <source>The scenario as a form; the JSON tab shows the same scenario as text.</source>
         <translation>以表单显示的情景；JSON 页以文本显示同一情景。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="206"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="207"/>
         <source>Row %1: enter a number.</source>
         <translation>第 %1 行：请输入数字。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="212"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="214"/>
         <source>Step %1: the time cannot be negative.</source>
         <translation>阶跃 %1：时间不能为负。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="216"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="218"/>
         <source>Step %1 at %2 s comes after the scored length (%3 s): move it earlier or lengthen the run.</source>
         <translation>阶跃 %1 在 %2 s，晚于评分时长（%3 s）：请提前该阶跃或延长运行时间。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="222"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="225"/>
         <source>Step %1 at %2 s comes before the step above it (%3 s): list the steps in time order.</source>
         <translation>阶跃 %1 在 %2 s，早于上一行的阶跃（%3 s）：请按时间顺序排列。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="234"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="237"/>
         <source>Step %1: a setpoint of %2 % wb lies outside %3–%4 % wb.</source>
         <translation>阶跃 %1：设定值 %2 % 湿基超出 %3–%4 % 湿基。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="247"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="250"/>
         <source>Change %1: the time cannot be negative.</source>
         <translation>变化 %1：时间不能为负。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="251"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="254"/>
         <source>Change %1 at %2 s comes after the scored length (%3 s): move it earlier or lengthen the run.</source>
         <translation>变化 %1 在 %2 s，晚于评分时长（%3 s）：请提前该变化或延长运行时间。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="258"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="262"/>
         <source>Change %1: a ramp lasts 0 to %2 s (the scored length).</source>
         <translation>变化 %1：斜坡历时应在 0 到 %2 s（评分时长）之间。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="270"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="274"/>
         <source>Change %1: %2 lies outside %3–%4 for %5.</source>
         <translation>变化 %1：%2 超出 %5 的范围 %3–%4。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="286"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="290"/>
         <source>Hidden cause %1 (%2) is listed twice.</source>
         <translation>隐藏原因 %1（%2）重复列出。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="296"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="300"/>
         <source>Hidden cause %1 (%2): a strength of %3 lies outside 0–%4 %5.</source>
         <translation>隐藏原因 %1（%2）：强度 %3 超出 0–%4 %5。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="306"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="310"/>
         <source>Hidden cause %1: the time cannot be negative.</source>
         <translation>隐藏原因 %1：时间不能为负。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="310"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="314"/>
         <source>Hidden cause %1 from %2 s starts after the scored length (%3 s): move it earlier or lengthen the run.</source>
         <translation>隐藏原因 %1 从 %2 s 开始，晚于评分时长（%3 s）：请提前或延长运行时间。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="319"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="323"/>
         <source>Shorter than the scenario below: something happens at %1 s. Lengthen the run to at least %1 s, or move that entry.</source>
         <translation>比下面的情景短：%1 s 时还有事件。请将运行时间延长到至少 %1 s，或移动该条目。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="372"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="376"/>
         <source>%1; strength in %2</source>
         <translation>%1；强度单位 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="387"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="391"/>
         <source>The JSON tab&apos;s text is not a scenario the form can show (%1); fix it there.</source>
         <translation>JSON 页的文本不是表单可显示的情景（%1）；请在那里修改。</translation>
     </message>
@@ -4655,72 +4655,72 @@ extrapolation</source>
         <translation>%1：已过期，因为%2；需重新训练才能使用。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="223"/>
+        <location filename="../widgets/common/Workbench.cpp" line="224"/>
         <source>Read the model</source>
         <translation>读取模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="238"/>
+        <location filename="../widgets/common/Workbench.cpp" line="239"/>
         <source>Loading %1…</source>
         <translation>正在加载 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="247"/>
+        <location filename="../widgets/common/Workbench.cpp" line="248"/>
         <source>Load %1</source>
         <translation>加载 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="282"/>
+        <location filename="../widgets/common/Workbench.cpp" line="283"/>
         <source>%1: %2 batches, %3 rows, %4 missing cells; the cleaning keeps %5 rows</source>
         <translation>%1：%2 个批次，%3 行，%4 个缺失值；清洗后保留 %5 行</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="308"/>
+        <location filename="../widgets/common/Workbench.cpp" line="309"/>
         <source>Open model %1</source>
         <translation>打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="312"/>
+        <location filename="../widgets/common/Workbench.cpp" line="313"/>
         <source>Model %1 opened</source>
         <translation>已打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="313"/>
+        <location filename="../widgets/common/Workbench.cpp" line="314"/>
         <source>model file %1</source>
         <translation>模型文件 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="356"/>
+        <location filename="../widgets/common/Workbench.cpp" line="357"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="365"/>
+        <location filename="../widgets/common/Workbench.cpp" line="366"/>
         <source>Model saved to %1</source>
         <translation>模型已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="371"/>
+        <location filename="../widgets/common/Workbench.cpp" line="372"/>
         <source>Set %1</source>
         <translation>设置 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="387"/>
+        <location filename="../widgets/common/Workbench.cpp" line="388"/>
         <source>Set the model</source>
         <translation>设置模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="404"/>
+        <location filename="../widgets/common/Workbench.cpp" line="405"/>
         <source>Simulate</source>
         <translation>仿真</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="412"/>
+        <location filename="../widgets/common/Workbench.cpp" line="413"/>
         <source>Simulated %1 batches; mean outlet-moisture MAE %2 % wb</source>
         <translation>已仿真 %1 个批次；出口含水率平均 MAE %2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="425"/>
+        <location filename="../widgets/common/Workbench.cpp" line="426"/>
         <source>Calibration: %1; loss %2 → %3</source>
         <translation>标定：%1；损失 %2 → %3</translation>
     </message>
@@ -4729,19 +4729,19 @@ extrapolation</source>
         <translation>学习之后物理模型又经过了标定</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="451"/>
+        <location filename="../widgets/common/Workbench.cpp" line="452"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="125"/>
         <source>Learn the correction models</source>
         <translation>学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="455"/>
+        <location filename="../widgets/common/Workbench.cpp" line="456"/>
         <source>Learnt the correction models (PGRL-CC) and the two comparison models</source>
         <translation>已学习修正模型（PGRL-CC）和两个对比模型</translation>
     </message>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="153"/>
-        <location filename="../widgets/common/Workbench.cpp" line="421"/>
+        <location filename="../widgets/common/Workbench.cpp" line="422"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
@@ -4758,48 +4758,48 @@ extrapolation</source>
         <translation>已训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="464"/>
+        <location filename="../widgets/common/Workbench.cpp" line="465"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="486"/>
+        <location filename="../widgets/common/Workbench.cpp" line="487"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="486"/>
+        <location filename="../widgets/common/Workbench.cpp" line="487"/>
         <source>Discover against the reference</source>
         <translation>相对参考期发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="496"/>
+        <location filename="../widgets/common/Workbench.cpp" line="497"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="503"/>
+        <location filename="../widgets/common/Workbench.cpp" line="504"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="518"/>
+        <location filename="../widgets/common/Workbench.cpp" line="519"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="126"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="522"/>
+        <location filename="../widgets/common/Workbench.cpp" line="523"/>
         <source>Ablation: %1 variants trained and evaluated</source>
         <translation>消融实验：已训练并评估 %1 个变体</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="529"/>
+        <location filename="../widgets/common/Workbench.cpp" line="530"/>
         <source>Generate</source>
         <translation>生成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="532"/>
+        <location filename="../widgets/common/Workbench.cpp" line="533"/>
         <source>Wrote %1 virtual-plant batches to %2</source>
         <translation>已将 %1 个虚拟装置批次写入 %2</translation>
     </message>

@@ -1,5 +1,6 @@
 #include "data/DataPanel.h"
 
+#include "common/DisplayNames.h"
 #include "common/PlotStack.h"
 #include "common/Series.h"
 #include "common/Units.h"
@@ -158,7 +159,7 @@ void DataPanel::fill() {
                       .arg(summary.batches[i].run->firstLine)
                       .arg(summary.batches[i].run->lastLine)
                       .arg(QString::fromStdString(summary.batches[i].run->startTimestamp),
-                           QString::fromStdString(summary.batches[i].run->splitReason))
+                           runEndText(summary.batches[i].run->splitReason))
                 : QFileInfo(QString::fromStdString(i < summary.batches.size() ? summary.batches[i].path : ""))
                       .fileName()};
         setTableRow(m_table, static_cast<int>(i), cells);

@@ -287,7 +287,7 @@ void MpcPanel::offerControllers() {
         QString tip = tr("Contract key: %1").arg(QString::fromLatin1(control::controllerName(kind)));
         if (!exists && part.state == PartState::Stale) {
             label = tr("%1 (stale)").arg(label);
-            tip = tr("Learnt before %1: retrain it to run it.").arg(part.staleBecause);
+            tip = tr("Learnt before %1: retrain it to run it.").arg(staleReasonText(part.staleBecause));
         } else if (!exists) {
             label = tr("%1 (not learnt)").arg(label);
             tip = tr("Learn the correction models on the Residual model tab to run it.");

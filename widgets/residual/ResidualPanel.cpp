@@ -59,6 +59,14 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     m_gains->setWordWrap(true);
     m_metrics = makeResultTable({tr("Model"), tr("MAE X_out\n[% wb]"), tr("R² X_out\n[-]"),
                                  tr("MAE T_out\n[°C]"), tr("skill\n1 step"), tr("skill\n30 steps")});
+    setHeaderToolTips(m_metrics,
+                      {QString(), tr("Mean absolute error of the outlet moisture on the held-out part."),
+                       tr("R²: the share of the outlet moisture's variation the model explains (1: all; "
+                          "below 0: worse than the mean)."),
+                       tr("Mean absolute error of the outlet temperature on the held-out part."),
+                       tr("Skill one second ahead: the model's error over the better of two simple "
+                          "forecasts; below 1 it beats both."),
+                       tr("Skill 30 seconds ahead, alike.")});
     m_state = new ModelStateBar(m_workbench);
     m_eigen = new PlotStack;
     m_eigen->addPlot(tr("imaginary part"));
