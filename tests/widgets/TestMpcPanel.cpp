@@ -64,6 +64,11 @@ private Q_SLOTS:
         QVERIFY(!panel.runButton()->isEnabled());
         QVERIFY(panel.runBlockedMessage()->isVisible());
         QVERIFY(panel.runBlockedMessage()->text().contains("780 s"));
+        if (const QString shots = qEnvironmentVariable("DRYTWIN_TEST_SHOTS"); !shots.isEmpty()) {
+            panel.resize(1000, 760); // a picture of the refused form, to look at
+            QTest::qWait(50);
+            panel.grab().save(shots + "/mpc-form-refused.png");
+        }
 
         QSignalSpy started(&wb, &Workbench::runningChanged);
         panel.run();
