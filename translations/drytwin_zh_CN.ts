@@ -2,6 +2,74 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>ColumnMeanings</name>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="90"/>
+        <source>time since batch start</source>
+        <translation>批次开始以来的时间</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="91"/>
+        <source>hot-air temperature setpoint</source>
+        <translation>热风温度设定值</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="92"/>
+        <source>measured hot-air temperature at the tube inlet</source>
+        <translation>管道入口处实测热风温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="93"/>
+        <source>air speed in the drying tube</source>
+        <translation>干燥管内风速</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="94"/>
+        <source>wet feed rate entering the tube</source>
+        <translation>进入干燥管的湿物料流量</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="95"/>
+        <source>inlet moisture</source>
+        <translation>入口水分</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="96"/>
+        <source>inlet material temperature</source>
+        <translation>入口物料温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="97"/>
+        <source>ambient air temperature</source>
+        <translation>环境空气温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="98"/>
+        <source>ambient relative humidity</source>
+        <translation>环境相对湿度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="99"/>
+        <source>moisture at the tube outlet</source>
+        <translation>管道出口处含水率</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="100"/>
+        <source>material temperature at the tube outlet</source>
+        <translation>管道出口处物料温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="101"/>
+        <source>final outlet moisture after the winnower</source>
+        <translation>风选机后最终出口含水率</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="102"/>
+        <source>final outlet temperature after the winnower</source>
+        <translation>风选机后最终出口温度</translation>
+    </message>
+</context>
+<context>
     <name>DisplayNames</name>
     <message>
         <location filename="../widgets/common/DisplayNames.cpp" line="11"/>
@@ -119,152 +187,286 @@
         <translation>模型误差，管道出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="64"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="56"/>
+        <source>model&apos;s tube-outlet moisture</source>
+        <translation>模型计算的管道出口水分</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="57"/>
+        <source>model&apos;s tube-outlet temperature</source>
+        <translation>模型计算的管道出口温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="58"/>
+        <source>model&apos;s moisture on the conveyor</source>
+        <translation>模型计算的输送带上水分</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="59"/>
+        <source>model&apos;s temperature on the conveyor</source>
+        <translation>模型计算的输送带上温度</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="69"/>
         <source>tube-wall heat loss</source>
         <translation>管壁散热</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="65"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="70"/>
         <source>drying air cooling along the tube</source>
         <translation>干燥风沿管降温</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="66"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="71"/>
         <source>heat-transfer fouling</source>
         <translation>传热结垢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="67"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="72"/>
         <source>slow outlet moisture meter</source>
         <translation>出口水分仪响应慢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="68"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="73"/>
         <source>outlet moisture meter offset</source>
         <translation>出口水分仪偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="69"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="74"/>
         <source>conveyor transport time off</source>
         <translation>输送时间偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="70"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="75"/>
         <source>slower drying below critical moisture</source>
         <translation>低于临界含水率时干燥变慢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="71"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="76"/>
         <source>moisture taken back on the conveyor</source>
         <translation>输送中回潮</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="72"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="77"/>
         <source>inlet moisture gauge offset</source>
         <translation>入口水分仪偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="73"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="78"/>
         <source>slow hot-air thermocouple</source>
         <translation>热风热电偶响应慢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="74"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="79"/>
         <source>noisy inlet moisture gauge</source>
         <translation>入口水分仪噪声大</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="75"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="80"/>
         <source>outlet mixing</source>
         <translation>出口混合</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="84"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="110"/>
+        <source>seconds since the start</source>
+        <translation>自开始起的秒数</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="111"/>
+        <source>date and time, ISO 8601 (2024-05-31T08:00:00)</source>
+        <translation>日期和时间，ISO 8601 格式（2024-05-31T08:00:00）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="112"/>
+        <source>year/month/day and time</source>
+        <translation>年/月/日 及时间</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="113"/>
+        <source>day.month.year and time</source>
+        <translation>日.月.年 及时间</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="114"/>
+        <source>day/month/year and time</source>
+        <translation>日/月/年 及时间</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="115"/>
+        <source>month/day/year and time</source>
+        <translation>月/日/年 及时间</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="116"/>
+        <source>day-month name-year and time</source>
+        <translation>日-月份名-年 及时间</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="117"/>
+        <source>spreadsheet day numbers</source>
+        <translation>电子表格日期序号</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="118"/>
+        <source>Unix time in seconds</source>
+        <translation>Unix 时间（秒）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="119"/>
+        <source>Unix time in milliseconds</source>
+        <translation>Unix 时间（毫秒）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="128"/>
+        <source>line stop</source>
+        <translation>产线停机</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="129"/>
+        <source>gap in the recording</source>
+        <translation>记录中断</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="130"/>
+        <source>next batch id</source>
+        <translation>下一批次编号</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="131"/>
+        <source>clock jump</source>
+        <translation>时钟跳变</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="132"/>
+        <source>end of file</source>
+        <translation>文件结束</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="144"/>
+        <source>DryTwin&apos;s own column name</source>
+        <translation>DryTwin 自身的列名</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="147"/>
+        <source>time stamps: %1</source>
+        <translation>时间戳：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="153"/>
+        <source>values in %1</source>
+        <translation>数值在 %1 之间</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="156"/>
+        <source>words of the header</source>
+        <translation>列标题中的词</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="158"/>
+        <source>tag letters %1</source>
+        <translation>位号字母 %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="163"/>
+        <source>, </source>
+        <translation>、</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="175"/>
+        <source>%1: second %2 of %3</source>
+        <translation>%1：第 %2 秒，共 %3 秒</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="185"/>
         <source>outlet response time (meter lag or transport time)</source>
         <translation>出口响应时间（仪表滞后或输送时间）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="88"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="189"/>
         <source>moisture offset (outlet meter or inlet gauge)</source>
         <translation>水分偏差（出口水分仪或入口水分仪）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="91"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="192"/>
         <source>air temperature in the tube (wall loss or air cooling)</source>
         <translation>管内风温（管壁散热或风冷却）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="100"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="201"/>
         <source>Cause found</source>
         <translation>找到原因</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="101"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="202"/>
         <source>Cause found: %1</source>
         <translation>找到原因：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="104"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="205"/>
         <source>No cause found: what the model gets wrong is within the measurements&apos; noise</source>
         <translation>未找到原因：模型的误差在测量噪声范围之内</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="108"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="209"/>
         <source>Something is left that no known cause explains</source>
         <translation>仍有已知原因无法解释的结构</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="116"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="217"/>
         <source>Completed</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="118"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="219"/>
         <source>Converged</source>
         <translation>已收敛</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="120"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="221"/>
         <source>Evaluation budget used up</source>
         <translation>评估次数已用完</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="122"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="223"/>
         <source>Stopped by you, best so far kept</source>
         <translation>已由您停止，保留目前最优</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="129"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="230"/>
         <source>Stopped by you; the runs so far are kept, the last one is partial</source>
         <translation>已由您停止；保留已完成的运行，最后一次不完整</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="136"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="237"/>
         <source>Scenario %1: %2 of %3 controllers run over %4 scored seconds</source>
         <translation>情景 %1：%3 个控制器中运行了 %2 个，评分时长 %4 秒</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="146"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="247"/>
         <source>none (the sensitivities could not be computed)</source>
         <translation>无（无法计算灵敏度）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="149"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="250"/>
+        <source>widened because neighbouring rows are alike and not independent evidence (sandwich covariance with a Newey-West middle term)</source>
+        <translation>已加宽：相邻样本彼此相似，不是独立的证据（夹心协方差，中间项为 Newey-West）</translation>
+    </message>
+    <message>
         <source>robust to correlated rows (sandwich covariance with a Newey-West middle term)</source>
         <translation>对相关样本稳健（夹心协方差，中间项为 Newey-West）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="157"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="260"/>
         <source>R² could not be computed (too few rows).</source>
         <translation>无法计算 R²（行数太少）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="160"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="263"/>
         <source>R² below 0: the model predicts worse than the batch&apos;s mean would. Usual for the physics model alone on a short held-out part with little movement; compare MAE instead.</source>
         <translation>R² 小于 0：模型的预测比批次均值还差。对于变化很小的短留出段，单独的物理模型常出现这种情况；请改为比较 MAE。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="165"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="268"/>
         <source>R² %1: the model explains %2 % of the variation of the measured values about their mean.</source>
         <translation>R² %1：模型解释了测量值围绕其均值变化的 %2 %。</translation>
     </message>
@@ -272,409 +474,414 @@
 <context>
     <name>ParameterTexts</name>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="14"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="16"/>
         <source>ideal gas constant</source>
         <translation>理想气体常数</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="15"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="17"/>
         <source>specific gas constant of water vapour</source>
         <translation>水蒸气比气体常数</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="16"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="18"/>
         <source>specific heat of dry material</source>
         <translation>干物料比热容</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="17"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="19"/>
         <source>specific heat of water</source>
         <translation>水的比热容</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="18"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="20"/>
         <source>temperature parameter of water activity (Eq. 2)</source>
         <translation>水分活度的温度参数（公式 2）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="19"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="21"/>
         <source>Oswin parameter 1 (Eq. 5)</source>
         <translation>Oswin 参数 1（公式 5）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="20"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="22"/>
         <source>Oswin parameter 2 (Eq. 5), per kelvin of T in °C</source>
         <translation>Oswin 参数 2（公式 5），T 以 °C 计时每开尔文</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="21"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="23"/>
         <source>Oswin parameter 3 (Eq. 5)</source>
         <translation>Oswin 参数 3（公式 5）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="22"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="24"/>
         <source>diffusivity pre-factor (Eq. 6)</source>
         <translation>扩散系数指前因子（公式 6）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="23"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="25"/>
         <source>activation energy of diffusion (Eq. 6)</source>
         <translation>扩散活化能（公式 6）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="24"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="26"/>
         <source>bound-water latent heat correction (Eq. 4)</source>
         <translation>结合水潜热修正（公式 4）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="25"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="27"/>
         <source>humidity reduction of diffusivity (Eq. 6)</source>
         <translation>湿度对扩散系数的降低（公式 6）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="26"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="28"/>
         <source>particle density of the material (Eq. 7)</source>
         <translation>物料颗粒密度（公式 7）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="27"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="29"/>
         <source>strand radius as a cylinder (Eq. 7)</source>
         <translation>按圆柱计的丝条半径（公式 7）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="28"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="30"/>
         <source>strand length (Eq. 7)</source>
         <translation>丝条长度（公式 7）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="29"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="31"/>
         <source>convective heat-transfer coefficient in the tube (Eq. 8)</source>
         <translation>管内对流传热系数（公式 8）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="30"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="32"/>
         <source>mass-transfer coefficient in the tube (Eq. 10)</source>
         <translation>管内传质系数（公式 10）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="31"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="33"/>
         <source>humidity ratio of the drying air (Eq. 9)</source>
         <translation>干燥风的含湿量（公式 9）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="32"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="34"/>
         <source>total pressure of the drying air (Eq. 9)</source>
         <translation>干燥风总压（公式 9）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="33"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="35"/>
         <source>enthalpy reference temperature (Eqs. 12, 14, 19)</source>
         <translation>焓的参考温度（公式 12、14、19）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="34"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="36"/>
         <source>layer packing factor (Eq. 13)</source>
         <translation>料层堆积系数（公式 13）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="35"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="37"/>
         <source>characteristic diffusion length (Eq. 13)</source>
         <translation>特征扩散长度（公式 13）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="36"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="38"/>
         <source>natural-convection coefficient on the belt (Eq. 14)</source>
         <translation>输送带上的自然对流系数（公式 14）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="37"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="39"/>
         <source>exposed area per kg of dry matter on the belt (Eq. 14)</source>
         <translation>输送带上每千克干物质的暴露面积（公式 14）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="38"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="40"/>
         <source>mass fraction of the conveyor top layer (Eqs. 15-16)</source>
         <translation>输送机表层的质量分数（公式 15–16）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="39"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="41"/>
         <source>flash-evaporation rate in the winnower (Eqs. 17-18)</source>
         <translation>风选机内的闪蒸速率（公式 17–18）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="40"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="42"/>
         <source>heat loss of the winnower per kg of dry matter (Eq. 19)</source>
         <translation>风选机每千克干物质的散热（公式 19）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="41"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="43"/>
         <source>residence time in the winnower (Eqs. 17-19)</source>
         <translation>风选机内停留时间（公式 17–19）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="42"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="44"/>
         <source>residence time in the drying tube</source>
         <translation>干燥管内停留时间</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="43"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="45"/>
         <source>transport time on the conveyor</source>
         <translation>输送机上的输送时间</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="44"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="46"/>
         <source>time constant of the hot-air temperature actuator</source>
         <translation>热风温度执行机构的时间常数</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="45"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="47"/>
         <source>outlet mixing: first-order lag of X_out and T_out (belt and winnower holdup)</source>
         <translation>出口混合：X_out 和 T_out 的一阶滞后（输送带和风选机存料）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="47"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="49"/>
         <source>tube wall heat loss: T_gas = T_hot - theta (T_hot - T_amb)</source>
         <translation>管壁散热：T_gas = T_hot - theta (T_hot - T_amb)</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="48"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="50"/>
         <source>gas-phase coupling: T_gas falls by theta L_v (X_in - X) m_dry / (c_air m_air) along the tube</source>
         <translation>气相耦合：沿管 T_gas 降低 theta L_v (X_in - X) m_dry / (c_air m_air)</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="51"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="53"/>
         <source>fouling: h = h_HDT (1 - theta t), t since the batch started</source>
         <translation>结垢：h = h_HDT (1 - theta t)，t 为批次开始后的时间</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="52"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="54"/>
         <source>first-order lag of the outlet moisture meter</source>
         <translation>出口水分仪的一阶滞后</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="53"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="55"/>
         <source>constant offset of the outlet moisture meter</source>
         <translation>出口水分仪的恒定偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="54"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="56"/>
         <source>conveyor transport time minus tau_conv</source>
         <translation>输送时间减去 tau_conv</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="55"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="57"/>
         <source>falling-rate drying: Eq. 10 times 1 - theta (X_cr - X)/X_cr below X_cr = 0.25 kg/kg</source>
         <translation>降速干燥：低于 X_cr = 0.25 kg/kg 时公式 10 乘以 1 - theta (X_cr - X)/X_cr</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="57"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="59"/>
         <source>re-absorption on the conveyor: dX/dt gains theta RH</source>
         <translation>输送机上的回潮：dX/dt 增加 theta RH</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="58"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="60"/>
         <source>offset of the inlet moisture gauge: the line sees X_in measured minus it</source>
         <translation>入口水分仪偏差：产线实际含水率为 X_in 测量值减去它</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="60"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="62"/>
         <source>time constant of the hot-air sensor: the line sees T_hot + tau dT_hot/dt (its inverse lag)</source>
         <translation>热风传感器时间常数：产线实际为 T_hot + tau dT_hot/dt（其逆滞后）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="63"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="65"/>
         <source>share of the inlet gauge&apos;s fast variation (about its 20 s zero-phase mean) that is scatter, not moisture: the line sees X_in with that share removed</source>
         <translation>入口水分仪快速变化（相对其 20 s 零相位均值）中属于仪表波动而非真实水分的比例：产线实际为去掉这一部分的 X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="66"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="68"/>
         <source>onset of the mechanism extensions since each batch&apos;s start (0: from the start; transport_delay_error always acts from the start)</source>
         <translation>机理扩展自各批次开始起的起始时间（0：从开始；transport_delay_error 总是从开始起作用）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="68"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="70"/>
         <source>paper App. A</source>
         <translation>论文附录 A</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="69"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="71"/>
         <source>paper App. A (bounds: sign kept, tenfold range)</source>
         <translation>论文附录 A（范围：保持符号，十倍区间）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="70"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="72"/>
         <source>gives D_eff ≈ 1.7e-10 m²/s at 57 °C, the order reported for tobacco lamina</source>
         <translation>在 57 °C 时 D_eff ≈ 1.7e-10 m²/s，与烟叶文献报道的量级一致</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="72"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="74"/>
         <source>typical of leaf materials (20–40 kJ/mol)</source>
         <translation>叶类物料的典型值（20–40 kJ/mol）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="73"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="75"/>
         <source>heat of sorption of tobacco adds up to about a third near dryness</source>
         <translation>接近干燥时烟草的吸附热可增加约三分之一</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="74"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="76"/>
         <source>humid air halves the surface gradient at saturation</source>
         <translation>饱和时湿空气使表面梯度减半</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="75"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="77"/>
         <source>cut tobacco strands (lamina with air spaces)</source>
         <translation>烟丝（含气隙的叶片）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="76"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="78"/>
         <source>cut width about 1 mm</source>
         <translation>切丝宽度约 1 mm</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="77"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="79"/>
         <source>cut tobacco strands of 1–3 cm</source>
         <translation>长 1–3 cm 的烟丝</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="78"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="80"/>
         <source>paper §IV.C calibrated value</source>
         <translation>论文 §IV.C 标定值</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="79"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="81"/>
         <source>recirculated hot air of a tobacco dryer is humid</source>
         <translation>烟草干燥机的循环热风较湿</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="80"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="82"/>
         <source>atmospheric</source>
         <translation>大气压</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="81"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="83"/>
         <source>0 °C, the reference of the 2501 kJ/kg in Eq. 4</source>
         <translation>0 °C，即公式 4 中 2501 kJ/kg 的参考温度</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="82"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="84"/>
         <source>loose single layer</source>
         <translation>松散单层</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="83"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="85"/>
         <source>gives about 1 % dry-basis loss of the top layer on a 60 s belt</source>
         <translation>在 60 s 的输送带上表层约损失 1 %（干基）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="84"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="86"/>
         <source>natural convection of a horizontal layer</source>
         <translation>水平料层的自然对流</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="85"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="87"/>
         <source>top layer of about 2 kg/m²</source>
         <translation>表层约 2 kg/m²</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="86"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="88"/>
         <source>top third of the layer exchanges with the air</source>
         <translation>料层上部三分之一与空气交换</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="87"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="89"/>
         <source>about 0.4 % wb flash loss at 35 K excess temperature</source>
         <translation>过热 35 K 时约 0.4 %（湿基）的闪蒸损失</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="88"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="90"/>
         <source>turbulent air, short contact</source>
         <translation>湍流空气，接触时间短</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="89"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="91"/>
         <source>a few seconds</source>
         <translation>几秒</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="90"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="92"/>
         <source>tube of about 70 m at 10 m/s particle speed</source>
         <translation>管长约 70 m，颗粒速度 10 m/s</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="91"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="93"/>
         <source>belt of 12 m at 0.2 m/s</source>
         <translation>输送带长 12 m，速度 0.2 m/s</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="92"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="94"/>
         <source>heat exchanger and duct lag; used when T_hot follows its setpoint (MPC)</source>
         <translation>换热器和风道的滞后；用于 T_hot 跟随设定值时（MPC）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="94"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="96"/>
         <source>distributed line: axial mixing on the belt, the winnower&apos;s stirred volume</source>
         <translation>分布式产线：输送带上的轴向混合、风选机的搅拌容积</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="96"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="98"/>
         <source>extension tube_wall_heat_loss</source>
         <translation>扩展 tube_wall_heat_loss</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="97"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="99"/>
         <source>extension gas_phase_coupling</source>
         <translation>扩展 gas_phase_coupling</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="98"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="100"/>
         <source>extension heat_transfer_fouling</source>
         <translation>扩展 heat_transfer_fouling</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="99"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="101"/>
         <source>extension moisture_meter_lag</source>
         <translation>扩展 moisture_meter_lag</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="100"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="102"/>
         <source>extension moisture_meter_offset</source>
         <translation>扩展 moisture_meter_offset</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="101"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="103"/>
         <source>extension transport_delay_error</source>
         <translation>扩展 transport_delay_error</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="102"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="104"/>
         <source>extension falling_rate_drying</source>
         <translation>扩展 falling_rate_drying</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="103"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="105"/>
         <source>extension ambient_reabsorption</source>
         <translation>扩展 ambient_reabsorption</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="104"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="106"/>
         <source>extension inlet_moisture_sensor_offset</source>
         <translation>扩展 inlet_moisture_sensor_offset</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="105"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="107"/>
         <source>extension hot_air_sensor_lag</source>
         <translation>扩展 hot_air_sensor_lag</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="106"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="108"/>
         <source>extension inlet_moisture_sensor_noise</source>
         <translation>扩展 inlet_moisture_sensor_noise</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="107"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="109"/>
         <source>set by discovery for a cause that starts mid-batch</source>
         <translation>由发现功能为批次中途出现的原因设定</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="128"/>
+        <source>added for the cause: %1</source>
+        <translation>为原因“%1”添加</translation>
     </message>
 </context>
 <context>
@@ -688,24 +895,37 @@
 <context>
     <name>ScenarioForm</name>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="33"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="40"/>
         <source>feed [kg/h]</source>
         <translation>进料 [kg/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="34"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="41"/>
         <source>inlet moisture [% wb]</source>
         <translation>入口含水率 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="35"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="42"/>
         <source>ambient temperature [°C]</source>
         <translation>环境温度 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="36"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="43"/>
         <source>ambient humidity [% RH]</source>
         <translation>环境湿度 [% RH]</translation>
+    </message>
+</context>
+<context>
+    <name>StaleReason</name>
+    <message>
+        <location filename="../widgets/common/Workbench.h" line="24"/>
+        <source>the physics model was calibrated after it was learnt</source>
+        <translation>学习之后物理模型又经过了标定</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/Workbench.h" line="26"/>
+        <source>the model was extended by discovery</source>
+        <translation>模型已由发现功能扩展</translation>
     </message>
 </context>
 <context>
@@ -736,57 +956,46 @@
         <translation>MPC，基于：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="64"/>
         <source>Tube wall heat loss</source>
         <translation>管壁散热损失</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="66"/>
         <source>Gas-phase coupling</source>
         <translation>气相耦合</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="68"/>
         <source>Heat-transfer fouling</source>
         <translation>传热结垢</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="70"/>
         <source>Moisture meter lag</source>
         <translation>水分仪滞后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="72"/>
         <source>Moisture meter offset</source>
         <translation>水分仪偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="74"/>
         <source>Transport delay error</source>
         <translation>输送延时误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="76"/>
         <source>Falling-rate drying</source>
         <translation>降速干燥</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="78"/>
         <source>Ambient re-absorption</source>
         <translation>环境回潮</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="80"/>
         <source>Inlet moisture gauge offset</source>
         <translation>入口水分仪零点偏移</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="82"/>
         <source>Hot-air thermocouple lag</source>
         <translation>热风热电偶滞后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="84"/>
         <source>Inlet moisture gauge scatter</source>
         <translation>入口水分仪读数离散</translation>
     </message>
@@ -848,7 +1057,7 @@
     </message>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="63"/>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="174"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="188"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
@@ -883,102 +1092,136 @@
         <translation>触及边界</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="69"/>
         <source>Fits the free parameters to the calibration rows (every 10th kept row, the first 300) with NLopt: a global search, then BOBYQA.</source>
         <translation>用 NLopt 将自由参数拟合到标定行（保留行中每隔 10 行取一行，取前 300 行）：先全局搜索，再用 BOBYQA。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="73"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="69"/>
+        <source>Fits the free parameters to the calibration rows (every 10th kept row, the first 300) with NLopt: a global search, then a local polish that needs no derivatives (BOBYQA).</source>
+        <translation>用 NLopt 将自由参数拟合到标定样本（保留样本每 10 行取 1 行，取前 300 行）：先全局搜索，再做无需导数的局部精修（BOBYQA）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="75"/>
+        <source>The parameter&apos;s symbol; hover over a name for its meaning.</source>
+        <translation>参数符号；将鼠标停在名称上可看其含义。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="75"/>
+        <source>The fitted value.</source>
+        <translation>拟合值。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="76"/>
+        <source>The range that holds the true value with 95 % confidence, given the data.</source>
+        <translation>在现有数据下以 95 % 置信度包含真值的范围。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="77"/>
+        <source>Fisher SE: the estimate&apos;s standard error from the fit&apos;s curvature (the Fisher information); about a third of the 95 % interval&apos;s width.</source>
+        <translation>Fisher 标准误：由拟合曲面的曲率（Fisher 信息）得到的估计标准误差；约为 95 % 区间宽度的三分之一。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="79"/>
+        <source>At bound: the fit stopped at the edge of the search range; widen the bounds or suspect the model.</source>
+        <translation>触及边界：拟合停在搜索范围的边缘；请放宽边界，或怀疑模型本身。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="82"/>
         <source>best loss [-]</source>
         <translation>最优损失 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="74"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="83"/>
         <source>θ / θ final [-]</source>
         <translation>θ / θ 最终值 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="75"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="84"/>
         <source>share of the evaluation budget used [-]</source>
         <translation>已用评估预算比例 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="79"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="88"/>
         <source>Free parameters and their search bounds:</source>
         <translation>自由参数及其搜索范围：</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="89"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="98"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="109"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="118"/>
         <source>best loss so far</source>
         <translation>迄今最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="127"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="136"/>
         <source>Run Calibrate to see the loss fall and the parameters settle</source>
         <translation>运行标定，可看到损失下降、参数收敛</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="128"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="141"/>
+        <source>The parameters&apos; paths are drawn when the calibration ends</source>
+        <translation>标定结束后绘出各参数的变化轨迹</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="142"/>
         <source>Run Calibrate to see the fit before and after</source>
         <translation>运行标定，可看到标定前后的拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="170"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="184"/>
         <source>Cannot calibrate: %1</source>
         <translation>无法标定：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="181"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="195"/>
         <source>Calibrating…</source>
         <translation>正在标定…</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="206"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="220"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="206"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="220"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="210"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="225"/>
         <source>On %1: </source>
         <translation>数据 %1：</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="211"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="226"/>
         <source>%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. Intervals: %10.</source>
         <translation>%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口 MAE %6 → %7 % 湿基，%8 → %9 °C。区间：%10。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="236"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="251"/>
         <source>loss evaluations [-]</source>
         <translation>损失评估次数 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="237"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="252"/>
         <source>best loss</source>
         <translation>最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="269"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="284"/>
         <source>measured %1</source>
         <translation>实测 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="272"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="287"/>
         <source>before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="275"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="290"/>
         <source>after</source>
         <translation>之后</translation>
     </message>
@@ -986,7 +1229,7 @@
 <context>
     <name>drytwin::widgets::ColumnMappingDialog</name>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="29"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="30"/>
         <source>Column mapping</source>
         <translation>列映射</translation>
     </message>
@@ -999,147 +1242,147 @@
         <translation>为 DryTwin 需要的每一列选择您文件中使用的表头及其数值的单位（读取时换算）；必需的列标有 *。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="43"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="44"/>
         <source>Delimiter %1, %2, time stamps in column &apos;%3&apos; (%4)%5.</source>
         <translation>分隔符 %1，%2，时间戳在列“%3”中（%4）%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="44"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="45"/>
         <source>tab</source>
         <translation>制表符</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="45"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="46"/>
         <source>decimal commas</source>
         <translation>小数逗号</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="45"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="46"/>
         <source>decimal points</source>
         <translation>小数点</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="48"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="49"/>
         <source>, a units row under the header</source>
         <translation>，表头下有单位行</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="51"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="52"/>
         <source>Could not read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="52"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="53"/>
         <source>Choose, for each column DryTwin needs, the header your files use and the unit its values are in (converted when read); required columns are marked *. The proposal comes from the headers&apos; words and tag letters and the ranges of the first rows&apos; values: check it.</source>
         <translation>为 DryTwin 需要的每一列选择您文件中使用的表头及其数值的单位（读取时换算）；必需的列标有 *。建议来自表头中的词语、位号字母以及前几行数值的范围：请核对。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="60"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="61"/>
         <source>DryTwin column</source>
         <translation>DryTwin 列</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="60"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="61"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="60"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="61"/>
         <source>Header in your file</source>
         <translation>您文件中的表头</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="61"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="62"/>
         <source>Meaning</source>
         <translation>含义</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="61"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="62"/>
         <source>Unit in your file</source>
         <translation>您文件中的单位</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="61"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="62"/>
         <source>Why proposed</source>
         <translation>建议依据</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="74"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="75"/>
         <source>(not in the file)</source>
         <translation>（文件中没有）</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="116"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="117"/>
         <source>(none: cut runs at line stops and gaps)</source>
         <translation>（无：在停线和时间间断处切分生产段）</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="123"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="124"/>
         <source>Column that names the production run:</source>
         <translation>标识生产段的列：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="128"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="129"/>
         <source>Run</source>
         <translation>生产段</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="128"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="129"/>
         <source>Start</source>
         <translation>开始</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="128"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="129"/>
         <source>File lines</source>
         <translation>文件行</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="128"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="129"/>
         <source>Rows</source>
         <translation>行数</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="128"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="129"/>
         <source>Interpolated cells</source>
         <translation>插值单元格</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="128"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="129"/>
         <source>Ended by</source>
         <translation>结束原因</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="154"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="155"/>
         <source>The mapping is not complete: %1</source>
         <translation>映射不完整：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="160"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="161"/>
         <source>With this mapping the file does not load: %1</source>
         <translation>按此映射无法加载该文件：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="166"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="167"/>
         <source>The first %1 MB of the file give these production runs:</source>
         <translation>文件前 %1 MB 给出以下生产段：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="167"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="168"/>
         <source>The file gives these production runs:</source>
         <translation>该文件给出以下生产段：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="169"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="170"/>
         <source>Notes while reading: %1; the first: %2</source>
         <translation>读取时的提示：%1 条；第一条：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="182"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="183"/>
         <source>one batch</source>
         <translation>单个批次</translation>
     </message>
     <message>
-        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="266"/>
+        <location filename="../widgets/data/ColumnMappingDialog.cpp" line="267"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -1147,67 +1390,67 @@
 <context>
     <name>drytwin::widgets::DataPanel</name>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="31"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="32"/>
         <source>Open file…</source>
         <translation>打开文件…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="32"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="33"/>
         <source>Open folder…</source>
         <translation>打开文件夹…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="33"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="34"/>
         <source>Column mapping…</source>
         <translation>列映射…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="34"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="35"/>
         <source>Files with other column names: map them onto DryTwin&apos;s columns, then load</source>
         <translation>列名不同的文件：先映射到 DryTwin 的列，再加载</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
         <source>Batches overlaid</source>
         <translation>批次叠加</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
         <source>Batches one after another</source>
         <translation>批次首尾相接</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="40"/>
         <source>Batch</source>
         <translation>批次</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="40"/>
         <source>Rows</source>
         <translation>行数</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="40"/>
         <source>Kept</source>
         <translation>保留</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="39"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="40"/>
         <source>Length [min]</source>
         <translation>时长 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="40"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="41"/>
         <source>Mean X_out [% wb]</source>
         <translation>平均 X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="40"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="41"/>
         <source>Mean T_hot [°C]</source>
         <translation>平均 T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="40"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="41"/>
         <source>Source</source>
         <translation>来源</translation>
     </message>
@@ -1352,22 +1595,27 @@
         <translation>%1：Ljung-Box p = %2，残差均值 %3 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="168"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="138"/>
+        <source>Ljung-Box p: the chance that errors this patterned come from pure noise; below 0.05 a pattern is left that a model could still learn.</source>
+        <translation>Ljung-Box p：如此有规律的误差来自纯噪声的概率；低于 0.05 说明还剩有模型可以学习的规律。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="171"/>
         <source>%1 (%2 % below 0.01 Hz)</source>
         <translation>%1（%2 % 低于 0.01 Hz）</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="174"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="177"/>
         <source>95 % band of white noise</source>
         <translation>白噪声 95 % 置信带</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="214"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="218"/>
         <source>every 10th kept row</source>
         <translation>保留行中每隔 10 行</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="242"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="246"/>
         <source>lag of the input [s]</source>
         <translation>输入的滞后 [s]</translation>
     </message>
@@ -1386,7 +1634,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="122"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="134"/>
         <source>Extend the model</source>
         <translation>扩展模型</translation>
     </message>
@@ -1426,451 +1674,475 @@
         <translation>损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="42"/>
+        <source>Score z: how strongly the model&apos;s error points at this cause, in standard deviations of chance; above about 3 is strong evidence.</source>
+        <translation>得分 z：模型误差指向该原因的强度，以偶然波动的标准差计；约 3 以上为有力证据。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="44"/>
+        <source>p (Holm): the chance of evidence this strong if the cause were absent, corrected for testing many causes at once (Holm&apos;s method); below 0.05 the cause is taken seriously.</source>
+        <translation>p（Holm）：若该原因不存在，出现如此强证据的概率，已按同时检验多个原因校正（Holm 法）；低于 0.05 即应认真对待该原因。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="46"/>
+        <source>Fitted: whether the cause&apos;s parameter was fitted to the data (only the leading causes are).</source>
+        <translation>已拟合：该原因的参数是否已拟合到数据（只拟合排名靠前的原因）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="47"/>
+        <source>Loss: the fit&apos;s error with the cause in the model; lower is a better fit.</source>
+        <translation>损失：模型加入该原因后拟合的误差；越低拟合越好。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
+        <source>The held-out part: batches the fit did not see.</source>
+        <translation>留出部分：拟合时未使用的批次。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
         <source>Held-out</source>
         <translation>留出数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
         <source>Before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
         <source>After</source>
         <translation>之后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="42"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
         <source>X_out residual [% wb]</source>
         <translation>X_out 残差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="43"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="53"/>
         <source>T_out residual [°C]</source>
         <translation>T_out 残差 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="44"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="77"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="54"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="88"/>
         <source>time, batches one after another [h]</source>
         <translation>时间，批次首尾相接 [h]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="47"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="57"/>
         <source>Compare with a reference period…</source>
         <translation>与参考期比较…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="59"/>
         <source>Choose batches from a time when the line ran as it should (the weeks after a cleaning, commissioning runs): Discover then says whether, from when and why the loaded data differ</source>
         <translation>选择产线正常运行时期的批次（清洗后的几周、调试运行）：发现功能将说明已加载的数据是否、从何时起以及为何与之不同</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="62"/>
         <source>A folder of batch files…</source>
         <translation>批次文件所在的文件夹…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="53"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="64"/>
         <source>Reference period: a folder of batch files</source>
         <translation>参考期：批次文件所在的文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="59"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="69"/>
         <source>One batch or historian file…</source>
         <translation>单个批次或历史库文件…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="60"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="71"/>
         <source>Reference period: a batch or historian file</source>
         <translation>参考期：批次或历史库文件</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="61"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="72"/>
         <source>CSV files (*.csv *.txt)</source>
         <translation>CSV 文件 (*.csv *.txt)</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="66"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="77"/>
         <source>No reference: judge the data alone</source>
         <translation>不用参考期：单独判断数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="75"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="86"/>
         <source>T² [-]</source>
         <translation>T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="76"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="87"/>
         <source>SPE [-]</source>
         <translation>SPE [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="80"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="91"/>
         <source>Choose a reference period and run Discover to see the monitor</source>
         <translation>选择参考期并运行“发现”以查看监控图</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="81"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="93"/>
         <source>Column</source>
         <translation>列</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="81"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="93"/>
         <source>Share of the change</source>
         <translation>在变化中的占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="81"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="93"/>
         <source>Detector</source>
         <translation>检测器</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="83"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
         <source>How much each column contributes to the monitor&apos;s statistic after the onset (reconstruction-based contributions: the column that, put back to normal, removes most of it)</source>
         <translation>起始点之后各列对监控统计量的贡献（基于重构的贡献：将该列恢复正常后消除的部分最多者）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="102"/>
         <source>Model error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="91"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="103"/>
         <source>Monitor against the reference</source>
         <translation>相对参考期的监控</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="103"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="115"/>
         <source>Candidate causes, first round:</source>
         <translation>候选原因（第一轮）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="105"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="117"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="126"/>
         <source>the model was extended by discovery</source>
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="128"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="140"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="135"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="147"/>
         <source>Run Discover to see the physics model&apos;s error over the batches</source>
         <translation>运行发现，可看到物理模型在各批次上的误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="142"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="154"/>
         <source>No reference period: the data are judged alone.</source>
         <translation>无参考期：单独判断数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="143"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="155"/>
         <source>Reference period: %1</source>
         <translation>参考期：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="159"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="171"/>
         <source>%1: &lt;b&gt;changed&lt;/b&gt; (p = %2)</source>
         <translation>%1：&lt;b&gt;已变化&lt;/b&gt;（p = %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="160"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="172"/>
         <source>%1: no change (p = %2)</source>
         <translation>%1：无变化（p = %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="162"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="174"/>
         <source>, first alarm in %1 at %2 min</source>
         <translation>，首次报警于 %1 第 %2 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="167"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="179"/>
         <source>, from %1 at %2 min (95 %: %3 to %4 min)</source>
         <translation>，自 %1 第 %2 分钟起（95 %：%3 至 %4 分钟）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="178"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="190"/>
         <source>DryTwin (the causes&apos; parameters): &lt;b&gt;changed&lt;/b&gt; (p = %1): %2 moved beyond its normal spread</source>
         <translation>DryTwin（各原因的参数）：&lt;b&gt;已变化&lt;/b&gt;（p = %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="181"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="194"/>
         <source>DryTwin (the causes&apos; parameters): none moved beyond its normal spread (p = %1)</source>
         <translation>DryTwin（各原因的参数）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="184"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="197"/>
         <source>&lt;b&gt;The line has changed since the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;自参考期以来产线已发生变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="185"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="198"/>
         <source>&lt;b&gt;No change against the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;与参考期相比无变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="186"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="199"/>
         <source> Each detector&apos;s false-alarm rate: %1 % per data set.</source>
         <translation> 每个检测器的误报率：每个数据集 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="187"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="200"/>
         <source>DryTwin (the model&apos;s error)</source>
         <translation>DryTwin（模型误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="188"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="202"/>
         <source>Dynamic PCA (the measured columns)</source>
         <translation>动态 PCA（测量列）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="213"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="229"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="227"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="243"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="213"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="229"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="227"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="243"/>
         <source>dynamic PCA</source>
         <translation>动态 PCA</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="215"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="217"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="229"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="231"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="253"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="268"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="256"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="271"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)</source>
         <translation>误差随进料量和入口水分增大（按 feed_kg_h 和 X_in_pct 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="259"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="274"/>
         <source>the error drifts within every batch and resets at each batch start</source>
         <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="261"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="276"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="265"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="280"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="268"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="283"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="270"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="285"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="274"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="289"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="278"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="293"/>
         <source>a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less</source>
         <translation>干燥管出口与出口水分有相同的稳定偏差，干燥管干燥越少处越大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="281"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="296"/>
         <source>after each hot-air setpoint step the outlet temperature and moisture move before the simulation, which follows the slow reading</source>
         <translation>每次热风设定值阶跃后，出口温度和水分先于仿真变化，仿真跟随的是迟缓的读数</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="284"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="299"/>
         <source>the inlet-moisture reading scatters from second to second while the outlet does not follow it, and the simulated outlet does</source>
         <translation>入口水分读数逐秒跳动，出口并不跟随，而仿真的出口却跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="294"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="309"/>
         <source>a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet temperature&apos;s response as much as the moisture&apos;s, a meter lag delays the moisture reading alone; or grab samples timed against the meter</source>
         <translation>以 1 s 记录一次热风设定值阶跃：输送时间误差使出口温度与水分的响应同样延迟，水分仪滞后只延迟水分读数；或对照水分仪定时取样</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="301"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="316"/>
         <source>oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter offset does not</source>
         <translation>在出口对照水分仪、在入口对照入口水分计做烘箱法实验室取样；或增加干燥管出口水分通道（X_hdt）：入口水分计偏差会使其变化，出口水分仪偏差不会</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="308"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="323"/>
         <source>a gas-temperature reading at the tube&apos;s outlet end at two feed rates: wall loss does not change with the feed, gas-phase cooling grows with it</source>
         <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="318"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="333"/>
         <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
         <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="321"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="336"/>
         <source>its size is not consistent across batches or operating regions</source>
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="324"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="339"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="327"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="342"/>
         <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
         <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="331"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="346"/>
         <source>the outlet channels&apos; timing points to its look-alike (the moisture answers later than the temperature: a meter, not the transport)</source>
         <translation>出口两个通道的时序指向它的相似原因（水分比温度响应更晚：是水分仪，而非输送）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="336"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="351"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="339"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="354"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="356"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="371"/>
         <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
         <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="361"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="376"/>
         <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
         <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="364"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="379"/>
         <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
         <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="369"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="384"/>
         <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
         <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="375"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="390"/>
         <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="386"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="401"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="391"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="406"/>
         <source>the error follows %1 %2 s later (|ccf| %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="401"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="416"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="406"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="421"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="418"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="433"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="425"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="440"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="440"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="455"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="445"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="460"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="445"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="460"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="448"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="463"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="452"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="467"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="461"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="476"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="467"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="482"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="479"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="494"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="480"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="495"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="487"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="502"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="499"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="514"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="503"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="518"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -1879,27 +2151,27 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="518"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="535"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="518"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="535"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="545"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="562"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="546"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="563"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="563"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="580"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -1916,181 +2188,185 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="578"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="595"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="578"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="595"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="599"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="616"/>
         <source>%1 at %2 s (ccf %3%4)</source>
         <translation>%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="603"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="620"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="606"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="623"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="614"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="631"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="415"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="430"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="504"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="519"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="505"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="520"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="508"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="524"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="514"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="566"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="583"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="569"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="586"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="570"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="587"/>
         <source>, </source>
         <translation>、</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="571"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="588"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="624"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="641"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="640"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="657"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="645"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="662"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="653"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="670"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="658"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="675"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="666"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="683"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="676"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="693"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="494"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="677"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="695"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="509"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="694"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="712"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="678"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="695"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="494"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="679"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="699"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="509"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="696"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="716"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="680"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="530"/>
+        <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
+        <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="697"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="681"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="698"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="694"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="711"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="694"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="711"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="695"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="712"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="698"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="698"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="699"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="716"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="723"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="740"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="724"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="741"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -2142,11 +2418,13 @@
     <name>drytwin::widgets::LineView3D</name>
     <message>
         <location filename="../widgets/view3d/LineView3D.cpp" line="73"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="315"/>
         <source>moisture [% wb]</source>
         <translation>含水率 [% 湿基]</translation>
     </message>
     <message>
         <location filename="../widgets/view3d/LineView3D.cpp" line="73"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="315"/>
         <source>temperature [°C]</source>
         <translation>温度 [°C]</translation>
     </message>
@@ -2172,17 +2450,17 @@
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="182"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="181"/>
         <source>drying tube</source>
         <translation>干燥管</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="183"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="182"/>
         <source>conveyor</source>
         <translation>输送机</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="184"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="183"/>
         <source>winnower</source>
         <translation>风选机</translation>
     </message>
@@ -2334,175 +2612,175 @@
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="262"/>
+        <location filename="../widgets/MainWindow.cpp" line="265"/>
         <source>The line&apos;s commissioning runs are in %1: choose them under &quot;Compare with a reference period&quot; to ask what changed since commissioning.</source>
         <translation>产线的调试运行数据位于 %1：在“与参考期比较”中选择它们，即可查看自调试以来发生了什么变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="270"/>
+        <location filename="../widgets/MainWindow.cpp" line="273"/>
         <source>Opening the recording beside %1; the data-set list at the top right switches back.</source>
         <translation>正在 %1 之外另行打开该记录；用右上角的数据集列表可切换回去。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="303"/>
+        <location filename="../widgets/MainWindow.cpp" line="306"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="304"/>
+        <location filename="../widgets/MainWindow.cpp" line="307"/>
         <source>&amp;Open batch file…</source>
         <translation>打开批次文件(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="305"/>
+        <location filename="../widgets/MainWindow.cpp" line="308"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="305"/>
+        <location filename="../widgets/MainWindow.cpp" line="308"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="311"/>
+        <location filename="../widgets/MainWindow.cpp" line="314"/>
         <source>Open data set &amp;folder…</source>
         <translation>打开数据集文件夹(&amp;F)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="312"/>
+        <location filename="../widgets/MainWindow.cpp" line="315"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="317"/>
+        <location filename="../widgets/MainWindow.cpp" line="320"/>
         <source>Open the bundled &amp;demo</source>
         <translation>打开自带演示数据(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="318"/>
+        <location filename="../widgets/MainWindow.cpp" line="321"/>
         <source>&amp;Generate virtual-plant data…</source>
         <translation>生成虚拟装置数据(&amp;G)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="319"/>
+        <location filename="../widgets/MainWindow.cpp" line="322"/>
         <source>Folder for the virtual plant&apos;s batches</source>
         <translation>虚拟装置批次的文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="328"/>
+        <location filename="../widgets/MainWindow.cpp" line="331"/>
         <source>Open &amp;model…</source>
         <translation>打开模型(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="329"/>
+        <location filename="../widgets/MainWindow.cpp" line="332"/>
         <source>Open model</source>
         <translation>打开模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="329"/>
-        <location filename="../widgets/MainWindow.cpp" line="336"/>
+        <location filename="../widgets/MainWindow.cpp" line="332"/>
+        <location filename="../widgets/MainWindow.cpp" line="339"/>
         <source>Model files (*.json)</source>
         <translation>模型文件 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="334"/>
+        <location filename="../widgets/MainWindow.cpp" line="337"/>
         <source>Save model &amp;as…</source>
         <translation>模型另存为(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="336"/>
+        <location filename="../widgets/MainWindow.cpp" line="339"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="342"/>
+        <location filename="../widgets/MainWindow.cpp" line="345"/>
         <source>Open &amp;project…</source>
         <translation>打开项目(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="343"/>
         <location filename="../widgets/MainWindow.cpp" line="346"/>
-        <location filename="../widgets/MainWindow.cpp" line="750"/>
+        <location filename="../widgets/MainWindow.cpp" line="349"/>
+        <location filename="../widgets/MainWindow.cpp" line="754"/>
         <source>Open project</source>
         <translation>打开项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="343"/>
-        <location filename="../widgets/MainWindow.cpp" line="353"/>
-        <location filename="../widgets/MainWindow.cpp" line="363"/>
+        <location filename="../widgets/MainWindow.cpp" line="346"/>
+        <location filename="../widgets/MainWindow.cpp" line="356"/>
+        <location filename="../widgets/MainWindow.cpp" line="366"/>
         <source>DryTwin projects (*.drytwin)</source>
         <translation>DryTwin 项目 (*.drytwin)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="349"/>
+        <location filename="../widgets/MainWindow.cpp" line="352"/>
         <source>&amp;Save project</source>
         <translation>保存项目(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="352"/>
-        <location filename="../widgets/MainWindow.cpp" line="357"/>
-        <location filename="../widgets/MainWindow.cpp" line="362"/>
-        <location filename="../widgets/MainWindow.cpp" line="366"/>
+        <location filename="../widgets/MainWindow.cpp" line="355"/>
+        <location filename="../widgets/MainWindow.cpp" line="360"/>
+        <location filename="../widgets/MainWindow.cpp" line="365"/>
+        <location filename="../widgets/MainWindow.cpp" line="369"/>
         <source>Save project</source>
         <translation>保存项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="361"/>
+        <location filename="../widgets/MainWindow.cpp" line="364"/>
         <source>Save project as…</source>
         <translation>项目另存为…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="369"/>
+        <location filename="../widgets/MainWindow.cpp" line="372"/>
         <source>Recent projects</source>
         <translation>最近的项目</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="372"/>
+        <location filename="../widgets/MainWindow.cpp" line="375"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="375"/>
+        <location filename="../widgets/MainWindow.cpp" line="378"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="376"/>
+        <location filename="../widgets/MainWindow.cpp" line="379"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="394"/>
+        <location filename="../widgets/MainWindow.cpp" line="397"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="499"/>
+        <location filename="../widgets/MainWindow.cpp" line="502"/>
         <source>Ready.</source>
         <translation>就绪。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="528"/>
+        <location filename="../widgets/MainWindow.cpp" line="531"/>
         <source>Project saved to %1 (model, results and view)</source>
         <translation>项目已保存到 %1（模型、结果和视图）</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="586"/>
+        <location filename="../widgets/MainWindow.cpp" line="590"/>
         <source>Saving the project to %1…</source>
         <translation>正在保存项目到 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="634"/>
+        <location filename="../widgets/MainWindow.cpp" line="638"/>
         <source>The project&apos;s results could not be read (%1); it opens without them.</source>
         <translation>无法读取项目的结果（%1）；项目将不带结果打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="687"/>
+        <location filename="../widgets/MainWindow.cpp" line="691"/>
         <source>Wait until the running job has finished (or cancel it), then switch the language.</source>
         <translation>请等待当前任务完成（或取消它），然后再切换语言。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="720"/>
+        <location filename="../widgets/MainWindow.cpp" line="724"/>
         <source>The training session under way was saved in %1 when the language changed: the instructor window&apos;s Session file ▸ Open session… continues it.</source>
         <translation>切换语言时，进行中的培训会话已保存到 %1：在教员窗口的 会话文件 ▸ 打开会话… 可继续。</translation>
     </message>
@@ -2511,109 +2789,109 @@
         <translation>语言将在 DryTwin 重新启动后生效。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="398"/>
+        <location filename="../widgets/MainWindow.cpp" line="401"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="399"/>
+        <location filename="../widgets/MainWindow.cpp" line="402"/>
         <source>&amp;User guide</source>
         <translation>用户指南(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="402"/>
+        <location filename="../widgets/MainWindow.cpp" line="405"/>
         <source>&amp;About DryTwin</source>
         <translation>关于 DryTwin(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="403"/>
+        <location filename="../widgets/MainWindow.cpp" line="406"/>
         <source>About DryTwin</source>
         <translation>关于 DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="404"/>
+        <location filename="../widgets/MainWindow.cpp" line="407"/>
         <source>About &amp;Qt</source>
         <translation>关于 Qt(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="423"/>
+        <location filename="../widgets/MainWindow.cpp" line="426"/>
         <source>DryTwin user guide</source>
         <translation>DryTwin 用户指南</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="433"/>
+        <location filename="../widgets/MainWindow.cpp" line="436"/>
         <source>No data loaded. File ▸ Open data set folder… (or File ▸ Open the bundled demo)</source>
         <translation>未加载数据。文件 ▸ 打开数据集文件夹…（或 文件 ▸ 打开自带演示数据）</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="439"/>
+        <location filename="../widgets/MainWindow.cpp" line="442"/>
         <source>Loading</source>
         <translation>正在加载</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="440"/>
+        <location filename="../widgets/MainWindow.cpp" line="443"/>
         <source>Simulating</source>
         <translation>正在模拟</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="441"/>
+        <location filename="../widgets/MainWindow.cpp" line="444"/>
         <source>Calibrating</source>
         <translation>正在标定</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="442"/>
+        <location filename="../widgets/MainWindow.cpp" line="445"/>
         <source>Learning the correction models</source>
         <translation>正在学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="443"/>
+        <location filename="../widgets/MainWindow.cpp" line="446"/>
         <source>Training the LSTM</source>
         <translation>正在训练 LSTM</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="444"/>
+        <location filename="../widgets/MainWindow.cpp" line="447"/>
         <source>Scoring on the held-out part</source>
         <translation>正在留出部分上评分</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="445"/>
+        <location filename="../widgets/MainWindow.cpp" line="448"/>
         <source>Discovering</source>
         <translation>正在发现</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="446"/>
+        <location filename="../widgets/MainWindow.cpp" line="449"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="447"/>
+        <location filename="../widgets/MainWindow.cpp" line="450"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="448"/>
+        <location filename="../widgets/MainWindow.cpp" line="451"/>
         <source>Generating plant data</source>
         <translation>正在生成工厂数据</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="449"/>
+        <location filename="../widgets/MainWindow.cpp" line="452"/>
         <source>Training session</source>
         <translation>培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="455"/>
+        <location filename="../widgets/MainWindow.cpp" line="458"/>
         <source>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;Digital-twin workbench for pneumatic drying lines, implementing the PGRL-CC method.&lt;/p&gt;&lt;table&gt;</source>
         <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="484"/>
+        <location filename="../widgets/MainWindow.cpp" line="487"/>
         <source>Writing the bundled demo (10 batches of the virtual plant) to %1…</source>
         <translation>正在把自带演示数据（虚拟工厂的 10 个批次）写入 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="523"/>
-        <location filename="../widgets/MainWindow.cpp" line="570"/>
-        <location filename="../widgets/MainWindow.cpp" line="577"/>
+        <location filename="../widgets/MainWindow.cpp" line="526"/>
+        <location filename="../widgets/MainWindow.cpp" line="574"/>
+        <location filename="../widgets/MainWindow.cpp" line="581"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -2622,12 +2900,12 @@
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="594"/>
+        <location filename="../widgets/MainWindow.cpp" line="598"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="603"/>
+        <location filename="../widgets/MainWindow.cpp" line="607"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
@@ -2782,177 +3060,255 @@
 <context>
     <name>drytwin::widgets::MpcPanel</name>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="44"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="45"/>
         <source>Open scenario…</source>
         <translation>打开情景…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="48"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="49"/>
         <source>The scenario as JSON (schema in docs/mpc.md): setpoint steps, input steps and ramps, hidden mechanisms switched on mid-run, noise. Edits are checked when you run.</source>
         <translation>以 JSON 表示的情景（格式见 docs/mpc.md）：设定值阶跃、输入阶跃与斜坡、运行中途开启的隐藏机理、噪声。运行时检查修改。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="60"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="61"/>
         <source>Run scenario</source>
         <translation>运行情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="64"/>
         <source>Show the horizon the controllers predicted at this decision</source>
         <translation>显示控制器在此决策时刻预测的时域</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="64"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="65"/>
         <source>Runs the scenario against the virtual plant once per controller.</source>
         <translation>对虚拟装置逐个控制器运行该情景。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="66"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="66"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
         <source>IAE [%·s]</source>
         <translation>IAE [%·s]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="66"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
         <source>Effort [K²]</source>
         <translation>控制量 [K²]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="66"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
         <source>Violations [%]</source>
         <translation>越限 [%]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="68"/>
         <source>Solve median [ms]</source>
         <translation>求解时间中位数 [ms]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="68"/>
         <source>Fallbacks</source>
         <translation>回退次数</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="68"/>
         <source>Model gain [%/K]</source>
         <translation>模型增益 [%/K]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="69"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="72"/>
+        <source>IAE: the outlet moisture&apos;s distance from its setpoint, summed over every second of the run (% wb × s); smaller is tighter control.</source>
+        <translation>IAE：出口含水率与设定值之差，按运行的每一秒累加（% 湿基 × s）；越小控制越紧。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="74"/>
+        <source>Effort: the squared moves of the hot-air setpoint, summed (K²); smaller is gentler on the burner.</source>
+        <translation>控制量：热风设定值各次调整的平方和（K²）；越小对燃烧器越温和。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="76"/>
+        <source>Share of the run with the product outside its specification band.</source>
+        <translation>产品超出规格带的运行时间占比。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="77"/>
+        <source>Median time the controller took to decide, per decision.</source>
+        <translation>控制器每次决策所用时间的中位数。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="78"/>
+        <source>Decisions where the optimiser failed and the controller kept its last move, of all decisions.</source>
+        <translation>优化器求解失败、控制器沿用上一步动作的决策次数 / 全部决策次数。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="80"/>
+        <source>How much X_out changes per kelvin of hot air in the controller&apos;s model (median); compare with the plant&apos;s own gain below.</source>
+        <translation>控制器模型中热风每变化 1 K 时 X_out 的变化量（中位数）；可与下方装置自身的增益比较。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="83"/>
         <source>X_out, true [% wb]</source>
         <translation>X_out 真实值 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="70"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="84"/>
         <source>T_hot setpoint [°C]</source>
         <translation>T_hot 设定值 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="85"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="99"/>
         <source>Form</source>
         <translation>表单</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="86"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="100"/>
         <source>JSON</source>
         <translation>JSON</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="93"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="107"/>
         <source>prediction at</source>
         <translation>预测时刻</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="132"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="150"/>
         <source>Open scenario</source>
         <translation>打开情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="132"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="150"/>
         <source>Scenarios (*.json)</source>
         <translation>情景 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="142"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="160"/>
         <source>Run a scenario to see each controller&apos;s outlet moisture and hot-air setpoint</source>
         <translation>运行一个情景，可看到各控制器的出口含水率和热风设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="155"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="177"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="178"/>
+        <source>the scenario</source>
+        <translation>该情景</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="183"/>
+        <source>The run was cancelled; the results below are from the last complete run.</source>
+        <translation>运行已取消；下方结果来自上一次完整运行。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="184"/>
+        <source>The run was cancelled.</source>
+        <translation>运行已取消。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="188"/>
+        <source>%1
+The results below are from the last complete run.</source>
+        <translation>%1
+下方结果来自上一次完整运行。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="199"/>
+        <source>%1 (problems in the form: %2)</source>
+        <translation>%1（表单中的问题：%2 个）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="210"/>
+        <source>The scenario&apos;s JSON: %1</source>
+        <translation>情景 JSON：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="211"/>
+        <source>The scenario&apos;s JSON, line %1: %2</source>
+        <translation>情景 JSON 第 %1 行：%2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="217"/>
+        <source>Run is off until this is fixed: %1</source>
+        <translation>修正以下问题前无法运行：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="230"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="172"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="243"/>
+        <source>Not run: %1</source>
+        <translation>未运行：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="253"/>
         <source>Cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="189"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="271"/>
         <source>Choose at least one controller.</source>
         <translation>请至少选择一个控制器。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="192"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="275"/>
         <source>Running…</source>
         <translation>正在运行…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="203"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="287"/>
         <source>Contract key: %1</source>
         <translation>接口代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="205"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="289"/>
         <source>%1 (stale)</source>
         <translation>%1（过期）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="206"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="290"/>
         <source>Learnt before %1: retrain it to run it.</source>
         <translation>学习于以下变化之前：%1；需重新训练才能运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="208"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="292"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="209"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="293"/>
         <source>Learn the correction models on the Residual model tab to run it.</source>
         <translation>在残差模型页学习修正模型后才能运行它。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="235"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="319"/>
         <source>skipped</source>
         <translation>已跳过</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="236"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="320"/>
         <source>the model holds no such prediction model</source>
         <translation>模型中没有这种预测模型</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="249"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="333"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="257"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="341"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="273"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="357"/>
         <source>%1 predicted at %2 s</source>
         <translation>%1 在 %2 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="282"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="366"/>
         <source>%1. IAE and violations on the product&apos;s true outlet moisture; the plant&apos;s own gain is %2 % wb/K.</source>
         <translation>%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。</translation>
     </message>
@@ -2960,7 +3316,7 @@
 <context>
     <name>drytwin::widgets::PlotStack</name>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="179"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="185"/>
         <source>Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click to zoom out, middle drag to pan</source>
         <translation>Ctrl+单击：游标 A，Shift+单击：游标 B，Alt+单击：时间游标；拖动放大，右键缩小，中键拖动平移</translation>
     </message>
@@ -2979,52 +3335,57 @@
         <translation>把这些曲线图保存为 PNG、SVG 或 PDF，或把数据保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="164"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="169"/>
         <source>time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="445"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="248"/>
+        <source>No data yet</source>
+        <translation>尚无数据</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/PlotStack.cpp" line="512"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="448"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="515"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="451"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="518"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="455"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="522"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="459"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="526"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="533"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="600"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="561"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="628"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
         <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="595"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="664"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="511"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="578"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
@@ -3033,7 +3394,7 @@
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="594"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="663"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
@@ -3042,12 +3403,12 @@
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="602"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="670"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="604"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="672"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
@@ -3120,12 +3481,12 @@
         <translation>30 步技能值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="64"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="72"/>
         <source>imaginary part</source>
         <translation>虚部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="65"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="73"/>
         <source>real part</source>
         <translation>实部</translation>
     </message>
@@ -3134,22 +3495,22 @@
         <translation>技能值：MAE 与较优参考之比 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="70"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="78"/>
         <source>forecast horizon [steps of 1 s]</source>
         <translation>预测步长 [1 s 步]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="73"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="81"/>
         <source>Ablation (paper Table 3)</source>
         <translation>消融实验（论文表 3）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="74"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="82"/>
         <source>Train and evaluate every variant of Table 3 on this model (a few minutes)</source>
         <translation>在此模型上训练并评估表 3 的每个变体（需几分钟）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="76"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="84"/>
         <source>Variant</source>
         <translation>变体</translation>
     </message>
@@ -3204,7 +3565,7 @@
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="76"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="84"/>
         <source>MAE X_out
 [% wb]</source>
         <translation>MAE X_out
@@ -3212,7 +3573,7 @@
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="76"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="84"/>
         <source>R² X_out
 [-]</source>
         <translation>R² X_out
@@ -3220,7 +3581,7 @@
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="61"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="77"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="85"/>
         <source>MAE T_out
 [°C]</source>
         <translation>MAE T_out
@@ -3241,89 +3602,114 @@
 30 步</translation>
     </message>
     <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="63"/>
+        <source>Mean absolute error of the outlet moisture on the held-out part.</source>
+        <translation>留出部分上出口含水率的平均绝对误差。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="64"/>
+        <source>R²: the share of the outlet moisture&apos;s variation the model explains (1: all; below 0: worse than the mean).</source>
+        <translation>R²：模型解释的出口含水率变化所占比例（1：全部；低于 0：不如均值）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="66"/>
+        <source>Mean absolute error of the outlet temperature on the held-out part.</source>
+        <translation>留出部分上出口温度的平均绝对误差。</translation>
+    </message>
+    <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="67"/>
+        <source>Skill one second ahead: the model&apos;s error over the better of two simple forecasts; below 1 it beats both.</source>
+        <translation>提前 1 秒的技能值：模型误差除以两个简单预测中较好者的误差；小于 1 即优于二者。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="69"/>
+        <source>Skill 30 seconds ahead, alike.</source>
+        <translation>提前 30 秒的技能值，含义相同。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="75"/>
         <source>skill [-]</source>
         <translation>技能 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="68"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="76"/>
         <source>Skill: a model&apos;s MAE over the better of the two reference forecasts at that horizon; below 1 it beats both</source>
         <translation>技能：模型在该步长上的 MAE 除以两个参考预测中较好者的 MAE；小于 1 即优于二者</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="77"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="85"/>
         <source>MAE X_out,
 extrapolation</source>
         <translation>MAE X_out，
 外推</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="78"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="86"/>
         <source>Learn the correction models to see the eigenvalues of their state matrix</source>
         <translation>学习修正模型后可看到其状态矩阵的特征值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="79"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="87"/>
         <source>Learn the correction models to see their skill by forecast horizon</source>
         <translation>学习修正模型后可看到其随预测步长的技能</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="138"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="146"/>
         <source>%1 %2 (%3 %)</source>
         <translation>%1 %2（%3 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="144"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="152"/>
         <source>Steady gain of X_out to the hot-air setpoint [% wb per K] at the scenario&apos;s start: the plant (open-loop step test) %1; each model as its MPC saw it, and how far from the plant&apos;s: %2. A learnt residual&apos;s response to the setpoint plan comes from the physics model, since data under the plant&apos;s own loop cannot tell it from the disturbances the loop answered.</source>
         <translation>情景起点处 X_out 对热风设定值的稳态增益 [% wb/K]：装置（开环阶跃试验）%1；各模型在其 MPC 中的增益及与装置的偏差：%2。学习得到的残差对设定值计划的响应取自物理模型，因为装置自身闭环下的数据无法将其与闭环所应对的扰动区分开。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="173"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="181"/>
         <source>Training…</source>
         <translation>正在训练…</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="187"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="195"/>
         <source>Learn the correction models on %1: they train on the chronological 70 % and are scored on the rest.</source>
         <translation>在 %1 上学习修正模型：用按时间顺序的前 70 % 训练，其余部分评分。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="190"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="198"/>
         <source>Open a data set first (File ▸ Open data set folder…, or the bundled demo).</source>
         <translation>请先打开数据集（文件 ▸ 打开数据集文件夹…，或自带演示数据）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="213"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="221"/>
         <source>Key: %1</source>
         <translation>代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="225"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="233"/>
         <source>skill 1 (ties the better reference)</source>
         <translation>技能值 1（与较优参考持平）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="235"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="243"/>
         <source>unit circle</source>
         <translation>单位圆</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="249"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="257"/>
         <source>A unconstrained (ρ = %1)</source>
         <translation>无约束 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="255"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="263"/>
         <source>A with Eq. 30 (ρ = %1)</source>
         <translation>式 30 约束后的 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="282"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="290"/>
         <source> Slowest contraction of A: %1 per step (half-life %2 s).</source>
         <translation> A 的最慢收缩：每步 %1（半衰期 %2 s）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="287"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="295"/>
         <source>On %1, held-out part: %2 rows. Skill below 1 beats both reference predictors (the last measurement held, and the physics model with its last error held). R² below 0 means a model predicts worse than the batch&apos;s mean (hover an R² for what it says).</source>
         <translation>数据 %1，留出部分：%2 行。技能小于 1 表示优于两个参考预测（保持最后测量值；物理模型保持最后误差）。R² 小于 0 表示模型预测比批次均值还差（鼠标悬停在 R² 上可看说明）。</translation>
     </message>
@@ -3335,150 +3721,220 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::ScenarioForm</name>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="57"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="80"/>
         <source>distributed (realistic line)</source>
         <translation>分布式（真实产线）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="58"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="81"/>
         <source>lumped (the model&apos;s own equations)</source>
         <translation>集总式（模型自身的方程）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="60"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="83"/>
         <source>realistic (noise, lags, faults)</source>
         <translation>真实（噪声、滞后、故障）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="61"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="84"/>
         <source>ideal</source>
         <translation>理想</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="66"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="89"/>
         <source> s</source>
         <translation> s</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="70"/>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="74"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="93"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="97"/>
         <source> % wb</source>
         <translation> % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="76"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="99"/>
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="77"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="100"/>
         <source>Plant</source>
         <translation>工厂</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="78"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="101"/>
         <source>Instruments</source>
         <translation>仪表</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="79"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="102"/>
         <source>Random seed</source>
         <translation>随机种子</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="80"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="103"/>
         <source>Scored length</source>
         <translation>评分时长</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="81"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="106"/>
         <source>Initial X_out setpoint</source>
         <translation>初始 X_out 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="82"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="107"/>
         <source>Specification band ±</source>
         <translation>规格带 ±</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="83"/>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="84"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="108"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="109"/>
         <source>at [s]</source>
         <translation>时刻 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="83"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="108"/>
         <source>setpoint to [% wb]</source>
         <translation>设定值变为 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="84"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="109"/>
         <source>input</source>
         <translation>输入</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="84"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="109"/>
         <source>over [s]</source>
         <translation>历时 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="84"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="109"/>
         <source>to</source>
         <translation>变为</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="85"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="110"/>
         <source>hidden cause</source>
         <translation>隐藏原因</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="85"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="110"/>
         <source>strength</source>
         <translation>强度</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="85"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="110"/>
         <source>from [s]</source>
         <translation>起始 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="92"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="121"/>
         <source>Add</source>
         <translation>添加</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="93"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="122"/>
         <source>Remove</source>
         <translation>删除</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="111"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="143"/>
         <source>Setpoint steps</source>
         <translation>设定值阶跃</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="112"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="146"/>
         <source>Input changes (a ramp when &quot;over&quot; &gt; 0)</source>
         <translation>输入变化（“历时” &gt; 0 时为斜坡）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="114"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="148"/>
         <source>Hidden causes in the plant (no controller knows them)</source>
         <translation>工厂中的隐藏原因（控制器均不知道）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="116"/>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="203"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="151"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="397"/>
         <source>The scenario as a form; the JSON tab shows the same scenario as text.</source>
         <translation>以表单显示的情景；JSON 页以文本显示同一情景。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="182"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="207"/>
+        <source>Row %1: enter a number.</source>
+        <translation>第 %1 行：请输入数字。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="214"/>
+        <source>Step %1: the time cannot be negative.</source>
+        <translation>阶跃 %1：时间不能为负。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="218"/>
+        <source>Step %1 at %2 s comes after the scored length (%3 s): move it earlier or lengthen the run.</source>
+        <translation>阶跃 %1 在 %2 s，晚于评分时长（%3 s）：请提前该阶跃或延长运行时间。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="225"/>
+        <source>Step %1 at %2 s comes before the step above it (%3 s): list the steps in time order.</source>
+        <translation>阶跃 %1 在 %2 s，早于上一行的阶跃（%3 s）：请按时间顺序排列。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="237"/>
+        <source>Step %1: a setpoint of %2 % wb lies outside %3–%4 % wb.</source>
+        <translation>阶跃 %1：设定值 %2 % 湿基超出 %3–%4 % 湿基。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="250"/>
+        <source>Change %1: the time cannot be negative.</source>
+        <translation>变化 %1：时间不能为负。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="254"/>
+        <source>Change %1 at %2 s comes after the scored length (%3 s): move it earlier or lengthen the run.</source>
+        <translation>变化 %1 在 %2 s，晚于评分时长（%3 s）：请提前该变化或延长运行时间。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="262"/>
+        <source>Change %1: a ramp lasts 0 to %2 s (the scored length).</source>
+        <translation>变化 %1：斜坡历时应在 0 到 %2 s（评分时长）之间。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="274"/>
+        <source>Change %1: %2 lies outside %3–%4 for %5.</source>
+        <translation>变化 %1：%2 超出 %5 的范围 %3–%4。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="290"/>
+        <source>Hidden cause %1 (%2) is listed twice.</source>
+        <translation>隐藏原因 %1（%2）重复列出。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="300"/>
+        <source>Hidden cause %1 (%2): a strength of %3 lies outside 0–%4 %5.</source>
+        <translation>隐藏原因 %1（%2）：强度 %3 超出 0–%4 %5。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="310"/>
+        <source>Hidden cause %1: the time cannot be negative.</source>
+        <translation>隐藏原因 %1：时间不能为负。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="314"/>
+        <source>Hidden cause %1 from %2 s starts after the scored length (%3 s): move it earlier or lengthen the run.</source>
+        <translation>隐藏原因 %1 从 %2 s 开始，晚于评分时长（%3 s）：请提前或延长运行时间。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="323"/>
+        <source>Shorter than the scenario below: something happens at %1 s. Lengthen the run to at least %1 s, or move that entry.</source>
+        <translation>比下面的情景短：%1 s 时还有事件。请将运行时间延长到至少 %1 s，或移动该条目。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="376"/>
         <source>%1; strength in %2</source>
         <translation>%1；强度单位 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/ScenarioForm.cpp" line="197"/>
+        <location filename="../widgets/mpc/ScenarioForm.cpp" line="391"/>
         <source>The JSON tab&apos;s text is not a scenario the form can show (%1); fix it there.</source>
         <translation>JSON 页的文本不是表单可显示的情景（%1）；请在那里修改。</translation>
     </message>
@@ -3486,42 +3942,42 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::Series</name>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="12"/>
+        <location filename="../widgets/common/Series.cpp" line="18"/>
         <source>T_hot [°C]</source>
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="14"/>
+        <location filename="../widgets/common/Series.cpp" line="20"/>
         <source>feed [kg/h]</source>
         <translation>进料 [kg/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="16"/>
+        <location filename="../widgets/common/Series.cpp" line="22"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="18"/>
+        <location filename="../widgets/common/Series.cpp" line="24"/>
         <source>T_amb [°C]</source>
         <translation>T_amb [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="20"/>
+        <location filename="../widgets/common/Series.cpp" line="26"/>
         <source>RH [%]</source>
         <translation>相对湿度 [%]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="22"/>
+        <location filename="../widgets/common/Series.cpp" line="28"/>
         <source>X_HDT [% wb]</source>
         <translation>X_HDT [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="24"/>
+        <location filename="../widgets/common/Series.cpp" line="30"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Series.cpp" line="26"/>
+        <location filename="../widgets/common/Series.cpp" line="32"/>
         <source>T_out [°C]</source>
         <translation>T_out [°C]</translation>
     </message>
@@ -3529,12 +3985,12 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::TrainingPanel</name>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="107"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="85"/>
         <source>The line&apos;s conditions: initial levels, load changes, seed (docs/mpc.md)</source>
         <translation>产线条件：初始水平、负荷变化、随机种子（docs/mpc.md）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="108"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="86"/>
         <source>Start session</source>
         <translation>开始会话</translation>
     </message>
@@ -3547,330 +4003,345 @@ extrapolation</source>
         <translation>显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="111"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="89"/>
         <source>Instructor window…</source>
         <translation>教员窗口…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="112"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="90"/>
         <source>Opens the instructor&apos;s window: clock, snapshots, faults, the true moisture and the score. Not on the trainee&apos;s screen.</source>
         <translation>打开教员窗口：时钟、快照、故障、真实水分和得分。不显示在学员屏幕上。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="114"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="92"/>
         <source>No session</source>
         <translation>无会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="123"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="101"/>
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="130"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="108"/>
         <source> % wb</source>
         <translation> % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="132"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="110"/>
         <source>Apply</source>
         <translation>应用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="141"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="119"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="143"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="121"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="147"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="125"/>
         <source>X_out setpoint</source>
         <translation>X_out 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="148"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="126"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="152"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="130"/>
         <source>Diagnose the recording…</source>
         <translation>诊断记录…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="153"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="131"/>
         <source>Saves what the line recorded so far as a batch file and opens it, so that the Discover tab can show what the model gets wrong</source>
         <translation>将产线至今的记录保存为批次文件并打开，以便“发现”页显示模型哪里出错</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="156"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="596"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="134"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="587"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="160"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="138"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="163"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="581"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="141"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="572"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="164"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
         <source>Stops the line&apos;s clock while you think; press again to continue</source>
         <translation>思考时暂停产线时钟；再按一次继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="165"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="143"/>
         <source>Trainee</source>
         <translation>学员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="175"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="153"/>
         <source>Causes named (session time):</source>
         <translation>已给出的原因（会话时间）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="179"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="580"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="157"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="571"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="183"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="161"/>
         <source> min</source>
         <translation> 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="184"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="162"/>
         <source>Run ahead</source>
         <translation>快进</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="185"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="163"/>
         <source>Runs the line this much further at full speed</source>
         <translation>以最快速度让产线再运行这么久</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="187"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="165"/>
         <source>label (default: the time)</source>
         <translation>标签（默认：时间）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="188"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="166"/>
         <source>Take snapshot</source>
         <translation>拍摄快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="191"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="169"/>
         <source>Restore selected</source>
         <translation>恢复所选快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="201"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="179"/>
         <source> s from now</source>
         <translation> 秒后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="202"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="180"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="203"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="203"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
         <source>Strength</source>
         <translation>强度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="203"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
         <source>Acts from</source>
         <translation>起作用时间</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="203"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
         <source>Found after</source>
         <translation>发现用时</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="207"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="185"/>
         <source>Save session…</source>
         <translation>保存会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="208"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="186"/>
         <source>Open session…</source>
         <translation>打开会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="209"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="248"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="347"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="187"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="226"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="337"/>
         <source>Instructor</source>
         <translation>教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="222"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="200"/>
         <source>Clock and snapshots</source>
         <translation>时钟与快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="230"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="208"/>
         <source>Faults</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="234"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="212"/>
         <source>A session file holds the scenario, every event (faults, snapshots, answers) and the recording as a batch file; reopening replays it to the same data.</source>
         <translation>会话文件包含工况、每个事件（故障、快照、回答）以及作为批次文件的记录；重新打开时会回放得到相同的数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="242"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="220"/>
         <source>Set instructor password…</source>
         <translation>设置教员密码…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="243"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="221"/>
         <source>Asked before the instructor window opens (empty: no password)</source>
         <translation>打开教员窗口前询问（留空：不设密码）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="249"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="227"/>
         <source>New instructor password (empty: none):</source>
         <translation>新的教员密码（留空：无）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="256"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="234"/>
         <source>Session file</source>
         <translation>会话文件</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="259"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="237"/>
         <source>Start a session: the line runs live under its PI loop.</source>
         <translation>开始会话：产线在其 PI 回路下实时运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="265"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="242"/>
         <source>Two detectors commissioned on healthy runs of this line: the physics model&apos;s error, and a dynamic PCA monitor of the screens&apos; signals. Each alarms when the line leaves its normal (1 % chance of a false alarm over the session)</source>
         <translation>两个检测器在本产线的健康运行数据上调试：物理模型误差，以及画面信号的动态 PCA 监控。产线偏离正常状态时各自报警（整个会话的误报概率为 1 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="283"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="298"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="261"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="276"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="284"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="262"/>
         <source>T_hot [°C]</source>
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="285"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="263"/>
         <source>Feed [t/h]</source>
         <translation>进料 [t/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="286"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="264"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="287"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="299"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="265"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="277"/>
         <source>session time [min]</source>
         <translation>会话时间 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="289"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="267"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="291"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="292"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="302"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="270"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="280"/>
         <source>X_out measured</source>
         <translation>X_out 测量值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="295"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="273"/>
         <source>DryTwin — instructor</source>
         <translation>DryTwin — 教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="304"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="282"/>
         <source>X_out true</source>
         <translation>X_out 真实值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="313"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="291"/>
         <source>Monitor T² [-]</source>
         <translation>监控 T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="315"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="293"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="317"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="294"/>
         <source>T² of the model&apos;s error</source>
         <translation>模型误差的 T²</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="419"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="303"/>
+        <source>Start a session to see the line run</source>
+        <translation>开始会话即可看到产线运行</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="304"/>
+        <source>The monitor&apos;s T² shows once it has a minute of the model&apos;s error</source>
+        <translation>监测器积累一分钟的模型误差后显示 T²</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="307"/>
+        <source>Start a session to see the true outlet moisture beside the measured</source>
+        <translation>开始会话即可看到真实出口含水率与测量值的对比</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="409"/>
         <source>Save the session as a folder</source>
         <translation>把会话保存为文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="422"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="412"/>
         <source>Session folder (*)</source>
         <translation>会话文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="639"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="630"/>
         <source>Line monitor unavailable: %1</source>
         <translation>产线监控不可用：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="641"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="632"/>
         <source>Line monitor: normal (as on its commissioning runs).</source>
         <translation>产线监控：正常（与调试运行一致）。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="646"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="637"/>
         <source>the model&apos;s error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="646"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="637"/>
         <source>the screens&apos; signals (PCA)</source>
         <translation>画面信号（PCA）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="648"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="640"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal; the change began at about %3. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态；变化约始于 %3。请诊断记录以确定原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="651"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="643"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态。请诊断记录以确定原因。</translation>
     </message>
@@ -3879,52 +4350,52 @@ extrapolation</source>
         <translation>X_out 真实值（教员）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="309"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="287"/>
         <source>T_hot setpoint</source>
         <translation>T_hot 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="310"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="288"/>
         <source>T_hot</source>
         <translation>T_hot</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="311"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="289"/>
         <source>feed</source>
         <translation>进料</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="290"/>
         <source>X_in</source>
         <translation>X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="322"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="323"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="313"/>
         <source>Stops the replay or the run ahead; the line stays where it got to</source>
         <translation>停止回放或快进；产线停留在已运行到的位置</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="325"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="315"/>
         <source>Scenario</source>
         <translation>工况</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="347"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="337"/>
         <source>Instructor password:</source>
         <translation>教员密码：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="350"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="340"/>
         <source>Wrong password: the instructor window stays closed.</source>
         <translation>密码错误：教员窗口保持关闭。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="407"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="397"/>
         <source>Select a snapshot to restore.</source>
         <translation>请选择要恢复的快照。</translation>
     </message>
@@ -3933,132 +4404,132 @@ extrapolation</source>
         <translation>将会话保存到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="428"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="418"/>
         <source>Open a training session</source>
         <translation>打开培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="428"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="418"/>
         <source>Sessions (*.json)</source>
         <translation>会话 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="437"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="427"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="446"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="434"/>
         <source>Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录以供诊断：%1。请在其上运行“发现”，然后在此给出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="448"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="437"/>
         <source>Recording opened for diagnosis: %1; the line&apos;s commissioning runs are in %2. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录用于诊断：%1；产线的调试运行数据位于 %2。对其运行“发现”，然后在此处指出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="453"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="444"/>
         <source>Session saved: %1</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="486"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="477"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="490"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="481"/>
         <source>The previous session was saved in %1.</source>
         <translation>上一个会话已保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="503"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="494"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="526"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="517"/>
         <source>%1 (stale: retrain)</source>
         <translation>%1（过期：需重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="527"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="518"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="575"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="566"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="577"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="568"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="577"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="568"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="577"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="568"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="579"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="570"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="580"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="571"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="581"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="572"/>
         <source>Continue</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="591"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="582"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="592"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="583"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="596"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="587"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="603"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="594"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="613"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="604"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="613"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="604"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="616"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="607"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="627"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="618"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>
@@ -4066,42 +4537,42 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::TrainingRunner</name>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="298"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="299"/>
         <source>Setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="304"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="305"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="312"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="313"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="320"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="321"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="329"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="330"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="338"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="339"/>
         <source>Snapshot</source>
         <translation>快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="344"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="345"/>
         <source>Restore</source>
         <translation>恢复</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="350"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="351"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>
@@ -4109,169 +4580,168 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::Workbench</name>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="48"/>
+        <location filename="../widgets/common/Workbench.cpp" line="49"/>
         <source>%1 is queued behind the running job</source>
         <translation>%1 已排队，等待当前任务完成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="63"/>
+        <location filename="../widgets/common/Workbench.cpp" line="64"/>
         <source>%1 was cancelled; nothing changed.</source>
         <translation>%1 已取消；未作任何更改。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="64"/>
+        <location filename="../widgets/common/Workbench.cpp" line="65"/>
         <source>%1 failed: %2</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="80"/>
+        <location filename="../widgets/common/Workbench.cpp" line="81"/>
         <source>%1 (1 batch)</source>
         <translation>%1（1 个批次）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="80"/>
+        <location filename="../widgets/common/Workbench.cpp" line="81"/>
         <source>%1 (%2 batches)</source>
         <translation>%1（%2 个批次）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="157"/>
+        <location filename="../widgets/common/Workbench.cpp" line="158"/>
         <source>%1 changes the physics model that %2 learnt its corrections on: they will no longer match it and are set aside as stale.</source>
         <translation>“%1”会改变 %2 学习修正时所依据的物理模型：它们将不再匹配，并被标为过期。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="161"/>
+        <location filename="../widgets/common/Workbench.cpp" line="162"/>
         <source>%1, then retrain them</source>
         <translation>%1，然后重新训练它们</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="162"/>
+        <location filename="../widgets/common/Workbench.cpp" line="163"/>
         <source>%1 only (retrain later)</source>
         <translation>仅%1（稍后重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="182"/>
+        <location filename="../widgets/common/Workbench.cpp" line="187"/>
         <source>Physics model calibrated (%1 fitted to data).</source>
         <translation>物理模型已标定（%1 已拟合到数据）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="184"/>
+        <location filename="../widgets/common/Workbench.cpp" line="189"/>
         <source>Physics model with its default parameters (not calibrated).</source>
         <translation>物理模型使用默认参数（未标定）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="191"/>
+        <location filename="../widgets/common/Workbench.cpp" line="196"/>
         <source>Extended by discovery with: %1.</source>
         <translation>已由发现功能扩展：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="197"/>
+        <location filename="../widgets/common/Workbench.cpp" line="202"/>
         <source>%1: not learnt yet.</source>
         <translation>%1：尚未学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="200"/>
+        <location filename="../widgets/common/Workbench.cpp" line="205"/>
         <source>%1: learnt.</source>
         <translation>%1：已学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="201"/>
+        <location filename="../widgets/common/Workbench.cpp" line="206"/>
         <source>%1: learnt on %2.</source>
         <translation>%1：在 %2 上学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="204"/>
+        <location filename="../widgets/common/Workbench.cpp" line="209"/>
         <source>%1: stale, since %2; retrain it to use it.</source>
         <translation>%1：已过期，因为%2；需重新训练才能使用。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="218"/>
+        <location filename="../widgets/common/Workbench.cpp" line="224"/>
         <source>Read the model</source>
         <translation>读取模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="233"/>
+        <location filename="../widgets/common/Workbench.cpp" line="239"/>
         <source>Loading %1…</source>
         <translation>正在加载 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="242"/>
+        <location filename="../widgets/common/Workbench.cpp" line="248"/>
         <source>Load %1</source>
         <translation>加载 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="277"/>
+        <location filename="../widgets/common/Workbench.cpp" line="283"/>
         <source>%1: %2 batches, %3 rows, %4 missing cells; the cleaning keeps %5 rows</source>
         <translation>%1：%2 个批次，%3 行，%4 个缺失值；清洗后保留 %5 行</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="303"/>
+        <location filename="../widgets/common/Workbench.cpp" line="309"/>
         <source>Open model %1</source>
         <translation>打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="307"/>
+        <location filename="../widgets/common/Workbench.cpp" line="313"/>
         <source>Model %1 opened</source>
         <translation>已打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="308"/>
+        <location filename="../widgets/common/Workbench.cpp" line="314"/>
         <source>model file %1</source>
         <translation>模型文件 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="351"/>
+        <location filename="../widgets/common/Workbench.cpp" line="357"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="360"/>
+        <location filename="../widgets/common/Workbench.cpp" line="366"/>
         <source>Model saved to %1</source>
         <translation>模型已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="366"/>
+        <location filename="../widgets/common/Workbench.cpp" line="372"/>
         <source>Set %1</source>
         <translation>设置 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="382"/>
+        <location filename="../widgets/common/Workbench.cpp" line="388"/>
         <source>Set the model</source>
         <translation>设置模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="399"/>
+        <location filename="../widgets/common/Workbench.cpp" line="405"/>
         <source>Simulate</source>
         <translation>仿真</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="407"/>
+        <location filename="../widgets/common/Workbench.cpp" line="413"/>
         <source>Simulated %1 batches; mean outlet-moisture MAE %2 % wb</source>
         <translation>已仿真 %1 个批次；出口含水率平均 MAE %2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="420"/>
+        <location filename="../widgets/common/Workbench.cpp" line="426"/>
         <source>Calibration: %1; loss %2 → %3</source>
         <translation>标定：%1；损失 %2 → %3</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="430"/>
         <source>the physics model was calibrated after it was learnt</source>
         <translation>学习之后物理模型又经过了标定</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="446"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="117"/>
+        <location filename="../widgets/common/Workbench.cpp" line="452"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="125"/>
         <source>Learn the correction models</source>
         <translation>学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="450"/>
+        <location filename="../widgets/common/Workbench.cpp" line="456"/>
         <source>Learnt the correction models (PGRL-CC) and the two comparison models</source>
         <translation>已学习修正模型（PGRL-CC）和两个对比模型</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="139"/>
-        <location filename="../widgets/common/Workbench.cpp" line="416"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="153"/>
+        <location filename="../widgets/common/Workbench.cpp" line="422"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
@@ -4288,48 +4758,48 @@ extrapolation</source>
         <translation>已训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="459"/>
+        <location filename="../widgets/common/Workbench.cpp" line="465"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="481"/>
+        <location filename="../widgets/common/Workbench.cpp" line="487"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="481"/>
+        <location filename="../widgets/common/Workbench.cpp" line="487"/>
         <source>Discover against the reference</source>
         <translation>相对参考期发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="491"/>
+        <location filename="../widgets/common/Workbench.cpp" line="497"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="498"/>
+        <location filename="../widgets/common/Workbench.cpp" line="504"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="513"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="118"/>
+        <location filename="../widgets/common/Workbench.cpp" line="519"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="126"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="517"/>
+        <location filename="../widgets/common/Workbench.cpp" line="523"/>
         <source>Ablation: %1 variants trained and evaluated</source>
         <translation>消融实验：已训练并评估 %1 个变体</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="524"/>
+        <location filename="../widgets/common/Workbench.cpp" line="530"/>
         <source>Generate</source>
         <translation>生成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="527"/>
+        <location filename="../widgets/common/Workbench.cpp" line="533"/>
         <source>Wrote %1 virtual-plant batches to %2</source>
         <translation>已将 %1 个虚拟装置批次写入 %2</translation>
     </message>

@@ -14,3 +14,35 @@ if(count GREATER 0)
   message(FATAL_ERROR "${count} string(s) without a translation in ${name} (run lupdate, then translations/zh_CN.py):\n${missing}")
 endif()
 message(STATUS "every string translated in ${name}")
+
+# Nor may English reach the screen past tr(): a table header, an axis title, a plot legend or a
+# 3D view's text written as a literal shows in English in every language. The pipeline report
+# (widgets/report/) is written in English by design, like the CLI's output, and is not checked.
+set(ALL_L "[^\"]*[A-Za-z][A-Za-z][A-Za-z]") # a literal with a word in it
+set(patterns
+    "addPlot\\((QStringLiteral\\()?\"${ALL_L}"
+    "setXTitle\\((QStringLiteral\\()?\"${ALL_L}"
+    "(makeResultTable|setHorizontalHeaderLabels)\\(\\{ *(QStringLiteral\\()?\"${ALL_L}"
+    "add(Curve|Dots)\\([^,()]+, *(QStringLiteral\\()?\"${ALL_L}"
+    "setAxisTitle\\([^,()]+, *(QStringLiteral\\(|QwtText\\()?\"${ALL_L}"
+    "setEmptyText\\((QStringLiteral\\()?\"${ALL_L}"
+    "(SetTitle|SetInput)\\(\"${ALL_L}")
+file(GLOB_RECURSE checked ${SOURCES}/widgets/*.cpp ${SOURCES}/app/*.cpp)
+list(FILTER checked EXCLUDE REGEX "/widgets/report/")
+set(literal_hits "")
+foreach(source IN LISTS checked)
+  file(READ ${source} code)
+  foreach(pattern IN LISTS patterns)
+    string(REGEX MATCHALL "${pattern}" hits "${code}")
+    foreach(hit IN LISTS hits)
+      list(APPEND literal_hits "${source}: ${hit}")
+    endforeach()
+  endforeach()
+endforeach()
+list(LENGTH literal_hits literal_count)
+if(literal_count GREATER 0)
+  string(REPLACE ";" "\n" literal_hits "${literal_hits}")
+  message(FATAL_ERROR "${literal_count} English literal(s) on screen outside tr() (headers, axis titles, "
+                      "legends): wrap them in tr() or a display name:\n${literal_hits}")
+endif()
+message(STATUS "no English literal in headers, axis titles or legends")

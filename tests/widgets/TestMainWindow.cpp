@@ -493,11 +493,12 @@ private Q_SLOTS:
         QVERIFY(w.workbench().latest().mpc.has_value());
         QCOMPARE(mpc->table()->rowCount(), 5);
         QVERIFY(curvesWithData(mpc->plots()->plot(0)) >= 3);
-        // A wrong scenario names its line and changes nothing.
+        // A wrong scenario names its line beside Run, is not run and changes nothing.
         mpc->editor()->setPlainText("{\n \"name\": \"x\",\n \"band_pct\": -4\n}");
+        QVERIFY(!mpc->runButton()->isEnabled());
         mpc->run();
         QVERIFY(waitIdle(w));
-        QVERIFY(w.statusBar()->findChild<QLabel*>()->text().contains(":3:"));
+        QVERIFY2(mpc->note()->text().contains("line 3"), qPrintable(mpc->note()->text()));
         QVERIFY(w.workbench().latest().mpc.has_value());
 
         // The 3D line: parcels drawn, the slider moves the shared time cursor.

@@ -55,7 +55,7 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
         m_free->setItem(row, 3, unit);
         ++row;
     }
-    m_free->resizeColumnsToContents();
+    fitTableWidth(m_free);
     m_budget = new QSpinBox;
     m_budget->setRange(20, 100000);
     m_budget->setValue(2000);
@@ -67,8 +67,17 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
         {tr("Parameter"), tr("Estimate"), tr("95 % interval"), tr("Unit"), tr("Fisher SE"), tr("At bound")});
     m_fit =
         new QLabel(tr("Fits the free parameters to the calibration rows (every 10th kept row, the first 300) "
-                      "with NLopt: a global search, then BOBYQA."));
+                      "with NLopt: a global search, then a local polish that needs no derivatives "
+                      "(BOBYQA)."));
     m_fit->setWordWrap(true);
+    setHeaderToolTips(
+        m_estimates,
+        {tr("The parameter's symbol; hover over a name for its meaning."), tr("The fitted value."),
+         tr("The range that holds the true value with 95 % confidence, given the data."), QString(),
+         tr("Fisher SE: the estimate's standard error from the fit's curvature (the Fisher information); "
+            "about a third of the 95 % interval's width."),
+         tr("At bound: the fit stopped at the edge of the search range; widen the bounds or suspect "
+            "the model.")});
     m_loss = new PlotStack;
     m_loss->addPlot(tr("best loss [-]"));
     m_loss->addPlot(tr("θ / θ final [-]"));
@@ -125,6 +134,11 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
     connect(&m_workbench, &Workbench::dataChanged, this, &CalibrationPanel::showResult);
     connect(&m_workbench, &Workbench::resultsRestored, this, &CalibrationPanel::showResult);
     m_loss->setEmptyText(tr("Run Calibrate to see the loss fall and the parameters settle"));
+    // While it runs only the loss comes in: the parameters' plot keeps a sensible axis and says when
+    // its points come (θ / θ final is 1 at the end).
+    m_loss->setEmptyRange(1, 0, 2);
+    m_loss->setEmptyXRange(0, 1);
+    m_loss->setPlotEmptyText(1, tr("The parameters' paths are drawn when the calibration ends"));
     m_fitPlot->setEmptyText(tr("Run Calibrate to see the fit before and after"));
     m_fitPlot->setHintVisible(false);
     // Calibrate is disabled and Stop enabled exactly while a calibration is queued or running.
@@ -205,8 +219,9 @@ void CalibrationPanel::showResult() {
             QString::number(e.standardErrorFisher, 'g', 3),
             e.atBound ? tr("yes") : tr("no")};
         setTableRow(m_estimates, static_cast<int>(i), cells);
+        m_estimates->item(static_cast<int>(i), 0)->setToolTip(parameterMeaning(info));
     }
-    m_estimates->resizeColumnsToContents();
+    fitTableWidth(m_estimates);
     m_fit->setText(tr("On %1: ").arg(m_workbench.dataSetLabel()) +
                    tr("%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. "
                       "Intervals: %10.")

@@ -52,6 +52,11 @@ QString columnDisplayName(const std::string& column) {
         {"error_T_out_C", QT_TRANSLATE_NOOP("DisplayNames", "model error, outlet temperature")},
         {"error_X_hdt_pct", QT_TRANSLATE_NOOP("DisplayNames", "model error, tube-outlet moisture")},
         {"error_T_hdt_C", QT_TRANSLATE_NOOP("DisplayNames", "model error, tube-outlet temperature")},
+        // The physics model's own states that discovery correlates the error with.
+        {"proxy_X_HDT", QT_TRANSLATE_NOOP("DisplayNames", "model's tube-outlet moisture")},
+        {"proxy_T_HDT", QT_TRANSLATE_NOOP("DisplayNames", "model's tube-outlet temperature")},
+        {"proxy_X_Conv", QT_TRANSLATE_NOOP("DisplayNames", "model's moisture on the conveyor")},
+        {"proxy_T_Conv", QT_TRANSLATE_NOOP("DisplayNames", "model's temperature on the conveyor")},
     };
     const auto it = names.find(column);
     return it == names.end() ? QString::fromStdString(column)
@@ -77,6 +82,102 @@ QString causeDisplayName(const std::string& cause) {
     const auto it = names.find(cause);
     return it == names.end() ? QString::fromStdString(cause)
                              : QCoreApplication::translate("DisplayNames", it->second);
+}
+
+QString columnMeaningText(std::string_view english) {
+    // data/Columns.cpp's meanings, listed for lupdate; translate() finds each by its English text.
+    [[maybe_unused]] static const char* const meanings[] = {
+        QT_TRANSLATE_NOOP("ColumnMeanings", "time since batch start"),
+        QT_TRANSLATE_NOOP("ColumnMeanings", "hot-air temperature setpoint"),
+        QT_TRANSLATE_NOOP("ColumnMeanings", "measured hot-air temperature at the tube inlet"),
+        QT_TRANSLATE_NOOP("ColumnMeanings", "air speed in the drying tube"),
+        QT_TRANSLATE_NOOP("ColumnMeanings", "wet feed rate entering the tube"),
+        QT_TRANSLATE_NOOP("ColumnMeanings", "inlet moisture"),
+        QT_TRANSLATE_NOOP("ColumnMeanings", "inlet material temperature"),
+        QT_TRANSLATE_NOOP("ColumnMeanings", "ambient air temperature"),
+        QT_TRANSLATE_NOOP("ColumnMeanings", "ambient relative humidity"),
+        QT_TRANSLATE_NOOP("ColumnMeanings", "moisture at the tube outlet"),
+        QT_TRANSLATE_NOOP("ColumnMeanings", "material temperature at the tube outlet"),
+        QT_TRANSLATE_NOOP("ColumnMeanings", "final outlet moisture after the winnower"),
+        QT_TRANSLATE_NOOP("ColumnMeanings", "final outlet temperature after the winnower"),
+    };
+    const std::string text(english);
+    return QCoreApplication::translate("ColumnMeanings", text.c_str());
+}
+
+QString timeFormatText(const std::string& format) {
+    static const std::map<std::string, const char*> names{
+        {"seconds", QT_TRANSLATE_NOOP("DisplayNames", "seconds since the start")},
+        {"iso8601", QT_TRANSLATE_NOOP("DisplayNames", "date and time, ISO 8601 (2024-05-31T08:00:00)")},
+        {"Y/m/d", QT_TRANSLATE_NOOP("DisplayNames", "year/month/day and time")},
+        {"d.m.Y", QT_TRANSLATE_NOOP("DisplayNames", "day.month.year and time")},
+        {"d/m/Y", QT_TRANSLATE_NOOP("DisplayNames", "day/month/year and time")},
+        {"m/d/Y", QT_TRANSLATE_NOOP("DisplayNames", "month/day/year and time")},
+        {"d-Mon-Y", QT_TRANSLATE_NOOP("DisplayNames", "day-month name-year and time")},
+        {"excel_days", QT_TRANSLATE_NOOP("DisplayNames", "spreadsheet day numbers")},
+        {"epoch_s", QT_TRANSLATE_NOOP("DisplayNames", "Unix time in seconds")},
+        {"epoch_ms", QT_TRANSLATE_NOOP("DisplayNames", "Unix time in milliseconds")},
+    };
+    const auto it = names.find(format);
+    return it == names.end() ? QString::fromStdString(format)
+                             : QCoreApplication::translate("DisplayNames", it->second);
+}
+
+QString runEndText(const std::string& reason) {
+    static const std::map<std::string, const char*> names{
+        {"line stop", QT_TRANSLATE_NOOP("DisplayNames", "line stop")},
+        {"gap", QT_TRANSLATE_NOOP("DisplayNames", "gap in the recording")},
+        {"batch id", QT_TRANSLATE_NOOP("DisplayNames", "next batch id")},
+        {"clock jump", QT_TRANSLATE_NOOP("DisplayNames", "clock jump")},
+        {"end of file", QT_TRANSLATE_NOOP("DisplayNames", "end of file")},
+    };
+    const auto it = names.find(reason);
+    return it == names.end() ? QString::fromStdString(reason)
+                             : QCoreApplication::translate("DisplayNames", it->second);
+}
+
+QString mappingReasonText(const std::string& reason) {
+    // The guess's reasons are English phrases of a fixed form (data/MappingGuess.cpp): read back
+    // their parts and word them again.
+    const QString r = QString::fromStdString(reason);
+    if (r == QLatin1String("the contract's own name")) {
+        return QCoreApplication::translate("DisplayNames", "DryTwin's own column name");
+    }
+    if (r.startsWith(QLatin1String("time stamps: "))) {
+        return QCoreApplication::translate("DisplayNames", "time stamps: %1")
+            .arg(timeFormatText(r.mid(13).toStdString()));
+    }
+    if (r.startsWith(QLatin1String("values in "))) {
+        const QStringList parts = r.mid(10).split(QStringLiteral(", "));
+        QStringList words;
+        words << QCoreApplication::translate("DisplayNames", "values in %1").arg(parts.front());
+        for (int i = 1; i < parts.size(); ++i) {
+            if (parts[i] == QLatin1String("name")) {
+                words << QCoreApplication::translate("DisplayNames", "words of the header");
+            } else if (parts[i].startsWith(QLatin1String("tag "))) {
+                words << QCoreApplication::translate("DisplayNames", "tag letters %1").arg(parts[i].mid(4));
+            } else {
+                words << parts[i];
+            }
+        }
+        return words.join(QCoreApplication::translate("DisplayNames", ", "));
+    }
+    return r;
+}
+
+QString progressDetailText(const std::string& stage, const std::string& detail) {
+    const QString d = QString::fromStdString(detail);
+    if (stage == "mpc") {
+        // control/ClosedLoop.cpp: "<controller key>, step <k>/<total>"
+        const int comma = d.indexOf(QLatin1String(", step "));
+        const int slash = d.lastIndexOf(QLatin1Char('/'));
+        if (comma > 0 && slash > comma) {
+            return QCoreApplication::translate("DisplayNames", "%1: second %2 of %3")
+                .arg(modelDisplayName(d.left(comma).toStdString()), d.mid(comma + 7, slash - comma - 7),
+                     d.mid(slash + 1));
+        }
+    }
+    return d;
 }
 
 QString groupDisplayName(const std::string& group) {
@@ -147,7 +248,9 @@ QString intervalMethodText(const std::string& method) {
     }
     if (method.find("sandwich") != std::string::npos) {
         return QCoreApplication::translate(
-            "DisplayNames", "robust to correlated rows (sandwich covariance with a Newey-West middle term)");
+            "DisplayNames",
+            "widened because neighbouring rows are alike and not independent evidence (sandwich covariance "
+            "with a Newey-West middle term)");
     }
     return QString::fromStdString(method);
 }

@@ -5,6 +5,7 @@
 
 #include <QString>
 #include <string>
+#include <string_view>
 
 namespace drytwin::widgets {
 
@@ -22,6 +23,19 @@ QString causeDisplayName(const std::string& cause);
 /// @brief A monitored column by its contract name ("T_hot_C": "hot-air temperature", "error_X_out_pct":
 /// "model error, outlet moisture"); the name when unknown.
 QString columnDisplayName(const std::string& column);
+/// @brief A data column's meaning (data/Columns.cpp's English text) in the user's language.
+QString columnMeaningText(std::string_view english);
+/// @brief A time-stamp format by its mapping-file name ("iso8601", "d.m.Y", "epoch_s") in words.
+QString timeFormatText(const std::string& format);
+/// @brief Why a production run ended, by the engine's word ("line stop", "gap", "end of file").
+QString runEndText(const std::string& reason);
+/// @brief Why the column-mapping guess proposed a header (the engine's English: "values in
+/// 100–230, name, tag TIC", "the contract's own name", "time stamps: iso8601"), in words.
+QString mappingReasonText(const std::string& reason);
+/// @brief A progress report's detail with the engine's keys worded: a what-if run's "pgrl_cc, step
+/// 600/1300" becomes "Physics + learnt correction (PGRL-CC): second 600 of 1300"; other details as
+/// they are.
+QString progressDetailText(const std::string& stage, const std::string& detail);
 /// @brief A look-alike group by its name ("outlet response time: meter lag or transport time").
 QString groupDisplayName(const std::string& group);
 /// @brief Discovery's verdict as a heading ("Cause found: heat-transfer fouling").

@@ -1,5 +1,7 @@
 #include "common/JobRunner.h"
 
+#include "common/DisplayNames.h"
+
 #include <QMetaObject>
 
 namespace drytwin::widgets {
@@ -98,7 +100,7 @@ void JobWorker::runNext() {
     Job* raw = job.get();
     const Progress progressCb = [this, id, raw](const ProgressInfo& info) {
         Q_EMIT progress(id, QString::fromStdString(info.stage), info.fraction,
-                        QString::fromStdString(info.detail));
+                        progressDetailText(info.stage, info.detail));
         if (raw->cancel) {
             return ProgressAction::Stop;
         }

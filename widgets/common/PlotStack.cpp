@@ -6,7 +6,6 @@
 #include <QDir>
 #include <QEvent>
 #include <QFile>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QImage>
@@ -79,7 +78,8 @@ double valueAt(const QwtPlot* plot, double x) {
 
 } // namespace
 
-PlotStack::PlotStack(QWidget* parent) : QWidget(parent), m_cursor{kNaN, kNaN}, m_timeCursor(kNaN) {
+PlotStack::PlotStack(QWidget* parent)
+    : QWidget(parent), m_cursor{kNaN, kNaN}, m_timeCursor(kNaN), m_emptyXRange{kNaN, kNaN} {
     m_layout = new QVBoxLayout(this);
     m_layout->setContentsMargins(0, 0, 0, 0);
     m_layout->setSpacing(2);
@@ -155,17 +155,23 @@ int PlotStack::addPlot(const QString& yTitle) {
     m_cursorMarkers[1].push_back(verticalLine(plot, QColor(120, 0, 160), Qt::DashLine));
     m_plots.push_back(plot);
     m_zoomers.push_back(zoomer);
+    m_emptyRanges.emplace_back(kNaN, kNaN);
+    m_plotEmptyTexts.emplace_back();
     m_layout->insertWidget(static_cast<int>(m_plots.size()) - 1, plot, 4);
     plot->setMinimumHeight(110);
     // The bottom plot also holds the time axis: a little more room keeps its canvas as tall.
     for (std::size_t i = 0; i < m_plots.size(); ++i) {
-        m_layout->setStretch(static_cast<int>(i), i + 1 == m_plots.size() ? 5 : 4);
+        // The top plot holds the legend, the bottom one the time axis: each a little more room.
+        m_layout->setStretch(static_cast<int>(i),
+                             i + 1 == m_plots.size() || (i == 0 && m_plots.size() > 2) ? 5 : 4);
     }
-    setXTitle(tr("time [s]"));
+    // A plot added after setXTitle() keeps that title (Training's monitor plot, below the rest).
+    setXTitle(m_xTitle.isEmpty() ? tr("time [s]") : m_xTitle);
     return static_cast<int>(m_plots.size()) - 1;
 }
 
 void PlotStack::setXTitle(const QString& title) {
+    m_xTitle = title;
     if (!m_plots.empty()) {
         QwtText t(title);
         QFont f = t.font();
@@ -194,7 +200,27 @@ void PlotStack::setEmptyText(const QString& text) {
 }
 
 bool PlotStack::showsEmptyText() const {
-    return !m_emptyLabels.empty() && m_emptyLabels.front()->plot() != nullptr;
+    return m_showingEmptyText;
+}
+
+void PlotStack::setEmptyRange(int index, double lo, double hi) {
+    m_emptyRanges.at(static_cast<std::size_t>(index)) = {lo, hi};
+    updateEmptyText();
+}
+
+void PlotStack::setEmptyXRange(double lo, double hi) {
+    m_emptyXRange = {lo, hi};
+    updateEmptyText();
+}
+
+void PlotStack::setPlotEmptyText(int index, const QString& text) {
+    m_plotEmptyTexts.at(static_cast<std::size_t>(index)) = text;
+    updateEmptyText();
+}
+
+QString PlotStack::noteShown(int index) const {
+    const auto i = static_cast<std::size_t>(index);
+    return i < m_emptyLabels.size() && m_emptyLabels[i]->plot() ? m_emptyLabels[i]->text().text() : QString();
 }
 
 void PlotStack::updateEmptyText() {
@@ -207,27 +233,44 @@ void PlotStack::updateEmptyText() {
         label->setZ(100);
         m_emptyLabels.push_back(label);
     }
+    m_showingEmptyText = !hasData && !m_emptyText.isEmpty();
+    const bool xRanged = std::isfinite(m_emptyXRange.first);
     for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        auto* plot = m_plots[i];
         auto* label = m_emptyLabels[i];
-        const bool show = !hasData && !m_emptyText.isEmpty();
-        if (show) {
-            QwtText text(m_emptyText);
+        const bool empty = curveCount(static_cast<int>(i)) == 0;
+        const bool ranged = std::isfinite(m_emptyRanges[i].first);
+        // An empty plot says why in words: the stack's text while nothing has data, else its own.
+        QString note;
+        if (m_showingEmptyText) {
+            note = m_emptyText;
+        } else if (empty) {
+            note = m_plotEmptyTexts[i].isEmpty() ? tr("No data yet") : m_plotEmptyTexts[i];
+        }
+        if (!note.isEmpty()) {
+            QwtText text(note);
             text.setColor(QColor(110, 110, 110));
             QFont font = text.font();
             font.setPointSizeF(font.pointSizeF() * 1.1);
             text.setFont(font);
             text.setRenderFlags(Qt::AlignCenter | Qt::TextWordWrap);
             label->setText(text);
-            if (label->plot() != m_plots[i]) {
-                label->attach(m_plots[i]);
+            if (label->plot() != plot) {
+                label->attach(plot);
             }
         } else if (label->plot()) {
             label->detach();
         }
-        // No made-up 0–1000 axes before there are data: the scales come with the first curve.
-        m_plots[i]->enableAxis(QwtPlot::yLeft, !show);
-        m_plots[i]->enableAxis(QwtPlot::xBottom, !show && i + 1 == m_plots.size());
-        m_plots[i]->replot();
+        // No made-up 0–1000 axes without data: the quantity's own range, or no axis at all.
+        if (empty && ranged) {
+            plot->setAxisScale(QwtPlot::yLeft, m_emptyRanges[i].first, m_emptyRanges[i].second);
+        }
+        plot->enableAxis(QwtPlot::yLeft, !empty || ranged);
+        if (!hasData && xRanged) {
+            plot->setAxisScale(QwtPlot::xBottom, m_emptyXRange.first, m_emptyXRange.second);
+        }
+        plot->enableAxis(QwtPlot::xBottom, (hasData || xRanged) && i + 1 == m_plots.size());
+        plot->replot();
     }
 }
 
@@ -286,7 +329,7 @@ QwtPlotCurve* PlotStack::addCurve(int index, const QString& name, const QVector<
         }
     }
     c->setItemAttribute(QwtPlotItem::Legend, !named && !name.isEmpty());
-    if (showsEmptyText() && !x.isEmpty()) {
+    if (!x.isEmpty() && !noteShown(index).isEmpty()) {
         updateEmptyText();
     }
     if (plot != m_plots.front() && !named && !name.isEmpty()) {
@@ -349,13 +392,37 @@ int PlotStack::curveCount(int index) const {
 }
 
 void PlotStack::rescale() {
-    updateEmptyText();
+    bool hasData = false;
+    for (int i = 0; i < plotCount(); ++i) {
+        hasData = hasData || curveCount(i) > 0;
+    }
     m_linking = true;
     for (std::size_t i = 0; i < m_plots.size(); ++i) {
         auto* plot = m_plots[i];
-        plot->setAxisAutoScale(QwtPlot::xBottom, true);
-        plot->setAxisAutoScale(QwtPlot::yLeft, true);
-        plot->updateAxes();
+        // Autoscaling an axis without data gives Qwt's 0–1000: updateEmptyText() sets those.
+        if (hasData) {
+            plot->setAxisAutoScale(QwtPlot::xBottom, true);
+        }
+        if (curveCount(static_cast<int>(i)) > 0) {
+            plot->setAxisAutoScale(QwtPlot::yLeft, true);
+        }
+    }
+    updateEmptyText();
+    QwtPlot* withData = nullptr;
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        m_plots[i]->updateAxes();
+        if (!withData && curveCount(static_cast<int>(i)) > 0) {
+            withData = m_plots[i];
+        }
+    }
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        auto* plot = m_plots[i];
+        // An empty plot shares the time axis of the plots with data (the bottom one labels it).
+        if (withData && curveCount(static_cast<int>(i)) == 0) {
+            const QwtScaleDiv div = withData->axisScaleDiv(QwtPlot::xBottom);
+            plot->setAxisScale(QwtPlot::xBottom, div.lowerBound(), div.upperBound());
+            plot->updateAxes();
+        }
         plot->replot();
         m_zoomers[i]->setZoomBase(true);
     }
@@ -590,13 +657,14 @@ QString PlotStack::csvText() const {
 }
 
 void PlotStack::exportDialog() {
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export plots"), QDir(lastFolder()).filePath(QStringLiteral("plots.png")),
-        tr("PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)"));
+    // The format is the one chosen in the dialog when the name has no extension ("foo" with "Data
+    // as CSV" chosen is foo.csv), the extension's otherwise.
+    const QString path =
+        askSaveFile(this, tr("Export plots"), QStringLiteral("plots.png"),
+                    tr("PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)"));
     if (path.isEmpty()) {
         return;
     }
-    rememberFolder(path);
     QString error;
     if (!exportTo(path, &error)) {
         m_readout->setText(tr("Export failed: %1").arg(error));

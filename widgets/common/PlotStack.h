@@ -70,6 +70,17 @@ public:
     void setEmptyText(const QString& text);
     /// @brief True while the empty text is shown (no curve with data in any plot).
     bool showsEmptyText() const;
+    /// @brief The y range plot @p index shows while it has no data: its quantity's usual range
+    /// (X_out 10–16 % wb), never Qwt's made-up 0–1000. Without one, an empty plot hides its y-axis
+    /// and says so in words (the empty text, or plotEmptyText()).
+    void setEmptyRange(int index, double lo, double hi);
+    /// @brief The x range shown while no plot has data (without one, the x-axis is hidden then).
+    void setEmptyXRange(double lo, double hi);
+    /// @brief What plot @p index says while it has no data but another plot has ("The parameters'
+    /// paths are drawn when the calibration ends"); default "No data yet".
+    void setPlotEmptyText(int index, const QString& text);
+    /// @brief The note plot @p index shows now (empty: none).
+    QString noteShown(int index) const;
     /// @brief Shows or hides the mouse hint under the plots (one hint per tab is enough).
     void setHintVisible(bool visible);
 
@@ -101,6 +112,11 @@ private:
     bool m_hintVisible = true;
     QString m_emptyText;
     std::vector<QwtPlotTextLabel*> m_emptyLabels;
+    std::vector<QString> m_plotEmptyTexts;
+    std::vector<std::pair<double, double>> m_emptyRanges; ///< NaN: none
+    std::pair<double, double> m_emptyXRange;              ///< NaN: none
+    bool m_showingEmptyText = false;
+    QString m_xTitle; ///< the time axis' title, kept when a plot is added below
 };
 
 } // namespace drytwin::widgets

@@ -6,26 +6,36 @@
 
 namespace drytwin::widgets {
 
-const std::vector<SeriesInfo>& batchSeries() {
+std::vector<SeriesInfo> batchSeries() {
     using namespace units;
-    static const std::vector<SeriesInfo> s{
-        {QCoreApplication::translate("drytwin::widgets::Series", "T_hot [°C]"),
+    // The titles are translated on every call, not once: a static list keeps the language the
+    // program started in, and the Chinese window would show English axis titles.
+    struct Entry {
+        const char* title;
+        double (*value)(const data::SiBatch&, std::size_t);
+    };
+    static const Entry entries[] = {
+        {QT_TRANSLATE_NOOP("drytwin::widgets::Series", "T_hot [°C]"),
          [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tHotK[k]); }},
-        {QCoreApplication::translate("drytwin::widgets::Series", "feed [kg/h]"),
+        {QT_TRANSLATE_NOOP("drytwin::widgets::Series", "feed [kg/h]"),
          [](const data::SiBatch& b, std::size_t k) { return kgPerSToKgPerHour(b.feedKgPerS[k]); }},
-        {QCoreApplication::translate("drytwin::widgets::Series", "X_in [% wb]"),
+        {QT_TRANSLATE_NOOP("drytwin::widgets::Series", "X_in [% wb]"),
          [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xInDb[k]); }},
-        {QCoreApplication::translate("drytwin::widgets::Series", "T_amb [°C]"),
+        {QT_TRANSLATE_NOOP("drytwin::widgets::Series", "T_amb [°C]"),
          [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tAmbK[k]); }},
-        {QCoreApplication::translate("drytwin::widgets::Series", "RH [%]"),
+        {QT_TRANSLATE_NOOP("drytwin::widgets::Series", "RH [%]"),
          [](const data::SiBatch& b, std::size_t k) { return fractionToPercent(b.rhAmb[k]); }},
-        {QCoreApplication::translate("drytwin::widgets::Series", "X_HDT [% wb]"),
+        {QT_TRANSLATE_NOOP("drytwin::widgets::Series", "X_HDT [% wb]"),
          [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xHdtDb[k]); }},
-        {QCoreApplication::translate("drytwin::widgets::Series", "X_out [% wb]"),
+        {QT_TRANSLATE_NOOP("drytwin::widgets::Series", "X_out [% wb]"),
          [](const data::SiBatch& b, std::size_t k) { return dryToWetPct(b.xOutDb[k]); }},
-        {QCoreApplication::translate("drytwin::widgets::Series", "T_out [°C]"),
+        {QT_TRANSLATE_NOOP("drytwin::widgets::Series", "T_out [°C]"),
          [](const data::SiBatch& b, std::size_t k) { return kelvinToCelsius(b.tOutK[k]); }},
     };
+    std::vector<SeriesInfo> s;
+    for (const auto& e : entries) {
+        s.push_back({QCoreApplication::translate("drytwin::widgets::Series", e.title), e.value});
+    }
     return s;
 }
 

@@ -19,8 +19,9 @@ struct SeriesInfo {
 /// @brief Positions of the outputs in batchSeries().
 inline constexpr std::size_t kSeriesXHdt = 5, kSeriesXOut = 6, kSeriesTOut = 7;
 
-/// @brief Every column of a batch file the Data panel plots, in the order of the file.
-const std::vector<SeriesInfo>& batchSeries();
+/// @brief Every column of a batch file the Data panel plots, in the order of the file, with titles
+/// in the present language.
+std::vector<SeriesInfo> batchSeries();
 
 /// @brief Seconds since the batch start of each row.
 QVector<double> timeOf(const data::SiBatch& b);

@@ -4,6 +4,9 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHeaderView>
+#include <QLabel>
+#include <QRegularExpression>
+#include <QScrollBar>
 #include <QSettings>
 #include <QTableWidget>
 #include <map>
@@ -38,10 +41,36 @@ QString askFolder(QWidget* parent, const QString& title) {
 
 QString askSaveFile(QWidget* parent, const QString& title, const QString& defaultName,
                     const QString& filter) {
-    const QString p =
-        QFileDialog::getSaveFileName(parent, title, QDir(lastFolder()).filePath(defaultName), filter);
+    QString selected;
+    QString p = QFileDialog::getSaveFileName(parent, title, QDir(lastFolder()).filePath(defaultName), filter,
+                                             &selected);
+    if (!p.isEmpty()) {
+        p = withFilterSuffix(p, selected.isEmpty() ? filter.section(QStringLiteral(";;"), 0, 0) : selected,
+                             filter);
+    }
     rememberFolder(p);
     return p;
+}
+
+namespace {
+/// The extensions a filter names: "PNG image (*.png *.PNG)" gives png.
+QStringList filterSuffixes(const QString& filter) {
+    QStringList out;
+    static const QRegularExpression pattern(QStringLiteral("\\*\\.([A-Za-z0-9_]+)"));
+    for (auto it = pattern.globalMatch(filter); it.hasNext();) {
+        out << it.next().captured(1).toLower();
+    }
+    return out;
+}
+} // namespace
+
+QString withFilterSuffix(const QString& path, const QString& selectedFilter, const QString& filters) {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (!suffix.isEmpty() && filterSuffixes(filters + QLatin1Char(' ') + selectedFilter).contains(suffix)) {
+        return path;
+    }
+    const QStringList chosen = filterSuffixes(selectedFilter);
+    return chosen.isEmpty() ? path : path + QLatin1Char('.') + chosen.front();
 }
 
 QString fromView(std::string_view text) {
@@ -56,7 +85,31 @@ QTableWidget* makeResultTable(const QStringList& headers) {
     table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table->verticalHeader()->hide();
     table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    fitTableWidth(table);
     return table;
+}
+
+void fitTableWidth(QTableWidget* table, int maxWidth) {
+    QHeaderView* header = table->horizontalHeader();
+    table->resizeColumnsToContents();
+    // ResizeToContents sections are sized at the next layout; size them now to measure them.
+    header->resizeSections(QHeaderView::ResizeToContents);
+    if (header->stretchLastSection()) {
+        return; // it takes what room there is
+    }
+    const int width = header->length() + 2 * table->frameWidth() +
+                      (table->verticalHeader()->isVisible() ? table->verticalHeader()->width() : 0) +
+                      table->verticalScrollBar()->sizeHint().width();
+    table->setMinimumWidth(std::min(maxWidth, width));
+}
+
+void setHeaderToolTips(QTableWidget* table, const QStringList& tips) {
+    Q_ASSERT(table);
+    for (int c = 0; c < tips.size() && c < table->columnCount(); ++c) {
+        if (auto* item = table->horizontalHeaderItem(c); item && !tips[c].isEmpty()) {
+            item->setToolTip(tips[c]);
+        }
+    }
 }
 
 void setTableRow(QTableWidget* table, int row, const QStringList& cells) {
@@ -78,6 +131,15 @@ QColor modelColour(const std::string& key) {
                                                        {"pi", QColor(31, 119, 180)}};
     const auto it = colours.find(key);
     return it == colours.end() ? QColor(23, 190, 207) : it->second;
+}
+
+QLabel* makeInlineError() {
+    auto* label = new QLabel;
+    label->setWordWrap(true);
+    label->setStyleSheet(QStringLiteral("color: #a40000;"));
+    label->setTextFormat(Qt::PlainText);
+    label->hide();
+    return label;
 }
 
 QColor seriesColour(int i) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+class QLabel;
 class QTableWidget;
 class QWidget;
 
@@ -13,8 +14,17 @@ namespace drytwin::widgets {
 
 /// @brief An engine string (UTF-8 string_view) as a QString.
 QString fromView(std::string_view text);
+/// @brief The widest a table asks to be to show all its columns (fitTableWidth()).
+inline constexpr int kMaxFittedTableWidth = 640;
 /// @brief An empty table of results: these column headers, no row header, read-only cells.
 QTableWidget* makeResultTable(const QStringList& headers);
+/// @brief Sizes @p table's columns to their headers and cells and asks for the width that shows them
+/// all (up to @p maxWidth; a wider table scrolls), so that no header is cut at the table's edge.
+/// Call after filling it.
+void fitTableWidth(QTableWidget* table, int maxWidth = kMaxFittedTableWidth);
+/// @brief Plain-words tooltips on the column headers of @p table, in column order (an empty one:
+/// none), for headers that name a statistic or a method ("Score z", "IAE [%·s]").
+void setHeaderToolTips(QTableWidget* table, const QStringList& tips);
 /// @brief Fills row @p row of @p table with read-only text cells (the row must exist).
 void setTableRow(QTableWidget* table, int row, const QStringList& cells);
 /// @brief The colour of a model or controller by its contract key (pbm, pgrl_cc, pi …), the same
@@ -29,7 +39,15 @@ void rememberFolder(const QString& path);
 /// cancelled. The dialogs are Qt's own, so Qt's translations word them (qtbase).
 QString askOpenFile(QWidget* parent, const QString& title, const QString& filter);
 QString askFolder(QWidget* parent, const QString& title);
+/// A name typed without an extension gets the one of the filter chosen in the dialog.
 QString askSaveFile(QWidget* parent, const QString& title, const QString& defaultName, const QString& filter);
+/// @brief @p path as a save dialog should return it: unchanged when its extension is one that
+/// @p filters (";;"-separated, "Data as CSV (*.csv)") offer; else with the first extension of
+/// @p selectedFilter appended ("foo" with "Data as CSV (*.csv)" chosen: "foo.csv").
+QString withFilterSuffix(const QString& path, const QString& selectedFilter, const QString& filters);
+/// @brief A label for a message beside a field that says what is wrong with it: dark red, wrapped,
+/// hidden until it has text (callers show it with setVisible()).
+QLabel* makeInlineError();
 /// @brief The i-th colour of the plots' categorical palette (batches, parameters).
 QColor seriesColour(int i);
 

@@ -5,6 +5,7 @@
 #include "common/WidgetHelpers.h"
 
 #include <QAbstractButton>
+#include <QCoreApplication>
 #include <QFileInfo>
 #include <QMessageBox>
 #include <QPointer>
@@ -172,6 +173,10 @@ std::optional<bool> Workbench::confirmInvalidation(QWidget* parent, const QStrin
     return std::nullopt;
 }
 
+QString staleReasonText(const QString& reason) {
+    return QCoreApplication::translate("StaleReason", reason.toUtf8().constData());
+}
+
 QString Workbench::modelStateText() const {
     QStringList lines;
     if (m_model.calibration) {
@@ -201,7 +206,8 @@ QString Workbench::modelStateText() const {
                                            : tr("%1: learnt on %2.").arg(name, p.learntOn));
             break;
         case PartState::Stale:
-            lines << tr("%1: stale, since %2; retrain it to use it.").arg(name, p.staleBecause);
+            lines << tr("%1: stale, since %2; retrain it to use it.")
+                         .arg(name, staleReasonText(p.staleBecause));
             break;
         }
     }
@@ -427,7 +433,7 @@ void Workbench::calibrate(const workflow::CalibrateOptions& options, bool retrai
                 Q_EMIT evaluated();
             }
             Q_EMIT calibrated();
-            fetchModel(tr("the physics model was calibrated after it was learnt"));
+            fetchModel(QString::fromLatin1(staleReason::kCalibrated));
             if (retrainAfter && r.droppedResidualModels) {
                 retrain(); // queued behind the model's refresh
             }

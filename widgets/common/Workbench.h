@@ -16,6 +16,20 @@ class QWidget;
 
 namespace drytwin::widgets {
 
+/// @brief Why learnt parts went stale: English keys, kept as they are in LearntPart::staleBecause and
+/// in projects, and worded in the user's language by staleReasonText() when shown (a project saved
+/// in one language reads back in the other without English left in the sentence).
+namespace staleReason {
+inline constexpr const char* kCalibrated =
+    QT_TRANSLATE_NOOP("StaleReason", "the physics model was calibrated after it was learnt");
+inline constexpr const char* kExtended =
+    QT_TRANSLATE_NOOP("StaleReason", "the model was extended by discovery");
+} // namespace staleReason
+
+/// @brief A stale reason (a staleReason key, or text kept from before they were keys) in the
+/// user's language.
+QString staleReasonText(const QString& reason);
+
 /// @brief How a learnt part of the model stands: not learnt, learnt on the present physics model,
 /// or learnt on a physics model that has since changed (calibrated, extended) and dropped with it.
 enum class PartState { Absent, Current, Stale };
@@ -26,7 +40,7 @@ struct LearntPart {
     control::ControllerKind kind = control::ControllerKind::PgrlCc;
     PartState state = PartState::Absent;
     QString learntOn;     ///< the data set's label, or "model file x.json"
-    QString staleBecause; ///< the action that made it stale, worded for the user
+    QString staleBecause; ///< the action that made it stale: a staleReason key (staleReasonText() words it)
 
     static LearntPart absent(control::ControllerKind kind) {
         LearntPart part;

@@ -1,5 +1,6 @@
 #include "data/ColumnMappingDialog.h"
 
+#include "common/DisplayNames.h"
 #include "common/ErrorText.h"
 #include "common/WidgetHelpers.h"
 #include "data/ColumnMapping.h"
@@ -44,7 +45,7 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* pare
                     .arg(sh.delimiter == '\t' ? tr("tab") : QStringLiteral("'%1'").arg(QChar(sh.delimiter)),
                          sh.decimalComma ? tr("decimal commas") : tr("decimal points"),
                          QString::fromStdString(sh.timeHeader),
-                         QString::fromStdString(data::timeFormatName(sh.timeFormat)),
+                         timeFormatText(data::timeFormatName(sh.timeFormat)),
                          sh.unitsRow ? tr(", a units row under the header") : QString());
     }
     m_note = new QLabel(
@@ -80,7 +81,7 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* pare
             const auto it = guess->mapping.contractToFile.find(std::string(s.name));
             if (it != guess->mapping.contractToFile.end()) {
                 combo->setCurrentIndex(combo->findData(QString::fromStdString(it->second)));
-                why = QString::fromStdString(guess->reasons.at(std::string(s.name)));
+                why = mappingReasonText(guess->reasons.at(std::string(s.name)));
             }
         }
         m_table->setCellWidget(row, 2, combo);
@@ -92,7 +93,7 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* pare
         auto* reason = new QTableWidgetItem(why);
         reason->setFlags(Qt::ItemIsEnabled);
         m_table->setItem(row, 4, reason);
-        auto* meaning = new QTableWidgetItem(fromView(s.meaning));
+        auto* meaning = new QTableWidgetItem(columnMeaningText(s.meaning));
         meaning->setFlags(Qt::ItemIsEnabled);
         m_table->setItem(row, 5, meaning);
         connect(combo, qOverload<int>(&QComboBox::currentIndexChanged), this, [this, combo] {
@@ -179,7 +180,7 @@ void ColumnMappingDialog::updatePreview() {
                                     : QString(),
                                 QString::number(b.rows()),
                                 cut ? QString::number(b.run->interpolatedCells) : QString(),
-                                cut ? QString::fromStdString(b.run->splitReason) : tr("one batch")};
+                                cut ? runEndText(b.run->splitReason) : tr("one batch")};
         for (int c = 0; c < cells.size(); ++c) {
             m_preview->setItem(r, c, new QTableWidgetItem(cells[c]));
         }

@@ -38,6 +38,8 @@ public:
     void updatePreview();
     /// @brief The preview's table (one row per run) and the line above it.
     QTableWidget* previewTable() const { return m_preview; }
+    /// @brief The mapping table: one row per DryTwin column (name, unit, header, unit, why, meaning).
+    QTableWidget* mappingTable() const { return m_table; }
     QLabel* previewNote() const { return m_previewNote; }
 
 private:

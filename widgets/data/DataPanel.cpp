@@ -1,5 +1,6 @@
 #include "data/DataPanel.h"
 
+#include "common/DisplayNames.h"
 #include "common/PlotStack.h"
 #include "common/Series.h"
 #include "common/Units.h"
@@ -40,7 +41,6 @@ DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m
                                tr("Mean X_out [% wb]"), tr("Mean T_hot [°C]"), tr("Source")});
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);
-    m_table->setMinimumWidth(320);
     m_plots = new PlotStack;
     for (const auto& s : batchSeries()) {
         m_plots->addPlot(s.title);
@@ -159,7 +159,7 @@ void DataPanel::fill() {
                       .arg(summary.batches[i].run->firstLine)
                       .arg(summary.batches[i].run->lastLine)
                       .arg(QString::fromStdString(summary.batches[i].run->startTimestamp),
-                           QString::fromStdString(summary.batches[i].run->splitReason))
+                           runEndText(summary.batches[i].run->splitReason))
                 : QFileInfo(QString::fromStdString(i < summary.batches.size() ? summary.batches[i].path : ""))
                       .fileName()};
         setTableRow(m_table, static_cast<int>(i), cells);
@@ -167,7 +167,7 @@ void DataPanel::fill() {
             item->setToolTip(cells.back()); // the source in full, when the column is scrolled away
         }
     }
-    m_table->resizeColumnsToContents();
+    fitTableWidth(m_table);
     m_table->blockSignals(false);
     const auto& c = summary.cleaning;
     // The chronological split of paper §IV.A over the rows in file order.

@@ -134,6 +134,9 @@ void DiagnosticsPanel::fill() {
                      .arg(m.moisture.ljungBoxP, 0, 'g', 3)
                      .arg(mean, 0, 'f', 4);
     }
+    // The test by name, with what its p says in plain words on the line beside it.
+    lines << tr("Ljung-Box p: the chance that errors this patterned come from pure noise; below 0.05 a "
+                "pattern is left that a model could still learn.");
     m_tests->setText(lines.join(QLatin1Char('\n')));
     redraw();
 }
@@ -187,8 +190,9 @@ void DiagnosticsPanel::redrawScatter() {
     const auto& sim = m_workbench.latest().simulate;
     const auto& si = m_workbench.siBatches();
     m_scatter->clearCurves();
+    const auto all = batchSeries(); // kept: chosen points into it
     const SeriesInfo* chosen = nullptr;
-    for (const auto& series : batchSeries()) {
+    for (const auto& series : all) {
         if (series.title == m_operating->currentText()) {
             chosen = &series;
         }
@@ -234,7 +238,7 @@ void DiagnosticsPanel::redrawCrossCorrelation() {
             continue;
         }
         for (const auto& c : o.correlates) {
-            auto* curve = m_ccf->addCurve(0, QString::fromStdString(c.column), {c.lagS, c.lagS}, {0.0, c.ccf},
+            auto* curve = m_ccf->addCurve(0, columnDisplayName(c.column), {c.lagS, c.lagS}, {0.0, c.ccf},
                                           seriesColour(i++), Qt::SolidLine, 4.0);
             curve->setStyle(QwtPlotCurve::Lines);
         }

@@ -36,7 +36,17 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
     m_verdict = new QLabel(tr("Run discovery on the loaded data with the current model."));
     m_verdict->setWordWrap(true);
     m_ranking = makeResultTable({tr("Cause"), tr("Score z"), tr("p (Holm)"), tr("Fitted"), tr("Loss")});
+    setHeaderToolTips(
+        m_ranking,
+        {QString(),
+         tr("Score z: how strongly the model's error points at this cause, in standard deviations of "
+            "chance; above about 3 is strong evidence."),
+         tr("p (Holm): the chance of evidence this strong if the cause were absent, corrected for "
+            "testing many causes at once (Holm's method); below 0.05 the cause is taken seriously."),
+         tr("Fitted: whether the cause's parameter was fitted to the data (only the leading causes are)."),
+         tr("Loss: the fit's error with the cause in the model; lower is a better fit.")});
     m_gains = makeResultTable({tr("Held-out"), tr("Before"), tr("After"), tr("Unit")});
+    setHeaderToolTips(m_gains, {tr("The held-out part: batches the fit did not see.")});
     m_evidence = new QTextBrowser;
     m_plots = new PlotStack;
     m_plots->addPlot(tr("X_out residual [% wb]"));
@@ -125,7 +135,7 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
             if (!retrain) {
                 return;
             }
-            m_workbench.setModel(d->extendedModel, tr("the model was extended by discovery"), *retrain);
+            m_workbench.setModel(d->extendedModel, QString::fromLatin1(staleReason::kExtended), *retrain);
             m_extend->setEnabled(false);
             m_verdict->setText(m_verdict->text() + tr(" The model is extended."));
         }
@@ -241,7 +251,7 @@ void DiscoverPanel::showDetection() {
                 {columnDisplayName(c.column), QStringLiteral("%1 %").arg(100 * share, 0, 'f', 0), name});
         }
     }
-    m_contributions->resizeColumnsToContents();
+    fitTableWidth(m_contributions);
     m_monitorPlots->rescale();
     m_views->setCurrentIndex(det.changed ? 1 : 0);
 }
@@ -394,7 +404,7 @@ QString signatureText(const discovery::Signature& u) {
     }
     if (u.type == "lagged_input") {
         return DiscoverPanel::tr("the error follows %1 %2 s later (|ccf| %3)")
-            .arg(QString::fromStdString(u.column))
+            .arg(columnDisplayName(u.column))
             .arg(u.lagS, 0, 'f', 0)
             .arg(u.strength, 0, 'f', 2);
     }
@@ -520,7 +530,8 @@ QString DiscoverPanel::evidenceText(const discovery::Finding& f) {
     return tr("%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, "
               "%10]) "
               "and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out "
-              "from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.")
+              "from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); "
+              "%16. Check on the plots: %17.")
                .arg(moisture ? tr("Outlet-moisture") : tr("Outlet-temperature"))
                .arg(f.biasBefore, 0, 'g', 3)
                .arg(unit)
@@ -587,7 +598,7 @@ void DiscoverPanel::show() {
                 : QStringLiteral("–")};
         setTableRow(m_ranking, static_cast<int>(i), cells);
     }
-    m_ranking->resizeColumnsToContents();
+    fitTableWidth(m_ranking);
     QString html;
     for (const auto& f : d.findings) {
         html += QStringLiteral("<h4>%1 = %2 [%3, %4]</h4><p>%5</p>")
@@ -603,7 +614,7 @@ void DiscoverPanel::show() {
         QStringList items;
         for (const auto& c : o.correlates) {
             items << tr("%1 at %2 s (ccf %3%4)")
-                         .arg(QString::fromStdString(c.column))
+                         .arg(columnDisplayName(c.column))
                          .arg(c.lagS, 0, 'f', 0)
                          .arg(c.ccf, 0, 'f', 2)
                          .arg(c.significant ? tr(", significant") : QString());
@@ -712,7 +723,7 @@ void DiscoverPanel::show() {
             }
         }
     }
-    m_gains->resizeColumnsToContents();
+    fitTableWidth(m_gains);
     m_plots->clearCurves();
     const auto curve = [&](const std::vector<discovery::OutputResidual>& rs, const QColor& colour,
                            const QString& name) {

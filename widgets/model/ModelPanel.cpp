@@ -178,7 +178,7 @@ void ModelPanel::fillTable() {
             m_table->setItem(static_cast<int>(i), c, item);
         }
     }
-    m_table->resizeColumnsToContents();
+    fitTableWidth(m_table); // its long texts scroll; the first columns show
     const auto& sw = m_workbench.model().switches;
     const bool values[4] = {sw.clampWaterActivity, sw.latentHeatCorrection, sw.moistureDependentCp,
                             sw.consistentEnergyBalance};

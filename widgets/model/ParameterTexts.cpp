@@ -1,5 +1,7 @@
 #include "model/ParameterTexts.h"
 
+#include "common/DisplayNames.h"
+
 #include <QCoreApplication>
 #include <string>
 
@@ -119,6 +121,13 @@ QString parameterMeaning(const properties::ParameterInfo& info) {
 }
 
 QString parameterSource(const properties::ParameterInfo& info) {
+    // "extension heat_transfer_fouling": the cause by the name every tab gives it.
+    const std::string_view source = info.source;
+    constexpr std::string_view prefix = "extension ";
+    if (source.substr(0, prefix.size()) == prefix) {
+        return QCoreApplication::translate("ParameterTexts", "added for the cause: %1")
+            .arg(causeDisplayName(std::string(source.substr(prefix.size()))));
+    }
     return translated(info.source);
 }
 

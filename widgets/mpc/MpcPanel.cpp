@@ -6,6 +6,7 @@
 #include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 #include "control/BundledScenarios.h"
+#include "control/Scenario.h"
 #include "mpc/ScenarioForm.h"
 
 #include <QCheckBox>
@@ -57,14 +58,27 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
         controllers->addWidget(m_controllers[i], i / 3, i % 3);
     }
     m_state = new ModelStateBar(m_workbench);
-    auto* run = new QPushButton(tr("Run scenario"));
-    m_workbench.bindButton(run, Action::Mpc);
+    m_run = new QPushButton(tr("Run scenario"));
+    m_blocked = makeInlineError();
     m_prediction = new QComboBox;
     m_prediction->setToolTip(tr("Show the horizon the controllers predicted at this decision"));
     m_note = new QLabel(tr("Runs the scenario against the virtual plant once per controller."));
     m_note->setWordWrap(true);
     m_table = makeResultTable({tr("Controller"), tr("IAE [%·s]"), tr("Effort [K²]"), tr("Violations [%]"),
                                tr("Solve median [ms]"), tr("Fallbacks"), tr("Model gain [%/K]")});
+    setHeaderToolTips(
+        m_table,
+        {QString(),
+         tr("IAE: the outlet moisture's distance from its setpoint, summed over every second of the run "
+            "(% wb × s); smaller is tighter control."),
+         tr("Effort: the squared moves of the hot-air setpoint, summed (K²); smaller is gentler on the "
+            "burner."),
+         tr("Share of the run with the product outside its specification band."),
+         tr("Median time the controller took to decide, per decision."),
+         tr("Decisions where the optimiser failed and the controller kept its last move, of all "
+            "decisions."),
+         tr("How much X_out changes per kelvin of hot air in the controller's model (median); compare "
+            "with the plant's own gain below.")});
     m_plots = new PlotStack;
     m_plots->addPlot(tr("X_out, true [% wb]"));
     m_plots->addPlot(tr("T_hot setpoint [°C]"));
@@ -89,10 +103,11 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     controllerBox->setLayout(controllers);
     ll->addWidget(controllerBox);
     auto* runRow = new QHBoxLayout;
-    runRow->addWidget(run);
+    runRow->addWidget(m_run);
     runRow->addWidget(new QLabel(tr("prediction at")));
     runRow->addWidget(m_prediction, 1);
     ll->addLayout(runRow);
+    ll->addWidget(m_blocked);
     ll->addWidget(m_note);
     ll->addWidget(m_table, 1);
     auto* split = new QSplitter;
@@ -115,13 +130,16 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
         m_editor->blockSignals(true);
         m_editor->setPlainText(m_form->json());
         m_editor->blockSignals(false);
+        updateRunState();
     });
-    // Text typed in the JSON tab shows in the form when the form is looked at next.
+    // Text typed in the JSON tab goes into the form at once: its checks and Run's state follow
+    // the text, whichever tab is in front.
     connect(m_editor, &QPlainTextEdit::textChanged, this, [this] {
-        if (m_scenarioTabs->currentIndex() == 0) {
-            m_form->setJson(m_editor->toPlainText());
-        }
+        m_form->setJson(m_editor->toPlainText());
+        updateRunState();
     });
+    connect(m_form, &ScenarioForm::validityChanged, this, &MpcPanel::updateRunState);
+    connect(&m_workbench, &Workbench::runningChanged, this, &MpcPanel::updateRunState);
     connect(m_scenarioTabs, &QTabWidget::currentChanged, this, [this](int index) {
         if (index == 0) {
             m_form->setJson(m_editor->toPlainText());
@@ -135,13 +153,70 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
             m_editor->setPlainText(QString::fromUtf8(f.readAll()));
         }
     });
-    connect(run, &QPushButton::clicked, this, &MpcPanel::run);
+    connect(m_run, &QPushButton::clicked, this, &MpcPanel::run);
     connect(&m_workbench, &Workbench::modelStateChanged, this, &MpcPanel::offerControllers);
     offerControllers();
     connect(m_prediction, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &MpcPanel::show);
     m_plots->setEmptyText(tr("Run a scenario to see each controller's outlet moisture and hot-air setpoint"));
     connect(&m_workbench, &Workbench::resultsRestored, this, &MpcPanel::showRun);
-    connect(&m_workbench, &Workbench::mpcFinished, this, &MpcPanel::showRun);
+    connect(&m_workbench, &Workbench::mpcFinished, this, [this] {
+        m_awaitingRun = false;
+        m_note->setStyleSheet(QString());
+        showRun();
+    });
+    // A run that fails or is cancelled says so under Run, where "Running…" stood; the results
+    // shown stay those of the last complete run.
+    connect(&m_workbench, &Workbench::failed, this,
+            [this](const QString&, const QString& message, bool cancelled) {
+                if (!m_awaitingRun || m_workbench.isRunning(Action::Mpc)) {
+                    return; // another action's failure, while this run waits behind it
+                }
+                m_awaitingRun = false;
+                QString text = message;
+                // The editor's text runs from a temporary file, a name that means nothing to the user.
+                text.replace(m_tempScenario, tr("the scenario"));
+                text.replace(QDir::toNativeSeparators(m_tempScenario), tr("the scenario"));
+                const bool shown = m_workbench.latest().mpc.has_value();
+                if (cancelled) {
+                    m_note->setStyleSheet(QString());
+                    m_note->setText(
+                        shown ? tr("The run was cancelled; the results below are from the last complete run.")
+                              : tr("The run was cancelled."));
+                } else {
+                    m_note->setStyleSheet(QStringLiteral("color: #a40000;"));
+                    m_note->setText(
+                        shown ? tr("%1\nThe results below are from the last complete run.").arg(text) : text);
+                }
+            });
+    updateRunState();
+}
+
+QString MpcPanel::scenarioProblem() const {
+    if (!m_form->isValid()) {
+        const QStringList problems = m_form->problems();
+        return problems.size() == 1
+                   ? problems.first()
+                   : tr("%1 (problems in the form: %2)").arg(problems.first()).arg(problems.size());
+    }
+    // Checked as the engine will read it: keys the form has no field for, JSON typed by hand.
+    const auto parsed = control::parseScenario(m_editor->toPlainText().toStdString(), "json");
+    if (parsed) {
+        return {};
+    }
+    const std::string& place = parsed.error().place;
+    const auto colon = place.rfind(':');
+    const QString line =
+        colon == std::string::npos ? QString() : QString::fromStdString(place.substr(colon + 1));
+    return line.isEmpty() ? tr("The scenario's JSON: %1").arg(QString::fromStdString(parsed.error().reason))
+                          : tr("The scenario's JSON, line %1: %2")
+                                .arg(line, QString::fromStdString(parsed.error().reason));
+}
+
+void MpcPanel::updateRunState() {
+    const QString problem = scenarioProblem();
+    m_blocked->setText(problem.isEmpty() ? QString() : tr("Run is off until this is fixed: %1").arg(problem));
+    m_blocked->setVisible(!problem.isEmpty());
+    m_run->setEnabled(problem.isEmpty() && !m_workbench.isRunning(Action::Mpc));
 }
 
 void MpcPanel::showRun() {
@@ -163,12 +238,18 @@ void MpcPanel::showRun() {
 }
 
 void MpcPanel::run() {
-    // The editor's text goes through the engine's own scenario parser (errors name the line).
+    if (const QString problem = scenarioProblem(); !problem.isEmpty()) {
+        m_note->setStyleSheet(QStringLiteral("color: #a40000;"));
+        m_note->setText(tr("Not run: %1").arg(problem));
+        return;
+    }
+    // The editor's text goes through the engine's own scenario parser again when the run starts.
     const QString dir = QStandardPaths::writableLocation(QStandardPaths::TempLocation);
     m_tempScenario = QDir(dir).filePath(
         QStringLiteral("drytwin-scenario-%1.json").arg(QCoreApplication::applicationPid()));
     QFile f(m_tempScenario);
     if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+        m_note->setStyleSheet(QStringLiteral("color: #a40000;"));
         m_note->setText(tr("Cannot write %1").arg(m_tempScenario));
         return;
     }
@@ -186,10 +267,13 @@ void MpcPanel::run() {
         }
     }
     if (o.closedLoop.controllers.empty()) {
+        m_note->setStyleSheet(QStringLiteral("color: #a40000;"));
         m_note->setText(tr("Choose at least one controller."));
         return;
     }
+    m_note->setStyleSheet(QString());
     m_note->setText(tr("Running…"));
+    m_awaitingRun = true;
     m_workbench.runMpc(o);
 }
 
@@ -203,7 +287,7 @@ void MpcPanel::offerControllers() {
         QString tip = tr("Contract key: %1").arg(QString::fromLatin1(control::controllerName(kind)));
         if (!exists && part.state == PartState::Stale) {
             label = tr("%1 (stale)").arg(label);
-            tip = tr("Learnt before %1: retrain it to run it.").arg(part.staleBecause);
+            tip = tr("Learnt before %1: retrain it to run it.").arg(staleReasonText(part.staleBecause));
         } else if (!exists) {
             label = tr("%1 (not learnt)").arg(label);
             tip = tr("Learn the correction models on the Residual model tab to run it.");
@@ -275,7 +359,7 @@ void MpcPanel::show() {
             }
         }
     }
-    m_table->resizeColumnsToContents();
+    fitTableWidth(m_table);
     m_plots->rescale();
     m_plots->setTimeCursor(at > 0 ? at : NAN);
     m_note->setText(

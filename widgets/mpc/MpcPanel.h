@@ -6,6 +6,7 @@ class QCheckBox;
 class QComboBox;
 class QLabel;
 class QPlainTextEdit;
+class QPushButton;
 class QSpinBox;
 class QTableWidget;
 class QTabWidget;
@@ -31,7 +32,16 @@ public:
     ScenarioForm* form() const { return m_form; }
     QTabWidget* scenarioTabs() const { return m_scenarioTabs; }
     QComboBox* scenarios() const { return m_scenario; }
+    /// @brief Runs the scenario; refused (the reason shown beside Run) while it has a problem.
     void run();
+    QPushButton* runButton() const { return m_run; }
+    /// @brief What stops the scenario from running, worded for the user (the form's first problem,
+    /// else the scenario parser's on the JSON text); empty when it can run.
+    QString scenarioProblem() const;
+    /// @brief The line under Run: what a run is doing, how it ended, or why it failed.
+    QLabel* note() const { return m_note; }
+    /// @brief The reason Run is off, beside it (hidden while the scenario can run).
+    QLabel* runBlockedMessage() const { return m_blocked; }
     /// @brief The controller tick boxes, one per controller, enabled where its model exists.
     QCheckBox* controllerBox(int i) const { return m_controllers[i]; }
     ModelStateBar* modelState() const { return m_state; }
@@ -41,6 +51,8 @@ private:
     void offerControllers();
     /// The latest run: the decisions to show predictions at, then the plots and table.
     void showRun();
+    /// Enables Run when no run is queued and the scenario has no problem; says why not.
+    void updateRunState();
 
     Workbench& m_workbench;
     QComboBox* m_scenario = nullptr;
@@ -54,7 +66,10 @@ private:
     QTableWidget* m_table = nullptr;
     PlotStack* m_plots = nullptr;
     QLabel* m_note = nullptr;
+    QPushButton* m_run = nullptr;
+    QLabel* m_blocked = nullptr;
     QString m_tempScenario;
+    bool m_awaitingRun = false; ///< run() started a job whose ending the note has not shown yet
 };
 
 } // namespace drytwin::widgets

@@ -15,25 +15,48 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <cmath>
 #include <functional>
+#include <optional>
+#include <set>
 #include <utility>
 
 namespace drytwin::widgets {
 
 namespace {
 
-/// The inputs a scenario moves, by their scenario-file keys, with words and units.
+/// The inputs a scenario moves, by their scenario-file keys, with words, units and the range the
+/// scenario parser accepts (control/Scenario.cpp; a value outside it is refused before a run).
 struct InputKey {
     const char* key;
     const char* words;
+    double lo;
+    double hi;
 };
-const InputKey kInputs[] = {{"feed_kg_h", QT_TRANSLATE_NOOP("ScenarioForm", "feed [kg/h]")},
-                            {"x_in_pct", QT_TRANSLATE_NOOP("ScenarioForm", "inlet moisture [% wb]")},
-                            {"t_amb_c", QT_TRANSLATE_NOOP("ScenarioForm", "ambient temperature [°C]")},
-                            {"rh_pct", QT_TRANSLATE_NOOP("ScenarioForm", "ambient humidity [% RH]")}};
+const InputKey kInputs[] = {{"feed_kg_h", QT_TRANSLATE_NOOP("ScenarioForm", "feed [kg/h]"), 3000, 9000},
+                            {"x_in_pct", QT_TRANSLATE_NOOP("ScenarioForm", "inlet moisture [% wb]"), 15, 30},
+                            {"t_amb_c", QT_TRANSLATE_NOOP("ScenarioForm", "ambient temperature [°C]"), 0, 45},
+                            {"rh_pct", QT_TRANSLATE_NOOP("ScenarioForm", "ambient humidity [% RH]"), 5, 95}};
+/// The setpoint range of the scenario parser [% wb].
+constexpr double kSetpointLo = 8;
+constexpr double kSetpointHi = 20;
+
+/// A cell's number; nullopt when the cell holds no number (an empty cell is @p empty).
+std::optional<double> cellValue(const QTableWidget* t, int row, int column,
+                                std::optional<double> empty = std::nullopt) {
+    const auto* item = t->item(row, column);
+    const QString text = item ? item->text().trimmed() : QString();
+    if (text.isEmpty()) {
+        return empty;
+    }
+    bool ok = false;
+    const double v = text.toDouble(&ok);
+    return ok && std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
 
 double cellNumber(const QTableWidget* t, int row, int column, double fallback = 0) {
     const auto* item = t->item(row, column);
@@ -65,7 +88,7 @@ ScenarioForm::ScenarioForm(QWidget* parent) : QWidget(parent) {
     m_length->setRange(10, 100000);
     m_length->setSuffix(tr(" s"));
     m_setpoint = new QDoubleSpinBox;
-    m_setpoint->setRange(5, 30);
+    m_setpoint->setRange(kSetpointLo, kSetpointHi);
     m_setpoint->setDecimals(2);
     m_setpoint->setSuffix(tr(" % wb"));
     m_band = new QDoubleSpinBox;
@@ -78,12 +101,18 @@ ScenarioForm::ScenarioForm(QWidget* parent) : QWidget(parent) {
     form->addRow(tr("Instruments"), m_sensors);
     form->addRow(tr("Random seed"), m_seed);
     form->addRow(tr("Scored length"), m_length);
+    m_lengthError = makeInlineError();
+    form->addRow(QString(), m_lengthError);
     form->addRow(tr("Initial X_out setpoint"), m_setpoint);
     form->addRow(tr("Specification band ±"), m_band);
     m_steps = makeTable({tr("at [s]"), tr("setpoint to [% wb]")});
     m_inputs = makeTable({tr("input"), tr("at [s]"), tr("over [s]"), tr("to")});
     m_mechanisms = makeTable({tr("hidden cause"), tr("strength"), tr("from [s]")});
-    const auto section = [this](const QString& title, QTableWidget* table, std::function<void()> add) {
+    m_stepsError = makeInlineError();
+    m_inputsError = makeInlineError();
+    m_mechanismsError = makeInlineError();
+    const auto section = [this](const QString& title, QTableWidget* table, QLabel* error,
+                                std::function<void()> add) {
         auto* box = new QWidget;
         auto* l = new QVBoxLayout(box);
         l->setContentsMargins(0, 0, 0, 0);
@@ -95,6 +124,7 @@ ScenarioForm::ScenarioForm(QWidget* parent) : QWidget(parent) {
         row->addWidget(minus);
         l->addLayout(row);
         l->addWidget(table);
+        l->addWidget(error);
         connect(plus, &QPushButton::clicked, this, [this, add] {
             add();
             emitEdited();
@@ -108,10 +138,15 @@ ScenarioForm::ScenarioForm(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_note);
     layout->addLayout(form);
-    layout->addWidget(section(tr("Setpoint steps"), m_steps, [this] { addSetpointStep(100, 13.0); }));
-    layout->addWidget(section(tr("Input changes (a ramp when \"over\" > 0)"), m_inputs,
-                              [this] { addInputChange(QStringLiteral("feed_kg_h"), 100, 0, 6400); }));
+    // A new row starts inside the scored length, so that Add never makes the form invalid.
+    const auto newRowAt = [this] { return std::min(100, m_length->value() / 2); };
+    layout->addWidget(section(tr("Setpoint steps"), m_steps, m_stepsError,
+                              [this, newRowAt] { addSetpointStep(newRowAt(), 13.0); }));
+    layout->addWidget(
+        section(tr("Input changes (a ramp when \"over\" > 0)"), m_inputs, m_inputsError,
+                [this, newRowAt] { addInputChange(QStringLiteral("feed_kg_h"), newRowAt(), 0, 6400); }));
     layout->addWidget(section(tr("Hidden causes in the plant (no controller knows them)"), m_mechanisms,
+                              m_mechanismsError,
                               [this] { addMechanism(QStringLiteral("heat_transfer_fouling"), 0.2, 0); }));
     m_note->setText(tr("The scenario as a form; the JSON tab shows the same scenario as text."));
     connect(m_name, &QLineEdit::textEdited, this, &ScenarioForm::emitEdited);
@@ -140,7 +175,166 @@ QTableWidget* ScenarioForm::makeTable(const QStringList& headers) {
 
 void ScenarioForm::emitEdited() {
     if (!m_filling) {
+        revalidate();
         Q_EMIT edited();
+    }
+}
+
+void ScenarioForm::revalidate() {
+    const bool wasValid = m_problems.isEmpty();
+    const int length = m_length->value();
+    QStringList steps, inputs, mechanisms;
+    double latest = 0; // the latest time in the tables, when after the scored length
+    // Marking a cell changes its item: no itemChanged() back into the form while we do.
+    const QSignalBlocker b1(m_steps), b2(m_inputs), b3(m_mechanisms);
+    for (auto* t : {m_steps, m_inputs, m_mechanisms}) {
+        for (int r = 0; r < t->rowCount(); ++r) {
+            for (int c = 0; c < t->columnCount(); ++c) {
+                if (auto* item = t->item(r, c)) {
+                    item->setBackground(QBrush());
+                    item->setToolTip(QString());
+                }
+            }
+        }
+    }
+    const auto mark = [](QTableWidget* t, int row, int column, QStringList& list, const QString& why) {
+        if (auto* item = t->item(row, column)) {
+            item->setBackground(QColor(255, 214, 214));
+            item->setToolTip(why);
+        }
+        list << why;
+    };
+    const auto notANumber = [this](int row) { return tr("Row %1: enter a number.").arg(row); };
+    std::optional<double> previous;
+    for (int r = 0; r < m_steps->rowCount(); ++r) {
+        const auto at = cellValue(m_steps, r, 0);
+        const auto to = cellValue(m_steps, r, 1);
+        if (!at || *at < 0) {
+            mark(m_steps, r, 0, steps,
+                 at ? tr("Step %1: the time cannot be negative.").arg(r + 1) : notANumber(r + 1));
+        } else if (*at > length) {
+            latest = std::max(latest, *at);
+            mark(m_steps, r, 0, steps,
+                 tr("Step %1 at %2 s comes after the scored length (%3 s): move it earlier or lengthen the "
+                    "run.")
+                     .arg(r + 1)
+                     .arg(*at)
+                     .arg(length));
+        } else if (previous && *at < *previous) {
+            mark(m_steps, r, 0, steps,
+                 tr("Step %1 at %2 s comes before the step above it (%3 s): list the steps in time order.")
+                     .arg(r + 1)
+                     .arg(*at)
+                     .arg(*previous));
+        }
+        if (at) {
+            previous = *at;
+        }
+        if (!to) {
+            mark(m_steps, r, 1, steps, notANumber(r + 1));
+        } else if (*to < kSetpointLo || *to > kSetpointHi) {
+            mark(m_steps, r, 1, steps,
+                 tr("Step %1: a setpoint of %2 % wb lies outside %3–%4 % wb.")
+                     .arg(r + 1)
+                     .arg(*to)
+                     .arg(kSetpointLo)
+                     .arg(kSetpointHi));
+        }
+    }
+    for (int r = 0; r < m_inputs->rowCount(); ++r) {
+        const auto at = cellValue(m_inputs, r, 1);
+        const auto over = cellValue(m_inputs, r, 2, 0.0);
+        const auto to = cellValue(m_inputs, r, 3);
+        if (!at || *at < 0) {
+            mark(m_inputs, r, 1, inputs,
+                 at ? tr("Change %1: the time cannot be negative.").arg(r + 1) : notANumber(r + 1));
+        } else if (*at > length) {
+            latest = std::max(latest, *at);
+            mark(m_inputs, r, 1, inputs,
+                 tr("Change %1 at %2 s comes after the scored length (%3 s): move it earlier or lengthen the "
+                    "run.")
+                     .arg(r + 1)
+                     .arg(*at)
+                     .arg(length));
+        }
+        if (!over || *over < 0 || *over > length) {
+            mark(m_inputs, r, 2, inputs,
+                 over ? tr("Change %1: a ramp lasts 0 to %2 s (the scored length).").arg(r + 1).arg(length)
+                      : notANumber(r + 1));
+        }
+        const QString key = comboKey(m_inputs, r, 0);
+        for (const auto& k : kInputs) {
+            if (key != QLatin1String(k.key)) {
+                continue;
+            }
+            if (!to) {
+                mark(m_inputs, r, 3, inputs, notANumber(r + 1));
+            } else if (*to < k.lo || *to > k.hi) {
+                mark(m_inputs, r, 3, inputs,
+                     tr("Change %1: %2 lies outside %3–%4 for %5.")
+                         .arg(r + 1)
+                         .arg(*to)
+                         .arg(k.lo)
+                         .arg(k.hi)
+                         .arg(QCoreApplication::translate("ScenarioForm", k.words)));
+            }
+        }
+    }
+    std::set<QString> seen;
+    for (int r = 0; r < m_mechanisms->rowCount(); ++r) {
+        const QString key = comboKey(m_mechanisms, r, 0);
+        const auto strength = cellValue(m_mechanisms, r, 1);
+        const auto at = cellValue(m_mechanisms, r, 2, 0.0);
+        const QString name = causeDisplayName(key.toStdString());
+        if (!seen.insert(key).second) {
+            mechanisms << tr("Hidden cause %1 (%2) is listed twice.").arg(r + 1).arg(name);
+        }
+        for (const auto& mi : plant::mechanisms()) {
+            if (key != fromView(mi.name)) {
+                continue;
+            }
+            if (!strength) {
+                mark(m_mechanisms, r, 1, mechanisms, notANumber(r + 1));
+            } else if (*strength < 0 || *strength > mi.maxStrength) {
+                mark(m_mechanisms, r, 1, mechanisms,
+                     tr("Hidden cause %1 (%2): a strength of %3 lies outside 0–%4 %5.")
+                         .arg(r + 1)
+                         .arg(name)
+                         .arg(*strength)
+                         .arg(mi.maxStrength)
+                         .arg(fromView(mi.unit)));
+            }
+        }
+        if (!at || *at < 0) {
+            mark(m_mechanisms, r, 2, mechanisms,
+                 at ? tr("Hidden cause %1: the time cannot be negative.").arg(r + 1) : notANumber(r + 1));
+        } else if (*at > length) {
+            latest = std::max(latest, *at);
+            mark(m_mechanisms, r, 2, mechanisms,
+                 tr("Hidden cause %1 from %2 s starts after the scored length (%3 s): move it earlier or "
+                    "lengthen the run.")
+                     .arg(r + 1)
+                     .arg(*at)
+                     .arg(length));
+        }
+    }
+    const QString lengthText =
+        latest > length
+            ? tr("Shorter than the scenario below: something happens at %1 s. Lengthen the run to at least "
+                 "%1 s, or move that entry.")
+                  .arg(latest)
+            : QString();
+    const auto show = [](QLabel* label, const QStringList& lines) {
+        label->setText(lines.join(QLatin1Char('\n')));
+        label->setVisible(!lines.isEmpty());
+    };
+    show(m_lengthError, lengthText.isEmpty() ? QStringList() : QStringList{lengthText});
+    show(m_stepsError, steps);
+    show(m_inputsError, inputs);
+    show(m_mechanismsError, mechanisms);
+    m_problems = steps + inputs + mechanisms;
+    if (wasValid != m_problems.isEmpty()) {
+        Q_EMIT validityChanged(m_problems.isEmpty());
     }
 }
 
@@ -235,6 +429,7 @@ bool ScenarioForm::setJson(const QString& text) {
                      o.value(QStringLiteral("at_s")).toDouble());
     }
     m_filling = false;
+    revalidate();
     return true;
 }
 

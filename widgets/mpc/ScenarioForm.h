@@ -15,7 +15,9 @@ namespace drytwin::widgets {
 /// @brief A what-if scenario as a form: the plant, its length, the initial setpoint and band, and
 /// three tables (setpoint steps, input changes, hidden mechanisms). It edits the scenario's JSON
 /// (docs/mpc.md), which stays one tab away: keys the form has no field for (noise, fluctuation, the
-/// initial input levels) are kept as they are. The engine's parser checks the result when it runs.
+/// initial input levels) are kept as they are. The form checks its own values as they are edited
+/// (a step after the scored length, a value outside its range) and says what is wrong beside the
+/// field; the engine's parser checks the whole text again before a run.
 class ScenarioForm : public QWidget {
     Q_OBJECT
 public:
@@ -33,14 +35,28 @@ public:
     void addSetpointStep(double atS, double toPct);
     void addInputChange(const QString& input, double atS, double durationS, double to);
     void addMechanism(const QString& mechanism, double strength, double atS);
+    QSpinBox* scoredLength() const { return m_length; }
+
+    /// @brief What is wrong with the form's values, worded for the user; empty when nothing is.
+    QStringList problems() const { return m_problems; }
+    bool isValid() const { return m_problems.isEmpty(); }
+    /// @brief The inline message under the scored length and under each table (hidden when empty).
+    QLabel* lengthMessage() const { return m_lengthError; }
+    QLabel* setpointStepsMessage() const { return m_stepsError; }
+    QLabel* inputChangesMessage() const { return m_inputsError; }
+    QLabel* mechanismsMessage() const { return m_mechanismsError; }
 
 Q_SIGNALS:
     /// @brief The user changed a value (not emitted by setJson()).
     void edited();
+    /// @brief The form became valid or invalid (problems() changed from or to empty).
+    void validityChanged(bool valid);
 
 private:
     QTableWidget* makeTable(const QStringList& headers);
     void emitEdited();
+    /// Checks the values again, fills the inline messages, marks the cells at fault.
+    void revalidate();
 
     QJsonObject m_base;
     bool m_filling = false;
@@ -55,6 +71,11 @@ private:
     QTableWidget* m_steps = nullptr;
     QTableWidget* m_inputs = nullptr;
     QTableWidget* m_mechanisms = nullptr;
+    QLabel* m_lengthError = nullptr;
+    QLabel* m_stepsError = nullptr;
+    QLabel* m_inputsError = nullptr;
+    QLabel* m_mechanismsError = nullptr;
+    QStringList m_problems;
 };
 
 } // namespace drytwin::widgets

@@ -59,6 +59,14 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     m_gains->setWordWrap(true);
     m_metrics = makeResultTable({tr("Model"), tr("MAE X_out\n[% wb]"), tr("R² X_out\n[-]"),
                                  tr("MAE T_out\n[°C]"), tr("skill\n1 step"), tr("skill\n30 steps")});
+    setHeaderToolTips(m_metrics,
+                      {QString(), tr("Mean absolute error of the outlet moisture on the held-out part."),
+                       tr("R²: the share of the outlet moisture's variation the model explains (1: all; "
+                          "below 0: worse than the mean)."),
+                       tr("Mean absolute error of the outlet temperature on the held-out part."),
+                       tr("Skill one second ahead: the model's error over the better of two simple "
+                          "forecasts; below 1 it beats both."),
+                       tr("Skill 30 seconds ahead, alike.")});
     m_state = new ModelStateBar(m_workbench);
     m_eigen = new PlotStack;
     m_eigen->addPlot(tr("imaginary part"));
@@ -221,7 +229,7 @@ void ResidualPanel::showEvaluation() {
         m_skill->addCurve(0, modelDisplayName(m.name), h, s, modelColour(m.name),
                           reference ? Qt::DashLine : Qt::SolidLine, m.name == "pgrl_cc" ? 2.2 : 1.3);
     }
-    m_metrics->resizeColumnsToContents();
+    fitTableWidth(m_metrics);
     m_skill->addCurve(0, tr("skill 1 (ties the better reference)"), {1, 180}, {1, 1}, Qt::black, Qt::DotLine,
                       1.0);
     m_skill->rescale();
@@ -310,7 +318,7 @@ void ResidualPanel::showAblation() {
                      QString::number(r.r2Moisture, 'f', 3), QString::number(r.maeTemperature, 'f', 4),
                      QString::number(r.regimeMaeMoisture, 'f', 4)});
     }
-    m_ablation->resizeColumnsToContents();
+    fitTableWidth(m_ablation);
 }
 
 } // namespace drytwin::widgets

@@ -58,32 +58,10 @@ QString controllerLabel(control::ControllerKind k) {
                : QCoreApplication::translate("TrainingPanel", "MPC on: %1").arg(controllerDisplayName(k));
 }
 
+/// A mechanism by the one name every tab gives its cause (DisplayNames): the trainee names on
+/// Training the cause Discover found under the same words.
 QString mechanismLabel(plant::Mechanism m) {
-    switch (m) {
-    case plant::Mechanism::TubeWallHeatLoss:
-        return QCoreApplication::translate("TrainingPanel", "Tube wall heat loss");
-    case plant::Mechanism::GasPhaseCoupling:
-        return QCoreApplication::translate("TrainingPanel", "Gas-phase coupling");
-    case plant::Mechanism::HeatTransferFouling:
-        return QCoreApplication::translate("TrainingPanel", "Heat-transfer fouling");
-    case plant::Mechanism::MoistureMeterLag:
-        return QCoreApplication::translate("TrainingPanel", "Moisture meter lag");
-    case plant::Mechanism::MoistureMeterOffset:
-        return QCoreApplication::translate("TrainingPanel", "Moisture meter offset");
-    case plant::Mechanism::TransportDelayError:
-        return QCoreApplication::translate("TrainingPanel", "Transport delay error");
-    case plant::Mechanism::FallingRateDrying:
-        return QCoreApplication::translate("TrainingPanel", "Falling-rate drying");
-    case plant::Mechanism::AmbientReabsorption:
-        return QCoreApplication::translate("TrainingPanel", "Ambient re-absorption");
-    case plant::Mechanism::InletMoistureSensorOffset:
-        return QCoreApplication::translate("TrainingPanel", "Inlet moisture gauge offset");
-    case plant::Mechanism::HotAirSensorLag:
-        return QCoreApplication::translate("TrainingPanel", "Hot-air thermocouple lag");
-    case plant::Mechanism::InletMoistureSensorNoise:
-        return QCoreApplication::translate("TrainingPanel", "Inlet moisture gauge scatter");
-    }
-    return {};
+    return causeDisplayName(std::string(plant::info(m).name));
 }
 
 QString clockText(double s) {
@@ -315,6 +293,18 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_monitorLimit = m_plots->addCurve(4, tr("99 % limit"), none, none, Qt::black, Qt::DashLine, 1.0);
     m_monitorT2 = m_plots->addCurve(4, tr("T² of the model's error"), none, none, QColor(214, 39, 40),
                                     Qt::SolidLine, 1.3);
+    // Before a session runs, each plot shows its quantity's usual range on the line, not 0–1000.
+    m_plots->setEmptyRange(0, 10, 16);   // X_out [% wb]
+    m_plots->setEmptyRange(1, 140, 200); // T_hot [°C]
+    m_plots->setEmptyRange(2, 5, 8);     // feed [t/h]
+    m_plots->setEmptyRange(3, 18, 26);   // X_in [% wb]
+    m_plots->setEmptyRange(4, 0.1, 100); // T² (log scale)
+    m_plots->setEmptyXRange(0, kWindowS / 60.0);
+    m_plots->setEmptyText(tr("Start a session to see the line run"));
+    m_plots->setPlotEmptyText(4, tr("The monitor's T² shows once it has a minute of the model's error"));
+    m_truthPlots->setEmptyRange(0, 10, 16);
+    m_truthPlots->setEmptyXRange(0, kWindowS / 60.0);
+    m_truthPlots->setEmptyText(tr("Start a session to see the true outlet moisture beside the measured"));
 
     m_progress = new QProgressBar;
     m_progress->setRange(0, 100);
@@ -623,7 +613,7 @@ void TrainingPanel::showFrame() {
              QStringLiteral("%1 %2").arg(fault.strength).arg(fromView(plant::info(fault.mechanism).unit)),
              clockText(fault.onsetS), found});
     }
-    m_faults->resizeColumnsToContents();
+    fitTableWidth(m_faults);
     m_score->setText(
         tr("<b>Score %1 / 100</b> — faults found %2 of %3, wrong answers %4, product out of the band "
            "%5 % of the time (%6 kg)")

@@ -166,7 +166,6 @@ void LineView3D::buildScene() {
     m_renderer->AddActor(actor);
     m_bar = vtkSmartPointer<vtkScalarBarActor>::New();
     m_bar->SetLookupTable(m_lut);
-    m_bar->SetTitle("X [% wb]");
     m_bar->SetNumberOfLabels(4);
     m_bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
     m_bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
@@ -185,7 +184,7 @@ void LineView3D::buildScene() {
     const auto needsCjkFont = [](const QString& t) {
         return std::any_of(t.begin(), t.end(), [](QChar c) { return c.unicode() >= 0x2E80; });
     };
-    QString cjkFont;
+    QString& cjkFont = m_cjkFont;
     for (const char* candidate : {"/usr/share/fonts/truetype/wqy/wqy-zenhei.ttc",
                                   "/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc",
                                   "/usr/share/fonts/truetype/wqy/wqy-microhei.ttc"}) {
@@ -210,6 +209,7 @@ void LineView3D::buildScene() {
         text->GetTextProperty()->SetJustificationToCentered();
         m_renderer->AddActor(text);
     }
+    setBarTitle(true);
     auto* camera = m_renderer->GetActiveCamera();
     camera->SetFocalPoint(29, 0, 1);
     camera->SetPosition(22, -45, 28);
@@ -298,7 +298,7 @@ void LineView3D::updateParcels() {
             values->InsertNextValue(v);
         }
         m_clock->setText(tr("%1 s of %2").arg(static_cast<int>(m_time)).arg(n - 1));
-        m_bar->SetTitle(moisture ? "X [% wb]" : "T [C]");
+        setBarTitle(moisture);
     }
     m_parcels->SetPoints(points);
     m_parcels->GetPointData()->SetScalars(values);
@@ -308,6 +308,21 @@ void LineView3D::updateParcels() {
     }
     m_parcels->Modified();
     m_window->Render();
+}
+
+void LineView3D::setBarTitle(bool moisture) {
+    // The quantity's words as the chooser shows them; CJK text in a font that has its glyphs.
+    m_barTitle = moisture ? tr("moisture [% wb]") : tr("temperature [°C]");
+    const bool cjk =
+        std::any_of(m_barTitle.begin(), m_barTitle.end(), [](QChar c) { return c.unicode() >= 0x2E80; });
+    if (cjk && !m_cjkFont.isEmpty()) {
+        m_bar->GetTitleTextProperty()->SetFontFamily(VTK_FONT_FILE);
+        m_bar->GetTitleTextProperty()->SetFontFile(m_cjkFont.toUtf8().constData());
+    }
+    const QString shown = cjk && m_cjkFont.isEmpty()
+                              ? (moisture ? QStringLiteral("X [% wb]") : QStringLiteral("T [°C]"))
+                              : m_barTitle; // no tofu boxes without a CJK font
+    m_bar->SetTitle(shown.toUtf8().constData());
 }
 
 } // namespace drytwin::widgets

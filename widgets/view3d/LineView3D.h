@@ -29,6 +29,8 @@ class LineView3D : public QWidget {
 public:
     /// @brief The section names drawn in the 3D view, in the window's language.
     const QStringList& sectionLabels() const { return m_sectionLabels; }
+    /// @brief The colour bar's title as drawn (the quantity shown, in the window's language).
+    QString colourBarTitle() const { return m_barTitle; }
     explicit LineView3D(Workbench& workbench, QWidget* parent = nullptr);
     ~LineView3D() override;
     /// @brief Shows the line at @p seconds since the batch start.
@@ -55,6 +57,10 @@ private:
     vtkSmartPointer<vtkLookupTable> m_lut;
     vtkSmartPointer<vtkScalarBarActor> m_bar;
     QStringList m_sectionLabels; ///< the 3D section names as drawn (tests read them)
+    QString m_barTitle;
+    QString m_cjkFont; ///< a font file with CJK glyphs, when one is installed
+    /// Titles the colour bar with the quantity shown, in a font that has its glyphs.
+    void setBarTitle(bool moisture);
     QComboBox* m_batch = nullptr;
     QComboBox* m_quantity = nullptr;
     QSlider* m_slider = nullptr;

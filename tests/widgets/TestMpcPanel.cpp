@@ -1,0 +1,160 @@
+// The What-if tab's scenario form checks itself (issue #43, item 10): a form that contradicts
+// itself says so beside the field and Run stays off; a run that fails leaves the tab saying why,
+// not "Running…", and never names the temporary file the editor's text ran from.
+#include "common/Workbench.h"
+#include "mpc/MpcPanel.h"
+#include "mpc/ScenarioForm.h"
+
+#include <QCheckBox>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QtTest>
+
+using namespace drytwin;
+using namespace drytwin::widgets;
+
+namespace {
+
+bool waitIdle(Workbench& wb, int ms = 60000) {
+    QElapsedTimer t;
+    t.start();
+    while (wb.jobs().busy() && t.elapsed() < ms) {
+        QTest::qWait(50);
+    }
+    QTest::qWait(50);
+    return !wb.jobs().busy();
+}
+
+} // namespace
+
+class TestMpcPanel : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    // Scored length 600 s, a setpoint step at 780 s: the form says so under the steps and under
+    // the length, the cell is marked, Run is off and run() starts nothing.
+    void stepAfterTheScoredLengthIsRefusedInTheForm() {
+        Workbench wb;
+        MpcPanel panel(wb);
+        static_cast<QWidget&>(panel).show(); // MpcPanel::show() redraws its results
+        ScenarioForm* form = panel.form();
+        panel.editor()->setPlainText(
+            R"({"name": "t", "length_s": 1000, "setpoint_steps": [{"at_s": 100, "to_pct": 12.5}]})");
+        QVERIFY(form->isValid());
+        QVERIFY(panel.runButton()->isEnabled());
+        QVERIFY(!panel.runBlockedMessage()->isVisible());
+
+        form->setpointSteps()->item(0, 0)->setText("780");
+        QVERIFY(form->isValid()); // 780 s lies inside 1000 s
+        form->scoredLength()->setValue(600);
+        QVERIFY(!form->isValid());
+        QVERIFY(form->setpointStepsMessage()->isVisible());
+        QVERIFY2(form->setpointStepsMessage()->text().contains("780 s") &&
+                     form->setpointStepsMessage()->text().contains("600 s"),
+                 qPrintable(form->setpointStepsMessage()->text()));
+        QVERIFY(form->lengthMessage()->isVisible());
+        QVERIFY(form->setpointSteps()->item(0, 0)->toolTip().contains("after the scored length"));
+        QVERIFY(!panel.runButton()->isEnabled());
+        QVERIFY(panel.runBlockedMessage()->isVisible());
+        QVERIFY(panel.runBlockedMessage()->text().contains("780 s"));
+        if (const QString shots = qEnvironmentVariable("DRYTWIN_TEST_SHOTS"); !shots.isEmpty()) {
+            panel.resize(1000, 760); // a picture of the refused form, to look at
+            QTest::qWait(50);
+            panel.grab().save(shots + "/mpc-form-refused.png");
+        }
+
+        QSignalSpy started(&wb, &Workbench::runningChanged);
+        panel.run();
+        QCOMPARE(started.count(), 0); // nothing queued
+        QVERIFY(panel.note()->text().contains("780 s"));
+        QVERIFY(!panel.note()->text().contains("Running"));
+
+        // Lengthening the run puts it right: the message goes, Run comes back.
+        form->scoredLength()->setValue(900);
+        QVERIFY(form->isValid());
+        QVERIFY(!form->setpointStepsMessage()->isVisible());
+        QVERIFY(!form->lengthMessage()->isVisible());
+        QVERIFY(panel.runButton()->isEnabled());
+    }
+
+    // Values outside what the scenario parser accepts are named in the form too.
+    void outOfRangeValuesAreNamedBesideTheTable() {
+        Workbench wb;
+        MpcPanel panel(wb);
+        ScenarioForm* form = panel.form();
+        panel.editor()->setPlainText(R"({"name": "t", "length_s": 600,
+            "setpoint_steps": [{"at_s": 100, "to_pct": 12.5}, {"at_s": 50, "to_pct": 12}],
+            "input_changes": [{"input": "feed_kg_h", "at_s": 10, "to": 6400}]})");
+        QVERIFY(!form->isValid()); // steps out of order
+        QVERIFY(form->setpointStepsMessage()->text().contains("time order"));
+        form->setpointSteps()->item(1, 0)->setText("150");
+        QVERIFY(form->isValid());
+        form->inputChanges()->item(0, 3)->setText("12000");
+        QVERIFY(!form->isValid());
+        QVERIFY2(form->inputChangesMessage()->text().contains("3000") &&
+                     form->inputChangesMessage()->text().contains("9000"),
+                 qPrintable(form->inputChangesMessage()->text()));
+        QVERIFY(!panel.runButton()->isEnabled());
+    }
+
+    // JSON typed by hand that the form cannot check is checked by the scenario parser: the line is
+    // named beside Run, and the temporary file is not.
+    void typedJsonIsCheckedBeforeARun() {
+        Workbench wb;
+        MpcPanel panel(wb);
+        panel.scenarioTabs()->setCurrentIndex(1);
+        panel.editor()->setPlainText("{\n \"name\": \"x\",\n \"band_pct\": -4\n}");
+        QVERIFY(!panel.runButton()->isEnabled());
+        QVERIFY2(panel.runBlockedMessage()->text().contains("line 3"),
+                 qPrintable(panel.runBlockedMessage()->text()));
+        QVERIFY(!panel.runBlockedMessage()->text().contains("drytwin-scenario"));
+    }
+
+    // A run the engine refuses (warm-up shorter than the controller's history) leaves the tab
+    // saying why, in the note under Run, and Run usable again.
+    void aFailedRunLeavesTheTabSayingWhy() {
+        Workbench wb;
+        MpcPanel panel(wb);
+        panel.editor()->setPlainText(
+            R"({"name": "short warm-up", "length_s": 30, "warmup_s": 0, "seed": 2})");
+        QVERIFY(panel.runButton()->isEnabled());
+        for (int i = 1; i < 5; ++i) {
+            panel.controllerBox(i)->setChecked(false);
+        }
+        panel.run();
+        QVERIFY(panel.note()->text().contains("Running"));
+        QVERIFY(!panel.runButton()->isEnabled()); // queued
+        QVERIFY(waitIdle(wb));
+        QVERIFY2(!panel.note()->text().contains("Running"), qPrintable(panel.note()->text()));
+        QVERIFY2(panel.note()->text().contains("warmup_s"), qPrintable(panel.note()->text()));
+        QVERIFY(!panel.note()->text().contains("drytwin-scenario"));
+        QVERIFY(panel.runButton()->isEnabled());
+        QVERIFY(!wb.latest().mpc.has_value());
+    }
+
+    // A cancelled run says so too.
+    void aCancelledRunSaysSo() {
+        Workbench wb;
+        MpcPanel panel(wb);
+        panel.editor()->setPlainText(R"({"name": "long", "length_s": 5000, "warmup_s": 300, "seed": 2})");
+        panel.run();
+        QTest::qWait(100);
+        wb.cancelAll();
+        QVERIFY(waitIdle(wb));
+        // Cancelled while queued or running: it says so, or that the runs so far are kept.
+        const QString note = panel.note()->text();
+        QVERIFY2(!note.contains("Running") && (note.contains("cancelled") || note.contains("Stopped by you")),
+                 qPrintable(note));
+        QVERIFY(panel.runButton()->isEnabled());
+    }
+};
+
+QTEST_MAIN(TestMpcPanel)
+#include "TestMpcPanel.moc"

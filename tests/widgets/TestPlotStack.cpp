@@ -1,0 +1,262 @@
+// Plots without data and tables' headers (issue #43, items 12 and 17): an empty plot shows its
+// quantity's range or says it has no data, never Qwt's made-up 0–1000; the export takes its format
+// from the filter chosen in the dialog; every column is as wide as its header.
+#include "MainWindow.h"
+#include "calibration/CalibrationPanel.h"
+#include "common/PlotStack.h"
+#include "common/Translations.h"
+#include "common/WidgetHelpers.h"
+#include "common/Workbench.h"
+#include "training/TrainingPanel.h"
+#include "workflow/Session.h"
+
+#include <QApplication>
+#include <QFileDialog>
+#include <QHeaderView>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QStandardPaths>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QtTest>
+#include <qwt_plot.h>
+#include <qwt_scale_div.h>
+
+using namespace drytwin;
+using namespace drytwin::widgets;
+
+namespace {
+
+double yUpper(const QwtPlot* plot) {
+    return plot->axisScaleDiv(QwtPlot::yLeft).upperBound();
+}
+double xUpper(const QwtPlot* plot) {
+    return plot->axisScaleDiv(QwtPlot::xBottom).upperBound();
+}
+
+/// The width a header's text needs, as QHeaderView measures it (bold), its widest line.
+int headerTextWidth(const QHeaderView* header, const QString& text) {
+    QFont font = header->font();
+    font.setBold(true);
+    const QFontMetrics fm(font);
+    int w = 0;
+    for (const QString& line : text.split(QLatin1Char('\n'))) {
+        w = std::max(w, fm.horizontalAdvance(line));
+    }
+    return w;
+}
+
+/// Every column of every table under @p root whose header is cut: "table/column: width < need".
+QStringList cutHeaders(QWidget* root) {
+    QStringList cut;
+    for (auto* table : root->findChildren<QTableWidget*>()) {
+        if (!table->isVisibleTo(root)) {
+            continue;
+        }
+        const QHeaderView* header = table->horizontalHeader();
+        for (int c = 0; c < table->columnCount(); ++c) {
+            const auto* item = table->horizontalHeaderItem(c);
+            if (!item || header->isSectionHidden(c)) {
+                continue;
+            }
+            const int need = headerTextWidth(header, item->text());
+            // Cut by its own width, or by the table's edge (a table not at its widest shows all
+            // its columns; only one that asked for kMaxFittedTableWidth may scroll).
+            const bool pastTheEdge =
+                table->minimumWidth() < kMaxFittedTableWidth &&
+                header->sectionViewportPosition(c) + header->sectionSize(c) > table->viewport()->width();
+            if (header->sectionSize(c) < need || pastTheEdge) {
+                cut << QStringLiteral("%1/%2: %3 < %4")
+                           .arg(table->horizontalHeaderItem(0) ? table->horizontalHeaderItem(0)->text()
+                                                               : QString())
+                           .arg(item->text())
+                           .arg(header->sectionSize(c))
+                           .arg(need);
+            }
+        }
+    }
+    return cut;
+}
+
+} // namespace
+
+class TestPlotStack : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    // Item 12: the Training tab before a session runs: each plot shows its quantity's range.
+    void emptyTrainingPlotsShowTheirQuantitysRange() {
+        Workbench wb;
+        TrainingPanel panel(wb);
+        panel.resize(1200, 800);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        PlotStack* plots = panel.plots();
+        QVERIFY(plots->plot(0)->axisEnabled(QwtPlot::yLeft));
+        QVERIFY2(yUpper(plots->plot(0)) < 100 && yUpper(plots->plot(0)) > 5,
+                 qPrintable(QString::number(yUpper(plots->plot(0))))); // X_out [% wb]
+        QVERIFY(yUpper(plots->plot(1)) < 400);                         // T_hot [°C]
+        for (int i = 0; i < plots->plotCount(); ++i) {
+            QVERIFY2(yUpper(plots->plot(i)) != 1000.0, qPrintable(QString::number(i)));
+        }
+        QVERIFY(xUpper(plots->plot(plots->plotCount() - 1)) <= 60); // minutes of the window
+        QCOMPARE(plots->plot(plots->plotCount() - 1)->axisTitle(QwtPlot::xBottom).text(),
+                 QString("session time [min]"));
+        QVERIFY(plots->showsEmptyText());
+        QVERIFY(yUpper(panel.truthPlots()->plot(0)) < 100);
+    }
+
+    // Item 12: while Calibrate runs only the loss comes in; the parameters' plot keeps a sensible
+    // axis and says when its points come.
+    void calibrationParameterPlotWhileItRuns() {
+        Workbench wb;
+        CalibrationPanel panel(wb);
+        panel.resize(1200, 800);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        Q_EMIT wb.calibrationProgress(0.1, 3.0);
+        Q_EMIT wb.calibrationProgress(0.3, 2.0);
+        PlotStack* loss = panel.lossPlot();
+        QCOMPARE(loss->curveCount(0), 1);
+        QCOMPARE(loss->curveCount(1), 0);
+        QVERIFY2(yUpper(loss->plot(1)) <= 2.5, qPrintable(QString::number(yUpper(loss->plot(1)))));
+        QVERIFY(loss->noteShown(1).contains("calibration ends"));
+        QVERIFY(loss->noteShown(0).isEmpty());
+        // The bottom plot labels the shared time axis: the loss's, not 0–1000.
+        QVERIFY2(xUpper(loss->plot(1)) <= 1.5, qPrintable(QString::number(xUpper(loss->plot(1)))));
+    }
+
+    // Item 12: a plot without data and without a known range hides its y-axis and says so.
+    void anEmptyPlotSaysSo() {
+        PlotStack s;
+        s.addPlot("a [-]");
+        s.addPlot("b [-]");
+        s.resize(600, 400);
+        s.show();
+        s.addCurve(0, "a", {0, 10, 20}, {1, 2, 3}, Qt::red);
+        s.rescale();
+        QVERIFY(!s.plot(1)->axisEnabled(QwtPlot::yLeft));
+        QCOMPARE(s.noteShown(1), QString("No data yet"));
+        QVERIFY(xUpper(s.plot(1)) <= 25); // the time axis of the plot with data
+        s.setEmptyRange(1, -1, 1);
+        QVERIFY(s.plot(1)->axisEnabled(QwtPlot::yLeft));
+        QCOMPARE(yUpper(s.plot(1)), 1.0);
+        s.addCurve(1, "b", {0, 10}, {5, 6}, Qt::blue);
+        s.rescale();
+        QVERIFY(s.noteShown(1).isEmpty());
+        QVERIFY(yUpper(s.plot(1)) >= 6);
+    }
+
+    void filterSuffix_data() {
+        QTest::addColumn<QString>("typed");
+        QTest::addColumn<QString>("filter");
+        QTest::addColumn<QString>("expected");
+        const QString all = "PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)";
+        QTest::newRow("no extension, CSV") << "/x/foo"
+                                           << "Data as CSV (*.csv)"
+                                           << "/x/foo.csv";
+        QTest::newRow("no extension, PDF") << "/x/foo"
+                                           << "PDF (*.pdf)"
+                                           << "/x/foo.pdf";
+        QTest::newRow("extension typed") << "/x/foo.svg"
+                                         << "Data as CSV (*.csv)"
+                                         << "/x/foo.svg";
+        QTest::newRow("upper case") << "/x/foo.PNG"
+                                    << "PDF (*.pdf)"
+                                    << "/x/foo.PNG";
+        QTest::newRow("a dot in the name") << "/x/run.2"
+                                           << "Data as CSV (*.csv)"
+                                           << "/x/run.2.csv";
+        Q_UNUSED(all);
+    }
+    void filterSuffix() {
+        QFETCH(QString, typed);
+        QFETCH(QString, filter);
+        QFETCH(QString, expected);
+        const QString all = "PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)";
+        QCOMPARE(withFilterSuffix(typed, filter, all), expected);
+    }
+
+    // Item 17: "Data as CSV" chosen in the export dialog, "foo" typed: foo.csv is written.
+    void exportWithTheCsvFilterAndNoExtension() {
+        QTemporaryDir dir;
+        PlotStack s;
+        s.addPlot("X_out [% wb]");
+        s.addCurve(0, "measured", {0, 1, 2}, {12.0, 12.5, 13.0}, Qt::red);
+        s.rescale();
+        s.show();
+        QPushButton* exportButton = nullptr;
+        for (auto* b : s.findChildren<QPushButton*>()) {
+            if (b->text().startsWith("Export")) {
+                exportButton = b;
+            }
+        }
+        QVERIFY(exportButton);
+        bool answered = false;
+        QTimer::singleShot(300, [&] {
+            auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+            if (!dialog) {
+                return;
+            }
+            // As a user does: choose the filter, then type a name without an extension.
+            dialog->selectNameFilter("Data as CSV (*.csv)");
+            dialog->setDirectory(dir.path());
+            auto* name = dialog->findChild<QLineEdit*>("fileNameEdit");
+            if (!name) {
+                return;
+            }
+            name->setText("foo");
+            answered = true;
+            static_cast<QDialog*>(dialog)->accept(); // QFileDialog::accept(), through the public slot
+        });
+        QTest::mouseClick(exportButton, Qt::LeftButton);
+        QVERIFY(answered);
+        QVERIFY2(QFileInfo::exists(dir.filePath("foo.csv")), qPrintable(s.readout()));
+        QFile f(dir.filePath("foo.csv"));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QVERIFY(f.readLine().startsWith("plot,curve,"));
+        QVERIFY(s.readout().contains("foo.csv"));
+    }
+
+    // Item 17: every table's columns are as wide as their headers, in English and in Chinese, with
+    // data and results in them.
+    void headersFitTheirColumns_data() {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << "en";
+        QTest::newRow("zh_CN") << "zh_CN";
+    }
+    void headersFitTheirColumns() {
+        QFETCH(QString, language);
+        QVERIFY(setLanguage(language) || language == "en");
+        QTemporaryDir dir;
+        workflow::GenerateOptions g;
+        g.plant = plant::PlantOptions::demo(5, plant::PlantKind::Lumped);
+        g.plant.batches = 2;
+        g.plant.samples = 900;
+        g.outFolder = dir.filePath("plant").toStdString();
+        QVERIFY(workflow::Session().generate(g).ok());
+        {
+            MainWindow w;
+            w.resize(1280, 800);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QSignalSpy loaded(&w, &MainWindow::loadFinished);
+            w.openDataSet(dir.filePath("plant"));
+            QVERIFY(loaded.wait(30000));
+            QTRY_VERIFY_WITH_TIMEOUT(!w.jobs().busy(), 60000);
+            for (int i = 0; i < w.tabs()->count(); ++i) {
+                w.tabs()->setCurrentIndex(i);
+                QTest::qWait(50);
+                const QStringList cut = cutHeaders(w.tabs()->widget(i));
+                QVERIFY2(cut.isEmpty(), qPrintable(w.tabs()->tabText(i) + ": " + cut.join("; ")));
+            }
+        }
+        setLanguage("en");
+    }
+};
+
+QTEST_MAIN(TestPlotStack)
+#include "TestPlotStack.moc"
