@@ -9,6 +9,7 @@
 #include "plant/Mechanisms.h"
 #include "workflow/Session.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -208,9 +209,19 @@ void printTraining(const workflow::TrainResult& t) {
         }
         std::printf("\n");
     }
-    std::printf("%-20s trained in %.1f s, final training loss %.4g (standardised)\n", "lstm",
-                t.lstm->trainingSeconds(),
-                t.lstm->lossHistory().empty() ? std::nan("") : t.lstm->lossHistory().back());
+    {
+        // The LSTM says how training ended and whether it beats the trivial references on its
+        // validation part; when it does not, that is flagged where nobody can miss it.
+        const auto& lstm = *t.lstm;
+        const auto& v = lstm.validation();
+        const auto& losses = lstm.lossHistory();
+        const auto kept = static_cast<std::size_t>(std::max(1, v.bestEpoch));
+        std::printf("%-20s trained in %.1f s, %s; training loss %.4g (Huber, standardised step change)\n",
+                    "lstm", lstm.trainingSeconds(), lstm.ending().message.c_str(),
+                    kept <= losses.size() ? losses[kept - 1] : std::nan(""));
+        std::printf("%-20s %s%s\n", "lstm",
+                    v.validated && v.beatsReferences ? "" : "WARNING: ", v.message.c_str());
+    }
     const auto& cmp = t.pgrlCc->stabilityComparison();
     std::printf(
         "Eq. 30 training loss (per unit weight): unconstrained %.6g (radius %.5f), eigenvalues pulled "
