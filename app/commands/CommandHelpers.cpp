@@ -198,6 +198,20 @@ void printTraining(const workflow::TrainResult& t) {
                     c.certified ? "certified" : "NOT certified");
     }
     for (const auto* m : {t.pgrlCc.get(), t.extInput.get()}) {
+        const auto* c = m->inputDriven();
+        if (!c) {
+            continue;
+        }
+        // Issue #42: the free-run layer under the lifted model, judged on batches it was not fitted on.
+        const auto& v = c->validation();
+        std::printf("%-20s input-driven correction (free run), cross-validated over %d folds: MAE X %.4f -> "
+                    "%.4f %% wb, "
+                    "T %.3f -> %.3f °C%s%s\n",
+                    m == t.pgrlCc.get() ? "pgrl_cc" : "ext_input_residual", v.folds, v.maeMoisturePbm,
+                    v.maeMoistureCorrected, v.maeTemperaturePbm, v.maeTemperatureCorrected,
+                    v.note.empty() ? "" : "; ", v.note.c_str());
+    }
+    for (const auto* m : {t.pgrlCc.get(), t.extInput.get()}) {
         if (!m->options().nestReferences || m->correctionWeightHorizons().empty()) {
             continue;
         }

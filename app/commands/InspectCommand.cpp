@@ -87,8 +87,10 @@ int runInspect(const CommandOptions& o) {
             "the column mapping/units):\n",
             s.impossibleTotal);
         for (const auto& w : s.impossible) {
-            std::printf("  %s:%d: %s = %g %s\n", w.file.c_str(), w.line, w.column.c_str(), w.value,
-                        w.rule.c_str());
+            const std::string column =
+                w.column == w.contractColumn ? w.column : w.column + " (" + w.contractColumn + ")";
+            std::printf("  %s:%d:%d: %s = %g %s\n", w.file.c_str(), w.line, w.fileColumn, column.c_str(),
+                        w.value, w.rule.c_str());
         }
         if (s.impossible.size() < s.impossibleTotal) {
             std::printf("  … and %zu more (the first %zu per column are listed)\n",

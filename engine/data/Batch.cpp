@@ -25,7 +25,7 @@ void Batch::setValues(Column c, std::vector<double> v) {
         *existing = std::move(v);
         return;
     }
-    numeric.push_back({c, std::string(spec(c).name), std::move(v)});
+    numeric.push_back({c, std::string(spec(c).name), std::move(v), 0});
     fileOrder.push_back(static_cast<int>(numeric.size()) - 1);
 }
 

@@ -42,6 +42,7 @@ struct Batch {
         Column id;
         std::string fileName; ///< header text in the file (differs from the contract name when mapped)
         std::vector<double> values;
+        int fileColumn = 0; ///< 1-based column of the file it was read from, for messages (0: none)
     };
     struct TextColumn {
         std::string fileName;

@@ -2,6 +2,7 @@
 
 #include "common/AtomicFile.h"
 #include "data/PlantFileReader.h"
+#include "data/historian/TextDecoding.h"
 
 #include <algorithm>
 #include <cctype>
@@ -11,7 +12,6 @@
 #include <cstring>
 #include <csv.h>
 #include <filesystem>
-#include <iconv.h>
 #include <limits>
 #include <set>
 
@@ -39,30 +39,6 @@ Error withCode(Error e, ErrorCode code, std::vector<std::string> args) {
     e.code = code;
     e.args = std::move(args);
     return e;
-}
-
-/// Finds the first byte that is not valid UTF-8, using glibc's iconv (a library rather than
-/// a hand-written decoder). Returns the byte offset, or npos when the text is valid.
-std::size_t firstInvalidUtf8(const std::string& text) {
-    iconv_t cd = iconv_open("UTF-8", "UTF-8");
-    if (cd == reinterpret_cast<iconv_t>(-1)) {
-        return std::string::npos;
-    }
-    std::vector<char> out(4096);
-    char* in = const_cast<char*>(text.data());
-    std::size_t inLeft = text.size();
-    std::size_t bad = std::string::npos;
-    while (inLeft > 0) {
-        char* o = out.data();
-        std::size_t oLeft = out.size();
-        const std::size_t r = iconv(cd, &in, &inLeft, &o, &oLeft);
-        if (r == static_cast<std::size_t>(-1) && errno != E2BIG) {
-            bad = static_cast<std::size_t>(in - text.data());
-            break;
-        }
-    }
-    iconv_close(cd);
-    return bad;
 }
 
 void lineAndColumnOf(const std::string& text, std::size_t offset, int& line, int& column) {
@@ -129,9 +105,11 @@ Status checkBatchTextEncoding(const std::string& rawText, const std::string& fil
     // Encoding: UTF-16/32 byte-order marks, then strict UTF-8.
     const auto u = [&](std::size_t i) { return static_cast<unsigned char>(rawText[i]); };
     if (rawText.size() >= 2 && ((u(0) == 0xFF && u(1) == 0xFE) || (u(0) == 0xFE && u(1) == 0xFF))) {
-        return badInput(file, 1, 1, "the file is UTF-16 encoded; save it as UTF-8");
+        return badInput(
+            file, 1, 1,
+            "the file is UTF-16 encoded; save it as UTF-8 (loading it as a data set converts it)");
     }
-    if (const auto bad = firstInvalidUtf8(rawText); bad != std::string::npos) {
+    if (const auto bad = historian::firstInvalidUtf8(rawText); bad != std::string::npos) {
         int line = 0;
         int column = 0;
         lineAndColumnOf(rawText, bad, line, column);
@@ -158,6 +136,9 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
         return st.error();
     }
     if (auto st = checkBatchTextEncoding(rawText, file); !st) {
+        return st.error();
+    }
+    if (auto st = historian::checkLineLengths(rawText, file); !st) {
         return st.error();
     }
     std::string_view text(rawText);
@@ -292,12 +273,21 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
                                     "', which another column already gives");
             }
             numericIndexOfField[c] = static_cast<int>(batch.numeric.size());
-            batch.numeric.push_back({id, name, {}});
+            batch.numeric.push_back({id, name, {}, col});
             batch.fileOrder.push_back(numericIndexOfField[c]);
         } else {
             textIndexOfField[c] = static_cast<int>(batch.text.size());
             batch.text.push_back({name, {}});
             batch.fileOrder.push_back(-1 - textIndexOfField[c]);
+        }
+    }
+    {
+        std::vector<std::string> headers;
+        for (const auto& f : header.fields) {
+            headers.push_back(trim(f));
+        }
+        if (auto st = options.mapping.checkHeadersPresent(headers, file, header.line); !st) {
+            return st.error();
         }
     }
     for (const auto& s : columnSpecs()) {

@@ -2,9 +2,11 @@
 
 #include "common/AtomicFile.h"
 #include "data/Columns.h"
-#include "data/PlantFileReader.h"
+#include "data/historian/PlaceInFile.h"
+#include "data/historian/TimeStamps.h"
 
 #include <algorithm>
+#include <cctype>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -121,9 +123,10 @@ Status ColumnMapping::validate() const {
     }
     if (!timeFormat.empty() && !timeFormatByName(timeFormat)) {
         return Error{ErrorKind::BadInput, "column mapping: time_s.format",
-                     "'" + timeFormat +
-                         "' is not one of seconds, iso8601, Y/m/d, d.m.Y, d/m/Y, m/d/Y, excel_days, epoch_s, "
-                         "epoch_ms"};
+                     "'" + timeFormat + "' is not one of " + timeFormatNames()};
+    }
+    if (decimalMark != 0 && decimalMark != '.' && decimalMark != ',') {
+        return Error{ErrorKind::BadInput, "column mapping: decimal_mark", "must be \".\" or \",\""};
     }
     for (const auto& [contract, unit] : contractToUnit) {
         const auto id = columnByName(contract);
@@ -158,6 +161,93 @@ Status ColumnMapping::validate() const {
     return {};
 }
 
+namespace {
+
+/// Letters and digits in lower case: "Air_Speed.PV" and "AIR SPEED PV" are the same tag.
+std::string tagKey(const std::string& s) {
+    std::string k;
+    for (char c : s) {
+        if (std::isalnum(static_cast<unsigned char>(c))) {
+            k.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+        } else if (static_cast<unsigned char>(c) >= 0x80) {
+            k.push_back(c);
+        }
+    }
+    return k;
+}
+
+std::size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) {
+        row[j] = j;
+    }
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = up;
+        }
+    }
+    return row[b.size()];
+}
+
+} // namespace
+
+std::string closestHeader(const std::string& name, const std::vector<std::string>& headers) {
+    const std::string key = tagKey(name);
+    std::string best;
+    std::size_t bestDistance = std::max<std::size_t>(2, key.size() / 3) + 1; // a third of the tag at most
+    for (const auto& h : headers) {
+        const std::string k = tagKey(h);
+        const std::size_t d = k == key ? 0 : editDistance(key, k);
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = h;
+        }
+    }
+    return best;
+}
+
+Status ColumnMapping::checkHeadersPresent(const std::vector<std::string>& headers, const std::string& file,
+                                          int headerLine) const {
+    std::vector<std::pair<std::string, std::string>> lacking; // contract column, header
+    const auto has = [&](const std::string& h) {
+        return std::find(headers.begin(), headers.end(), h) != headers.end();
+    };
+    for (const auto& [contract, header] : contractToFile) {
+        if (!has(header)) {
+            lacking.emplace_back(contract, header);
+        }
+    }
+    if (!batchIdHeader.empty() && !has(batchIdHeader)) {
+        lacking.emplace_back("batch_id", batchIdHeader);
+    }
+    if (lacking.empty()) {
+        return {};
+    }
+    std::string list;
+    for (const auto& [contract, header] : lacking) {
+        const auto id = columnByName(contract);
+        const std::string near = closestHeader(header, headers);
+        list += std::string(list.empty() ? "" : "; ") + "'" + header + "' for " + contract +
+                (id ? std::string(spec(*id).required ? " (required" : " (optional") + ", " +
+                          std::string(spec(*id).meaning) + ")"
+                    : std::string(" (the batch column)")) +
+                (near.empty() ? "" : ", the file has '" + near + "'");
+    }
+    const std::string mappingName =
+        sourceName.empty() ? "the column mapping" : "the column mapping " + sourceName;
+    return historian::fileError(
+        file, headerLine, 1,
+        mappingName + " names " +
+            (lacking.size() == 1 ? "a header" : std::to_string(lacking.size()) + " headers") +
+            " that the file's header row lacks: " + list +
+            ". Correct the header in the mapping (or remove the entry: an optional column then takes its "
+            "documented default)");
+}
+
 Expected<ColumnMapping> readColumnMapping(const std::string& path) {
     auto text = readWholeFile(path);
     if (!text) {
@@ -165,6 +255,51 @@ Expected<ColumnMapping> readColumnMapping(const std::string& path) {
     }
     return readColumnMappingText(*text, path);
 }
+
+namespace {
+
+/// A JSON syntax error at file:line:column, with what the parser expected there (nlohmann words
+/// it: "unexpected '}'; expected string literal") and the usual cause of that slip.
+Error jsonSyntaxError(const std::string& text, const std::string& path, std::size_t byte,
+                      const std::string& what) {
+    // nlohmann counts bytes from 1 and points at the character it could not take.
+    std::size_t offset = std::min(byte == 0 ? 0 : byte - 1, text.size());
+    // It reports the last character of the token it could not take: point at the token's start.
+    if (offset < text.size() && text[offset] == '"' && offset > 0) {
+        const auto open = text.rfind('"', offset - 1);
+        offset = open == std::string::npos ? offset : open;
+    } else {
+        while (offset > 0 && offset < text.size() && std::isalnum(static_cast<unsigned char>(text[offset])) &&
+               (std::isalnum(static_cast<unsigned char>(text[offset - 1])) || text[offset - 1] == '.' ||
+                text[offset - 1] == '-' || text[offset - 1] == '+')) {
+            --offset;
+        }
+    }
+    int line = 0, column = 0;
+    historian::lineAndColumnAt(text, offset, line, column);
+    std::string reason = what;
+    if (const auto p = what.find("syntax error"); p != std::string::npos) {
+        reason = what.substr(p);
+    } else if (const auto q = what.find(": "); q != std::string::npos) {
+        reason = what.substr(q + 2);
+    }
+    std::string hint;
+    if (reason.find("unexpected end of input") != std::string::npos) {
+        hint = " (a closing '}' or '\"' is missing)";
+    } else if (reason.find("unexpected '}'") != std::string::npos ||
+               reason.find("unexpected ']'") != std::string::npos) {
+        hint = " (a comma after the last entry?)";
+    } else if (reason.find("unexpected string literal") != std::string::npos) {
+        hint = " (a comma missing after the previous entry?)";
+    } else if (reason.find("invalid literal") != std::string::npos) {
+        hint = " (text outside quotes? JSON needs \"…\" around every name and header)";
+    }
+    Error e{ErrorKind::BadInput, historian::placeInFile(path, line, column),
+            "not valid JSON: " + reason + hint};
+    return e;
+}
+
+} // namespace
 
 Expected<ColumnMapping> readColumnMappingText(const std::string& text, const std::string& path) {
     ColumnMapping mapping;
@@ -180,6 +315,14 @@ Expected<ColumnMapping> readColumnMappingText(const std::string& text, const std
                                  "\"batch_id\" must be {\"header\": \"<column>\"}"};
                 }
                 mapping.batchIdHeader = value["header"].get<std::string>();
+                continue;
+            }
+            if (key == "decimal_mark") {
+                if (!value.is_string() ||
+                    (value.get<std::string>() != "." && value.get<std::string>() != ",")) {
+                    return Error{ErrorKind::BadInput, path, "\"decimal_mark\" must be \".\" or \",\""};
+                }
+                mapping.decimalMark = value.get<std::string>()[0];
                 continue;
             }
             if (key == "runs") {
@@ -229,11 +372,14 @@ Expected<ColumnMapping> readColumnMappingText(const std::string& text, const std
             mapping.contractToFile[key] = value.get<std::string>();
         }
     } catch (const nlohmann::json::parse_error& e) {
-        return Error{ErrorKind::BadInput, path + ":byte " + std::to_string(e.byte), "invalid JSON"};
+        return jsonSyntaxError(text, path, e.byte, e.what());
+    } catch (const nlohmann::json::exception& e) {
+        return Error{ErrorKind::BadInput, path, std::string("not a column mapping: ") + e.what()};
     }
     if (auto st = mapping.validate(); !st) {
         return Error{ErrorKind::BadInput, path, st.error().reason};
     }
+    mapping.sourceName = path;
     return mapping;
 }
 

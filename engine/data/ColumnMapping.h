@@ -34,6 +34,11 @@ struct ColumnMapping {
     /// A column that names the production run (`"batch_id": {"header": "Batch"}`); empty: none.
     std::string batchIdHeader;
     RunSplitOptions runs; ///< the mapping file's optional "runs" object
+    /// The files' decimal mark (`"decimal_mark": ","` or `"."`); 0: decided from each file's
+    /// cells (the other mark then groups thousands: 6.497,5 or 6,497.5).
+    char decimalMark = 0;
+    /// The mapping file this was read from, for messages ("" when built in code).
+    std::string sourceName;
 
     /// @brief Contract name for a header found in a file ("" when it maps to none).
     std::string contractNameFor(const std::string& fileHeader) const;
@@ -42,7 +47,17 @@ struct ColumnMapping {
     Status validate() const;
     /// @brief A file value of contract column @p column in the contract's unit.
     double toContractUnit(Column column, double value) const;
+    /// @brief Fails when the mapping names a header that @p headers (a file's header row, at line
+    /// @p headerLine of @p file) lack, whatever the column: a misspelt tag of an optional column
+    /// would otherwise leave the column absent and its default used without a word. The message
+    /// names every such header, its contract column, the closest header the file has, and the mapping.
+    Status checkHeadersPresent(const std::vector<std::string>& headers, const std::string& file,
+                               int headerLine) const;
 };
+
+/// @brief The header of @p headers closest to @p name (case and punctuation aside, then by edit
+/// distance); "" when none is near.
+std::string closestHeader(const std::string& name, const std::vector<std::string>& headers);
 
 /// @brief The units a contract column's values may come in, the contract's own first
 /// (temperatures: degC, degF, K; moisture: % wb, % db, fraction wb; feed: kg/h, kg/s, kg/min, t/h;
@@ -50,7 +65,8 @@ struct ColumnMapping {
 std::vector<std::string> unitsFor(Column column);
 
 /// @brief Reads a mapping file: a JSON object {"<contract name>": "<file header>", ...}; a value
-/// may also be {"header": "<file header>", "unit": "<unit>"} for a column in another unit.
+/// may also be {"header": "<file header>", "unit": "<unit>"} for a column in another unit. Text
+/// that is not JSON is reported as file:line:column with what the parser expected there.
 Expected<ColumnMapping> readColumnMapping(const std::string& path);
 /// @brief readColumnMapping of JSON text; @p name is used in messages.
 Expected<ColumnMapping> readColumnMappingText(const std::string& text, const std::string& name);

@@ -56,8 +56,15 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
                 bs.medianStepS = steps[steps.size() / 2];
             }
         }
-        for (const auto& col : b.numeric) {
+        for (std::size_t ci = 0; ci < b.numeric.size(); ++ci) {
+            const auto& col = b.numeric[ci];
             const auto i = static_cast<std::size_t>(col.id);
+            // The file's column: as read, else its place in the file order (a batch made in code).
+            int fileColumn = col.fileColumn;
+            if (fileColumn == 0 && !b.sourcePath.empty()) {
+                const auto at = std::find(b.fileOrder.begin(), b.fileOrder.end(), static_cast<int>(ci));
+                fileColumn = at == b.fileOrder.end() ? 0 : static_cast<int>(at - b.fileOrder.begin()) + 1;
+            }
             auto& cs = s.columns[i];
             cs.present = true;
             double low = 0, high = 0;
@@ -69,8 +76,8 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
                         if (listed[i] < DataSetSummary::kMaxListedImpossible) {
                             ++listed[i];
                             s.impossible.push_back({b.sourcePath.empty() ? b.id : b.sourcePath,
-                                                    r < b.lineOfRow.size() ? b.lineOfRow[r] : 0, col.fileName,
-                                                    v,
+                                                    r < b.lineOfRow.size() ? b.lineOfRow[r] : 0, fileColumn,
+                                                    col.fileName, std::string(spec(col.id).name), v,
                                                     "must lie in [" + formatNumber(low) + ", " +
                                                         formatNumber(high) + "] " + cs.unit});
                         }

@@ -36,9 +36,11 @@ struct BatchSummary {
 /// @brief A value no drying line can produce (RH outside 0–100 %, negative feed, a moisture
 /// outside 0–100 %, a temperature outside the line's range), found before any model sees it.
 struct ImpossibleValue {
-    std::string file; ///< path of the batch file (or its id when read from memory)
-    int line = 0;     ///< 1-based line in the file
-    std::string column;
+    std::string file;           ///< path of the batch file (or its id when read from memory)
+    int line = 0;               ///< 1-based line in the file
+    int fileColumn = 0;         ///< 1-based column in the file (0: not known, e.g. a batch made in code)
+    std::string column;         ///< the file's header
+    std::string contractColumn; ///< the contract column it is read as ("X_out_pct")
     double value = 0;
     std::string rule; ///< e.g. "must lie in [0, 100] %"
 };

@@ -1,8 +1,12 @@
 #include "data/MappingGuess.h"
 
+#include "data/historian/CsvLines.h"
+#include "data/historian/NumberFormat.h"
+#include "data/historian/PlaceInFile.h"
+#include "data/historian/TextDecoding.h"
+
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -131,8 +135,13 @@ struct ColumnValues {
 
 } // namespace
 
-Expected<MappingGuess> guessMapping(const std::string& text, const std::string& file) {
+Expected<MappingGuess> guessMapping(const std::string& raw, const std::string& file) {
     MappingGuess g;
+    auto decoded = historian::decodeText(raw, file);
+    if (!decoded) {
+        return decoded.error();
+    }
+    const std::string& text = decoded->text(raw);
     auto shape = sniffPlantText(text, file, {});
     if (!shape) {
         return shape.error();
@@ -142,17 +151,16 @@ Expected<MappingGuess> guessMapping(const std::string& text, const std::string& 
     // Values of the first rows of every column (the sniffer already knows the delimiter).
     std::vector<ColumnValues> values(headers.size());
     {
-        std::size_t pos = 0;
+        historian::LineCursor lines(text);
+        historian::CsvLineSplitter split(g.shape.delimiter);
+        std::string_view line;
         int seenHeader = 0, rows = 0;
         bool skippedUnits = !g.shape.unitsRow;
-        while (pos < text.size() && rows < 2000) {
-            const auto nl = text.find('\n', pos);
-            std::string line = text.substr(pos, nl == std::string::npos ? std::string::npos : nl - pos);
-            pos = nl == std::string::npos ? text.size() : nl + 1;
-            if (!line.empty() && line.back() == '\r') {
-                line.pop_back();
-            }
-            if (line.empty() || line[0] == '#') {
+        std::vector<historian::DecimalMarkEvidence> marks(headers.size());
+        std::vector<std::vector<double>> read(headers.size());
+        while (rows < 2000 && lines.next(line)) {
+            const auto t = historian::trimmed(line);
+            if (t.empty() || (!seenHeader && t[0] == '#')) {
                 continue;
             }
             if (!seenHeader) {
@@ -163,27 +171,29 @@ Expected<MappingGuess> guessMapping(const std::string& text, const std::string& 
                 skippedUnits = true;
                 continue;
             }
+            if (!split.split(line)) {
+                continue;
+            }
             ++rows;
-            std::size_t start = 0;
-            for (std::size_t c = 0; c < headers.size(); ++c) {
-                const auto d = line.find(g.shape.delimiter, start);
-                std::string cell = line.substr(start, d == std::string::npos ? std::string::npos : d - start);
-                start = d == std::string::npos ? line.size() : d + 1;
-                cell.erase(std::remove(cell.begin(), cell.end(), '"'), cell.end());
-                if (g.shape.decimalComma) {
-                    std::replace(cell.begin(), cell.end(), ',', '.');
-                }
-                double v = 0;
-                const char* b = cell.data();
-                while (b < cell.data() + cell.size() && *b == ' ') {
-                    ++b;
-                }
-                auto [ptr, ec] = std::from_chars(b, cell.data() + cell.size(), v);
+            for (std::size_t c = 0; c < headers.size() && c < split.fields().size(); ++c) {
                 ++values[c].cells;
-                if (ec == std::errc() && std::isfinite(v)) {
-                    values[c].numbers.push_back(v);
+                const auto n = historian::readNumberCell(split.fields()[c]);
+                if (n.isNumber) {
+                    marks[c].add(n, static_cast<std::uint32_t>(read[c].size()), lines.lineNumber(),
+                                 split.fields()[c]);
+                    read[c].push_back(n.value);
                 }
             }
+        }
+        // The number format as the reader decides it, so that "6.497" kg/h reads 6497 here too.
+        std::vector<historian::ColumnMarks> all;
+        for (std::size_t c = 0; c < headers.size(); ++c) {
+            all.push_back({&marks[c], headers[c], static_cast<int>(c) + 1});
+        }
+        const auto d = historian::decideDecimalMark(all, 0, g.shape.delimiter, file);
+        for (std::size_t c = 0; c < headers.size(); ++c) {
+            historian::applyDecimalMark(marks[c], d.mark, read[c]);
+            values[c].numbers = std::move(read[c]);
         }
     }
     // Score every header against every contract column: its words, its tag letters, its range.
@@ -292,6 +302,9 @@ std::string mappingJson(const ColumnMapping& m) {
     }
     if (!m.batchIdHeader.empty()) {
         j["batch_id"] = {{"header", m.batchIdHeader}};
+    }
+    if (m.decimalMark != 0) {
+        j["decimal_mark"] = std::string(1, m.decimalMark);
     }
     const RunSplitOptions defaults;
     const auto& r = m.runs;

@@ -53,6 +53,8 @@ std::vector<SiBatch> toSi(const DataSet& data, const CleaningReport& cleaning) {
         const std::size_t n = b.rows();
         SiBatch s;
         s.id = b.id;
+        s.sourcePath = b.sourcePath;
+        s.lineOfRow = b.lineOfRow;
         s.keep = bi < cleaning.keep.size() ? cleaning.keep[bi] : std::vector<std::uint8_t>(n, 1);
         auto column = [&](Column c) {
             if (const auto* v = b.values(c)) {

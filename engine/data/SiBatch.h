@@ -30,6 +30,8 @@ struct SiBatch {
     std::vector<std::uint8_t> keep;    ///< rows the cleaning rules keep (1) for fitting and metrics
     bool hasXHdt = false;
     bool hasTHdt = false;
+    std::string sourcePath;     ///< the batch's file, for messages ("" when made in code)
+    std::vector<int> lineOfRow; ///< the file line of each row, for messages (empty when not known)
     std::size_t rows() const { return timeS.size(); }
 };
 

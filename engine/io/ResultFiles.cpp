@@ -243,8 +243,13 @@ std::string inspectJson(const data::DataSetSummary& s) {
                      {"dropped_impossible", c.droppedImpossible}};
     j["impossible_values"] = {{"total", s.impossibleTotal}, {"listed", json::array()}};
     for (const auto& w : s.impossible) {
-        j["impossible_values"]["listed"].push_back(
-            {{"file", w.file}, {"line", w.line}, {"column", w.column}, {"value", w.value}, {"rule", w.rule}});
+        j["impossible_values"]["listed"].push_back({{"file", w.file},
+                                                    {"line", w.line},
+                                                    {"file_column", w.fileColumn},
+                                                    {"column", w.column},
+                                                    {"contract_column", w.contractColumn},
+                                                    {"value", w.value},
+                                                    {"rule", w.rule}});
     }
     return j.dump(2) + "\n";
 }

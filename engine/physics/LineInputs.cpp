@@ -1,9 +1,32 @@
 #include "physics/LineInputs.h"
 
+#include "common/Units.h"
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 
 namespace drytwin::physics {
+
+namespace {
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+}
+
+/// One input series as the batch file has it: its column, unit and range, in file units.
+struct InputCheck {
+    const std::vector<double>* values;
+    data::Column column;
+    double (*toFileUnit)(double);
+    double low, high; ///< the model's range in file units
+    bool lowOpen, highOpen;
+};
+
+} // namespace
 
 Status LineInputs::validate() const {
     const std::size_t n = timeS.size();
@@ -16,17 +39,59 @@ Status LineInputs::validate() const {
             return Error{ErrorKind::BadInput, "line inputs", "series lengths differ"};
         }
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        if (i > 0 && !(timeS[i] > timeS[i - 1])) {
-            return Error{ErrorKind::BadInput, "line inputs", "time must increase strictly"};
+    const auto kelvin = [](double k) { return units::kelvinToCelsius(k); };
+    const auto wet = [](double x) { return units::dryToWetPct(x); };
+    const auto percent = [](double f) { return units::fractionToPercent(f); };
+    const auto perHour = [](double kgPerS) { return units::kgPerSToKgPerHour(kgPerS); };
+    const auto same = [](double v) { return v; };
+    const double inf = std::numeric_limits<double>::infinity();
+    // The ranges the line model takes (SI limits written in the file's units for the message).
+    const InputCheck checks[] = {
+        {&tHotK, data::Column::THot, kelvin, kelvin(200), kelvin(800), true, true},
+        {&xInDb, data::Column::XIn, wet, 0, wet(10), false, true},
+        {&tInK, data::Column::TIn, kelvin, kelvin(200), kelvin(500), true, true},
+        {&tAmbK, data::Column::TAmb, kelvin, kelvin(200), kelvin(400), true, true},
+        {&rhAmb, data::Column::RHAmb, percent, 0, 100, false, false},
+        {&feedKgPerS, data::Column::Feed, perHour, -inf, inf, true, true},
+        {&airSpeedMPerS, data::Column::AirSpeed, same, -inf, inf, true, true},
+    };
+    const auto place = [&](std::size_t i) {
+        std::string where = batchId.empty() ? "line inputs" : "batch " + batchId;
+        if (i < lineOfRow.size() && !sourcePath.empty()) {
+            where += " (" + sourcePath + ":" + std::to_string(lineOfRow[i]) + ")";
         }
-        const bool ok = std::isfinite(timeS[i]) && tHotK[i] > 200 && tHotK[i] < 800 && xInDb[i] >= 0 &&
-                        xInDb[i] < 10 && tInK[i] > 200 && tInK[i] < 500 && tAmbK[i] > 200 && tAmbK[i] < 400 &&
-                        rhAmb[i] >= 0 && rhAmb[i] <= 1 && std::isfinite(feedKgPerS[i]) &&
-                        std::isfinite(airSpeedMPerS[i]);
-        if (!ok) {
-            return Error{ErrorKind::BadInput, "line inputs at t = " + std::to_string(timeS[i]) + " s",
-                         "an input is missing or outside its physical range"};
+        return where + ", row " + std::to_string(i + 1) + ", t = " + number(timeS[i]) + " s";
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(timeS[i])) {
+            return Error{ErrorKind::BadInput, place(i), "the time is missing"};
+        }
+        if (i > 0 && !(timeS[i] > timeS[i - 1])) {
+            return Error{ErrorKind::BadInput, place(i), "time must increase strictly"};
+        }
+        for (const auto& c : checks) {
+            const double si = (*c.values)[i];
+            const double v = c.toFileUnit(si);
+            const bool aboveLow = c.lowOpen ? v > c.low : v >= c.low;
+            const bool belowHigh = c.highOpen ? v < c.high : v <= c.high;
+            if (std::isfinite(v) && aboveLow && belowHigh) {
+                continue;
+            }
+            const auto& spec = data::spec(c.column);
+            const std::string name(spec.name), unit(spec.unit);
+            if (std::isnan(v)) {
+                return Error{
+                    ErrorKind::BadInput, place(i),
+                    "input " + name + " [" + unit + ", " + std::string(spec.meaning) +
+                        "] is missing here and in every row around it (an empty column, or one "
+                        "whose values are all impossible); fill the column or map it to another tag"};
+            }
+            return Error{ErrorKind::BadInput, place(i),
+                         "input " + name + " = " + number(v) + " " + unit +
+                             " lies outside the range the line "
+                             "model takes (" +
+                             number(c.low) + " to " + number(c.high) + " " + unit +
+                             "); fix the cell, or the column's unit in the column mapping"};
         }
     }
     return {};
@@ -81,7 +146,8 @@ std::vector<double> firstOrderResponse(const std::vector<double>& timeS, const s
 }
 
 LineInputs toLineInputs(const data::SiBatch& b) {
-    return {b.timeS, b.tHotK, b.xInDb, b.tInK, b.tAmbK, b.rhAmb, b.feedKgPerS, b.airSpeedMPerS};
+    return {b.timeS,      b.tHotK,         b.xInDb, b.tInK,       b.tAmbK,    b.rhAmb,
+            b.feedKgPerS, b.airSpeedMPerS, b.id,    b.sourcePath, b.lineOfRow};
 }
 
 } // namespace drytwin::physics

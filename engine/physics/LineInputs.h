@@ -4,6 +4,7 @@
 #include "data/SiBatch.h"
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace drytwin::physics {
@@ -20,9 +21,13 @@ struct LineInputs {
     std::vector<double> rhAmb;         ///< ambient relative humidity [0..1]
     std::vector<double> feedKgPerS;    ///< wet feed [kg/s] (not used by the paper's PBM; by the plant)
     std::vector<double> airSpeedMPerS; ///< [m/s] (not used by the paper's PBM; by the plant)
+    std::string batchId;        ///< for messages: the batch the series come from ("" when made in code)
+    std::string sourcePath;     ///< its file
+    std::vector<int> lineOfRow; ///< the file line of each sample (empty when not known)
 
     std::size_t size() const { return timeS.size(); }
-    /// @brief Equal lengths, ≥ 2 samples, strictly increasing time, finite physical values.
+    /// @brief Equal lengths, ≥ 2 samples, strictly increasing time, finite physical values. An
+    /// error names the batch, its file and line, the time, the input's column and its value.
     Status validate() const;
 };
 

@@ -1107,7 +1107,10 @@ Expected<std::vector<SimulationResult>> simulateBatches(const std::vector<LineIn
         if (!results[i] || !*results[i]) {
             Error e =
                 results[i] ? results[i]->error() : Error{ErrorKind::Numerical, "simulate", "batch not run"};
-            e.place = "batch " + std::to_string(i + 1) + ": " + e.place;
+            if (e.place.rfind("batch ", 0) != 0) { // LineInputs::validate names the batch itself
+                const std::string& id = batches[i].batchId;
+                e.place = "batch " + (id.empty() ? std::to_string(i + 1) : id) + ": " + e.place;
+            }
             return e;
         }
         out.push_back(std::move(results[i]->value()));

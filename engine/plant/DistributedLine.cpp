@@ -446,6 +446,8 @@ PlantSample DistributedLine::measure() {
     record.tHdtK.push_back(s.tHdtK);
     record.xOutDb.push_back(units::wetPctToDry(s.xOutPct));
     record.tOutK.push_back(s.tOutK);
+    record.xOutTrueDb.push_back(units::wetPctToDry(s.xOutTruePct));
+    record.tOutTrueK.push_back(s.tOutTrueK);
     // The inputs are read at the same instant; apply() records them with the setpoint.
     const double xInReadingPct =
         readSensor(SensorChannel::InletMoisture, s.xInTruePct + inletSensorOffsetPct(s.xInTruePct, t), 0,

@@ -60,7 +60,8 @@ std::vector<data::SiBatch> toSiBatches(const PlantResult& result, unsigned seed)
 }
 
 physics::LineInputs toLineInputs(const PlantBatch& pb) {
-    return {pb.timeS, pb.tHotK, pb.xInDb, pb.tInK, pb.tAmbK, pb.rhAmb, pb.feedKgPerS, pb.airSpeedMPerS};
+    return {pb.timeS,      pb.tHotK,         pb.xInDb, pb.tInK, pb.tAmbK, pb.rhAmb,
+            pb.feedKgPerS, pb.airSpeedMPerS, pb.id,    {},      {}};
 }
 
 } // namespace drytwin::plant

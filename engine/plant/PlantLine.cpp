@@ -455,6 +455,8 @@ PlantSample LumpedLine::measure() {
     im.record.tHdtK.push_back(s.tHdtK);
     im.record.xOutDb.push_back(units::wetPctToDry(s.xOutPct));
     im.record.tOutK.push_back(s.tOutK);
+    im.record.xOutTrueDb.push_back(units::wetPctToDry(s.xOutTruePct));
+    im.record.tOutTrueK.push_back(s.tOutTrueK);
     if (std::isnan(s.xOutPct)) {
         s.xOutValid = false;
         s.xOutPct = sensors[SensorChannel::OutletMoisture].lastGood();

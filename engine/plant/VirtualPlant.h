@@ -74,6 +74,10 @@ struct PlantBatch {
     std::string id;
     std::vector<double> timeS, tHotSpK, tHotK, airSpeedMPerS, feedKgPerS, xInDb, tInK, tAmbK, rhAmb;
     std::vector<double> xHdtDb, tHdtK, xOutDb, tOutK;
+    /// The outlet's true moisture (dry basis) and temperature [K] beside what its transmitters
+    /// read: for studies that need the instruments' floor (how close any simulator can come to
+    /// the measured values). Never written to batch files.
+    std::vector<double> xOutTrueDb, tOutTrueK;
 };
 
 /// @brief Everything the plant produced, and the truth behind it.

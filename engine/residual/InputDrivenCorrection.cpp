@@ -2,20 +2,18 @@
 #include "residual/InputDrivenCorrection.h"
 
 #include "common/Units.h"
-#include "residual/EigenJson.h"
 #include "residual/ResidualModel.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <nlohmann/json.hpp>
 
 namespace drytwin::residual {
 
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr int kOutputs = 2; // outlet moisture (% wb) and temperature (°C)
+constexpr int kOutputs = 2;     // outlet moisture (% wb) and temperature (°C)
 constexpr int kProxyInputs = 8; // six proxy states and the PBM's two outlet outputs
 
 /// Median sample step of a batch [s]; 1 s when it cannot be told.
@@ -35,7 +33,8 @@ double medianStep(const data::SiBatch& b) {
 }
 
 /// The measured minus the PBM's outlet outputs at row k (% wb, °C).
-bool pbmError(const data::SiBatch& b, const physics::SimulationResult& pbm, std::size_t k, Eigen::Vector2d& e) {
+bool pbmError(const data::SiBatch& b, const physics::SimulationResult& pbm, std::size_t k,
+              Eigen::Vector2d& e) {
     e(0) = units::dryToWetPct(b.xOutDb[k]) - units::dryToWetPct(pbm.xOutDb[k]);
     e(1) = b.tOutK[k] - pbm.tOutK[k];
     return e.allFinite() && (b.keep.empty() || b.keep[k] != 0);
@@ -66,17 +65,19 @@ Eigen::VectorXd ridgeSolve(Eigen::MatrixXd gram, const Eigen::VectorXd& rhs, dou
 } // namespace
 
 Status InputDrivenOptions::validate() const {
-    if (basis == InputBasis::FilterBank) {
+    if (basis != InputBasis::LaggedInputs) {
         if (timeConstantsS.empty() || cascadeOrder < 1 || cascadeOrder > 4) {
             return Error{ErrorKind::Usage, "input-driven correction",
                          "needs at least one time constant and a cascade order of 1 to 4"};
         }
         for (double t : timeConstantsS) {
             if (!(t > 0 && std::isfinite(t))) {
-                return Error{ErrorKind::Usage, "input-driven correction", "time constants must be positive seconds"};
+                return Error{ErrorKind::Usage, "input-driven correction",
+                             "time constants must be positive seconds"};
             }
         }
-    } else if (!(lagStrideS > 0 && maxLagS >= 0 && maxLagS / lagStrideS <= 200)) {
+    }
+    if (basis != InputBasis::FilterBank && !(lagStrideS > 0 && maxLagS >= 0 && maxLagS / lagStrideS <= 200)) {
         return Error{ErrorKind::Usage, "input-driven correction",
                      "lags need a positive stride and at most 200 of them"};
     }
@@ -96,16 +97,18 @@ int InputDrivenCorrection::inputCount() const {
     return 7 + (m_options.useProxies ? kProxyInputs : 0);
 }
 
-Eigen::MatrixXd InputDrivenCorrection::inputSeries(const data::SiBatch& b, const physics::SimulationResult& p) const {
+Eigen::MatrixXd InputDrivenCorrection::inputSeries(const data::SiBatch& b,
+                                                   const physics::SimulationResult& p) const {
     const std::size_t rows = std::min(b.rows(), p.xOutDb.size());
     const int n = inputCount();
     Eigen::MatrixXd z(static_cast<Eigen::Index>(rows), n);
     for (std::size_t k = 0; k < rows; ++k) {
-        std::vector<double> row{b.tHotK[k], b.feedKgPerS[k], b.xInDb[k],          b.tInK[k],
+        std::vector<double> row{b.tHotK[k], b.feedKgPerS[k], b.xInDb[k],        b.tInK[k],
                                 b.tAmbK[k], b.rhAmb[k],      b.airSpeedMPerS[k]};
         if (m_options.useProxies) {
-            for (double x : {p.proxyXHdtDb[k], p.proxyTHdtK[k], p.proxyXConvDb[k], p.proxyTConvK[k],
-                             p.proxyXMixDb[k], p.proxyTMixK[k], units::dryToWetPct(p.xOutDb[k]), p.tOutK[k]}) {
+            for (double x :
+                 {p.proxyXHdtDb[k], p.proxyTHdtK[k], p.proxyXConvDb[k], p.proxyTConvK[k], p.proxyXMixDb[k],
+                  p.proxyTMixK[k], units::dryToWetPct(p.xOutDb[k]), p.tOutK[k]}) {
                 row.push_back(x);
             }
         }
@@ -140,58 +143,52 @@ Eigen::MatrixXd InputDrivenCorrection::basisOf(const Eigen::MatrixXd& raw, doubl
         const Eigen::VectorXd s = (raw.row(k).transpose() - m_inputMean).cwiseQuotient(m_inputScale);
         z.row(k) = s.cwiseMax(m_inputLow).cwiseMin(m_inputHigh).transpose();
     }
-    if (m_options.basis == InputBasis::LaggedInputs) {
-        const int lags = static_cast<int>(std::floor(m_options.maxLagS / m_options.lagStrideS)) + 1;
-        const auto stride = std::max<Eigen::Index>(1, std::lround(m_options.lagStrideS / stepS));
-        Eigen::MatrixXd phi(rows, 1 + n * lags);
-        phi.col(0).setOnes();
-        for (int l = 0; l < lags; ++l) {
-            for (Eigen::Index k = 0; k < rows; ++k) {
-                // Before the batch's first row the line is taken to have stood at its first inputs.
-                phi.row(k).segment(1 + l * n, n) = z.row(std::max<Eigen::Index>(0, k - l * stride));
-            }
-        }
-        return phi;
-    }
+    const bool bank = m_options.basis != InputBasis::LaggedInputs;
+    const bool lagged = m_options.basis != InputBasis::FilterBank;
     const int stages = m_options.cascadeOrder;
-    const auto bank = static_cast<Eigen::Index>(m_options.timeConstantsS.size());
-    const bool quadratic = m_options.quadraticTimeConstantS > 0;
-    const Eigen::Index products = quadratic ? n * (n + 1) / 2 : 0;
-    Eigen::MatrixXd phi(rows, 1 + n + bank * stages * n + products);
+    const auto taus = bank ? static_cast<Eigen::Index>(m_options.timeConstantsS.size()) : 0;
+    const int lags = lagged ? static_cast<int>(std::floor(m_options.maxLagS / m_options.lagStrideS)) + 1 : 0;
+    Eigen::MatrixXd phi(rows, featureCountFor(n));
     phi.col(0).setOnes();
-    phi.middleCols(1, n) = z;
-    for (Eigen::Index t = 0; t < bank; ++t) {
-        const double a = std::exp(-stepS / m_options.timeConstantsS[static_cast<std::size_t>(t)]);
-        // Each stage starts settled at the first inputs: the line ran before the batch began.
-        Eigen::MatrixXd state = z.row(0).replicate(stages, 1);
-        for (Eigen::Index k = 0; k < rows; ++k) {
-            Eigen::RowVectorXd in = z.row(k);
-            for (int s = 0; s < stages; ++s) {
-                state.row(s) = a * state.row(s) + (1 - a) * in;
-                in = state.row(s);
-                phi.row(k).segment(1 + n + (t * stages + s) * n, n) = state.row(s);
-            }
-        }
-    }
-    if (quadratic) {
-        const double a = std::exp(-stepS / m_options.quadraticTimeConstantS);
-        Eigen::MatrixXd state = z.row(0).replicate(stages, 1);
-        const Eigen::Index at = 1 + n + bank * stages * n;
-        for (Eigen::Index k = 0; k < rows; ++k) {
-            Eigen::RowVectorXd in = z.row(k);
-            for (int s = 0; s < stages; ++s) {
-                state.row(s) = a * state.row(s) + (1 - a) * in;
-                in = state.row(s);
-            }
-            Eigen::Index c = at;
-            for (Eigen::Index i = 0; i < n; ++i) {
-                for (Eigen::Index j = i; j < n; ++j) {
-                    phi(k, c++) = in(i) * in(j);
+    Eigen::Index at = 1;
+    if (bank) {
+        phi.middleCols(at, n) = z;
+        at += n;
+        for (Eigen::Index t = 0; t < taus; ++t, at += stages * n) {
+            const double a = std::exp(-stepS / m_options.timeConstantsS[static_cast<std::size_t>(t)]);
+            // Each stage starts settled at the first inputs: the line ran before the batch began.
+            Eigen::MatrixXd state = z.row(0).replicate(stages, 1);
+            for (Eigen::Index k = 0; k < rows; ++k) {
+                Eigen::RowVectorXd in = z.row(k);
+                for (int s = 0; s < stages; ++s) {
+                    state.row(s) = a * state.row(s) + (1 - a) * in;
+                    in = state.row(s);
+                    phi.row(k).segment(at + s * n, n) = state.row(s);
                 }
             }
         }
     }
+    const auto stride = std::max<Eigen::Index>(1, std::lround(m_options.lagStrideS / stepS));
+    for (int l = 0; l < lags; ++l, at += n) {
+        for (Eigen::Index k = 0; k < rows; ++k) {
+            // Before the batch's first row the line is taken to have stood at its first inputs.
+            phi.row(k).segment(at, n) = z.row(std::max<Eigen::Index>(0, k - l * stride));
+        }
+    }
     return phi;
+}
+
+Eigen::Index InputDrivenCorrection::featureCountFor(int n) const {
+    const auto& o = m_options;
+    const Eigen::Index bank =
+        o.basis == InputBasis::LaggedInputs
+            ? 0
+            : n + static_cast<Eigen::Index>(o.timeConstantsS.size()) * o.cascadeOrder * n;
+    const Eigen::Index lagged =
+        o.basis == InputBasis::FilterBank
+            ? 0
+            : n * (static_cast<Eigen::Index>(std::floor(o.maxLagS / o.lagStrideS)) + 1);
+    return 1 + bank + lagged;
 }
 
 Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<BatchView>& views,
@@ -287,7 +284,8 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
             .cwiseSqrt()
             .unaryExpr([](double s) { return s > 1e-9 ? s : 1.0; });
     m.m_featureScale(0) = 1;
-    phi = (phi.rowwise() - m.m_featureMean.transpose()).array().rowwise() / m.m_featureScale.transpose().array();
+    phi = (phi.rowwise() - m.m_featureMean.transpose()).array().rowwise() /
+          m.m_featureScale.transpose().array();
 
     // Transmitter spikes in the outputs: one fit, rows far outside the robust spread dropped.
     std::vector<char> inlier(static_cast<std::size_t>(rows), 1);
@@ -313,8 +311,10 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
     for (const auto& s : segments) {
         folds = std::max(folds, s.fold + 1);
     }
-    std::vector<Eigen::MatrixXd> foldGram(static_cast<std::size_t>(folds), Eigen::MatrixXd::Zero(features, features));
-    std::vector<Eigen::MatrixXd> foldRhs(static_cast<std::size_t>(folds), Eigen::MatrixXd::Zero(features, kOutputs));
+    std::vector<Eigen::MatrixXd> foldGram(static_cast<std::size_t>(folds),
+                                          Eigen::MatrixXd::Zero(features, features));
+    std::vector<Eigen::MatrixXd> foldRhs(static_cast<std::size_t>(folds),
+                                         Eigen::MatrixXd::Zero(features, kOutputs));
     for (const auto& s : segments) {
         Eigen::MatrixXd p = phi.middleRows(s.begin, s.end - s.begin);
         Eigen::MatrixXd t = y.middleRows(s.begin, s.end - s.begin);
@@ -346,6 +346,7 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
     for (int o = 0; o < kOutputs; ++o) {
         double best = std::numeric_limits<double>::infinity();
         double bestPenalty = options.ridgeGrid.front();
+        Eigen::VectorXd bestHeldOut; // each row's forecast by the fit without its fold
         for (double ridge : options.ridgeGrid) {
             const double penalty = ridge * double(rows);
             std::vector<Eigen::VectorXd> beta(static_cast<std::size_t>(folds));
@@ -354,38 +355,55 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
                     ridgeSolve(gram - foldGram[static_cast<std::size_t>(f)],
                                rhs.col(o) - foldRhs[static_cast<std::size_t>(f)].col(o), penalty);
             }
-            double abs = 0;
+            Eigen::VectorXd heldOut(rows);
             for (const auto& s : segments) {
-                abs += (y.col(o).segment(s.begin, s.end - s.begin) -
-                        phi.middleRows(s.begin, s.end - s.begin) * beta[static_cast<std::size_t>(s.fold)])
-                           .cwiseAbs()
-                           .sum();
+                heldOut.segment(s.begin, s.end - s.begin) =
+                    phi.middleRows(s.begin, s.end - s.begin) * beta[static_cast<std::size_t>(s.fold)];
             }
+            const double abs = (y.col(o) - heldOut).cwiseAbs().sum();
             if (abs < best) {
                 best = abs;
                 bestPenalty = ridge;
+                bestHeldOut = std::move(heldOut);
             }
         }
-        const bool better = best < pbmAbs[o];
+        // How much of the correction to keep: the share κ ∈ [0, 1] (steps of 0.05) with the
+        // smallest held-out absolute error. A correction that partly does not carry over from one
+        // batch to the next (an unmeasured drift the closed loop's inputs echo) is shrunk, not
+        // taken whole; κ = 0 is the PBM itself.
+        double shrink = 0;
+        best = pbmAbs[o]; // κ = 0
+        for (int step = 1; step <= 20; ++step) {
+            const double kappa = 0.05 * step;
+            const double abs = (y.col(o) - kappa * bestHeldOut).cwiseAbs().sum();
+            if (abs < best) {
+                best = abs;
+                shrink = kappa;
+            }
+        }
+        const bool better = shrink > 0;
         (o == 0 ? val.maeMoisturePbm : val.maeTemperaturePbm) = pbmAbs[o] / double(rows);
-        (o == 0 ? val.maeMoistureCorrected : val.maeTemperatureCorrected) = (better ? best : pbmAbs[o]) / double(rows);
+        (o == 0 ? val.maeMoistureCorrected : val.maeTemperatureCorrected) = best / double(rows);
         (o == 0 ? val.moistureUsed : val.temperatureUsed) = better;
         if (o == 0) {
             val.ridge = bestPenalty;
         }
         if (better) {
-            m.m_coefficients.col(o) = ridgeSolve(gram, rhs.col(o), bestPenalty * double(rows));
+            m.m_coefficients.col(o) = shrink * ridgeSolve(gram, rhs.col(o), bestPenalty * double(rows));
         } else {
-            val.note += std::string(val.note.empty() ? "" : " ") + (o == 0 ? "Outlet moisture" : "Outlet temperature") +
-                        ": the input-driven correction did not beat the physics model on held-out parts of the "
-                        "training data, so the physics model's free run is used as it is.";
+            val.note +=
+                std::string(val.note.empty() ? "" : " ") +
+                (o == 0 ? "Outlet moisture" : "Outlet temperature") +
+                ": the input-driven correction did not beat the physics model on held-out parts of the "
+                "training data, so the physics model's free run is used as it is.";
         }
     }
     return m;
 }
 
 void InputDrivenCorrection::correct(const data::SiBatch& batch, const physics::SimulationResult& pbm,
-                                    std::vector<double>& moisturePct, std::vector<double>& temperatureC) const {
+                                    std::vector<double>& moisturePct,
+                                    std::vector<double>& temperatureC) const {
     moisturePct.assign(batch.rows(), kNaN);
     temperatureC.assign(batch.rows(), kNaN);
     if (m_coefficients.size() == 0) {
@@ -421,92 +439,6 @@ physics::SimulationResult InputDrivenCorrection::corrected(const data::SiBatch& 
         }
     }
     return out;
-}
-
-std::string InputDrivenCorrection::toJson() const {
-    nlohmann::json j;
-    const auto& o = m_options;
-    j["basis"] = o.basis == InputBasis::FilterBank ? "filter_bank" : "lagged_inputs";
-    j["use_proxies"] = o.useProxies;
-    j["time_constants_s"] = o.timeConstantsS;
-    j["cascade_order"] = o.cascadeOrder;
-    j["quadratic_time_constant_s"] = o.quadraticTimeConstantS;
-    j["max_lag_s"] = o.maxLagS;
-    j["lag_stride_s"] = o.lagStrideS;
-    j["range_margin"] = o.rangeMargin;
-    j["input_mean"] = vectorToJson(m_inputMean);
-    j["input_scale"] = vectorToJson(m_inputScale);
-    j["input_low"] = vectorToJson(m_inputLow);
-    j["input_high"] = vectorToJson(m_inputHigh);
-    j["feature_mean"] = vectorToJson(m_featureMean);
-    j["feature_scale"] = vectorToJson(m_featureScale);
-    j["coefficients"] = matrixToJson(m_coefficients);
-    j["step_s"] = m_stepS;
-    const auto& v = m_validation;
-    j["validation"] = {{"ridge", v.ridge},
-                       {"folds", v.folds},
-                       {"mae_moisture_pbm", v.maeMoisturePbm},
-                       {"mae_moisture_corrected", v.maeMoistureCorrected},
-                       {"mae_temperature_pbm", v.maeTemperaturePbm},
-                       {"mae_temperature_corrected", v.maeTemperatureCorrected},
-                       {"moisture_used", v.moistureUsed},
-                       {"temperature_used", v.temperatureUsed},
-                       {"note", v.note}};
-    return j.dump();
-}
-
-Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::string& text) {
-    try {
-        const auto j = nlohmann::json::parse(text);
-        InputDrivenCorrection m;
-        auto& o = m.m_options;
-        o.basis = j.at("basis").get<std::string>() == "lagged_inputs" ? InputBasis::LaggedInputs
-                                                                     : InputBasis::FilterBank;
-        o.useProxies = j.at("use_proxies").get<bool>();
-        o.timeConstantsS = j.at("time_constants_s").get<std::vector<double>>();
-        o.cascadeOrder = j.at("cascade_order").get<int>();
-        o.quadraticTimeConstantS = j.at("quadratic_time_constant_s").get<double>();
-        o.maxLagS = j.at("max_lag_s").get<double>();
-        o.lagStrideS = j.at("lag_stride_s").get<double>();
-        o.rangeMargin = j.at("range_margin").get<double>();
-        if (auto s = o.validate(); !s) {
-            return s.error();
-        }
-        m.m_inputMean = vectorFromJson(j.at("input_mean"));
-        m.m_inputScale = vectorFromJson(j.at("input_scale"));
-        m.m_inputLow = vectorFromJson(j.at("input_low"));
-        m.m_inputHigh = vectorFromJson(j.at("input_high"));
-        m.m_featureMean = vectorFromJson(j.at("feature_mean"));
-        m.m_featureScale = vectorFromJson(j.at("feature_scale"));
-        m.m_coefficients = matrixFromJson(j.at("coefficients"));
-        m.m_stepS = j.at("step_s").get<double>();
-        const auto& v = j.at("validation");
-        auto& val = m.m_validation;
-        val.ridge = v.at("ridge").get<double>();
-        val.folds = v.at("folds").get<int>();
-        val.maeMoisturePbm = v.at("mae_moisture_pbm").get<double>();
-        val.maeMoistureCorrected = v.at("mae_moisture_corrected").get<double>();
-        val.maeTemperaturePbm = v.at("mae_temperature_pbm").get<double>();
-        val.maeTemperatureCorrected = v.at("mae_temperature_corrected").get<double>();
-        val.moistureUsed = v.at("moisture_used").get<bool>();
-        val.temperatureUsed = v.at("temperature_used").get<bool>();
-        val.note = v.at("note").get<std::string>();
-        const int n = m.inputCount();
-        const Eigen::Index features = m.m_options.basis == InputBasis::FilterBank
-                                          ? 1 + n + static_cast<Eigen::Index>(o.timeConstantsS.size()) *
-                                                        o.cascadeOrder * n +
-                                                    (o.quadraticTimeConstantS > 0 ? n * (n + 1) / 2 : 0)
-                                          : 1 + n * (static_cast<Eigen::Index>(std::floor(o.maxLagS / o.lagStrideS)) + 1);
-        if (m.m_inputMean.size() != n || m.m_inputScale.size() != n || m.m_inputLow.size() != n ||
-            m.m_inputHigh.size() != n || m.m_featureMean.size() != features ||
-            m.m_featureScale.size() != features || m.m_coefficients.rows() != features ||
-            m.m_coefficients.cols() != kOutputs) {
-            return Error{ErrorKind::BadInput, "input_driven", "sizes of the stored correction do not agree"};
-        }
-        return m;
-    } catch (const std::exception& e) {
-        return Error{ErrorKind::BadInput, "input_driven", e.what()};
-    }
 }
 
 } // namespace drytwin::residual

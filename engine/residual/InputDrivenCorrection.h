@@ -22,6 +22,8 @@ enum class InputBasis {
     /// The inputs at lags 0, s, 2s … up to a maximum (a FIR ridge regression): the reference a
     /// system-identification reviewer would try first (issue #42's anchor).
     LaggedInputs,
+    /// Both side by side: the filter bank's long memory and the lags' sharp delays.
+    FilterBankAndLags,
 };
 
 /// @brief Options of the input-driven correction (issue #42): a linear model of the PBM's
@@ -34,11 +36,6 @@ struct InputDrivenOptions {
     /// (the second stage's impulse response peaks at τ, which carries transport delays).
     std::vector<double> timeConstantsS{6, 20, 60, 180, 540};
     int cascadeOrder = 2;
-    /// Filter bank: also every product of two inputs (squares too) after the last stage of the
-    /// cascade with this time constant [s] (0: none). The PBM's structural error is not linear
-    /// in the operating point (the gas cools more at a high load and a wet feed), and the
-    /// product of two delayed inputs is the lowest-order form of that.
-    double quadraticTimeConstantS = 60;
     /// Lagged inputs: the largest lag and the stride [s].
     double maxLagS = 300;
     double lagStrideS = 10;
@@ -59,7 +56,7 @@ struct InputDrivenOptions {
 struct InputDrivenValidation {
     double ridge = 0;
     int folds = 0;
-    double maeMoisturePbm = 0, maeMoistureCorrected = 0; ///< % wb, held-out folds
+    double maeMoisturePbm = 0, maeMoistureCorrected = 0;       ///< % wb, held-out folds
     double maeTemperaturePbm = 0, maeTemperatureCorrected = 0; ///< °C
     bool moistureUsed = false, temperatureUsed = false;
     std::string note; ///< why an output's correction is not used, in plain words; empty if both are
@@ -80,11 +77,12 @@ public:
 
     /// @brief The correction for every row of @p batch (% wb in @p moisturePct, °C in
     /// @p temperatureC), NaN where no input was ever finite yet. Missing inputs hold their last value.
-    void correct(const data::SiBatch& batch, const physics::SimulationResult& pbm, std::vector<double>& moisturePct,
-                 std::vector<double>& temperatureC) const;
+    void correct(const data::SiBatch& batch, const physics::SimulationResult& pbm,
+                 std::vector<double>& moisturePct, std::vector<double>& temperatureC) const;
     /// @brief The PBM's run with the correction added to its outlet outputs (rows the
     /// correction cannot form keep the PBM's values).
-    physics::SimulationResult corrected(const data::SiBatch& batch, const physics::SimulationResult& pbm) const;
+    physics::SimulationResult corrected(const data::SiBatch& batch,
+                                        const physics::SimulationResult& pbm) const;
 
     bool used() const { return m_validation.moistureUsed || m_validation.temperatureUsed; }
     const InputDrivenValidation& validation() const { return m_validation; }
@@ -102,11 +100,12 @@ private:
     /// clipped inputs.
     Eigen::MatrixXd basisOf(const Eigen::MatrixXd& inputs, double stepS) const;
     int inputCount() const;
+    Eigen::Index featureCountFor(int inputs) const;
 
     InputDrivenOptions m_options;
     Eigen::VectorXd m_inputMean, m_inputScale, m_inputLow, m_inputHigh; ///< standardised range
-    Eigen::VectorXd m_featureMean, m_featureScale;                     ///< of the basis columns
-    Eigen::MatrixXd m_coefficients;                                    ///< features × 2 (% wb, °C)
+    Eigen::VectorXd m_featureMean, m_featureScale;                      ///< of the basis columns
+    Eigen::MatrixXd m_coefficients;                                     ///< features × 2 (% wb, °C)
     double m_stepS = 1.0;
     InputDrivenValidation m_validation;
 };

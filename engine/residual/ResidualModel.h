@@ -3,10 +3,12 @@
 #include "common/Error.h"
 #include "data/SiBatch.h"
 #include "physics/LineSimulator.h"
+#include "residual/InputDrivenCorrection.h"
 #include "residual/PolynomialDictionary.h"
 #include "residual/StabilityConstraint.h"
 
 #include <Eigen/Dense>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -86,6 +88,29 @@ struct ResidualOptions {
     double moistureTargetPct = 13.0;
     double moistureLowPct = 12.0;
     double moistureHighPct = 14.0;
+    /// Issue #42: the input-driven correction (inputs, disturbances and the PBM's proxies through
+    /// a filter bank, never a measured output) learnt first, on the PBM's free-run error; the
+    /// lifted model then learns the error left on top of it. The free-run hybrid (what-if runs,
+    /// the MPC's horizon, the 3D line) is the PBM plus this correction. false: the PBM is the base.
+    bool inputDriven = true;
+    InputDrivenOptions inputDrivenOptions; ///< its useProxies follows useProxies above
+    /// Velocity form, issue #42: each horizon's learnt correction is weighted by how the forecasts
+    /// already realised in the same record did (RealisedWeight: half-life in steps, prior in rows;
+    /// half-life 0: the trained κ_H alone). A data set unlike the training data (an ambient
+    /// temperature never seen, a transmitter that lags) then falls back on the references.
+    /// The defaults weigh the record so far nearly as a whole (a batch is one to two hours) and
+    /// trust the trained κ_H for its first half minute only: what the guard is for is a data set
+    /// that differs throughout, not a passing moment.
+    double realisedWeightHalfLifeSteps = 1800;
+    double realisedWeightPriorRows = 30;
+    /// Inputs z are clipped to their training range widened by this share of its span on each
+    /// side before the dictionary lifts them: an input the line never showed, or a spike, cannot
+    /// drive a polynomial far outside what it learnt (issue #42).
+    double inputRangeMargin = 0.25;
+    /// Velocity form with 3 or more training batches: s_H and κ_H cross-validated over whole
+    /// batches (batch i in fold i mod correctionFolds) instead of blocks of every batch, so that
+    /// they say how the correction does on a batch it never saw, which is how it is used.
+    bool correctionFoldsByBatch = true;
     double alphaMax = 0.999;  ///< largest contraction factor α accepted
     double radiusMax = 0.995; ///< eigenvalues beyond this radius are pulled onto it
     Status validate() const;
@@ -96,6 +121,9 @@ struct BatchView {
     const data::SiBatch* batch = nullptr;
     const physics::SimulationResult* pbm = nullptr; ///< over every row of the batch
     data::RowRange rows;
+    /// pbm already holds the residual model's input-driven correction (set by the model itself
+    /// when it forms corrected views; callers pass the PBM's own run).
+    bool baseCorrected = false;
 };
 
 /// @brief Hybrid predictions (Eq. 21) for the rows of a view; NaN where none can be made.
@@ -170,6 +198,8 @@ public:
     Eigen::Vector2d referenceChangeAt(int h) const;
     const std::vector<int>& correctionWeightHorizons() const { return m_shrinkHorizons; }
     double trainingSeconds() const { return m_trainSeconds; }
+    /// The input-driven correction under the lifted model (null: none, the PBM is the base).
+    const InputDrivenCorrection* inputDriven() const { return m_inputDriven.get(); }
 
     /// @brief Everything needed to predict, as a JSON object (stored in the model file).
     std::string toJson() const;
@@ -180,6 +210,19 @@ private:
     /// Algorithm 1 once on the given rows (train() adds the velocity form's κ_H around it).
     static Expected<ResidualModel> trainOnce(const std::vector<BatchView>& training,
                                              const ResidualOptions& options);
+    /// train() on views whose base already holds the input-driven correction.
+    static Expected<ResidualModel> trainOnBase(const std::vector<BatchView>& training,
+                                               const ResidualOptions& options);
+    /// The views' PBM runs with the input-driven correction added (kept alive in @p runs), or
+    /// the views as they are when there is none or it is already in.
+    std::vector<BatchView> correctedViews(const std::vector<BatchView>& views,
+                                          std::vector<physics::SimulationResult>& runs) const;
+    /// Rewrites residualX/T of @p p as the hybrid minus the view's own (uncorrected) PBM.
+    static void residualAgainstPbm(const BatchView& v, HybridPrediction& p);
+    /// The realised-weight guard on one horizon's forecasts of a corrected view: the learnt part
+    /// (@p learnedX, @p learnedT, % wb and °C, per row of the view) reweighted in place in @p p.
+    void weighByRealisedSkill(const BatchView& v, std::size_t horizon, const std::vector<double>& learnedX,
+                              const std::vector<double>& learnedT, HybridPrediction& p) const;
     bool features(const BatchView& v, std::size_t k, Eigen::VectorXd& zLin, double& u,
                   Eigen::VectorXd& d) const;
     bool eq27() const {
@@ -223,6 +266,8 @@ private:
     std::vector<int> m_shrinkHorizons;                 ///< horizons of κ_H [steps]
     std::vector<Eigen::Vector2d> m_shrink;             ///< κ_H for X_out and T_out
     std::vector<Eigen::Vector2d> m_referenceByHorizon; ///< s_H for X_out and T_out
+    std::shared_ptr<const InputDrivenCorrection> m_inputDriven;
+    Eigen::VectorXd m_inputLow, m_inputHigh; ///< clip range of the unscaled inputs z (empty: none)
 };
 
 /// @brief Observed residual e = y_obs − ŷ_mech (Eq. 20) of a row: moisture in % wb, temperature in °C.

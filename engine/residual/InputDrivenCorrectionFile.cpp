@@ -1,0 +1,97 @@
+// How the input-driven correction is stored in model files (JSON), and read back.
+#include "residual/EigenJson.h"
+#include "residual/InputDrivenCorrection.h"
+
+#include <nlohmann/json.hpp>
+
+namespace drytwin::residual {
+
+namespace {
+constexpr int kOutputs = 2; // outlet moisture (% wb) and temperature (°C)
+} // namespace
+
+std::string InputDrivenCorrection::toJson() const {
+    nlohmann::json j;
+    const auto& o = m_options;
+    j["basis"] = o.basis == InputBasis::FilterBank     ? "filter_bank"
+                 : o.basis == InputBasis::LaggedInputs ? "lagged_inputs"
+                                                       : "filter_bank_and_lags";
+    j["use_proxies"] = o.useProxies;
+    j["time_constants_s"] = o.timeConstantsS;
+    j["cascade_order"] = o.cascadeOrder;
+    j["max_lag_s"] = o.maxLagS;
+    j["lag_stride_s"] = o.lagStrideS;
+    j["range_margin"] = o.rangeMargin;
+    j["input_mean"] = vectorToJson(m_inputMean);
+    j["input_scale"] = vectorToJson(m_inputScale);
+    j["input_low"] = vectorToJson(m_inputLow);
+    j["input_high"] = vectorToJson(m_inputHigh);
+    j["feature_mean"] = vectorToJson(m_featureMean);
+    j["feature_scale"] = vectorToJson(m_featureScale);
+    j["coefficients"] = matrixToJson(m_coefficients);
+    j["step_s"] = m_stepS;
+    const auto& v = m_validation;
+    j["validation"] = {{"ridge", v.ridge},
+                       {"folds", v.folds},
+                       {"mae_moisture_pbm", v.maeMoisturePbm},
+                       {"mae_moisture_corrected", v.maeMoistureCorrected},
+                       {"mae_temperature_pbm", v.maeTemperaturePbm},
+                       {"mae_temperature_corrected", v.maeTemperatureCorrected},
+                       {"moisture_used", v.moistureUsed},
+                       {"temperature_used", v.temperatureUsed},
+                       {"note", v.note}};
+    return j.dump();
+}
+
+Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::string& text) {
+    try {
+        const auto j = nlohmann::json::parse(text);
+        InputDrivenCorrection m;
+        auto& o = m.m_options;
+        const auto basis = j.at("basis").get<std::string>();
+        o.basis = basis == "lagged_inputs"          ? InputBasis::LaggedInputs
+                  : basis == "filter_bank_and_lags" ? InputBasis::FilterBankAndLags
+                                                    : InputBasis::FilterBank;
+        o.useProxies = j.at("use_proxies").get<bool>();
+        o.timeConstantsS = j.at("time_constants_s").get<std::vector<double>>();
+        o.cascadeOrder = j.at("cascade_order").get<int>();
+        o.maxLagS = j.at("max_lag_s").get<double>();
+        o.lagStrideS = j.at("lag_stride_s").get<double>();
+        o.rangeMargin = j.at("range_margin").get<double>();
+        if (auto s = o.validate(); !s) {
+            return s.error();
+        }
+        m.m_inputMean = vectorFromJson(j.at("input_mean"));
+        m.m_inputScale = vectorFromJson(j.at("input_scale"));
+        m.m_inputLow = vectorFromJson(j.at("input_low"));
+        m.m_inputHigh = vectorFromJson(j.at("input_high"));
+        m.m_featureMean = vectorFromJson(j.at("feature_mean"));
+        m.m_featureScale = vectorFromJson(j.at("feature_scale"));
+        m.m_coefficients = matrixFromJson(j.at("coefficients"));
+        m.m_stepS = j.at("step_s").get<double>();
+        const auto& v = j.at("validation");
+        auto& val = m.m_validation;
+        val.ridge = v.at("ridge").get<double>();
+        val.folds = v.at("folds").get<int>();
+        val.maeMoisturePbm = v.at("mae_moisture_pbm").get<double>();
+        val.maeMoistureCorrected = v.at("mae_moisture_corrected").get<double>();
+        val.maeTemperaturePbm = v.at("mae_temperature_pbm").get<double>();
+        val.maeTemperatureCorrected = v.at("mae_temperature_corrected").get<double>();
+        val.moistureUsed = v.at("moisture_used").get<bool>();
+        val.temperatureUsed = v.at("temperature_used").get<bool>();
+        val.note = v.at("note").get<std::string>();
+        const int n = m.inputCount();
+        const Eigen::Index features = m.featureCountFor(n);
+        if (m.m_inputMean.size() != n || m.m_inputScale.size() != n || m.m_inputLow.size() != n ||
+            m.m_inputHigh.size() != n || m.m_featureMean.size() != features ||
+            m.m_featureScale.size() != features || m.m_coefficients.rows() != features ||
+            m.m_coefficients.cols() != kOutputs) {
+            return Error{ErrorKind::BadInput, "input_driven", "sizes of the stored correction do not agree"};
+        }
+        return m;
+    } catch (const std::exception& e) {
+        return Error{ErrorKind::BadInput, "input_driven", e.what()};
+    }
+}
+
+} // namespace drytwin::residual

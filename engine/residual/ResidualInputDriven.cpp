@@ -1,0 +1,115 @@
+// How the lifted model sits on the input-driven correction (issue #42): training on the corrected
+// base, the corrected views every forecast starts from, and the realised-weight guard.
+#include "residual/RealisedWeight.h"
+#include "residual/ResidualModelInternal.h"
+
+#include "common/Units.h"
+
+#include <chrono>
+
+namespace drytwin::residual {
+
+using namespace detail;
+
+Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& training,
+                                             const ResidualOptions& options) {
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    if (!options.inputDriven) {
+        return trainOnBase(training, options);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    InputDrivenOptions inputOptions = options.inputDrivenOptions;
+    inputOptions.useProxies = options.useProxies;
+    auto correction = InputDrivenCorrection::train(training, inputOptions);
+    if (!correction) {
+        return correction.error();
+    }
+    ResidualModel withCorrection;
+    withCorrection.m_inputDriven = std::make_shared<const InputDrivenCorrection>(std::move(*correction));
+    std::vector<physics::SimulationResult> runs;
+    auto m = trainOnBase(withCorrection.correctedViews(training, runs), options);
+    if (!m) {
+        return m.error();
+    }
+    m->m_inputDriven = std::move(withCorrection.m_inputDriven);
+    m->m_trainSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return m;
+}
+
+std::vector<BatchView> ResidualModel::correctedViews(const std::vector<BatchView>& views,
+                                                     std::vector<physics::SimulationResult>& runs) const {
+    std::vector<BatchView> out = views;
+    if (!m_inputDriven || !m_inputDriven->used()) {
+        return out;
+    }
+    // One corrected run per distinct batch (a batch may appear in several views).
+    std::vector<std::pair<const physics::SimulationResult*, std::size_t>> done;
+    runs.clear();
+    runs.reserve(views.size());
+    for (auto& v : out) {
+        if (v.baseCorrected) {
+            continue;
+        }
+        std::size_t index = runs.size();
+        for (const auto& [pbm, i] : done) {
+            if (pbm == v.pbm) {
+                index = i;
+            }
+        }
+        if (index == runs.size()) {
+            runs.push_back(m_inputDriven->corrected(*v.batch, *v.pbm));
+            done.emplace_back(v.pbm, index);
+        }
+        v.pbm = &runs[index];
+        v.baseCorrected = true;
+    }
+    return out;
+}
+
+void ResidualModel::residualAgainstPbm(const BatchView& v, HybridPrediction& p) {
+    for (std::size_t i = 0; i < v.rows.size(); ++i) {
+        const std::size_t k = v.rows.begin + i;
+        p.residualXPct[i] = p.xOutPct[i] - units::dryToWetPct(v.pbm->xOutDb[k]);
+        p.residualTC[i] = p.tOutC[i] - units::kelvinToCelsius(v.pbm->tOutK[k]);
+    }
+}
+
+void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon,
+                                         const std::vector<double>& learnedX,
+                                         const std::vector<double>& learnedT, HybridPrediction& p) const {
+    if (!velocity() || m_options.realisedWeightHalfLifeSteps <= 0) {
+        return;
+    }
+    const std::size_t count = v.rows.size();
+    for (int j = 0; j < kOutputs; ++j) {
+        auto& residual = j == 0 ? p.residualXPct : p.residualTC;
+        const auto& learned = j == 0 ? learnedX : learnedT;
+        std::vector<double> reference(count), measured(count, kNaN), combined;
+        for (std::size_t i = 0; i < count; ++i) {
+            const std::size_t k = v.rows.begin + i;
+            reference[i] = residual[i] - learned[i];
+            Eigen::Vector2d e;
+            if (observedResidual(*v.batch, *v.pbm, k, e(0), e(1))) {
+                measured[i] = e(j);
+            }
+        }
+        applyRealisedWeights(reference, learned, measured, horizon, m_options.realisedWeightHalfLifeSteps,
+                             m_options.realisedWeightPriorRows, combined);
+        for (std::size_t i = 0; i < count; ++i) {
+            const std::size_t k = v.rows.begin + i;
+            if (!std::isfinite(combined[i])) {
+                continue;
+            }
+            residual[i] = combined[i];
+            if (j == 0) {
+                p.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[k]) + combined[i]; // Eq. (21)
+            } else {
+                p.tOutC[i] = units::kelvinToCelsius(v.pbm->tOutK[k]) + combined[i];
+            }
+        }
+    }
+}
+
+} // namespace drytwin::residual
