@@ -177,8 +177,9 @@ private Q_SLOTS:
         QVERIFY(v.message.find(v.beatsReferences ? "it beats both" : "does NOT beat") != std::string::npos);
     }
 
-    /// The nested form with early stopping beats the trivial references one step ahead on data it
-    /// never saw (the level-predicting network this replaced was at 2-4 times persistence).
+    /// The nested form with early stopping beats the trivial references one step and 30 steps
+    /// ahead on data it never saw (0.95 and 0.87 when written; the level-predicting network this
+    /// replaced was at 2-4 times persistence).
     void oneStepSkillOnHeldOutData() {
         const auto& m = *m_model;
         const std::vector<int> horizons{1, 30};
@@ -195,7 +196,7 @@ private Q_SLOTS:
             }
             const double skill = lstm[h].moisture.mae / reference;
             qInfo("X_out skill at horizon %d: %.3f", horizons[h], skill);
-            QVERIFY2(skill < (h == 0 ? 1.1 : 1.5), qPrintable(QString::number(skill)));
+            QVERIFY2(skill < 1.0, qPrintable(QString::number(skill))); // beats both references
         }
     }
 
