@@ -9,6 +9,7 @@
 #include "plant/Mechanisms.h"
 #include "workflow/Session.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -186,6 +187,15 @@ void printEvaluation(const evaluation::EvaluationResult& ev) {
     }
 }
 
+void printLstmValidation(const baselines::LstmBaseline& lstm) {
+    // Whether the LSTM beats the trivial references on its validation part; when it does not (or
+    // was not checked), that is flagged where nobody can miss it.
+    const auto& v = lstm.validation();
+    std::printf("%-20s %s%s\n", "lstm", v.validated && v.beatsReferences ? "" : "WARNING: ",
+                v.message.empty() ? "no validation record in the model file (trained before issue #42)"
+                                  : v.message.c_str());
+}
+
 void printTraining(const workflow::TrainResult& t) {
     for (const auto* m : {t.pgrlCc.get(), t.extInput.get()}) {
         const auto& c = m->stability();
@@ -225,9 +235,15 @@ void printTraining(const workflow::TrainResult& t) {
         }
         std::printf("\n");
     }
-    std::printf("%-20s trained in %.1f s, final training loss %.4g (standardised)\n", "lstm",
-                t.lstm->trainingSeconds(),
-                t.lstm->lossHistory().empty() ? std::nan("") : t.lstm->lossHistory().back());
+    {
+        const auto& lstm = *t.lstm;
+        const auto& losses = lstm.lossHistory();
+        const auto kept = static_cast<std::size_t>(std::max(1, lstm.validation().bestEpoch));
+        std::printf("%-20s trained in %.1f s, %s; training loss %.4g (Huber, standardised step change)\n",
+                    "lstm", lstm.trainingSeconds(), lstm.ending().message.c_str(),
+                    kept <= losses.size() ? losses[kept - 1] : std::nan(""));
+        printLstmValidation(lstm);
+    }
     const auto& cmp = t.pgrlCc->stabilityComparison();
     std::printf(
         "Eq. 30 training loss (per unit weight): unconstrained %.6g (radius %.5f), eigenvalues pulled "

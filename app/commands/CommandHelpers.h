@@ -24,6 +24,9 @@ bool calibrateOptions(const CommandOptions& o, workflow::CalibrateOptions& optio
 void printCalibration(const workflow::CalibrateResult& result);
 void printEvaluation(const evaluation::EvaluationResult& ev);
 void printTraining(const workflow::TrainResult& t);
+/// @brief The LSTM baseline's verdict on its validation part, one line, flagged when it does not
+/// beat the trivial references.
+void printLstmValidation(const baselines::LstmBaseline& lstm);
 void printAblation(const hybrid::AblationResult& a);
 /// @brief The training options of the command line; false with a message on a malformed one.
 bool trainOptions(const CommandOptions& o, workflow::TrainOptions& options, int& exitCode);

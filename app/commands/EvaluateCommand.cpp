@@ -32,6 +32,9 @@ int runEvaluate(const CommandOptions& o) {
         return fail(result.error());
     }
     printEvaluation(result->evaluation);
+    if (const auto& lstm = session.model().lstm) {
+        printLstmValidation(*lstm); // the held-out table above, beside what its training part said
+    }
     if (!o.jsonPath.empty()) {
         if (auto st = writeFileAtomically(o.jsonPath, io::evaluationJson(result->evaluation)); !st) {
             return fail(st.error());

@@ -1,84 +1,20 @@
 #include "baselines/LstmBaseline.h"
 
-#include "common/Units.h"
-#include <chrono>
-#include <cmath>
+#include "baselines/LstmModel.h"
+
+#include <algorithm>
 #include <nlohmann/json.hpp>
-#include <random>
-#include <torch/torch.h>
 
 namespace drytwin::baselines {
 
+using namespace detail;
+
 namespace {
-
-constexpr int kInputs = 8;  // T_hot, feed, X_in, T_in, T_amb, RH, X_out, T_out (measured)
-constexpr int kOutputs = 2; // X_out [% wb], T_out [°C]
-
-/// Raw feature row k of a batch, in file-like units.
-std::array<double, kInputs> rawFeatures(const data::SiBatch& b, std::size_t k) {
-    using namespace units;
-    return {kelvinToCelsius(b.tHotK[k]), kgPerSToKgPerHour(b.feedKgPerS[k]), dryToWetPct(b.xInDb[k]),
-            kelvinToCelsius(b.tInK[k]),  kelvinToCelsius(b.tAmbK[k]),        fractionToPercent(b.rhAmb[k]),
-            dryToWetPct(b.xOutDb[k]),    kelvinToCelsius(b.tOutK[k])};
-}
-
-struct Net : torch::nn::Module {
-    Net(int hidden)
-        : lstm(torch::nn::LSTMOptions(kInputs, hidden).batch_first(true)), head(hidden, kOutputs) {
-        register_module("lstm", lstm);
-        register_module("head", head);
-    }
-    torch::nn::LSTM lstm;
-    torch::nn::Linear head;
-};
-
+constexpr int kFormatVersion = 2;
+constexpr std::size_t kNone = static_cast<std::size_t>(-1);
 } // namespace
 
-struct LstmBaseline::Impl {
-    LstmOptions options;
-    std::shared_ptr<Net> net;
-    std::array<double, kInputs> mean{}, scale{};
-    double trainSeconds = 0;
-    std::vector<double> losses;
-
-    torch::Tensor features(const data::SiBatch& b, std::size_t from, std::size_t to) const {
-        torch::Tensor t = torch::empty({1, static_cast<long>(to - from), kInputs}, torch::kFloat64);
-        auto acc = t.accessor<double, 3>();
-        for (std::size_t k = from; k < to; ++k) {
-            const auto f = rawFeatures(b, k);
-            for (int i = 0; i < kInputs; ++i) {
-                acc[0][static_cast<long>(k - from)][i] =
-                    (f[static_cast<std::size_t>(i)] - mean[static_cast<std::size_t>(i)]) /
-                    scale[static_cast<std::size_t>(i)];
-            }
-        }
-        return t;
-    }
-
-    /// Standardised features of every row of a batch for prediction; a missing cell enters as
-    /// its training mean.
-    torch::Tensor batchFeatures(const data::SiBatch& b) const {
-        return torch::nan_to_num(features(b, 0, b.rows()).to(torch::kFloat32), 0.0);
-    }
-
-    /// The cell's state (h, c) after each row, from one stateful pass over the batch.
-    void statesAfterEachRow(const torch::Tensor& f, std::vector<torch::Tensor>& hs,
-                            std::vector<torch::Tensor>& cs) const {
-        const auto n = static_cast<std::size_t>(f.size(1));
-        hs.assign(n, {});
-        cs.assign(n, {});
-        torch::Tensor hState = torch::zeros({1, 1, options.hidden});
-        torch::Tensor cState = torch::zeros({1, 1, options.hidden});
-        for (std::size_t k = 0; k < n; ++k) {
-            auto r = net->lstm->forward(f.slice(1, static_cast<long>(k), static_cast<long>(k) + 1),
-                                        std::make_tuple(hState, cState));
-            hState = std::get<0>(std::get<1>(r));
-            cState = std::get<1>(std::get<1>(r));
-            hs[k] = hState;
-            cs[k] = cState;
-        }
-    }
-};
+struct LstmBaseline::Impl : LstmModel {};
 
 LstmBaseline::LstmBaseline() : m_impl(std::make_unique<Impl>()) {}
 LstmBaseline::~LstmBaseline() = default;
@@ -86,10 +22,17 @@ LstmBaseline::LstmBaseline(LstmBaseline&&) noexcept = default;
 LstmBaseline& LstmBaseline::operator=(LstmBaseline&&) noexcept = default;
 
 Status LstmOptions::validate() const {
-    if (hidden < 1 || hidden > 512 || sequenceLength < 4 || epochs < 1 || batchSize < 1 || threads < 1 ||
-        !(learningRate > 0 && learningRate < 1)) {
+    if (hidden < 1 || hidden > 512 || sequenceLength < 4 || segmentLength < sequenceLength || epochs < 1 ||
+        batchSize < 1 || threads < 1 || patience < 1 || !(learningRate > 0 && learningRate < 1) ||
+        !(validationFraction >= 0.05 && validationFraction <= 0.5) ||
+        !(clipMargin >= 0 && clipMargin <= 10) || freeRunSteps < 0 || freeRunSteps >= sequenceLength ||
+        !(freeRunWeight >= 0 && freeRunWeight <= 100) || !(highPassSeconds >= 0 && highPassSeconds <= 1e6) ||
+        validationHorizon < 0 || validationHorizon > 3600) {
         return Error{ErrorKind::BadInput, "LSTM options",
-                     "need 1 ≤ hidden ≤ 512, sequence ≥ 4, epochs ≥ 1, batch ≥ 1, threads ≥ 1, 0 < rate < 1"};
+                     "need 1 ≤ hidden ≤ 512, sequence ≥ 4, segment ≥ sequence, epochs ≥ 1, batch ≥ 1, "
+                     "threads ≥ 1, patience ≥ 1, 0 < rate < 1, 0.05 ≤ validation share ≤ 0.5, "
+                     "0 ≤ clip margin ≤ 10, 0 ≤ free-run steps < sequence, 0 ≤ free-run weight ≤ 100, "
+                     "0 ≤ high-pass time ≤ 1e6 s, 0 ≤ validation horizon ≤ 3600"};
     }
     return {};
 }
@@ -100,143 +43,29 @@ double LstmBaseline::trainingSeconds() const {
 const std::vector<double>& LstmBaseline::lossHistory() const {
     return m_impl->losses;
 }
+const std::vector<LstmEpoch>& LstmBaseline::epochs() const {
+    return m_impl->epochs;
+}
+const LstmValidation& LstmBaseline::validation() const {
+    return m_impl->validation;
+}
+const Ending& LstmBaseline::ending() const {
+    return m_impl->ending;
+}
 
 Expected<LstmBaseline> LstmBaseline::train(const std::vector<residual::BatchView>& training,
-                                           const LstmOptions& o, const Progress& progress) {
-    const auto t0 = std::chrono::steady_clock::now();
-    if (auto st = o.validate(); !st) {
-        return st.error();
+                                           const LstmOptions& options, const Progress& progress) {
+    auto trained = trainLstmModel(training, options, progress);
+    if (!trained) {
+        return trained.error();
     }
-    torch::manual_seed(o.seed);
-    torch::set_num_threads(o.threads);
     LstmBaseline model;
-    auto& im = *model.m_impl;
-    im.options = o;
-    // Standardisation from the training rows.
-    std::array<double, kInputs> sum{}, sum2{};
-    std::size_t count = 0;
-    for (const auto& v : training) {
-        for (std::size_t k = v.rows.begin; k < v.rows.end; ++k) {
-            const auto f = rawFeatures(*v.batch, k);
-            bool finite = true;
-            for (double x : f) {
-                finite = finite && std::isfinite(x);
-            }
-            if (!finite) {
-                continue;
-            }
-            for (int i = 0; i < kInputs; ++i) {
-                sum[static_cast<std::size_t>(i)] += f[static_cast<std::size_t>(i)];
-                sum2[static_cast<std::size_t>(i)] +=
-                    f[static_cast<std::size_t>(i)] * f[static_cast<std::size_t>(i)];
-            }
-            ++count;
-        }
-    }
-    if (count < static_cast<std::size_t>(4 * o.sequenceLength)) {
-        return Error{ErrorKind::BadInput, "LSTM training", "too few training rows"};
-    }
-    for (std::size_t i = 0; i < kInputs; ++i) {
-        im.mean[i] = sum[i] / static_cast<double>(count);
-        const double var = sum2[i] / static_cast<double>(count) - im.mean[i] * im.mean[i];
-        im.scale[i] = var > 1e-12 ? std::sqrt(var) : 1.0;
-    }
-    // Training windows: inputs rows k..k+S−1, targets the measured outputs of rows k+1..k+S.
-    std::vector<torch::Tensor> xs, ys;
-    for (const auto& v : training) {
-        const auto s = static_cast<std::size_t>(o.sequenceLength);
-        for (std::size_t k = v.rows.begin; k + s + 1 <= v.rows.end; k += s / 2) {
-            torch::Tensor f = im.features(*v.batch, k, k + s + 1);
-            if (!torch::isfinite(f).all().item<bool>()) {
-                continue; // windows with a missing value are skipped, not zero-filled
-            }
-            xs.push_back(f.slice(1, 0, static_cast<long>(s)));
-            ys.push_back(f.slice(1, 1, static_cast<long>(s) + 1).slice(2, kInputs - kOutputs, kInputs));
-        }
-    }
-    if (xs.empty()) {
-        return Error{ErrorKind::BadInput, "LSTM training", "no complete training window"};
-    }
-    const torch::Tensor X = torch::cat(xs, 0).to(torch::kFloat32);
-    const torch::Tensor Y = torch::cat(ys, 0).to(torch::kFloat32);
-    im.net = std::make_shared<Net>(o.hidden);
-    torch::optim::Adam optimizer(im.net->parameters(), torch::optim::AdamOptions(o.learningRate));
-    const long n = X.size(0);
-    for (int epoch = 0; epoch < o.epochs; ++epoch) {
-        const torch::Tensor perm = torch::randperm(n, torch::kLong);
-        double total = 0;
-        long batches = 0;
-        for (long start = 0; start < n; start += o.batchSize) {
-            const torch::Tensor idx = perm.slice(0, start, std::min(n, start + o.batchSize));
-            optimizer.zero_grad();
-            auto out = std::get<0>(im.net->lstm->forward(X.index_select(0, idx)));
-            const torch::Tensor loss = torch::mse_loss(im.net->head->forward(out), Y.index_select(0, idx));
-            loss.backward();
-            optimizer.step();
-            total += loss.item<double>();
-            ++batches;
-        }
-        im.losses.push_back(total / static_cast<double>(batches));
-        if (reportProgress(progress, "lstm", static_cast<double>(epoch + 1) / o.epochs,
-                           "epoch " + std::to_string(epoch + 1) + ", loss " +
-                               std::to_string(im.losses.back()))) {
-            return cancelledError("lstm");
-        }
-    }
-    im.trainSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    static_cast<LstmModel&>(*model.m_impl) = std::move(*trained);
     return model;
 }
 
 residual::HybridPrediction LstmBaseline::predictAhead(const residual::BatchView& v, int horizon) const {
-    torch::NoGradGuard noGrad;
-    const auto& im = *m_impl;
-    const std::size_t count = v.rows.size();
-    residual::HybridPrediction out = residual::HybridPrediction::unknown(count);
-    const torch::Tensor f = im.batchFeatures(*v.batch);
-    const auto h = static_cast<std::size_t>(std::max(1, horizon));
-    std::vector<torch::Tensor> hs, cs;
-    im.statesAfterEachRow(f, hs, cs);
-    // From each origin k = target − h: one-step output, then feed predictions back (batched).
-    std::vector<long> origins, targets;
-    for (std::size_t i = 0; i < count; ++i) {
-        const std::size_t target = v.rows.begin + i;
-        if (target >= h) {
-            origins.push_back(static_cast<long>(target - h));
-            targets.push_back(static_cast<long>(i));
-        }
-    }
-    if (origins.empty()) {
-        return out;
-    }
-    std::vector<torch::Tensor> h0, c0;
-    for (long o : origins) {
-        h0.push_back(hs[static_cast<std::size_t>(o)]);
-        c0.push_back(cs[static_cast<std::size_t>(o)]);
-    }
-    torch::Tensor hState = torch::cat(h0, 1);
-    torch::Tensor cState = torch::cat(c0, 1);
-    torch::Tensor y = im.net->head->forward(hState.squeeze(0)); // predicted row origin+1, standardised
-    for (std::size_t step = 1; step < h; ++step) {
-        // Inputs of row origin+step (known), outputs replaced by the model's own prediction.
-        std::vector<torch::Tensor> rows;
-        for (long o : origins) {
-            rows.push_back(f.slice(1, o + static_cast<long>(step), o + static_cast<long>(step) + 1));
-        }
-        torch::Tensor in = torch::cat(rows, 0).clone();
-        in.slice(2, kInputs - kOutputs, kInputs) = y.unsqueeze(1);
-        auto r = im.net->lstm->forward(in, std::make_tuple(hState, cState));
-        hState = std::get<0>(std::get<1>(r));
-        cState = std::get<1>(std::get<1>(r));
-        y = im.net->head->forward(hState.squeeze(0));
-    }
-    const auto acc = y.to(torch::kFloat64).contiguous();
-    const auto a = acc.accessor<double, 2>();
-    for (std::size_t j = 0; j < targets.size(); ++j) {
-        const auto i = static_cast<std::size_t>(targets[j]);
-        out.xOutPct[i] = a[static_cast<long>(j)][0] * im.scale[6] + im.mean[6];
-        out.tOutC[i] = a[static_cast<long>(j)][1] * im.scale[7] + im.mean[7];
-    }
-    return out;
+    return predictHorizons(v, {horizon}).front();
 }
 
 std::vector<residual::HybridPrediction>
@@ -250,62 +79,60 @@ LstmBaseline::predictHorizons(const residual::BatchView& v, const std::vector<in
     for (int h : horizons) {
         hMax = std::max(hMax, static_cast<std::size_t>(std::max(1, h)));
     }
-    if (count == 0 || n < 2) {
+    if (count == 0 || n < 2 || horizons.empty()) {
         return out;
-    }
-    const torch::Tensor f = im.batchFeatures(*v.batch);
-    torch::Tensor allH, allC;
-    {
-        std::vector<torch::Tensor> hs, cs;
-        im.statesAfterEachRow(f, hs, cs);
-        allH = torch::cat(hs, 1);
-        allC = torch::cat(cs, 1);
     }
     // Every origin whose prediction lands in the view at some horizon up to hMax.
     const std::size_t lo = v.rows.begin > hMax ? v.rows.begin - hMax : 0;
-    const std::size_t hi = v.rows.end - 1; // origins lo … hi−1 (targets ≥ origin + 1)
+    const std::size_t hi = std::min(v.rows.end, n) - 1; // origins lo … hi−1 (targets ≥ origin + 1)
     if (hi <= lo) {
         return out;
     }
+    Carry carry;
+    const auto in = im.inputs(*v.batch, 0, n, carry);
+    const torch::Tensor& f = in.features;
+    const auto states = im.statesAfter(f, lo, hi);
     const auto origins = torch::arange(static_cast<long>(lo), static_cast<long>(hi), torch::kLong);
-    torch::Tensor hState = allH.index_select(1, origins);
-    torch::Tensor cState = allC.index_select(1, origins);
-    torch::Tensor y = im.net->head->forward(hState.squeeze(0)); // row origin+1, standardised
-    for (std::size_t step = 1; step <= hMax; ++step) {
-        for (std::size_t slot = 0; slot < horizons.size(); ++slot) {
-            if (static_cast<std::size_t>(std::max(1, horizons[slot])) != step) {
-                continue;
+    im.rollout(
+        states.first, states.second, in.held.index_select(0, origins), in.reference.index_select(0, origins),
+        hMax,
+        [&](std::size_t step) {
+            // Rows past the batch end repeat the last (their predictions are never read).
+            const auto rows = torch::clamp_max(origins + static_cast<long>(step), static_cast<long>(n) - 1);
+            return f.index_select(1, rows).transpose(0, 1); // [origins, 1, features]
+        },
+        [&](std::size_t step, const torch::Tensor& y) {
+            bool wanted = false;
+            for (int h : horizons) {
+                wanted = wanted || static_cast<std::size_t>(std::max(1, h)) == step;
             }
-            const auto acc = y.to(torch::kFloat64).contiguous();
-            const auto a = acc.accessor<double, 2>();
-            for (std::size_t o = lo; o < hi; ++o) {
-                const std::size_t target = o + step;
-                if (target >= v.rows.begin && target < v.rows.end) {
-                    const auto j = static_cast<long>(o - lo);
-                    out[slot].xOutPct[target - v.rows.begin] = a[j][0] * im.scale[6] + im.mean[6];
-                    out[slot].tOutC[target - v.rows.begin] = a[j][1] * im.scale[7] + im.mean[7];
+            if (!wanted) {
+                return;
+            }
+            const auto yc = y.contiguous();
+            const auto a = yc.accessor<double, 2>();
+            for (std::size_t slot = 0; slot < horizons.size(); ++slot) {
+                if (static_cast<std::size_t>(std::max(1, horizons[slot])) != step) {
+                    continue;
+                }
+                for (std::size_t o = lo; o < hi; ++o) {
+                    const std::size_t target = o + step;
+                    if (target >= v.rows.begin && target < v.rows.end) {
+                        const auto j = static_cast<long>(o - lo);
+                        out[slot].xOutPct[target - v.rows.begin] = a[j][0];
+                        out[slot].tOutC[target - v.rows.begin] = a[j][1];
+                    }
                 }
             }
-        }
-        if (step == hMax) {
-            break;
-        }
-        // Inputs of row origin+step (known), outputs replaced by the model's own prediction;
-        // rows past the batch end repeat the last (their predictions are never read).
-        const auto rows = torch::clamp_max(origins + static_cast<long>(step), static_cast<long>(n) - 1);
-        torch::Tensor in = f.index_select(1, rows).transpose(0, 1).clone(); // [origins, 1, inputs]
-        in.slice(2, kInputs - kOutputs, kInputs) = y.unsqueeze(1);
-        auto r = im.net->lstm->forward(in, std::make_tuple(hState, cState));
-        hState = std::get<0>(std::get<1>(r));
-        cState = std::get<1>(std::get<1>(r));
-        y = im.net->head->forward(hState.squeeze(0));
-    }
+        });
     return out;
 }
 
 struct LstmBaseline::Follower::State {
     torch::Tensor h, c;
-    std::size_t last = static_cast<std::size_t>(-1);
+    torch::Tensor held, reference; ///< [1, 2] the held outputs of the last row fed, their references
+    Carry carry;
+    std::size_t last = kNone;
 };
 
 LstmBaseline::Follower::Follower(const LstmBaseline& model)
@@ -324,14 +151,17 @@ void LstmBaseline::Follower::advanceTo(const data::SiBatch& record, std::size_t 
     torch::NoGradGuard noGrad;
     const auto& im = *m_model->m_impl;
     auto& st = *m_state;
-    const std::size_t from = st.last == static_cast<std::size_t>(-1) ? 0 : st.last + 1;
+    const std::size_t from = st.last == kNone ? 0 : st.last + 1;
     if (row < from || row >= record.rows()) {
         return;
     }
-    const torch::Tensor f = torch::nan_to_num(im.features(record, from, row + 1).to(torch::kFloat32), 0.0);
-    auto r = im.net->lstm->forward(f, std::make_tuple(st.h, st.c));
+    const auto in = im.inputs(record, from, row + 1, st.carry);
+    auto r = im.net->lstm->forward(in.features, std::make_tuple(st.h, st.c));
     st.h = std::get<0>(std::get<1>(r));
     st.c = std::get<1>(std::get<1>(r));
+    const long rows = in.held.size(0);
+    st.held = in.held.slice(0, rows - 1, rows).clone();
+    st.reference = in.reference.slice(0, rows - 1, rows).clone();
     st.last = row;
 }
 
@@ -343,45 +173,43 @@ LstmBaseline::Follower::forecast(const std::vector<const data::SiBatch*>& candid
     std::vector<residual::HybridPrediction> out(candidates.size(),
                                                 residual::HybridPrediction::unknown(count));
     const std::size_t origin = m_state->last;
-    if (candidates.empty() || count == 0 || origin == static_cast<std::size_t>(-1)) {
+    if (candidates.empty() || count == 0 || origin == kNone) {
         return out;
     }
     std::size_t rows = count;
     for (const auto* c : candidates) {
         rows = std::min(rows, c->rows() > origin + 1 ? c->rows() - origin - 1 : std::size_t{0});
     }
+    if (rows == 0) {
+        return out;
+    }
     // Inputs of every candidate's rows origin+1 … origin+rows−1, batched over the candidates.
-    std::vector<torch::Tensor> inputs;
-    for (const auto* c : candidates) {
-        inputs.push_back(torch::nan_to_num(
-            im.features(*c, origin + 1, origin + std::max<std::size_t>(rows, 1)).to(torch::kFloat32), 0.0));
-    }
     const auto nc = static_cast<long>(candidates.size());
-    const torch::Tensor f =
-        rows > 1 ? torch::cat(inputs, 0) : torch::Tensor(); // [candidates, rows−1, inputs]
-    torch::Tensor hState = m_state->h.expand({1, nc, im.options.hidden}).contiguous();
-    torch::Tensor cState = m_state->c.expand({1, nc, im.options.hidden}).contiguous();
-    torch::Tensor y = im.net->head->forward(hState.squeeze(0)); // row origin+1, standardised
-    std::vector<torch::Tensor> ys{y};
-    for (std::size_t step = 0; step + 1 < rows; ++step) {
-        // Inputs of the next row, outputs replaced by the model's own prediction.
-        torch::Tensor in = f.slice(1, static_cast<long>(step), static_cast<long>(step) + 1).clone();
-        in.slice(2, kInputs - kOutputs, kInputs) = y.unsqueeze(1);
-        auto r = im.net->lstm->forward(in, std::make_tuple(hState, cState));
-        hState = std::get<0>(std::get<1>(r));
-        cState = std::get<1>(std::get<1>(r));
-        y = im.net->head->forward(hState.squeeze(0));
-        ys.push_back(y);
+    torch::Tensor f;
+    if (rows > 1) {
+        std::vector<torch::Tensor> inputs;
+        for (const auto* c : candidates) {
+            Carry carry = m_state->carry;
+            inputs.push_back(im.inputs(*c, origin + 1, origin + rows, carry).features);
+        }
+        f = torch::cat(inputs, 0); // [candidates, rows−1, features]
     }
+    std::vector<torch::Tensor> ys;
+    im.rollout(
+        m_state->h.expand({1, nc, im.options.hidden}).contiguous(),
+        m_state->c.expand({1, nc, im.options.hidden}).contiguous(), m_state->held.expand({nc, kOutputs}),
+        m_state->reference.expand({nc, kOutputs}), rows,
+        [&](std::size_t step) {
+            return f.slice(1, static_cast<long>(step) - 1, static_cast<long>(step)); // row origin+step
+        },
+        [&](std::size_t, const torch::Tensor& y) { ys.push_back(y); });
     // One conversion at the end instead of one per step: [rows, candidates, outputs].
-    const auto all = torch::stack(ys, 0).to(torch::kFloat64).contiguous();
+    const auto all = torch::stack(ys, 0).contiguous();
     const auto a = all.accessor<double, 3>();
     for (std::size_t step = 0; step < rows; ++step) {
         for (long c = 0; c < nc; ++c) {
-            out[static_cast<std::size_t>(c)].xOutPct[step] =
-                a[static_cast<long>(step)][c][0] * im.scale[6] + im.mean[6];
-            out[static_cast<std::size_t>(c)].tOutC[step] =
-                a[static_cast<long>(step)][c][1] * im.scale[7] + im.mean[7];
+            out[static_cast<std::size_t>(c)].xOutPct[step] = a[static_cast<long>(step)][c][0];
+            out[static_cast<std::size_t>(c)].tOutC[step] = a[static_cast<long>(step)][c][1];
         }
     }
     return out;
@@ -389,17 +217,56 @@ LstmBaseline::Follower::forecast(const std::vector<const data::SiBatch*>& candid
 
 std::string LstmBaseline::toJson() const {
     const auto& im = *m_impl;
+    const auto& o = im.options;
+    const auto& vr = im.validation;
     nlohmann::json j;
-    j["format_version"] = 1;
-    j["options"] = {{"hidden", im.options.hidden},
-                    {"sequence_length", im.options.sequenceLength},
-                    {"epochs", im.options.epochs},
-                    {"batch_size", im.options.batchSize},
-                    {"learning_rate", im.options.learningRate},
-                    {"seed", im.options.seed}};
+    j["format_version"] = kFormatVersion;
+    j["form"] = "step change of the measured outputs (zero = hold the last measurement)";
+    j["options"] = {{"hidden", o.hidden},
+                    {"sequence_length", o.sequenceLength},
+                    {"segment_length", o.segmentLength},
+                    {"epochs", o.epochs},
+                    {"batch_size", o.batchSize},
+                    {"learning_rate", o.learningRate},
+                    {"validation_fraction", o.validationFraction},
+                    {"patience", o.patience},
+                    {"clip_margin", o.clipMargin},
+                    {"free_run_steps", o.freeRunSteps},
+                    {"high_pass_seconds", o.highPassSeconds},
+                    {"free_run_weight", o.freeRunWeight},
+                    {"validation_horizon", o.validationHorizon},
+                    {"seed", o.seed}};
     j["mean"] = im.mean;
+    j["alpha"] = im.alpha;
     j["scale"] = im.scale;
+    j["change_scale"] = im.changeScale;
+    j["clip_low"] = im.low;
+    j["clip_high"] = im.high;
     j["loss_history"] = im.losses;
+    nlohmann::json epochs = nlohmann::json::array();
+    for (const auto& e : im.epochs) {
+        epochs.push_back({{"epoch", e.epoch},
+                          {"training_loss", e.trainingLoss},
+                          {"validation_skill_moisture", e.validationSkillMoisture},
+                          {"validation_skill_temperature", e.validationSkillTemperature}});
+    }
+    j["epochs"] = epochs;
+    j["validation"] = {{"validated", vr.validated},
+                       {"beats_references", vr.beatsReferences},
+                       {"best_epoch", vr.bestEpoch},
+                       {"rows", vr.rows},
+                       {"part", vr.part},
+                       {"skill_moisture", vr.skillMoisture},
+                       {"skill_temperature", vr.skillTemperature},
+                       {"horizon", vr.horizon},
+                       {"skill_moisture_ahead", vr.skillMoistureAhead},
+                       {"skill_temperature_ahead", vr.skillTemperatureAhead},
+                       {"mae_moisture_pct", vr.maeMoisturePct},
+                       {"mae_temperature_c", vr.maeTemperatureC},
+                       {"reference_mae_moisture_pct", vr.referenceMaeMoisturePct},
+                       {"reference_mae_temperature_c", vr.referenceMaeTemperatureC},
+                       {"message", vr.message}};
+    j["ending"] = {{"termination", terminationName(im.ending.termination)}, {"message", im.ending.message}};
     j["training_seconds"] = im.trainSeconds;
     for (const auto& p : im.net->named_parameters()) {
         const torch::Tensor t = p.value().to(torch::kFloat64).contiguous();
@@ -412,15 +279,90 @@ std::string LstmBaseline::toJson() const {
 Expected<LstmBaseline> LstmBaseline::fromJson(const std::string& text) {
     try {
         const auto j = nlohmann::json::parse(text);
+        const int version = j.value("format_version", 0);
+        if (version == 1) {
+            return Error{ErrorKind::BadInput, "lstm",
+                         "written by an older DryTwin (LSTM format 1, which predicted the outputs' levels); "
+                         "run train again on the calibrated model to get the current LSTM (format 2)"};
+        }
+        if (version != kFormatVersion) {
+            return Error{ErrorKind::BadInput, "lstm",
+                         "format_version " + std::to_string(version) + " is not " +
+                             std::to_string(kFormatVersion)};
+        }
         LstmBaseline m;
         auto& im = *m.m_impl;
-        im.options.hidden = j.at("options").at("hidden");
-        im.options.sequenceLength = j.at("options").at("sequence_length");
-        im.options.epochs = j.at("options").at("epochs");
-        im.mean = j.at("mean").get<std::array<double, kInputs>>();
-        im.scale = j.at("scale").get<std::array<double, kInputs>>();
+        const auto& o = j.at("options");
+        im.options.hidden = o.at("hidden");
+        im.options.sequenceLength = o.at("sequence_length");
+        im.options.segmentLength = o.value("segment_length", im.options.segmentLength);
+        im.options.epochs = o.at("epochs");
+        im.options.batchSize = o.value("batch_size", im.options.batchSize);
+        im.options.learningRate = o.value("learning_rate", im.options.learningRate);
+        im.options.validationFraction = o.value("validation_fraction", im.options.validationFraction);
+        im.options.patience = o.value("patience", im.options.patience);
+        im.options.clipMargin = o.value("clip_margin", im.options.clipMargin);
+        im.options.freeRunSteps = o.value("free_run_steps", im.options.freeRunSteps);
+        im.options.highPassSeconds = o.at("high_pass_seconds");
+        im.options.freeRunWeight = o.value("free_run_weight", im.options.freeRunWeight);
+        im.options.validationHorizon = o.value("validation_horizon", im.options.validationHorizon);
+        im.options.seed = o.value("seed", im.options.seed);
+        if (auto st = im.options.validate(); !st) {
+            return Error{ErrorKind::BadInput, "lstm.options", st.error().reason};
+        }
+        im.mean = j.at("mean").get<Raw>();
+        im.alpha = j.at("alpha");
+        im.scale = j.at("scale").get<Raw>();
+        im.changeScale = j.at("change_scale").get<std::array<double, kOutputs>>();
+        im.low = j.at("clip_low").get<std::array<double, kFeatures>>();
+        im.high = j.at("clip_high").get<std::array<double, kFeatures>>();
+        for (std::size_t i = 0; i < kRaw; ++i) {
+            if (!(im.scale[i] > 0) || !std::isfinite(im.mean[i])) {
+                return Error{ErrorKind::BadInput, "lstm.scale", "every scale must be positive and finite"};
+            }
+        }
+        for (double s : im.changeScale) {
+            if (!(s > 0) || !std::isfinite(s)) {
+                return Error{ErrorKind::BadInput, "lstm.change_scale", "must be positive and finite"};
+            }
+        }
         im.losses = j.value("loss_history", std::vector<double>{});
         im.trainSeconds = j.value("training_seconds", 0.0);
+        for (const auto& e : j.value("epochs", nlohmann::json::array())) {
+            im.epochs.push_back({e.value("epoch", 0), e.value("training_loss", 0.0),
+                                 e.value("validation_skill_moisture", 0.0),
+                                 e.value("validation_skill_temperature", 0.0)});
+        }
+        if (j.contains("validation")) {
+            const auto& v = j["validation"];
+            auto& vr = im.validation;
+            vr.validated = v.value("validated", false);
+            vr.beatsReferences = v.value("beats_references", false);
+            vr.bestEpoch = v.value("best_epoch", 0);
+            vr.rows = v.value("rows", std::size_t{0});
+            vr.part = v.value("part", std::string{});
+            vr.skillMoisture = v.value("skill_moisture", 0.0);
+            vr.skillTemperature = v.value("skill_temperature", 0.0);
+            vr.horizon = v.value("horizon", 0);
+            vr.skillMoistureAhead = v.value("skill_moisture_ahead", 0.0);
+            vr.skillTemperatureAhead = v.value("skill_temperature_ahead", 0.0);
+            vr.maeMoisturePct = v.value("mae_moisture_pct", 0.0);
+            vr.maeTemperatureC = v.value("mae_temperature_c", 0.0);
+            vr.referenceMaeMoisturePct = v.value("reference_mae_moisture_pct", 0.0);
+            vr.referenceMaeTemperatureC = v.value("reference_mae_temperature_c", 0.0);
+            vr.message = v.value("message", std::string{});
+        }
+        if (j.contains("ending")) {
+            const std::string t = j["ending"].value("termination", std::string{"completed"});
+            for (auto k : {Termination::Completed, Termination::Converged, Termination::BudgetExhausted,
+                           Termination::StoppedKeptBest}) {
+                if (t == terminationName(k)) {
+                    im.ending.termination = k;
+                }
+            }
+            im.ending.message = j["ending"].value("message", std::string{});
+            im.ending.elapsedSeconds = im.trainSeconds;
+        }
         im.net = std::make_shared<Net>(im.options.hidden);
         torch::NoGradGuard noGrad;
         for (auto& p : im.net->named_parameters()) {
