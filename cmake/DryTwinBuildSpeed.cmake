@@ -6,12 +6,12 @@
 #     -DDRYTWIN_FULL_DEBUG_INFO=ON (or a Debug build).
 #  2. lld (else gold) instead of ld.bfd: a test program links in 2.1 s of CPU instead of 7.0 s, and
 #     there are some thirty programs.
-#  3. Precompiled headers of what nearly every file of a target parses anyway (the standard
-#     library, Eigen, nlohmann::json; Qt and Qwt in the widgets): 4-6 s of front end per engine
-#     file, most of it these headers.
+#  3. libtorch's headers parsed once: the LSTM's files form one unity group (engine/CMakeLists.txt).
+# Precompiled headers were tried and measured slower with GCC 12: loading a 136 MB header
+# (standard library, Eigen, nlohmann::json) cost 1-3 s per file, more than parsing saved
+# (ResidualFit.cpp 13.0 s without, 14.3 s with; CsvLines.cpp 0.6 s, 3.5 s; docs/build-speed.md).
 option(DRYTWIN_FULL_DEBUG_INFO "RelWithDebInfo with full debug information (-g); off: line tables (-g1)" OFF)
 option(DRYTWIN_FAST_LINKER "Link with lld, else gold, when the compiler accepts it" ON)
-option(DRYTWIN_PRECOMPILED_HEADERS "Precompiled headers for the engine, the widgets, the CLI and the tests" ON)
 
 if(NOT DRYTWIN_FULL_DEBUG_INFO)
   foreach(lang C CXX)
@@ -32,16 +32,3 @@ if(DRYTWIN_FAST_LINKER)
     endif()
   endif()
 endif()
-
-# The headers every engine file's translation unit parses (counted over engine/: <vector> in 65
-# files, Eigen through the model headers in most of the rest).
-set(DRYTWIN_ENGINE_PCH <algorithm> <cmath> <limits> <map> <memory> <optional> <string> <string_view>
-    <vector> <Eigen/Dense> <nlohmann/json.hpp>)
-
-# drytwin_use_precompiled_headers(target header...): a no-op when the option is off, so that a
-# build without them proves every file includes what it uses.
-function(drytwin_use_precompiled_headers target)
-  if(DRYTWIN_PRECOMPILED_HEADERS)
-    target_precompile_headers(${target} PRIVATE ${ARGN})
-  endif()
-endfunction()
