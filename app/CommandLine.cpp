@@ -24,6 +24,7 @@ struct CommandLine::Impl {
     std::string projectPath;
     std::string language;
     std::string guiModelPath;
+    std::string guiMappingPath;
     std::string runActions;
     std::string guiReferencePath;
     std::string trainingSession;
@@ -42,6 +43,8 @@ CommandLine::CommandLine() : m_impl(new Impl) {
         "PATH, then quit");
     app.add_option("--project", m_impl->projectPath, "GUI: open this project file at start");
     app.add_option("--model", m_impl->guiModelPath, "GUI: open this model file with the data");
+    app.add_option("--mapping", m_impl->guiMappingPath,
+                   "GUI: read --data's columns with this column-mapping file (a historian export)");
     app.add_option("--training", m_impl->trainingSession,
                    "GUI: reopen this saved training session on the Training tab");
     app.add_option("--reference", m_impl->guiReferencePath,
@@ -291,6 +294,7 @@ ParsedCommandLine CommandLine::parse(int argc, char** argv) {
         result.projectPath = m_impl->projectPath;
         result.language = m_impl->language;
         result.modelPath = m_impl->guiModelPath;
+        result.mappingPath = m_impl->guiMappingPath;
         result.runActions = m_impl->runActions;
         result.referencePath = m_impl->guiReferencePath;
         result.trainingSession = m_impl->trainingSession;

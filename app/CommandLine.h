@@ -21,6 +21,7 @@ struct ParsedCommandLine {
     std::string projectPath;     ///< GUI: open this project at start
     std::string language;        ///< GUI: "en" or "zh_CN" (empty: the saved choice, else the locale)
     std::string modelPath;       ///< GUI: open this model file with the data
+    std::string mappingPath;     ///< GUI: read the data's columns with this column mapping
     std::string runActions;      ///< GUI: comma-separated actions to run after loading
     std::string referencePath;   ///< GUI: the reference period Discover compares with
     std::string trainingSession; ///< GUI: a saved training session to reopen

@@ -123,7 +123,7 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
         if (!parsed.modelPath.empty()) {
             window.workbench().openModel(QString::fromStdString(parsed.modelPath));
         }
-        window.openDataSet(dataPath);
+        window.openDataSet(dataPath, QString::fromStdString(parsed.mappingPath));
     }
     if (!parsed.trainingSession.empty()) {
         window.openTrainingSession(QString::fromStdString(parsed.trainingSession));

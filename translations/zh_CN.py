@@ -221,6 +221,10 @@ ZH = {
     "best loss so far": "迄今最优损失",
     "bound-water latent heat (Eq. 4)": "结合水潜热（式 4）",
     "cannot open %1: %2": "无法打开 %1：%2",
+    "cannot create the folder %1 for the project": "无法为项目创建文件夹 %1",
+    "The column mapping could not be saved (%1); the data were not loaded.": "列映射无法保存（%1）；数据未载入。",
+    "The column mapping is kept at %1 and in the project when you save it; “Map its columns…” changes it.":
+        "列映射已保存在 %1，保存项目时也会一并保存；可用“映射其列…”修改。",
     "cannot write %1": "无法写入 %1",
     "cannot write %1: %2": "无法写入 %1：%2",
     "chosen by validation (16, 32, 60)": "由验证选择（16、32、60）",

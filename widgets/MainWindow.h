@@ -40,7 +40,8 @@ public:
     ~MainWindow() override;
 
     /// @brief Starts loading a batch file or folder; the physics model is simulated after it.
-    void openDataSet(const QString& path);
+    /// @p mappingPath: a column mapping for a historian export (empty: the contract's columns).
+    void openDataSet(const QString& path, const QString& mappingPath = {});
     /// @brief Opens the bundled demo data set (writes it first, once).
     void openBundledDemo();
     /// @brief Opens a project file: data, model and view (errors go to the status bar and a box).

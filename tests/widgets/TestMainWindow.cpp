@@ -22,8 +22,10 @@
 #include "view3d/LineView3D.h"
 #include "workflow/Session.h"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QFileDialog>
 #include <QHeaderView>
 #include <QLabel>
 #include <QMenuBar>
@@ -40,6 +42,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTextBrowser>
+#include <QTimer>
 #include <QTranslator>
 #include <QUndoStack>
 #include <QtTest>
@@ -351,6 +354,36 @@ private Q_SLOTS:
             shown = shown || (item && item->text().contains("1302"));
         }
         QVERIFY2(shown, "the run's first file line is not on the Data tab");
+
+        // Issue #43 item 8: the mapping accepted, saving it to a file cancelled: the data load
+        // anyway with the mapping, which is kept (and said where), not thrown away.
+        {
+            MainWindow w2;
+            QSignalSpy loaded2(&w2, &MainWindow::loadFinished);
+            int handled = 0;
+            QTimer driver;
+            QObject::connect(&driver, &QTimer::timeout, [&handled] {
+                QWidget* modal = QApplication::activeModalWidget();
+                if (auto* d = qobject_cast<widgets::ColumnMappingDialog*>(modal)) {
+                    d->accept();
+                    ++handled;
+                } else if (auto* f = qobject_cast<QFileDialog*>(modal)) {
+                    f->reject();
+                    ++handled;
+                }
+            });
+            driver.start(100);
+            w2.dataPanel()->mapAndOpen(dir.filePath("shift.csv"));
+            driver.stop();
+            QCOMPARE(handled, 2);
+            QVERIFY(loaded2.count() > 0 || loaded2.wait(10000));
+            QCOMPARE(loaded2.takeFirst().at(0).toBool(), true);
+            QCOMPARE(w2.dataSet().batches.size(), std::size_t(2));
+            const QString kept = w2.workbench().mappingPath();
+            QVERIFY2(QFileInfo::exists(kept), qPrintable(kept));
+            QVERIFY2(w2.dataPanel()->cleaningSummary()->text().contains(QDir::toNativeSeparators(kept)),
+                     qPrintable(w2.dataPanel()->cleaningSummary()->text()));
+        }
         if (qEnvironmentVariableIsSet("DRYTWIN_SCREENSHOT_DIR")) {
             w.resize(1280, 800);
             w.show();
@@ -510,8 +543,10 @@ private Q_SLOTS:
         const auto range = w.lineView()->colourRange();
         QVERIFY(range.first < range.second);
 
-        // Save the project and open it in a new window: data, model and tab come back.
-        const QString project = m_dir.filePath("p.drytwin");
+        // Save the project and open it in a new window: data, model and tab come back. The
+        // folder typed in the dialog does not exist yet: saving makes it (issue #43 item 9).
+        const QString project = m_dir.filePath("projects/line 3/p.drytwin");
+        QVERIFY(!QFileInfo::exists(m_dir.filePath("projects")));
         w.tabs()->setCurrentIndex(6);
         QString error;
         QVERIFY2(w.saveProject(project, &error), qPrintable(error));

@@ -9,6 +9,8 @@
 #include "data/ColumnMappingDialog.h"
 
 #include <QComboBox>
+#include <QDateTime>
+#include <QDir>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
@@ -21,6 +23,7 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSplitter>
+#include <QStandardPaths>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <cmath>
@@ -94,20 +97,46 @@ DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m
         tr("Open a data set: File ▸ Open data set folder…, or File ▸ Open the bundled demo"));
 }
 
+namespace {
+/// Where a column mapping the user did not save is kept: DryTwin's own data folder, named after
+/// the export's folder and the time, so that the next one does not overwrite it.
+QString keptMappingPath(const QString& file) {
+    const QDir dir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation));
+    dir.mkpath(QStringLiteral("mappings"));
+    return dir.filePath(QStringLiteral("mappings/%1-%2.json")
+                            .arg(QFileInfo(file).absoluteDir().dirName(),
+                                 QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"))));
+}
+} // namespace
+
 void DataPanel::mapAndOpen(const QString& file) {
     {
         ColumnMappingDialog dialog(file, this);
         if (dialog.exec() != QDialog::Accepted) {
             return;
         }
-        const QString saveTo = askSaveFile(this, tr("Save the column mapping"),
-                                           QStringLiteral("mapping.json"), tr("Mappings (*.json)"));
+        QString saveTo = askSaveFile(this, tr("Save the column mapping"), QStringLiteral("mapping.json"),
+                                     tr("Mappings (*.json)"));
+        const bool chosenByUser = !saveTo.isEmpty();
+        if (!chosenByUser) {
+            // Not saving it to a file of one's own must not throw the mapping away (issue #43
+            // item 8): it is kept in DryTwin's data folder, the data load with it, and a saved
+            // project remembers it like any other mapping.
+            saveTo = keptMappingPath(file);
+        }
         QString error;
-        if (saveTo.isEmpty() || !dialog.save(saveTo, &error)) {
-            m_cleaning->setText(error);
+        if (!dialog.save(saveTo, &error)) {
+            m_cleaning->setText(
+                tr("The column mapping could not be saved (%1); the data were not loaded.").arg(error));
             return;
         }
+        m_keptMappingPath = chosenByUser ? QString() : saveTo;
         m_workbench.openData(QFileInfo(file).absolutePath(), saveTo);
+        if (!chosenByUser) {
+            m_keptMappingNote = tr("The column mapping is kept at %1 and in the project when you save it; "
+                                   "“Map its columns…” changes it.")
+                                    .arg(QDir::toNativeSeparators(saveTo));
+        }
     }
 }
 
@@ -198,7 +227,10 @@ void DataPanel::fill() {
              ? QString()
              : QStringLiteral("\n") + tr("Noted while reading (%1):").arg(summary.notes.size()) +
                    QStringLiteral(" ") + QString::fromStdString(summary.notes.front()) +
-                   (summary.notes.size() > 1 ? QStringLiteral(" …") : QString())));
+                   (summary.notes.size() > 1 ? QStringLiteral(" …") : QString())) +
+        (!m_keptMappingPath.isEmpty() && m_workbench.mappingPath() == m_keptMappingPath
+             ? QStringLiteral("\n") + m_keptMappingNote
+             : QString()));
     if (!si.empty()) {
         selectBatches({0});
     }

@@ -40,6 +40,8 @@ private:
     QComboBox* m_arrangement = nullptr;
     QLabel* m_cleaning = nullptr;
     PlotStack* m_plots = nullptr;
+    /// A mapping the user did not save to a file of their own, and what the panel says of it.
+    QString m_keptMappingPath, m_keptMappingNote;
 };
 
 } // namespace drytwin::widgets

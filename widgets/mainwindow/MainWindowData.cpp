@@ -94,8 +94,8 @@ void MainWindow::openBundledDemo() {
     m_workbench.generate(g);
 }
 
-void MainWindow::openDataSet(const QString& path) {
-    m_workbench.openData(path);
+void MainWindow::openDataSet(const QString& path, const QString& mappingPath) {
+    m_workbench.openData(path, mappingPath);
 }
 
 } // namespace drytwin::widgets

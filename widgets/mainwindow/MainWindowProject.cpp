@@ -36,6 +36,14 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
     // The results beside the project, typed (workflow/ResultArchive.h): a reopened project shows
     // its calibration, evaluation, ablation, discovery and what-if run without re-running them.
     const QString resultsPath = path + QStringLiteral(".results.json");
+    // A folder typed into the save dialog that does not exist yet is made, as an engineer expects.
+    const QString folder = QFileInfo(path).absolutePath();
+    if (!QDir().mkpath(folder)) {
+        if (error) {
+            *error = tr("cannot create the folder %1 for the project").arg(folder);
+        }
+        return false;
+    }
     {
         QSaveFile results(resultsPath);
         if (!results.open(QIODevice::WriteOnly) ||
