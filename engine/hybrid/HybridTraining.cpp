@@ -123,8 +123,26 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
     const auto views = splitViews(batches, *pbm, false);
     residual::ResidualOptions chosen = options;
     std::vector<SelectionCandidate> candidates;
+    // The input-driven correction does not depend on the settings the selection tries (lags,
+    // ridge, P⊥): its basis is chosen once, by cross-validation on the training rows, and every
+    // other fit (the candidates', the external-input baseline's) uses that basis.
+    if (reportProgress(progress, "train", 0.0, "input-driven correction")) {
+        return cancelledError("train");
+    }
+    auto fullCorrection = residual::ResidualModel::fitInputDriven(views, options);
+    if (!fullCorrection) {
+        return fullCorrection.error();
+    }
+    residual::ResidualOptions concrete = options;
+    if (*fullCorrection) {
+        concrete.inputDrivenOptions.basis = (*fullCorrection)->options().basis;
+    }
     if (selection.enabled) {
         const auto [fit, validation] = innerSplit(views, selection.validationFraction);
+        auto fitCorrection = residual::ResidualModel::fitInputDriven(fit, concrete);
+        if (!fitCorrection) {
+            return fitCorrection.error();
+        }
         // The references' MAE per horizon on the validation rows, once.
         std::vector<double> refX(selection.horizons.size(), std::numeric_limits<double>::infinity());
         std::vector<double> refT = refX;
@@ -160,7 +178,7 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
             o.residualLags = candidates[c].lags;
             o.lambdaA = o.lambdaB = o.lambdaE = candidates[c].ridge;
             o.orthogonalProjection = candidates[c].orthogonalProjection;
-            auto m = residual::ResidualModel::train(fit, o);
+            auto m = residual::ResidualModel::trainWith(fit, o, *fitCorrection);
             if (!m) {
                 candidates[c].validationSkill = std::numeric_limits<double>::infinity();
                 continue; // a candidate that cannot be fitted is not chosen
@@ -192,15 +210,17 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
     if (reportProgress(progress, "train", 0.3, "PGRL-CC")) {
         return cancelledError("train");
     }
-    auto full = residual::ResidualModel::train(views, chosen);
+    auto full = residual::ResidualModel::trainWith(views, chosen, *fullCorrection);
     if (!full) {
         return full.error();
     }
     if (reportProgress(progress, "train", 0.7, "external-input residual")) {
         return cancelledError("train");
     }
-    // The external-input baseline gets the same settings: the comparison isolates z.
+    // The external-input baseline gets the same settings and the same basis: the comparison
+    // isolates z.
     residual::ResidualOptions ext = chosen;
+    ext.inputDrivenOptions.basis = concrete.inputDrivenOptions.basis;
     ext.useProxies = false;
     auto extModel = residual::ResidualModel::train(views, ext);
     if (!extModel) {
@@ -273,6 +293,14 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
     };
     AblationResult result;
     std::vector<physics::SimulationResult> basePbm;
+    // The input-driven correction depends on the PBM run and the rows, not on what the learning
+    // rows ablate: it is fitted once per split on the base PBM and shared by those rows, and
+    // every row uses the basis the trained model chose (no row chooses it again).
+    std::shared_ptr<const residual::InputDrivenCorrection> baseCorrection, baseRegimeCorrection;
+    residual::ResidualOptions concreteBase = base;
+    if (model.pgrlCc && model.pgrlCc->inputDriven()) {
+        concreteBase.inputDrivenOptions.basis = model.pgrlCc->inputDriven()->options().basis;
+    }
     const double total = static_cast<double>(variants.size());
     int done = 0;
     for (const auto& v : variants) {
@@ -318,7 +346,7 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
             (v.physics == Physics::None ? basePbm : variantPbm) = std::move(*sims);
         }
         const auto& pbm = v.physics == Physics::None ? basePbm : variantPbm;
-        residual::ResidualOptions o = base;
+        residual::ResidualOptions o = concreteBase;
         if (v.learning == Learning::NoProjection) {
             o.orthogonalProjection = !base.orthogonalProjection;
             o.projectResidual = true;
@@ -342,11 +370,27 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
         }
         // The two splits' fits are independent: the extrapolation split's runs on the second core
         // while the chronological one is fitted and scored here.
-        auto regimeFit = std::async(std::launch::async, [&batches, &pbm, o] {
-            return residual::ResidualModel::train(regimeViews(batches, pbm, false), o);
+        const bool sharedCorrection = v.physics == Physics::None;
+        auto fitOn = [o, sharedCorrection](const std::vector<residual::BatchView>& views,
+                                           std::shared_ptr<const residual::InputDrivenCorrection>& shared)
+            -> Expected<residual::ResidualModel> {
+            if (!sharedCorrection) {
+                return residual::ResidualModel::train(views, o);
+            }
+            if (!shared && o.inputDriven) {
+                auto correction = residual::ResidualModel::fitInputDriven(views, o);
+                if (!correction) {
+                    return correction.error();
+                }
+                shared = std::move(*correction);
+            }
+            return residual::ResidualModel::trainWith(views, o, shared);
+        };
+        auto regimeFit = std::async(std::launch::async, [&] {
+            return fitOn(regimeViews(batches, pbm, false), baseRegimeCorrection);
         });
         // Chronological split: one step and multi-step.
-        auto m = residual::ResidualModel::train(splitViews(batches, pbm, false), o);
+        auto m = fitOn(splitViews(batches, pbm, false), baseCorrection);
         if (!m) {
             regimeFit.wait();
             return m.error();

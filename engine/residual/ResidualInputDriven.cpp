@@ -11,23 +11,49 @@ namespace drytwin::residual {
 
 using namespace detail;
 
-Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& training,
-                                             const ResidualOptions& options) {
-    if (auto st = options.validate(); !st) {
-        return st.error();
-    }
+Expected<std::shared_ptr<const InputDrivenCorrection>>
+ResidualModel::fitInputDriven(const std::vector<BatchView>& training, const ResidualOptions& options) {
     if (!options.inputDriven) {
-        return trainOnBase(training, options);
+        return std::shared_ptr<const InputDrivenCorrection>{};
     }
-    const auto t0 = std::chrono::steady_clock::now();
     InputDrivenOptions inputOptions = options.inputDrivenOptions;
     inputOptions.useProxies = options.useProxies;
     auto correction = InputDrivenCorrection::train(training, inputOptions);
     if (!correction) {
         return correction.error();
     }
+    return std::make_shared<const InputDrivenCorrection>(std::move(*correction));
+}
+
+Expected<ResidualModel> ResidualModel::train(const std::vector<BatchView>& training,
+                                             const ResidualOptions& options) {
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    auto correction = fitInputDriven(training, options);
+    if (!correction) {
+        return correction.error();
+    }
+    auto m = trainWith(training, options, std::move(*correction));
+    if (m) {
+        m->m_trainSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
+    return m;
+}
+
+Expected<ResidualModel> ResidualModel::trainWith(const std::vector<BatchView>& training,
+                                                 const ResidualOptions& options,
+                                                 std::shared_ptr<const InputDrivenCorrection> correction) {
+    if (auto st = options.validate(); !st) {
+        return st.error();
+    }
+    if (!correction) {
+        return trainOnBase(training, options);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
     ResidualModel withCorrection;
-    withCorrection.m_inputDriven = std::make_shared<const InputDrivenCorrection>(std::move(*correction));
+    withCorrection.m_inputDriven = std::move(correction);
     std::vector<physics::SimulationResult> runs;
     auto m = trainOnBase(withCorrection.correctedViews(training, runs), options);
     if (!m) {

@@ -145,6 +145,17 @@ public:
     /// @brief Algorithm 1 on the training rows of every view.
     static Expected<ResidualModel> train(const std::vector<BatchView>& training,
                                          const ResidualOptions& options);
+    /// @brief The input-driven correction train() fits first (null when options.inputDriven is
+    /// false). It depends only on the views and options.inputDrivenOptions / useProxies, so
+    /// callers that fit several lifted models on the same rows (the settings' selection, the
+    /// ablation's learning rows) fit it once and hand it to trainWith().
+    static Expected<std::shared_ptr<const InputDrivenCorrection>>
+    fitInputDriven(const std::vector<BatchView>& training, const ResidualOptions& options);
+    /// @brief train() with the input-driven correction already fitted by fitInputDriven() on the
+    /// same views with the same input options (null: the PBM is the base).
+    static Expected<ResidualModel> trainWith(const std::vector<BatchView>& training,
+                                             const ResidualOptions& options,
+                                             std::shared_ptr<const InputDrivenCorrection> correction);
 
     /// @brief One-step-ahead: ê_{k+1} from the measured residuals up to k.
     HybridPrediction predictOneStep(const BatchView& view) const;

@@ -68,8 +68,12 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
                 return sims.error();
             }
             // The settings the session's PGRL-CC was trained with (chosen by validation there).
-            const residual::ResidualOptions settings =
+            residual::ResidualOptions settings =
                 m_model.pgrlCc ? m_model.pgrlCc->options() : residual::ResidualOptions{};
+            // ... and the input-driven basis it chose there (not chosen again on each model).
+            if (m_model.pgrlCc && m_model.pgrlCc->inputDriven()) {
+                settings.inputDrivenOptions.basis = m_model.pgrlCc->inputDriven()->options().basis;
+            }
             auto trained = residual::ResidualModel::train(hybrid::splitViews(m_si, *sims, false), settings);
             if (!trained) {
                 return trained.error();
