@@ -1,4 +1,5 @@
 // drytwin: the GUI without a subcommand, a headless subcommand otherwise (CONTRACT.md §2).
+#include "common/AllocatorTuning.h"
 #include "CommandLine.h"
 #include "MainWindow.h"
 #include "common/Translations.h"
@@ -171,6 +172,7 @@ std::vector<std::string> renderReport(char** argv, const drytwin::workflow::Pipe
 }
 
 int main(int argc, char** argv) {
+    drytwin::tuneAllocatorForLargeMatrices();
     drytwin::app::CommandLine commandLine;
     std::string command;
     for (int i = 0; i < argc; ++i) {

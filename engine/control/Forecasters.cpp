@@ -64,38 +64,48 @@ public:
 
     Expected<std::vector<std::vector<double>>>
     forecast(const DecisionPoint& at, const std::vector<std::vector<double>>& plans, int horizon) override {
-        // The view starts where the residual model's lags (and the PBM-change features) begin;
-        // the PBM's input history reaches a transport delay further back.
-        const std::size_t back = lags();
-        const std::size_t viewFrom = at.now > back ? at.now - back : 0;
-        const std::size_t lead = pbmLead(m_p);
-        const std::size_t from = viewFrom > lead ? viewFrom - lead : 0;
+        // The view starts where the residual model's lags (and the PBM-change features) begin,
+        // and further back by the input-driven correction's memory where the record has it: a
+        // correction formed on a short window would take the line to have stood at the window's
+        // first inputs, and its level and change over the horizon would be another model's.
+        // The PBM's input history reaches a transport delay further back still.
         if (at.now < 1) {
             return Error{ErrorKind::Numerical, "residual forecast", "needs at least one recorded row"};
         }
+        const std::size_t back = lags();
+        const std::size_t viewFrom = at.now > back ? at.now - back : 0;
+        const std::size_t memory = correctionMemory();
+        const std::size_t longFrom = viewFrom > memory ? viewFrom - memory : 0;
+        const std::size_t lead = pbmLead(m_p);
         std::vector<data::SiBatch> batches;
         std::vector<physics::SimulationResult> sims;
+        std::vector<std::size_t> starts;
         batches.reserve(plans.size());
         sims.reserve(plans.size());
-        for (const auto& plan : plans) {
-            const data::SiBatch w = planWindow(at, from, plan, horizon);
+        for (std::size_t c = 0; c < plans.size(); ++c) {
+            // Only the plans the residual model forecasts need the long window: under
+            // controlThroughPhysics the others contribute their PBM run after `now` alone.
+            const std::size_t start = (c == 0 || !m_controlThroughPhysics) ? longFrom : viewFrom;
+            const std::size_t from = start > lead ? start - lead : 0;
+            const data::SiBatch w = planWindow(at, from, plans[c], horizon);
             std::vector<std::size_t> rows;
-            for (std::size_t r = viewFrom; r < w.rows() + from; ++r) {
+            for (std::size_t r = start; r < w.rows() + from; ++r) {
                 rows.push_back(r - from);
             }
             auto sim = physics::simulateLine(physics::toLineInputs(w), m_p, m_o, rows);
             if (!sim) {
                 return sim.error();
             }
-            // The view's batch: the window's rows from viewFrom, aligned with the simulation.
-            batches.push_back(planWindow(at, viewFrom, plan, horizon));
+            // The view's batch: the window's rows from its start, aligned with the simulation.
+            batches.push_back(planWindow(at, start, plans[c], horizon));
             sims.push_back(std::move(*sim));
+            starts.push_back(start);
         }
         std::vector<residual::BatchView> views;
         for (std::size_t c = 0; c < (m_controlThroughPhysics ? 1 : plans.size()); ++c) {
             views.push_back({&batches[c], &sims[c], {0, batches[c].rows()}});
         }
-        const std::size_t origin = at.now - 1 - viewFrom;
+        const std::size_t origin = at.now - 1 - longFrom;
         const auto p = m_model->forecastFrom(views, origin, horizon + 1);
         std::vector<std::vector<double>> out;
         if (!m_controlThroughPhysics) {
@@ -109,7 +119,7 @@ public:
             for (std::size_t c = 0; c < plans.size(); ++c) {
                 std::vector<double> x(base.xOutPct.size(), kNaN);
                 for (std::size_t i = 0; i < x.size(); ++i) {
-                    const std::size_t row = origin + 1 + i;
+                    const std::size_t row = at.now + i - starts[c]; // row now + i of the record
                     if (row < sims[c].xOutDb.size()) {
                         x[i] = units::dryToWetPct(sims[c].xOutDb[row]) + base.residualXPct[i];
                     }
@@ -122,6 +132,10 @@ public:
 
 private:
     std::size_t lags() const { return static_cast<std::size_t>(m_model->options().residualLags) + 4; }
+    std::size_t correctionMemory() const {
+        const auto* correction = m_model->inputDriven();
+        return correction && correction->used() ? correction->memoryRows() : 0;
+    }
     properties::ParameterSet m_p;
     physics::SimulationOptions m_o;
     std::shared_ptr<const residual::ResidualModel> m_model;

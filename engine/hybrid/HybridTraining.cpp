@@ -9,7 +9,10 @@
 #include <limits>
 #include <numeric>
 
+#include <atomic>
 #include <chrono>
+#include <mutex>
+#include <optional>
 
 namespace drytwin::hybrid {
 
@@ -121,12 +124,48 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
         return pbm.error();
     }
     const auto views = splitViews(batches, *pbm, false);
+    // The LSTM trains on the second core while PGRL-CC is selected and fitted on this one (it
+    // uses one libtorch thread, PGRL-CC's fits mostly one core). The caller's progress callback
+    // is only ever called from this thread: the LSTM's reports are kept here and relayed while
+    // this thread waits for it, and what the caller answers (stop, stop keeping the best) is
+    // passed on to it.
+    std::atomic<ProgressAction> callerAction{ProgressAction::Continue};
+    std::mutex lstmReportMutex;
+    std::optional<ProgressInfo> lstmReport;
+    const Progress lstmProgress = [&](const ProgressInfo& info) {
+        {
+            std::lock_guard<std::mutex> lock(lstmReportMutex);
+            lstmReport = info;
+        }
+        return callerAction.load();
+    };
+    auto lstmTraining = std::async(std::launch::async, [&views, &lstmOptions, &lstmProgress] {
+        return baselines::LstmBaseline::train(views, lstmOptions, lstmProgress);
+    });
+    // Every early return below stops the LSTM first (the future's destructor waits for it).
+    struct StopLstmOnReturn {
+        std::atomic<ProgressAction>& action;
+        ~StopLstmOnReturn() {
+            if (action.load() == ProgressAction::Continue) {
+                action = ProgressAction::Stop;
+            }
+        }
+    };
+    StopLstmOnReturn stopLstmOnReturn{callerAction};
+    const auto reportTraining = [&](const Progress& p, const std::string& stage, double fraction,
+                                    const std::string& detail) {
+        const ProgressAction a = progressAction(p, stage, fraction, detail);
+        if (a != ProgressAction::Continue) {
+            callerAction = ProgressAction::Stop; // PGRL-CC has no best-so-far to keep
+        }
+        return a != ProgressAction::Continue;
+    };
     residual::ResidualOptions chosen = options;
     std::vector<SelectionCandidate> candidates;
     // The input-driven correction does not depend on the settings the selection tries (lags,
     // ridge, P⊥): its basis is chosen once, by cross-validation on the training rows, and every
     // other fit (the candidates', the external-input baseline's) uses that basis.
-    if (reportProgress(progress, "train", 0.0, "input-driven correction")) {
+    if (reportTraining(progress, "train", 0.0, "input-driven correction")) {
         return cancelledError("train");
     }
     auto fullCorrection = residual::ResidualModel::fitInputDriven(views, options);
@@ -166,7 +205,7 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
         double best = std::numeric_limits<double>::infinity();
         std::size_t bestIndex = 0;
         for (std::size_t c = 0; c < candidates.size(); ++c) {
-            if (reportProgress(progress, "train", 0.3 * double(c) / double(candidates.size()),
+            if (reportTraining(progress, "train", 0.3 * double(c) / double(candidates.size()),
                                "selecting settings " + std::to_string(c + 1) + "/" +
                                    std::to_string(candidates.size()))) {
                 return cancelledError("train");
@@ -207,14 +246,14 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
         chosen.lambdaA = chosen.lambdaB = chosen.lambdaE = candidates[bestIndex].ridge;
         chosen.orthogonalProjection = candidates[bestIndex].orthogonalProjection;
     }
-    if (reportProgress(progress, "train", 0.3, "PGRL-CC")) {
+    if (reportTraining(progress, "train", 0.3, "PGRL-CC")) {
         return cancelledError("train");
     }
     auto full = residual::ResidualModel::trainWith(views, chosen, *fullCorrection);
     if (!full) {
         return full.error();
     }
-    if (reportProgress(progress, "train", 0.7, "external-input residual")) {
+    if (reportTraining(progress, "train", 0.7, "external-input residual")) {
         return cancelledError("train");
     }
     // The external-input baseline gets the same settings and the same basis: the comparison
@@ -226,11 +265,24 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
     if (!extModel) {
         return extModel.error();
     }
-    auto lstm = baselines::LstmBaseline::train(views, lstmOptions, progress);
+    while (lstmTraining.wait_for(std::chrono::milliseconds(200)) != std::future_status::ready) {
+        std::optional<ProgressInfo> latest;
+        {
+            std::lock_guard<std::mutex> lock(lstmReportMutex);
+            latest.swap(lstmReport);
+        }
+        if (latest) {
+            const ProgressAction a = progressAction(progress, latest->stage, latest->fraction, latest->detail);
+            if (a != ProgressAction::Continue) {
+                callerAction = a;
+            }
+        }
+    }
+    auto lstm = lstmTraining.get();
     if (!lstm) {
         return lstm.error();
     }
-    reportProgress(progress, "train", 1.0, "done");
+    reportTraining(progress, "train", 1.0, "done");
     TrainingResult r{std::move(*full), std::move(*extModel), std::move(*lstm), std::move(candidates), 0, {}};
     r.elapsedSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.ending = {Termination::Completed, "PGRL-CC, external-input residual and LSTM trained",

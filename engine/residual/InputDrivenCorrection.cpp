@@ -193,6 +193,22 @@ Eigen::MatrixXd InputDrivenCorrection::basisOf(const Eigen::MatrixXd& raw, doubl
     return phi;
 }
 
+std::size_t InputDrivenCorrection::memoryRows() const {
+    const double step = m_stepS > 0 ? m_stepS : 1.0;
+    double memoryS = 0;
+    if (m_options.basis != InputBasis::FilterBank) {
+        memoryS = std::max(memoryS, m_options.maxLagS);
+    }
+    if (m_options.basis != InputBasis::LaggedInputs && !m_options.timeConstantsS.empty()) {
+        // A cascade of n first-order stages forgets a step to 0.5 % after about (n + 5) τ
+        // (n = 2: (1 + t/τ) e^{−t/τ} = 0.005 at t ≈ 7.4 τ).
+        const double slowest =
+            *std::max_element(m_options.timeConstantsS.begin(), m_options.timeConstantsS.end());
+        memoryS = std::max(memoryS, (m_options.cascadeOrder + 5.5) * slowest);
+    }
+    return static_cast<std::size_t>(std::ceil(memoryS / step)) + kDespikeWindow;
+}
+
 Eigen::Index InputDrivenCorrection::featureCountFor(int n) const {
     const auto& o = m_options;
     const Eigen::Index bank =

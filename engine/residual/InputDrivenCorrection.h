@@ -98,6 +98,11 @@ public:
     const InputDrivenValidation& validation() const { return m_validation; }
     const InputDrivenOptions& options() const { return m_options; }
     int featureCount() const { return static_cast<int>(m_coefficients.rows()); }
+    /// @brief Rows of input history before a row that its correction depends on (within 0.5 %
+    /// for the filter bank's slowest cascade): a caller that forms the correction on a window of
+    /// a longer record (the MPC) starts the window this far back, or the basis would take the
+    /// line to have stood at the window's first inputs.
+    std::size_t memoryRows() const;
 
     std::string toJson() const;
     static Expected<InputDrivenCorrection> fromJson(const std::string& json);

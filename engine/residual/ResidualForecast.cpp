@@ -215,10 +215,26 @@ std::vector<HybridPrediction> ResidualModel::forecastFrom(const std::vector<Batc
 
 HybridPrediction ResidualModel::predictFreeRun(const BatchView& v) const {
     if (m_inputDriven && m_inputDriven->used() && !v.baseCorrected) {
-        // The free-run hybrid: the PBM plus the input-driven correction, and below it whatever
-        // the lifted model adds without a measured output.
         std::vector<physics::SimulationResult> runs;
-        auto out = predictFreeRun(correctedViews({v}, runs).front());
+        const BatchView corrected = correctedViews({v}, runs).front();
+        HybridPrediction out;
+        if (velocity()) {
+            // The free-run hybrid is the PBM plus the input-driven correction. The velocity
+            // form's lifted model is the measured error's feedback: without a measured output
+            // it has no error to start from, and summing its learnt changes from an error taken
+            // as zero made the free run worse on two of six fresh data sets (issue #42,
+            // docs/hybrid-study.md), so it adds nothing here.
+            out = HybridPrediction::unknown(v.rows.size());
+            for (std::size_t i = 0; i < v.rows.size(); ++i) {
+                const std::size_t k = v.rows.begin + i;
+                out.xOutPct[i] = units::dryToWetPct(corrected.pbm->xOutDb[k]);
+                out.tOutC[i] = units::kelvinToCelsius(corrected.pbm->tOutK[k]);
+            }
+        } else {
+            // The paper's level form: below the correction, whatever the lifted model adds
+            // without a measured output.
+            out = predictFreeRun(corrected);
+        }
         residualAgainstPbm(v, out);
         return out;
     }
