@@ -1,7 +1,7 @@
 // drytwin: the GUI without a subcommand, a headless subcommand otherwise (CONTRACT.md §2).
-#include "common/AllocatorTuning.h"
 #include "CommandLine.h"
 #include "MainWindow.h"
+#include "common/AllocatorTuning.h"
 #include "common/Translations.h"
 #include "report/ReportWriter.h"
 #include "workflow/Session.h"

@@ -4,8 +4,10 @@
 #include "plant/PlantLine.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <future>
 
 namespace drytwin::control {
 
@@ -356,39 +358,57 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
     const auto warm = static_cast<std::size_t>(scenario.warmupS);
     const std::size_t total = warm + static_cast<std::size_t>(scenario.lengthS);
     const double tauAct = model.parameters[properties::Param::tau_act];
-    bool stopped = false;
-    std::optional<data::SiBatch> piRecord;
-    for (std::size_t c = 0; c < options.controllers.size() && !stopped; ++c) {
+    const std::size_t count = options.controllers.size();
+    std::sort(snapshotTimes.begin(), snapshotTimes.end());
+    // Each controller's MPC, built (and its history checked) before any runs.
+    std::vector<std::unique_ptr<MpcController>> mpcs(count);
+    std::vector<std::string> skipped(count);
+    for (std::size_t c = 0; c < count; ++c) {
+        const ControllerKind kind = options.controllers[c];
+        if (kind == ControllerKind::Pi) {
+            continue;
+        }
+        auto f = forecasterFor(kind, model, skipped[c], options.mpc.controlThroughPhysics);
+        if (!f) {
+            continue;
+        }
+        mpcs[c] = std::make_unique<MpcController>(std::move(f), options.mpc, tauAct);
+        if (mpcs[c]->historyNeeded() > warm) {
+            return Error{ErrorKind::BadInput, "scenario " + scenario.name,
+                         "warmup_s must be at least " + std::to_string(mpcs[c]->historyNeeded()) +
+                             " s: the " + controllerName(kind) + " model needs that much history"};
+        }
+    }
+    // The controllers run two at a time (each is one core's work: a PBM run per plan, the
+    // residual forecast, Ipopt), the caller's thread and one more. Only the caller's thread
+    // calls the progress callback; the other's progress is shared through `stepsDone`.
+    std::vector<ControllerRun> runs(count);
+    std::vector<std::optional<data::SiBatch>> records(count);
+    std::unique_ptr<std::atomic<std::size_t>[]> stepsDone(new std::atomic<std::size_t>[count]);
+    for (std::size_t c = 0; c < count; ++c) {
+        stepsDone[c] = 0;
+    }
+    std::atomic<bool> stopRequested{false};
+    std::atomic<std::size_t> nextController{0};
+    const auto runController = [&](std::size_t c, bool reportsProgress) {
         const ControllerKind kind = options.controllers[c];
         const auto runStart = std::chrono::steady_clock::now();
-        ControllerRun run;
+        ControllerRun& run = runs[c];
         run.kind = kind;
-        std::unique_ptr<MpcController> mpc;
-        if (kind != ControllerKind::Pi) {
-            std::string missing;
-            auto f = forecasterFor(kind, model, missing, options.mpc.controlThroughPhysics);
-            if (!f) {
-                run.skippedReason = missing;
-                result.runs.push_back(std::move(run));
-                continue;
-            }
-            mpc = std::make_unique<MpcController>(std::move(f), options.mpc, tauAct);
-            if (mpc->historyNeeded() > warm) {
-                return Error{ErrorKind::BadInput, "scenario " + scenario.name,
-                             "warmup_s must be at least " + std::to_string(mpc->historyNeeded()) +
-                                 " s: the " + controllerName(kind) + " model needs that much history"};
-            }
+        MpcController* mpc = mpcs[c].get();
+        if (kind != ControllerKind::Pi && !mpc) {
+            run.skippedReason = skipped[c];
+            return;
         }
         // Every run sees the same disturbances and noise: fresh generators from the same seed.
         plant::PlantRandom random(scenario.seed + 1);
         ControlledLine line(scenario, plantOptions, random);
         std::vector<double> solveMs, modelMs, gains;
         std::size_t nextSnapshot = 0;
-        std::sort(snapshotTimes.begin(), snapshotTimes.end());
         for (std::size_t k = 0; k < total; ++k) {
             const double t = static_cast<double>(k) - static_cast<double>(warm);
             const double target = scenario.setpointAt(t);
-            const ControlledLine::Second second = line.step(mpc.get(), target);
+            const ControlledLine::Second second = line.step(mpc, target);
             if (const auto& d = second.decision) {
                 ++run.metrics.decisions;
                 solveMs.push_back(1e3 * d->solveSeconds);
@@ -416,16 +436,26 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
                 run.hotAirSetpointC.push_back(units::kelvinToCelsius(second.setpointK));
                 run.hotAirC.push_back(units::kelvinToCelsius(second.hotAirK));
             }
-            if (k % 50 == 0 && reportProgress(progress, "mpc",
-                                              (static_cast<double>(c) +
-                                               static_cast<double>(k) / static_cast<double>(total)) /
-                                                  static_cast<double>(options.controllers.size()),
-                                              std::string(controllerName(kind)) + ", step " +
-                                                  std::to_string(k) + "/" + std::to_string(total))) {
-                stopped = true;
-                break;
+            if (k % 50 == 0) {
+                stepsDone[c] = k;
+                if (reportsProgress) {
+                    std::size_t all = 0;
+                    for (std::size_t j = 0; j < count; ++j) {
+                        all += stepsDone[j];
+                    }
+                    if (reportProgress(progress, "mpc",
+                                       static_cast<double>(all) / static_cast<double>(total * count),
+                                       std::string(controllerName(kind)) + ", step " + std::to_string(k) +
+                                           "/" + std::to_string(total))) {
+                        stopRequested = true;
+                    }
+                }
+                if (stopRequested) {
+                    break;
+                }
             }
         }
+        stepsDone[c] = total;
         // Metrics over the scored samples.
         // Moves in °C equal moves in K.
         // A run cancelled during its warm-up has no scored part and no setpoint at warm − 1.
@@ -443,12 +473,43 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         run.metrics.modelMsMedian = median(modelMs);
         run.metrics.gainPctPerKMedian = median(gains);
         run.ran = true;
-        if (kind == ControllerKind::Pi && !stopped) {
-            piRecord = line.record();
+        if (kind == ControllerKind::Pi && !stopRequested) {
+            records[c] = line.record();
         }
         run.elapsedSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
-        result.runs.push_back(std::move(run));
+    };
+    // Both threads take the next controller in the list until none is left; the caller's
+    // thread then relays the other's progress until it is done.
+    const auto takeControllers = [&](bool reportsProgress) {
+        for (std::size_t c = nextController++; c < count && !stopRequested; c = nextController++) {
+            runController(c, reportsProgress);
+        }
+    };
+    auto second = std::async(std::launch::async, takeControllers, false);
+    takeControllers(true);
+    while (second.wait_for(std::chrono::milliseconds(200)) != std::future_status::ready) {
+        std::size_t all = 0;
+        for (std::size_t j = 0; j < count; ++j) {
+            all += stepsDone[j];
+        }
+        if (!stopRequested &&
+            reportProgress(progress, "mpc", static_cast<double>(all) / static_cast<double>(total * count),
+                           "finishing the last controller")) {
+            stopRequested = true;
+        }
+    }
+    second.get();
+    bool stopped = stopRequested;
+    std::optional<data::SiBatch> piRecord;
+    for (std::size_t c = 0; c < count; ++c) {
+        if (records[c]) {
+            piRecord = std::move(records[c]);
+        }
+        // A controller the stop came before never ran: it has no row, as before.
+        if (runs[c].ran || !runs[c].skippedReason.empty()) {
+            result.runs.push_back(std::move(runs[c]));
+        }
     }
     result.plantGainPctPerK = plantGain(scenario, plantOptions, initialSetpointK(scenario));
     // The model error behind the ranking: each MPC's model forecasting the PI run.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <mutex>
 
 namespace drytwin::control {
 
@@ -151,15 +152,27 @@ std::string statusText(Ipopt::ApplicationReturnStatus s) {
     }
 }
 
+/// Ipopt 3.11 (Debian 12) calls the sequential MUMPS, which keeps global state and is not
+/// thread-safe; controllers that run side by side (runScenario) take turns at Ipopt.
+std::mutex& ipoptMutex() {
+    static std::mutex m;
+    return m;
+}
+
 } // namespace
 
 struct IpoptQpSolver::Impl {
+    ~Impl() {
+        std::lock_guard<std::mutex> lock(ipoptMutex());
+        app = nullptr;
+    }
     Ipopt::SmartPtr<Ipopt::IpoptApplication> app;
     bool haveWarm = false;
     Eigen::VectorXd zLow, zHigh, lambda;
 };
 
 IpoptQpSolver::IpoptQpSolver(int maxIterations) : m_impl(std::make_unique<Impl>()) {
+    std::lock_guard<std::mutex> lock(ipoptMutex());
     auto& app = m_impl->app;
     app = IpoptApplicationFactory();
     app->Options()->SetIntegerValue("print_level", 0);
@@ -180,7 +193,8 @@ IpoptQpSolver& IpoptQpSolver::operator=(IpoptQpSolver&&) noexcept = default;
 
 QpSolution IpoptQpSolver::solve(const DenseQp& qp, const Eigen::VectorXd& start) {
     auto& im = *m_impl;
-    const auto t0 = std::chrono::steady_clock::now();
+    std::lock_guard<std::mutex> lock(ipoptMutex());
+    const auto t0 = std::chrono::steady_clock::now(); // the solve itself, not the wait for the lock
     // Warm start: the demo scenario's median solve falls from 3.8 to 3.1 ms (docs/mpc.md).
     const bool warm = im.haveWarm && im.zLow.size() == qp.f.size() && im.lambda.size() == qp.a.rows();
     im.app->Options()->SetStringValue("warm_start_init_point", warm ? "yes" : "no");

@@ -272,7 +272,8 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
             latest.swap(lstmReport);
         }
         if (latest) {
-            const ProgressAction a = progressAction(progress, latest->stage, latest->fraction, latest->detail);
+            const ProgressAction a =
+                progressAction(progress, latest->stage, latest->fraction, latest->detail);
             if (a != ProgressAction::Continue) {
                 callerAction = a;
             }
@@ -344,21 +345,40 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
          Physics::None, Learning::LevelForm},
     };
     AblationResult result;
-    std::vector<physics::SimulationResult> basePbm;
+    const double total = static_cast<double>(variants.size());
+    const int multiStepHorizon = result.multiStepHorizon;
+    // The base PBM run serves the full model and the learning variants; a physics variant
+    // refits h_HDT, k_HDT for its switches first, then runs with them.
+    auto baseRun = simulatePbm(batches, model, model.switches);
+    if (!baseRun) {
+        return baseRun.error();
+    }
+    const std::vector<physics::SimulationResult> basePbm = std::move(*baseRun);
     // The input-driven correction depends on the PBM run and the rows, not on what the learning
     // rows ablate: it is fitted once per split on the base PBM and shared by those rows, and
     // every row uses the basis the trained model chose (no row chooses it again).
-    std::shared_ptr<const residual::InputDrivenCorrection> baseCorrection, baseRegimeCorrection;
     residual::ResidualOptions concreteBase = base;
     if (model.pgrlCc && model.pgrlCc->inputDriven()) {
         concreteBase.inputDrivenOptions.basis = model.pgrlCc->inputDriven()->options().basis;
     }
-    const double total = static_cast<double>(variants.size());
-    int done = 0;
-    for (const auto& v : variants) {
-        if (reportProgress(progress, "ablation", done / total, v.name)) {
-            return cancelledError("ablation");
-        }
+    if (reportProgress(progress, "ablation", 0.0, "input-driven correction")) {
+        return cancelledError("ablation");
+    }
+    auto regimeCorrectionFit = std::async(std::launch::async, [&] {
+        return residual::ResidualModel::fitInputDriven(regimeViews(batches, basePbm, false), concreteBase);
+    });
+    auto chronologicalCorrection =
+        residual::ResidualModel::fitInputDriven(splitViews(batches, basePbm, false), concreteBase);
+    auto regimeCorrection = regimeCorrectionFit.get();
+    if (!chronologicalCorrection) {
+        return chronologicalCorrection.error();
+    }
+    if (!regimeCorrection) {
+        return regimeCorrection.error();
+    }
+
+    // One row: its physics (refitted where a switch differs), its learning options, both splits.
+    const auto runRow = [&](const Variant& v) -> Expected<AblationRow> {
         properties::ModelSwitches sw = model.switches;
         sw.clampWaterActivity = sw.clampWaterActivity && v.physics != Physics::NoClamp;
         sw.latentHeatCorrection = sw.latentHeatCorrection && v.physics != Physics::NoLatentCorrection;
@@ -369,8 +389,6 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
         AblationRow row;
         row.variant = v.name;
         row.description = v.description;
-        // The base PBM run serves the full model and the learning variants; a physics variant
-        // refits h_HDT, k_HDT for its switches first, then runs with them.
         HybridModel variantModel = model;
         variantModel.switches = sw;
         std::vector<physics::SimulationResult> variantPbm;
@@ -387,16 +405,14 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
             }
             variantModel.parameters = cal->parameters;
             row.recalibrated = true;
-        }
-        row.hHdt = variantModel.parameters[properties::Param::h_HDT];
-        row.kHdt = variantModel.parameters[properties::Param::k_HDT];
-        if (v.physics != Physics::None || basePbm.empty()) {
             auto sims = simulatePbm(batches, variantModel, sw);
             if (!sims) {
                 return sims.error();
             }
-            (v.physics == Physics::None ? basePbm : variantPbm) = std::move(*sims);
+            variantPbm = std::move(*sims);
         }
+        row.hHdt = variantModel.parameters[properties::Param::h_HDT];
+        row.kHdt = variantModel.parameters[properties::Param::k_HDT];
         const auto& pbm = v.physics == Physics::None ? basePbm : variantPbm;
         residual::ResidualOptions o = concreteBase;
         if (v.learning == Learning::NoProjection) {
@@ -420,31 +436,15 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
         if (v.learning == Learning::EigenvaluePull) {
             o.stabilityMethod = residual::StabilityMethod::EigenvaluePull;
         }
-        // The two splits' fits are independent: the extrapolation split's runs on the second core
-        // while the chronological one is fitted and scored here.
-        const bool sharedCorrection = v.physics == Physics::None;
-        auto fitOn = [o, sharedCorrection](const std::vector<residual::BatchView>& views,
-                                           std::shared_ptr<const residual::InputDrivenCorrection>& shared)
-            -> Expected<residual::ResidualModel> {
-            if (!sharedCorrection) {
-                return residual::ResidualModel::train(views, o);
-            }
-            if (!shared && o.inputDriven) {
-                auto correction = residual::ResidualModel::fitInputDriven(views, o);
-                if (!correction) {
-                    return correction.error();
-                }
-                shared = std::move(*correction);
-            }
-            return residual::ResidualModel::trainWith(views, o, shared);
+        // A physics row fits its own correction (its PBM differs); the others share the base's.
+        const auto fitOn = [&](const std::vector<residual::BatchView>& views,
+                               const std::shared_ptr<const residual::InputDrivenCorrection>& shared) {
+            return v.physics != Physics::None ? residual::ResidualModel::train(views, o)
+                                              : residual::ResidualModel::trainWith(views, o, shared);
         };
-        auto regimeFit = std::async(std::launch::async, [&] {
-            return fitOn(regimeViews(batches, pbm, false), baseRegimeCorrection);
-        });
         // Chronological split: one step and multi-step.
-        auto m = fitOn(splitViews(batches, pbm, false), baseCorrection);
+        auto m = fitOn(splitViews(batches, pbm, false), *chronologicalCorrection);
         if (!m) {
-            regimeFit.wait();
             return m.error();
         }
         const auto test = splitViews(batches, pbm, true);
@@ -453,7 +453,7 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
             [&](const residual::BatchView& view, const std::vector<int>& hs) {
                 return m->predictHorizons(view, hs);
             },
-            {1, result.multiStepHorizon}, 20);
+            {1, multiStepHorizon}, 20);
         row.maeMoisture = scored[0].moisture.mae;
         row.r2Moisture = scored[0].moisture.r2;
         row.maeTemperature = scored[0].temperature.mae;
@@ -461,7 +461,7 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
         row.ljungBoxPMoisture = scored[0].moisture.ljungBoxP;
         row.maeMoistureMultiStep = scored[1].moisture.mae;
         // Extrapolation split: trained on the cooler seasons, tested on the warmest.
-        auto mr = regimeFit.get();
+        auto mr = fitOn(regimeViews(batches, pbm, false), *regimeCorrection);
         if (!mr) {
             return mr.error();
         }
@@ -471,8 +471,47 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
         row.regimeMaeMoisture = regime.moisture.mae;
         row.regimeR2Moisture = regime.moisture.r2;
         row.regimeMaeTemperature = regime.temperature.mae;
-        result.rows.push_back(row);
-        ++done;
+        return row;
+    };
+
+    // The rows are independent: two run at a time (the caller's thread and one more), each
+    // taking the next row not yet taken. Only the caller's thread calls the progress callback.
+    std::vector<std::optional<Expected<AblationRow>>> rows(variants.size());
+    std::atomic<std::size_t> nextRow{0}, rowsDone{0};
+    std::atomic<bool> stopRequested{false};
+    const auto takeRows = [&](bool reportsProgress) {
+        for (std::size_t i = nextRow++; i < variants.size() && !stopRequested; i = nextRow++) {
+            if (reportsProgress && reportProgress(progress, "ablation", static_cast<double>(rowsDone) / total,
+                                                  variants[i].name)) {
+                stopRequested = true;
+                break;
+            }
+            rows[i] = runRow(variants[i]);
+            ++rowsDone;
+            if (!*rows[i]) {
+                stopRequested = true; // the first failure ends the table
+            }
+        }
+    };
+    auto second = std::async(std::launch::async, takeRows, false);
+    takeRows(true);
+    while (second.wait_for(std::chrono::milliseconds(200)) != std::future_status::ready) {
+        if (!stopRequested &&
+            reportProgress(progress, "ablation", static_cast<double>(rowsDone) / total, "the last rows")) {
+            stopRequested = true;
+        }
+    }
+    second.get();
+    for (auto& r : rows) {
+        if (r && !*r) {
+            return r->error();
+        }
+    }
+    if (std::any_of(rows.begin(), rows.end(), [](const auto& r) { return !r; })) {
+        return cancelledError("ablation");
+    }
+    for (auto& r : rows) {
+        result.rows.push_back(std::move(**r));
     }
     reportProgress(progress, "ablation", 1.0, "done");
     result.ending = {Termination::Completed,
