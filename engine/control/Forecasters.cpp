@@ -101,9 +101,43 @@ public:
             sims.push_back(std::move(*sim));
             starts.push_back(start);
         }
+        // The input-driven correction is formed from a run with the hot air held at its last
+        // measured value over the whole window: it was learnt on data from a line under its own
+        // control loop, and its path from the hot air (directly, or through the PBM's proxies)
+        // learnt the loop's answers to the moisture error as if they were the line's response
+        // (a gain of −0.02 % wb/K where the plant's is −0.09: docs/mpc.md). Held, the correction
+        // carries what the disturbances do; the hot air acts through the physics alone.
+        std::vector<physics::SimulationResult> correctedBases;
         std::vector<residual::BatchView> views;
-        for (std::size_t c = 0; c < (m_controlThroughPhysics ? 1 : plans.size()); ++c) {
-            views.push_back({&batches[c], &sims[c], {0, batches[c].rows()}});
+        const std::size_t viewCount = m_controlThroughPhysics ? 1 : plans.size();
+        if (const auto* correction = usedCorrection()) {
+            correctedBases.reserve(viewCount);
+            const std::size_t from = longFrom > lead ? longFrom - lead : 0;
+            const double heldK = at.record->tHotK[at.now - 1];
+            data::SiBatch held = planWindow(at, from, plans.front(), horizon);
+            std::fill(held.tHotK.begin(), held.tHotK.end(), heldK);
+            std::fill(held.tHotSpK.begin(), held.tHotSpK.end(), heldK);
+            std::vector<std::size_t> rows;
+            for (std::size_t r = longFrom; r < held.rows() + from; ++r) {
+                rows.push_back(r - from);
+            }
+            auto heldRun = physics::simulateLine(physics::toLineInputs(held), m_p, m_o, rows);
+            if (!heldRun) {
+                return heldRun.error();
+            }
+            data::SiBatch heldView = planWindow(at, longFrom, plans.front(), horizon);
+            std::fill(heldView.tHotK.begin(), heldView.tHotK.end(), heldK);
+            std::fill(heldView.tHotSpK.begin(), heldView.tHotSpK.end(), heldK);
+            for (std::size_t c = 0; c < viewCount; ++c) {
+                correctedBases.push_back(correction->correctedFrom(sims[c], heldView, *heldRun));
+                residual::BatchView v{&batches[c], &correctedBases.back(), {0, batches[c].rows()}};
+                v.baseCorrected = true;
+                views.push_back(v);
+            }
+        } else {
+            for (std::size_t c = 0; c < viewCount; ++c) {
+                views.push_back({&batches[c], &sims[c], {0, batches[c].rows()}});
+            }
         }
         const std::size_t origin = at.now - 1 - longFrom;
         const auto p = m_model->forecastFrom(views, origin, horizon + 1);
@@ -120,8 +154,10 @@ public:
                 std::vector<double> x(base.xOutPct.size(), kNaN);
                 for (std::size_t i = 0; i < x.size(); ++i) {
                     const std::size_t row = at.now + i - starts[c]; // row now + i of the record
-                    if (row < sims[c].xOutDb.size()) {
-                        x[i] = units::dryToWetPct(sims[c].xOutDb[row]) + base.residualXPct[i];
+                    const std::size_t baseRow = at.now + i - longFrom;
+                    if (row < sims[c].xOutDb.size() && baseRow < sims.front().xOutDb.size()) {
+                        x[i] = base.xOutPct[i] + units::dryToWetPct(sims[c].xOutDb[row]) -
+                               units::dryToWetPct(sims.front().xOutDb[baseRow]);
                     }
                 }
                 out.push_back(std::move(x));
@@ -132,9 +168,13 @@ public:
 
 private:
     std::size_t lags() const { return static_cast<std::size_t>(m_model->options().residualLags) + 4; }
-    std::size_t correctionMemory() const {
+    const residual::InputDrivenCorrection* usedCorrection() const {
         const auto* correction = m_model->inputDriven();
-        return correction && correction->used() ? correction->memoryRows() : 0;
+        return correction && correction->used() ? correction : nullptr;
+    }
+    std::size_t correctionMemory() const {
+        const auto* correction = usedCorrection();
+        return correction ? correction->memoryRows() : 0;
     }
     properties::ParameterSet m_p;
     physics::SimulationOptions m_o;

@@ -113,8 +113,13 @@ Eigen::MatrixXd InputDrivenCorrection::inputSeries(const data::SiBatch& b,
     const int n = inputCount();
     Eigen::MatrixXd z(static_cast<Eigen::Index>(rows), n);
     for (std::size_t k = 0; k < rows; ++k) {
-        std::vector<double> row{b.tHotK[k], b.feedKgPerS[k], b.xInDb[k],        b.tInK[k],
-                                b.tAmbK[k], b.rhAmb[k],      b.airSpeedMPerS[k]};
+        std::vector<double> row{m_options.manipulatedInput ? b.tHotK[k] : 0.0,
+                                b.feedKgPerS[k],
+                                b.xInDb[k],
+                                b.tInK[k],
+                                b.tAmbK[k],
+                                b.rhAmb[k],
+                                b.airSpeedMPerS[k]};
         if (m_options.useProxies) {
             for (double x :
                  {p.proxyXHdtDb[k], p.proxyTHdtK[k], p.proxyXConvDb[k], p.proxyTConvK[k], p.proxyXMixDb[k],
@@ -471,12 +476,18 @@ void InputDrivenCorrection::correct(const data::SiBatch& batch, const physics::S
 
 physics::SimulationResult InputDrivenCorrection::corrected(const data::SiBatch& batch,
                                                            const physics::SimulationResult& pbm) const {
+    return correctedFrom(pbm, batch, pbm);
+}
+
+physics::SimulationResult
+InputDrivenCorrection::correctedFrom(const physics::SimulationResult& pbm, const data::SiBatch& sourceBatch,
+                                     const physics::SimulationResult& sourcePbm) const {
     physics::SimulationResult out = pbm;
     if (!used()) {
         return out;
     }
     std::vector<double> cx, ct;
-    correct(batch, pbm, cx, ct);
+    correct(sourceBatch, sourcePbm, cx, ct);
     for (std::size_t k = 0; k < std::min(cx.size(), out.xOutDb.size()); ++k) {
         if (std::isfinite(cx[k]) && std::isfinite(ct[k])) {
             out.xOutDb[k] = units::wetPctToDry(units::dryToWetPct(out.xOutDb[k]) + cx[k]);

@@ -15,6 +15,7 @@ std::string InputDrivenCorrection::toJson() const {
     const auto& o = m_options;
     j["basis"] = basisName(o.basis); // a trained correction's basis is always a concrete one
     j["use_proxies"] = o.useProxies;
+    j["manipulated_input"] = o.manipulatedInput;
     j["time_constants_s"] = o.timeConstantsS;
     j["cascade_order"] = o.cascadeOrder;
     j["max_lag_s"] = o.maxLagS;
@@ -60,6 +61,8 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::strin
                              "\" is not a basis (filter_bank, lagged_inputs or filter_bank_and_lags)"};
         }
         o.useProxies = j.at("use_proxies").get<bool>();
+        // Files written before the option had the hot air among the inputs.
+        o.manipulatedInput = j.value("manipulated_input", true);
         o.timeConstantsS = j.at("time_constants_s").get<std::vector<double>>();
         o.cascadeOrder = j.at("cascade_order").get<int>();
         o.maxLagS = j.at("max_lag_s").get<double>();
