@@ -11,5 +11,11 @@ if(DRYTWIN_NATIVE_ARCH)
   check_cxx_compiler_flag("-march=native" DRYTWIN_COMPILER_MARCH_NATIVE)
   if(DRYTWIN_COMPILER_MARCH_NATIVE)
     add_compile_options(-march=native)
+    # GCC 12 warns "'__Y' may be used uninitialized" inside its own avx512fintrin.h/avxintrin.h
+    # for Eigen's vectorised expressions, hundreds of times per build: a false positive of that
+    # compiler (fixed in GCC 13), not a defect in DryTwin or Eigen.
+    if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
+      add_compile_options(-Wno-maybe-uninitialized)
+    endif()
   endif()
 endif()
