@@ -4,67 +4,67 @@
 <context>
     <name>ColumnMeanings</name>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="90"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="95"/>
         <source>time since batch start</source>
         <translation>批次开始以来的时间</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="91"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="96"/>
         <source>hot-air temperature setpoint</source>
         <translation>热风温度设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="92"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="97"/>
         <source>measured hot-air temperature at the tube inlet</source>
         <translation>管道入口处实测热风温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="93"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="98"/>
         <source>air speed in the drying tube</source>
         <translation>干燥管内风速</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="94"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="99"/>
         <source>wet feed rate entering the tube</source>
         <translation>进入干燥管的湿物料流量</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="95"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="100"/>
         <source>inlet moisture</source>
         <translation>入口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="96"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="101"/>
         <source>inlet material temperature</source>
         <translation>入口物料温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="97"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="102"/>
         <source>ambient air temperature</source>
         <translation>环境空气温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="98"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="103"/>
         <source>ambient relative humidity</source>
         <translation>环境相对湿度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="99"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="104"/>
         <source>moisture at the tube outlet</source>
         <translation>管道出口处含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="100"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="105"/>
         <source>material temperature at the tube outlet</source>
         <translation>管道出口处物料温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="101"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="106"/>
         <source>final outlet moisture after the winnower</source>
         <translation>风选机后最终出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="102"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="107"/>
         <source>final outlet temperature after the winnower</source>
         <translation>风选机后最终出口温度</translation>
     </message>
@@ -148,306 +148,325 @@
     </message>
     <message>
         <location filename="../widgets/common/DisplayNames.cpp" line="47"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="52"/>
         <source>outlet moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
         <location filename="../widgets/common/DisplayNames.cpp" line="48"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="53"/>
         <source>outlet temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
         <location filename="../widgets/common/DisplayNames.cpp" line="49"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="54"/>
         <source>tube-outlet moisture</source>
         <translation>管道出口水分</translation>
     </message>
     <message>
         <location filename="../widgets/common/DisplayNames.cpp" line="50"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="55"/>
         <source>tube-outlet temperature</source>
         <translation>管道出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="51"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="56"/>
         <source>model error, outlet moisture</source>
         <translation>模型误差，出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="52"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="57"/>
         <source>model error, outlet temperature</source>
         <translation>模型误差，出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="53"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="58"/>
         <source>model error, tube-outlet moisture</source>
         <translation>模型误差，管道出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="54"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="59"/>
         <source>model error, tube-outlet temperature</source>
         <translation>模型误差，管道出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="56"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="61"/>
         <source>model&apos;s tube-outlet moisture</source>
         <translation>模型计算的管道出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="57"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="62"/>
         <source>model&apos;s tube-outlet temperature</source>
         <translation>模型计算的管道出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="58"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="63"/>
         <source>model&apos;s moisture on the conveyor</source>
         <translation>模型计算的输送带上水分</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="59"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="64"/>
         <source>model&apos;s temperature on the conveyor</source>
         <translation>模型计算的输送带上温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="69"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="74"/>
         <source>tube-wall heat loss</source>
         <translation>管壁散热</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="70"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="75"/>
         <source>drying air cooling along the tube</source>
         <translation>干燥风沿管降温</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="71"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="76"/>
         <source>heat-transfer fouling</source>
         <translation>传热结垢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="72"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="77"/>
         <source>slow outlet moisture meter</source>
         <translation>出口水分仪响应慢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="73"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="78"/>
         <source>outlet moisture meter offset</source>
         <translation>出口水分仪偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="74"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="79"/>
         <source>conveyor transport time off</source>
         <translation>输送时间偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="75"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="80"/>
         <source>slower drying below critical moisture</source>
         <translation>低于临界含水率时干燥变慢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="76"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="81"/>
         <source>moisture taken back on the conveyor</source>
         <translation>输送中回潮</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="77"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="82"/>
         <source>inlet moisture gauge offset</source>
         <translation>入口水分仪偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="78"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="83"/>
         <source>slow hot-air thermocouple</source>
         <translation>热风热电偶响应慢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="79"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="84"/>
         <source>noisy inlet moisture gauge</source>
         <translation>入口水分仪噪声大</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="80"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="85"/>
         <source>outlet mixing</source>
         <translation>出口混合</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="110"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="115"/>
         <source>seconds since the start</source>
         <translation>自开始起的秒数</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="111"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="116"/>
         <source>date and time, ISO 8601 (2024-05-31T08:00:00)</source>
         <translation>日期和时间，ISO 8601 格式（2024-05-31T08:00:00）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="112"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="117"/>
         <source>year/month/day and time</source>
         <translation>年/月/日 及时间</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="113"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="118"/>
         <source>day.month.year and time</source>
         <translation>日.月.年 及时间</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="114"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="119"/>
         <source>day/month/year and time</source>
         <translation>日/月/年 及时间</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="115"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="120"/>
         <source>month/day/year and time</source>
         <translation>月/日/年 及时间</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="116"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="121"/>
         <source>day-month name-year and time</source>
         <translation>日-月份名-年 及时间</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="117"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="122"/>
         <source>spreadsheet day numbers</source>
         <translation>电子表格日期序号</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="118"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="123"/>
         <source>Unix time in seconds</source>
         <translation>Unix 时间（秒）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="119"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="124"/>
         <source>Unix time in milliseconds</source>
         <translation>Unix 时间（毫秒）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="128"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="133"/>
         <source>line stop</source>
         <translation>产线停机</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="129"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="134"/>
         <source>gap in the recording</source>
         <translation>记录中断</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="130"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="135"/>
         <source>next batch id</source>
         <translation>下一批次编号</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="131"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="136"/>
         <source>clock jump</source>
         <translation>时钟跳变</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="132"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="137"/>
         <source>end of file</source>
         <translation>文件结束</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="144"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="149"/>
         <source>DryTwin&apos;s own column name</source>
         <translation>DryTwin 自身的列名</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="147"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="152"/>
         <source>time stamps: %1</source>
         <translation>时间戳：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="153"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="158"/>
         <source>values in %1</source>
         <translation>数值在 %1 之间</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="156"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="161"/>
         <source>words of the header</source>
         <translation>列标题中的词</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="158"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="163"/>
         <source>tag letters %1</source>
         <translation>位号字母 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="163"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="168"/>
         <source>, </source>
         <translation>、</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="175"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="180"/>
         <source>%1: second %2 of %3</source>
         <translation>%1：第 %2 秒，共 %3 秒</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="185"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="190"/>
         <source>outlet response time (meter lag or transport time)</source>
         <translation>出口响应时间（仪表滞后或输送时间）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="189"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="194"/>
         <source>moisture offset (outlet meter or inlet gauge)</source>
         <translation>水分偏差（出口水分仪或入口水分仪）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="192"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="197"/>
         <source>air temperature in the tube (wall loss or air cooling)</source>
         <translation>管内风温（管壁散热或风冷却）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="201"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="206"/>
         <source>Cause found</source>
         <translation>找到原因</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="202"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="207"/>
         <source>Cause found: %1</source>
         <translation>找到原因：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="205"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="210"/>
         <source>No cause found: what the model gets wrong is within the measurements&apos; noise</source>
         <translation>未找到原因：模型的误差在测量噪声范围之内</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="209"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="214"/>
         <source>Something is left that no known cause explains</source>
         <translation>仍有已知原因无法解释的结构</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="217"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="221"/>
+        <source>Next: check that part of the line (the evidence says where and from when), then “Extend the model” to add the cause and see how much the simulation improves.</source>
+        <translation>下一步：检查产线的这一部分（证据说明了位置和起始时间），然后点击“扩展模型”加入该原因，看仿真改善了多少。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="226"/>
+        <source>Next: nothing in the model needs changing for these data. To see smaller effects, record longer or more batches.</source>
+        <translation>下一步：对这些数据，模型无需修改。若要看出更小的影响，请记录更长时间或更多批次。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="231"/>
+        <source>Next: compare with data from a time when the line ran well (“Compare with a reference period”): what changed since then is named more surely than from one data set alone. The evidence says which measurement the error follows; check that transmitter and the maintenance log around the time it starts.</source>
+        <translation>下一步：与产线运行良好时的数据比较（“与参考时段比较”）：与单个数据集相比，能更可靠地指出此后发生的变化。证据说明了误差跟随哪个测量值；请检查该变送器以及误差开始前后的维护记录。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="244"/>
         <source>Completed</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="219"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="246"/>
         <source>Converged</source>
         <translation>已收敛</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="221"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="248"/>
         <source>Evaluation budget used up</source>
         <translation>评估次数已用完</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="223"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="250"/>
         <source>Stopped by you, best so far kept</source>
         <translation>已由您停止，保留目前最优</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="230"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="257"/>
         <source>Stopped by you; the runs so far are kept, the last one is partial</source>
         <translation>已由您停止；保留已完成的运行，最后一次不完整</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="237"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="264"/>
         <source>Scenario %1: %2 of %3 controllers run over %4 scored seconds</source>
         <translation>情景 %1：%3 个控制器中运行了 %2 个，评分时长 %4 秒</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="247"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="274"/>
         <source>none (the sensitivities could not be computed)</source>
         <translation>无（无法计算灵敏度）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="250"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="277"/>
         <source>widened because neighbouring rows are alike and not independent evidence (sandwich covariance with a Newey-West middle term)</source>
         <translation>已加宽：相邻样本彼此相似，不是独立的证据（夹心协方差，中间项为 Newey-West）</translation>
     </message>
@@ -456,17 +475,17 @@
         <translation>对相关样本稳健（夹心协方差，中间项为 Newey-West）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="260"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="287"/>
         <source>R² could not be computed (too few rows).</source>
         <translation>无法计算 R²（行数太少）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="263"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="290"/>
         <source>R² below 0: the model predicts worse than the batch&apos;s mean would. Usual for the physics model alone on a short held-out part with little movement; compare MAE instead.</source>
         <translation>R² 小于 0：模型的预测比批次均值还差。对于变化很小的短留出段，单独的物理模型常出现这种情况；请改为比较 MAE。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="268"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="295"/>
         <source>R² %1: the model explains %2 % of the variation of the measured values about their mean.</source>
         <translation>R² %1：模型解释了测量值围绕其均值变化的 %2 %。</translation>
     </message>
@@ -1844,315 +1863,315 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="140"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="598"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="147"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="149"/>
         <source>Run Discover to see the physics model&apos;s error over the batches</source>
         <translation>运行发现，可看到物理模型在各批次上的误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="154"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="156"/>
         <source>No reference period: the data are judged alone.</source>
         <translation>无参考期：单独判断数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="155"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
         <source>Reference period: %1</source>
         <translation>参考期：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="171"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="173"/>
         <source>%1: &lt;b&gt;changed&lt;/b&gt; (p = %2)</source>
         <translation>%1：&lt;b&gt;已变化&lt;/b&gt;（p = %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="172"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="174"/>
         <source>%1: no change (p = %2)</source>
         <translation>%1：无变化（p = %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="174"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="176"/>
         <source>, first alarm in %1 at %2 min</source>
         <translation>，首次报警于 %1 第 %2 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="179"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="181"/>
         <source>, from %1 at %2 min (95 %: %3 to %4 min)</source>
         <translation>，自 %1 第 %2 分钟起（95 %：%3 至 %4 分钟）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="190"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="192"/>
         <source>DryTwin (the causes&apos; parameters): &lt;b&gt;changed&lt;/b&gt; (p = %1): %2 moved beyond its normal spread</source>
         <translation>DryTwin（各原因的参数）：&lt;b&gt;已变化&lt;/b&gt;（p = %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="194"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="196"/>
         <source>DryTwin (the causes&apos; parameters): none moved beyond its normal spread (p = %1)</source>
         <translation>DryTwin（各原因的参数）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="197"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="199"/>
         <source>&lt;b&gt;The line has changed since the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;自参考期以来产线已发生变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="198"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="200"/>
         <source>&lt;b&gt;No change against the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;与参考期相比无变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="199"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="201"/>
         <source> Each detector&apos;s false-alarm rate: %1 % per data set.</source>
         <translation> 每个检测器的误报率：每个数据集 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="200"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="202"/>
         <source>DryTwin (the model&apos;s error)</source>
         <translation>DryTwin（模型误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="202"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="204"/>
         <source>Dynamic PCA (the measured columns)</source>
         <translation>动态 PCA（测量列）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="227"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="243"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="229"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="245"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="227"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="243"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="229"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="245"/>
         <source>dynamic PCA</source>
         <translation>动态 PCA</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="229"/>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="231"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="233"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="268"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="270"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="271"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="273"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)</source>
         <translation>误差随进料量和入口水分增大（按 feed_kg_h 和 X_in_pct 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="274"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="276"/>
         <source>the error drifts within every batch and resets at each batch start</source>
         <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="276"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="278"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="280"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="282"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="283"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="285"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="285"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="287"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="289"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="291"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="293"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="295"/>
         <source>a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less</source>
         <translation>干燥管出口与出口水分有相同的稳定偏差，干燥管干燥越少处越大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="296"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="298"/>
         <source>after each hot-air setpoint step the outlet temperature and moisture move before the simulation, which follows the slow reading</source>
         <translation>每次热风设定值阶跃后，出口温度和水分先于仿真变化，仿真跟随的是迟缓的读数</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="299"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="301"/>
         <source>the inlet-moisture reading scatters from second to second while the outlet does not follow it, and the simulated outlet does</source>
         <translation>入口水分读数逐秒跳动，出口并不跟随，而仿真的出口却跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="309"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="311"/>
         <source>a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet temperature&apos;s response as much as the moisture&apos;s, a meter lag delays the moisture reading alone; or grab samples timed against the meter</source>
         <translation>以 1 s 记录一次热风设定值阶跃：输送时间误差使出口温度与水分的响应同样延迟，水分仪滞后只延迟水分读数；或对照水分仪定时取样</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="316"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="318"/>
         <source>oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter offset does not</source>
         <translation>在出口对照水分仪、在入口对照入口水分计做烘箱法实验室取样；或增加干燥管出口水分通道（X_hdt）：入口水分计偏差会使其变化，出口水分仪偏差不会</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="323"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="325"/>
         <source>a gas-temperature reading at the tube&apos;s outlet end at two feed rates: wall loss does not change with the feed, gas-phase cooling grows with it</source>
         <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="333"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="335"/>
         <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
         <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="336"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="338"/>
         <source>its size is not consistent across batches or operating regions</source>
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="339"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="341"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="342"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="344"/>
         <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
         <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="346"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
         <source>the outlet channels&apos; timing points to its look-alike (the moisture answers later than the temperature: a meter, not the transport)</source>
         <translation>出口两个通道的时序指向它的相似原因（水分比温度响应更晚：是水分仪，而非输送）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="351"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="353"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="354"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="356"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="371"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
         <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
         <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="376"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="378"/>
         <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
         <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="379"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="381"/>
         <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
         <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="384"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="386"/>
         <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
         <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="390"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="392"/>
         <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="401"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="403"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="406"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="408"/>
         <source>the error follows %1 %2 s later (|ccf| %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="416"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="418"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="421"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="423"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="433"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="435"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="440"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="442"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="455"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="457"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="460"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="462"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="460"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="462"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="463"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="465"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="467"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="469"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="476"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="478"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="482"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="484"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="494"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="496"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="495"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="497"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="502"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="504"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="514"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="516"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="518"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="520"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -2161,27 +2180,27 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="535"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="537"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="535"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="537"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="562"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="564"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="563"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="565"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="580"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="582"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2198,52 +2217,51 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="595"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="606"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="595"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="606"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="616"/>
         <source>%1 at %2 s (ccf %3%4)</source>
-        <translation>%1，滞后 %2 s（互相关 %3%4）</translation>
+        <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="620"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="631"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="623"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="634"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="631"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="430"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="432"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="519"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="521"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="520"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="522"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="524"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="526"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
@@ -2252,131 +2270,136 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="583"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="585"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="586"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="595"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="587"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="596"/>
         <source>, </source>
         <translation>、</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="588"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="599"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="641"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="652"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="657"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="668"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="662"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="673"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="670"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="680"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="675"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="685"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="683"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="693"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="693"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="703"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="509"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="694"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="712"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="511"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="704"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="722"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="695"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="705"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="509"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="696"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="716"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="511"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="706"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="726"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="530"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="532"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="697"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="627"/>
+        <source>%1, %2 s earlier (correlation %3%4)</source>
+        <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="707"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="698"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="708"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="711"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="721"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="711"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="721"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="712"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="722"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="725"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="725"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="716"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="726"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="740"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="750"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="741"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="751"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -3669,62 +3692,67 @@ extrapolation</source>
         <translation>学习修正模型后可看到其随预测步长的技能</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="146"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="115"/>
+        <source>Learnt. Scoring the models on the held-out part…</source>
+        <translation>已学习。正在留出部分上评估模型…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="148"/>
         <source>%1 %2 (%3 %)</source>
         <translation>%1 %2（%3 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="152"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="154"/>
         <source>Steady gain of X_out to the hot-air setpoint [% wb per K] at the scenario&apos;s start: the plant (open-loop step test) %1; each model as its MPC saw it, and how far from the plant&apos;s: %2. A learnt residual&apos;s response to the setpoint plan comes from the physics model, since data under the plant&apos;s own loop cannot tell it from the disturbances the loop answered.</source>
         <translation>情景起点处 X_out 对热风设定值的稳态增益 [% wb/K]：装置（开环阶跃试验）%1；各模型在其 MPC 中的增益及与装置的偏差：%2。学习得到的残差对设定值计划的响应取自物理模型，因为装置自身闭环下的数据无法将其与闭环所应对的扰动区分开。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="181"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="183"/>
         <source>Training…</source>
         <translation>正在训练…</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="195"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="197"/>
         <source>Learn the correction models on %1: they train on the chronological 70 % and are scored on the rest.</source>
         <translation>在 %1 上学习修正模型：用按时间顺序的前 70 % 训练，其余部分评分。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="198"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="200"/>
         <source>Open a data set first (File ▸ Open data set folder…, or the bundled demo).</source>
         <translation>请先打开数据集（文件 ▸ 打开数据集文件夹…，或自带演示数据）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="221"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="223"/>
         <source>Key: %1</source>
         <translation>代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="233"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="235"/>
         <source>skill 1 (ties the better reference)</source>
         <translation>技能值 1（与较优参考持平）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="243"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="245"/>
         <source>unit circle</source>
         <translation>单位圆</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="257"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="259"/>
         <source>A unconstrained (ρ = %1)</source>
         <translation>无约束 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="263"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="265"/>
         <source>A with Eq. 30 (ρ = %1)</source>
         <translation>式 30 约束后的 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="290"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="292"/>
         <source> Slowest contraction of A: %1 per step (half-life %2 s).</source>
         <translation> A 的最慢收缩：每步 %1（半衰期 %2 s）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="295"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="297"/>
         <source>On %1, held-out part: %2 rows. Skill below 1 beats both reference predictors (the last measurement held, and the physics model with its last error held). R² below 0 means a model predicts worse than the batch&apos;s mean (hover an R² for what it says).</source>
         <translation>数据 %1，留出部分：%2 行。技能小于 1 表示优于两个参考预测（保持最后测量值；物理模型保持最后误差）。R² 小于 0 表示模型预测比批次均值还差（鼠标悬停在 R² 上可看说明）。</translation>
     </message>
@@ -4745,7 +4773,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/common/Workbench.cpp" line="452"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="125"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="127"/>
         <source>Learn the correction models</source>
         <translation>学习修正模型</translation>
     </message>
@@ -4773,48 +4801,48 @@ extrapolation</source>
         <translation>已训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="465"/>
+        <location filename="../widgets/common/Workbench.cpp" line="471"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="487"/>
+        <location filename="../widgets/common/Workbench.cpp" line="493"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="487"/>
+        <location filename="../widgets/common/Workbench.cpp" line="493"/>
         <source>Discover against the reference</source>
         <translation>相对参考期发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="497"/>
+        <location filename="../widgets/common/Workbench.cpp" line="503"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="504"/>
+        <location filename="../widgets/common/Workbench.cpp" line="510"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="519"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="126"/>
+        <location filename="../widgets/common/Workbench.cpp" line="525"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="128"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="523"/>
+        <location filename="../widgets/common/Workbench.cpp" line="529"/>
         <source>Ablation: %1 variants trained and evaluated</source>
         <translation>消融实验：已训练并评估 %1 个变体</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="530"/>
+        <location filename="../widgets/common/Workbench.cpp" line="536"/>
         <source>Generate</source>
         <translation>生成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="533"/>
+        <location filename="../widgets/common/Workbench.cpp" line="539"/>
         <source>Wrote %1 virtual-plant batches to %2</source>
         <translation>已将 %1 个虚拟装置批次写入 %2</translation>
     </message>

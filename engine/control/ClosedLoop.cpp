@@ -1,5 +1,6 @@
 #include "control/ClosedLoop.h"
 
+#include "common/Parallel.h"
 #include "common/Units.h"
 #include "plant/PlantLine.h"
 
@@ -7,7 +8,6 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <future>
 
 namespace drytwin::control {
 
@@ -389,7 +389,6 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         stepsDone[c] = 0;
     }
     std::atomic<bool> stopRequested{false};
-    std::atomic<std::size_t> nextController{0};
     const auto runController = [&](std::size_t c, bool reportsProgress) {
         const ControllerKind kind = options.controllers[c];
         const auto runStart = std::chrono::steady_clock::now();
@@ -479,27 +478,26 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         run.elapsedSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
     };
-    // Both threads take the next controller in the list until none is left; the caller's
-    // thread then relays the other's progress until it is done.
-    const auto takeControllers = [&](bool reportsProgress) {
-        for (std::size_t c = nextController++; c < count && !stopRequested; c = nextController++) {
-            runController(c, reportsProgress);
-        }
-    };
-    auto second = std::async(std::launch::async, takeControllers, false);
-    takeControllers(true);
-    while (second.wait_for(std::chrono::milliseconds(200)) != std::future_status::ready) {
-        std::size_t all = 0;
-        for (std::size_t j = 0; j < count; ++j) {
-            all += stepsDone[j];
-        }
-        if (!stopRequested &&
-            reportProgress(progress, "mpc", static_cast<double>(all) / static_cast<double>(total * count),
-                           "finishing the last controller")) {
-            stopRequested = true;
-        }
-    }
-    second.get();
+    // Two controllers at a time, each taking the next in the list; once the caller's thread
+    // has none left it relays the other's progress until it is done.
+    parallelForFromCaller(
+        count, 2,
+        [&](std::size_t c, bool onCallerThread) {
+            if (!stopRequested) {
+                runController(c, onCallerThread);
+            }
+        },
+        [&] {
+            std::size_t all = 0;
+            for (std::size_t j = 0; j < count; ++j) {
+                all += stepsDone[j];
+            }
+            if (!stopRequested &&
+                reportProgress(progress, "mpc", static_cast<double>(all) / static_cast<double>(total * count),
+                               "finishing the last controller")) {
+                stopRequested = true;
+            }
+        });
     bool stopped = stopRequested;
     std::optional<data::SiBatch> piRecord;
     for (std::size_t c = 0; c < count; ++c) {

@@ -1,6 +1,7 @@
 #include "hybrid/HybridTraining.h"
 
 #include "calibration/Calibration.h"
+#include "common/Parallel.h"
 #include "hybrid/Evaluation.h"
 
 #include <algorithm>
@@ -474,34 +475,33 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
         return row;
     };
 
-    // The rows are independent: two run at a time (the caller's thread and one more), each
-    // taking the next row not yet taken. Only the caller's thread calls the progress callback.
+    // The rows are independent: two run at a time (the caller's thread and one more; two
+    // rows' fits already hold 1.3 GB), each taking the next row not yet taken.
     std::vector<std::optional<Expected<AblationRow>>> rows(variants.size());
-    std::atomic<std::size_t> nextRow{0}, rowsDone{0};
+    std::atomic<std::size_t> rowsDone{0};
     std::atomic<bool> stopRequested{false};
-    const auto takeRows = [&](bool reportsProgress) {
-        for (std::size_t i = nextRow++; i < variants.size() && !stopRequested; i = nextRow++) {
-            if (reportsProgress && reportProgress(progress, "ablation", static_cast<double>(rowsDone) / total,
-                                                  variants[i].name)) {
-                stopRequested = true;
-                break;
+    const auto askCaller = [&](const std::string& detail) {
+        if (!stopRequested &&
+            reportProgress(progress, "ablation", static_cast<double>(rowsDone) / total, detail)) {
+            stopRequested = true;
+        }
+    };
+    parallelForFromCaller(
+        variants.size(), 2,
+        [&](std::size_t i, bool onCallerThread) {
+            if (onCallerThread) {
+                askCaller(variants[i].name);
+            }
+            if (stopRequested) {
+                return;
             }
             rows[i] = runRow(variants[i]);
             ++rowsDone;
             if (!*rows[i]) {
                 stopRequested = true; // the first failure ends the table
             }
-        }
-    };
-    auto second = std::async(std::launch::async, takeRows, false);
-    takeRows(true);
-    while (second.wait_for(std::chrono::milliseconds(200)) != std::future_status::ready) {
-        if (!stopRequested &&
-            reportProgress(progress, "ablation", static_cast<double>(rowsDone) / total, "the last rows")) {
-            stopRequested = true;
-        }
-    }
-    second.get();
+        },
+        [&] { askCaller("the last rows"); });
     for (auto& r : rows) {
         if (r && !*r) {
             return r->error();

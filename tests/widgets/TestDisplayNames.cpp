@@ -76,6 +76,31 @@ private Q_SLOTS:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
     void cleanup() { setLanguage("en"); }
 
+    // Item 15: every verdict ends in what to do next, in plant words, in both languages.
+    void everyVerdictSaysWhatToDoNext() {
+        const std::vector<std::string> verdicts{"cause_found", "no_structural_cause",
+                                                "unexplained_structure"};
+        QStringList english;
+        for (const auto& v : verdicts) {
+            const QString next = verdictNextStep(v);
+            QVERIFY2(next.startsWith(QStringLiteral("Next: ")), qPrintable(QString::fromStdString(v)));
+            QVERIFY2(!next.contains(QLatin1Char('_')), qPrintable(next)); // no internal keys
+            QVERIFY(!english.contains(next));
+            english << next;
+        }
+        QVERIFY(verdictNextStep("no_such_verdict").isEmpty());
+        setLanguage("zh_CN");
+        for (std::size_t i = 0; i < verdicts.size(); ++i) {
+            const QString next = verdictNextStep(verdicts[i]);
+            QVERIFY(next != english[static_cast<int>(i)]);
+            QVERIFY2(englishWords(next).isEmpty(), qPrintable(englishWords(next).join(' ')));
+        }
+        // Discovery's channel names read as plant words too.
+        setLanguage("en");
+        QCOMPARE(columnDisplayName("X_out"), QStringLiteral("outlet moisture"));
+        QCOMPARE(columnDisplayName("T_hdt"), QStringLiteral("tube-outlet temperature"));
+    }
+
     // Item 14: a cause has one name, on Discover, Training, the scenario form and the model table.
     void oneNamePerCauseOnEveryTab() {
         Workbench wb;

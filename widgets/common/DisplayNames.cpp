@@ -48,6 +48,11 @@ QString columnDisplayName(const std::string& column) {
         {"T_out_C", QT_TRANSLATE_NOOP("DisplayNames", "outlet temperature")},
         {"X_hdt_pct", QT_TRANSLATE_NOOP("DisplayNames", "tube-outlet moisture")},
         {"T_hdt_C", QT_TRANSLATE_NOOP("DisplayNames", "tube-outlet temperature")},
+        // Discovery's channel names (the same quantities, without the unit suffix).
+        {"X_out", QT_TRANSLATE_NOOP("DisplayNames", "outlet moisture")},
+        {"T_out", QT_TRANSLATE_NOOP("DisplayNames", "outlet temperature")},
+        {"X_hdt", QT_TRANSLATE_NOOP("DisplayNames", "tube-outlet moisture")},
+        {"T_hdt", QT_TRANSLATE_NOOP("DisplayNames", "tube-outlet temperature")},
         {"error_X_out_pct", QT_TRANSLATE_NOOP("DisplayNames", "model error, outlet moisture")},
         {"error_T_out_C", QT_TRANSLATE_NOOP("DisplayNames", "model error, outlet temperature")},
         {"error_X_hdt_pct", QT_TRANSLATE_NOOP("DisplayNames", "model error, tube-outlet moisture")},
@@ -209,6 +214,28 @@ QString verdictDisplayText(const std::string& verdict, const QString& firstCause
         return QCoreApplication::translate("DisplayNames", "Something is left that no known cause explains");
     }
     return QString::fromStdString(verdict);
+}
+
+QString verdictNextStep(const std::string& verdict) {
+    if (verdict == "cause_found") {
+        return QCoreApplication::translate(
+            "DisplayNames", "Next: check that part of the line (the evidence says where and from when), then "
+                            "“Extend the model” to add the cause and see how much the simulation improves.");
+    }
+    if (verdict == "no_structural_cause") {
+        return QCoreApplication::translate(
+            "DisplayNames", "Next: nothing in the model needs changing for these data. To see smaller "
+                            "effects, record longer or more batches.");
+    }
+    if (verdict == "unexplained_structure") {
+        return QCoreApplication::translate(
+            "DisplayNames",
+            "Next: compare with data from a time when the line ran well (“Compare with a reference "
+            "period”): what changed since then is named more surely than from one data set alone. The "
+            "evidence says which measurement the error follows; check that transmitter and the maintenance "
+            "log around the time it starts.");
+    }
+    return {};
 }
 
 QString terminationText(Termination termination) {

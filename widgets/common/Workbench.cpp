@@ -455,7 +455,13 @@ void Workbench::train(const workflow::TrainOptions& options) {
             m_latest.train = r;
             Q_EMIT status(tr("Learnt the correction models (PGRL-CC) and the two comparison models"));
             Q_EMIT trained();
-            fetchModel({}, dataSetLabel());
+            // The learnt parts are in the result: the tabs say "learnt" now, not after a model
+            // read queued behind whatever else waits (issue #43 item 11).
+            hybrid::HybridModel m = m_model;
+            m.pgrlCc = r.pgrlCc;
+            m.extInput = r.extInput;
+            m.lstm = r.lstm;
+            takeModel(m, {}, dataSetLabel());
             evaluate();
         });
 }

@@ -135,11 +135,13 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
             if (!retrain) {
                 return;
             }
+            // The verdict says "extended" once the model has changed (show() on modelChanged),
+            // not while the extension still waits behind another job.
             m_workbench.setModel(d->extendedModel, QString::fromLatin1(staleReason::kExtended), *retrain);
             m_extend->setEnabled(false);
-            m_verdict->setText(m_verdict->text() + tr(" The model is extended."));
         }
     });
+    connect(&m_workbench, &Workbench::modelChanged, this, &DiscoverPanel::show);
     connect(&m_workbench, &Workbench::discovered, this, &DiscoverPanel::show);
     connect(&m_workbench, &Workbench::referenceChanged, this, &DiscoverPanel::showReference);
     connect(&m_workbench, &Workbench::dataChanged, this, &DiscoverPanel::show);
@@ -582,11 +584,20 @@ void DiscoverPanel::show() {
         }
         named << (f.group.empty() ? name : tr("%1, one of: %2").arg(groupDisplayName(f.group), name));
     }
+    // A model that already holds every named cause (Extend was pressed, also before the project
+    // was saved and reopened) is not extended again.
+    const auto& mechanisms = m_workbench.model().mechanisms;
+    const bool extended =
+        !d.findings.empty() && std::all_of(d.findings.begin(), d.findings.end(),
+                                           [&](const auto& f) { return mechanisms.count(f.cause) > 0; });
+    const QString nextStep = extended ? QString() : verdictNextStep(d.verdict);
     m_verdict->setText(
         tr("%1. On %2.")
-            .arg(verdictDisplayText(d.verdict, named.join(tr(", "))), m_workbench.dataSetLabel()));
+            .arg(verdictDisplayText(d.verdict, named.join(tr(", "))), m_workbench.dataSetLabel()) +
+        (nextStep.isEmpty() ? QString() : QStringLiteral("\n") + nextStep) +
+        (extended ? tr(" The model is extended.") : QString()));
     m_verdict->setToolTip(tr("Discovery's verdict key: %1").arg(QString::fromStdString(d.verdict)));
-    m_extend->setEnabled(!d.findings.empty());
+    m_extend->setEnabled(!d.findings.empty() && !extended);
     m_ranking->setRowCount(static_cast<int>(d.ranking.size()));
     for (std::size_t i = 0; i < d.ranking.size(); ++i) {
         const auto& c = d.ranking[i];
@@ -613,7 +624,7 @@ void DiscoverPanel::show() {
     for (const auto& o : d.residuals) {
         QStringList items;
         for (const auto& c : o.correlates) {
-            items << tr("%1 at %2 s (ccf %3%4)")
+            items << tr("%1, %2 s earlier (correlation %3%4)")
                          .arg(columnDisplayName(c.column))
                          .arg(c.lagS, 0, 'f', 0)
                          .arg(c.ccf, 0, 'f', 2)
@@ -621,7 +632,7 @@ void DiscoverPanel::show() {
         }
         if (!items.isEmpty()) {
             html += tr("<p><b>%1</b> error moves with: %2</p>")
-                        .arg(QString::fromStdString(o.output).toHtmlEscaped(),
+                        .arg(columnDisplayName(o.output).toHtmlEscaped(),
                              items.join(QStringLiteral("; ")).toHtmlEscaped());
         }
     }
@@ -662,13 +673,12 @@ void DiscoverPanel::show() {
             html += tr("<p><b>Unexplained</b> (%1): the error follows the simulated rate of change (a lag of "
                        "%2 s "
                        "would explain %3 % of it): the line's dynamics differ from the model's.</p>")
-                        .arg(QString::fromStdString(u.output).toHtmlEscaped())
+                        .arg(columnDisplayName(u.output).toHtmlEscaped())
                         .arg(u.lagS, 0, 'g', 3)
                         .arg(100 * u.strength, 0, 'f', 0);
         } else {
-            html +=
-                tr("<p><b>Unexplained</b> (%1): %2</p>")
-                    .arg(QString::fromStdString(u.output).toHtmlEscaped(), signatureText(u).toHtmlEscaped());
+            html += tr("<p><b>Unexplained</b> (%1): %2</p>")
+                        .arg(columnDisplayName(u.output).toHtmlEscaped(), signatureText(u).toHtmlEscaped());
         }
     }
     if (r->keptStartingModel) {

@@ -111,6 +111,8 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     layout->addWidget(split);
     connect(train, &QPushButton::clicked, this, &ResidualPanel::train);
     connect(&m_workbench, &Workbench::evaluated, this, &ResidualPanel::showEvaluation);
+    connect(&m_workbench, &Workbench::trained, this,
+            [this] { m_note->setText(tr("Learnt. Scoring the models on the held-out part…")); });
     // Results of another data set or model are not shown as these.
     connect(&m_workbench, &Workbench::dataChanged, this, [this] {
         showEvaluation();
