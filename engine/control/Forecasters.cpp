@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace drytwin::control {
 
@@ -82,22 +83,36 @@ public:
         std::vector<std::size_t> starts;
         batches.reserve(plans.size());
         sims.reserve(plans.size());
-        for (std::size_t c = 0; c < plans.size(); ++c) {
-            // Only the plans the residual model forecasts need the long window: under
-            // controlThroughPhysics the others contribute their PBM run after `now` alone.
-            const std::size_t start = (c == 0 || !m_controlThroughPhysics) ? longFrom : viewFrom;
+        // The PBM over a plan's window from row `start` (the transport delay's lead before it),
+        // with the hot air held at heldK when given; the view's batch is the window from start.
+        const auto simulateFrom = [&](std::size_t start, const std::vector<double>& plan,
+                                      std::optional<double> heldK,
+                                      data::SiBatch& view) -> Expected<physics::SimulationResult> {
             const std::size_t from = start > lead ? start - lead : 0;
-            const data::SiBatch w = planWindow(at, from, plans[c], horizon);
+            data::SiBatch w = planWindow(at, from, plan, horizon);
+            view = planWindow(at, start, plan, horizon);
+            if (heldK) {
+                for (auto* b : {&w, &view}) {
+                    std::fill(b->tHotK.begin(), b->tHotK.end(), *heldK);
+                    std::fill(b->tHotSpK.begin(), b->tHotSpK.end(), *heldK);
+                }
+            }
             std::vector<std::size_t> rows;
             for (std::size_t r = start; r < w.rows() + from; ++r) {
                 rows.push_back(r - from);
             }
-            auto sim = physics::simulateLine(physics::toLineInputs(w), m_p, m_o, rows);
+            return physics::simulateLine(physics::toLineInputs(w), m_p, m_o, rows);
+        };
+        for (std::size_t c = 0; c < plans.size(); ++c) {
+            // Only the plans the residual model forecasts need the long window: under
+            // controlThroughPhysics the others contribute their PBM run after `now` alone.
+            const std::size_t start = (c == 0 || !m_controlThroughPhysics) ? longFrom : viewFrom;
+            data::SiBatch view;
+            auto sim = simulateFrom(start, plans[c], std::nullopt, view);
             if (!sim) {
                 return sim.error();
             }
-            // The view's batch: the window's rows from its start, aligned with the simulation.
-            batches.push_back(planWindow(at, start, plans[c], horizon));
+            batches.push_back(std::move(view));
             sims.push_back(std::move(*sim));
             starts.push_back(start);
         }
@@ -112,22 +127,11 @@ public:
         const std::size_t viewCount = m_controlThroughPhysics ? 1 : plans.size();
         if (const auto* correction = usedCorrection()) {
             correctedBases.reserve(viewCount);
-            const std::size_t from = longFrom > lead ? longFrom - lead : 0;
-            const double heldK = at.record->tHotK[at.now - 1];
-            data::SiBatch held = planWindow(at, from, plans.front(), horizon);
-            std::fill(held.tHotK.begin(), held.tHotK.end(), heldK);
-            std::fill(held.tHotSpK.begin(), held.tHotSpK.end(), heldK);
-            std::vector<std::size_t> rows;
-            for (std::size_t r = longFrom; r < held.rows() + from; ++r) {
-                rows.push_back(r - from);
-            }
-            auto heldRun = physics::simulateLine(physics::toLineInputs(held), m_p, m_o, rows);
+            data::SiBatch heldView;
+            auto heldRun = simulateFrom(longFrom, plans.front(), at.record->tHotK[at.now - 1], heldView);
             if (!heldRun) {
                 return heldRun.error();
             }
-            data::SiBatch heldView = planWindow(at, longFrom, plans.front(), horizon);
-            std::fill(heldView.tHotK.begin(), heldView.tHotK.end(), heldK);
-            std::fill(heldView.tHotSpK.begin(), heldView.tHotSpK.end(), heldK);
             for (std::size_t c = 0; c < viewCount; ++c) {
                 correctedBases.push_back(correction->correctedFrom(sims[c], heldView, *heldRun));
                 residual::BatchView v{&batches[c], &correctedBases.back(), {0, batches[c].rows()}};
