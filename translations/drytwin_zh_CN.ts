@@ -970,7 +970,7 @@
         <translation>基于 LSTM 的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="58"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="59"/>
         <source>MPC on: %1</source>
         <translation>MPC，基于：%1</translation>
     </message>
@@ -1076,7 +1076,7 @@
     </message>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="63"/>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="188"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="189"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
@@ -1175,22 +1175,22 @@
         <translation>迄今最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="136"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="137"/>
         <source>Run Calibrate to see the loss fall and the parameters settle</source>
         <translation>运行标定，可看到损失下降、参数收敛</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="141"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="142"/>
         <source>The parameters&apos; paths are drawn when the calibration ends</source>
         <translation>标定结束后绘出各参数的变化轨迹</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="142"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="143"/>
         <source>Run Calibrate to see the fit before and after</source>
         <translation>运行标定，可看到标定前后的拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="184"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="185"/>
         <source>Cannot calibrate: %1</source>
         <translation>无法标定：%1</translation>
     </message>
@@ -1230,17 +1230,17 @@
         <translation>最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="284"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="286"/>
         <source>measured %1</source>
         <translation>实测 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="287"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="289"/>
         <source>before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="290"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="292"/>
         <source>after</source>
         <translation>之后</translation>
     </message>
@@ -2451,13 +2451,13 @@
     <name>drytwin::widgets::LineView3D</name>
     <message>
         <location filename="../widgets/view3d/LineView3D.cpp" line="73"/>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="315"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="319"/>
         <source>moisture [% wb]</source>
         <translation>含水率 [% 湿基]</translation>
     </message>
     <message>
         <location filename="../widgets/view3d/LineView3D.cpp" line="73"/>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="315"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="319"/>
         <source>temperature [°C]</source>
         <translation>温度 [°C]</translation>
     </message>
@@ -2506,52 +2506,52 @@
 <context>
     <name>drytwin::widgets::MainWindow</name>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="33"/>
+        <location filename="../widgets/MainWindow.cpp" line="34"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="47"/>
+        <location filename="../widgets/MainWindow.cpp" line="48"/>
         <source>Data</source>
         <translation>数据</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="48"/>
+        <location filename="../widgets/MainWindow.cpp" line="49"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="49"/>
+        <location filename="../widgets/MainWindow.cpp" line="50"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="50"/>
+        <location filename="../widgets/MainWindow.cpp" line="51"/>
         <source>Residual model</source>
         <translation>残差模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="51"/>
+        <location filename="../widgets/MainWindow.cpp" line="52"/>
         <source>Diagnostics</source>
         <translation>诊断</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="52"/>
+        <location filename="../widgets/MainWindow.cpp" line="53"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="53"/>
+        <location filename="../widgets/MainWindow.cpp" line="54"/>
         <source>What-if MPC</source>
         <translation>假设分析 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="54"/>
+        <location filename="../widgets/MainWindow.cpp" line="55"/>
         <source>3D line</source>
         <translation>三维产线</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="56"/>
+        <location filename="../widgets/MainWindow.cpp" line="57"/>
         <source>Training</source>
         <translation>培训</translation>
     </message>
@@ -2560,47 +2560,47 @@
         <translation>未加载数据。文件 ▸ 打开数据集…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="60"/>
+        <location filename="../widgets/MainWindow.cpp" line="61"/>
         <source>&lt;b&gt;Data&lt;/b&gt;: the loaded batches, their rows kept by the cleaning, and every measured channel over time. Select several batches to overlay them; drop files here to open them. Files with other column names open through Column mapping…</source>
         <translation>&lt;b&gt;数据&lt;/b&gt;：已加载的批次、清洗后保留的行，以及每个测量通道随时间的变化。选择多个批次可叠加显示；把文件拖到这里即可打开。列名不同的文件通过“列映射…”打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="64"/>
+        <location filename="../widgets/MainWindow.cpp" line="65"/>
         <source>&lt;b&gt;Model&lt;/b&gt;: the physics model&apos;s parameters with units and bounds (paper Eqs. 1–19), and its simulation against the measurements. Edit a value to try it; Undo takes it back.</source>
         <translation>&lt;b&gt;模型&lt;/b&gt;：物理模型的参数及其单位和范围（论文公式 1–19），以及模拟与测量的对比。修改数值即可试验；“撤销”可恢复。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="68"/>
+        <location filename="../widgets/MainWindow.cpp" line="69"/>
         <source>&lt;b&gt;Calibrate&lt;/b&gt;: fits the ticked parameters to the data (a global search, then BOBYQA) and gives each its 95 % interval. Stop keeps the best so far.</source>
         <translation>&lt;b&gt;标定&lt;/b&gt;：把勾选的参数拟合到数据（先全局搜索，再 BOBYQA），并给出各自的 95 % 区间。停止时保留目前最优。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="71"/>
+        <location filename="../widgets/MainWindow.cpp" line="72"/>
         <source>&lt;b&gt;Residual model&lt;/b&gt;: learns a correction of the physics model from the data (PGRL-CC, paper Eqs. 20–30) and scores it on held-out data beside the comparison models and the two trivial forecasts. Skill below 1 beats both.</source>
         <translation>&lt;b&gt;残差模型&lt;/b&gt;：从数据学习物理模型的修正（PGRL-CC，论文公式 20–30），并在留出数据上与对比模型及两个平凡预测一起评分。技能小于 1 即优于二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="75"/>
+        <location filename="../widgets/MainWindow.cpp" line="76"/>
         <source>&lt;b&gt;Diagnostics&lt;/b&gt;: the residuals&apos; autocorrelation and spectrum (white noise is what a complete model leaves), where in the operating range the physics model errs, and what its error moves with.</source>
         <translation>&lt;b&gt;诊断&lt;/b&gt;：残差的自相关和频谱（完整的模型只留下白噪声）、物理模型在工况范围内何处出错，以及其误差随什么变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="79"/>
+        <location filename="../widgets/MainWindow.cpp" line="80"/>
         <source>&lt;b&gt;Discover&lt;/b&gt;: what the simulation gets wrong, the physical cause when one is specific (better on every output it touches, consistent across batches, told apart from its look-alikes), and the gain of the extended model.</source>
         <translation>&lt;b&gt;发现&lt;/b&gt;：模拟哪里不准；当某个物理原因具有特异性时给出它（在其影响的每个输出上都更好、各批次间一致、能与相似原因区分），以及扩展模型的收益。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="83"/>
+        <location filename="../widgets/MainWindow.cpp" line="84"/>
         <source>&lt;b&gt;What-if MPC&lt;/b&gt;: a scenario run against the virtual plant once per controller, an MPC on each model that exists and the plant&apos;s own PI loop, with the paper&apos;s Table 2 metrics.</source>
         <translation>&lt;b&gt;假设分析 MPC&lt;/b&gt;：针对虚拟工厂，为每个控制器运行一次情景：每个已有模型上的 MPC 以及工厂自己的 PI 回路，并给出论文表 2 的指标。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="87"/>
+        <location filename="../widgets/MainWindow.cpp" line="88"/>
         <source>&lt;b&gt;3D line&lt;/b&gt;: the drying tube, conveyor and winnower with the material parcels coloured by moisture at the time cursor; the slider moves every plot&apos;s cursor.</source>
         <translation>&lt;b&gt;三维产线&lt;/b&gt;：干燥管、输送机和风选机，物料颗粒按时间光标处的含水率着色；滑块同时移动所有曲线图的光标。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="90"/>
+        <location filename="../widgets/MainWindow.cpp" line="91"/>
         <source>&lt;b&gt;Training&lt;/b&gt;: the line runs live for a trainee; the instructor&apos;s window injects faults, freezes the clock and scores the answers.</source>
         <translation>&lt;b&gt;培训&lt;/b&gt;：产线为学员实时运行；教员窗口可注入故障、冻结时钟并为回答评分。</translation>
     </message>
@@ -2635,22 +2635,22 @@
         <translation>为未能识别的文件打开列映射对话框</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="61"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="72"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="75"/>
         <source>%1: %2 %</source>
         <translation>%1：%2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="62"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="121"/>
+        <location filename="../widgets/MainWindow.cpp" line="122"/>
         <source>The line&apos;s commissioning runs are in %1: choose them under &quot;Compare with a reference period&quot; to ask what changed since commissioning.</source>
         <translation>产线的调试运行数据位于 %1：在“与参考期比较”中选择它们，即可查看自调试以来发生了什么变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="129"/>
+        <location filename="../widgets/MainWindow.cpp" line="130"/>
         <source>Opening the recording beside %1; the data-set list at the top right switches back.</source>
         <translation>正在 %1 之外另行打开该记录；用右上角的数据集列表可切换回去。</translation>
     </message>
@@ -2788,7 +2788,7 @@
         <translation>语言</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="90"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="107"/>
         <source>Ready.</source>
         <translation>就绪。</translation>
     </message>
@@ -2803,22 +2803,22 @@
         <translation>项目已保存到 %1（模型、结果和视图）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="117"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="127"/>
         <source>Saving the project to %1…</source>
         <translation>正在保存项目到 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="165"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="175"/>
         <source>The project&apos;s results could not be read (%1); it opens without them.</source>
         <translation>无法读取项目的结果（%1）；项目将不带结果打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="218"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="239"/>
         <source>Wait until the running job has finished (or cancel it), then switch the language.</source>
         <translation>请等待当前任务完成（或取消它），然后再切换语言。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="251"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="272"/>
         <source>The training session under way was saved in %1 when the language changed: the instructor window&apos;s Session file ▸ Open session… continues it.</source>
         <translation>切换语言时，进行中的培训会话已保存到 %1：在教员窗口的 会话文件 ▸ 打开会话… 可继续。</translation>
     </message>
@@ -2857,62 +2857,62 @@
         <translation>DryTwin 用户指南</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="105"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="122"/>
         <source>No data loaded. File ▸ Open data set folder… (or File ▸ Open the bundled demo)</source>
         <translation>未加载数据。文件 ▸ 打开数据集文件夹…（或 文件 ▸ 打开自带演示数据）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="111"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="128"/>
         <source>Loading</source>
         <translation>正在加载</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="112"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="129"/>
         <source>Simulating</source>
         <translation>正在模拟</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="113"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="130"/>
         <source>Calibrating</source>
         <translation>正在标定</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="114"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="131"/>
         <source>Learning the correction models</source>
         <translation>正在学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="115"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="132"/>
         <source>Training the LSTM</source>
         <translation>正在训练 LSTM</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="116"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="133"/>
         <source>Scoring on the held-out part</source>
         <translation>正在留出部分上评分</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="117"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="134"/>
         <source>Discovering</source>
         <translation>正在发现</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="118"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="135"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="119"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="136"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="120"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="137"/>
         <source>Generating plant data</source>
         <translation>正在生成工厂数据</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="121"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="138"/>
         <source>Training session</source>
         <translation>培训会话</translation>
     </message>
@@ -2928,8 +2928,8 @@
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="53"/>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="101"/>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="108"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="111"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="118"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -2938,12 +2938,12 @@
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="125"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="135"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="134"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="144"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
@@ -4028,12 +4028,12 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::TrainingPanel</name>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="85"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="86"/>
         <source>The line&apos;s conditions: initial levels, load changes, seed (docs/mpc.md)</source>
         <translation>产线条件：初始水平、负荷变化、随机种子（docs/mpc.md）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="86"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="87"/>
         <source>Start session</source>
         <translation>开始会话</translation>
     </message>
@@ -4046,345 +4046,345 @@ extrapolation</source>
         <translation>显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="89"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="90"/>
         <source>Instructor window…</source>
         <translation>教员窗口…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="90"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="91"/>
         <source>Opens the instructor&apos;s window: clock, snapshots, faults, the true moisture and the score. Not on the trainee&apos;s screen.</source>
         <translation>打开教员窗口：时钟、快照、故障、真实水分和得分。不显示在学员屏幕上。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="92"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="93"/>
         <source>No session</source>
         <translation>无会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="101"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="102"/>
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="108"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="109"/>
         <source> % wb</source>
         <translation> % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="110"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="111"/>
         <source>Apply</source>
         <translation>应用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="119"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="120"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="121"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="122"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="125"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="126"/>
         <source>X_out setpoint</source>
         <translation>X_out 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="126"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="127"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="130"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="131"/>
         <source>Diagnose the recording…</source>
         <translation>诊断记录…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="131"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="132"/>
         <source>Saves what the line recorded so far as a batch file and opens it, so that the Discover tab can show what the model gets wrong</source>
         <translation>将产线至今的记录保存为批次文件并打开，以便“发现”页显示模型哪里出错</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="134"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="587"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="135"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="610"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="138"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="139"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="141"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="572"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="143"/>
         <source>Stops the line&apos;s clock while you think; press again to continue</source>
         <translation>思考时暂停产线时钟；再按一次继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="143"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="144"/>
         <source>Trainee</source>
         <translation>学员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="153"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="154"/>
         <source>Causes named (session time):</source>
         <translation>已给出的原因（会话时间）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="157"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="571"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="158"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="594"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="161"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="162"/>
         <source> min</source>
         <translation> 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="162"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="163"/>
         <source>Run ahead</source>
         <translation>快进</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="163"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="164"/>
         <source>Runs the line this much further at full speed</source>
         <translation>以最快速度让产线再运行这么久</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="165"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="166"/>
         <source>label (default: the time)</source>
         <translation>标签（默认：时间）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="166"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="167"/>
         <source>Take snapshot</source>
         <translation>拍摄快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="169"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="170"/>
         <source>Restore selected</source>
         <translation>恢复所选快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="179"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="180"/>
         <source> s from now</source>
         <translation> 秒后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="180"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="182"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="182"/>
         <source>Strength</source>
         <translation>强度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="182"/>
         <source>Acts from</source>
         <translation>起作用时间</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="182"/>
         <source>Found after</source>
         <translation>发现用时</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="185"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="186"/>
         <source>Save session…</source>
         <translation>保存会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="186"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="187"/>
         <source>Open session…</source>
         <translation>打开会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="187"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="226"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="337"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="188"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="227"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="341"/>
         <source>Instructor</source>
         <translation>教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="200"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="201"/>
         <source>Clock and snapshots</source>
         <translation>时钟与快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="208"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="209"/>
         <source>Faults</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="212"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="213"/>
         <source>A session file holds the scenario, every event (faults, snapshots, answers) and the recording as a batch file; reopening replays it to the same data.</source>
         <translation>会话文件包含工况、每个事件（故障、快照、回答）以及作为批次文件的记录；重新打开时会回放得到相同的数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="220"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="221"/>
         <source>Set instructor password…</source>
         <translation>设置教员密码…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="221"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="222"/>
         <source>Asked before the instructor window opens (empty: no password)</source>
         <translation>打开教员窗口前询问（留空：不设密码）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="227"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="228"/>
         <source>New instructor password (empty: none):</source>
         <translation>新的教员密码（留空：无）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="234"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="235"/>
         <source>Session file</source>
         <translation>会话文件</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="237"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="238"/>
         <source>Start a session: the line runs live under its PI loop.</source>
         <translation>开始会话：产线在其 PI 回路下实时运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="242"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="243"/>
         <source>Two detectors commissioned on healthy runs of this line: the physics model&apos;s error, and a dynamic PCA monitor of the screens&apos; signals. Each alarms when the line leaves its normal (1 % chance of a false alarm over the session)</source>
         <translation>两个检测器在本产线的健康运行数据上调试：物理模型误差，以及画面信号的动态 PCA 监控。产线偏离正常状态时各自报警（整个会话的误报概率为 1 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="261"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="276"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="262"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="277"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="262"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="263"/>
         <source>T_hot [°C]</source>
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="263"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="264"/>
         <source>Feed [t/h]</source>
         <translation>进料 [t/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="264"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="265"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="265"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="277"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="266"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="278"/>
         <source>session time [min]</source>
         <translation>会话时间 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="267"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="268"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="270"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="270"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="280"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="271"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="281"/>
         <source>X_out measured</source>
         <translation>X_out 测量值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="273"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="274"/>
         <source>DryTwin — instructor</source>
         <translation>DryTwin — 教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="282"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="283"/>
         <source>X_out true</source>
         <translation>X_out 真实值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="291"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="295"/>
         <source>Monitor T² [-]</source>
         <translation>监控 T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="293"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="297"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="294"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="298"/>
         <source>T² of the model&apos;s error</source>
         <translation>模型误差的 T²</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="303"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="307"/>
         <source>Start a session to see the line run</source>
         <translation>开始会话即可看到产线运行</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="304"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="308"/>
         <source>The monitor&apos;s T² shows once it has a minute of the model&apos;s error</source>
         <translation>监测器积累一分钟的模型误差后显示 T²</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="307"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="311"/>
         <source>Start a session to see the true outlet moisture beside the measured</source>
         <translation>开始会话即可看到真实出口含水率与测量值的对比</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="409"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="413"/>
         <source>Save the session as a folder</source>
         <translation>把会话保存为文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="412"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="416"/>
         <source>Session folder (*)</source>
         <translation>会话文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="630"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="653"/>
         <source>Line monitor unavailable: %1</source>
         <translation>产线监控不可用：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="632"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="655"/>
         <source>Line monitor: normal (as on its commissioning runs).</source>
         <translation>产线监控：正常（与调试运行一致）。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="637"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="660"/>
         <source>the model&apos;s error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="637"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="660"/>
         <source>the screens&apos; signals (PCA)</source>
         <translation>画面信号（PCA）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="640"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="663"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal; the change began at about %3. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态；变化约始于 %3。请诊断记录以确定原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="643"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="666"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态。请诊断记录以确定原因。</translation>
     </message>
@@ -4393,52 +4393,52 @@ extrapolation</source>
         <translation>X_out 真实值（教员）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="287"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="291"/>
         <source>T_hot setpoint</source>
         <translation>T_hot 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="288"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="292"/>
         <source>T_hot</source>
         <translation>T_hot</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="289"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="293"/>
         <source>feed</source>
         <translation>进料</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="290"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="294"/>
         <source>X_in</source>
         <translation>X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="316"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="313"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="317"/>
         <source>Stops the replay or the run ahead; the line stays where it got to</source>
         <translation>停止回放或快进；产线停留在已运行到的位置</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="315"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="319"/>
         <source>Scenario</source>
         <translation>工况</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="337"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="341"/>
         <source>Instructor password:</source>
         <translation>教员密码：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="340"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="344"/>
         <source>Wrong password: the instructor window stays closed.</source>
         <translation>密码错误：教员窗口保持关闭。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="397"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="401"/>
         <source>Select a snapshot to restore.</source>
         <translation>请选择要恢复的快照。</translation>
     </message>
@@ -4447,132 +4447,132 @@ extrapolation</source>
         <translation>将会话保存到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="418"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="422"/>
         <source>Open a training session</source>
         <translation>打开培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="418"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="422"/>
         <source>Sessions (*.json)</source>
         <translation>会话 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="427"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="431"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="434"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="438"/>
         <source>Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录以供诊断：%1。请在其上运行“发现”，然后在此给出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="437"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="441"/>
         <source>Recording opened for diagnosis: %1; the line&apos;s commissioning runs are in %2. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录用于诊断：%1；产线的调试运行数据位于 %2。对其运行“发现”，然后在此处指出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="444"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="448"/>
         <source>Session saved: %1</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="477"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="498"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="481"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="502"/>
         <source>The previous session was saved in %1.</source>
         <translation>上一个会话已保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="494"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="515"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="517"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="540"/>
         <source>%1 (stale: retrain)</source>
         <translation>%1（过期：需重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="518"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="541"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="566"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="589"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="568"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="591"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="568"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="591"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="568"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="591"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="570"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="593"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="571"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="594"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="572"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
         <source>Continue</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="582"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="605"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="583"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="606"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="587"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="610"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="594"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="617"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="604"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="627"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="604"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="627"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="607"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="630"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="618"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="641"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>
@@ -4623,147 +4623,148 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::Workbench</name>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="49"/>
+        <location filename="../widgets/common/Workbench.cpp" line="71"/>
         <source>%1 is queued behind the running job</source>
         <translation>%1 已排队，等待当前任务完成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="64"/>
+        <location filename="../widgets/common/Workbench.cpp" line="86"/>
         <source>%1 was cancelled; nothing changed.</source>
         <translation>%1 已取消；未作任何更改。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="65"/>
+        <location filename="../widgets/common/Workbench.cpp" line="87"/>
         <source>%1 failed: %2</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="81"/>
+        <location filename="../widgets/common/Workbench.cpp" line="105"/>
         <source>%1 (1 batch)</source>
         <translation>%1（1 个批次）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="81"/>
+        <location filename="../widgets/common/Workbench.cpp" line="105"/>
         <source>%1 (%2 batches)</source>
         <translation>%1（%2 个批次）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="158"/>
+        <location filename="../widgets/common/Workbench.cpp" line="182"/>
         <source>%1 changes the physics model that %2 learnt its corrections on: they will no longer match it and are set aside as stale.</source>
         <translation>“%1”会改变 %2 学习修正时所依据的物理模型：它们将不再匹配，并被标为过期。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="162"/>
+        <location filename="../widgets/common/Workbench.cpp" line="186"/>
         <source>%1, then retrain them</source>
         <translation>%1，然后重新训练它们</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="163"/>
+        <location filename="../widgets/common/Workbench.cpp" line="187"/>
         <source>%1 only (retrain later)</source>
         <translation>仅%1（稍后重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="187"/>
+        <location filename="../widgets/common/Workbench.cpp" line="211"/>
         <source>Physics model calibrated (%1 fitted to data).</source>
         <translation>物理模型已标定（%1 已拟合到数据）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="189"/>
+        <location filename="../widgets/common/Workbench.cpp" line="213"/>
         <source>Physics model with its default parameters (not calibrated).</source>
         <translation>物理模型使用默认参数（未标定）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="196"/>
+        <location filename="../widgets/common/Workbench.cpp" line="220"/>
         <source>Extended by discovery with: %1.</source>
         <translation>已由发现功能扩展：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="202"/>
+        <location filename="../widgets/common/Workbench.cpp" line="226"/>
         <source>%1: not learnt yet.</source>
         <translation>%1：尚未学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="205"/>
+        <location filename="../widgets/common/Workbench.cpp" line="229"/>
         <source>%1: learnt.</source>
         <translation>%1：已学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="206"/>
+        <location filename="../widgets/common/Workbench.cpp" line="230"/>
         <source>%1: learnt on %2.</source>
         <translation>%1：在 %2 上学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="209"/>
+        <location filename="../widgets/common/Workbench.cpp" line="233"/>
         <source>%1: stale, since %2; retrain it to use it.</source>
         <translation>%1：已过期，因为%2；需重新训练才能使用。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="224"/>
+        <location filename="../widgets/common/Workbench.cpp" line="248"/>
         <source>Read the model</source>
         <translation>读取模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="239"/>
+        <location filename="../widgets/common/Workbench.cpp" line="263"/>
         <source>Loading %1…</source>
         <translation>正在加载 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="248"/>
+        <location filename="../widgets/common/Workbench.cpp" line="272"/>
         <source>Load %1</source>
         <translation>加载 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="283"/>
+        <location filename="../widgets/common/Workbench.cpp" line="308"/>
         <source>%1: %2 batches, %3 rows, %4 missing cells; the cleaning keeps %5 rows</source>
         <translation>%1：%2 个批次，%3 行，%4 个缺失值；清洗后保留 %5 行</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="309"/>
+        <location filename="../widgets/common/Workbench.cpp" line="334"/>
         <source>Open model %1</source>
         <translation>打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="313"/>
+        <location filename="../widgets/common/Workbench.cpp" line="338"/>
         <source>Model %1 opened</source>
         <translation>已打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="314"/>
+        <location filename="../widgets/common/Workbench.cpp" line="339"/>
         <source>model file %1</source>
         <translation>模型文件 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="357"/>
+        <location filename="../widgets/common/Workbench.cpp" line="398"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="366"/>
+        <location filename="../widgets/common/Workbench.cpp" line="407"/>
         <source>Model saved to %1</source>
         <translation>模型已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="372"/>
+        <location filename="../widgets/common/Workbench.cpp" line="413"/>
         <source>Set %1</source>
         <translation>设置 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="388"/>
+        <location filename="../widgets/common/Workbench.cpp" line="429"/>
         <source>Set the model</source>
         <translation>设置模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="405"/>
+        <location filename="../widgets/common/Workbench.cpp" line="446"/>
+        <location filename="../widgets/common/Workbench.cpp" line="468"/>
         <source>Simulate</source>
         <translation>仿真</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="413"/>
+        <location filename="../widgets/common/Workbench.cpp" line="454"/>
         <source>Simulated %1 batches; mean outlet-moisture MAE %2 % wb</source>
         <translation>已仿真 %1 个批次；出口含水率平均 MAE %2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="426"/>
+        <location filename="../widgets/common/Workbench.cpp" line="483"/>
         <source>Calibration: %1; loss %2 → %3</source>
         <translation>标定：%1；损失 %2 → %3</translation>
     </message>
@@ -4772,19 +4773,19 @@ extrapolation</source>
         <translation>学习之后物理模型又经过了标定</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="452"/>
+        <location filename="../widgets/common/Workbench.cpp" line="509"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="127"/>
         <source>Learn the correction models</source>
         <translation>学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="456"/>
+        <location filename="../widgets/common/Workbench.cpp" line="513"/>
         <source>Learnt the correction models (PGRL-CC) and the two comparison models</source>
         <translation>已学习修正模型（PGRL-CC）和两个对比模型</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="153"/>
-        <location filename="../widgets/common/Workbench.cpp" line="422"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="154"/>
+        <location filename="../widgets/common/Workbench.cpp" line="478"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
@@ -4801,48 +4802,48 @@ extrapolation</source>
         <translation>已训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="471"/>
+        <location filename="../widgets/common/Workbench.cpp" line="528"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="493"/>
+        <location filename="../widgets/common/Workbench.cpp" line="550"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="493"/>
+        <location filename="../widgets/common/Workbench.cpp" line="550"/>
         <source>Discover against the reference</source>
         <translation>相对参考期发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="503"/>
+        <location filename="../widgets/common/Workbench.cpp" line="560"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="510"/>
+        <location filename="../widgets/common/Workbench.cpp" line="567"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="525"/>
+        <location filename="../widgets/common/Workbench.cpp" line="582"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="128"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="529"/>
+        <location filename="../widgets/common/Workbench.cpp" line="586"/>
         <source>Ablation: %1 variants trained and evaluated</source>
         <translation>消融实验：已训练并评估 %1 个变体</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="536"/>
+        <location filename="../widgets/common/Workbench.cpp" line="593"/>
         <source>Generate</source>
         <translation>生成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="539"/>
+        <location filename="../widgets/common/Workbench.cpp" line="596"/>
         <source>Wrote %1 virtual-plant batches to %2</source>
         <translation>已将 %1 个虚拟装置批次写入 %2</translation>
     </message>

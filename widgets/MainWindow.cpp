@@ -10,6 +10,7 @@
 
 #include "calibration/CalibrationPanel.h"
 #include "common/PlotStack.h"
+#include "common/WidgetHelpers.h"
 #include "data/DataPanel.h"
 #include "diagnostics/DiagnosticsPanel.h"
 #include "discovery/DiscoverPanel.h"
@@ -145,6 +146,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     }
     QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    keepOnScreen(this); // saved on a monitor that is gone, it would open where nobody sees it
 }
 
 // The job runner's destructor cancels every job and waits for the engine thread.

@@ -59,6 +59,10 @@ struct GenerateResult {
 
 /// @brief The physics model over every loaded batch, with the session's model.
 struct SimulateOptions {
+    /// Physics parameters to simulate with instead of the model's (the parameters a calibration
+    /// started from, for its before/after plot). A run with them is not kept as the latest
+    /// simulation: it is not the model's.
+    std::optional<properties::ParameterSet> parameters;
     Status validate() const { return {}; }
 };
 

@@ -471,9 +471,38 @@ private Q_SLOTS:
         });
         const auto discovered =
             connect(&w.workbench(), &widgets::Workbench::discovered, [&] { order << "discovered"; });
+        // The progress bar and the status line tell the same share of the action; a stage inside
+        // it (the LSTM, the simulations) is named after it; the bar's label is not cut (item 11).
+        auto* bar = w.statusBar()->findChild<QProgressBar*>();
+        auto* statusLine = w.statusBar()->findChild<QLabel*>();
+        QStringList disagreements;
+        int progressReports = 0;
+        const auto watchProgress =
+            connect(&w.workbench().jobs(), &widgets::JobRunner::progress,
+                    [&](widgets::JobId, const QString&, double, const QString&) {
+                        ++progressReports;
+                        const QString text = statusLine->text();
+                        const int colon = text.indexOf(QStringLiteral(": "));
+                        const int percent = text.indexOf(QStringLiteral(" %"), colon);
+                        const QString share = colon > 0 && percent > colon
+                                                  ? text.mid(colon + 2, percent - colon - 2)
+                                                  : QString();
+                        const QString label =
+                            bar->format().replace(QStringLiteral("%p"), QString::number(bar->value()));
+                        if (share != QString::number(bar->value()) ||
+                            bar->width() < bar->fontMetrics().horizontalAdvance(label)) {
+                            disagreements << QStringLiteral("%1 | bar %2 width %3")
+                                                 .arg(text)
+                                                 .arg(bar->value())
+                                                 .arg(bar->width());
+                        }
+                    });
         w.residualPanel()->train();
         w.workbench().discover();
         QVERIFY(waitIdle(w, 420000));
+        disconnect(watchProgress);
+        QVERIFY(progressReports > 5);
+        QVERIFY2(disagreements.isEmpty(), qPrintable(disagreements.mid(0, 5).join("\n")));
         disconnect(learnt);
         disconnect(discovered);
         QVERIFY2(order.indexOf("learnt") >= 0 && order.indexOf("learnt") < order.indexOf("discovered"),
@@ -566,6 +595,16 @@ private Q_SLOTS:
         const auto range = w.lineView()->colourRange();
         QVERIFY(range.first < range.second);
 
+        // A second data set opened beside it (one batch of it, as a recording would be), then
+        // the first one again: its results come back, and the project keeps both (item 18).
+        w.openDataSet(m_data + "/B02.csv");
+        QVERIFY(waitIdle(w, 120000));
+        QCOMPARE(w.workbench().dataSets().size(), std::size_t(2));
+        w.workbench().switchDataSet(0);
+        QVERIFY(waitIdle(w, 120000));
+        QCOMPARE(w.dataPanel()->batchTable()->rowCount(), 2);
+        QVERIFY(w.workbench().latest().discover.has_value());
+
         // Save the project and open it in a new window: data, model and tab come back. The
         // folder typed in the dialog does not exist yet: saving makes it (issue #43 item 9).
         const QString project = m_dir.filePath("projects/line 3/p.drytwin");
@@ -595,6 +634,13 @@ private Q_SLOTS:
         QCOMPARE(reopened.mpcPanel()->table()->rowCount(), 5);
         QVERIFY(curvesWithData(reopened.mpcPanel()->plots()->plot(0)) >= 3);
         QCOMPARE(reopened.calibrationPanel()->estimates()->rowCount(), 3);
+        // Issue #43 item 18: the calibration's before/after plot is drawn again (measured, before,
+        // after), and the data set opened beside the loaded one can be switched to again.
+        QCOMPARE(curvesWithData(reopened.calibrationPanel()->fitPlot()->plot(0)), 3);
+        QCOMPARE(reopened.workbench().dataSets().size(), std::size_t(2));
+        QCOMPARE(reopened.dataSetChooser()->count(), 2);
+        QCOMPARE(reopened.dataSetChooser()->currentIndex(), 0);
+        QVERIFY(reopened.dataSetChooser()->itemText(1).contains("B02.csv"));
         QCOMPARE(reopened.residualPanel()->metrics()->rowCount(), w.residualPanel()->metrics()->rowCount());
         QCOMPARE(reopened.workbench().learntPart(control::ControllerKind::PgrlCc).learntOn,
                  w.workbench().learntPart(control::ControllerKind::PgrlCc).learntOn);

@@ -10,19 +10,43 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QGuiApplication>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
+#include <QScreen>
 #include <QSpinBox>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QtTest>
 #include <qwt_plot.h>
+#include <qwt_plot_curve.h>
 #include <qwt_plot_item.h>
+#include <qwt_scale_div.h>
 
 using namespace drytwin;
 using namespace drytwin::widgets;
+
+namespace {
+
+/// True when the plot's y axis spans every point of its curves (and there are points).
+bool axisCoversItsCurves(QwtPlot* plot) {
+    double lo = std::numeric_limits<double>::infinity();
+    double hi = -lo;
+    for (auto* item : plot->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+        const auto* curve = static_cast<QwtPlotCurve*>(item);
+        if (curve->dataSize() > 0) {
+            const QRectF box = curve->boundingRect();
+            lo = std::min(lo, box.top());
+            hi = std::max(hi, box.bottom());
+        }
+    }
+    const QwtScaleDiv& y = plot->axisScaleDiv(QwtPlot::yLeft);
+    return lo <= hi && y.lowerBound() <= lo + 1e-9 && y.upperBound() >= hi - 1e-9;
+}
+
+} // namespace
 
 class TestTrainingPanel : public QObject {
     Q_OBJECT
@@ -246,6 +270,28 @@ private Q_SLOTS:
         QVERIFY(panel->instructorWindow()->isVisible());
         QVERIFY(panel->instructorView());
         QVERIFY(panel->truthPlots()->curveCount(0) >= 2);
+        QVERIFY(axisCoversItsCurves(panel->truthPlots()->plot(0)));
+        // Issue #43 item 18: minimised while the line runs on, then restored, its axis covers its
+        // curves as they are now.
+        panel->instructorWindow()->showMinimized();
+        QTest::mouseClick(panel->pauseButton(), Qt::LeftButton);
+        QTRY_VERIFY(!runner.frame().frozen);
+        const double minimisedAt = runner.frame().timeS;
+        QTRY_VERIFY_WITH_TIMEOUT(runner.frame().timeS >= minimisedAt + 60, 20000);
+        QTest::mouseClick(panel->pauseButton(), Qt::LeftButton);
+        QTRY_VERIFY(runner.frame().frozen);
+        panel->instructorWindow()->showNormal();
+        QTRY_VERIFY(axisCoversItsCurves(panel->truthPlots()->plot(0)));
+        QVERIFY(panel->truthPlots()->plot(0)->axisScaleDiv(QwtPlot::xBottom).upperBound() >=
+                runner.frame().timeS / 60.0 - 0.1);
+        // Placed off the desktop (a monitor that is gone), it opens on the screen again.
+        panel->setInstructorView(false);
+        panel->instructorWindow()->move(-6000, -6000);
+        panel->setInstructorView(true);
+        const QRect seen = panel->instructorWindow()->frameGeometry().intersected(
+            QGuiApplication::primaryScreen()->availableGeometry());
+        QVERIFY2(seen.width() >= 120 && seen.height() >= 60,
+                 qPrintable(QStringLiteral("%1,%2").arg(seen.width()).arg(seen.height())));
         panel->setInstructorView(false);
         QTemporaryDir dir;
         const QString folder = dir.filePath(QStringLiteral("not/yet/there"));

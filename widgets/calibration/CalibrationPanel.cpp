@@ -120,19 +120,20 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
     });
     connect(&m_workbench, &Workbench::calibrated, this, [this] {
         showResult();
-        // The same batches simulated with the new parameters, for the before/after plot.
-        m_awaitingAfter = true;
+        // The before/after plot: the same batches simulated with the new parameters and with the
+        // ones the calibration started from.
         m_workbench.simulate();
+        m_workbench.simulateCalibrationStart();
     });
-    connect(&m_workbench, &Workbench::simulated, this, [this] {
-        if (m_awaitingAfter) {
-            m_awaitingAfter = false;
-            showBeforeAfter();
-        }
-    });
+    connect(&m_workbench, &Workbench::simulated, this, &CalibrationPanel::showBeforeAfter);
+    connect(&m_workbench, &Workbench::calibrationStartSimulated, this, &CalibrationPanel::showBeforeAfter);
     // Results of another data set are not shown as these; a project's come back.
     connect(&m_workbench, &Workbench::dataChanged, this, &CalibrationPanel::showResult);
-    connect(&m_workbench, &Workbench::resultsRestored, this, &CalibrationPanel::showResult);
+    connect(&m_workbench, &Workbench::resultsRestored, this, [this] {
+        showResult();
+        showBeforeAfter();
+        m_workbench.simulateCalibrationStart(); // a reopened project's "before" is simulated again
+    });
     m_loss->setEmptyText(tr("Run Calibrate to see the loss fall and the parameters settle"));
     // While it runs only the loss comes in: the parameters' plot keeps a sensible axis and says when
     // its points come (θ / θ final is 1 at the end).
@@ -191,7 +192,6 @@ void CalibrationPanel::run() {
     }
     m_lossX.clear();
     m_lossY.clear();
-    m_before = m_workbench.latest().simulate; // what the parameters gave before (if simulated)
     m_fit->setText(tr("Calibrating…"));
     m_workbench.calibrate(o, *retrain);
 }
@@ -267,8 +267,10 @@ namespace drytwin::widgets {
 void CalibrationPanel::showBeforeAfter() {
     const auto& si = m_workbench.siBatches();
     const auto& after = m_workbench.latest().simulate;
+    const auto& before = m_workbench.calibrationStart();
     m_fitPlot->clearCurves();
-    if (si.empty() || !after || after->simulations.empty()) {
+    if (si.empty() || !m_workbench.latest().calibrate || !after || after->simulations.empty()) {
+        m_fitPlot->rescale();
         return;
     }
     // The first batch: measured, and the model before and after.
@@ -283,8 +285,8 @@ void CalibrationPanel::showBeforeAfter() {
     };
     m_fitPlot->addCurve(0, tr("measured %1").arg(QString::fromStdString(b.id)), t,
                         valuesOf(b, batchSeries()[kSeriesXOut]), QColor(31, 119, 180));
-    if (m_before && !m_before->simulations.empty()) {
-        m_fitPlot->addCurve(0, tr("before"), t, outlet(m_before->simulations.front()), QColor(127, 127, 127),
+    if (before && !before->simulations.empty()) {
+        m_fitPlot->addCurve(0, tr("before"), t, outlet(before->simulations.front()), QColor(127, 127, 127),
                             Qt::DashLine);
     }
     m_fitPlot->addCurve(0, tr("after"), t, outlet(after->simulations.front()), QColor(214, 39, 40));

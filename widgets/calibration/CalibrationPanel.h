@@ -48,8 +48,6 @@ private:
     QLabel* m_fit = nullptr;
     PlotStack* m_loss = nullptr;
     PlotStack* m_fitPlot = nullptr;
-    std::optional<workflow::SimulateResult> m_before; ///< the simulation when the calibration started
-    bool m_awaitingAfter = false;
     QVector<double> m_lossX, m_lossY;
 };
 

@@ -3,12 +3,15 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QHeaderView>
 #include <QLabel>
 #include <QRegularExpression>
+#include <QScreen>
 #include <QScrollBar>
 #include <QSettings>
 #include <QTableWidget>
+#include <QWidget>
 #include <map>
 
 namespace drytwin::widgets {
@@ -148,6 +151,26 @@ QColor seriesColour(int i) {
                                      QColor(227, 119, 194), QColor(127, 127, 127), QColor(188, 189, 34),
                                      QColor(23, 190, 207)};
     return palette[((i % 10) + 10) % 10];
+}
+
+bool keepOnScreen(QWidget* window) {
+    const QRect frame = window->frameGeometry();
+    for (const QScreen* screen : QGuiApplication::screens()) {
+        const QRect seen = frame.intersected(screen->availableGeometry());
+        if (seen.width() >= 120 && seen.height() >= 60) {
+            return false;
+        }
+    }
+    const QScreen* primary = QGuiApplication::primaryScreen();
+    if (!primary) {
+        return false;
+    }
+    const QRect area = primary->availableGeometry();
+    window->resize(window->size().boundedTo(area.size()));
+    QRect placed(QPoint(0, 0), window->frameGeometry().size().boundedTo(area.size()));
+    placed.moveCenter(area.center());
+    window->move(placed.topLeft());
+    return true;
 }
 
 } // namespace drytwin::widgets

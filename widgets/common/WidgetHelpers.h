@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+class QWidget;
+
 class QLabel;
 class QTableWidget;
 class QWidget;
@@ -50,5 +52,10 @@ QString withFilterSuffix(const QString& path, const QString& selectedFilter, con
 QLabel* makeInlineError();
 /// @brief The i-th colour of the plots' categorical palette (batches, parameters).
 QColor seriesColour(int i);
+/// @brief Moves a top-level @p window onto a screen when too little of it (less than 120 × 60
+/// pixels of its frame) lies on any: a geometry saved on a monitor that is gone, or a window the
+/// window manager placed off the desktop. It goes to the centre of the primary screen, no larger
+/// than that screen's free area. Returns true when it was moved.
+bool keepOnScreen(QWidget* window);
 
 } // namespace drytwin::widgets

@@ -25,6 +25,7 @@ Workbench::Workbench(QObject* parent) : QObject(parent) {
                     }
                 }
             });
+    connect(&m_jobs, &JobRunner::finished, this, [this](JobId id, JobStatus) { m_jobActions.erase(id); });
 }
 
 bool Workbench::isRunning(Action action) const {
@@ -42,6 +43,37 @@ void Workbench::bindButton(QAbstractButton* button, Action action) {
     update();
 }
 
+Action Workbench::actionOf(JobId id) const {
+    const auto it = m_jobActions.find(id);
+    return it == m_jobActions.end() ? Action::Other : it->second;
+}
+
+QString progressStageOf(Action action) {
+    switch (action) {
+    case Action::Load:
+        return QStringLiteral("load");
+    case Action::Simulate:
+        return QStringLiteral("simulate");
+    case Action::Calibrate:
+        return QStringLiteral("calibrate");
+    case Action::Train:
+        return QStringLiteral("train");
+    case Action::Evaluate:
+        return QStringLiteral("evaluate");
+    case Action::Discover:
+        return QStringLiteral("discover");
+    case Action::Mpc:
+        return QStringLiteral("mpc");
+    case Action::Ablation:
+        return QStringLiteral("ablation");
+    case Action::Generate:
+        return QStringLiteral("generate");
+    case Action::Other:
+        break;
+    }
+    return {};
+}
+
 template <class R, class Work, class Done>
 JobId Workbench::start(Action kind, const QString& action, Work work, Done done,
                        std::function<void(const QString&, const Error&)> onFailure) {
@@ -50,7 +82,7 @@ JobId Workbench::start(Action kind, const QString& action, Work work, Done done,
     }
     ++m_running[kind];
     Q_EMIT runningChanged();
-    return m_jobs.submit<R>(
+    const JobId id = m_jobs.submit<R>(
         action, std::function<Expected<R>(workflow::Session&, const Progress&)>(std::move(work)), this,
         std::function<void(const Expected<R>&)>([this, kind, action, done, onFailure](const Expected<R>& r) {
             --m_running[kind];
@@ -70,6 +102,8 @@ JobId Workbench::start(Action kind, const QString& action, Work work, Done done,
             Q_EMIT failed(action, message, r.error().kind == ErrorKind::Cancelled);
             Q_EMIT actionFinished(action, false);
         }));
+    m_jobActions[id] = kind; // read by the progress bar; the job reports only once this returned
+    return id;
 }
 
 QString Workbench::dataSetLabel() const {
@@ -264,6 +298,7 @@ void Workbench::openData(const QString& path, const QString& mappingPath) {
             m_si = l.si;
             m_dataPath = path;
             m_latest = {};
+            m_calibrationStart.reset();
             bool restored = false;
             if (const auto it = m_stash.find(path);
                 it != m_stash.end() && it->second.modelRevision == m_modelRevision) {
@@ -332,8 +367,24 @@ void Workbench::switchDataSet(int index) {
     openData(e.path, e.mappingPath);
 }
 
+void Workbench::restoreDataSets(const std::vector<DataSetEntry>& entries) {
+    bool added = false;
+    for (const auto& e : entries) {
+        const bool known = std::any_of(m_dataSets.begin(), m_dataSets.end(),
+                                       [&](const DataSetEntry& d) { return d.path == e.path; });
+        if (!known && QFileInfo::exists(e.path)) {
+            m_dataSets.push_back(e);
+            added = true;
+        }
+    }
+    if (added) {
+        Q_EMIT dataSetsChanged();
+    }
+}
+
 void Workbench::restoreResults(const workflow::LatestResults& results) {
     m_latest.calibrate = results.calibrate;
+    m_calibrationStart.reset();
     m_latest.evaluate = results.evaluate;
     m_latest.ablation = results.ablation;
     m_latest.discover = results.discover;
@@ -417,12 +468,28 @@ void Workbench::simulate() {
         });
 }
 
+void Workbench::simulateCalibrationStart() {
+    if (!m_latest.calibrate || !hasData()) {
+        return;
+    }
+    workflow::SimulateOptions o;
+    o.parameters = m_latest.calibrate->startParameters;
+    start<workflow::SimulateResult>(
+        Action::Simulate, tr("Simulate"),
+        [o](workflow::Session& s, const Progress& p) { return s.simulate(o, p); },
+        [this](const workflow::SimulateResult& r) {
+            m_calibrationStart = r;
+            Q_EMIT calibrationStartSimulated();
+        });
+}
+
 void Workbench::calibrate(const workflow::CalibrateOptions& options, bool retrainAfter) {
     m_calibrationJob = start<workflow::CalibrateResult>(
         Action::Calibrate, tr("Calibrate"),
         [options](workflow::Session& s, const Progress& p) { return s.calibrate(options, p); },
         [this, retrainAfter](const workflow::CalibrateResult& r) {
             m_latest.calibrate = r;
+            m_calibrationStart.reset();
             Q_EMIT status(tr("Calibration: %1; loss %2 → %3")
                               .arg(terminationText(r.ending.termination))
                               .arg(r.calibration.before.loss, 0, 'g', 4)

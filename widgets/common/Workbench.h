@@ -53,6 +53,10 @@ struct LearntPart {
 /// disabled: a second click would queue a duplicate run).
 enum class Action { Other, Load, Simulate, Calibrate, Train, Evaluate, Discover, Mpc, Ablation, Generate };
 
+/// @brief The engine's progress stage key an action reports as its own ("evaluate" for Evaluate;
+/// the stages inside it, such as "simulate", are its parts); empty for Action::Other.
+QString progressStageOf(Action action);
+
 /// @brief A data set opened in this window: the loaded one and those opened beside it (a training
 /// recording to diagnose), any of which can be switched back to.
 struct DataSetEntry {
@@ -77,6 +81,8 @@ public:
     JobRunner& jobs() { return m_jobs; }
     /// @brief True while an action of this kind is queued or running.
     bool isRunning(Action action) const;
+    /// @brief The action a queued or running job was started for (Action::Other when unknown).
+    Action actionOf(JobId id) const;
     /// @brief Keeps @p button disabled while its action is queued or running.
     void bindButton(QAbstractButton* button, Action action);
     bool hasData() const { return m_dataSet != nullptr; }
@@ -103,6 +109,10 @@ public:
     /// @brief Loads the data set @p index again; its results come back when the model has not
     /// changed since they were computed.
     void switchDataSet(int index);
+    /// @brief Puts back the data sets a project had open beside the loaded one (those whose file or
+    /// folder still exists), so that they can be switched to again; the loaded one is opened with
+    /// openData().
+    void restoreDataSets(const std::vector<DataSetEntry>& entries);
 
     /// @brief The learnt parts, PGRL-CC first, as every tab shows them.
     const std::array<LearntPart, 3>& learntParts() const { return m_parts; }
@@ -146,6 +156,13 @@ public:
     /// new model lacks become stale for it); @p retrainAfter: retrain them when it is done.
     void setModel(const hybrid::HybridModel& model, const QString& why = {}, bool retrainAfter = false);
     void simulate();
+    /// @brief Simulates the data with the physics parameters the latest calibration started from
+    /// (calibrationStart() then holds it; latest().simulate is left alone), for the calibration's
+    /// before/after plot, also after a project is reopened. Nothing without a calibration.
+    void simulateCalibrationStart();
+    /// @brief The simulation with the parameters before the latest calibration (empty until
+    /// simulateCalibrationStart() has run for it).
+    const std::optional<workflow::SimulateResult>& calibrationStart() const { return m_calibrationStart; }
     /// @brief Calibrates; learnt parts become stale (the session drops them), and are retrained
     /// when it is done if @p retrainAfter.
     void calibrate(const workflow::CalibrateOptions& options, bool retrainAfter = false);
@@ -173,6 +190,8 @@ Q_SIGNALS:
     /// @brief The learnt parts' states changed (learnt, dropped, opened from a file).
     void modelStateChanged();
     void simulated();
+    /// @brief calibrationStart() is ready.
+    void calibrationStartSimulated();
     void calibrated();
     /// @brief A calibration progress report: evaluations so far and the best loss.
     void calibrationProgress(double fraction, double bestLoss);
@@ -220,7 +239,9 @@ private:
     workflow::LatestResults m_latest;
     QString m_dataPath, m_modelPath, m_mappingPath, m_referencePath;
     JobId m_calibrationJob = 0;
-    std::map<Action, int> m_running; ///< queued or running jobs per action
+    std::map<Action, int> m_running;      ///< queued or running jobs per action
+    std::map<JobId, Action> m_jobActions; ///< the action of each queued or running job
+    std::optional<workflow::SimulateResult> m_calibrationStart;
     std::array<LearntPart, 3> m_parts{LearntPart::absent(control::ControllerKind::PgrlCc),
                                       LearntPart::absent(control::ControllerKind::ExtInputResidual),
                                       LearntPart::absent(control::ControllerKind::Lstm)};

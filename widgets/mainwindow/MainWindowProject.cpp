@@ -79,6 +79,17 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
     o[QStringLiteral("reference_path")] = m_workbench.referencePath().isEmpty()
                                               ? QString()
                                               : base.relativeFilePath(m_workbench.referencePath());
+    // Every data set opened in the window (a historian export with its mapping, a training
+    // recording beside the plant's data), so that a reopened project can switch to them again.
+    QJsonArray dataSets;
+    for (const auto& e : m_workbench.dataSets()) {
+        dataSets.append(
+            QJsonObject{{QStringLiteral("path"), base.relativeFilePath(e.path)},
+                        {QStringLiteral("mapping_path"),
+                         e.mappingPath.isEmpty() ? QString() : base.relativeFilePath(e.mappingPath)},
+                        {QStringLiteral("label"), e.label}});
+    }
+    o[QStringLiteral("data_sets")] = dataSets;
     o[QStringLiteral("tab")] = QString::fromLatin1(kTabKeys[std::max(0, m_tabs->currentIndex())]);
     QJsonArray batches;
     for (const auto& r : m_data->batchTable()->selectionModel()->selectedRows()) {
@@ -189,6 +200,18 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
     const QString mapping = o.value(QStringLiteral("mapping_path")).toString();
     const QString reference = o.value(QStringLiteral("reference_path")).toString();
     m_workbench.setReferencePath(reference.isEmpty() ? QString() : base.filePath(reference));
+    std::vector<DataSetEntry> dataSets;
+    for (const auto& v : o.value(QStringLiteral("data_sets")).toArray()) {
+        const QJsonObject e = v.toObject();
+        const QString setPath = e.value(QStringLiteral("path")).toString();
+        const QString setMapping = e.value(QStringLiteral("mapping_path")).toString();
+        if (!setPath.isEmpty()) {
+            dataSets.push_back({base.filePath(setPath),
+                                setMapping.isEmpty() ? QString() : base.filePath(setMapping),
+                                e.value(QStringLiteral("label")).toString()});
+        }
+    }
+    m_workbench.restoreDataSets(dataSets);
     if (!data.isEmpty()) {
         m_workbench.openData(base.filePath(data), mapping.isEmpty() ? QString() : base.filePath(mapping));
     } else {

@@ -28,8 +28,7 @@ void MainWindow::startActions() {
     // Each is queued on the engine thread behind the one before; the panels show the results.
     for (const auto& a : std::exchange(m_pendingActions, {})) {
         if (a == QLatin1String("calibrate")) {
-            m_calibration->run();
-            m_workbench.simulate();
+            m_calibration->run(); // the panel simulates with the new parameters when it ends
         } else if (a == QLatin1String("train")) {
             m_residual->train();
         } else if (a == QLatin1String("evaluate")) {

@@ -35,33 +35,50 @@ void MainWindow::createStatusBar() {
 void MainWindow::connectProgress() {
     auto& jobs = m_workbench.jobs();
     connect(&jobs, &JobRunner::busyChanged, this, &MainWindow::setBusy);
-    // One bar per action across its stages: the action's own stage (the first it reports) moves
-    // the bar, never back; the stages inside it (simulate, lstm …) are named in the status line.
+    // One bar per action across its stages: the action's own stage ("evaluate" for Evaluate) moves
+    // the bar, never back; a stage inside it (simulate, lstm …) is named after the action's share,
+    // so that the bar and the status line never tell two different numbers.
     connect(&jobs, &JobRunner::started, this, [this](JobId id, const QString& name) {
         m_progressJob = id;
         m_progressStage.clear();
         m_progressBar->setValue(0);
-        m_progressBar->setFormat(QStringLiteral("%1 %p%").arg(name));
+        const QString format = QStringLiteral("%1 %p%").arg(name);
+        m_progressBar->setFormat(format);
+        // Wide enough for the action's name ("Learn the correction models 40%") and no wider
+        // than half the window.
+        const int wanted = m_progressBar->fontMetrics().horizontalAdvance(format) + 40;
+        m_progressBar->setFixedWidth(std::clamp(wanted, 160, std::max(160, width() / 2)));
     });
-    connect(
-        &jobs, &JobRunner::progress, this,
-        [this](JobId id, const QString& stage, double fraction, const QString& detail) {
-            if (id != m_progressJob) {
-                return;
-            }
-            if (m_progressStage.isEmpty()) {
-                m_progressStage = stage;
-            }
-            if (stage == m_progressStage) {
-                m_progressBar->setValue(std::max(m_progressBar->value(), static_cast<int>(fraction * 100)));
-            }
-            // The engine's detail is English (the CLI prints it): shown in the English window; the
-            // stage and its share in every language.
-            m_statusLabel->setText(detail.isEmpty() || currentLanguage() != QLatin1String("en")
-                                       ? tr("%1: %2 %").arg(stageText(stage)).arg(fraction * 100, 0, 'f', 0)
-                                       : tr("%1: %2").arg(stageText(stage), detail));
-            m_statusIsProgress = true;
-        });
+    connect(&jobs, &JobRunner::progress, this,
+            [this](JobId id, const QString& stage, double fraction, const QString& detail) {
+                if (id != m_progressJob) {
+                    return;
+                }
+                if (m_progressStage.isEmpty()) {
+                    m_progressStage = progressStageOf(m_workbench.actionOf(id));
+                    if (m_progressStage.isEmpty()) {
+                        m_progressStage = stage; // a job of no named action: its first stage
+                    }
+                }
+                if (stage == m_progressStage) {
+                    m_progressBar->setValue(
+                        std::max(m_progressBar->value(), static_cast<int>(fraction * 100)));
+                }
+                // The action's share is the bar's; a stage inside it follows in brackets. The engine's
+                // detail is English (the CLI prints it): shown in the English window only.
+                const QString said = detail.isEmpty() || currentLanguage() != QLatin1String("en")
+                                         ? QString()
+                                         : QStringLiteral(" — %1").arg(detail);
+                QString line = tr("%1: %2 %").arg(stageText(m_progressStage)).arg(m_progressBar->value());
+                if (stage != m_progressStage) {
+                    line += QStringLiteral(" (%1)").arg(
+                        tr("%1: %2 %").arg(stageText(stage)).arg(fraction * 100, 0, 'f', 0) + said);
+                } else {
+                    line += said;
+                }
+                m_statusLabel->setText(line);
+                m_statusIsProgress = true;
+            });
     connect(m_cancelButton, &QPushButton::clicked, &m_workbench, &Workbench::cancelAll);
     connect(&m_workbench, &Workbench::queued, this, [this](const QString& text) {
         m_statusLabel->setText(text);

@@ -14,6 +14,7 @@
 #include <QDateTime>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QGridLayout>
@@ -280,6 +281,9 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
         m_truthPlots->addCurve(0, tr("X_out measured"), none, none, seriesColour(0), Qt::SolidLine, 1.3);
     m_xTrue =
         m_truthPlots->addCurve(0, tr("X_out true"), none, none, QColor(200, 40, 40), Qt::SolidLine, 1.3);
+    m_instructorWindow->restoreGeometry(
+        QSettings().value(QStringLiteral("training/instructorGeometry")).toByteArray());
+    m_instructorWindow->installEventFilter(this);
     auto* instructorLayout = new QHBoxLayout(m_instructorWindow);
     instructorLayout->addWidget(m_truthPlots, 1);
     instructorLayout->addWidget(m_instructorBox);
@@ -451,6 +455,24 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
 
 TrainingPanel::~TrainingPanel() = default;
 
+bool TrainingPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_instructorWindow) {
+        const auto type = event->type();
+        if ((type == QEvent::WindowStateChange || type == QEvent::Show) &&
+            !m_instructorWindow->isMinimized() && m_runner->frame().started) {
+            // Back from minimised: the axes are recomputed from the curves as they are now.
+            QMetaObject::invokeMethod(
+                this, [this] { redrawPlots(); }, Qt::QueuedConnection);
+        } else if (type == QEvent::Hide || type == QEvent::Move || type == QEvent::Resize) {
+            if (m_instructorWindow->isVisible() || type == QEvent::Hide) {
+                QSettings().setValue(QStringLiteral("training/instructorGeometry"),
+                                     m_instructorWindow->saveGeometry());
+            }
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
 QString TrainingPanel::keepCurrentSession() {
     if (!m_runner->frame().started) {
         return {};
@@ -498,6 +520,8 @@ void TrainingPanel::openSession(const QString& sessionFile) {
 void TrainingPanel::setInstructorView(bool on) {
     m_instructorWindow->setVisible(on);
     if (on) {
+        // Its saved place may be on a monitor that is gone.
+        keepOnScreen(m_instructorWindow);
         m_instructorWindow->raise();
         if (m_runner->frame().started) {
             redrawPlots(); // its plot is drawn only while it is open; a frozen line sends no frames
@@ -692,7 +716,7 @@ void TrainingPanel::redrawPlots() {
     m_monitorLimit->setSamples(mt, limit);
     m_plots->rescale();
     m_plots->setXRange(std::max(0.0, from) / 60.0, std::max(kWindowS, f.timeS) / 60.0);
-    if (m_instructorWindow->isVisible()) {
+    if (m_instructorWindow->isVisible() && !m_instructorWindow->isMinimized()) {
         m_truthPlots->rescale();
         m_truthPlots->setXRange(std::max(0.0, from) / 60.0, std::max(kWindowS, f.timeS) / 60.0);
     }

@@ -87,6 +87,11 @@ Q_SIGNALS:
     /// (empty: none; the recording is then judged alone).
     void recordingReady(const QString& csv, const QString& referenceFolder);
 
+protected:
+    /// The instructor window: its plot is redrawn when it comes back from minimised or hidden
+    /// (frames that arrived meanwhile), and its place is kept for the next time it opens.
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     void startSession();
     void showFrame();

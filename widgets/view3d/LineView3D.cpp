@@ -307,7 +307,11 @@ void LineView3D::updateParcels() {
         m_lut->SetTableRange(m_range[0], m_range[1] > m_range[0] ? m_range[1] : m_range[0] + 1e-6);
     }
     m_parcels->Modified();
-    m_window->Render();
+    // Hidden (another tab), the scene is only updated: every move of the shared time cursor
+    // rendered it before, for nobody. The widget renders the updated scene when it is shown.
+    if (m_view->isVisible()) {
+        m_window->Render();
+    }
 }
 
 void LineView3D::setBarTitle(bool moisture) {

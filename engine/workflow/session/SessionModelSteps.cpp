@@ -19,7 +19,13 @@ Expected<SimulateResult> Session::simulate(const SimulateOptions& options, const
     if (auto st = ready(options, "simulate"); !st) {
         return st.error();
     }
-    auto sims = hybrid::simulatePbm(m_si, m_model, m_model.switches, progress);
+    std::optional<hybrid::HybridModel> withParameters;
+    if (options.parameters) {
+        withParameters = m_model; // its structure (extensions, switches) with the other parameters
+        withParameters->parameters = *options.parameters;
+    }
+    auto sims =
+        hybrid::simulatePbm(m_si, withParameters ? *withParameters : m_model, m_model.switches, progress);
     if (!sims) {
         return sims.error();
     }
@@ -42,7 +48,9 @@ Expected<SimulateResult> Session::simulate(const SimulateOptions& options, const
     result.simulations = std::move(*sims);
     result.ending = {Termination::Completed, std::to_string(m_si.size()) + " batch(es) simulated",
                      secondsSince(t0)};
-    m_latest.simulate = result;
+    if (!options.parameters) {
+        m_latest.simulate = result;
+    }
     return result;
 }
 
