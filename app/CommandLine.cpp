@@ -28,6 +28,7 @@ struct CommandLine::Impl {
     std::string runActions;
     std::string guiReferencePath;
     std::string trainingSession;
+    std::string saveProjectPath;
 };
 
 CommandLine::CommandLine() : m_impl(new Impl) {
@@ -42,6 +43,9 @@ CommandLine::CommandLine() : m_impl(new Impl) {
         "GUI: once the window's work is done, save it to PATH.png, or one PNG per tab into the folder "
         "PATH, then quit");
     app.add_option("--project", m_impl->projectPath, "GUI: open this project file at start");
+    app.add_option("--save-project", m_impl->saveProjectPath,
+                   "GUI: once the window's work (loading, --run) is done, save the project to this file "
+                   "(before --screenshot, which then shows what a reopened project must show)");
     app.add_option("--model", m_impl->guiModelPath, "GUI: open this model file with the data");
     app.add_option("--mapping", m_impl->guiMappingPath,
                    "GUI: read --data's columns with this column-mapping file (a historian export)");
@@ -298,6 +302,7 @@ ParsedCommandLine CommandLine::parse(int argc, char** argv) {
         result.runActions = m_impl->runActions;
         result.referencePath = m_impl->guiReferencePath;
         result.trainingSession = m_impl->trainingSession;
+        result.saveProjectPath = m_impl->saveProjectPath;
     }
     m_impl->options.quiet = m_impl->quiet;
     return result;

@@ -25,6 +25,7 @@ struct ParsedCommandLine {
     std::string runActions;      ///< GUI: comma-separated actions to run after loading
     std::string referencePath;   ///< GUI: the reference period Discover compares with
     std::string trainingSession; ///< GUI: a saved training session to reopen
+    std::string saveProjectPath; ///< GUI: save the project here once the window's work is done
 };
 
 /// @brief The `drytwin` command line (CONTRACT.md §2), built on CLI11.

@@ -65,8 +65,27 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
     const QString screenshot = QString::fromStdString(parsed.screenshotPath);
     const QString dataPath = QString::fromStdString(parsed.guiDataPath);
     const QString projectPath = QString::fromStdString(parsed.projectPath);
-    if (!screenshot.isEmpty()) {
-        auto save = [&window, screenshot] {
+    const QString saveProjectPath = QString::fromStdString(parsed.saveProjectPath);
+    if (!screenshot.isEmpty() || !saveProjectPath.isEmpty()) {
+        // What is done once the window is idle: the project saved (its model file is written by a
+        // job: idle again first), then the screenshots and quit; with no screenshot, the window
+        // stays open after saving.
+        auto projectToSave = std::make_shared<QString>(saveProjectPath);
+        auto finish = [&window, screenshot, projectToSave]() -> bool {
+            if (!projectToSave->isEmpty()) {
+                QString error;
+                if (!window.saveProject(*projectToSave, &error)) {
+                    std::fprintf(stderr, "drytwin: error: %s\n", qPrintable(error));
+                    QApplication::exit(3);
+                    return true;
+                }
+                std::fprintf(stderr, "drytwin: project saved to %s\n", qPrintable(*projectToSave));
+                projectToSave->clear();
+                return false; // wait until the model file is written
+            }
+            if (screenshot.isEmpty()) {
+                return true;
+            }
             int rc = 0;
             if (screenshot.endsWith(QLatin1String(".png"), Qt::CaseInsensitive)) {
                 const bool ok = window.grab().save(screenshot);
@@ -81,20 +100,23 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
                 rc = files.size() > window.tabs()->count() ? 0 : 3; // every tab, the training tab twice
             }
             QApplication::exit(rc);
+            return true;
         };
         // Once the work the window started is done (data loaded and simulated), or at once
         // when the data was rejected or there was nothing to load.
-        auto whenIdle = [&window, save] {
+        auto whenIdle = [&window, finish] {
             // Idle for a whole second (three polls in a row): every queued action and what its
             // results started have finished drawing.
             auto* poll = new QTimer(&window);
             auto idlePolls = std::make_shared<int>(0);
-            QObject::connect(poll, &QTimer::timeout, &window, [&window, save, poll, idlePolls] {
+            QObject::connect(poll, &QTimer::timeout, &window, [&window, finish, poll, idlePolls] {
                 const bool idle = !window.jobs().busy() && !window.hasPendingActions();
                 *idlePolls = idle ? *idlePolls + 1 : 0;
                 if (*idlePolls >= 3) {
-                    poll->stop();
-                    save();
+                    *idlePolls = 0;
+                    if (finish()) {
+                        poll->stop();
+                    }
                 }
             });
             poll->start(350);
@@ -102,13 +124,19 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
         if (dataPath.isEmpty() && projectPath.isEmpty()) {
             QTimer::singleShot(500, &window, whenIdle);
         } else {
-            QObject::connect(&window, &drytwin::widgets::MainWindow::simulationShown, &window, whenIdle);
-            QObject::connect(&window, &drytwin::widgets::MainWindow::loadFinished, &window,
-                             [whenIdle](bool ok) {
-                                 if (!ok) {
-                                     whenIdle();
-                                 }
-                             });
+            auto started = std::make_shared<bool>(false);
+            auto once = [whenIdle, started] {
+                if (!*started) {
+                    *started = true;
+                    whenIdle();
+                }
+            };
+            QObject::connect(&window, &drytwin::widgets::MainWindow::simulationShown, &window, once);
+            QObject::connect(&window, &drytwin::widgets::MainWindow::loadFinished, &window, [once](bool ok) {
+                if (!ok) {
+                    once();
+                }
+            });
         }
     }
     if (!parsed.referencePath.empty()) {

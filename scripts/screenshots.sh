@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Screenshots of every tab of the real program under Xvfb, with the bundled demo loaded and the
 # main actions run (calibrate from the paper's parameters, train, discover, the paper-like MPC
-# scenario), in English and Simplified Chinese: docs/screenshots/<lang>/NN-<tab>.png. The Training
-# tab shows the example session of docs/training-example.json (replayed headless first), in the
-# trainee's and the instructor's view.
+# scenario), in English and Simplified Chinese: docs/screenshots/<lang>/NN-<tab>.png. The project
+# is saved after that run and reopened in a new window, whose tabs go to
+# docs/screenshots/<lang>/reopened/ (what a reopened project shows without re-running anything).
+# The Training tab shows the example session of docs/training-example.json (replayed headless
+# first), in the trainee's and the instructor's view.
 #   bash scripts/screenshots.sh [BUILD_DIR] [OUT_DIR]
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
@@ -16,10 +18,16 @@ if [ ! -d "$demo" ]; then
 fi
 session="$build/training-example"
 "$drytwin" -q training --script "$here/docs/training-example.json" --out "$session" >/dev/null
+projects="$build/screenshot-projects"
 for lang in en zh_CN; do
-  rm -rf "$out/$lang"
+  # The tabs' pictures only: others beside them (discover-reference.png, scripts/demo-reference.sh) stay.
+  rm -rf "$out/$lang/reopened" "$projects/$lang"
+  rm -f "$out/$lang"/[0-9][0-9]-*.png
   xvfb-run -a -s "-screen 0 1280x800x24" "$drytwin" --lang "$lang" --data "$demo" \
-    --training "$session/session.json" --run calibrate,train,discover,mpc --screenshot "$out/$lang"
+    --training "$session/session.json" --run calibrate,train,discover,mpc \
+    --save-project "$projects/$lang/demo.drytwin" --screenshot "$out/$lang"
+  xvfb-run -a -s "-screen 0 1280x800x24" "$drytwin" --lang "$lang" --project "$projects/$lang/demo.drytwin" \
+    --training "$session/session.json" --screenshot "$out/$lang/reopened"
 done
 ls "$out"/*/
 # The column-mapping dialog on a historian export with tag names, and the Data tab with the runs

@@ -2091,9 +2091,8 @@
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="408"/>
         <source>the error follows %1 %2 s later (|ccf| %3)</source>
-        <translation>误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
+        <translation type="vanished">误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="418"/>
@@ -2342,6 +2341,11 @@
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="726"/>
         <source>°C</source>
         <translation>°C</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="408"/>
+        <source>the error follows %1 %2 s later (correlation %3)</source>
+        <translation>误差在 %1 之后 %2 s 跟随变化（相关系数 %3）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="532"/>
@@ -2803,22 +2807,22 @@
         <translation>项目已保存到 %1（模型、结果和视图）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="127"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="128"/>
         <source>Saving the project to %1…</source>
         <translation>正在保存项目到 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="175"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="176"/>
         <source>The project&apos;s results could not be read (%1); it opens without them.</source>
         <translation>无法读取项目的结果（%1）；项目将不带结果打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="239"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="241"/>
         <source>Wait until the running job has finished (or cancel it), then switch the language.</source>
         <translation>请等待当前任务完成（或取消它），然后再切换语言。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="272"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="274"/>
         <source>The training session under way was saved in %1 when the language changed: the instructor window&apos;s Session file ▸ Open session… continues it.</source>
         <translation>切换语言时，进行中的培训会话已保存到 %1：在教员窗口的 会话文件 ▸ 打开会话… 可继续。</translation>
     </message>
@@ -2928,8 +2932,8 @@
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="53"/>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="111"/>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="118"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="112"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="119"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -2938,12 +2942,12 @@
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="135"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="136"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="144"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="145"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
@@ -3354,12 +3358,12 @@ The results below are from the last complete run.</source>
 <context>
     <name>drytwin::widgets::PlotStack</name>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="185"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="191"/>
         <source>Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click to zoom out, middle drag to pan</source>
         <translation>Ctrl+单击：游标 A，Shift+单击：游标 B，Alt+单击：时间游标；拖动放大，右键缩小，中键拖动平移</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="90"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="93"/>
         <source>Export…</source>
         <translation>导出…</translation>
     </message>
@@ -3368,62 +3372,62 @@ The results below are from the last complete run.</source>
         <translation>将这些图表保存为 PNG、SVG 或 PDF</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="91"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="94"/>
         <source>Save these plots as PNG, SVG or PDF, or their data as CSV</source>
         <translation>把这些曲线图保存为 PNG、SVG 或 PDF，或把数据保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="169"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="175"/>
         <source>time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="248"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="254"/>
         <source>No data yet</source>
         <translation>尚无数据</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="512"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="518"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="515"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="521"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="518"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="524"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="522"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="528"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="526"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="532"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="600"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="618"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="628"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="646"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
         <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="664"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="682"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="578"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="596"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
@@ -3432,7 +3436,7 @@ The results below are from the last complete run.</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="663"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="681"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
@@ -3441,12 +3445,12 @@ The results below are from the last complete run.</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="670"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="688"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="672"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="690"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
@@ -4107,7 +4111,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="135"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="610"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="611"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
@@ -4118,7 +4122,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="596"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
@@ -4139,7 +4143,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="158"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="594"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
@@ -4359,32 +4363,32 @@ extrapolation</source>
         <translation>会话文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="653"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="654"/>
         <source>Line monitor unavailable: %1</source>
         <translation>产线监控不可用：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="655"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="656"/>
         <source>Line monitor: normal (as on its commissioning runs).</source>
         <translation>产线监控：正常（与调试运行一致）。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="660"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="661"/>
         <source>the model&apos;s error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="660"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="661"/>
         <source>the screens&apos; signals (PCA)</source>
         <translation>画面信号（PCA）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="663"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="664"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal; the change began at about %3. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态；变化约始于 %3。请诊断记录以确定原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="666"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="667"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态。请诊断记录以确定原因。</translation>
     </message>
@@ -4477,102 +4481,102 @@ extrapolation</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="498"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="499"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="502"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="503"/>
         <source>The previous session was saved in %1.</source>
         <translation>上一个会话已保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="515"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="516"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="540"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="541"/>
         <source>%1 (stale: retrain)</source>
         <translation>%1（过期：需重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="541"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="542"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="589"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="590"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="591"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="592"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="591"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="592"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="591"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="592"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="593"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="594"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="594"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="596"/>
         <source>Continue</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="605"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="606"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="606"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="607"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="610"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="611"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="617"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="618"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="627"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="628"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="627"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="628"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="630"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="631"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="641"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="642"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>
@@ -4623,148 +4627,148 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::Workbench</name>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="71"/>
+        <location filename="../widgets/common/Workbench.cpp" line="81"/>
         <source>%1 is queued behind the running job</source>
         <translation>%1 已排队，等待当前任务完成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="86"/>
+        <location filename="../widgets/common/Workbench.cpp" line="96"/>
         <source>%1 was cancelled; nothing changed.</source>
         <translation>%1 已取消；未作任何更改。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="87"/>
+        <location filename="../widgets/common/Workbench.cpp" line="97"/>
         <source>%1 failed: %2</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="105"/>
+        <location filename="../widgets/common/Workbench.cpp" line="115"/>
         <source>%1 (1 batch)</source>
         <translation>%1（1 个批次）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="105"/>
+        <location filename="../widgets/common/Workbench.cpp" line="115"/>
         <source>%1 (%2 batches)</source>
         <translation>%1（%2 个批次）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="182"/>
+        <location filename="../widgets/common/Workbench.cpp" line="192"/>
         <source>%1 changes the physics model that %2 learnt its corrections on: they will no longer match it and are set aside as stale.</source>
         <translation>“%1”会改变 %2 学习修正时所依据的物理模型：它们将不再匹配，并被标为过期。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="186"/>
+        <location filename="../widgets/common/Workbench.cpp" line="196"/>
         <source>%1, then retrain them</source>
         <translation>%1，然后重新训练它们</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="187"/>
+        <location filename="../widgets/common/Workbench.cpp" line="197"/>
         <source>%1 only (retrain later)</source>
         <translation>仅%1（稍后重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="211"/>
+        <location filename="../widgets/common/Workbench.cpp" line="221"/>
         <source>Physics model calibrated (%1 fitted to data).</source>
         <translation>物理模型已标定（%1 已拟合到数据）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="213"/>
+        <location filename="../widgets/common/Workbench.cpp" line="223"/>
         <source>Physics model with its default parameters (not calibrated).</source>
         <translation>物理模型使用默认参数（未标定）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="220"/>
+        <location filename="../widgets/common/Workbench.cpp" line="230"/>
         <source>Extended by discovery with: %1.</source>
         <translation>已由发现功能扩展：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="226"/>
+        <location filename="../widgets/common/Workbench.cpp" line="236"/>
         <source>%1: not learnt yet.</source>
         <translation>%1：尚未学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="229"/>
+        <location filename="../widgets/common/Workbench.cpp" line="239"/>
         <source>%1: learnt.</source>
         <translation>%1：已学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="230"/>
+        <location filename="../widgets/common/Workbench.cpp" line="240"/>
         <source>%1: learnt on %2.</source>
         <translation>%1：在 %2 上学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="233"/>
+        <location filename="../widgets/common/Workbench.cpp" line="243"/>
         <source>%1: stale, since %2; retrain it to use it.</source>
         <translation>%1：已过期，因为%2；需重新训练才能使用。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="248"/>
+        <location filename="../widgets/common/Workbench.cpp" line="258"/>
         <source>Read the model</source>
         <translation>读取模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="263"/>
+        <location filename="../widgets/common/Workbench.cpp" line="273"/>
         <source>Loading %1…</source>
         <translation>正在加载 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="272"/>
+        <location filename="../widgets/common/Workbench.cpp" line="282"/>
         <source>Load %1</source>
         <translation>加载 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="308"/>
+        <location filename="../widgets/common/Workbench.cpp" line="318"/>
         <source>%1: %2 batches, %3 rows, %4 missing cells; the cleaning keeps %5 rows</source>
         <translation>%1：%2 个批次，%3 行，%4 个缺失值；清洗后保留 %5 行</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="334"/>
+        <location filename="../widgets/common/Workbench.cpp" line="344"/>
         <source>Open model %1</source>
         <translation>打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="338"/>
+        <location filename="../widgets/common/Workbench.cpp" line="348"/>
         <source>Model %1 opened</source>
         <translation>已打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="339"/>
+        <location filename="../widgets/common/Workbench.cpp" line="349"/>
         <source>model file %1</source>
         <translation>模型文件 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="398"/>
+        <location filename="../widgets/common/Workbench.cpp" line="408"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="407"/>
+        <location filename="../widgets/common/Workbench.cpp" line="417"/>
         <source>Model saved to %1</source>
         <translation>模型已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="413"/>
+        <location filename="../widgets/common/Workbench.cpp" line="423"/>
         <source>Set %1</source>
         <translation>设置 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="429"/>
+        <location filename="../widgets/common/Workbench.cpp" line="439"/>
         <source>Set the model</source>
         <translation>设置模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="446"/>
-        <location filename="../widgets/common/Workbench.cpp" line="468"/>
+        <location filename="../widgets/common/Workbench.cpp" line="456"/>
+        <location filename="../widgets/common/Workbench.cpp" line="478"/>
         <source>Simulate</source>
         <translation>仿真</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="454"/>
+        <location filename="../widgets/common/Workbench.cpp" line="464"/>
         <source>Simulated %1 batches; mean outlet-moisture MAE %2 % wb</source>
         <translation>已仿真 %1 个批次；出口含水率平均 MAE %2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="483"/>
+        <location filename="../widgets/common/Workbench.cpp" line="493"/>
         <source>Calibration: %1; loss %2 → %3</source>
         <translation>标定：%1；损失 %2 → %3</translation>
     </message>
@@ -4773,19 +4777,19 @@ extrapolation</source>
         <translation>学习之后物理模型又经过了标定</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="509"/>
+        <location filename="../widgets/common/Workbench.cpp" line="519"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="127"/>
         <source>Learn the correction models</source>
         <translation>学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="513"/>
+        <location filename="../widgets/common/Workbench.cpp" line="523"/>
         <source>Learnt the correction models (PGRL-CC) and the two comparison models</source>
         <translation>已学习修正模型（PGRL-CC）和两个对比模型</translation>
     </message>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="154"/>
-        <location filename="../widgets/common/Workbench.cpp" line="478"/>
+        <location filename="../widgets/common/Workbench.cpp" line="488"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
@@ -4802,48 +4806,48 @@ extrapolation</source>
         <translation>已训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="528"/>
+        <location filename="../widgets/common/Workbench.cpp" line="538"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="550"/>
+        <location filename="../widgets/common/Workbench.cpp" line="560"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="550"/>
+        <location filename="../widgets/common/Workbench.cpp" line="560"/>
         <source>Discover against the reference</source>
         <translation>相对参考期发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="560"/>
+        <location filename="../widgets/common/Workbench.cpp" line="570"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="567"/>
+        <location filename="../widgets/common/Workbench.cpp" line="577"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="582"/>
+        <location filename="../widgets/common/Workbench.cpp" line="592"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="128"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="586"/>
+        <location filename="../widgets/common/Workbench.cpp" line="596"/>
         <source>Ablation: %1 variants trained and evaluated</source>
         <translation>消融实验：已训练并评估 %1 个变体</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="593"/>
+        <location filename="../widgets/common/Workbench.cpp" line="603"/>
         <source>Generate</source>
         <translation>生成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="596"/>
+        <location filename="../widgets/common/Workbench.cpp" line="606"/>
         <source>Wrote %1 virtual-plant batches to %2</source>
         <translation>已将 %1 个虚拟装置批次写入 %2</translation>
     </message>

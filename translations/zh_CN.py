@@ -823,7 +823,7 @@ ZH = {
     "The JSON tab's text is not a scenario the form can show (%1); fix it there.": "JSON 页的文本不是表单可显示的情景（%1）；请在那里修改。",
     "On %1: ": "数据 %1：",
     "a periodic error of %1 s period (power %2 times its background)": "周期为 %1 s 的周期性误差（功率为背景的 %2 倍）",
-    "the error follows %1 %2 s later (|ccf| %3)": "误差在 %1 之后 %2 s 跟随变化（|ccf| %3）",
+    "the error follows %1 %2 s later (correlation %3)": "误差在 %1 之后 %2 s 跟随变化（相关系数 %3）",
     "batches %1 are shifted by %2 against the others": "批次 %1 相对其他批次偏移 %2",
     "the error drifts by %1 per hour within the batches": "误差在批次内每小时漂移 %1",
     "Ready.": "就绪。",

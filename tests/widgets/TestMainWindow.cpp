@@ -732,6 +732,18 @@ private Q_SLOTS:
         QCOMPARE(w.calibrationPanel()->estimates()->rowCount(), 0);
         QVERIFY2(w.discoverPanel()->verdict()->text().contains("B01.csv (1 batch)"),
                  qPrintable(w.discoverPanel()->verdict()->text()));
+        // Diagnosed: whatever the verdict on a recording, it says what to do next (issue #43
+        // item 15), and its evidence names no internal column.
+        w.workbench().discover();
+        QVERIFY(waitIdle(w, 300000));
+        QVERIFY(w.workbench().latest().discover.has_value());
+        QVERIFY2(w.discoverPanel()->verdict()->text().contains("\nNext: "),
+                 qPrintable(w.discoverPanel()->verdict()->text()));
+        const QString evidence = w.discoverPanel()->evidence()->toPlainText();
+        for (const char* internal : {"_pct", "proxy_", "ccf"}) {
+            const int at = evidence.indexOf(QLatin1String(internal));
+            QVERIFY2(at < 0, qPrintable(evidence.mid(std::max(0, at - 80), 160)));
+        }
         w.workbench().switchDataSet(0);
         QVERIFY(waitIdle(w));
         QCOMPARE(w.dataPanel()->batchTable()->rowCount(), 2);

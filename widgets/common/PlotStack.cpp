@@ -14,9 +14,11 @@
 #include <QPainter>
 #include <QPdfWriter>
 #include <QPushButton>
+#include <QResizeEvent>
 #include <QSaveFile>
 #include <QSvgGenerator>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <qwt_legend.h>
@@ -110,6 +112,9 @@ int PlotStack::addPlot(const QString& yTitle) {
     title.setFont(titleFont);
     plot->setAxisTitle(QwtPlot::yLeft, title);
     plot->setAxisMaxMajor(QwtPlot::yLeft, 4);
+    // The time axis ends where the data end, not at the next round tick (a 6,300 s batch on a
+    // 0–10,000 s axis when the plot is narrow and the ticks are 5,000 s apart).
+    plot->axisScaleEngine(QwtPlot::xBottom)->setAttribute(QwtScaleEngine::Floating, true);
     QFont tickFont = plot->axisFont(QwtPlot::yLeft);
     tickFont.setPointSizeF(8);
     plot->setAxisFont(QwtPlot::yLeft, tickFont);
@@ -527,6 +532,18 @@ void PlotStack::updateReadout() {
     }
     if (!parts.isEmpty()) {
         m_readout->setText(parts.join(QStringLiteral("   ")));
+    }
+}
+
+void PlotStack::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    // About one label per 90 pixels: "6,000" at 8 pt is 35 pixels wide, with room either side.
+    const int ticks = std::clamp(width() / 90, 3, 10);
+    for (auto* plot : m_plots) {
+        if (plot->axisMaxMajor(QwtPlot::xBottom) != ticks) {
+            plot->setAxisMaxMajor(QwtPlot::xBottom, ticks);
+            plot->replot();
+        }
     }
 }
 

@@ -89,6 +89,8 @@ Q_SIGNALS:
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
+    /// A narrow plot gets fewer time ticks, so that their labels ("6,000") never run together.
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     void linkXFrom(QwtPlot* source);

@@ -405,7 +405,7 @@ QString signatureText(const discovery::Signature& u) {
             .arg(u.strength, 0, 'g', 3);
     }
     if (u.type == "lagged_input") {
-        return DiscoverPanel::tr("the error follows %1 %2 s later (|ccf| %3)")
+        return DiscoverPanel::tr("the error follows %1 %2 s later (correlation %3)")
             .arg(columnDisplayName(u.column))
             .arg(u.lagS, 0, 'f', 0)
             .arg(u.strength, 0, 'f', 2);
