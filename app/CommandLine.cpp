@@ -4,6 +4,7 @@
 #include "HeadlessCommands.h"
 
 #include "common/LibraryVersions.h"
+#include "plant/Mechanisms.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -11,6 +12,19 @@
 #include <map>
 
 namespace drytwin::app {
+
+namespace {
+
+/// The mechanisms' names for the help text (users have the program, not the contract file).
+std::string mechanismNames() {
+    std::string names;
+    for (const auto& m : plant::mechanisms()) {
+        names += (names.empty() ? "" : ", ") + std::string(m.name);
+    }
+    return names;
+}
+
+} // namespace
 
 struct CommandLine::Impl {
     CLI::App app{"DryTwin — digital-twin workbench for pneumatic drying lines.\n"
@@ -95,7 +109,8 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     generate->add_option("--batches", o.batches, "number of batches")->capture_default_str();
     generate->add_option("--samples", o.samples, "samples per batch (1 s apart)")->capture_default_str();
     auto* demo = generate->add_flag("--demo", o.demo, "the bundled demo mix of mechanisms and drift");
-    generate->add_option("--effect", o.effects, "NAME[=STRENGTH] of a CONTRACT.md §4 mechanism; repeatable")
+    generate->add_option("--effect", o.effects, "NAME[=STRENGTH] of a mechanism to hide in the data (" + mechanismNames() +
+                               "; docs/mechanisms.md); repeatable")
         ->excludes(demo);
     generate
         ->add_option("--onset", o.onsets,
@@ -189,7 +204,7 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     auto* evaluate = app.add_subcommand("evaluate", "metrics on the held-out part of the data");
     addData(evaluate);
     evaluate->add_option("--model", o.modelPath, "model file")->required();
-    evaluate->add_option("--json", o.jsonPath, "write the metrics as JSON (CONTRACT.md §3)");
+    evaluate->add_option("--json", o.jsonPath, "write the metrics as JSON (what they mean: docs/pgrl-cc.md)");
     evaluate->add_option("--diagnostics", o.diagnosticsPath,
                          "write residual ACF, PSD and the eigenvalues of A (before/after) as JSON");
     evaluate->add_option("--horizon", o.horizonSteps, "multi-step horizon [steps]")->capture_default_str();
@@ -200,7 +215,7 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     discover->add_option(
         "--model", o.modelPath,
         "model file to start from (default: the paper's parameters, h_HDT and k_HDT fitted first)");
-    discover->add_option("--json", o.jsonPath, "write the findings as JSON (CONTRACT.md §3)");
+    discover->add_option("--json", o.jsonPath, "write the findings as JSON (what they mean: docs/discovery.md)");
     discover->add_option("--out-model", o.outPath, "write the extended model file here");
     discover->add_option("--max-causes", o.maxCauses, "causes added one at a time, at most")
         ->capture_default_str();
@@ -211,8 +226,8 @@ CommandLine::CommandLine() : m_impl(new Impl) {
         ->capture_default_str();
     discover
         ->add_option("--causes", o.causes,
-                     "only these candidate causes (CONTRACT.md §4 names, comma-separated; default: all "
-                     "eleven): ask about one suspect")
+                     "only these candidate causes (comma-separated, of " + mechanismNames() +
+                         "; default: all eleven): ask about one suspect")
         ->delimiter(',');
     discover->add_option("--reference", o.referencePath,
                          "a period when the line ran as it should (batch file or folder): judge the data "
