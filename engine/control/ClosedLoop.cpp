@@ -148,7 +148,8 @@ plant::PlantDisturbances scenarioDisturbances(const Scenario& s, std::mt19937_64
 }
 
 std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybrid::HybridModel& m,
-                                                std::string& missing, bool controlThroughPhysics) {
+                                                std::string& missing, bool controlThroughPhysics,
+                                                bool holdCorrection) {
     switch (kind) {
     case ControllerKind::Pbm:
         return pbmForecaster(m.parameters, m.simulationOptions());
@@ -157,13 +158,15 @@ std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybri
             missing = "the model file holds no PGRL-CC residual model (run train)";
             return nullptr;
         }
-        return residualForecaster(m.parameters, m.simulationOptions(), m.pgrlCc, controlThroughPhysics);
+        return residualForecaster(m.parameters, m.simulationOptions(), m.pgrlCc, controlThroughPhysics,
+                                  holdCorrection);
     case ControllerKind::ExtInputResidual:
         if (!m.extInput) {
             missing = "the model file holds no external-input residual model (run train)";
             return nullptr;
         }
-        return residualForecaster(m.parameters, m.simulationOptions(), m.extInput, controlThroughPhysics);
+        return residualForecaster(m.parameters, m.simulationOptions(), m.extInput, controlThroughPhysics,
+                                  holdCorrection);
     case ControllerKind::Lstm:
         if (!m.lstm) {
             missing = "the model file holds no LSTM (run train; needs libtorch)";
@@ -368,7 +371,8 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
         if (kind == ControllerKind::Pi) {
             continue;
         }
-        auto f = forecasterFor(kind, model, skipped[c], options.mpc.controlThroughPhysics);
+        auto f = forecasterFor(kind, model, skipped[c], options.mpc.controlThroughPhysics,
+                               options.mpc.holdCorrectionOverHorizon);
         if (!f) {
             continue;
         }
@@ -516,7 +520,8 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
             continue;
         }
         std::string missing;
-        if (auto f = forecasterFor(run.kind, model, missing, options.mpc.controlThroughPhysics)) {
+        if (auto f = forecasterFor(run.kind, model, missing, options.mpc.controlThroughPhysics,
+                                   options.mpc.holdCorrectionOverHorizon)) {
             run.forecastCheck = checkForecasts(*f, *piRecord, warm, options.mpc.horizonS, 20);
         }
         if (reportProgress(progress, "mpc", 1.0, std::string("forecast check ") + controllerName(run.kind))) {

@@ -157,6 +157,7 @@ private:
 /// @brief The prediction model an MPC of @p kind uses, or nullptr with @p missing saying why
 /// (the model holds no such part; PI has none).
 std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybrid::HybridModel& model,
-                                                std::string& missing, bool controlThroughPhysics = true);
+                                                std::string& missing, bool controlThroughPhysics = true,
+                                                bool holdCorrection = true);
 
 } // namespace drytwin::control

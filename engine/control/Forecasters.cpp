@@ -18,6 +18,28 @@ std::size_t pbmLead(const properties::ParameterSet& p) {
     return static_cast<std::size_t>(std::ceil(physics::totalDelay(p))) + 3;
 }
 
+} // namespace
+
+void holdCorrectionAfter(std::size_t origin, const physics::SimulationResult& pbm,
+                         physics::SimulationResult& corrected) {
+    const std::size_t n = std::min(corrected.xOutDb.size(), pbm.xOutDb.size());
+    if (origin >= n) {
+        return;
+    }
+    const double heldX =
+        units::dryToWetPct(corrected.xOutDb[origin]) - units::dryToWetPct(pbm.xOutDb[origin]);
+    const double heldT = corrected.tOutK[origin] - pbm.tOutK[origin];
+    if (!std::isfinite(heldX) || !std::isfinite(heldT)) {
+        return; // no correction at the decision: nothing to hold
+    }
+    for (std::size_t k = origin + 1; k < n; ++k) {
+        corrected.xOutDb[k] = units::wetPctToDry(units::dryToWetPct(pbm.xOutDb[k]) + heldX);
+        corrected.tOutK[k] = pbm.tOutK[k] + heldT;
+    }
+}
+
+namespace {
+
 class PbmForecaster : public OutletForecaster {
 public:
     PbmForecaster(properties::ParameterSet p, physics::SimulationOptions o)
@@ -57,9 +79,10 @@ private:
 class ResidualForecaster : public OutletForecaster {
 public:
     ResidualForecaster(properties::ParameterSet p, physics::SimulationOptions o,
-                       std::shared_ptr<const residual::ResidualModel> m, bool controlThroughPhysics)
+                       std::shared_ptr<const residual::ResidualModel> m, bool controlThroughPhysics,
+                       bool holdCorrection)
         : m_p(std::move(p)), m_o(std::move(o)), m_model(std::move(m)),
-          m_controlThroughPhysics(controlThroughPhysics) {}
+          m_controlThroughPhysics(controlThroughPhysics), m_holdCorrection(holdCorrection) {}
 
     std::size_t historyNeeded() const override { return pbmLead(m_p) + lags(); }
 
@@ -134,6 +157,9 @@ public:
             }
             for (std::size_t c = 0; c < viewCount; ++c) {
                 correctedBases.push_back(correction->correctedFrom(sims[c], heldView, *heldRun));
+                if (m_holdCorrection) {
+                    holdCorrectionAfter(at.now - 1 - starts[c], sims[c], correctedBases.back());
+                }
                 residual::BatchView v{&batches[c], &correctedBases.back(), {0, batches[c].rows()}};
                 v.baseCorrected = true;
                 views.push_back(v);
@@ -184,6 +210,7 @@ private:
     physics::SimulationOptions m_o;
     std::shared_ptr<const residual::ResidualModel> m_model;
     bool m_controlThroughPhysics = true;
+    bool m_holdCorrection = true;
 };
 
 class LstmForecaster : public OutletForecaster {
@@ -275,9 +302,9 @@ std::unique_ptr<OutletForecaster> pbmForecaster(properties::ParameterSet params,
 std::unique_ptr<OutletForecaster> residualForecaster(properties::ParameterSet params,
                                                      physics::SimulationOptions options,
                                                      std::shared_ptr<const residual::ResidualModel> model,
-                                                     bool controlThroughPhysics) {
+                                                     bool controlThroughPhysics, bool holdCorrection) {
     return std::make_unique<ResidualForecaster>(std::move(params), std::move(options), std::move(model),
-                                                controlThroughPhysics);
+                                                controlThroughPhysics, holdCorrection);
 }
 
 std::unique_ptr<OutletForecaster> lstmForecaster(std::shared_ptr<const baselines::LstmBaseline> model) {

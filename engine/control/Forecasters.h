@@ -41,11 +41,20 @@ std::unique_ptr<OutletForecaster> pbmForecaster(properties::ParameterSet params,
                                                 physics::SimulationOptions options);
 /// @brief PBM + a residual model (PGRL-CC or the external-input baseline), Eq. 21. With
 /// @p controlThroughPhysics the residual is forecast along the first plan only and every plan
-/// gets it added to its own PBM run (MpcSettings::controlThroughPhysics).
+/// gets it added to its own PBM run (MpcSettings::controlThroughPhysics). With
+/// @p holdCorrection the input-driven correction is held at its value at the decision
+/// (MpcSettings::holdCorrectionOverHorizon).
 std::unique_ptr<OutletForecaster> residualForecaster(properties::ParameterSet params,
                                                      physics::SimulationOptions options,
                                                      std::shared_ptr<const residual::ResidualModel> model,
-                                                     bool controlThroughPhysics = true);
+                                                     bool controlThroughPhysics = true,
+                                                     bool holdCorrection = true);
+/// @brief Holds the correction of @p corrected over @p pbm (outlet moisture in % wb, temperature
+/// in K) at its value at row @p origin for every later row: after a decision the corrected run
+/// changes as the physics does (MpcSettings::holdCorrectionOverHorizon). Rows up to @p origin,
+/// and a run without a finite correction at @p origin, are left as they are.
+void holdCorrectionAfter(std::size_t origin, const physics::SimulationResult& pbm,
+                         physics::SimulationResult& corrected);
 /// @brief The black-box LSTM, carried along the record row by row.
 std::unique_ptr<OutletForecaster> lstmForecaster(std::shared_ptr<const baselines::LstmBaseline> model);
 

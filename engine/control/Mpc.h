@@ -33,6 +33,12 @@ struct MpcSettings {
     /// its persistence share carries no gain at all; the physics model's gain is within 8 % of the
     /// plant's on the demo. false: the residual sees each plan (the paper's use).
     bool controlThroughPhysics = true;
+    /// The input-driven correction (residual/InputDrivenCorrection.h) enters a hybrid's forecast
+    /// at its value at the decision, held over the horizon: the forecast's change comes from the
+    /// physics and the learnt error feedback. Its own change over the horizon (what it expects the
+    /// disturbances in transit to do) made both hybrids' MPCs act on about half the PBM
+    /// controller's moves and lose to it on 4 of 5 seeds (docs/mpc.md). false: that change too.
+    bool holdCorrectionOverHorizon = true;
     Status validate() const;
 };
 

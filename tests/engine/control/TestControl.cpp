@@ -4,6 +4,7 @@
 #include "common/Units.h"
 #include "control/BundledScenarios.h"
 #include "control/ClosedLoop.h"
+#include "control/Forecasters.h"
 #include "control/Mpc.h"
 #include "control/QuadraticProgram.h"
 #include "control/Scenario.h"
@@ -271,6 +272,33 @@ private Q_SLOTS:
             QCOMPARE(x[1][k], x[0][k]);
         }
         QVERIFY(x[1].back() > x[0].back() + 0.05);
+    }
+
+    void correctionHeldOverTheHorizonChangesAsThePhysics() {
+        physics::SimulationResult pbm, corrected;
+        for (int k = 0; k < 6; ++k) {
+            pbm.xOutDb.push_back(units::wetPctToDry(13.0 + 0.1 * k));
+            pbm.tOutK.push_back(330.0 + k);
+            corrected.xOutDb.push_back(units::wetPctToDry(13.0 + 0.1 * k + 0.05 * k * k)); // its own change
+            corrected.tOutK.push_back(330.0 + k - 0.5 * k);
+        }
+        const auto before = corrected;
+        control::holdCorrectionAfter(2, pbm, corrected);
+        for (int k = 0; k <= 2; ++k) { // up to the decision: as it was
+            QCOMPARE(corrected.xOutDb[k], before.xOutDb[k]);
+            QCOMPARE(corrected.tOutK[k], before.tOutK[k]);
+        }
+        for (int k = 3; k < 6; ++k) { // after it: the correction of row 2 (0.2 % wb, −1 K) held
+            QVERIFY(std::abs(units::dryToWetPct(corrected.xOutDb[k]) - units::dryToWetPct(pbm.xOutDb[k]) -
+                             0.2) < 1e-9);
+            QVERIFY(std::abs(corrected.tOutK[k] - pbm.tOutK[k] + 1.0) < 1e-9);
+        }
+        // No correction at the decision (a missing input): nothing is invented.
+        auto gap = before;
+        gap.tOutK[2] = std::numeric_limits<double>::quiet_NaN();
+        const auto gapBefore = gap;
+        control::holdCorrectionAfter(2, pbm, gap);
+        QCOMPARE(gap.xOutDb, gapBefore.xOutDb);
     }
 
     void hybridGainIsThePlantsOnThreeSeeds() {
