@@ -109,8 +109,10 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     generate->add_option("--batches", o.batches, "number of batches")->capture_default_str();
     generate->add_option("--samples", o.samples, "samples per batch (1 s apart)")->capture_default_str();
     auto* demo = generate->add_flag("--demo", o.demo, "the bundled demo mix of mechanisms and drift");
-    generate->add_option("--effect", o.effects, "NAME[=STRENGTH] of a mechanism to hide in the data (" + mechanismNames() +
-                               "; docs/mechanisms.md); repeatable")
+    generate
+        ->add_option("--effect", o.effects,
+                     "NAME[=STRENGTH] of a mechanism to hide in the data (" + mechanismNames() +
+                         "; docs/mechanisms.md); repeatable")
         ->excludes(demo);
     generate
         ->add_option("--onset", o.onsets,
@@ -215,7 +217,8 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     discover->add_option(
         "--model", o.modelPath,
         "model file to start from (default: the paper's parameters, h_HDT and k_HDT fitted first)");
-    discover->add_option("--json", o.jsonPath, "write the findings as JSON (what they mean: docs/discovery.md)");
+    discover->add_option("--json", o.jsonPath,
+                         "write the findings as JSON (what they mean: docs/discovery.md)");
     discover->add_option("--out-model", o.outPath, "write the extended model file here");
     discover->add_option("--max-causes", o.maxCauses, "causes added one at a time, at most")
         ->capture_default_str();
