@@ -477,7 +477,10 @@ void Workbench::simulateCalibrationStart() {
     start<workflow::SimulateResult>(
         Action::Simulate, tr("Simulate"),
         [o](workflow::Session& s, const Progress& p) { return s.simulate(o, p); },
-        [this](const workflow::SimulateResult& r) {
+        [this, forPath = m_dataPath](const workflow::SimulateResult& r) {
+            if (forPath != m_dataPath) {
+                return; // another data set was loaded meanwhile: this run belongs to none shown
+            }
             m_calibrationStart = r;
             Q_EMIT calibrationStartSimulated();
         });
