@@ -453,21 +453,26 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     setLongWork(false);
 }
 
-TrainingPanel::~TrainingPanel() = default;
+TrainingPanel::~TrainingPanel() {
+    if (m_instructorWindow->isVisible()) { // the program quits with it open: its place is kept too
+        QSettings().setValue(QStringLiteral("training/instructorGeometry"),
+                             m_instructorWindow->saveGeometry());
+    }
+}
 
 bool TrainingPanel::eventFilter(QObject* watched, QEvent* event) {
     if (watched == m_instructorWindow) {
         const auto type = event->type();
-        if ((type == QEvent::WindowStateChange || type == QEvent::Show) &&
-            !m_instructorWindow->isMinimized() && m_runner->frame().started) {
-            // Back from minimised: the axes are recomputed from the curves as they are now.
+        if (type == QEvent::WindowStateChange && !m_instructorWindow->isMinimized() &&
+            m_runner->frame().started) {
+            // Back from minimised: the axes are recomputed from the curves as they are now (an
+            // opening is redrawn by setInstructorView()).
             QMetaObject::invokeMethod(
                 this, [this] { redrawPlots(); }, Qt::QueuedConnection);
-        } else if (type == QEvent::Hide || type == QEvent::Move || type == QEvent::Resize) {
-            if (m_instructorWindow->isVisible() || type == QEvent::Hide) {
-                QSettings().setValue(QStringLiteral("training/instructorGeometry"),
-                                     m_instructorWindow->saveGeometry());
-            }
+        } else if (type == QEvent::Hide) {
+            // Its place, for the next time it opens (closed, or hidden with the panel).
+            QSettings().setValue(QStringLiteral("training/instructorGeometry"),
+                                 m_instructorWindow->saveGeometry());
         }
     }
     return QWidget::eventFilter(watched, event);
