@@ -11,7 +11,6 @@ namespace drytwin::monitoring {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 bool allFinite(const Eigen::Ref<const Eigen::VectorXd>& row) {
     for (Eigen::Index i = 0; i < row.size(); ++i) {

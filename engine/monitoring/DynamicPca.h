@@ -3,10 +3,14 @@
 #include "common/Error.h"
 
 #include <Eigen/Dense>
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace drytwin::monitoring {
+
+/// A block or statistic with no value (a gap in the data, a window not yet full).
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// @brief How a dynamic PCA monitor preprocesses and sizes itself.
 struct DynamicPcaOptions {

@@ -10,7 +10,6 @@ namespace drytwin::monitoring {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// NotEnoughData with its arguments {what, count}.
 Error notEnoughData(const std::string& place, const std::string& reason, const std::string& what,

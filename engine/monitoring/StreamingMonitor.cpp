@@ -7,7 +7,6 @@ namespace drytwin::monitoring {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 } // namespace
 

@@ -24,7 +24,6 @@ namespace ph = physics;
 
 namespace {
 
-constexpr double kKelvin = units::kKelvinOffset;
 constexpr double kAirCp = 1006;          // J/(kg·K), dry air
 constexpr double kVapourCp = 1880;       // J/(kg·K), water vapour
 constexpr double kLatentAtRef = 2.501e6; // J/kg at 0 °C
@@ -59,11 +58,11 @@ struct Design {
 
 /// Enthalpy of humid air per kg of dry air [J/kg], 0 °C reference.
 double airEnthalpy(double tK, double w) {
-    const double c = tK - kKelvin;
+    const double c = tK - units::kKelvinOffset;
     return kAirCp * c + w * (kLatentAtRef + kVapourCp * c);
 }
 double airTemperature(double h, double w) {
-    return kKelvin + (h - w * kLatentAtRef) / (kAirCp + w * kVapourCp);
+    return units::kKelvinOffset + (h - w * kLatentAtRef) / (kAirCp + w * kVapourCp);
 }
 
 /// Stocks of one volume: dry matter [kg], water [kg], enthalpy C(X)(T − T_ref) [J].

@@ -18,7 +18,6 @@ namespace ph = physics;
 
 namespace {
 
-constexpr double kKelvin = units::kKelvinOffset;
 // The plant's own forms of the mechanisms (docs/mechanisms.md sets them beside the model's).
 constexpr double kCriticalMoisture = 0.20; // X_cr of the falling-rate mechanism [kg/kg dry]
 constexpr double kFoulingTimeS = 2400;     // deposits approach their asymptote with this time constant
@@ -109,8 +108,8 @@ PlantDisturbances randomDisturbances(const PlantOptions& o, std::mt19937_64& rng
         const double xWb = std::clamp(
             xInBase + 0.008 * std::sin(2 * M_PI * t / 1800 + xInPhase) + xInWalk.next(rng), 0.20, 0.24);
         xIn[k] = xWb / (1 - xWb);
-        tIn[k] = kKelvin + 25 + tInNoise.next(rng);
-        tAmb[k] = kKelvin + std::clamp(ambBase + 3.0 * std::sin(2 * M_PI * t / 86400 * 4 + dayPhase) +
+        tIn[k] = units::kKelvinOffset + 25 + tInNoise.next(rng);
+        tAmb[k] = units::kKelvinOffset + std::clamp(ambBase + 3.0 * std::sin(2 * M_PI * t / 86400 * 4 + dayPhase) +
                                            tAmbNoise.next(rng),
                                        10.0, 35.0);
         rh[k] = std::clamp(rhBase + 0.08 * std::sin(2 * M_PI * t / 7200 + dayPhase) + rhNoise.next(rng), 0.2,
@@ -134,7 +133,7 @@ constexpr double kPiBiasC = 170.0;
 void PlantPiController::track(double setpointK, double xOutMeasuredPct, double xInPct, double targetPct) {
     const double e = xOutMeasuredPct - targetPct;
     const double ff = kPiFeedforward * (xInPct - kPiInletRefPct);
-    m_integral = (setpointK - kKelvin - kPiBiasC - ff) / kPiGain - e - e / kPiIntegralS;
+    m_integral = (setpointK - units::kKelvinOffset - kPiBiasC - ff) / kPiGain - e - e / kPiIntegralS;
 }
 
 double PlantPiController::next(double xOutMeasuredPct, double xInPct, double targetPct) {
@@ -143,9 +142,9 @@ double PlantPiController::next(double xOutMeasuredPct, double xInPct, double tar
     const double e = xOutMeasuredPct - targetPct;
     m_integral += e / ti;
     const double ff = kPiFeedforward * (xInPct - kPiInletRefPct);
-    double sp = kKelvin + kPiBiasC + ff + kc * (e + m_integral);
-    const double lo = kKelvin + kLowC;
-    const double hi = kKelvin + kHighC;
+    double sp = units::kKelvinOffset + kPiBiasC + ff + kc * (e + m_integral);
+    const double lo = units::kKelvinOffset + kLowC;
+    const double hi = units::kKelvinOffset + kHighC;
     if (sp > hi || sp < lo) {
         m_integral -= e / ti;
         sp = std::clamp(sp, lo, hi);

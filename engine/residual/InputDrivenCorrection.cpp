@@ -16,7 +16,6 @@ namespace drytwin::residual {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr int kOutputs = 2;     // outlet moisture (% wb) and temperature (°C)
 constexpr int kProxyInputs = 8; // six proxy states and the PBM's two outlet outputs
 constexpr int kMeasuredInputs =
     7; // hot air, feed, inlet moisture and temperature, ambient T and RH, air speed
@@ -320,7 +319,7 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
     }
     const Eigen::Index features = phiRows.front().size();
     Eigen::MatrixXd phi(rows, features);
-    Eigen::MatrixXd y(rows, kOutputs);
+    Eigen::MatrixXd y(rows, kCorrectedOutputs);
     for (Eigen::Index r = 0; r < rows; ++r) {
         phi.row(r) = phiRows[static_cast<std::size_t>(r)];
         y.row(r) = targets[static_cast<std::size_t>(r)].transpose();
@@ -343,7 +342,7 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
         const double middle = options.ridgeGrid[options.ridgeGrid.size() / 2] * double(rows);
         const Eigen::MatrixXd gram = phi.transpose() * phi;
         const Eigen::MatrixXd rhs = phi.transpose() * y;
-        for (int o = 0; o < kOutputs; ++o) {
+        for (int o = 0; o < kCorrectedOutputs; ++o) {
             const Eigen::VectorXd res = y.col(o) - phi * ridgeSolve(gram, rhs.col(o), middle);
             std::vector<double> abs(res.data(), res.data() + res.size());
             for (double& a : abs) {
@@ -364,7 +363,7 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
     std::vector<Eigen::MatrixXd> foldGram(static_cast<std::size_t>(folds),
                                           Eigen::MatrixXd::Zero(features, features));
     std::vector<Eigen::MatrixXd> foldRhs(static_cast<std::size_t>(folds),
-                                         Eigen::MatrixXd::Zero(features, kOutputs));
+                                         Eigen::MatrixXd::Zero(features, kCorrectedOutputs));
     for (const auto& s : segments) {
         Eigen::MatrixXd p = phi.middleRows(s.begin, s.end - s.begin);
         Eigen::MatrixXd t = y.middleRows(s.begin, s.end - s.begin);
@@ -378,22 +377,22 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
         foldRhs[static_cast<std::size_t>(s.fold)] += p.transpose() * t;
     }
     Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(features, features);
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(features, kOutputs);
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(features, kCorrectedOutputs);
     for (int f = 0; f < folds; ++f) {
         gram += foldGram[static_cast<std::size_t>(f)];
         rhs += foldRhs[static_cast<std::size_t>(f)];
     }
     // Cross-validated absolute error per penalty and output, judged on every row of the held-out
     // fold (spikes included: that is what a user's data holds).
-    m.m_coefficients = Eigen::MatrixXd::Zero(features, kOutputs);
+    m.m_coefficients = Eigen::MatrixXd::Zero(features, kCorrectedOutputs);
     auto& val = m.m_validation;
     val.folds = folds;
-    double pbmAbs[kOutputs] = {0, 0};
+    double pbmAbs[kCorrectedOutputs] = {0, 0};
     for (const auto& s : segments) {
         pbmAbs[0] += y.col(0).segment(s.begin, s.end - s.begin).cwiseAbs().sum();
         pbmAbs[1] += y.col(1).segment(s.begin, s.end - s.begin).cwiseAbs().sum();
     }
-    for (int o = 0; o < kOutputs; ++o) {
+    for (int o = 0; o < kCorrectedOutputs; ++o) {
         double best = std::numeric_limits<double>::infinity();
         double bestPenalty = options.ridgeGrid.front();
         Eigen::VectorXd bestHeldOut; // each row's forecast by the fit without its fold

@@ -10,6 +10,9 @@
 
 namespace drytwin::residual {
 
+/// The outputs the input-driven correction corrects: outlet moisture (% wb) and temperature (°C).
+inline constexpr int kCorrectedOutputs = 2;
+
 struct BatchView;
 
 /// @brief How the input-driven correction turns the input history into features.

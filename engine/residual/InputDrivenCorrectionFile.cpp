@@ -7,7 +7,6 @@
 namespace drytwin::residual {
 
 namespace {
-constexpr int kOutputs = 2; // outlet moisture (% wb) and temperature (°C)
 } // namespace
 
 std::string InputDrivenCorrection::toJson() const {
@@ -96,7 +95,7 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::strin
         if (m.m_inputMean.size() != n || m.m_inputScale.size() != n || m.m_inputLow.size() != n ||
             m.m_inputHigh.size() != n || m.m_featureMean.size() != features ||
             m.m_featureScale.size() != features || m.m_coefficients.rows() != features ||
-            m.m_coefficients.cols() != kOutputs) {
+            m.m_coefficients.cols() != kCorrectedOutputs) {
             return Error{ErrorKind::BadInput, "input_driven", "sizes of the stored correction do not agree"};
         }
         return m;
