@@ -171,6 +171,17 @@ struct Consistency {
 };
 Consistency consistencyAt(const Problem& pr, const Stack& atFit, const std::vector<int>& nuisance, int cand,
                           double pooled, double tolerance);
+/// Whether an offset is constant within the batch: its one-step estimate on the first and on the
+/// second half of every batch's span from @p onsetS (0: the batch start), pooled over the batches.
+/// A gauge's offset reads the same early and late; a change that grows within the batch (fouling,
+/// a drifting reading) does not, whichever offset it resembles.
+struct Constancy {
+    bool checked = false; ///< each half had information
+    PartEstimate early, late;
+    bool constant = true; ///< the halves differ by less than 3 standard errors or half the pooled value
+};
+Constancy constancyWithinBatch(const Stack& atFit, const std::vector<int>& nuisance, int cand, double pooled,
+                               double onsetS);
 /// Fitted on the parts with the cooler hot air (one step from the pooled fit with their data
 /// alone), the share of the warmer parts' training loss without the cause that it removes
 /// (negative: it hurts there). @p atStart: the model without the cause, entries paired with @p atFit.
@@ -245,6 +256,7 @@ struct SpecificityInput {
 struct Specificity {
     std::string code, why;
     Consistency consistency;
+    Constancy constancy; ///< offsets only (X_in_offset, X_meter_offset)
     Transfer transfer;
 };
 Expected<Specificity> judgeSpecificity(const SpecificityInput& in);

@@ -108,6 +108,49 @@ Consistency consistencyAt(const Problem& pr, const Stack& atFit, const std::vect
     return out;
 }
 
+Constancy constancyWithinBatch(const Stack& atFit, const std::vector<int>& nuisance, int cand, double pooled,
+                               double onsetS) {
+    Constancy out;
+    std::map<int, double> span; // per batch: the last training entry's time
+    for (std::size_t i = 0; i < atFit.batch.size(); ++i) {
+        auto& s = span[atFit.batch[i]];
+        s = std::max(s, atFit.timeS[i]);
+    }
+    const double from = std::max(0.0, onsetS);
+    std::vector<int> half(atFit.batch.size(), -1); // -1: before the onset, where the cause is 0
+    for (std::size_t i = 0; i < half.size(); ++i) {
+        const double end = span[atFit.batch[i]];
+        if (atFit.timeS[i] >= from && end > from) {
+            half[i] = atFit.timeS[i] < 0.5 * (from + end) ? 0 : 1;
+        }
+    }
+    const Eigen::VectorXd sc = projectedColumn(atFit, nuisance, cand);
+    const Eigen::VectorXd u = sc.cwiseProduct(atFit.r);
+    PartEstimate* estimates[2] = {&out.early, &out.late};
+    for (int h = 0; h < 2; ++h) {
+        double info = 0, score = 0;
+        for (std::size_t i = 0; i < half.size(); ++i) {
+            if (half[i] == h) {
+                info += sc(static_cast<Eigen::Index>(i)) * sc(static_cast<Eigen::Index>(i));
+                score += u(static_cast<Eigen::Index>(i));
+            }
+        }
+        if (!(info > 0)) {
+            return out;
+        }
+        PartEstimate& e = *estimates[h];
+        e.part = h == 0 ? "first half" : "second half";
+        e.value = pooled + score / info; // one Gauss-Newton step from the pooled fit, this half alone
+        e.se = std::sqrt(std::max(0.0, partVariance(atFit, u, half, h))) / info;
+    }
+    out.checked = true;
+    const double difference = std::abs(out.late.value - out.early.value);
+    // Significant and large: a real offset's halves differ by the model's structure at most,
+    // which is a small share of it on both plants (docs/reference-period.md).
+    out.constant = !(difference > 3 * std::hypot(out.early.se, out.late.se) && difference > 0.5 * std::abs(pooled));
+    return out;
+}
+
 Transfer transferBetweenRegions(const Problem& pr, const Stack& atStart, const Stack& atFit,
                                 const std::vector<int>& nuisance, int fitCol, double pooled) {
     Transfer out;
@@ -286,6 +329,19 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
     if (out.code.empty() && !out.consistency.consistent) {
         out.code = "inconsistent";
         out.why = inconsistencyReason(out.consistency, in.parameter, in.value);
+    }
+    if (in.parameter == Param::X_in_offset || in.parameter == Param::X_meter_offset) {
+        out.constancy = constancyWithinBatch(in.atFit, in.nuisance, in.atCol, in.value,
+                                             in.fitParameters[Param::t_onset]);
+        if (out.code.empty() && out.constancy.checked && !out.constancy.constant) {
+            const std::string unit(properties::info(in.parameter).unit);
+            out.code = "not_constant";
+            out.why = format("an offset reads the same all batch long, but its estimate is %.3g±%.2g %s over "
+                             "the first half of the batches and %.3g±%.2g %s over the second: the error "
+                             "changes within the batch, as fouling or a drifting reading does",
+                             out.constancy.early.value, 1.96 * out.constancy.early.se, unit.c_str(),
+                             out.constancy.late.value, 1.96 * out.constancy.late.se, unit.c_str());
+        }
     }
     if (out.code.empty() && out.transfer.checked && out.transfer.reduction < 0) {
         out.code = "inconsistent";

@@ -337,6 +337,13 @@ QString rejectionText(const std::string& code) {
     if (code == "inconsistent") {
         return DiscoverPanel::tr("its size is not consistent across batches or operating regions");
     }
+    if (code == "not_constant") {
+        return DiscoverPanel::tr("an offset reads the same all batch long; this error grows or shrinks within "
+                                 "the batch (fouling, a drifting reading)");
+    }
+    if (code == "within_normal_spread") {
+        return DiscoverPanel::tr("its value lies within the reference period's normal range: not a change");
+    }
     if (code == "below_floor") {
         return DiscoverPanel::tr("it is below what the instruments can tell (practical floor)");
     }

@@ -6,6 +6,7 @@
 
 #include <QtTest>
 #include <cmath>
+#include <functional>
 #include <random>
 
 using namespace drytwin::discovery::detail;
@@ -38,6 +39,30 @@ std::pair<HeldOut, HeldOut> heldOutPair(double noise, double removed, double add
         }
     }
     return {before, after};
+}
+
+/// Four batches of 3,000 s at 3 s, one channel, an offset's column (sensitivity 1 everywhere), and
+/// as the error left at the pooled fit AR(1) noise of rms 0.05 (φ = 0.9) plus @p shape(t) [s].
+Stack offsetStack(const std::function<double(double)>& shape, unsigned seed) {
+    constexpr int batches = 4, rows = 1000;
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> z(0, 1);
+    Stack st;
+    st.s = Eigen::MatrixXd::Ones(batches * rows, 1);
+    st.r.resize(batches * rows);
+    for (int b = 0; b < batches; ++b) {
+        double ar = 0;
+        for (int i = 0; i < rows; ++i) {
+            ar = 0.9 * ar + std::sqrt(1 - 0.81) * z(rng);
+            const double t = 3.0 * i;
+            st.r(b * rows + i) = 0.05 * ar + shape(t);
+            st.batch.push_back(b);
+            st.row.push_back(i);
+            st.channel.push_back(kChannel);
+            st.timeS.push_back(t);
+        }
+    }
+    return st;
 }
 
 } // namespace
@@ -74,6 +99,43 @@ private Q_SLOTS:
         QVERIFY(ch.changeSe > 0);
         const double p = unimprovedChannelP(ch, 0.05 * 0.05);
         QVERIFY2(p > 0.05, qPrintable(QString::number(p)));
+    }
+
+    void aGaugeOffsetReadsTheSameEarlyAndLate() {
+        // Fitted at 0.3: the error left is noise; both halves estimate 0.3 within their error.
+        const auto c = constancyWithinBatch(offsetStack([](double) { return 0.0; }, 3), {}, 0, 0.3, 0);
+        QVERIFY(c.checked);
+        QVERIFY(c.constant);
+        QVERIFY(std::abs(c.early.value - 0.3) < 3 * c.early.se);
+        QVERIFY(std::abs(c.late.value - 0.3) < 3 * c.late.se);
+        QVERIFY(c.early.se > 0 && c.late.se > 0);
+    }
+
+    void anErrorThatGrowsWithinTheBatchIsNotAnOffset() {
+        // Fouling's growth, 1 − exp(−t / 3,000 s), fitted as an offset of 0.3: the first half
+        // asks for less, the second for more.
+        const auto growth = [](double t) { return 0.6 * (1 - std::exp(-t / 3000)) - 0.3; };
+        const auto c = constancyWithinBatch(offsetStack(growth, 4), {}, 0, 0.3, 0);
+        QVERIFY(c.checked);
+        QVERIFY(!c.constant);
+        QVERIFY(c.late.value > c.early.value + 0.15);
+        // Its mean over each half, added to the pooled 0.3 (within 0.02 of the noise).
+        QVERIFY(std::abs(c.early.value - (0.3 + 0.6 * (1 - 3000.0 / 1500 * (1 - std::exp(-0.5))) - 0.3)) < 0.02);
+    }
+
+    void anOffsetFromItsOnsetIsJudgedFromItsOnset() {
+        // A step of 0.4 at 1,500 s into each batch, fitted from its onset: the error left after it
+        // is noise, so from the onset on it is constant; judged from the batch start (no onset
+        // found yet) the first half sees none of it, which is what sends discovery to look for an
+        // onset (CandidateFits.cpp).
+        const auto fromOnset = constancyWithinBatch(offsetStack([](double) { return 0.0; }, 5), {}, 0, 0.4, 1500);
+        QVERIFY(fromOnset.checked);
+        QVERIFY(fromOnset.constant);
+        const auto step = [](double t) { return t < 1500 ? -0.2 : 0.2; }; // an offset of 0.2 pooled
+        const auto fromStart = constancyWithinBatch(offsetStack(step, 5), {}, 0, 0.2, 0);
+        QVERIFY(!fromStart.constant);
+        QVERIFY(std::abs(fromStart.early.value) < 0.05);
+        QVERIFY(std::abs(fromStart.late.value - 0.4) < 0.05);
     }
 
     void theRightCauseMeetsItsPrediction() {
