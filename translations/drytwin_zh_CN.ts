@@ -1863,7 +1863,7 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="598"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="605"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
@@ -2037,56 +2037,66 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="341"/>
+        <source>an offset reads the same all batch long; this error grows or shrinks within the batch (fouling, a drifting reading)</source>
+        <translation>偏差在整个批次中读数不变；此误差在批次内增大或减小（结垢、读数漂移）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="345"/>
+        <source>its value lies within the reference period&apos;s normal range: not a change</source>
+        <translation>其值在参考期的正常范围内：不是变化</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="344"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="351"/>
         <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
         <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="355"/>
         <source>the outlet channels&apos; timing points to its look-alike (the moisture answers later than the temperature: a meter, not the transport)</source>
         <translation>出口两个通道的时序指向它的相似原因（水分比温度响应更晚：是水分仪，而非输送）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="353"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="360"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="356"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="363"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="380"/>
         <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
         <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="378"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="385"/>
         <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
         <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="381"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="388"/>
         <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
         <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="386"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="393"/>
         <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
         <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="392"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="399"/>
         <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="403"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="410"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
@@ -2095,82 +2105,82 @@
         <translation type="vanished">误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="418"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="425"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="423"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="430"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="435"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="442"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="442"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="449"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="457"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="464"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="462"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="469"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="462"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="469"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="465"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="472"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="469"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="476"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="478"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="485"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="484"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="491"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="496"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="503"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="497"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="504"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="504"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="511"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="516"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="523"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="520"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="527"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -2179,27 +2189,27 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="537"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="544"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="537"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="544"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="564"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="571"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="565"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="572"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="582"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="589"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2216,12 +2226,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="606"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="613"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="606"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="613"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2230,37 +2240,37 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="631"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="638"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="634"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="641"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="649"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="432"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="439"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="521"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="528"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="522"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="529"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="526"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="533"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
@@ -2269,141 +2279,141 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="585"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="592"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="595"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="602"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="596"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="603"/>
         <source>, </source>
         <translation>、</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="599"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="606"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="652"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="659"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="668"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="675"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="673"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="680"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="680"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="687"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="685"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="692"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="693"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="700"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="703"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="710"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="511"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="704"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="722"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="518"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="711"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="729"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="705"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="712"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="511"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="706"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="726"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="518"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="713"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="733"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="408"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="415"/>
         <source>the error follows %1 %2 s later (correlation %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（相关系数 %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="532"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="539"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="627"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="634"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="707"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="714"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="708"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="721"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="728"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="721"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="728"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="722"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="729"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="725"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="732"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="725"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="732"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="726"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="733"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="750"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="757"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="751"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="758"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -3358,12 +3368,12 @@ The results below are from the last complete run.</source>
 <context>
     <name>drytwin::widgets::PlotStack</name>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="191"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="190"/>
         <source>Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click to zoom out, middle drag to pan</source>
         <translation>Ctrl+单击：游标 A，Shift+单击：游标 B，Alt+单击：时间游标；拖动放大，右键缩小，中键拖动平移</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="93"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="92"/>
         <source>Export…</source>
         <translation>导出…</translation>
     </message>
@@ -3372,62 +3382,62 @@ The results below are from the last complete run.</source>
         <translation>将这些图表保存为 PNG、SVG 或 PDF</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="94"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="93"/>
         <source>Save these plots as PNG, SVG or PDF, or their data as CSV</source>
         <translation>把这些曲线图保存为 PNG、SVG 或 PDF，或把数据保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="175"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="174"/>
         <source>time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="254"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="253"/>
         <source>No data yet</source>
         <translation>尚无数据</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="518"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="517"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="521"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="520"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="524"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="523"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="528"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="527"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="532"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="531"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="618"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="617"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="646"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="645"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
         <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="682"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="681"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="596"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="595"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
@@ -3436,7 +3446,7 @@ The results below are from the last complete run.</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="681"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="680"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
@@ -3445,12 +3455,12 @@ The results below are from the last complete run.</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="688"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="687"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="690"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="689"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
@@ -4111,7 +4121,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="135"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="611"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="616"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
@@ -4122,7 +4132,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="596"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="601"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
@@ -4143,7 +4153,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="158"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="600"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
@@ -4363,32 +4373,32 @@ extrapolation</source>
         <translation>会话文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="654"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="659"/>
         <source>Line monitor unavailable: %1</source>
         <translation>产线监控不可用：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="656"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="661"/>
         <source>Line monitor: normal (as on its commissioning runs).</source>
         <translation>产线监控：正常（与调试运行一致）。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="661"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="666"/>
         <source>the model&apos;s error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="661"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="666"/>
         <source>the screens&apos; signals (PCA)</source>
         <translation>画面信号（PCA）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="664"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="669"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal; the change began at about %3. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态；变化约始于 %3。请诊断记录以确定原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="667"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="672"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态。请诊断记录以确定原因。</translation>
     </message>
@@ -4481,102 +4491,102 @@ extrapolation</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="499"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="504"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="503"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="508"/>
         <source>The previous session was saved in %1.</source>
         <translation>上一个会话已保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="516"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="521"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="541"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="546"/>
         <source>%1 (stale: retrain)</source>
         <translation>%1（过期：需重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="542"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="547"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="590"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="592"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="597"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="592"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="597"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="592"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="597"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="594"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="599"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="600"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="596"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="601"/>
         <source>Continue</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="606"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="611"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="607"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="612"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="611"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="616"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="618"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="623"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="628"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="633"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="628"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="633"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="631"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="636"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="642"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="647"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>
@@ -4768,7 +4778,7 @@ extrapolation</source>
         <translation>已仿真 %1 个批次；出口含水率平均 MAE %2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="493"/>
+        <location filename="../widgets/common/Workbench.cpp" line="496"/>
         <source>Calibration: %1; loss %2 → %3</source>
         <translation>标定：%1；损失 %2 → %3</translation>
     </message>
@@ -4777,19 +4787,19 @@ extrapolation</source>
         <translation>学习之后物理模型又经过了标定</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="519"/>
+        <location filename="../widgets/common/Workbench.cpp" line="522"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="127"/>
         <source>Learn the correction models</source>
         <translation>学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="523"/>
+        <location filename="../widgets/common/Workbench.cpp" line="526"/>
         <source>Learnt the correction models (PGRL-CC) and the two comparison models</source>
         <translation>已学习修正模型（PGRL-CC）和两个对比模型</translation>
     </message>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="154"/>
-        <location filename="../widgets/common/Workbench.cpp" line="488"/>
+        <location filename="../widgets/common/Workbench.cpp" line="491"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
@@ -4806,48 +4816,48 @@ extrapolation</source>
         <translation>已训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="538"/>
+        <location filename="../widgets/common/Workbench.cpp" line="541"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="560"/>
+        <location filename="../widgets/common/Workbench.cpp" line="563"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="560"/>
+        <location filename="../widgets/common/Workbench.cpp" line="563"/>
         <source>Discover against the reference</source>
         <translation>相对参考期发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="570"/>
+        <location filename="../widgets/common/Workbench.cpp" line="573"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="577"/>
+        <location filename="../widgets/common/Workbench.cpp" line="580"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="592"/>
+        <location filename="../widgets/common/Workbench.cpp" line="595"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="128"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="596"/>
+        <location filename="../widgets/common/Workbench.cpp" line="599"/>
         <source>Ablation: %1 variants trained and evaluated</source>
         <translation>消融实验：已训练并评估 %1 个变体</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="603"/>
+        <location filename="../widgets/common/Workbench.cpp" line="606"/>
         <source>Generate</source>
         <translation>生成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="606"/>
+        <location filename="../widgets/common/Workbench.cpp" line="609"/>
         <source>Wrote %1 virtual-plant batches to %2</source>
         <translation>已将 %1 个虚拟装置批次写入 %2</translation>
     </message>
