@@ -2036,9 +2036,8 @@
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="341"/>
         <source>an offset reads the same all batch long; this error grows or shrinks within the batch (fouling, a drifting reading)</source>
-        <translation>偏差在整个批次中读数不变；此误差在批次内增大或减小（结垢、读数漂移）</translation>
+        <translation type="vanished">偏差在整个批次中读数不变；此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="345"/>
@@ -2351,6 +2350,11 @@
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="733"/>
         <source>°C</source>
         <translation>°C</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="341"/>
+        <source>it does not change within a batch (an offset, the tube&apos;s wall or gas phase), but this error grows or shrinks within the batch (fouling, a drifting reading)</source>
+        <translation>它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="415"/>

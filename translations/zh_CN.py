@@ -921,7 +921,7 @@ ZH = {
     "Start a session to see the line run": "开始会话即可看到产线运行",
     "The monitor's T² shows once it has a minute of the model's error": "监测器积累一分钟的模型误差后显示 T²",
     "Start a session to see the true outlet moisture beside the measured": "开始会话即可看到真实出口含水率与测量值的对比",
-    "an offset reads the same all batch long; this error grows or shrinks within the batch (fouling, a drifting reading)": "偏差在整个批次中读数不变；此误差在批次内增大或减小（结垢、读数漂移）",
+    "it does not change within a batch (an offset, the tube's wall or gas phase), but this error grows or shrinks within the batch (fouling, a drifting reading)": "它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）",
     "its value lies within the reference period's normal range: not a change": "其值在参考期的正常范围内：不是变化",
 }
 

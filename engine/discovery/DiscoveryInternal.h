@@ -180,6 +180,8 @@ struct Constancy {
     PartEstimate early, late;
     bool constant = true; ///< the halves differ by less than 3 standard errors or half the pooled value
 };
+/// The causes whose parameter a batch does not change, judged so (constancyWithinBatch).
+bool constantWithinBatch(Param p);
 Constancy constancyWithinBatch(const Stack& atFit, const std::vector<int>& nuisance, int cand, double pooled,
                                double onsetS);
 /// Fitted on the parts with the cooler hot air (one step from the pooled fit with their data
@@ -256,7 +258,7 @@ struct SpecificityInput {
 struct Specificity {
     std::string code, why;
     Consistency consistency;
-    Constancy constancy; ///< offsets only (X_in_offset, X_meter_offset)
+    Constancy constancy; ///< the causes a batch does not change only (constantWithinBatch)
     Transfer transfer;
 };
 Expected<Specificity> judgeSpecificity(const SpecificityInput& in);

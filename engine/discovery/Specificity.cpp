@@ -108,6 +108,17 @@ Consistency consistencyAt(const Problem& pr, const Stack& atFit, const std::vect
     return out;
 }
 
+bool constantWithinBatch(Param p) {
+    // The gauges' offsets, the wall's loss and the gas phase's coupling: properties of an
+    // instrument or of the tube that a batch does not change. Not fouling (its parameter is a
+    // growth rate, and deposits need not grow linearly), nor the causes that act through the
+    // product's state (falling-rate drying, re-absorption), whose one-step estimates differ
+    // between the wet start and the drier end of a batch on any model, nor the lags and delays,
+    // whose tangent says little about their size.
+    return p == Param::X_in_offset || p == Param::X_meter_offset || p == Param::theta_wall ||
+           p == Param::theta_gas;
+}
+
 Constancy constancyWithinBatch(const Stack& atFit, const std::vector<int>& nuisance, int cand, double pooled,
                                double onsetS) {
     Constancy out;
@@ -330,15 +341,18 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
         out.code = "inconsistent";
         out.why = inconsistencyReason(out.consistency, in.parameter, in.value);
     }
-    if (in.parameter == Param::X_in_offset || in.parameter == Param::X_meter_offset) {
+    if (constantWithinBatch(in.parameter)) {
         out.constancy = constancyWithinBatch(in.atFit, in.nuisance, in.atCol, in.value,
                                              in.fitParameters[Param::t_onset]);
         if (out.code.empty() && out.constancy.checked && !out.constancy.constant) {
             const std::string unit(properties::info(in.parameter).unit);
             out.code = "not_constant";
-            out.why = format("an offset reads the same all batch long, but its estimate is %.3g±%.2g %s over "
+            out.why = format("%s does not change within a batch, but its estimate is %.3g±%.2g %s over "
                              "the first half of the batches and %.3g±%.2g %s over the second: the error "
                              "changes within the batch, as fouling or a drifting reading does",
+                             in.parameter == Param::X_in_offset || in.parameter == Param::X_meter_offset
+                                 ? "an offset"
+                                 : "a property of the tube",
                              out.constancy.early.value, 1.96 * out.constancy.early.se, unit.c_str(),
                              out.constancy.late.value, 1.96 * out.constancy.late.se, unit.c_str());
         }

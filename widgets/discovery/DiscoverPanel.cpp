@@ -338,8 +338,8 @@ QString rejectionText(const std::string& code) {
         return DiscoverPanel::tr("its size is not consistent across batches or operating regions");
     }
     if (code == "not_constant") {
-        return DiscoverPanel::tr("an offset reads the same all batch long; this error grows or shrinks within "
-                                 "the batch (fouling, a drifting reading)");
+        return DiscoverPanel::tr("it does not change within a batch (an offset, the tube's wall or gas phase), "
+                                 "but this error grows or shrinks within the batch (fouling, a drifting reading)");
     }
     if (code == "within_normal_spread") {
         return DiscoverPanel::tr("its value lies within the reference period's normal range: not a change");
