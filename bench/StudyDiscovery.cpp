@@ -12,6 +12,9 @@
 //      by discoverChange; the detectors' flags in each row)] [--no-structure (with --reference: the
 //      line's own structure not learnt, the causes' normal values alone)] [--seeds FIRST (mechanism runs'
 //      three seeds; default 101, onsets FIRST+100)] [--unimproved-alpha A (default 0.05; 1: the rule before)]
+//      [--no-constancy (an offset, wall loss or gas coupling not checked for constancy within the batch)]
+//      [--look-alike-overall (a look-alike ruled out on the overall held-out loss alone, even where
+//      it predicts one output better)]: the rules before 2026-11-26, for a before/after
 // (lumped, its built-in sensors: about 8 min on 2 cores; --quick: one seed). The default plant is
 // the distributed one with realistic sensors (issue #22), whose nulls include its own structure.
 #include "discovery/Discovery.h"
@@ -222,6 +225,10 @@ int main(int argc, char** argv) {
             oracle = true;
         } else if (a == "--reference") {
             againstReference = true;
+        } else if (a == "--no-constancy") { // the rules before 2026-11-26, for a before/after
+            discoveryOptions.checkConstancyWithinBatch = false;
+        } else if (a == "--look-alike-overall") {
+            discoveryOptions.lookAlikeWorseOnNoOutput = false;
         } else if (a == "--no-structure") { // against a reference: the causes' normal values alone
             discoveryOptions.learnLineStructure = false;
         } else if (a == "--mechanism" && !next.empty()) {
@@ -250,7 +257,8 @@ int main(int argc, char** argv) {
                                  "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
                                  "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
                                  "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
-                                 "[--evaluations N] [--oracle] [--reference]\n");
+                                 "[--evaluations N] [--oracle] [--reference] [--no-structure] [--no-constancy] "
+                                 "[--look-alike-overall]\n");
             return 2;
         }
     }

@@ -923,6 +923,11 @@ ZH = {
     "Start a session to see the true outlet moisture beside the measured": "开始会话即可看到真实出口含水率与测量值的对比",
     "it does not change within a batch (an offset, the tube's wall or gas phase), but this error grows or shrinks within the batch (fouling, a drifting reading)": "它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）",
     "its value lies within the reference period's normal range: not a change": "其值在参考期的正常范围内：不是变化",
+    "%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts %4 better; which output a cause favours is the model's structure, so the data cannot tell them apart.": "%1 同样拟合：总体上它留下 %2 倍的留出误差（p = %3），但它对%4的预测更好；原因偏向哪个输出取决于模型自身的结构，因此数据无法区分二者。",
+    "the outlet moisture": "出口含水率",
+    "the outlet temperature": "出口温度",
+    "the tube-outlet moisture": "管出口含水率",
+    "the tube-outlet temperature": "管出口温度",
 }
 
 

@@ -91,6 +91,13 @@ struct DiscoveryOptions {
     /// take it off every period's measurements before a change is looked for. false: the
     /// causes' normal values alone carry the structure.
     bool learnLineStructure = true;
+    /// A cause a batch does not change (a gauge's offset, the wall's loss, the gas phase's
+    /// coupling) must be estimated alike on the first and the second half of the batches
+    /// (Specificity.cpp, `not_constant`). false: not checked, as before 2026-11-26.
+    bool checkConstancyWithinBatch = true;
+    /// A look-alike is ruled out only when the named cause is not significantly worse on any
+    /// measured output; false: on the overall held-out loss alone, as before 2026-11-26.
+    bool lookAlikeWorseOnNoOutput = true;
     Status validate() const;
 };
 
@@ -190,7 +197,7 @@ struct LookAlike {
     double value = 0;
     double heldOutLossRatio = 1; ///< its held-out weighted squared error over the named cause's
     double pValue = 1;           ///< one-sided Diebold-Mariano that the named cause predicts better
-    bool ruledOut = false;       ///< pValue below DiscoveryOptions::gainAlpha
+    bool ruledOut = false; ///< pValue below DiscoveryOptions::gainAlpha and no worseOutput
     /// Judged by the outlet channels' timing instead (a meter lag against a transport time): the
     /// delay the moisture and the temperature each ask for alone; pValue is then the one-sided
     /// held-out p that the later channel is later. Ruled out when the moisture is later (only a
@@ -198,6 +205,9 @@ struct LookAlike {
     /// delay it, so either cause fits) or the held-out part does not confirm which is later.
     bool byChannels = false;
     double moistureDelayS = 0, temperatureDelayS = 0;
+    /// The measured output the named cause predicts significantly worse than this look-alike
+    /// ("" when none): then it is not ruled out whatever pValue says.
+    std::string worseOutput;
 };
 
 /// @brief A named cause with its fitted parameter, evidence and gain.

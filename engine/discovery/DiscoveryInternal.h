@@ -422,8 +422,12 @@ Status selectCauses(const Prepared& prepared, const CauseFit& refit, const StopA
 void conclude(const Problem& pr, const ParameterSet& extended, const std::vector<Param>& nuisance,
               const std::vector<physics::SimulationResult>& sims, std::vector<OutputResidual> residuals,
               DiscoveryResult& result);
+/// The first measured output on which @p named (the named cause's held-out part) is significantly
+/// worse than @p other (a look-alike's, fitted in its place) at level @p alpha; "" when none.
+std::string outputPredictedWorse(const HeldOut& other, const HeldOut& named, double alpha);
 /// A look-alike @p other fitted in the named cause's place (@p fitted), judged on the same held-out
-/// part: its loss ratio and the one-sided DM p that the named cause predicts better.
+/// part: its loss ratio and the one-sided DM p that the named cause predicts better; ruled out
+/// when that p is small and the named cause is worse on no output (outputPredictedWorse).
 Expected<LookAlike> compareLookAlike(const Problem& pr, Param other, const ParameterSet& fitted,
                                      const HeldOut& namedHeld, const DiscoveryOptions& options);
 

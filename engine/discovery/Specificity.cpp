@@ -341,7 +341,7 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
         out.code = "inconsistent";
         out.why = inconsistencyReason(out.consistency, in.parameter, in.value);
     }
-    if (constantWithinBatch(in.parameter)) {
+    if (in.pr.options.checkConstancyWithinBatch && constantWithinBatch(in.parameter)) {
         out.constancy = constancyWithinBatch(in.atFit, in.nuisance, in.atCol, in.value,
                                              in.fitParameters[Param::t_onset]);
         if (out.code.empty() && out.constancy.checked && !out.constancy.constant) {
@@ -434,6 +434,20 @@ Expected<std::optional<Finding>> inletScatterFinding(const Problem& pr, const Pa
     return std::optional<Finding>{f};
 }
 
+std::string outputPredictedWorse(const HeldOut& other, const HeldOut& named, double alpha) {
+    // A look-alike that wins on one output and loses on another is a different balance of the
+    // same signature (the model's own structure decides which output it favours), not a worse
+    // explanation: the named cause must not be significantly worse on any measured output.
+    const auto changes = channelChanges(other, named);
+    for (int c = 0; c < 4; ++c) {
+        const auto& ch = changes[static_cast<std::size_t>(c)];
+        if (ch.measured && ch.mseAfter > ch.mseBefore && ch.pWorse < alpha) {
+            return kChannelName[c];
+        }
+    }
+    return "";
+}
+
 Expected<LookAlike> compareLookAlike(const Problem& pr, Param other, const ParameterSet& fitted,
                                      const HeldOut& namedHeld, const DiscoveryOptions& options) {
     auto otherHeld = heldOut(pr, fitted);
@@ -447,7 +461,8 @@ Expected<LookAlike> compareLookAlike(const Problem& pr, Param other, const Param
     const double mine = meanOf(namedHeld.loss);
     l.heldOutLossRatio = mine > 0 ? meanOf(otherHeld->loss) / mine : 1.0;
     l.pValue = heldOutPValue(*otherHeld, namedHeld);
-    l.ruledOut = l.pValue < options.gainAlpha;
+    l.worseOutput = outputPredictedWorse(*otherHeld, namedHeld, options.gainAlpha);
+    l.ruledOut = l.pValue < options.gainAlpha && (l.worseOutput.empty() || !options.lookAlikeWorseOnNoOutput);
     return l;
 }
 

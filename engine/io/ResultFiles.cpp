@@ -425,7 +425,8 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                                           {"ruled_out", l.ruledOut},
                                           {"by_channels", l.byChannels},
                                           {"moisture_delay_s", num(l.moistureDelayS)},
-                                          {"temperature_delay_s", num(l.temperatureDelayS)}});
+                                          {"temperature_delay_s", num(l.temperatureDelayS)},
+                                          {"worse_output", l.worseOutput}});
         }
         if (!f.tellApart.empty()) {
             out["tell_apart"] = f.tellApart;

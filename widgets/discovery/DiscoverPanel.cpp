@@ -499,6 +499,19 @@ QString DiscoverPanel::specificityText(const discovery::Finding& f) {
                        .arg(l.pValue, 0, 'g', 2);
             continue;
         }
+        if (!l.ruledOut && !l.worseOutput.empty()) {
+            parts << tr("%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts "
+                        "%4 better; which output a cause favours is the model's structure, so the data cannot "
+                        "tell them apart.")
+                         .arg(causeDisplayName(l.cause))
+                         .arg(l.heldOutLossRatio, 0, 'g', 2)
+                         .arg(l.pValue, 0, 'g', 2)
+                         .arg(l.worseOutput == "X_out"   ? tr("the outlet moisture")
+                              : l.worseOutput == "T_out" ? tr("the outlet temperature")
+                              : l.worseOutput == "X_hdt" ? tr("the tube-outlet moisture")
+                                                         : tr("the tube-outlet temperature"));
+            continue;
+        }
         parts << (l.ruledOut
                       ? tr("Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).")
                       : tr("%1 fits these data about as well (held-out error %2 times, p = %3): the data "

@@ -101,6 +101,24 @@ private Q_SLOTS:
         QVERIFY2(p > 0.05, qPrintable(QString::number(p)));
     }
 
+    void aLookAlikeThatPredictsOneOutputBetterStaysInTheGroup() {
+        // The named cause removes a large wave from the moisture (slot 0) and leaves a smaller one
+        // in the temperature (slot 1) that its look-alike removes: overall the named cause is
+        // better, on the temperature it is worse.
+        auto [otherX, namedX] = heldOutPair(1.0, 3.0, 0.0, 7); // look-alike leaves 3, named 0
+        auto [namedT, otherT] = heldOutPair(1.0, 1.0, 0.0, 8); // named leaves 1, look-alike 0
+        HeldOut other = otherX, named = namedX;
+        for (std::size_t b = 0; b < other.channels.size(); ++b) {
+            other.channels[b][0] = otherX.channels[b][kChannel];
+            named.channels[b][0] = namedX.channels[b][kChannel];
+            other.channels[b][kChannel] = otherT.channels[b][kChannel];
+            named.channels[b][kChannel] = namedT.channels[b][kChannel];
+        }
+        QCOMPARE(QString::fromStdString(outputPredictedWorse(other, named, 0.05)), QStringLiteral("T_out"));
+        // Better on both: nothing held against it.
+        QCOMPARE(QString::fromStdString(outputPredictedWorse(otherX, namedX, 0.05)), QString());
+    }
+
     void aGaugeOffsetReadsTheSameEarlyAndLate() {
         // Fitted at 0.3: the error left is noise; both halves estimate 0.3 within their error.
         const auto c = constancyWithinBatch(offsetStack([](double) { return 0.0; }, 3), {}, 0, 0.3, 0);
