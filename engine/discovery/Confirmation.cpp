@@ -70,6 +70,7 @@ Expected<Confirmation> confirmCandidate(const ConfirmationInput& in) {
     f.fastPartCounted = explained < options.minExplainedFraction;
     f.gain = gain;
     f.perPart = judged->consistency.parts;
+    f.actsOn = judged->actsOn;
     f.consistent = judged->consistency.consistent;
     f.transferChecked = judged->transfer.checked;
     f.transferReduction = judged->transfer.reduction;
@@ -172,7 +173,7 @@ Status addLookAlikes(const Problem& pr, Finding& f, const std::vector<Param>& re
         if (!*fitted) {
             continue; // its fit failed: no evidence either way
         }
-        auto l = compareLookAlike(pr, other, **fitted, namedHeld, pr.options);
+        auto l = compareLookAlike(pr, other, **fitted, f.actsOn, namedHeld, pr.options);
         if (!l) {
             return l.error();
         }

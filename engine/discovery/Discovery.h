@@ -8,6 +8,7 @@
 #include "monitoring/Monitor.h"
 #include "properties/Parameters.h"
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -240,6 +241,9 @@ struct Finding {
     std::string group; ///< "" when the cause stands alone; else the group's name
     std::vector<LookAlike> lookAlikes;
     std::string tellApart; ///< the measurement that would tell the group's members apart
+    /// The measured channels (X_out, T_out, X_hdt, T_hdt) its own effect moves beyond the
+    /// practical floors; a look-alike is compared with it on those (not stored in files).
+    std::array<bool, 4> actsOn{};
     /// Judged against a reference period: the cause's parameter fitted there (its normal value)
     /// and the interval a period's value normally falls in (its error and the spread between the
     /// reference's parts), so that the finding is a change, not a level.

@@ -259,6 +259,7 @@ struct Specificity {
     std::string code, why;
     Consistency consistency;
     Constancy constancy; ///< the causes a batch does not change only (constantWithinBatch)
+    std::array<bool, 4> actsOn{}; ///< the measured channels its own effect moves beyond the floors
     Transfer transfer;
 };
 Expected<Specificity> judgeSpecificity(const SpecificityInput& in);
@@ -424,11 +425,15 @@ void conclude(const Problem& pr, const ParameterSet& extended, const std::vector
               DiscoveryResult& result);
 /// The first measured output on which @p named (the named cause's held-out part) is significantly
 /// worse than @p other (a look-alike's, fitted in its place) at level @p alpha; "" when none.
-std::string outputPredictedWorse(const HeldOut& other, const HeldOut& named, double alpha);
+/// Only the channels @p namedActsOn counts (the named cause's own effect moves them): a look-alike's
+/// gain on an output the named cause does not touch is not a different balance of one signature.
+std::string outputPredictedWorse(const HeldOut& other, const HeldOut& named, double alpha,
+                                 const std::array<bool, 4>& namedActsOn);
 /// A look-alike @p other fitted in the named cause's place (@p fitted), judged on the same held-out
 /// part: its loss ratio and the one-sided DM p that the named cause predicts better; ruled out
 /// when that p is small and the named cause is worse on no output (outputPredictedWorse).
 Expected<LookAlike> compareLookAlike(const Problem& pr, Param other, const ParameterSet& fitted,
+                                     const std::array<bool, 4>& namedActsOn,
                                      const HeldOut& namedHeld, const DiscoveryOptions& options);
 
 /// Look-alikes (FindingText.cpp): causes that leave much the same signature on outlet data.

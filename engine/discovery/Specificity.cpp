@@ -334,6 +334,7 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
         out.code = "below_floor";
         out.why = floor + ": not worth a maintenance order";
     }
+    out.actsOn = actsOn;
     out.consistency =
         consistencyAt(in.pr, in.atFit, in.nuisance, in.atCol, in.value, in.pr.options.consistencyTolerance);
     out.transfer = transferBetweenRegions(in.pr, in.atStart, in.atFit, in.nuisance, in.atCol, in.value);
@@ -434,14 +435,16 @@ Expected<std::optional<Finding>> inletScatterFinding(const Problem& pr, const Pa
     return std::optional<Finding>{f};
 }
 
-std::string outputPredictedWorse(const HeldOut& other, const HeldOut& named, double alpha) {
+std::string outputPredictedWorse(const HeldOut& other, const HeldOut& named, double alpha,
+                                 const std::array<bool, 4>& namedActsOn) {
     // A look-alike that wins on one output and loses on another is a different balance of the
     // same signature (the model's own structure decides which output it favours), not a worse
     // explanation: the named cause must not be significantly worse on any measured output.
     const auto changes = channelChanges(other, named);
     for (int c = 0; c < 4; ++c) {
         const auto& ch = changes[static_cast<std::size_t>(c)];
-        if (ch.measured && ch.mseAfter > ch.mseBefore && ch.pWorse < alpha) {
+        if (namedActsOn[static_cast<std::size_t>(c)] && ch.measured && ch.mseAfter > ch.mseBefore &&
+            ch.pWorse < alpha) {
             return kChannelName[c];
         }
     }
@@ -449,6 +452,7 @@ std::string outputPredictedWorse(const HeldOut& other, const HeldOut& named, dou
 }
 
 Expected<LookAlike> compareLookAlike(const Problem& pr, Param other, const ParameterSet& fitted,
+                                     const std::array<bool, 4>& namedActsOn,
                                      const HeldOut& namedHeld, const DiscoveryOptions& options) {
     auto otherHeld = heldOut(pr, fitted);
     if (!otherHeld) {
@@ -461,7 +465,7 @@ Expected<LookAlike> compareLookAlike(const Problem& pr, Param other, const Param
     const double mine = meanOf(namedHeld.loss);
     l.heldOutLossRatio = mine > 0 ? meanOf(otherHeld->loss) / mine : 1.0;
     l.pValue = heldOutPValue(*otherHeld, namedHeld);
-    l.worseOutput = outputPredictedWorse(*otherHeld, namedHeld, options.gainAlpha);
+    l.worseOutput = outputPredictedWorse(*otherHeld, namedHeld, options.gainAlpha, namedActsOn);
     l.ruledOut = l.pValue < options.gainAlpha && (l.worseOutput.empty() || !options.lookAlikeWorseOnNoOutput);
     return l;
 }
