@@ -156,8 +156,8 @@ Constancy constancyWithinBatch(const Stack& atFit, const std::vector<int>& nuisa
     }
     out.checked = true;
     const double difference = std::abs(out.late.value - out.early.value);
-    // Significant and large: a real offset's halves differ by the model's structure at most,
-    // which is a small share of it on both plants (docs/reference-period.md).
+    // Significant and large, both: a long record makes any difference the model's structure
+    // leaves significant, and a short one's noise can make a half stray by half the value.
     out.constant = !(difference > 3 * std::hypot(out.early.se, out.late.se) && difference > 0.5 * std::abs(pooled));
     return out;
 }
@@ -439,7 +439,8 @@ std::string outputPredictedWorse(const HeldOut& other, const HeldOut& named, dou
                                  const std::array<bool, 4>& namedActsOn) {
     // A look-alike that wins on one output and loses on another is a different balance of the
     // same signature (the model's own structure decides which output it favours), not a worse
-    // explanation: the named cause must not be significantly worse on any measured output.
+    // explanation: the named cause must not be significantly worse on any measured output it
+    // acts on.
     const auto changes = channelChanges(other, named);
     for (int c = 0; c < 4; ++c) {
         const auto& ch = changes[static_cast<std::size_t>(c)];
