@@ -198,7 +198,7 @@ struct LookAlike {
     double value = 0;
     double heldOutLossRatio = 1; ///< its held-out weighted squared error over the named cause's
     double pValue = 1;           ///< one-sided Diebold-Mariano that the named cause predicts better
-    bool ruledOut = false; ///< pValue below DiscoveryOptions::gainAlpha and no worseOutput
+    bool ruledOut = false;       ///< pValue below DiscoveryOptions::gainAlpha and no worseOutput
     /// Judged by the outlet channels' timing instead (a meter lag against a transport time): the
     /// delay the moisture and the temperature each ask for alone; pValue is then the one-sided
     /// held-out p that the later channel is later. Ruled out when the moisture is later (only a

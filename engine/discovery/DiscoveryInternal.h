@@ -258,7 +258,7 @@ struct SpecificityInput {
 struct Specificity {
     std::string code, why;
     Consistency consistency;
-    Constancy constancy; ///< the causes a batch does not change only (constantWithinBatch)
+    Constancy constancy;          ///< the causes a batch does not change only (constantWithinBatch)
     std::array<bool, 4> actsOn{}; ///< the measured channels its own effect moves beyond the floors
     Transfer transfer;
 };
@@ -433,8 +433,8 @@ std::string outputPredictedWorse(const HeldOut& other, const HeldOut& named, dou
 /// part: its loss ratio and the one-sided DM p that the named cause predicts better; ruled out
 /// when that p is small and the named cause is worse on no output (outputPredictedWorse).
 Expected<LookAlike> compareLookAlike(const Problem& pr, Param other, const ParameterSet& fitted,
-                                     const std::array<bool, 4>& namedActsOn,
-                                     const HeldOut& namedHeld, const DiscoveryOptions& options);
+                                     const std::array<bool, 4>& namedActsOn, const HeldOut& namedHeld,
+                                     const DiscoveryOptions& options);
 
 /// Look-alikes (FindingText.cpp): causes that leave much the same signature on outlet data.
 struct LookAlikeGroup {

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace drytwin::discovery::detail {
 
@@ -69,6 +70,28 @@ double partVariance(const Stack& st, const Eigen::VectorXd& u, const std::vector
     return hacVarianceOfSum(series, false);
 }
 
+/// The cause's estimate on the entries of part @p which alone (one Gauss-Newton step from the
+/// pooled fit @p pooled, its score column @p sc and score contributions @p u), with its HAC
+/// standard error; none where the part holds no information about it.
+std::optional<PartEstimate> estimateOnPart(const Stack& st, const Eigen::VectorXd& sc,
+                                           const Eigen::VectorXd& u, const std::vector<int>& part, int which,
+                                           double pooled) {
+    double info = 0, score = 0;
+    for (std::size_t i = 0; i < part.size(); ++i) {
+        if (part[i] == which) {
+            info += sc(static_cast<Eigen::Index>(i)) * sc(static_cast<Eigen::Index>(i));
+            score += u(static_cast<Eigen::Index>(i));
+        }
+    }
+    if (!(info > 0)) {
+        return std::nullopt;
+    }
+    PartEstimate e;
+    e.value = pooled + score / info;
+    e.se = std::sqrt(std::max(0.0, partVariance(st, u, part, which))) / info;
+    return e;
+}
+
 } // namespace
 
 Consistency consistencyAt(const Problem& pr, const Stack& atFit, const std::vector<int>& nuisance, int cand,
@@ -80,20 +103,12 @@ Consistency consistencyAt(const Problem& pr, const Stack& atFit, const std::vect
     const Eigen::VectorXd u = sc.cwiseProduct(atFit.r);
     int strays = 0, informed = 0;
     for (int p = 0; p < static_cast<int>(names.size()); ++p) {
-        double info = 0, score = 0;
-        for (std::size_t i = 0; i < part.size(); ++i) {
-            if (part[i] == p) {
-                info += sc(static_cast<Eigen::Index>(i)) * sc(static_cast<Eigen::Index>(i));
-                score += u(static_cast<Eigen::Index>(i));
-            }
-        }
-        if (!(info > 0)) {
+        auto estimate = estimateOnPart(atFit, sc, u, part, p, pooled);
+        if (!estimate) {
             continue;
         }
-        PartEstimate e;
+        PartEstimate& e = *estimate;
         e.part = names[static_cast<std::size_t>(p)];
-        e.value = pooled + score / info; // one Gauss-Newton step from the pooled fit, this part alone
-        e.se = std::sqrt(std::max(0.0, partVariance(atFit, u, part, p))) / info;
         out.parts.push_back(e);
         ++informed;
         const bool opposite = e.value * pooled < 0 && std::abs(e.value) > 1.96 * e.se;
@@ -137,28 +152,21 @@ Constancy constancyWithinBatch(const Stack& atFit, const std::vector<int>& nuisa
     }
     const Eigen::VectorXd sc = projectedColumn(atFit, nuisance, cand);
     const Eigen::VectorXd u = sc.cwiseProduct(atFit.r);
-    PartEstimate* estimates[2] = {&out.early, &out.late};
-    for (int h = 0; h < 2; ++h) {
-        double info = 0, score = 0;
-        for (std::size_t i = 0; i < half.size(); ++i) {
-            if (half[i] == h) {
-                info += sc(static_cast<Eigen::Index>(i)) * sc(static_cast<Eigen::Index>(i));
-                score += u(static_cast<Eigen::Index>(i));
-            }
-        }
-        if (!(info > 0)) {
-            return out;
-        }
-        PartEstimate& e = *estimates[h];
-        e.part = h == 0 ? "first half" : "second half";
-        e.value = pooled + score / info; // one Gauss-Newton step from the pooled fit, this half alone
-        e.se = std::sqrt(std::max(0.0, partVariance(atFit, u, half, h))) / info;
+    auto early = estimateOnPart(atFit, sc, u, half, 0, pooled);
+    auto late = estimateOnPart(atFit, sc, u, half, 1, pooled);
+    if (!early || !late) {
+        return out;
     }
+    out.early = *early;
+    out.late = *late;
+    out.early.part = "first half";
+    out.late.part = "second half";
     out.checked = true;
     const double difference = std::abs(out.late.value - out.early.value);
     // Significant and large, both: a long record makes any difference the model's structure
     // leaves significant, and a short one's noise can make a half stray by half the value.
-    out.constant = !(difference > 3 * std::hypot(out.early.se, out.late.se) && difference > 0.5 * std::abs(pooled));
+    out.constant =
+        !(difference > 3 * std::hypot(out.early.se, out.late.se) && difference > 0.5 * std::abs(pooled));
     return out;
 }
 
@@ -343,8 +351,8 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
         out.why = inconsistencyReason(out.consistency, in.parameter, in.value);
     }
     if (in.pr.options.checkConstancyWithinBatch && constantWithinBatch(in.parameter)) {
-        out.constancy = constancyWithinBatch(in.atFit, in.nuisance, in.atCol, in.value,
-                                             in.fitParameters[Param::t_onset]);
+        out.constancy =
+            constancyWithinBatch(in.atFit, in.nuisance, in.atCol, in.value, in.fitParameters[Param::t_onset]);
         if (out.code.empty() && out.constancy.checked && !out.constancy.constant) {
             const std::string unit(properties::info(in.parameter).unit);
             out.code = "not_constant";
@@ -453,8 +461,8 @@ std::string outputPredictedWorse(const HeldOut& other, const HeldOut& named, dou
 }
 
 Expected<LookAlike> compareLookAlike(const Problem& pr, Param other, const ParameterSet& fitted,
-                                     const std::array<bool, 4>& namedActsOn,
-                                     const HeldOut& namedHeld, const DiscoveryOptions& options) {
+                                     const std::array<bool, 4>& namedActsOn, const HeldOut& namedHeld,
+                                     const DiscoveryOptions& options) {
     auto otherHeld = heldOut(pr, fitted);
     if (!otherHeld) {
         return otherHeld.error();

@@ -11,7 +11,6 @@ namespace drytwin::monitoring {
 
 namespace {
 
-
 bool allFinite(const Eigen::Ref<const Eigen::VectorXd>& row) {
     for (Eigen::Index i = 0; i < row.size(); ++i) {
         if (!std::isfinite(row[i])) {

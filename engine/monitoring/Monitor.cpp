@@ -10,7 +10,6 @@ namespace drytwin::monitoring {
 
 namespace {
 
-
 /// NotEnoughData with its arguments {what, count}.
 Error notEnoughData(const std::string& place, const std::string& reason, const std::string& what,
                     std::size_t count) {

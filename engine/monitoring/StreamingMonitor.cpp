@@ -5,10 +5,7 @@
 
 namespace drytwin::monitoring {
 
-namespace {
-
-
-} // namespace
+namespace {} // namespace
 
 Expected<StreamingMonitor> StreamingMonitor::create(const Monitor& monitor,
                                                     const std::vector<double>& runDurationsS) {

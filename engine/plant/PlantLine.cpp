@@ -109,9 +109,10 @@ PlantDisturbances randomDisturbances(const PlantOptions& o, std::mt19937_64& rng
             xInBase + 0.008 * std::sin(2 * M_PI * t / 1800 + xInPhase) + xInWalk.next(rng), 0.20, 0.24);
         xIn[k] = xWb / (1 - xWb);
         tIn[k] = units::kKelvinOffset + 25 + tInNoise.next(rng);
-        tAmb[k] = units::kKelvinOffset + std::clamp(ambBase + 3.0 * std::sin(2 * M_PI * t / 86400 * 4 + dayPhase) +
-                                           tAmbNoise.next(rng),
-                                       10.0, 35.0);
+        tAmb[k] =
+            units::kKelvinOffset +
+            std::clamp(ambBase + 3.0 * std::sin(2 * M_PI * t / 86400 * 4 + dayPhase) + tAmbNoise.next(rng),
+                       10.0, 35.0);
         rh[k] = std::clamp(rhBase + 0.08 * std::sin(2 * M_PI * t / 7200 + dayPhase) + rhNoise.next(rng), 0.2,
                            0.8);
         air[k] = 16.0 + airNoise.next(rng);

@@ -6,8 +6,7 @@
 
 namespace drytwin::residual {
 
-namespace {
-} // namespace
+namespace {} // namespace
 
 std::string InputDrivenCorrection::toJson() const {
     nlohmann::json j;

@@ -125,7 +125,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Gain, split, maeMoistureBefore, 
                                                 hybridMaeTemperatureBefore, hybridMaeTemperatureAfter)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(PartEstimate, part, value, se)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(LookAlike, cause, parameter, value, heldOutLossRatio, pValue,
-                                                ruledOut, byChannels, moistureDelayS, temperatureDelayS, worseOutput)
+                                                ruledOut, byChannels, moistureDelayS, temperatureDelayS,
+                                                worseOutput)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Finding, cause, parameter, value, ci95Low, ci95High,
                                                 explainedFraction, explainedFractionFast, fastPartCounted,
                                                 output, biasBefore, trendPerHourBefore, evidence, gain,
