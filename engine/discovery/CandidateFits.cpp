@@ -235,10 +235,10 @@ Expected<SelectionRound::Judged> SelectionRound::judgeFitted(const Candidate& ca
     if (!conf) {
         return conf.error();
     }
-    // Its estimate strays part by part (or, an offset, from the first half of the batch to the
-    // second) and no onset was found on its tangent: an effect
-    // that starts mid-batch and is far from linear in its parameter looks so. Its own effect at
-    // the fit tells where it starts (a lag's was scanned before the held-out part judged it).
+    // Its estimate strays part by part (or, for a cause a batch does not change, from the first
+    // half of the batches to the second) and no onset was found on its tangent: an effect that
+    // starts mid-batch and is far from linear in its parameter looks so. Its own effect at the
+    // fit tells where it starts (a lag's was scanned before the held-out part judged it).
     const bool strays = conf->code == "inconsistent" || conf->code == "not_constant";
     if (strays && m_options.searchOnset && m_model.parameters[Param::t_onset] == 0 &&
         !withOnset->onset.found && cand.parameter != Param::dtau_conv && !isLag(cand.parameter)) {

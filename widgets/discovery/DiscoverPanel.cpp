@@ -338,8 +338,9 @@ QString rejectionText(const std::string& code) {
         return DiscoverPanel::tr("its size is not consistent across batches or operating regions");
     }
     if (code == "not_constant") {
-        return DiscoverPanel::tr("it does not change within a batch (an offset, the tube's wall or gas phase), "
-                                 "but this error grows or shrinks within the batch (fouling, a drifting reading)");
+        return DiscoverPanel::tr(
+            "it does not change within a batch (an offset, the tube's wall or gas phase), "
+            "but this error grows or shrinks within the batch (fouling, a drifting reading)");
     }
     if (code == "within_normal_spread") {
         return DiscoverPanel::tr("its value lies within the reference period's normal range: not a change");
@@ -500,16 +501,17 @@ QString DiscoverPanel::specificityText(const discovery::Finding& f) {
             continue;
         }
         if (!l.ruledOut && !l.worseOutput.empty()) {
-            parts << tr("%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts "
-                        "%4 better; which output a cause favours is the model's structure, so the data cannot "
-                        "tell them apart.")
-                         .arg(causeDisplayName(l.cause))
-                         .arg(l.heldOutLossRatio, 0, 'g', 2)
-                         .arg(l.pValue, 0, 'g', 2)
-                         .arg(l.worseOutput == "X_out"   ? tr("the outlet moisture")
-                              : l.worseOutput == "T_out" ? tr("the outlet temperature")
-                              : l.worseOutput == "X_hdt" ? tr("the tube-outlet moisture")
-                                                         : tr("the tube-outlet temperature"));
+            parts
+                << tr("%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts "
+                      "%4 better; which output a cause favours is the model's structure, so the data cannot "
+                      "tell them apart.")
+                       .arg(causeDisplayName(l.cause))
+                       .arg(l.heldOutLossRatio, 0, 'g', 2)
+                       .arg(l.pValue, 0, 'g', 2)
+                       .arg(l.worseOutput == "X_out"   ? tr("the outlet moisture")
+                            : l.worseOutput == "T_out" ? tr("the outlet temperature")
+                            : l.worseOutput == "X_hdt" ? tr("the tube-outlet moisture")
+                                                       : tr("the tube-outlet temperature"));
             continue;
         }
         parts << (l.ruledOut

@@ -115,7 +115,8 @@ private Q_SLOTS:
             named.channels[b][kChannel] = namedT.channels[b][kChannel];
         }
         const std::array<bool, 4> both{true, true, false, false}, moistureOnly{true, false, false, false};
-        QCOMPARE(QString::fromStdString(outputPredictedWorse(other, named, 0.05, both)), QStringLiteral("T_out"));
+        QCOMPARE(QString::fromStdString(outputPredictedWorse(other, named, 0.05, both)),
+                 QStringLiteral("T_out"));
         // Better on both: nothing held against it.
         QCOMPARE(QString::fromStdString(outputPredictedWorse(otherX, namedX, 0.05, both)), QString());
         // A named cause that does not act on the temperature (an outlet meter's offset) is not
@@ -142,7 +143,8 @@ private Q_SLOTS:
         QVERIFY(!c.constant);
         QVERIFY(c.late.value > c.early.value + 0.15);
         // Its mean over each half, added to the pooled 0.3 (within 0.02 of the noise).
-        QVERIFY(std::abs(c.early.value - (0.3 + 0.6 * (1 - 3000.0 / 1500 * (1 - std::exp(-0.5))) - 0.3)) < 0.02);
+        QVERIFY(std::abs(c.early.value - (0.3 + 0.6 * (1 - 3000.0 / 1500 * (1 - std::exp(-0.5))) - 0.3)) <
+                0.02);
     }
 
     void anOffsetFromItsOnsetIsJudgedFromItsOnset() {
@@ -150,7 +152,8 @@ private Q_SLOTS:
         // is noise, so from the onset on it is constant; judged from the batch start (no onset
         // found yet) the first half sees none of it, which is what sends discovery to look for an
         // onset (CandidateFits.cpp).
-        const auto fromOnset = constancyWithinBatch(offsetStack([](double) { return 0.0; }, 5), {}, 0, 0.4, 1500);
+        const auto fromOnset =
+            constancyWithinBatch(offsetStack([](double) { return 0.0; }, 5), {}, 0, 0.4, 1500);
         QVERIFY(fromOnset.checked);
         QVERIFY(fromOnset.constant);
         const auto step = [](double t) { return t < 1500 ? -0.2 : 0.2; }; // an offset of 0.2 pooled
