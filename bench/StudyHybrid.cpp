@@ -9,7 +9,7 @@
 //     (free run: never a measured output) on every row of another (3 x 4,000 s), beside the PBM and
 //     a ridge regression on lagged inputs and proxies (lags 0-300 s) fitted on the same rows.
 // Run: build/bench/study_hybrid [--part unseen|free-run] [--quick (the first 3 sets / 1 pair)]
-//      [--work DIR (default /tmp/drytwin-study-hybrid)]
+//      [--seed-base N (unseen: seeds N+1 … N+10, default 900)] [--work DIR (default /tmp/drytwin-study-hybrid)]
 // Writes Markdown tables to stdout, progress to stderr.
 #include "common/Units.h"
 #include "hybrid/Evaluation.h"
@@ -35,6 +35,9 @@ std::string workDir = "/tmp/drytwin-study-hybrid";
 /// --design-pair A:B: the free run on seeds kept for designing the method (700:701), never the
 /// judged ones.
 std::pair<unsigned, unsigned> designPair{0, 0};
+/// --seed-base N: the unseen part's ten data sets on seeds N+1 … N+10 instead of 901 … 910 (the
+/// same sizes, plants and mixes), for a judgement on seeds a change was not prompted by.
+unsigned seedBase = 900;
 
 struct DataSetSpec {
     std::string name;
@@ -101,7 +104,9 @@ double seconds(std::chrono::steady_clock::time_point t0) {
 
 int partUnseen(bool quick) {
     using K = plant::PlantKind;
-    // Seeds 901-910 were never looked at while the method was designed (issue #42).
+    // Seeds 901-910 were never looked at while the method was designed (issue #42); the realised
+    // reference blend and held-error decay (2026-11-27) were prompted by them, and are judged on
+    // --seed-base 960 (961-970).
     std::vector<DataSetSpec> sets{
         {"d901-demo-3x2000", 901, 3, 2000, K::Distributed, true},
         {"d902-demo-5x4000", 902, 5, 4000, K::Distributed, true},
@@ -114,6 +119,11 @@ int partUnseen(bool quick) {
         {"l909-null-4x3000", 909, 4, 3000, K::Lumped, false},
         {"l910-demo-10x6300", 910, 10, 6300, K::Lumped, true},
     };
+    for (auto& s : sets) {
+        const unsigned seed = s.seed - 900 + seedBase;
+        s.name = s.name.substr(0, 1) + std::to_string(seed) + s.name.substr(4);
+        s.seed = seed;
+    }
     if (quick) {
         sets.resize(3);
     }
@@ -474,10 +484,12 @@ int main(int argc, char** argv) {
             quick = true;
         } else if (!std::strcmp(argv[i], "--design-pair") && i + 1 < argc) {
             std::sscanf(argv[++i], "%u:%u", &designPair.first, &designPair.second);
+        } else if (!std::strcmp(argv[i], "--seed-base") && i + 1 < argc) {
+            seedBase = static_cast<unsigned>(std::strtoul(argv[++i], nullptr, 10));
         } else if (!std::strcmp(argv[i], "--work") && i + 1 < argc) {
             workDir = argv[++i];
         } else {
-            std::fprintf(stderr, "usage: study_hybrid [--part unseen|free-run] [--quick] [--work DIR]\n");
+            std::fprintf(stderr, "usage: study_hybrid [--part unseen|free-run] [--quick] [--seed-base N] [--work DIR]\n");
             return 2;
         }
     }

@@ -109,10 +109,12 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
         return;
     }
     const std::size_t count = v.rows.size();
+    const Eigen::Vector2d trainedBlend = referenceChangeAt(static_cast<int>(horizon));
     for (int j = 0; j < kOutputs; ++j) {
         auto& residual = j == 0 ? p.residualXPct : p.residualTC;
         const auto& learned = j == 0 ? learnedX : learnedT;
-        std::vector<double> reference(count), measured(count, kNaN), combined;
+        // reference = held − s_H · pbmChange: the last error held, less s_H of the PBM's change since.
+        std::vector<double> reference(count), held(count, kNaN), pbmChange(count, kNaN), measured(count, kNaN);
         for (std::size_t i = 0; i < count; ++i) {
             const std::size_t k = v.rows.begin + i;
             reference[i] = residual[i] - learned[i];
@@ -120,9 +122,53 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
             if (observedResidual(*v.batch, *v.pbm, k, e(0), e(1))) {
                 measured[i] = e(j);
             }
+            if (k >= horizon && std::isfinite(reference[i]) &&
+                observedResidual(*v.batch, *v.pbm, k - horizon, e(0), e(1))) {
+                held[i] = e(j);
+                const std::size_t origin = k - horizon;
+                pbmChange[i] =
+                    j == 0 ? units::dryToWetPct(v.pbm->xOutDb[k]) - units::dryToWetPct(v.pbm->xOutDb[origin])
+                           : v.pbm->tOutK[k] - v.pbm->tOutK[origin];
+            }
         }
-        applyRealisedWeights(reference, learned, measured, horizon, m_options.realisedWeightHalfLifeSteps,
-                             m_options.realisedWeightPriorRows, combined);
+        // Each step adds w · correction to the forecast so far, w from the forecasts already
+        // realised (pulled towards w₀); rows without a finite result keep what they had.
+        const auto weighOnTop = [&](std::vector<double>& forecast, const std::vector<double>& correction,
+                                    double priorWeight) {
+            std::vector<double> combined;
+            applyRealisedWeights(forecast, correction, measured, horizon, m_options.realisedWeightHalfLifeSteps,
+                                 m_options.realisedWeightPriorRows, combined, nullptr, priorWeight,
+                                 m_options.realisedWeightByAbsoluteError);
+            for (std::size_t i = 0; i < count; ++i) {
+                if (std::isfinite(combined[i]) && std::isfinite(forecast[i])) {
+                    forecast[i] = combined[i];
+                }
+            }
+        };
+        if (m_options.realisedReferenceBlend) {
+            // 1. s: the held error, less s of the PBM's change (s = 1: the last measurement held).
+            std::vector<double> minusChange(count);
+            for (std::size_t i = 0; i < count; ++i) {
+                minusChange[i] = -pbmChange[i];
+                if (std::isfinite(held[i])) {
+                    reference[i] = held[i];
+                }
+            }
+            weighOnTop(reference, minusChange, trainedBlend(j));
+        }
+        // 2. The learnt correction on top.
+        std::vector<double> combined = reference;
+        weighOnTop(combined, learned, 1.0);
+        if (m_options.realisedHeldErrorDecay) {
+            // 3. How much of the held error to let go: all of it is the free-run hybrid's own
+            // forecast (with the learnt correction), right where the error decorrelates within
+            // the horizon or the last measurement is mostly transmitter noise.
+            std::vector<double> minusHeld(count);
+            for (std::size_t i = 0; i < count; ++i) {
+                minusHeld[i] = -held[i];
+            }
+            weighOnTop(combined, minusHeld, 0.0);
+        }
         for (std::size_t i = 0; i < count; ++i) {
             const std::size_t k = v.rows.begin + i;
             if (!std::isfinite(combined[i])) {

@@ -103,6 +103,23 @@ struct ResidualOptions {
     /// that differs throughout, not a passing moment.
     double realisedWeightHalfLifeSteps = 1800;
     double realisedWeightPriorRows = 30;
+    /// Velocity form: the blend of the two references (s_H: 1 holds the last measurement, 0 the
+    /// PBM with its last error) is weighted the same way, from how each did on the forecasts
+    /// already realised, pulled towards the trained s_H; the learnt correction's weight is then
+    /// taken on top of that blend. Which reference is better is a property of the data set (a
+    /// lumped line, a lagging meter, a faulty transmitter), not only of the training part (issue
+    /// #42: the trained s_H left PGRL-CC 2–8 % behind the better reference at some horizons on
+    /// four of ten unseen data sets). false: the trained s_H alone.
+    bool realisedReferenceBlend = true;
+    /// Velocity form: the share of the held error let go, weighted the same way (w₀ = 0: the error
+    /// held as trained). Letting all of it go is the free-run hybrid's forecast (the PBM plus the
+    /// input-driven correction): better far ahead where the error decorrelates within the horizon,
+    /// and where the last measured error is mostly the transmitter's noise (issue #42: on seven of
+    /// ten data sets the free-run hybrid beat holding the error beyond 30–60 steps).
+    bool realisedHeldErrorDecay = true;
+    /// The realised weights minimise the forecasts' discounted absolute error (the measure they
+    /// are judged by, robust to a transmitter's spike) instead of their squared error.
+    bool realisedWeightByAbsoluteError = true;
     /// Inputs z are clipped to their training range widened by this share of its span on each
     /// side before the dictionary lifts them: an input the line never showed, or a spike, cannot
     /// drive a polynomial far outside what it learnt (issue #42).

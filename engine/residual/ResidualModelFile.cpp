@@ -43,6 +43,9 @@ std::string ResidualModel::toJson() const {
                     {"input_driven", o.inputDriven},
                     {"realised_weight_half_life_steps", o.realisedWeightHalfLifeSteps},
                     {"realised_weight_prior_rows", o.realisedWeightPriorRows},
+                    {"realised_reference_blend", o.realisedReferenceBlend},
+                    {"realised_weight_by_absolute_error", o.realisedWeightByAbsoluteError},
+                    {"realised_held_error_decay", o.realisedHeldErrorDecay},
                     {"input_range_margin", o.inputRangeMargin},
                     {"correction_folds_by_batch", o.correctionFoldsByBatch}};
     j["dictionary"] = {
@@ -143,6 +146,10 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
         o.inputDriven = jo.value("input_driven", false);
         o.realisedWeightHalfLifeSteps = jo.value("realised_weight_half_life_steps", 0.0);
         o.realisedWeightPriorRows = jo.value("realised_weight_prior_rows", 0.0);
+        // Files from before 2026-11-27: the trained s_H alone.
+        o.realisedReferenceBlend = jo.value("realised_reference_blend", false);
+        o.realisedWeightByAbsoluteError = jo.value("realised_weight_by_absolute_error", false);
+        o.realisedHeldErrorDecay = jo.value("realised_held_error_decay", false);
         o.inputRangeMargin = jo.value("input_range_margin", 0.0);
         o.correctionFoldsByBatch = jo.value("correction_folds_by_batch", false);
         if (auto st = o.validate(); !st) {

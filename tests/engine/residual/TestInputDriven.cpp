@@ -96,6 +96,35 @@ private slots:
         QCOMPARE(right.weight(), 1.0);
     }
 
+    void realisedWeightByAbsoluteErrorMatchesHandComputation() {
+        // No forgetting (half-life 0), no prior: w minimises Σ |t − w c| over w = 0, 0.05, …, 1.
+        // Rows (t, c): (1, 1), (1, 1), (0, 1) and a spike (−40, 1). Least squares: Σ t c / Σ c² =
+        // −38 / 4, clipped to 0: the spike alone switches the correction off.
+        RealisedWeight l1(0.0, 0.0, 1.0, true), l2(0.0, 0.0);
+        for (const auto& [t, c] : std::vector<std::pair<double, double>>{{1, 1}, {1, 1}, {0, 1}, {-40, 1}}) {
+            l1.add(t, c);
+            l2.add(t, c);
+        }
+        QCOMPARE(l2.weight(), 0.0);
+        // Σ |t − w| = 2(1 − w) + w + 40 + w = 42 for every w in [0, 1]: a tie, which goes to w₀ = 1.
+        QCOMPARE(l1.weight(), 1.0);
+        RealisedWeight median(0.0, 0.0, 0.0, true); // w₀ = 0: ties go to 0
+        for (const auto& [t, c] : std::vector<std::pair<double, double>>{{0.3, 1}, {0.3, 1}, {0.9, 1}}) {
+            median.add(t, c);
+        }
+        // The weighted median of t/c on the grid: 0.3.
+        QVERIFY(std::abs(median.weight() - 0.3) < 1e-12);
+        // The prior pulls towards w₀: 2 rows' worth of mean|c| = 1 at w₀ = 1 against three rows
+        // at 0.3: cost(w) = 2|0.3 − w| + |0.9 − w| + 2|1 − w|, smallest at w = 0.9 (1.4; 1.5 at 1).
+        RealisedWeight pulled(0.0, 2.0, 1.0, true);
+        for (const auto& [t, c] : std::vector<std::pair<double, double>>{{0.3, 1}, {0.3, 1}, {0.9, 1}}) {
+            pulled.add(t, c);
+        }
+        QVERIFY(std::abs(pulled.weight() - 0.9) < 1e-12);
+        // Nothing realised: the trained weight w₀.
+        QCOMPARE(RealisedWeight(600, 30, 0.4, true).weight(), 0.4);
+    }
+
     void realisedWeightsUseOnlyTargetsMeasuredByTheOrigin() {
         const std::size_t n = 400, h = 30;
         std::vector<double> reference(n, 0.0), correction(n), measured(n), first, second;
@@ -230,6 +259,53 @@ private slots:
         QVERIFY(at != std::string::npos);
         text.replace(at, basisName(chosen->options().basis).size(), "chosen_by_validation");
         QVERIFY(!InputDrivenCorrection::fromJson(text).ok());
+    }
+
+    void forecastsAreNoWorseThanTheTrivialOnesOnAnotherSeed() {
+        // Issue #42: on a data set it was not trained on, PGRL-CC's H-step moisture forecast is no
+        // worse than the better of holding the last measurement and the PBM with its last error
+        // held; far ahead (where the error decorrelates) it lets the held error go and is better
+        // than both, and better than with the trained s_H and the held error alone.
+        const auto& train = distributed(4201);
+        const auto& judged = distributed(4202);
+        ResidualOptions realised, trainedOnly;
+        trainedOnly.realisedReferenceBlend = false;
+        trainedOnly.realisedHeldErrorDecay = false;
+        trainedOnly.realisedWeightByAbsoluteError = false;
+        auto a = ResidualModel::train(train.views(), realised);
+        auto b = ResidualModel::train(train.views(), trainedOnly);
+        QVERIFY2(a.ok(), a ? "" : a.error().message().c_str());
+        QVERIFY(b.ok());
+        for (int h : {1, 90}) {
+            double model = 0, old = 0, persistence = 0, pbmHeld = 0;
+            int n = 0;
+            for (const auto& v : judged.views()) {
+                const auto pa = a->predictHorizons(v, {h}).front(), pb = b->predictHorizons(v, {h}).front();
+                const auto wet = [&](std::size_t k) { return units::dryToWetPct(v.batch->xOutDb[k]); };
+                const auto pbm = [&](std::size_t k) { return units::dryToWetPct(v.pbm->xOutDb[k]); };
+                for (std::size_t k = static_cast<std::size_t>(h); k < v.rows.size(); ++k) {
+                    const std::size_t o = k - static_cast<std::size_t>(h);
+                    const double y = wet(k), y0 = wet(o);
+                    if (!v.batch->keep[k] || !v.batch->keep[o] || !std::isfinite(y) || !std::isfinite(y0) ||
+                        !std::isfinite(pa.xOutPct[k]) || !std::isfinite(pb.xOutPct[k])) {
+                        continue;
+                    }
+                    model += std::abs(y - pa.xOutPct[k]);
+                    old += std::abs(y - pb.xOutPct[k]);
+                    persistence += std::abs(y - y0);
+                    pbmHeld += std::abs(y - (pbm(k) + y0 - pbm(o)));
+                    ++n;
+                }
+            }
+            QVERIFY(n > 5000);
+            const double better = std::min(persistence, pbmHeld);
+            qInfo("H = %d: skill %.3f (trained s_H and the held error alone: %.3f)", h, model / better, old / better);
+            QVERIFY2(model <= better, qPrintable(QString::number(model / better)));
+            if (h == 90) {
+                QVERIFY(model < 0.95 * better);
+                QVERIFY(model < old);
+            }
+        }
     }
 
     void residualModelsFreeRunIsThePbmPlusTheCorrection() {
