@@ -1,7 +1,7 @@
 // The right-hand sides the solver integrates, one per section: the drying tube with the
 // mechanism extensions' simple forms (Eqs. 9–12), the conveyor's top layer (Eqs. 13–14) and the
-// winnower (Eqs. 18–19), each run over the parcels two at a time where the target packs two
-// doubles. The rates themselves are physics/SectionRates.h's templates; this file says where each
+// winnower (Eqs. 18–19), each run over the parcels four or two at a time where the target packs
+// four (AVX2) or two doubles. The rates themselves are physics/SectionRates.h's templates; this file says where each
 // parcel is in the inputs and what it sees there. The hot loop of every simulation: it stays in
 // one translation unit with the templates it inlines (and physics/*/*.cpp keep -O3).
 
@@ -15,13 +15,17 @@
 namespace drytwin::physics::simulator {
 
 using properties::Pack2;
+using properties::Pack4;
 
 namespace {
 
-/// The parcels one evaluation of the rates works on: one (T = double) or two consecutive ones
-/// (T = Pack2, one per lane), with their solver states.
+/// Most lanes one evaluation packs (the per-lane scratch arrays' size).
+constexpr int kMaxLanes = 4;
+
+/// The parcels one evaluation of the rates works on: one (T = double), two (T = Pack2) or four
+/// (T = Pack4) consecutive ones, one per lane, with their solver states.
 template <class T> struct Lanes {
-    static constexpr int width = std::is_same_v<T, double> ? 1 : 2;
+    static constexpr int width = std::is_same_v<T, double> ? 1 : std::is_same_v<T, Pack2> ? 2 : 4;
     std::size_t parcel = 0; ///< the first lane's parcel
     const double* y = nullptr;
     int statesPerParcel = 2;
@@ -29,13 +33,18 @@ template <class T> struct Lanes {
     static T load(const double* v) {
         if constexpr (width == 1) {
             return v[0];
-        } else {
+        } else if constexpr (width == 2) {
             return T(v[0], v[1]);
+        } else {
+            return T(v[0], v[1], v[2], v[3]);
         }
     }
     /// State @p m of every lane.
     T state(int m) const {
-        const double v[2] = {y[m], width == 2 ? y[statesPerParcel + m] : 0.0};
+        double v[kMaxLanes] = {};
+        for (int lane = 0; lane < width; ++lane) {
+            v[lane] = y[lane * statesPerParcel + m];
+        }
         return load(v);
     }
     /// A per-parcel series (the winnower's entry mix) for every lane.
@@ -49,8 +58,11 @@ inline double laneOf(double v, int) {
 inline double laneOf(const Pack2& v, int lane) {
     return v[lane];
 }
+inline double laneOf(const Pack4& v, int lane) {
+    return v[lane];
+}
 
-/// Runs @p rates over a run of parcels, two at a time where the target has Pack2. The
+/// Runs @p rates over a run of parcels, four or two at a time where the target has Pack4 or Pack2. The
 /// parameters and switches are copied once per call: the rate stores cannot alias the copies,
 /// so the compiler may keep what all parcels share out of the loop. CVODES perturbs the
 /// parameters in place between calls, so the copy is fresh each time.
@@ -77,6 +89,11 @@ bool forParcels(const void* c, std::size_t first, std::size_t count, const doubl
         }
     };
     std::size_t k = 0;
+#if DRYTWIN_HAVE_PACK4
+    for (; k + 4 <= count; k += 4) {
+        store(rates(ctx, p, sw, Lanes<Pack4>{first + k, y + k * States, States}), k, 4);
+    }
+#endif
 #if DRYTWIN_HAVE_PACK2
     for (; k + 2 <= count; k += 2) {
         store(rates(ctx, p, sw, Lanes<Pack2>{first + k, y + k * States, States}), k, 2);
@@ -96,9 +113,9 @@ constexpr double kModelCriticalMoisture = 0.25;       // X_cr of the falling-rat
 
 /// The air around every lane's parcel, one input look-up per parcel for all series.
 template <class T> AmbientEnvironmentT<T> ambientAt(const SectionContext& x, const Lanes<T>& l, double s) {
-    double tAir[2] = {0, 0};
-    double rh[2] = {0, 0};
-    double xe[2] = {0, 0};
+    double tAir[kMaxLanes] = {};
+    double rh[kMaxLanes] = {};
+    double xe[kMaxLanes] = {};
     for (int lane = 0; lane < l.width; ++lane) {
         const SamplePoint where = x.locate(l.parcel + static_cast<std::size_t>(lane), s);
         tAir[lane] = where.of(x.in->tAmbK);
@@ -127,11 +144,11 @@ bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, con
             const double gasCoupling = p[Param::theta_gas];
             const double fouling = p[Param::theta_foul];
             const double falling = p[Param::theta_fall];
-            double gas[2] = {0, 0};
-            double hours[2] = {0, 0};      // since the batch started
-            double gasCooling[2] = {0, 0}; // K per kg/kg evaporated
-            double xEntry[2] = {0, 0};
-            double fallingLane[2] = {0, 0};
+            double gas[kMaxLanes] = {};
+            double hours[kMaxLanes] = {};      // since the batch started
+            double gasCooling[kMaxLanes] = {}; // K per kg/kg evaporated
+            double xEntry[kMaxLanes] = {};
+            double fallingLane[kMaxLanes] = {};
             const double onset = p[Param::t_onset];
             for (int lane = 0; lane < l.width; ++lane) {
                 const std::size_t parcel = l.parcel + static_cast<std::size_t>(lane);
@@ -192,7 +209,7 @@ bool conveyorEval(const void* c, double s, std::size_t first, std::size_t count,
                                  // parcels that entered before the batch started, as the tube's
                                  // mechanisms)
                                  const double onset = p[Param::t_onset];
-                                 double active[2] = {0, 0};
+                                 double active[kMaxLanes] = {};
                                  for (int lane = 0; lane < l.width; ++lane) {
                                      const std::size_t parcel = l.parcel + static_cast<std::size_t>(lane);
                                      active[lane] = onset <= 0 || (*x.entry)[parcel] + s - x.t0 >= onset;

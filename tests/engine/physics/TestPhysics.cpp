@@ -132,6 +132,56 @@ double maxAbsDiff(const std::vector<double>& a, const std::vector<double>& b) {
     return m;
 }
 
+#if DRYTWIN_HAVE_PACK2
+/// The largest relative difference between each lane of the rates of @p Pack (several parcels
+/// per call, libmvec exp/log) and the one-parcel rates, with and without the ablation switches,
+/// at parameters @p p.
+template <class Pack> double packedRatesWorstDifference(const ParameterSet& p) {
+    constexpr int lanes = Pack::SizeAtCompileTime;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> ux(0.05, 0.35);
+    std::uniform_real_distribution<double> ut(290.0, 400.0);
+    auto rel = [](double a, double b) { return std::abs(a - b) / std::max(1e-300, std::abs(b)); };
+    double worst = 0;
+    for (int sw = 0; sw < 2; ++sw) {
+        properties::ModelSwitches s;
+        s.clampWaterActivity = sw == 0;
+        s.latentHeatCorrection = sw == 0;
+        s.moistureDependentCp = sw == 0;
+        for (int k = 0; k < 200; ++k) {
+            Pack xp, tp, gas, tAir, rh, xMix, tMix;
+            for (int lane = 0; lane < lanes; ++lane) {
+                xp[lane] = ux(rng);
+                tp[lane] = ut(rng);
+                gas[lane] = ut(rng) + 100;
+                tAir[lane] = lane % 2 == 0 ? 295.0 : 301.0;
+                rh[lane] = lane % 2 == 0 ? 0.4 : 0.7;
+                xMix[lane] = 0.2 + 0.05 * lane;
+                tMix[lane] = 330.0 - 20.0 * lane;
+            }
+            TubeEnvironmentT<Pack> tubeP{gas, p[Param::w], Pack::Constant(70.0), 0.02, Pack::Constant(1.0)};
+            AmbientEnvironmentT<Pack> airP{tAir, rh, Pack::Constant(0.0), Pack::Zero(), false};
+            const auto tube = generic::tubeRates(xp, tp, tubeP, p, s);
+            const auto conv = generic::conveyorRates(xp, tp, airP, p, s);
+            const auto winn = generic::winnowerRates(xp, tp, 1.5, xMix, tMix, airP, p, s);
+            for (int lane = 0; lane < lanes; ++lane) {
+                const TubeEnvironment tube1{gas[lane], p[Param::w], 70.0, 0.02, 1.0};
+                const AmbientEnvironment air1{tAir[lane], rh[lane], 0.0};
+                const auto t1 = tubeRates(xp[lane], tp[lane], tube1, p, s);
+                const auto c1 = conveyorRates(xp[lane], tp[lane], air1, p, s);
+                const auto w1 = winnowerRates(xp[lane], tp[lane], 1.5, xMix[lane], tMix[lane], air1, p, s);
+                for (double d : {rel(tube.dXdt[lane], t1.dXdt), rel(tube.dTdt[lane], t1.dTdt),
+                                 rel(conv.dXdt[lane], c1.dXdt), rel(conv.dTdt[lane], c1.dTdt),
+                                 rel(winn.dXdt[lane], w1.dXdt), rel(winn.dTdt[lane], w1.dTdt)}) {
+                    worst = std::max(worst, d);
+                }
+            }
+        }
+    }
+    return worst;
+}
+#endif
+
 } // namespace
 
 class TestPhysics : public QObject {
@@ -752,52 +802,23 @@ private Q_SLOTS:
 
     void twoParcelRatesEqualOneParcelRates() {
 #if DRYTWIN_HAVE_PACK2
-        // The batched right-hand sides evaluate two parcels per call (Pack2, libmvec exp/log);
-        // each lane must give the one-parcel rates, with and without the ablation switches.
-        using properties::Pack2;
-        std::mt19937 rng(11);
-        std::uniform_real_distribution<double> ux(0.05, 0.35);
-        std::uniform_real_distribution<double> ut(290.0, 400.0);
-        auto rel = [](double a, double b) { return std::abs(a - b) / std::max(1e-300, std::abs(b)); };
-        double worst = 0;
-        for (int sw = 0; sw < 2; ++sw) {
-            properties::ModelSwitches s;
-            s.clampWaterActivity = sw == 0;
-            s.latentHeatCorrection = sw == 0;
-            s.moistureDependentCp = sw == 0;
-            for (int k = 0; k < 200; ++k) {
-                const double x[2] = {ux(rng), ux(rng)};
-                const double t[2] = {ut(rng), ut(rng)};
-                const double gas[2] = {ut(rng) + 100, ut(rng) + 100};
-                const Pack2 xp(x[0], x[1]);
-                const Pack2 tp(t[0], t[1]);
-                TubeEnvironmentT<Pack2> tubeP{Pack2(gas[0], gas[1]), m_p[Param::w], Pack2::Constant(70.0),
-                                              0.02, Pack2::Constant(1.0)};
-                AmbientEnvironmentT<Pack2> airP{Pack2(295.0, 301.0), Pack2(0.4, 0.7), Pack2::Constant(0.0),
-                                                Pack2(0.0, 0.0), false};
-                const auto tube = generic::tubeRates(xp, tp, tubeP, m_p, s);
-                const auto conv = generic::conveyorRates(xp, tp, airP, m_p, s);
-                const auto winn =
-                    generic::winnowerRates(xp, tp, 1.5, Pack2(0.2, 0.25), Pack2(330.0, 290.0), airP, m_p, s);
-                for (int lane = 0; lane < 2; ++lane) {
-                    const TubeEnvironment tube1{gas[lane], m_p[Param::w], 70.0, 0.02, 1.0};
-                    const AmbientEnvironment air1{lane == 0 ? 295.0 : 301.0, lane == 0 ? 0.4 : 0.7, 0.0};
-                    const auto t1 = tubeRates(x[lane], t[lane], tube1, m_p, s);
-                    const auto c1 = conveyorRates(x[lane], t[lane], air1, m_p, s);
-                    const auto w1 = winnowerRates(x[lane], t[lane], 1.5, lane == 0 ? 0.2 : 0.25,
-                                                  lane == 0 ? 330.0 : 290.0, air1, m_p, s);
-                    for (double d : {rel(tube.dXdt[lane], t1.dXdt), rel(tube.dTdt[lane], t1.dTdt),
-                                     rel(conv.dXdt[lane], c1.dXdt), rel(conv.dTdt[lane], c1.dTdt),
-                                     rel(winn.dXdt[lane], w1.dXdt), rel(winn.dTdt[lane], w1.dTdt)}) {
-                        worst = std::max(worst, d);
-                    }
-                }
-            }
-        }
+        // The batched right-hand sides evaluate two parcels per call where four do not fit.
+        const double worst = packedRatesWorstDifference<properties::Pack2>(m_p);
         qInfo("two-parcel vs one-parcel rates: max relative difference %.2e", worst);
         QVERIFY(worst < 1e-12);
 #else
         QSKIP("no two-parcel path on this target");
+#endif
+    }
+
+    void fourParcelRatesEqualOneParcelRates() {
+#if DRYTWIN_HAVE_PACK4
+        // With AVX2 the batched right-hand sides evaluate four parcels per call.
+        const double worst = packedRatesWorstDifference<properties::Pack4>(m_p);
+        qInfo("four-parcel vs one-parcel rates: max relative difference %.2e", worst);
+        QVERIFY(worst < 1e-12);
+#else
+        QSKIP("no four-parcel path on this target (no AVX2)");
 #endif
     }
 
