@@ -9,7 +9,8 @@
 //     (free run: never a measured output) on every row of another (3 x 4,000 s), beside the PBM and
 //     a ridge regression on lagged inputs and proxies (lags 0-300 s) fitted on the same rows.
 // Run: build/bench/study_hybrid [--part unseen|free-run] [--quick (the first 3 sets / 1 pair)]
-//      [--seed-base N (unseen: seeds N+1 … N+10, default 900)] [--work DIR (default /tmp/drytwin-study-hybrid)]
+//      [--seed-base N (unseen: seeds N+1 … N+10, default 900)] [--work DIR (default
+//      /tmp/drytwin-study-hybrid)]
 // Writes Markdown tables to stdout, progress to stderr.
 #include "common/Units.h"
 #include "hybrid/Evaluation.h"
@@ -489,7 +490,9 @@ int main(int argc, char** argv) {
         } else if (!std::strcmp(argv[i], "--work") && i + 1 < argc) {
             workDir = argv[++i];
         } else {
-            std::fprintf(stderr, "usage: study_hybrid [--part unseen|free-run] [--quick] [--seed-base N] [--work DIR]\n");
+            std::fprintf(
+                stderr,
+                "usage: study_hybrid [--part unseen|free-run] [--quick] [--seed-base N] [--work DIR]\n");
             return 2;
         }
     }

@@ -40,7 +40,8 @@ double RealisedWeight::weight() const {
             // Ties (within round-off) go to the weight nearer w₀.
             const double tolerance = 1e-12 * std::max(cost, bestCost);
             if (g == 0 || cost < bestCost - tolerance ||
-                (cost <= bestCost + tolerance && std::abs(w - m_priorWeight) < std::abs(best - m_priorWeight))) {
+                (cost <= bestCost + tolerance &&
+                 std::abs(w - m_priorWeight) < std::abs(best - m_priorWeight))) {
                 best = w;
                 bestCost = cost;
             }

@@ -25,7 +25,8 @@ namespace drytwin::residual {
 /// output does not dominate. 21 running sums, one per candidate weight.
 class RealisedWeight {
 public:
-    RealisedWeight(double halfLifeSteps, double priorRows, double priorWeight = 1.0, bool absoluteError = false);
+    RealisedWeight(double halfLifeSteps, double priorRows, double priorWeight = 1.0,
+                   bool absoluteError = false);
     /// @brief A realised forecast: @p target = measured − reference, @p correction = c.
     void add(double target, double correction);
     /// @brief w for the next forecast.

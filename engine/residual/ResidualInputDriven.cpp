@@ -114,7 +114,8 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
         auto& residual = j == 0 ? p.residualXPct : p.residualTC;
         const auto& learned = j == 0 ? learnedX : learnedT;
         // reference = held − s_H · pbmChange: the last error held, less s_H of the PBM's change since.
-        std::vector<double> reference(count), held(count, kNaN), pbmChange(count, kNaN), measured(count, kNaN);
+        std::vector<double> reference(count), held(count, kNaN), pbmChange(count, kNaN),
+            measured(count, kNaN);
         for (std::size_t i = 0; i < count; ++i) {
             const std::size_t k = v.rows.begin + i;
             reference[i] = residual[i] - learned[i];
@@ -136,9 +137,9 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
         const auto weighOnTop = [&](std::vector<double>& forecast, const std::vector<double>& correction,
                                     double priorWeight) {
             std::vector<double> combined;
-            applyRealisedWeights(forecast, correction, measured, horizon, m_options.realisedWeightHalfLifeSteps,
-                                 m_options.realisedWeightPriorRows, combined, nullptr, priorWeight,
-                                 m_options.realisedWeightByAbsoluteError);
+            applyRealisedWeights(forecast, correction, measured, horizon,
+                                 m_options.realisedWeightHalfLifeSteps, m_options.realisedWeightPriorRows,
+                                 combined, nullptr, priorWeight, m_options.realisedWeightByAbsoluteError);
             for (std::size_t i = 0; i < count; ++i) {
                 if (std::isfinite(combined[i]) && std::isfinite(forecast[i])) {
                     forecast[i] = combined[i];

@@ -1,8 +1,8 @@
 // The right-hand sides the solver integrates, one per section: the drying tube with the
 // mechanism extensions' simple forms (Eqs. 9–12), the conveyor's top layer (Eqs. 13–14) and the
 // winnower (Eqs. 18–19), each run over the parcels four or two at a time where the target packs
-// four (AVX2) or two doubles. The rates themselves are physics/SectionRates.h's templates; this file says where each
-// parcel is in the inputs and what it sees there. The hot loop of every simulation: it stays in
+// four (AVX2) or two doubles. The rates themselves are physics/SectionRates.h's templates; this file says
+// where each parcel is in the inputs and what it sees there. The hot loop of every simulation: it stays in
 // one translation unit with the templates it inlines (and physics/*/*.cpp keep -O3).
 
 #include "physics/SectionRates.h"

@@ -299,7 +299,8 @@ private slots:
             }
             QVERIFY(n > 5000);
             const double better = std::min(persistence, pbmHeld);
-            qInfo("H = %d: skill %.3f (trained s_H and the held error alone: %.3f)", h, model / better, old / better);
+            qInfo("H = %d: skill %.3f (trained s_H and the held error alone: %.3f)", h, model / better,
+                  old / better);
             QVERIFY2(model <= better, qPrintable(QString::number(model / better)));
             if (h == 90) {
                 QVERIFY(model < 0.95 * better);
