@@ -20,9 +20,37 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
+#include <string>
+#ifdef Q_OS_UNIX
+#include <unistd.h>
+#endif
 
 namespace {
+
+/// Qt wants a private runtime folder (XDG_RUNTIME_DIR) and, where a session has none (a console
+/// login as root, a container, CI), prints "QStandardPaths: XDG_RUNTIME_DIR not set" into the
+/// middle of DryTwin's own output before falling back on /tmp/runtime-<user>. The same folder,
+/// made here (owner only, as Qt requires) and named, without the warning.
+void provideRuntimeFolder() {
+#ifdef Q_OS_UNIX
+    if (qEnvironmentVariableIsSet("XDG_RUNTIME_DIR")) {
+        return;
+    }
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path dir = fs::temp_directory_path(ec) / ("runtime-" + std::to_string(getuid()));
+    if (ec) {
+        return;
+    }
+    fs::create_directories(dir, ec);
+    fs::permissions(dir, fs::perms::owner_all, fs::perm_options::replace, ec);
+    if (!ec) {
+        qputenv("XDG_RUNTIME_DIR", QByteArray::fromStdString(dir.string()));
+    }
+#endif
+}
 
 int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed) {
     const bool platformGiven =
@@ -37,6 +65,7 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
     }
     // Must precede QApplication for the VTK view (PLATFORM-NOTES.md).
     QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+    provideRuntimeFolder();
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("DryTwin"));
     QApplication::setOrganizationName(QStringLiteral("DryTwin"));
@@ -177,6 +206,7 @@ std::vector<std::string> renderReport(char** argv, const drytwin::workflow::Pipe
         }
         static int qtArgc = 1;
         static char* qtArgv[] = {argv[0], nullptr};
+        provideRuntimeFolder();
         new QApplication(qtArgc, qtArgv); // lives until exit: the report's widgets need it
     }
     drytwin::widgets::ReportContext context;
