@@ -65,38 +65,43 @@ template <class T> T constant(double v) {
 }
 
 #if DRYTWIN_HAVE_PACK2
-/// exp and log of a pack (or of an expression of one: a template, so that Pack2 and Pack4
-/// expressions each find their own width) through libmvec, all lanes in one call.
-template <class E> auto exp(const Eigen::ArrayBase<E>& x) {
+namespace detail {
+/// One libmvec call for all lanes of @p x: @p Two for a Pack2, @p Four for a Pack4 (template
+/// arguments, so that each call is a direct one).
+template <auto Two, auto Four, class E> auto allLanes(const Eigen::ArrayBase<E>& x) {
     using Plain = typename E::PlainObject;
     Plain in = x, r;
     if constexpr (Plain::SizeAtCompileTime == 2) {
-        _mm_storeu_pd(r.data(), _ZGVbN2v_exp(_mm_loadu_pd(in.data())));
+        _mm_storeu_pd(r.data(), Two(_mm_loadu_pd(in.data())));
     } else {
 #if DRYTWIN_HAVE_PACK4
         static_assert(Plain::SizeAtCompileTime == 4, "packs of two or four doubles");
-        _mm256_storeu_pd(r.data(), _ZGVdN4v_exp(_mm256_loadu_pd(in.data())));
+        _mm256_storeu_pd(r.data(), Four(_mm256_loadu_pd(in.data())));
 #else
         static_assert(Plain::SizeAtCompileTime == 2, "packs of two doubles");
 #endif
     }
     return r;
+}
+} // namespace detail
+
+/// exp and log of a pack (or of an expression of one: templates, so that Pack2 and Pack4
+/// expressions each find their own width) through libmvec, all lanes in one call.
+#if DRYTWIN_HAVE_PACK4
+template <class E> auto exp(const Eigen::ArrayBase<E>& x) {
+    return detail::allLanes<_ZGVbN2v_exp, _ZGVdN4v_exp>(x);
 }
 template <class E> auto log(const Eigen::ArrayBase<E>& x) {
-    using Plain = typename E::PlainObject;
-    Plain in = x, r;
-    if constexpr (Plain::SizeAtCompileTime == 2) {
-        _mm_storeu_pd(r.data(), _ZGVbN2v_log(_mm_loadu_pd(in.data())));
-    } else {
-#if DRYTWIN_HAVE_PACK4
-        static_assert(Plain::SizeAtCompileTime == 4, "packs of two or four doubles");
-        _mm256_storeu_pd(r.data(), _ZGVdN4v_log(_mm256_loadu_pd(in.data())));
-#else
-        static_assert(Plain::SizeAtCompileTime == 2, "packs of two doubles");
-#endif
-    }
-    return r;
+    return detail::allLanes<_ZGVbN2v_log, _ZGVdN4v_log>(x);
 }
+#else
+template <class E> auto exp(const Eigen::ArrayBase<E>& x) {
+    return detail::allLanes<_ZGVbN2v_exp, nullptr>(x);
+}
+template <class E> auto log(const Eigen::ArrayBase<E>& x) {
+    return detail::allLanes<_ZGVbN2v_log, nullptr>(x);
+}
+#endif
 template <class E> auto maxOf(const Eigen::ArrayBase<E>& a, double b) {
     return typename E::PlainObject(a.max(b));
 }
