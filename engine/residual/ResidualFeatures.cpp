@@ -179,11 +179,17 @@ Eigen::Vector2d ResidualModel::levelOf(const BatchView& v, std::size_t origin, s
     if (!observedResidual(*v.batch, *v.pbm, origin, e(0), e(1))) {
         return Eigen::Vector2d::Constant(kNaN);
     }
-    const auto& pbm = *v.pbm;
     const Eigen::Vector2d sH = referenceChangeAt(static_cast<int>(target - origin));
-    e(0) -= sH(0) * (units::dryToWetPct(pbm.xOutDb[target]) - units::dryToWetPct(pbm.xOutDb[origin]));
-    e(1) -= sH(1) * (pbm.tOutK[target] - pbm.tOutK[origin]);
+    const Eigen::Vector2d change = pbmChange(v, origin, target);
+    e(0) -= sH(0) * change(0);
+    e(1) -= sH(1) * change(1);
     return e;
+}
+
+Eigen::Vector2d ResidualModel::pbmChange(const BatchView& v, std::size_t origin, std::size_t target) {
+    const auto& pbm = *v.pbm;
+    return {units::dryToWetPct(pbm.xOutDb[target]) - units::dryToWetPct(pbm.xOutDb[origin]),
+            pbm.tOutK[target] - pbm.tOutK[origin]};
 }
 
 bool ResidualModel::stateAt(const BatchView& v, std::size_t k, const std::vector<double>& ex,

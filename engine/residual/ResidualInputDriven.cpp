@@ -113,9 +113,8 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
     for (int j = 0; j < kOutputs; ++j) {
         auto& residual = j == 0 ? p.residualXPct : p.residualTC;
         const auto& learned = j == 0 ? learnedX : learnedT;
-        // reference = held − s_H · pbmChange: the last error held, less s_H of the PBM's change since.
-        std::vector<double> reference(count), held(count, kNaN), pbmChange(count, kNaN),
-            measured(count, kNaN);
+        // reference = held − s_H · change: the last error held, less s_H of the PBM's change since.
+        std::vector<double> reference(count), held(count, kNaN), change(count, kNaN), measured(count, kNaN);
         for (std::size_t i = 0; i < count; ++i) {
             const std::size_t k = v.rows.begin + i;
             reference[i] = residual[i] - learned[i];
@@ -126,10 +125,7 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
             if (k >= horizon && std::isfinite(reference[i]) &&
                 observedResidual(*v.batch, *v.pbm, k - horizon, e(0), e(1))) {
                 held[i] = e(j);
-                const std::size_t origin = k - horizon;
-                pbmChange[i] =
-                    j == 0 ? units::dryToWetPct(v.pbm->xOutDb[k]) - units::dryToWetPct(v.pbm->xOutDb[origin])
-                           : v.pbm->tOutK[k] - v.pbm->tOutK[origin];
+                change[i] = pbmChange(v, k - horizon, k)(j);
             }
         }
         // Each step adds w · correction to the forecast so far, w from the forecasts already
@@ -150,7 +146,7 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
             // 1. s: the held error, less s of the PBM's change (s = 1: the last measurement held).
             std::vector<double> minusChange(count);
             for (std::size_t i = 0; i < count; ++i) {
-                minusChange[i] = -pbmChange[i];
+                minusChange[i] = -change[i];
                 if (std::isfinite(held[i])) {
                     reference[i] = held[i];
                 }

@@ -270,6 +270,8 @@ private:
     /// reference's residual e_origin − s (ŷ_mech,target − ŷ_mech,origin) in the velocity form, the
     /// restored base part of Eq. 27 otherwise (% wb, °C; NaN where it cannot be formed).
     Eigen::Vector2d levelOf(const BatchView& v, std::size_t origin, std::size_t target) const;
+    /// The PBM's change of X_out (% wb) and T_out (K) from row @p origin to row @p target.
+    static Eigen::Vector2d pbmChange(const BatchView& v, std::size_t origin, std::size_t target);
     bool stateAt(const BatchView& v, std::size_t k, const std::vector<double>& ex,
                  const std::vector<double>& et, Eigen::VectorXd& x, double& u, Eigen::VectorXd& d) const;
     /// The lifted state at row k from its already formed inputs @p z; false when a lag is unmeasured.
