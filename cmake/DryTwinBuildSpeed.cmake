@@ -12,6 +12,7 @@
 # Precompiled headers were tried and measured slower with GCC 12: loading a 136 MB header
 # (standard library, Eigen, nlohmann::json) cost 1-3 s per file, more than parsing saved
 # (ResidualFit.cpp 13.0 s without, 14.3 s with; CsvLines.cpp 0.6 s, 3.5 s; docs/build-speed.md).
+# The test programs are the exception and have one (tests/CMakeLists.txt).
 option(DRYTWIN_FULL_DEBUG_INFO "RelWithDebInfo with full debug information (-g); off: line tables (-g1)" OFF)
 option(DRYTWIN_FAST_LINKER "Link with lld, else gold, when the compiler accepts it" ON)
 
