@@ -1,5 +1,6 @@
 #include "hybrid/HybridTraining.h"
 
+#include "baselines/LstmNetwork.h"
 #include "calibration/Calibration.h"
 #include "common/Parallel.h"
 #include "hybrid/Evaluation.h"
@@ -119,6 +120,11 @@ Expected<TrainingResult> trainResidualModels(const std::vector<data::SiBatch>& b
     const auto t0 = std::chrono::steady_clock::now();
     if (auto st = selection.validate(); !st) {
         return st.error();
+    }
+    // The LSTM's module is loaded now, not after PGRL-CC's fits: a program without it says so at
+    // once instead of after minutes of work.
+    if (auto module = baselines::lstmModule(); !module) {
+        return module.error();
     }
     auto pbm = simulatePbm(batches, model, model.switches, progress);
     if (!pbm) {

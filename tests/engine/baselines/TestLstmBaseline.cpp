@@ -52,8 +52,20 @@ class TestLstmBaseline : public QObject {
         return sum / double(n);
     }
 
+    /// Whether libtorch's main library is mapped into this process (/proc/self/maps).
+    static bool libtorchLoaded() {
+        QFile maps(QStringLiteral("/proc/self/maps"));
+        if (!maps.open(QIODevice::ReadOnly)) {
+            return false;
+        }
+        return maps.readAll().contains("libtorch_cpu");
+    }
+
 private Q_SLOTS:
     void initTestCase() {
+        // The plant, the PBM and the split are the engine's own: libtorch is not loaded for them
+        // (it costs every program a second at start); the first LSTM trained loads its module.
+        QVERIFY(!libtorchLoaded());
         auto o = plant::PlantOptions::demo(3, plant::PlantKind::Lumped);
         o.batches = 3;
         o.samples = 1500;
@@ -62,9 +74,11 @@ private Q_SLOTS:
         m_pbm = std::move(*hybrid::simulatePbm(m_batches, hybrid::HybridModel{}, {}));
         m_train = hybrid::splitViews(m_batches, m_pbm, false);
         m_test = hybrid::splitViews(m_batches, m_pbm, true);
+        QVERIFY(!libtorchLoaded());
         auto m = baselines::LstmBaseline::train(m_train, smallOptions());
         QVERIFY2(m.ok(), m.ok() ? "" : m.error().message().c_str());
         m_model.emplace(std::move(*m));
+        QVERIFY(libtorchLoaded());
     }
 
     void trainsPredictsAndRoundTrips() {

@@ -1,4 +1,4 @@
-#include "baselines/LstmModel.h"
+#include "baselines/torch/LstmModel.h"
 
 #include "common/Units.h"
 

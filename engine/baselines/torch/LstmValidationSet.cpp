@@ -1,4 +1,4 @@
-#include "baselines/LstmValidationSet.h"
+#include "baselines/torch/LstmValidationSet.h"
 
 #include "common/Units.h"
 

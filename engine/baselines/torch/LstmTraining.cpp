@@ -1,8 +1,8 @@
 // LstmBaseline::train: standardisation and clip ranges, training streams with a carried state,
 // a free-run loss, and early stopping on a validation part (LstmValidationSet.h).
 
-#include "baselines/LstmModel.h"
-#include "baselines/LstmValidationSet.h"
+#include "baselines/torch/LstmModel.h"
+#include "baselines/torch/LstmValidationSet.h"
 
 #include <algorithm>
 #include <chrono>

@@ -3,7 +3,7 @@
 // Inside engine/baselines only: the validation part of the LSTM baseline's training, which
 // decides early stopping and says whether the network beats the trivial references.
 
-#include "baselines/LstmModel.h"
+#include "baselines/torch/LstmModel.h"
 
 #include <array>
 #include <string>
