@@ -7,6 +7,9 @@
 #   bash scripts/training-discoverability.sh [BUILD_DIR]      (JOBS=2 runs in parallel)
 # ORACLE=1: Discover is asked about the fault alone (`discover --causes CAUSE`): the bound on what
 # any choice among the candidates can reach with discovery's judgement rules.
+# REFERENCE=1: each recording is judged against the line's healthy commissioning data
+# (`discover --reference`): three fault-free runs of the same scenario, the seeds the Training tab's
+# monitor commissions on (seed + 90001 … 90003, engine/training/LineMonitor.cpp), whole length.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$here/build}"
@@ -30,13 +33,31 @@ JSON
   local named
   local only=()
   if [ -n "${ORACLE:-}" ]; then only=(--causes "$cause"); fi
+  if [ -n "${REFERENCE:-}" ]; then only+=(--reference "$work/commissioning-$seed"); fi
   named=$("$drytwin" -q discover --data "$dir/out/recording" "${only[@]}" --json "$dir/d.json" >/dev/null 2>&1;
           python3 -c "import json,sys; d=json.load(open('$dir/d.json')); print(','.join(f['cause'] for f in d.get('findings',[])) or '-')")
   local first=${named%%,*}
   echo "$cause seed=$seed ${minutes}min named=$named first_right=$([ "$first" = "$cause" ] && echo yes || echo no)"
 }
-export -f run
+# The commissioning runs of the line of each seed: fault-free, the scenario's whole length.
+commission() {
+  local seed=$1 run=$2
+  local dir="$work/commissioning-run-$seed-$run"
+  mkdir -p "$dir" "$work/commissioning-$seed"
+  local s="${scenario/\"seed\": 7/\"seed\": $((seed + 90000 + run))}"
+  echo "{\"scenario\": $s, \"events\": []}" > "$dir/script.json"
+  "$drytwin" -q training --script "$dir/script.json" --out "$dir/out" >/dev/null
+  # Each run its own batch id (a recording is named after its scenario, and ids must be unique).
+  for f in "$dir"/out/recording/*.csv; do
+    sed "s/^# batch: .*/# batch: C$run/" "$f" > "$work/commissioning-$seed/C$run.csv"
+  done
+}
+export -f run commission
 export drytwin work scenario
+if [ -n "${REFERENCE:-}" ]; then
+  for seed in 7 8 9; do for r in 1 2 3; do echo "$seed $r"; done; done |
+    xargs -P "${JOBS:-2}" -L 1 bash -c 'commission "$@"' _
+fi
 results="$work/results.txt"
 for minutes in 30 60; do
   for seed in 7 8 9; do
@@ -47,6 +68,6 @@ for minutes in 30 60; do
 done | xargs -P "${JOBS:-2}" -L 1 bash -c 'run "$@"' _ | tee "$results"
 for minutes in 30 60; do
   total=$(grep -c " ${minutes}min" "$results")
-  right=$(grep " ${minutes}min" "$results" | grep -c "first_right=yes")
+  right=$(grep " ${minutes}min" "$results" | grep -c "first_right=yes" || true) # grep -c exits 1 on 0
   echo "recording ${minutes} min: right cause first in $right of $total"
 done
