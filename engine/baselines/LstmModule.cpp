@@ -44,16 +44,19 @@ struct Loaded {
 Loaded load() {
     Loaded out;
     std::string tried;
+    const auto note = [&tried](const std::string& path, const std::string& why) {
+        tried += (tried.empty() ? "" : ", ") + path + " (" + why + ")";
+    };
     for (const auto& path : candidatePaths()) {
         std::error_code ec;
         if (!std::filesystem::exists(path, ec)) {
-            tried += (tried.empty() ? "" : ", ") + path + " (absent)";
+            note(path, "absent");
             continue;
         }
         void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (!handle) {
             const char* why = dlerror();
-            tried += (tried.empty() ? "" : ", ") + path + " (" + (why ? why : "cannot be loaded") + ")";
+            note(path, why ? why : "cannot be loaded");
             continue;
         }
         using EntryFunction = const LstmModuleEntry* (*)();
@@ -61,7 +64,7 @@ Loaded load() {
         const LstmModuleEntry* entry = function ? function() : nullptr;
         if (!entry || entry->interfaceVersion != kLstmModuleInterfaceVersion || !entry->train ||
             !entry->fromJson) {
-            tried += (tried.empty() ? "" : ", ") + path + " (from another build of DryTwin)";
+            note(path, "from another build of DryTwin");
             dlclose(handle);
             continue;
         }

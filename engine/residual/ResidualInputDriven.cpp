@@ -5,6 +5,7 @@
 
 #include "common/Units.h"
 
+#include <array>
 #include <chrono>
 
 namespace drytwin::residual {
@@ -110,22 +111,40 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
     }
     const std::size_t count = v.rows.size();
     const Eigen::Vector2d trainedBlend = referenceChangeAt(static_cast<int>(horizon));
+    // Per row and output, read once for both outputs: the measured error, the error held at the
+    // forecast's origin and the PBM's change since.
+    std::array<std::vector<double>, kOutputs> measuredOf, heldOf, changeOf;
+    for (int j = 0; j < kOutputs; ++j) {
+        measuredOf[j].assign(count, kNaN);
+        heldOf[j].assign(count, kNaN);
+        changeOf[j].assign(count, kNaN);
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t k = v.rows.begin + i;
+        Eigen::Vector2d e;
+        if (observedResidual(*v.batch, *v.pbm, k, e(0), e(1))) {
+            measuredOf[0][i] = e(0);
+            measuredOf[1][i] = e(1);
+        }
+        if (k >= horizon && observedResidual(*v.batch, *v.pbm, k - horizon, e(0), e(1))) {
+            const Eigen::Vector2d change = pbmChange(v, k - horizon, k);
+            for (int j = 0; j < kOutputs; ++j) {
+                heldOf[j][i] = e(j);
+                changeOf[j][i] = change(j);
+            }
+        }
+    }
     for (int j = 0; j < kOutputs; ++j) {
         auto& residual = j == 0 ? p.residualXPct : p.residualTC;
         const auto& learned = j == 0 ? learnedX : learnedT;
+        const auto& measured = measuredOf[j];
         // reference = held − s_H · change: the last error held, less s_H of the PBM's change since.
-        std::vector<double> reference(count), held(count, kNaN), change(count, kNaN), measured(count, kNaN);
+        std::vector<double> reference(count), held = heldOf[j], change = changeOf[j];
         for (std::size_t i = 0; i < count; ++i) {
-            const std::size_t k = v.rows.begin + i;
             reference[i] = residual[i] - learned[i];
-            Eigen::Vector2d e;
-            if (observedResidual(*v.batch, *v.pbm, k, e(0), e(1))) {
-                measured[i] = e(j);
-            }
-            if (k >= horizon && std::isfinite(reference[i]) &&
-                observedResidual(*v.batch, *v.pbm, k - horizon, e(0), e(1))) {
-                held[i] = e(j);
-                change[i] = pbmChange(v, k - horizon, k)(j);
+            if (!std::isfinite(reference[i])) { // no forecast here: nothing held to weigh either
+                held[i] = kNaN;
+                change[i] = kNaN;
             }
         }
         // Each step adds w · correction to the forecast so far, w from the forecasts already
