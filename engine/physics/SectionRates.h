@@ -2,6 +2,9 @@
 
 #include "properties/Properties.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace drytwin::physics {
 
 using properties::ModelSwitches;
@@ -48,6 +51,19 @@ template <class T> struct AmbientEnvironmentT {
     bool hasXe = false;
 };
 using AmbientEnvironment = AmbientEnvironmentT<double>;
+
+/// @brief How strongly air of relative humidity @p rh [0..1] loads the conveyor's surface strands
+/// (the ambient_reabsorption extension: dX/dt gains θ_reabs · 1e-4 · this). A hygroscopic leaf takes
+/// up water faster than linearly in RH because its sorption isotherm steepens towards saturation:
+/// the drive is RH times the isotherm's own rise, X_e(RH) / X_e(0.5) = (h / (1 − h))^θ_xe3 with
+/// h = RH (Eq. 5; the temperature factor cancels), so that at RH 50 % it is 0.5, as the linear form
+/// RH it replaced (θ_reabs keeps its meaning there). With the linear form the estimate of θ_reabs
+/// moved with each batch's humidity (a dry day's batch gave 0, a humid one's 4), and discovery
+/// turned the cause down as inconsistent; docs/mechanisms.md.
+inline double reabsorptionDrive(double rh, const ParameterSet& p) {
+    const double h = std::clamp(rh, 1e-3, 0.999);
+    return h * std::exp(p[properties::Param::theta_xe3] * std::log(h / (1.0 - h)));
+}
 
 namespace generic {
 

@@ -209,12 +209,14 @@ bool conveyorEval(const void* c, double s, std::size_t first, std::size_t count,
                                  // parcels that entered before the batch started, as the tube's
                                  // mechanisms)
                                  const double onset = p[Param::t_onset];
-                                 double active[kMaxLanes] = {};
+                                 double uptake[kMaxLanes] = {};
                                  for (int lane = 0; lane < l.width; ++lane) {
                                      const std::size_t parcel = l.parcel + static_cast<std::size_t>(lane);
-                                     active[lane] = onset <= 0 || (*x.entry)[parcel] + s - x.t0 >= onset;
+                                     const bool active = onset <= 0 || (*x.entry)[parcel] + s - x.t0 >= onset;
+                                     const double rh = x.locate(parcel, s).of(x.in->rhAmb);
+                                     uptake[lane] = active ? reabsorptionDrive(rh, p) : 0.0;
                                  }
-                                 env.extraUptake = reabsorption * 1e-4 * env.rh * l.load(active);
+                                 env.extraUptake = reabsorption * 1e-4 * l.load(uptake);
                              }
                              return generic::conveyorRates(l.state(0), l.state(1), env, p, sw);
                          });

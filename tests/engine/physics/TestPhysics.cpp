@@ -822,6 +822,24 @@ private Q_SLOTS:
 #endif
     }
 
+    // ambient_reabsorption's drive: RH times the isotherm's own rise (Eq. 5), 0.5 at RH 50 % so
+    // that θ_reabs keeps the meaning it had under the linear form, steeper than RH above it.
+    void reabsorptionDriveFollowsTheIsotherm() {
+        const double tK = 298.15;
+        for (double rh : {0.2, 0.35, 0.65, 0.8, 0.9}) {
+            const double isothermRise = drytwin::properties::equilibriumMoisture(tK, rh, m_p) /
+                                        drytwin::properties::equilibriumMoisture(tK, 0.5, m_p);
+            QVERIFY(std::abs(reabsorptionDrive(rh, m_p) - rh * isothermRise) < 1e-12);
+        }
+        QVERIFY(std::abs(reabsorptionDrive(0.5, m_p) - 0.5) < 1e-12);
+        // Convex: a humid day loads the strands more than proportionally, a dry one less.
+        QVERIFY(reabsorptionDrive(0.8, m_p) > 0.8 / 0.5 * reabsorptionDrive(0.5, m_p) * 1.2);
+        QVERIFY(reabsorptionDrive(0.2, m_p) < 0.2 / 0.5 * reabsorptionDrive(0.5, m_p) * 0.8);
+        // Finite at the ends, where the isotherm's h / (1 − h) is 0 or unbounded.
+        QVERIFY(std::isfinite(reabsorptionDrive(0.0, m_p)) && reabsorptionDrive(0.0, m_p) >= 0);
+        QVERIFY(std::isfinite(reabsorptionDrive(1.0, m_p)));
+    }
+
     void batchesInParallelEqualSerial() {
         std::vector<LineInputs> b{varyingInputs(200), constantInputs(150), varyingInputs(180)};
         auto par = simulateBatches(b, m_p, {}, 2);
