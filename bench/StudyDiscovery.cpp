@@ -10,7 +10,9 @@
 //      [--oracle (each mechanism run asks about its hidden cause alone)]
 //      [--reference (issue #41: each run judged against healthy data of another seed, 4 x 3,000 s,
 //      by discoverChange; the detectors' flags in each row)] [--no-structure (with --reference: the
-//      line's own structure not learnt, the causes' normal values alone)] [--seeds FIRST (mechanism runs'
+//      line's own structure not learnt, the causes' normal values alone)] [--size-rule (with --reference:
+//      an output a cause acts on counts against it when its error rises, as alone; the rule before
+//      2026-11-27, instead of the direction of the cause's effect)] [--seeds FIRST (mechanism runs'
 //      three seeds; default 101, onsets FIRST+100)] [--unimproved-alpha A (default 0.05; 1: the rule before)]
 //      [--no-constancy (an offset, wall loss or gas coupling not checked for constancy within the batch)]
 //      [--look-alike-overall (a look-alike ruled out on the overall held-out loss alone, even where
@@ -229,6 +231,8 @@ int main(int argc, char** argv) {
             discoveryOptions.checkConstancyWithinBatch = false;
         } else if (a == "--look-alike-overall") {
             discoveryOptions.lookAlikeWorseOnNoOutput = false;
+        } else if (a == "--size-rule") { // against a reference: no output made worse, as before 2026-11-27
+            discoveryOptions.referenceJudgesDirection = false;
         } else if (a == "--no-structure") { // against a reference: the causes' normal values alone
             discoveryOptions.learnLineStructure = false;
         } else if (a == "--mechanism" && !next.empty()) {
@@ -253,13 +257,12 @@ int main(int argc, char** argv) {
             discoveryOptions.maxEvaluationsPerFit = std::atoi(next.c_str());
             ++i;
         } else {
-            std::fprintf(stderr,
-                         "usage: study_discovery [--quick] [--plant distributed|lumped] "
-                         "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
-                         "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
-                         "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
-                         "[--evaluations N] [--oracle] [--reference] [--no-structure] [--no-constancy] "
-                         "[--look-alike-overall]\n");
+            std::fprintf(stderr, "usage: study_discovery [--quick] [--plant distributed|lumped] "
+                                 "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
+                                 "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
+                                 "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
+                                 "[--evaluations N] [--oracle] [--reference] [--no-structure] [--size-rule] "
+                                 "[--no-constancy] [--look-alike-overall]\n");
             return 2;
         }
     }

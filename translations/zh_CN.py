@@ -8,6 +8,8 @@ import re
 import sys
 
 ZH = {
+    " %1 moved %2 times as much as this cause's model form says: the direction agrees, the size is the model's to answer.":
+        " %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。",
     " The model is extended.": " 模型已扩展。",
     " evaluations": " 次评估",
     "% wb": "% 湿基",

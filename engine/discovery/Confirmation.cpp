@@ -71,6 +71,8 @@ Expected<Confirmation> confirmCandidate(const ConfirmationInput& in) {
     f.gain = gain;
     f.perPart = judged->consistency.parts;
     f.actsOn = judged->actsOn;
+    f.responseJudged = judged->responseJudged;
+    f.responseScale = judged->responseScale;
     f.consistent = judged->consistency.consistent;
     f.transferChecked = judged->transfer.checked;
     f.transferReduction = judged->transfer.reduction;

@@ -92,6 +92,12 @@ struct DiscoveryOptions {
     /// take it off every period's measurements before a change is looked for. false: the
     /// causes' normal values alone carry the structure.
     bool learnLineStructure = true;
+    /// Against a reference period: a cause counts against an output it acts on when its effect
+    /// there does not point the way that output changed (or differs in size by more than a factor
+    /// of 4), not whenever it raises that output's error: the lumped model may state a change's
+    /// size wrongly on one output (Specificity.cpp, responseMismatch). false: the single-data-set
+    /// rule (no output made significantly worse), as before 2026-11-27.
+    bool referenceJudgesDirection = true;
     /// A cause a batch does not change (a gauge's offset, the wall's loss, the gas phase's
     /// coupling) must be estimated alike on the first and the second half of the batches
     /// (Specificity.cpp, `not_constant`). false: not checked, as before 2026-11-26.
@@ -249,6 +255,11 @@ struct Finding {
     /// reference's parts), so that the finding is a change, not a level.
     bool hasReference = false;
     double referenceValue = 0, referenceCi95Low = 0, referenceCi95High = 0;
+    /// Against a reference: on each channel it acts on, how much the line moved against what this
+    /// cause's model form says (the best scale of its effect there; 1: as the model says). Judged
+    /// by direction (DiscoveryOptions::referenceJudgesDirection); not stored in files.
+    bool responseJudged = false;
+    std::array<double, 4> responseScale{};
 };
 
 /// @brief Structure left after the named causes that matches no mechanism (never forced onto one).

@@ -261,8 +261,20 @@ struct Specificity {
     Constancy constancy;          ///< the causes a batch does not change only (constantWithinBatch)
     std::array<bool, 4> actsOn{}; ///< the measured channels its own effect moves beyond the floors
     Transfer transfer;
+    bool responseJudged = false;           ///< against a reference, by direction (responseMismatch)
+    std::array<double, 4> responseScale{}; ///< ... each channel's best scale of the cause's effect
 };
 Expected<Specificity> judgeSpecificity(const SpecificityInput& in);
+/// Against a reference: each channel's best scale of the cause's effect (<e, d> / <d, d>, e the
+/// error before it, d what it changes) and the z of its direction (HAC); channel is the first
+/// channel the cause acts on whose change it does not explain in direction or within a factor
+/// of 4 in size, or -1.
+struct ResponseMismatch {
+    int channel = -1;
+    std::array<double, 4> scale{}, z{};
+};
+ResponseMismatch responseMismatch(const HeldOut& before, const HeldOut& after,
+                                  const std::array<bool, 4>& actsOn);
 
 /// inlet_moisture_sensor_noise, judged on the starting model (whose refit frees the scatter
 /// share with h_HDT and k_HDT): a finding when the measured scatter is above the gauge's normal

@@ -119,6 +119,18 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
                    "changed.",
                    f.referenceValue, std::string(info.unit).c_str(), f.referenceCi95Low, f.referenceCi95High);
     }
+    if (f.responseJudged) {
+        // Where the line's response differs in size from the model form's: the direction agreed
+        // (else the cause would not be named), the size is the model's (a lumped tube's) to answer.
+        for (int c = 0; c < 4; ++c) {
+            const double scale = f.responseScale[static_cast<std::size_t>(c)];
+            if (f.actsOn[static_cast<std::size_t>(c)] && (scale < 2.0 / 3 || scale > 1.5)) {
+                text += format(" %s moved %.2g times as much as this cause's model form says: the direction "
+                               "agrees, the size is the model's to answer.",
+                               kChannelName[c], scale);
+            }
+        }
+    }
     if (!f.perPart.empty()) {
         double lo = f.perPart.front().value, hi = lo;
         for (const auto& e : f.perPart) {

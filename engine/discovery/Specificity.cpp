@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <optional>
 
@@ -261,6 +263,49 @@ int worsenedChannel(const HeldOut& before, const HeldOut& after, const Discovery
     return -1;
 }
 
+namespace {
+
+/// How far the line's response to a cause may differ in size from the model's on an output and
+/// still count as the cause's: a factor of 4 either way (the distributed plant's fouling moves the
+/// temperatures 0.3-0.6 times as much as the model's, its moisture 1.0 times).
+constexpr double kMinResponseScale = 0.25;
+constexpr double kResponseZ = 1.96; ///< the direction must be significant (two-sided 5 %)
+
+} // namespace
+
+ResponseMismatch responseMismatch(const HeldOut& before, const HeldOut& after,
+                                  const std::array<bool, 4>& actsOn) {
+    ResponseMismatch out;
+    for (int c = 0; c < 4; ++c) {
+        const auto cu = static_cast<std::size_t>(c);
+        // The change the cause makes on this channel, d = e_before - e_after, and the error before
+        // it, e: the best scale of the effect is <e, d> / <d, d>; its direction is significant when
+        // Σ e·d is, with a HAC variance per batch (the rows are autocorrelated).
+        double ed = 0, dd = 0;
+        std::vector<std::vector<double>> products;
+        for (std::size_t b = 0; b < before.channels.size() && b < after.channels.size(); ++b) {
+            const auto& eb = before.channels[b][cu].weightedError;
+            const auto& ea = after.channels[b][cu].weightedError;
+            products.emplace_back();
+            for (std::size_t i = 0; i < eb.size() && i < ea.size(); ++i) {
+                const double d = eb[i] - ea[i];
+                ed += eb[i] * d;
+                dd += d * d;
+                products.back().push_back(eb[i] * d);
+            }
+        }
+        const double var = hacVarianceOfSum(products, true);
+        out.scale[cu] = dd > 0 ? ed / dd : 0.0;
+        out.z[cu] = var > 0 ? ed / std::sqrt(var) : 0.0;
+        if (out.channel < 0 && actsOn[cu] && dd > 0 &&
+            (out.z[cu] < kResponseZ || out.scale[cu] < kMinResponseScale ||
+             out.scale[cu] > 1 / kMinResponseScale)) {
+            out.channel = c;
+        }
+    }
+    return out;
+}
+
 Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
     Specificity out;
     // The cause's own effect: the fit against the same fit with the cause set to 0.
@@ -318,7 +363,20 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
             shortfallP = p;
         }
     }
-    const int worse = worsenedChannel(in.before, in.after, in.pr.options, actsOn);
+    int worse = worsenedChannel(in.before, in.after, in.pr.options, actsOn);
+    ResponseMismatch mismatch;
+    if (in.pr.reference && in.pr.options.referenceJudgesDirection) {
+        // Against a reference the line's own structure is already taken off: what is left on a
+        // channel is the change. The lumped model may state a change's size wrongly on an output
+        // (its fouling moves the temperatures 2-3 times as much as a line with a gas phase does,
+        // while it explains the moisture exactly), so a channel counts against the cause when
+        // the cause's effect does not point the way the change did, not when its size is off.
+        mismatch = responseMismatch(in.before, in.after, actsOn);
+        worse = mismatch.channel;
+        notImproved = -1;
+        out.responseJudged = true;
+        out.responseScale = mismatch.scale;
+    }
     if (worse >= 0 || notImproved >= 0) {
         const int c = worse >= 0 ? worse : notImproved;
         const auto& ch = changes[static_cast<std::size_t>(c)];
@@ -327,7 +385,14 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
         const double rmsBefore = std::sqrt(ch.mseBefore / w);
         const double rmsAfter = std::sqrt(ch.mseAfter / w);
         out.why =
-            worse >= 0
+            mismatch.channel >= 0
+                ? format("its effect on %s does not point the way that channel changed against the "
+                         "reference (best scale of its effect there %.2g, z = %.2g; needs %.2g to %.2g "
+                         "and z > %.2g): not this cause",
+                         kChannelName[c], mismatch.scale[static_cast<std::size_t>(c)],
+                         mismatch.z[static_cast<std::size_t>(c)], kMinResponseScale, 1 / kMinResponseScale,
+                         kResponseZ)
+            : worse >= 0
                 ? format("it lowers the error overall but raises the held-out rms error of %s from "
                          "%.3g to %.3g %s: compensation, not a cause",
                          kChannelName[c], rmsBefore, rmsAfter, kChannelUnit[c])

@@ -30,6 +30,8 @@ public:
     QTextBrowser* evidence() const { return m_evidence; }
     /// The evidence sentence of a finding in the window's language, from the finding's numbers.
     static QString evidenceText(const discovery::Finding& f);
+    /// Against a reference: the outputs where the line moved by another amount than the model form says.
+    static QString responseSizeText(const discovery::Finding& f);
     /// @brief Per-part consistency, transfer, onset and look-alikes of a finding, worded in the GUI's
     /// language.
     static QString specificityText(const discovery::Finding& f);

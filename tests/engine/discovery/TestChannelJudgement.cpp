@@ -80,6 +80,39 @@ private Q_SLOTS:
         QVERIFY(!channelChanges(before, after)[0].measured);
     }
 
+    /// Against a reference a channel is judged by the direction of the cause's effect: a model form
+    /// that moves it three times as much as the line did still points the right way; one that
+    /// moves it five times, the wrong way, or where the line did not move, does not.
+    void againstAReferenceTheDirectionCountsNotTheSize() {
+        std::array<bool, 4> actsOn{};
+        actsOn[kChannel] = true;
+        const auto judged = [&](double removed, double added) {
+            const auto [before, after] = heldOutPair(0.3, removed, added, 7);
+            return responseMismatch(before, after, actsOn);
+        };
+        // As the model says: the effect removes the line's change exactly (scale 1).
+        auto r = judged(1.0, 0.0);
+        QCOMPARE(r.channel, -1);
+        QVERIFY2(std::abs(r.scale[kChannel] - 1) < 0.05, qPrintable(QString::number(r.scale[kChannel])));
+        // The model's effect is three times the line's (it overshoots by twice the change): scale 1/3.
+        r = judged(1.0, -2.0);
+        QCOMPARE(r.channel, -1);
+        QVERIFY2(std::abs(r.scale[kChannel] - 1.0 / 3) < 0.03,
+                 qPrintable(QString::number(r.scale[kChannel])));
+        QVERIFY(r.z[kChannel] > 5);
+        // Five times the line's: beyond a factor of 4, not this cause's.
+        QCOMPARE(judged(1.0, -4.0).channel, kChannel);
+        // The wrong way: the fitted effect pushes the error further (scale -1).
+        r = judged(1.0, 2.0);
+        QCOMPARE(r.channel, kChannel);
+        QVERIFY(r.scale[kChannel] < 0);
+        // The line did not move on this channel at all, the effect does: scale about 0.
+        QCOMPARE(judged(0.0, -0.5).channel, kChannel);
+        // A channel the cause does not act on is never held against it.
+        actsOn[kChannel] = false;
+        QCOMPARE(judged(1.0, 2.0).channel, -1);
+    }
+
     void aLargeEffectThatMissesCountsAgainstTheCause() {
         // The fitted effect (rms 0.5 against an error of 1) is not in the data at all: it adds
         // itself to the error. The channel had every chance to show it.

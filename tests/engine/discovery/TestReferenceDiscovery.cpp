@@ -98,9 +98,10 @@ class TestReferenceDiscovery : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     /// Fouling after a failed cleaning: DryTwin's detector sees it (the model's error grows within
-    /// every batch), from the first batch on. Naming it is another matter: on the distributed
-    /// plant the model's fouling raises the tube-outlet temperature's error while it lowers the
-    /// moisture's (compensation), so it is not named (docs/discovery-study.md, 0 of 6 runs).
+    /// every batch), from the first batch on, and it is named. On the distributed plant the
+    /// model's fouling moves the temperatures 2-3 times as much as the line's does (a lumped tube
+    /// with no gas phase) while it explains the moisture: judged by direction against the
+    /// reference it is the cause, and the finding says the temperatures' size is the model's.
     void foulingAfterAFailedCleaningIsDetected() {
         const auto r = judge(plantData(42, {{Mechanism::HeatTransferFouling, 0.3}}));
         QVERIFY2(r.hasReference, "no reference recorded");
@@ -114,6 +115,15 @@ private Q_SLOTS:
             QVERIFY(f.hasReference);
             QVERIFY(f.referenceCi95Low <= f.referenceValue && f.referenceValue <= f.referenceCi95High);
         }
+        QVERIFY2(namesFirst(r, "heat_transfer_fouling"), qPrintable(story(r)));
+        const auto& f = r.findings.front();
+        QVERIFY(f.responseJudged);
+        // The moisture as the model says, an outlet temperature well under it (the line's gas phase).
+        QVERIFY2(std::abs(f.responseScale[0] - 1) < 0.25, qPrintable(QString::number(f.responseScale[0])));
+        QVERIFY2(std::min(f.responseScale[1], f.responseScale[3]) < 2.0 / 3,
+                 qPrintable(QStringLiteral("%1 %2").arg(f.responseScale[1]).arg(f.responseScale[3])));
+        QVERIFY2(f.evidence.find("times as much as this cause's model form says") != std::string::npos,
+                 f.evidence.c_str());
     }
 
     /// A meter that reads 0.4 % wb high: a change the outlet meter's own history shows.
