@@ -446,6 +446,16 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
             out["parameter"]["reference_value"] = num(f.referenceValue);
             out["parameter"]["reference_ci95"] = {num(f.referenceCi95Low), num(f.referenceCi95High)};
         }
+        if (f.responseJudged) { // an addition to CONTRACT.md §3 (docs/reference-period.md)
+            static const char* const kOutputs[] = {"X_out", "T_out", "X_hdt", "T_hdt"};
+            json scale = json::object();
+            for (std::size_t c = 0; c < 4; ++c) {
+                if (f.actsOn[c]) {
+                    scale[kOutputs[c]] = num(f.responseScale[c]);
+                }
+            }
+            out["response_scale"] = scale;
+        }
     }
     if (r.hasReference) {
         j["reference"] = {
