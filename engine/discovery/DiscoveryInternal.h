@@ -266,9 +266,9 @@ struct Specificity {
 };
 Expected<Specificity> judgeSpecificity(const SpecificityInput& in);
 /// Against a reference: each channel's best scale of the cause's effect (<e, d> / <d, d>, e the
-/// error before it, d what it changes) and the z of its direction (HAC); channel is the first
-/// channel the cause acts on whose change it does not explain in direction or within a factor
-/// of 4 in size, or -1.
+/// error before it, d what it changes) and the z of its distance from the nearer bound of 1/4 and
+/// 4 (HAC); channel is the first channel the cause acts on whose scale lies significantly outside
+/// them (the wrong way, not moved, or off by more than a factor of 4), or -1.
 struct ResponseMismatch {
     int channel = -1;
     std::array<double, 4> scale{}, z{};

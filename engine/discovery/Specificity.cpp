@@ -269,7 +269,7 @@ namespace {
 /// still count as the cause's: a factor of 4 either way (the distributed plant's fouling moves the
 /// temperatures 0.3-0.6 times as much as the model's, its moisture 1.0 times).
 constexpr double kMinResponseScale = 0.25;
-constexpr double kResponseZ = 1.96; ///< the direction must be significant (two-sided 5 %)
+constexpr double kResponseZ = 1.96; ///< beyond a bound significantly (two-sided 5 %) to count against it
 
 } // namespace
 
@@ -279,27 +279,36 @@ ResponseMismatch responseMismatch(const HeldOut& before, const HeldOut& after,
     for (int c = 0; c < 4; ++c) {
         const auto cu = static_cast<std::size_t>(c);
         // The change the cause makes on this channel, d = e_before - e_after, and the error before
-        // it, e: the best scale of the effect is <e, d> / <d, d>; its direction is significant when
-        // Σ e·d is, with a HAC variance per batch (the rows are autocorrelated).
+        // it, e: the best scale of the effect is g = <e, d> / <d, d>. Evidence against the cause is
+        // g significantly below 1/4 (the line moved the wrong way, not at all, or far less than
+        // the model form says) or above 4: the score Σ (e - g0 d)·d at the bound g0, with a HAC
+        // variance per batch (the rows are autocorrelated). Where the channel's noise hides the
+        // effect, the channel cannot judge the cause and does not count against it.
         double ed = 0, dd = 0;
-        std::vector<std::vector<double>> products;
+        std::vector<std::vector<double>> atLow, atHigh;
         for (std::size_t b = 0; b < before.channels.size() && b < after.channels.size(); ++b) {
             const auto& eb = before.channels[b][cu].weightedError;
             const auto& ea = after.channels[b][cu].weightedError;
-            products.emplace_back();
+            atLow.emplace_back();
+            atHigh.emplace_back();
             for (std::size_t i = 0; i < eb.size() && i < ea.size(); ++i) {
                 const double d = eb[i] - ea[i];
                 ed += eb[i] * d;
                 dd += d * d;
-                products.back().push_back(eb[i] * d);
+                atLow.back().push_back((eb[i] - kMinResponseScale * d) * d);
+                atHigh.back().push_back((eb[i] - d / kMinResponseScale) * d);
             }
         }
-        const double var = hacVarianceOfSum(products, true);
-        out.scale[cu] = dd > 0 ? ed / dd : 0.0;
-        out.z[cu] = var > 0 ? ed / std::sqrt(var) : 0.0;
-        if (out.channel < 0 && actsOn[cu] && dd > 0 &&
-            (out.z[cu] < kResponseZ || out.scale[cu] < kMinResponseScale ||
-             out.scale[cu] > 1 / kMinResponseScale)) {
+        if (!(dd > 0)) {
+            continue;
+        }
+        out.scale[cu] = ed / dd;
+        const double varLow = hacVarianceOfSum(atLow, false);
+        const double varHigh = hacVarianceOfSum(atHigh, false);
+        const double zLow = varLow > 0 ? (ed - kMinResponseScale * dd) / std::sqrt(varLow) : 0.0;
+        const double zHigh = varHigh > 0 ? (ed - dd / kMinResponseScale) / std::sqrt(varHigh) : 0.0;
+        out.z[cu] = out.scale[cu] < 1 ? zLow : zHigh;
+        if (out.channel < 0 && actsOn[cu] && (zLow < -kResponseZ || zHigh > kResponseZ)) {
             out.channel = c;
         }
     }
@@ -386,9 +395,9 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
         const double rmsAfter = std::sqrt(ch.mseAfter / w);
         out.why =
             mismatch.channel >= 0
-                ? format("its effect on %s does not point the way that channel changed against the "
-                         "reference (best scale of its effect there %.2g, z = %.2g; needs %.2g to %.2g "
-                         "and z > %.2g): not this cause",
+                ? format("its effect on %s does not match how that output changed against the reference: "
+                         "the best scale of its effect there is %.2g, z = %.2g against the bound of %.2g "
+                         "to %.2g (|z| > %.2g counts): not this cause",
                          kChannelName[c], mismatch.scale[static_cast<std::size_t>(c)],
                          mismatch.z[static_cast<std::size_t>(c)], kMinResponseScale, 1 / kMinResponseScale,
                          kResponseZ)

@@ -99,7 +99,7 @@ private Q_SLOTS:
         QCOMPARE(r.channel, -1);
         QVERIFY2(std::abs(r.scale[kChannel] - 1.0 / 3) < 0.03,
                  qPrintable(QString::number(r.scale[kChannel])));
-        QVERIFY(r.z[kChannel] > 5);
+        QVERIFY(r.z[kChannel] > 0); // above the bound of 1/4
         // Five times the line's: beyond a factor of 4, not this cause's.
         QCOMPARE(judged(1.0, -4.0).channel, kChannel);
         // The wrong way: the fitted effect pushes the error further (scale -1).
@@ -108,6 +108,11 @@ private Q_SLOTS:
         QVERIFY(r.scale[kChannel] < 0);
         // The line did not move on this channel at all, the effect does: scale about 0.
         QCOMPARE(judged(0.0, -0.5).channel, kChannel);
+        // A miss under noise a hundred times the effect: the channel cannot judge the cause.
+        {
+            const auto [before, after] = heldOutPair(30.0, 0.0, -0.05, 8);
+            QCOMPARE(responseMismatch(before, after, actsOn).channel, -1);
+        }
         // A channel the cause does not act on is never held against it.
         actsOn[kChannel] = false;
         QCOMPARE(judged(1.0, 2.0).channel, -1);
