@@ -251,6 +251,16 @@ Status SelectionRound::nameWithLookAlikes() {
     m_model.held = std::move(*m_namedHeld);
     m_model.nuisance.push_back(f.parameter);
     m_model.remaining.erase(std::find(m_model.remaining.begin(), m_model.remaining.end(), f.parameter));
+    // A look-alike the data could not tell from the named cause is part of this finding (its
+    // group): asked about again on its own it would be named a second time for the same change.
+    for (const auto& l : f.lookAlikes) {
+        if (!l.ruledOut) {
+            if (auto it = std::find(m_model.remaining.begin(), m_model.remaining.end(), l.parameter);
+                it != m_model.remaining.end()) {
+                m_model.remaining.erase(it);
+            }
+        }
+    }
     return {};
 }
 
