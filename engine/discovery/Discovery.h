@@ -262,6 +262,11 @@ struct Finding {
     std::array<double, 4> responseScale{};
 };
 
+/// The outputs (0 X_out, 1 T_out, 2 X_hdt, 3 T_hdt) of a finding judged against a reference that
+/// it acts on and where the line moved less than 2/3 or more than 1.5 times what the cause's model
+/// form says: what the evidence sentence (engine and GUI) tells the engineer about.
+std::vector<int> outputsMovedOtherThanModelled(const Finding& f);
+
 /// @brief Structure left after the named causes that matches no mechanism (never forced onto one).
 struct Signature {
     /// "periodic", "lagged_input", "batch_shift", "drift", or "dynamics" (the error follows the

@@ -119,17 +119,10 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
                    "changed.",
                    f.referenceValue, std::string(info.unit).c_str(), f.referenceCi95Low, f.referenceCi95High);
     }
-    if (f.responseJudged) {
-        // Where the line's response differs in size from the model form's: the direction agreed
-        // (else the cause would not be named), the size is the model's (a lumped tube's) to answer.
-        for (int c = 0; c < 4; ++c) {
-            const double scale = f.responseScale[static_cast<std::size_t>(c)];
-            if (f.actsOn[static_cast<std::size_t>(c)] && (scale < 2.0 / 3 || scale > 1.5)) {
-                text += format(" %s moved %.2g times as much as this cause's model form says: the direction "
-                               "agrees, the size is the model's to answer.",
-                               kChannelName[c], scale);
-            }
-        }
+    for (int c : outputsMovedOtherThanModelled(f)) {
+        text += format(" %s moved %.2g times as much as this cause's model form says: the direction "
+                       "agrees, the size is the model's to answer.",
+                       kChannelName[c], f.responseScale[static_cast<std::size_t>(c)]);
     }
     if (!f.perPart.empty()) {
         double lo = f.perPart.front().value, hi = lo;
@@ -197,6 +190,19 @@ std::string inconsistencyReason(const Consistency& c, Param p, double pooled) {
 } // namespace drytwin::discovery::detail
 
 namespace drytwin::discovery {
+
+std::vector<int> outputsMovedOtherThanModelled(const Finding& f) {
+    // Where the line's response differs in size from the model form's: the direction agreed (else
+    // the cause would not be named), the size is the model's (a lumped tube's) to answer.
+    std::vector<int> outputs;
+    for (int c = 0; f.responseJudged && c < 4; ++c) {
+        const double scale = f.responseScale[static_cast<std::size_t>(c)];
+        if (f.actsOn[static_cast<std::size_t>(c)] && (scale < 2.0 / 3 || scale > 1.5)) {
+            outputs.push_back(c);
+        }
+    }
+    return outputs;
+}
 
 std::string describeParts(const std::vector<PartEstimate>& parts) {
     std::string text;

@@ -361,18 +361,7 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
     // significantly is compensation either way (worsenedChannel).
     int notImproved = -1;
     double shortfallP = 1;
-    for (int c = 0; c < 4 && notImproved < 0; ++c) {
-        const auto& ch = changes[static_cast<std::size_t>(c)];
-        if (!actsOn[static_cast<std::size_t>(c)] || !ch.measured || ch.mseAfter < ch.mseBefore) {
-            continue;
-        }
-        const double p = unimprovedChannelP(ch, effectMs[static_cast<std::size_t>(c)]);
-        if (p < in.pr.options.unimprovedChannelAlpha) {
-            notImproved = c;
-            shortfallP = p;
-        }
-    }
-    int worse = worsenedChannel(in.before, in.after, in.pr.options, actsOn);
+    int worse = -1;
     ResponseMismatch mismatch;
     if (in.pr.reference && in.pr.options.referenceJudgesDirection) {
         // Against a reference the line's own structure is already taken off: what is left on a
@@ -382,9 +371,21 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
         // the cause's effect does not point the way the change did, not when its size is off.
         mismatch = responseMismatch(in.before, in.after, actsOn);
         worse = mismatch.channel;
-        notImproved = -1;
         out.responseJudged = true;
         out.responseScale = mismatch.scale;
+    } else {
+        for (int c = 0; c < 4 && notImproved < 0; ++c) {
+            const auto& ch = changes[static_cast<std::size_t>(c)];
+            if (!actsOn[static_cast<std::size_t>(c)] || !ch.measured || ch.mseAfter < ch.mseBefore) {
+                continue;
+            }
+            const double p = unimprovedChannelP(ch, effectMs[static_cast<std::size_t>(c)]);
+            if (p < in.pr.options.unimprovedChannelAlpha) {
+                notImproved = c;
+                shortfallP = p;
+            }
+        }
+        worse = worsenedChannel(in.before, in.after, in.pr.options, actsOn);
     }
     if (worse >= 0 || notImproved >= 0) {
         const int c = worse >= 0 ? worse : notImproved;

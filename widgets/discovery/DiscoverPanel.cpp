@@ -582,14 +582,11 @@ QString DiscoverPanel::responseSizeText(const discovery::Finding& f) {
     // the line moved by a different amount than the model form says, the engineer is told.
     QString text;
     static const char* const kChannels[] = {"X_out", "T_out", "X_hdt", "T_hdt"};
-    for (int c = 0; f.responseJudged && c < 4; ++c) {
-        const double scale = f.responseScale[static_cast<std::size_t>(c)];
-        if (f.actsOn[static_cast<std::size_t>(c)] && (scale < 2.0 / 3 || scale > 1.5)) {
-            text += tr(" %1 moved %2 times as much as this cause's model form says: the direction agrees, "
-                       "the size is the model's to answer.")
-                        .arg(QLatin1String(kChannels[c]))
-                        .arg(scale, 0, 'g', 2);
-        }
+    for (int c : discovery::outputsMovedOtherThanModelled(f)) {
+        text += tr(" %1 moved %2 times as much as this cause's model form says: the direction agrees, "
+                   "the size is the model's to answer.")
+                    .arg(QLatin1String(kChannels[c]))
+                    .arg(f.responseScale[static_cast<std::size_t>(c)], 0, 'g', 2);
     }
     return text;
 }
