@@ -1,0 +1,14 @@
+# Shared by the CLI tests that read a discover.json: reads FILE into the variable `json` and stops
+# the test unless its first finding names CAUSE (WHAT says on which data, for the message; `out`,
+# the program's output, is shown with it).
+macro(drytwin_expect_first_cause FILE CAUSE WHAT)
+  file(READ ${FILE} json)
+  string(JSON count LENGTH "${json}" findings)
+  if(count EQUAL 0)
+    message(FATAL_ERROR "nothing named ${WHAT}:\n${out}")
+  endif()
+  string(JSON cause GET "${json}" findings 0 cause)
+  if(NOT cause STREQUAL "${CAUSE}")
+    message(FATAL_ERROR "first cause named ${WHAT}: ${cause}, not ${CAUSE}:\n${out}")
+  endif()
+endmacro()
