@@ -2,9 +2,6 @@
 
 #include "properties/Properties.h"
 
-#include <algorithm>
-#include <cmath>
-
 namespace drytwin::physics {
 
 using properties::ModelSwitches;
@@ -52,6 +49,10 @@ template <class T> struct AmbientEnvironmentT {
 };
 using AmbientEnvironment = AmbientEnvironmentT<double>;
 
+namespace generic {
+
+namespace pr = properties::generic;
+
 /// @brief How strongly air of relative humidity @p rh [0..1] loads the conveyor's surface strands
 /// (the ambient_reabsorption extension: dX/dt gains θ_reabs · 1e-4 · this). A hygroscopic leaf takes
 /// up water faster than linearly in RH because its sorption isotherm steepens towards saturation:
@@ -60,14 +61,11 @@ using AmbientEnvironment = AmbientEnvironmentT<double>;
 /// RH it replaced (θ_reabs keeps its meaning there). With the linear form the estimate of θ_reabs
 /// moved with each batch's humidity (a dry day's batch gave 0, a humid one's 4), and discovery
 /// turned the cause down as inconsistent; docs/mechanisms.md.
-inline double reabsorptionDrive(double rh, const ParameterSet& p) {
-    const double h = std::clamp(rh, 1e-3, 0.999);
-    return h * std::exp(p[properties::Param::theta_xe3] * std::log(h / (1.0 - h)));
+template <class T> T reabsorptionDrive(const T& rh, const ParameterSet& p) {
+    const T h = properties::math::minOf(properties::math::maxOf(rh, 1e-3), 0.999);
+    return h * properties::math::exp(p[properties::Param::theta_xe3] * properties::math::log(h / (1.0 - h)));
 }
 
-namespace generic {
-
-namespace pr = properties::generic;
 using properties::Param;
 
 /// Energy drawn from the parcel per kg evaporated in Eqs. 12, 14, 19: L_v in the consistent
@@ -141,6 +139,11 @@ SectionRatesT<T> winnowerRates(const T& x, const T& t, double tS, const T& xMix,
 }
 
 } // namespace generic
+
+/// @brief generic::reabsorptionDrive for one parcel.
+inline double reabsorptionDrive(double rh, const ParameterSet& p) {
+    return generic::reabsorptionDrive(rh, p);
+}
 
 /// @brief Energy drawn per kg evaporated (Eqs. 12, 14, 19); see ModelSwitches::consistentEnergyBalance.
 inline double vapourEnthalpy(double tK, double aw, const ParameterSet& p, const ModelSwitches& s) {

@@ -209,14 +209,13 @@ bool conveyorEval(const void* c, double s, std::size_t first, std::size_t count,
                                  // parcels that entered before the batch started, as the tube's
                                  // mechanisms)
                                  const double onset = p[Param::t_onset];
-                                 double uptake[kMaxLanes] = {};
+                                 double active[kMaxLanes] = {};
                                  for (int lane = 0; lane < l.width; ++lane) {
                                      const std::size_t parcel = l.parcel + static_cast<std::size_t>(lane);
-                                     const bool active = onset <= 0 || (*x.entry)[parcel] + s - x.t0 >= onset;
-                                     const double rh = x.locate(parcel, s).of(x.in->rhAmb);
-                                     uptake[lane] = active ? reabsorptionDrive(rh, p) : 0.0;
+                                     active[lane] = onset <= 0 || (*x.entry)[parcel] + s - x.t0 >= onset;
                                  }
-                                 env.extraUptake = reabsorption * 1e-4 * l.load(uptake);
+                                 env.extraUptake = reabsorption * 1e-4 *
+                                                   generic::reabsorptionDrive(env.rh, p) * l.load(active);
                              }
                              return generic::conveyorRates(l.state(0), l.state(1), env, p, sw);
                          });
