@@ -91,6 +91,15 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
         if (r) {
             out.drytwinFlags = r->detection.drytwinChanged;
             out.pcaFlags = r->detection.pca.changed;
+            if (verbose) { // which half of each detector decided, and by how much
+                const auto& d = r->detection;
+                std::printf("  detection: DryTwin monitor %s p %.4g (%s); cause test %s p %.4g (%s); PCA %s p %.4g "
+                            "(%s)\n",
+                            d.drytwin.changed ? "CHANGED" : "normal", d.drytwin.pValue,
+                            d.drytwin.statistic.c_str(), d.causeTest.changed ? "CHANGED" : "normal",
+                            d.causeTest.pValue, d.causeTest.cause.c_str(), d.pca.changed ? "CHANGED" : "normal",
+                            d.pca.pValue, d.pca.statistic.c_str());
+            }
         }
     } else {
         r = discovery::discover(plant::toSiBatches(*p, o.seed), hybrid::HybridModel{}, asked);

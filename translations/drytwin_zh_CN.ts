@@ -1535,7 +1535,12 @@
         <translation>清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="228"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="229"/>
+        <source>A transmitter hung (the same reading for a minute or more) on %1 rows: left out, an input bridged like a dropout.</source>
+        <translation>有变送器卡死（同一读数持续一分钟以上），涉及 %1 行：这些行不参与拟合，输入按断线同样桥接。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="234"/>
         <source>Noted while reading (%1):</source>
         <translation>读取时的提示（%1）：</translation>
     </message>
@@ -1863,7 +1868,7 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="637"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="634"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
@@ -2223,17 +2228,17 @@
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="603"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="600"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="604"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="601"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="621"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="618"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2250,12 +2255,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="645"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="645"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2264,17 +2269,17 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="670"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="667"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="673"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="670"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="681"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="678"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
@@ -2303,76 +2308,76 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="624"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="621"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="634"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="631"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="635"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="632"/>
         <source>, </source>
         <translation>、</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="638"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="635"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="691"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="688"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="707"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="704"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="712"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="709"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="719"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="716"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="724"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="721"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="732"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="729"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="742"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="739"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="533"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="743"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="761"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="740"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="758"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="744"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="741"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="533"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="745"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="765"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="742"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="762"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2392,62 +2397,62 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="588"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="586"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="666"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="663"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="746"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="743"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="747"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="744"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="760"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="757"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="760"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="757"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="761"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="758"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="764"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="761"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="764"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="761"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="765"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="762"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="789"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="786"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="790"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="787"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>

@@ -308,6 +308,8 @@ ZH = {
     "A batch file with your column names": "一个使用您的列名的批次文件",
     "Save the column mapping": "保存列映射",
     "Mappings (*.json)": "映射 (*.json)",
+    "A transmitter hung (the same reading for a minute or more) on %1 rows: left out, an input bridged like a dropout.":
+        "有变送器卡死（同一读数持续一分钟以上），涉及 %1 行：这些行不参与拟合，输入按断线同样桥接。",
     "Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.":
         "清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。",
     " % wb": " % 湿基",

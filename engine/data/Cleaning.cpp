@@ -1,5 +1,6 @@
 #include "data/Cleaning.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace drytwin::data {
@@ -14,16 +15,92 @@ Status CleaningOptions::validate() const {
     if (!(minFeedKgPerHour >= 0 && std::isfinite(minFeedKgPerHour))) {
         return Error{ErrorKind::BadInput, "minFeedKgPerHour", "must be a finite value ≥ 0 kg/h"};
     }
+    if (!(stuckMinS > 0 && std::isfinite(stuckMinS)) || !(stuckRunFactor >= 1 && std::isfinite(stuckRunFactor))) {
+        return Error{ErrorKind::BadInput, "stuckMinS / stuckRunFactor",
+                     "a frozen reading needs a positive least duration [s] and a run factor ≥ 1"};
+    }
     return {};
 }
 
+namespace {
+
+/// Runs of exactly identical finite readings of one column, as [begin, end) rows.
+std::vector<std::pair<std::size_t, std::size_t>> identicalRuns(const std::vector<double>& v) {
+    std::vector<std::pair<std::size_t, std::size_t>> runs;
+    std::size_t begin = 0;
+    for (std::size_t r = 1; r <= v.size(); ++r) {
+        if (r == v.size() || !(v[r] == v[begin])) { // NaN ends a run (and starts none)
+            if (std::isfinite(v[begin])) {
+                runs.emplace_back(begin, r);
+            }
+            begin = r;
+        }
+    }
+    return runs;
+}
+
+/// Frozen stretches of every measured column (not the setpoint, which is written, not measured):
+/// runs of identical readings far longer than the column's own usual ones.
+std::vector<CleaningReport::StuckSpan> frozenReadings(const DataSet& data, const CleaningOptions& o) {
+    std::vector<CleaningReport::StuckSpan> spans;
+    for (const auto& cs : columnSpecs()) {
+        if (cs.role == ColumnRole::Index || cs.id == Column::THotSp) {
+            continue;
+        }
+        std::vector<std::size_t> lengths;
+        for (const auto& b : data.batches) {
+            if (const auto* v = b.values(cs.id)) {
+                for (const auto& [from, to] : identicalRuns(*v)) {
+                    lengths.push_back(to - from);
+                }
+            }
+        }
+        if (lengths.size() < 20) { // too few changes to say what is usual for this column
+            continue;
+        }
+        const auto at = lengths.begin() + static_cast<std::ptrdiff_t>(0.99 * double(lengths.size() - 1));
+        std::nth_element(lengths.begin(), at, lengths.end());
+        const double usualRows = static_cast<double>(*at);
+        for (std::size_t bi = 0; bi < data.batches.size(); ++bi) {
+            const auto& b = data.batches[bi];
+            const auto* v = b.values(cs.id);
+            const auto* t = b.values(Column::Time);
+            if (!v) {
+                continue;
+            }
+            for (const auto& [from, to] : identicalRuns(*v)) {
+                const double rows = static_cast<double>(to - from);
+                const double seconds = t && std::isfinite((*t)[to - 1]) && std::isfinite((*t)[from])
+                                           ? (*t)[to - 1] - (*t)[from]
+                                           : rows - 1;
+                if (rows >= o.stuckRunFactor * usualRows && seconds >= o.stuckMinS) {
+                    spans.push_back({bi, cs.id, from, to, (*v)[from], seconds});
+                }
+            }
+        }
+    }
+    return spans;
+}
+
+} // namespace
+
 CleaningReport clean(const DataSet& data, const CleaningOptions& options) {
     CleaningReport report;
+    if (options.maskStuck) {
+        report.stuck = frozenReadings(data, options);
+    }
     bool anyXhdt = false;
     bool anyThdt = false;
     for (const auto& b : data.batches) {
         const std::size_t n = b.rows();
         std::vector<std::uint8_t> keep(n, 1);
+        std::vector<std::uint8_t> frozen(n, 0);
+        for (const auto& span : report.stuck) {
+            if (span.batch == report.keep.size()) {
+                std::fill(frozen.begin() + static_cast<std::ptrdiff_t>(span.begin),
+                          frozen.begin() + static_cast<std::ptrdiff_t>(span.end), 1);
+            }
+        }
         const auto* xhdt = b.values(Column::XHdt);
         const auto* thdt = b.values(Column::THdt);
         const auto* feed = b.values(Column::Feed);
@@ -61,6 +138,10 @@ CleaningReport clean(const DataSet& data, const CleaningOptions& options) {
             if (impossible) {
                 keep[r] = 0;
                 ++report.droppedImpossible;
+            }
+            if (frozen[r]) {
+                keep[r] = 0;
+                ++report.droppedStuck;
             }
             report.kept += keep[r];
         }

@@ -2,6 +2,7 @@
 
 #include "common/Units.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -58,7 +59,16 @@ std::vector<SiBatch> toSi(const DataSet& data, const CleaningReport& cleaning) {
         s.keep = bi < cleaning.keep.size() ? cleaning.keep[bi] : std::vector<std::uint8_t>(n, 1);
         auto column = [&](Column c) {
             if (const auto* v = b.values(c)) {
-                return *v;
+                auto values = *v;
+                // A frozen reading is no reading: bridged like a dropout for an input, missing
+                // for an output (its rows are masked by the cleaning).
+                for (const auto& span : cleaning.stuck) {
+                    if (span.batch == bi && span.column == c) {
+                        std::fill(values.begin() + static_cast<std::ptrdiff_t>(span.begin),
+                                  values.begin() + static_cast<std::ptrdiff_t>(span.end), nan);
+                    }
+                }
+                return values;
             }
             return std::vector<double>(n, spec(c).defaultValue);
         };

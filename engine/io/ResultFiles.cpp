@@ -240,7 +240,18 @@ std::string inspectJson(const data::DataSetSummary& s) {
                      {"dropped_t_hdt", c.droppedThdt},
                      {"dropped_feed", c.droppedFeed},
                      {"dropped_missing", c.droppedMissing},
-                     {"dropped_impossible", c.droppedImpossible}};
+                     {"dropped_impossible", c.droppedImpossible},
+                     {"dropped_stuck", c.droppedStuck},
+                     {"frozen_readings", json::array()}};
+    for (const auto& f : c.stuck) {
+        j["cleaning"]["frozen_readings"].push_back(
+            {{"batch", f.batch < s.batches.size() ? s.batches[f.batch].id : std::to_string(f.batch)},
+             {"column", std::string(data::spec(f.column).name)},
+             {"first_row", f.begin + 1},
+             {"rows", f.end - f.begin},
+             {"seconds", f.seconds},
+             {"value", f.value}});
+    }
     j["impossible_values"] = {{"total", s.impossibleTotal}, {"listed", json::array()}};
     for (const auto& w : s.impossible) {
         j["impossible_values"]["listed"].push_back({{"file", w.file},

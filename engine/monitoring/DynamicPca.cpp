@@ -68,6 +68,49 @@ int blockIndexOf(double sinceStartS, double blockS) {
     return static_cast<int>(std::floor(sinceStartS / blockS + 1e-9));
 }
 
+// How far (in the other samples' standard deviations) a block's outermost sample must lie to be
+// taken for a spike. Ten and not the usual 3-6: within a 10 s block, autocorrelated noise
+// spreads far less than its marginal SD, and at 6 honest samples of a smooth process were
+// dropped; a transmitter's spike (the plant's: 19-30 of them) is far beyond either.
+constexpr double kSpikeCutoff = 10;
+
+double robustBlockMean(std::vector<double>& samples) {
+    samples.erase(std::remove_if(samples.begin(), samples.end(), [](double v) { return !std::isfinite(v); }),
+                  samples.end());
+    if (samples.empty()) {
+        return kNaN;
+    }
+    double sum = 0;
+    for (double v : samples) {
+        sum += v;
+    }
+    const auto n = static_cast<double>(samples.size());
+    if (samples.size() < 4) { // too few to tell a spike from the noise
+        return sum / n;
+    }
+    // The sample furthest from the others' mean, judged against the others' spread: a block's
+    // own median absolute deviation from ten samples is too noisy a yardstick (it drops honest
+    // samples of Gaussian noise), the spread of the other nine almost never is.
+    std::size_t worst = 0;
+    double worstDistance = -1;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        const double distance = std::abs(samples[i] - (sum - samples[i]) / (n - 1));
+        if (distance > worstDistance) {
+            worstDistance = distance;
+            worst = i;
+        }
+    }
+    const double restMean = (sum - samples[worst]) / (n - 1);
+    double restSq = 0;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        if (i != worst) {
+            restSq += (samples[i] - restMean) * (samples[i] - restMean);
+        }
+    }
+    const double restSd = std::sqrt(restSq / (n - 2));
+    return worstDistance > kSpikeCutoff * std::max(restSd, 1e-9) ? restMean : sum / n;
+}
+
 Eigen::MatrixXd lagBlocks(const std::vector<double>& timeS, const Eigen::MatrixXd& values, double blockS,
                           int lags) {
     const Eigen::Index p = values.cols();
@@ -77,18 +120,18 @@ Eigen::MatrixXd lagBlocks(const std::vector<double>& timeS, const Eigen::MatrixX
     }
     const double t0 = timeS.front();
     const int blocks = std::max(0, blockIndexOf(timeS[rows - 1] - t0, blockS) + 1);
-    Eigen::MatrixXd sums = Eigen::MatrixXd::Zero(blocks, p);
-    Eigen::MatrixXd counts = Eigen::MatrixXd::Zero(blocks, p);
-    for (Eigen::Index i = 0; i < rows; ++i) {
-        const int b = blockIndexOf(timeS[i] - t0, blockS);
-        if (b < 0 || b >= blocks) {
-            continue;
-        }
-        for (Eigen::Index j = 0; j < p; ++j) {
-            const double v = values(i, j);
-            if (std::isfinite(v)) {
-                sums(b, j) += v;
-                counts(b, j) += 1;
+    Eigen::MatrixXd means = Eigen::MatrixXd::Constant(blocks, p, kNaN);
+    std::vector<double> samples;
+    for (Eigen::Index j = 0; j < p; ++j) {
+        Eigen::Index i = 0;
+        while (i < rows) {
+            const int b = blockIndexOf(timeS[i] - t0, blockS);
+            samples.clear();
+            for (; i < rows && blockIndexOf(timeS[i] - t0, blockS) == b; ++i) {
+                samples.push_back(values(i, j));
+            }
+            if (b >= 0 && b < blocks) {
+                means(b, j) = robustBlockMean(samples);
             }
         }
     }
@@ -97,8 +140,7 @@ Eigen::MatrixXd lagBlocks(const std::vector<double>& timeS, const Eigen::MatrixX
         for (int l = 0; l < lags; ++l) {
             for (Eigen::Index j = 0; j < p; ++j) {
                 const int src = b - l;
-                lagged(b, l * p + j) =
-                    (src >= 0 && counts(src, j) > 0) ? sums(src, j) / counts(src, j) : kNaN;
+                lagged(b, l * p + j) = src >= 0 ? means(src, j) : kNaN;
             }
         }
     }

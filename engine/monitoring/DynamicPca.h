@@ -27,7 +27,15 @@ struct DynamicPcaOptions {
 /// Shared by batch and streaming so both cut blocks at the same instants.
 int blockIndexOf(double sinceStartS, double blockS);
 
-/// @brief One run's block means, lag-embedded: row b = [x_b, x_{b−1}, …] (lag-major), NaN where
+/// @brief The mean of one block's finite samples of one column, a one-sample transmitter spike
+/// left out: the sample furthest from the others is dropped when it lies more than 10 of their
+/// standard deviations from their mean (blocks of 4 samples or more). A single spike of 8 K in a
+/// 10 s block would move a plain mean by 0.8 K, more than the noise a monitor is commissioned on,
+/// and raise an alarm no process change caused. NaN when no sample is finite. @p samples loses
+/// its non-finite values.
+double robustBlockMean(std::vector<double>& samples);
+
+/// @brief One run's block means (robustBlockMean), lag-embedded: row b = [x_b, x_{b−1}, …] (lag-major), NaN where
 /// a block of any lag has no valid value (and in the first lags−1 rows).
 Eigen::MatrixXd lagBlocks(const std::vector<double>& timeS, const Eigen::MatrixXd& values, double blockS,
                           int lags);

@@ -41,8 +41,7 @@ Expected<StreamingMonitor> StreamingMonitor::create(const Monitor& monitor,
 void StreamingMonitor::resetRun() {
     m_hasSample = false;
     m_block = 0;
-    m_sums.assign(static_cast<std::size_t>(m_p), 0.0);
-    m_counts.assign(static_cast<std::size_t>(m_p), 0.0);
+    m_blockSamples.assign(static_cast<std::size_t>(m_p), {});
     m_lagBlocks.clear();
     m_sumLogT2 = m_sumLogSpe = 0;
     m_validBlocks = 0;
@@ -78,10 +77,7 @@ Expected<std::vector<StreamingWindow>> StreamingMonitor::push(double timeS, cons
         ++m_block;
     }
     for (int j = 0; j < m_p; ++j) {
-        if (std::isfinite(row[j])) {
-            m_sums[static_cast<std::size_t>(j)] += row[j];
-            m_counts[static_cast<std::size_t>(j)] += 1;
-        }
+        m_blockSamples[static_cast<std::size_t>(j)].push_back(row[j]);
     }
     return out;
 }
@@ -99,11 +95,10 @@ std::vector<StreamingWindow> StreamingMonitor::endRun() {
 void StreamingMonitor::completeBlock(std::vector<StreamingWindow>& out) {
     Eigen::VectorXd mean(m_p);
     for (int j = 0; j < m_p; ++j) {
-        const auto k = static_cast<std::size_t>(j);
-        mean[j] = m_counts[k] > 0 ? m_sums[k] / m_counts[k] : kNaN;
+        auto& samples = m_blockSamples[static_cast<std::size_t>(j)];
+        mean[j] = robustBlockMean(samples); // as lagBlocks, so a stream is judged as a batch is
+        samples.clear();
     }
-    m_sums.assign(static_cast<std::size_t>(m_p), 0.0);
-    m_counts.assign(static_cast<std::size_t>(m_p), 0.0);
     const int lags = m_monitor.options().lags;
     m_lagBlocks.push_front(std::move(mean));
     if (static_cast<int>(m_lagBlocks.size()) > lags) {

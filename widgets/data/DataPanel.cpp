@@ -223,6 +223,12 @@ void DataPanel::fill() {
             .arg(c.droppedImpossible)
             .arg(train)
             .arg(test) +
+        (c.droppedStuck == 0
+             ? QString()
+             : QStringLiteral(" ") +
+                   tr("A transmitter hung (the same reading for a minute or more) on %1 rows: left out, an "
+                      "input bridged like a dropout.")
+                       .arg(c.droppedStuck)) +
         (summary.notes.empty()
              ? QString()
              : QStringLiteral("\n") + tr("Noted while reading (%1):").arg(summary.notes.size()) +

@@ -366,6 +366,50 @@ private Q_SLOTS:
         QVERIFY(std::isnan(si[0].xOutDb[4]));
     }
 
+    // A transmitter that hangs (the same reading for minutes) is no reading: its rows are dropped
+    // from fits and an input is bridged like a dropout. A column that is often held by its
+    // coarse resolution (a hall thermometer) is not taken for frozen.
+    void frozenReadingsAreMaskedAndBridged() {
+        std::string s = std::string(kHeader) + "\n";
+        const auto feedAt = [](int i) { return 6200 + 40 * std::sin(0.05 * i) + (i % 2); };
+        for (int i = 0; i < 600; ++i) {
+            const double feed = i >= 200 && i < 300 ? feedAt(200) : feedAt(i);   // frozen 100 s
+            const double xOut = i >= 400 && i < 480 ? 12.8 : 12.81 + 0.01 * (i % 7); // frozen 80 s
+            const double tAmb = 24 + 0.1 * (i / 30);                               // held 30 s at a time
+            char line[256];
+            std::snprintf(line, sizeof line, "%d,170,%.1f,16,%.4f,22,25,%.1f,55,14,58,%.2f,55.2\n", i,
+                          169.5 + 0.1 * (i % 3), feed, tAmb, xOut);
+            s += line;
+        }
+        DataSet ds;
+        ds.batches.push_back(*parseBatchText(s, "frozen.csv"));
+        const auto rep = clean(ds);
+        QCOMPARE(rep.stuck.size(), std::size_t(2));
+        QCOMPARE(rep.droppedStuck, std::size_t(180));
+        bool feedSpan = false, xOutSpan = false;
+        for (const auto& span : rep.stuck) {
+            feedSpan = feedSpan || (span.column == Column::Feed && span.begin == 200 && span.end == 300 &&
+                                    span.seconds == 99);
+            xOutSpan = xOutSpan || (span.column == Column::XOut && span.begin == 400 && span.end == 480);
+        }
+        QVERIFY(feedSpan && xOutSpan);
+        QCOMPARE(int(rep.keep[0][250]), 0);
+        QCOMPARE(int(rep.keep[0][199]), 1);
+        const auto si = toSi(ds, rep);
+        // The frozen feed is bridged from its last reading before to its first after.
+        const double before = feedAt(199) / 3600, after = feedAt(300) / 3600;
+        QVERIFY(std::abs(si[0].feedKgPerS[250] - (before + (after - before) * 51.0 / 101.0)) < 1e-7); // file: 4 decimals
+        QVERIFY(std::isnan(si[0].xOutDb[450]));
+        QVERIFY(!std::isnan(si[0].xOutDb[480]));
+        // Switched off, nothing is masked; an impossible setting is refused.
+        CleaningOptions off;
+        off.maskStuck = false;
+        QCOMPARE(clean(ds, off).droppedStuck, std::size_t(0));
+        CleaningOptions bad;
+        bad.stuckRunFactor = 0.5;
+        QVERIFY(!bad.validate().ok());
+    }
+
     void siConversionAndSplits() {
         std::string s = std::string(kHeader) + "\n";
         for (int i = 0; i < 100; ++i) {

@@ -260,6 +260,34 @@ private Q_SLOTS:
         QVERIFY2(anyAlarm <= 4, qPrintable(QString("%1 of 40 with an alarm").arg(anyAlarm)));
     }
 
+    // A transmitter's one-sample spike is not a change of the line: the block mean leaves it out
+    // (and only it), so new runs with a spike every few minutes in one column judge as normal.
+    void aSpikeIsNotAChange() {
+        std::vector<double> block{1.0, 1.1, 0.9, 1.0, 50.0, 1.0, 1.05, 0.95, 1.0, 1.0};
+        QCOMPARE(robustBlockMean(block), 9.0 / 9.0 + (0.1 - 0.1 + 0.05 - 0.05) / 9.0);
+        std::vector<double> honest{1.0, 1.3, 0.7, 1.0, 1.6, 1.0, 1.05, 0.95, 1.0, std::nan("")};
+        QCOMPARE(robustBlockMean(honest), (1.0 + 1.3 + 0.7 + 1.0 + 1.6 + 1.0 + 1.05 + 0.95 + 1.0) / 9.0);
+        std::vector<double> none{std::nan(""), std::nan("")};
+        QVERIFY(std::isnan(robustBlockMean(none)));
+
+        const Process proc;
+        auto m = Monitor::fit(proc.runs(11, 4, 3000, "ref"), proc.names());
+        QVERIFY2(m.ok(), why(m).c_str());
+        auto newRuns = proc.runs(5003, 4, 3000, "new");
+        const auto clean = m->judge(newRuns);
+        QVERIFY2(clean.ok(), why(clean).c_str());
+        QVERIFY(!clean->changed);
+        for (auto& run : newRuns) {
+            for (Eigen::Index t = 97; t < run.values.rows(); t += 211) { // 14 spikes a run
+                run.values(t, 2) += 30 * proc.marginalSd(2);
+            }
+        }
+        const auto spiky = m->judge(newRuns);
+        QVERIFY2(spiky.ok(), why(spiky).c_str());
+        QVERIFY(!spiky->changed);
+        QCOMPARE(spiky->pValue, clean->pValue); // the spikes changed no block at all
+    }
+
     void meanShiftIsFoundWithItsOnsetAndColumn() {
         const Process proc;
         const int rows = 3000, shiftRow = 1800; // 60 % into the third run
