@@ -413,6 +413,11 @@ struct LineStructure {
     /// The reference so corrected, each part by a fit on the other parts (an honest null).
     std::vector<data::SiBatch> referenceCorrected;
 };
+/// @brief Notes for each new batch whose typical input value (its median) lies outside what the
+/// reference saw (its 0.5-99.5 % range widened by a quarter of the span), naming the input, its
+/// value and the reference's range (ReferenceDiscovery.cpp).
+std::vector<std::string> operatingRangeNotes(const std::vector<data::SiBatch>& reference,
+                                             const std::vector<data::SiBatch>& batches);
 LineStructure learnLineStructure(const std::vector<data::SiBatch>& reference,
                                  const std::vector<physics::SimulationResult>& refSims);
 /// Progress at a fraction of the whole discovery; true when the user stopped it.

@@ -14,6 +14,7 @@
 #include "monitoring/Monitor.h"
 
 #include <algorithm>
+#include <boost/math/distributions/chi_squared.hpp>
 #include <chrono>
 #include <cmath>
 
@@ -60,6 +61,12 @@ ReferenceValue normalValue(const Problem& pr, const Stack& st, int col, double t
             between += (e.value - mean) * (e.value - mean);
         }
         between /= n - 1;
+        // From 3-4 parts the between-part variance has 2-3 degrees of freedom and falls short of
+        // the truth half the time, and a new period then sits beyond the normal spread by chance.
+        // Its upper 75 % confidence bound, (K − 1) s² / χ²_{0.25, K−1}, as the monitor's null
+        // takes its run effects (monitoring/ChangePoint.cpp): one rule for both halves of the detector.
+        const boost::math::chi_squared chi(n - 1);
+        between *= (n - 1) / boost::math::quantile(chi, 0.25);
         rv.spread = std::sqrt(std::max(0.0, between - ownVariance));
     }
     return rv;
@@ -128,6 +135,69 @@ Expected<std::string> judgeAgainstReference(const Problem& pr, Finding& f) {
                   "reference period",
                   f.value, std::string(info.unit).c_str(), rv->value, f.referenceCi95Low,
                   f.referenceCi95High);
+}
+
+/// Notes for each batch of the new data whose typical value of an input (its median) lies
+/// outside what the reference saw (its 0.5-99.5 % range, widened by a quarter of the span): the
+/// model's error there is judged beyond the reference's conditions, and the detectors may take
+/// the unseen condition for a change (a hot summer day against a winter reference).
+std::vector<std::string> operatingRangeNotes(const std::vector<data::SiBatch>& reference,
+                                             const std::vector<data::SiBatch>& batches) {
+    struct Input {
+        const char* name;
+        const char* unit;
+        double (*at)(const data::SiBatch& b, std::size_t k);
+    };
+    static const Input inputs[] = {
+        {"T_hot_C", "°C", [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tHotK[k]); }},
+        {"air_speed_m_s", "m/s", [](const data::SiBatch& b, std::size_t k) { return b.airSpeedMPerS[k]; }},
+        {"feed_kg_h", "kg/h", [](const data::SiBatch& b, std::size_t k) { return 3600 * b.feedKgPerS[k]; }},
+        {"X_in_pct", "% wb", [](const data::SiBatch& b, std::size_t k) { return units::dryToWetPct(b.xInDb[k]); }},
+        {"T_in_C", "°C", [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tInK[k]); }},
+        {"T_amb_C", "°C", [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tAmbK[k]); }},
+        {"RH_amb_pct", "%", [](const data::SiBatch& b, std::size_t k) { return 100 * b.rhAmb[k]; }},
+    };
+    const auto quantile = [](std::vector<double>& v, double q) {
+        const auto at = v.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
+        std::nth_element(v.begin(), at, v.end());
+        return *at;
+    };
+    std::vector<std::string> notes;
+    for (const auto& in : inputs) {
+        std::vector<double> seen;
+        for (const auto& b : reference) {
+            for (std::size_t k = 0; k < b.rows(); ++k) {
+                if (b.keep[k] && std::isfinite(in.at(b, k))) {
+                    seen.push_back(in.at(b, k));
+                }
+            }
+        }
+        if (seen.size() < 100) {
+            continue;
+        }
+        const double lo = quantile(seen, 0.005), hi = quantile(seen, 0.995);
+        const double margin = 0.25 * (hi - lo);
+        for (const auto& b : batches) {
+            std::vector<double> v;
+            for (std::size_t k = 0; k < b.rows(); ++k) {
+                if (b.keep[k] && std::isfinite(in.at(b, k))) {
+                    v.push_back(in.at(b, k));
+                }
+            }
+            if (v.empty()) {
+                continue;
+            }
+            const double typical = quantile(v, 0.5);
+            if (typical < lo - margin || typical > hi + margin) {
+                notes.push_back(format("%s: %s is typically %.4g %s, outside what the reference saw (%.4g to %.4g "
+                                       "%s): the model's error there is judged beyond the reference's "
+                                       "conditions, and an alarm there may be that condition rather than a "
+                                       "change of the line",
+                                       b.id.c_str(), in.name, typical, in.unit, lo, hi, in.unit));
+            }
+        }
+    }
+    return notes;
 }
 
 } // namespace detail
@@ -389,6 +459,9 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
             "the model's outputs, penalty %.0e) learnt on the reference and taken off the measurements: the "
             "residuals below are what is left",
             structure.lambda));
+    }
+    for (auto& note : detail::operatingRangeNotes(reference, batches)) {
+        result.notes.push_back(std::move(note));
     }
     if (!options.causes.empty()) {
         std::string list;

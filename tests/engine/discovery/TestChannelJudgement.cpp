@@ -211,6 +211,35 @@ private Q_SLOTS:
         const double p = unimprovedChannelP(ch, 0.25);
         QVERIFY2(p > 0.01, qPrintable(QString::number(p)));
     }
+
+    // A new period on a hot day against a reference of cooler days: the judgement says the
+    // conditions were never seen, for that batch and that input only.
+    void aConditionTheReferenceNeverSawIsNamed() {
+        const auto batchAt = [](const std::string& id, double ambientC, double rows) {
+            drytwin::data::SiBatch b;
+            b.id = id;
+            for (int k = 0; k < rows; ++k) {
+                b.timeS.push_back(k);
+                b.tHotK.push_back(423.15 + std::sin(0.01 * k));
+                b.airSpeedMPerS.push_back(16);
+                b.feedKgPerS.push_back(6200.0 / 3600);
+                b.xInDb.push_back(0.28);
+                b.tInK.push_back(298.15);
+                b.tAmbK.push_back(273.15 + ambientC + 0.5 * std::sin(0.003 * k));
+                b.rhAmb.push_back(0.5);
+                b.keep.push_back(1);
+            }
+            return b;
+        };
+        const std::vector<drytwin::data::SiBatch> reference{batchAt("R1", 12, 600), batchAt("R2", 22, 600)};
+        const auto notes =
+            operatingRangeNotes(reference, {batchAt("N1", 18, 300), batchAt("N2", 31.7, 300)});
+        QCOMPARE(notes.size(), std::size_t(1));
+        QVERIFY2(notes.front().rfind("N2: T_amb_C is typically 31.", 0) == 0 &&
+                     notes.front().find("outside what the reference saw (12.0") != std::string::npos,
+                 notes.front().c_str());
+        QVERIFY(operatingRangeNotes(reference, {batchAt("N3", 24, 300)}).empty()); // within the margin
+    }
 };
 
 QTEST_APPLESS_MAIN(TestChannelJudgement)
