@@ -25,6 +25,14 @@ struct DiscoveryOptions {
     /// Screening: a candidate is fitted when its score test (HAC variance) has p below this in the
     /// direction that helps. Deliberately liberal; the confirmatory decision is the held-out test.
     double screenAlpha = 0.05;
+    /// Against a reference, once a detector has flagged a change: the screen's level for the
+    /// causes' change tests. A change is then established at the detectors' stated rate, and the
+    /// screen only ranks the candidates; each one fitted is still judged by the held-out test, the
+    /// direction on every output, consistency, floors, look-alikes and its normal spread. A
+    /// single recording against a few reference runs gives its change tests little power (one
+    /// hour of fouling at twice its default: z 1.4 on every cause alike), and the screen at 0.05
+    /// then fitted none of them. 0: the screen stays at screenAlpha.
+    double screenAlphaOnceDetected = 0.49;
     /// Level of the one-sided held-out Diebold-Mariano test that names a cause. The rounds form a
     /// fixed sequence: the candidate of each round is chosen on the training part alone, and the
     /// selection stops at the first round whose held-out test fails, which keeps the chance of

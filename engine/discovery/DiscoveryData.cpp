@@ -14,6 +14,10 @@ Status DiscoveryOptions::validate() const {
         !(minExplainedFraction >= 0 && minExplainedFraction < 1)) {
         return invalidOption("alpha", "test levels must lie in (0, 0.5), the explained share in [0, 1)");
     }
+    if (!(screenAlphaOnceDetected >= 0 && screenAlphaOnceDetected < 0.5)) {
+        return invalidOption("screenAlphaOnceDetected", "the screen's level once a change is detected must lie "
+                                                        "in [0, 0.5) (0: unchanged)");
+    }
     if (!(falseAlarmRate > 0 && falseAlarmRate < 0.5)) {
         return invalidOption("false-alarm rate", "must lie in (0, 0.5)");
     }

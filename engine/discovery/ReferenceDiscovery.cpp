@@ -493,6 +493,10 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
         return detection.error();
     }
     result.detection = std::move(*detection);
+    if (result.detection.changed && options.screenAlphaOnceDetected > 0) {
+        auto& screen = prepared->pr.options.screenAlpha;
+        screen = std::max(screen, options.screenAlphaOnceDetected);
+    }
 
     ModelSoFar extended{commissionedParameters, stackLoss(*lossStack), {},
                         std::move(remaining),   std::move(sims),       result.residuals,
