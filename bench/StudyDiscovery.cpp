@@ -9,7 +9,8 @@
 //      [--candidates N (fitted per round; default 3)] [--evaluations N (per fit; default 120)]
 //      [--oracle (each mechanism run asks about its hidden cause alone)]
 //      [--reference (issue #41: each run judged against healthy data of another seed, 4 x 3,000 s,
-//      by discoverChange; the detectors' flags in each row)] [--no-structure (with --reference: the
+//      by discoverChange; the detectors' flags in each row, and each seed's healthy run first: a detector that
+//      flags it flags the seed's conditions, not the mechanism)] [--no-structure (with --reference: the
 //      line's own structure not learnt, the causes' normal values alone)] [--size-rule (with --reference:
 //      an output a cause acts on counts against it when its error rises, as alone; the rule before
 //      2026-11-27, instead of the direction of the cause's effect)] [--seeds FIRST (mechanism runs'
@@ -309,6 +310,7 @@ int main(int argc, char** argv) {
         {plant::Mechanism::InletMoistureSensorNoise, 0.4, 2}};
     int runs = 0, right = 0, asGroup = 0, withFalse = 0;
     int flaggedEither = 0, rightWhenFlagged = 0, pcaFlagged = 0, pcaMissedByDrytwin = 0;
+    int pcaFlaggedHealthySeed = 0, pcaMissedOnHealthyFlaggedSeed = 0, drytwinFlaggedHealthySeed = 0;
     const auto flags = [](const Outcome& out) {
         return againstReference ? std::string(out.drytwinFlags ? "D" : "-") + (out.pcaFlags ? "P" : "-")
                                 : std::string("");
@@ -317,6 +319,22 @@ int main(int argc, char** argv) {
         std::printf("| mechanism | strength | seed | named | right first | detected (D DryTwin, P PCA) | s "
                     "|\n| --- | "
                     "--- | --- | --- | --- | --- | --- |\n");
+        // Against a reference: each seed's own healthy run (the same line, weather and sensor faults,
+        // no mechanism), judged first. A detector that flags it flags that seed's conditions (a
+        // weather the reference never saw), not the mechanism: its flags on that seed's mechanism
+        // runs are counted apart.
+        bool healthyPcaFlags[3] = {false, false, false}, healthyDrytwinFlags[3] = {false, false, false};
+        if (againstReference) {
+            for (int s = 0; s < nSeeds; ++s) {
+                plant::PlantOptions o = options();
+                o.seed = seeds[s];
+                const auto out = run(o, "");
+                healthyPcaFlags[s] = out.pcaFlags;
+                healthyDrytwinFlags[s] = out.drytwinFlags;
+                std::printf("| (none: the seed's healthy run) | 0 | %u | %s | - | %s | %.1f |\n", o.seed,
+                            out.named.c_str(), flags(out).c_str(), out.seconds);
+            }
+        }
         for (const auto& [m, strength, other] : cases) {
             if (!only.empty() && only != plant::info(m).name) {
                 continue;
@@ -336,6 +354,9 @@ int main(int argc, char** argv) {
                     rightWhenFlagged += (out.drytwinFlags || out.pcaFlags) && out.rightFirst;
                     pcaFlagged += out.pcaFlags;
                     pcaMissedByDrytwin += out.pcaFlags && !out.drytwinFlags;
+                    pcaFlaggedHealthySeed += out.pcaFlags && healthyPcaFlags[s];
+                    pcaMissedOnHealthyFlaggedSeed += out.pcaFlags && !out.drytwinFlags && healthyPcaFlags[s];
+                    drytwinFlaggedHealthySeed += out.drytwinFlags && healthyDrytwinFlags[s];
                     std::printf("| %s | %g | %u | %s | %s | %s | %.1f |\n", hidden.c_str(), strength * scale,
                                 o.seed, out.named.c_str(),
                                 out.rightFirst ? (out.asGroup ? "yes (group)" : "yes") : "no",
@@ -411,6 +432,11 @@ int main(int argc, char** argv) {
                 "Flagged by either detector: %d of %d; of those, hidden cause named first: %d. PCA flags "
                 "%d, of which DryTwin's detector misses %d.\n",
                 flaggedEither, runs, rightWhenFlagged, pcaFlagged, pcaMissedByDrytwin);
+            std::printf("On seeds whose own healthy run a detector flags too (its conditions, not the mechanism): PCA "
+                        "flags %d (DryTwin misses %d of them), DryTwin %d. So on the other seeds DryTwin misses %d "
+                        "of the %d runs the PCA flags.\n",
+                        pcaFlaggedHealthySeed, pcaMissedOnHealthyFlaggedSeed, drytwinFlaggedHealthySeed,
+                        pcaMissedByDrytwin - pcaMissedOnHealthyFlaggedSeed, pcaFlagged - pcaFlaggedHealthySeed);
         }
     }
     if (nullRuns > 0) {
