@@ -1868,7 +1868,7 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="634"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="645"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
@@ -2100,7 +2100,7 @@
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="411"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="422"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
@@ -2109,107 +2109,107 @@
         <translation type="vanished">误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="426"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="437"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="431"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="442"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="443"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="454"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="450"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="461"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="465"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="476"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="470"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="481"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="470"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="481"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="473"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="484"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="477"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="488"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="486"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="497"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="492"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="503"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="505"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="516"/>
         <source>%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts %4 better; which output a cause favours is the model&apos;s structure, so the data cannot tell them apart.</source>
         <translation>%1 同样拟合：总体上它留下 %2 倍的留出误差（p = %3），但它对%4的预测更好；原因偏向哪个输出取决于模型自身的结构，因此数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="511"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="522"/>
         <source>the outlet moisture</source>
         <translation>出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="512"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="523"/>
         <source>the outlet temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="513"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="524"/>
         <source>the tube-outlet moisture</source>
         <translation>管出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="514"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="525"/>
         <source>the tube-outlet temperature</source>
         <translation>管出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="518"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="529"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="519"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="530"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="526"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="537"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="538"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="549"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="542"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="553"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -2218,27 +2218,27 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="559"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="570"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="559"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="570"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="600"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="611"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="601"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="612"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="618"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="629"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2255,12 +2255,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="653"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="653"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2269,37 +2269,37 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="667"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="678"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="670"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="681"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="678"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="689"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="440"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="451"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="543"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="554"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="544"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="555"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="548"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="559"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
@@ -2308,76 +2308,76 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="621"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="632"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="631"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="632"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="643"/>
         <source>, </source>
         <translation>、</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="635"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="646"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="688"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="699"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="704"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="709"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="720"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="716"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="727"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="721"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="732"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="729"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="740"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="739"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="750"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="533"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="740"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="758"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="544"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="751"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="769"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="741"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="752"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="533"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="742"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="762"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="544"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="753"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="773"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2387,72 +2387,77 @@
         <translation>它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="416"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="410"/>
+        <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the model&apos;s error there is judged beyond the reference&apos;s conditions, and an alarm there may be that condition rather than a change of the line.</source>
+        <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="427"/>
         <source>the error follows %1 %2 s later (correlation %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（相关系数 %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="554"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="565"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="586"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="597"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="663"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="674"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="743"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="754"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="744"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="755"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="757"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="768"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="757"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="768"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="758"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="769"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="761"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="772"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="761"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="772"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="762"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="773"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="786"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="797"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="787"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="798"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>

@@ -158,6 +158,10 @@ void DiscoverPanel::showReference() {
     m_referenceLabel->setToolTip(path);
 }
 
+namespace {
+QString noteText(const std::string& note); // below, with the other wordings of engine texts
+} // namespace
+
 void DiscoverPanel::showDetection() {
     const auto& r = m_workbench.latest().discover;
     m_monitorPlots->clearCurves();
@@ -195,13 +199,21 @@ void DiscoverPanel::showDetection() {
                   .arg(causeDisplayName(det.causeTest.cause).toHtmlEscaped())
             : tr("DryTwin (the causes' parameters): none moved beyond its normal spread (p = %1)")
                   .arg(det.causeTest.pValue, 0, 'g', 2);
+    // Conditions the reference never saw, beside the verdict they may explain.
+    QString unseenConditions;
+    for (const auto& n : r->discovery.notes) {
+        if (n.find("outside what the reference saw") != std::string::npos) {
+            unseenConditions += QStringLiteral("<br><span style=\"color:#a05a00\">%1</span>")
+                                    .arg(noteText(n).toHtmlEscaped());
+        }
+    }
     m_detection->setText(
         (det.changed ? tr("<b>The line has changed since the reference period.</b>")
                      : tr("<b>No change against the reference period.</b>")) +
         tr(" Each detector's false-alarm rate: %1 % per data set.").arg(100 * det.falseAlarmRate, 0, 'g', 2) +
         QStringLiteral("<br>") + describe(tr("DryTwin (the model's error)"), det.drytwin) +
         QStringLiteral("<br>") + causes + QStringLiteral("<br>") +
-        describe(tr("Dynamic PCA (the measured columns)"), det.pca));
+        describe(tr("Dynamic PCA (the measured columns)"), det.pca) + unseenConditions);
     m_detection->setVisible(true);
     // The windows of both monitors, batches one after another, each statistic over its limit's
     // scale so that both detectors share one axis: above 1 is beyond the reference's 99 %.
@@ -401,6 +413,17 @@ QString noteText(const std::string& note) {
                    "The inlet gauge's normal scatter: %1 % of X_in's fast variation (%2 % wb) is taken "
                    "as gauge scatter, not moisture, in the starting model.")
             .arg(numbers().at(0), numbers().at(1));
+    }
+    // ReferenceDiscovery.cpp's operatingRangeNotes: "B04: T_amb_C is typically 31.6 °C, outside what
+    // the reference saw (11 to 23 °C): ..."
+    static const QRegularExpression outside(QStringLiteral(
+        "^(.+): (\\S+) is typically (\\S+) (.+), outside what the reference saw \\((\\S+) to (\\S+) "));
+    if (const auto m = outside.match(n); m.hasMatch()) {
+        return DiscoverPanel::tr("%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "
+                                 "model's error there is judged beyond the reference's conditions, and an alarm "
+                                 "there may be that condition rather than a change of the line.")
+            .arg(m.captured(1), columnDisplayName(m.captured(2).toStdString()), m.captured(3), m.captured(4),
+                 m.captured(5), m.captured(6));
     }
     return n;
 }
