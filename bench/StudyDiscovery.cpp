@@ -9,8 +9,8 @@
 //      [--candidates N (fitted per round; default 3)] [--evaluations N (per fit; default 120)]
 //      [--oracle (each mechanism run asks about its hidden cause alone)]
 //      [--reference (issue #41: each run judged against healthy data of another seed, 4 x 3,000 s,
-//      by discoverChange; the detectors' flags in each row, and each seed's healthy run first: a detector that
-//      flags it flags the seed's conditions, not the mechanism)] [--no-structure (with --reference: the
+//      by discoverChange; the detectors' flags in each row, and each seed's healthy run first: a detector
+//      that flags it flags the seed's conditions, not the mechanism)] [--no-structure (with --reference: the
 //      line's own structure not learnt, the causes' normal values alone)] [--size-rule (with --reference:
 //      an output a cause acts on counts against it when its error rises, as alone; the rule before
 //      2026-11-27, instead of the direction of the cause's effect)] [--seeds FIRST (mechanism runs'
@@ -94,12 +94,12 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
             out.pcaFlags = r->detection.pca.changed;
             if (verbose) { // which half of each detector decided, and by how much
                 const auto& d = r->detection;
-                std::printf("  detection: DryTwin monitor %s p %.4g (%s); cause test %s p %.4g (%s); PCA %s p %.4g "
-                            "(%s)\n",
-                            d.drytwin.changed ? "CHANGED" : "normal", d.drytwin.pValue,
-                            d.drytwin.statistic.c_str(), d.causeTest.changed ? "CHANGED" : "normal",
-                            d.causeTest.pValue, d.causeTest.cause.c_str(), d.pca.changed ? "CHANGED" : "normal",
-                            d.pca.pValue, d.pca.statistic.c_str());
+                std::printf(
+                    "  detection: DryTwin monitor %s p %.4g (%s); cause test %s p %.4g (%s); PCA %s p %.4g "
+                    "(%s)\n",
+                    d.drytwin.changed ? "CHANGED" : "normal", d.drytwin.pValue, d.drytwin.statistic.c_str(),
+                    d.causeTest.changed ? "CHANGED" : "normal", d.causeTest.pValue, d.causeTest.cause.c_str(),
+                    d.pca.changed ? "CHANGED" : "normal", d.pca.pValue, d.pca.statistic.c_str());
             }
         }
     } else {
@@ -432,11 +432,13 @@ int main(int argc, char** argv) {
                 "Flagged by either detector: %d of %d; of those, hidden cause named first: %d. PCA flags "
                 "%d, of which DryTwin's detector misses %d.\n",
                 flaggedEither, runs, rightWhenFlagged, pcaFlagged, pcaMissedByDrytwin);
-            std::printf("On seeds whose own healthy run a detector flags too (its conditions, not the mechanism): PCA "
-                        "flags %d (DryTwin misses %d of them), DryTwin %d. So on the other seeds DryTwin misses %d "
-                        "of the %d runs the PCA flags.\n",
-                        pcaFlaggedHealthySeed, pcaMissedOnHealthyFlaggedSeed, drytwinFlaggedHealthySeed,
-                        pcaMissedByDrytwin - pcaMissedOnHealthyFlaggedSeed, pcaFlagged - pcaFlaggedHealthySeed);
+            std::printf(
+                "On seeds whose own healthy run a detector flags too (its conditions, not the mechanism): "
+                "PCA "
+                "flags %d (DryTwin misses %d of them), DryTwin %d. So on the other seeds DryTwin misses %d "
+                "of the %d runs the PCA flags.\n",
+                pcaFlaggedHealthySeed, pcaMissedOnHealthyFlaggedSeed, drytwinFlaggedHealthySeed,
+                pcaMissedByDrytwin - pcaMissedOnHealthyFlaggedSeed, pcaFlagged - pcaFlaggedHealthySeed);
         }
     }
     if (nullRuns > 0) {

@@ -338,7 +338,8 @@ int partFreeRun(bool quick) {
             if (oracle) {
                 const auto m = freeRunMae(views, corrected(*oracle));
                 const auto mt = freeRunMae(truthViews, corrected(*oracle));
-                std::fprintf(stderr, "  oracle (lags fitted on the judged rows): X %.4f (%.4f) T %.3f (%.3f)\n",
+                std::fprintf(stderr,
+                             "  oracle (lags fitted on the judged rows): X %.4f (%.4f) T %.3f (%.3f)\n",
                              m.first, mt.first, m.second, mt.second);
             }
         }

@@ -15,7 +15,8 @@ Status CleaningOptions::validate() const {
     if (!(minFeedKgPerHour >= 0 && std::isfinite(minFeedKgPerHour))) {
         return Error{ErrorKind::BadInput, "minFeedKgPerHour", "must be a finite value ≥ 0 kg/h"};
     }
-    if (!(stuckMinS > 0 && std::isfinite(stuckMinS)) || !(stuckRunFactor >= 1 && std::isfinite(stuckRunFactor))) {
+    if (!(stuckMinS > 0 && std::isfinite(stuckMinS)) ||
+        !(stuckRunFactor >= 1 && std::isfinite(stuckRunFactor))) {
         return Error{ErrorKind::BadInput, "stuckMinS / stuckRunFactor",
                      "a frozen reading needs a positive least duration [s] and a run factor ≥ 1"};
     }

@@ -15,8 +15,9 @@ Status DiscoveryOptions::validate() const {
         return invalidOption("alpha", "test levels must lie in (0, 0.5), the explained share in [0, 1)");
     }
     if (!(screenAlphaOnceDetected >= 0 && screenAlphaOnceDetected < 0.5)) {
-        return invalidOption("screenAlphaOnceDetected", "the screen's level once a change is detected must lie "
-                                                        "in [0, 0.5) (0: unchanged)");
+        return invalidOption("screenAlphaOnceDetected",
+                             "the screen's level once a change is detected must lie "
+                             "in [0, 0.5) (0: unchanged)");
     }
     if (!(falseAlarmRate > 0 && falseAlarmRate < 0.5)) {
         return invalidOption("false-alarm rate", "must lie in (0, 0.5)");

@@ -149,12 +149,16 @@ std::vector<std::string> operatingRangeNotes(const std::vector<data::SiBatch>& r
         double (*at)(const data::SiBatch& b, std::size_t k);
     };
     static const Input inputs[] = {
-        {"T_hot_C", "°C", [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tHotK[k]); }},
+        {"T_hot_C", "°C",
+         [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tHotK[k]); }},
         {"air_speed_m_s", "m/s", [](const data::SiBatch& b, std::size_t k) { return b.airSpeedMPerS[k]; }},
         {"feed_kg_h", "kg/h", [](const data::SiBatch& b, std::size_t k) { return 3600 * b.feedKgPerS[k]; }},
-        {"X_in_pct", "% wb", [](const data::SiBatch& b, std::size_t k) { return units::dryToWetPct(b.xInDb[k]); }},
-        {"T_in_C", "°C", [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tInK[k]); }},
-        {"T_amb_C", "°C", [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tAmbK[k]); }},
+        {"X_in_pct", "% wb",
+         [](const data::SiBatch& b, std::size_t k) { return units::dryToWetPct(b.xInDb[k]); }},
+        {"T_in_C", "°C",
+         [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tInK[k]); }},
+        {"T_amb_C", "°C",
+         [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tAmbK[k]); }},
         {"RH_amb_pct", "%", [](const data::SiBatch& b, std::size_t k) { return 100 * b.rhAmb[k]; }},
     };
     const auto quantile = [](std::vector<double>& v, double q) {
@@ -189,11 +193,12 @@ std::vector<std::string> operatingRangeNotes(const std::vector<data::SiBatch>& r
             }
             const double typical = quantile(v, 0.5);
             if (typical < lo - margin || typical > hi + margin) {
-                notes.push_back(format("%s: %s is typically %.4g %s, outside what the reference saw (%.4g to %.4g "
-                                       "%s): the model's error there is judged beyond the reference's "
-                                       "conditions, and an alarm there may be that condition rather than a "
-                                       "change of the line",
-                                       b.id.c_str(), in.name, typical, in.unit, lo, hi, in.unit));
+                notes.push_back(
+                    format("%s: %s is typically %.4g %s, outside what the reference saw (%.4g to %.4g "
+                           "%s): the model's error there is judged beyond the reference's "
+                           "conditions, and an alarm there may be that condition rather than a "
+                           "change of the line",
+                           b.id.c_str(), in.name, typical, in.unit, lo, hi, in.unit));
             }
         }
     }

@@ -35,8 +35,8 @@ int blockIndexOf(double sinceStartS, double blockS);
 /// its non-finite values.
 double robustBlockMean(std::vector<double>& samples);
 
-/// @brief One run's block means (robustBlockMean), lag-embedded: row b = [x_b, x_{b−1}, …] (lag-major), NaN where
-/// a block of any lag has no valid value (and in the first lags−1 rows).
+/// @brief One run's block means (robustBlockMean), lag-embedded: row b = [x_b, x_{b−1}, …] (lag-major), NaN
+/// where a block of any lag has no valid value (and in the first lags−1 rows).
 Eigen::MatrixXd lagBlocks(const std::vector<double>& timeS, const Eigen::MatrixXd& values, double blockS,
                           int lags);
 

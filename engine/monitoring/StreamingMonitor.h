@@ -56,9 +56,9 @@ private:
     bool m_inRun = false;
     bool m_hasSample = false;
     double m_t0 = 0, m_lastT = 0;
-    int m_block = 0; ///< index of the block being filled
+    int m_block = 0;                                 ///< index of the block being filled
     std::vector<std::vector<double>> m_blockSamples; ///< per column, the current block's samples
-    std::deque<Eigen::VectorXd> m_lagBlocks; ///< most recent first
+    std::deque<Eigen::VectorXd> m_lagBlocks;         ///< most recent first
     double m_sumLogT2 = 0, m_sumLogSpe = 0;
     int m_validBlocks = 0;
     double m_cusumT2 = 0, m_cusumSpe = 0;

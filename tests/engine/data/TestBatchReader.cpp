@@ -373,9 +373,9 @@ private Q_SLOTS:
         std::string s = std::string(kHeader) + "\n";
         const auto feedAt = [](int i) { return 6200 + 40 * std::sin(0.05 * i) + (i % 2); };
         for (int i = 0; i < 600; ++i) {
-            const double feed = i >= 200 && i < 300 ? feedAt(200) : feedAt(i);   // frozen 100 s
+            const double feed = i >= 200 && i < 300 ? feedAt(200) : feedAt(i);       // frozen 100 s
             const double xOut = i >= 400 && i < 480 ? 12.8 : 12.81 + 0.01 * (i % 7); // frozen 80 s
-            const double tAmb = 24 + 0.1 * (i / 30);                               // held 30 s at a time
+            const double tAmb = 24 + 0.1 * (i / 30);                                 // held 30 s at a time
             char line[256];
             std::snprintf(line, sizeof line, "%d,170,%.1f,16,%.4f,22,25,%.1f,55,14,58,%.2f,55.2\n", i,
                           169.5 + 0.1 * (i % 3), feed, tAmb, xOut);
@@ -398,7 +398,8 @@ private Q_SLOTS:
         const auto si = toSi(ds, rep);
         // The frozen feed is bridged from its last reading before to its first after.
         const double before = feedAt(199) / 3600, after = feedAt(300) / 3600;
-        QVERIFY(std::abs(si[0].feedKgPerS[250] - (before + (after - before) * 51.0 / 101.0)) < 1e-7); // file: 4 decimals
+        QVERIFY(std::abs(si[0].feedKgPerS[250] - (before + (after - before) * 51.0 / 101.0)) <
+                1e-7); // file: 4 decimals
         QVERIFY(std::isnan(si[0].xOutDb[450]));
         QVERIFY(!std::isnan(si[0].xOutDb[480]));
         // Switched off, nothing is masked; an impossible setting is refused.

@@ -232,8 +232,7 @@ private Q_SLOTS:
             return b;
         };
         const std::vector<drytwin::data::SiBatch> reference{batchAt("R1", 12, 600), batchAt("R2", 22, 600)};
-        const auto notes =
-            operatingRangeNotes(reference, {batchAt("N1", 18, 300), batchAt("N2", 31.7, 300)});
+        const auto notes = operatingRangeNotes(reference, {batchAt("N1", 18, 300), batchAt("N2", 31.7, 300)});
         QCOMPARE(notes.size(), std::size_t(1));
         QVERIFY2(notes.front().rfind("N2: T_amb_C is typically 31.", 0) == 0 &&
                      notes.front().find("outside what the reference saw (12.0") != std::string::npos,
