@@ -1,4 +1,15 @@
-# Shared by the CLI tests that read a discover.json: reads FILE into the variable `json` and stops
+# Shared by the CLI tests that run drytwin and read its discover.json.
+
+# Runs `EXE -q ARGN` and stops the test, naming WHAT and showing both outputs, unless it exits 0;
+# its standard output is left in `out`.
+macro(drytwin_run WHAT)
+  execute_process(COMMAND ${EXE} -q ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${WHAT}: exit ${rc}\n${out}\n${err}")
+  endif()
+endmacro()
+
+# Reads FILE into the variable `json` and stops
 # the test unless its first finding names CAUSE (WHAT says on which data, for the message; `out`,
 # the program's output, is shown with it).
 macro(drytwin_expect_first_cause FILE CAUSE WHAT)

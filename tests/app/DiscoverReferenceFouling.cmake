@@ -4,23 +4,15 @@
 # each output it acts on moved against the model form's prediction (the moisture as the model
 # says, the temperatures less: a lumped tube without a gas phase). Usage:
 #   cmake -DEXE=drytwin -DWORK=dir -P this file
+include(${CMAKE_CURRENT_LIST_DIR}/DiscoverJson.cmake)
 file(REMOVE_RECURSE ${WORK})
 foreach(step "reference;--seed;41" "after;--seed;42;--effect;heat_transfer_fouling=0.3")
   list(GET step 0 name)
   list(SUBLIST step 1 -1 options)
-  execute_process(COMMAND ${EXE} -q generate --out ${WORK}/${name} --batches 4 --samples 3000 ${options}
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "generate ${name}: exit ${rc}\n${out}\n${err}")
-  endif()
+  drytwin_run("generate ${name}" generate --out ${WORK}/${name} --batches 4 --samples 3000 ${options})
 endforeach()
-execute_process(COMMAND ${EXE} -q discover --reference ${WORK}/reference --data ${WORK}/after
-                        --json ${WORK}/discover.json
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "discover --reference: exit ${rc}\n${out}\n${err}")
-endif()
-include(${CMAKE_CURRENT_LIST_DIR}/DiscoverJson.cmake)
+drytwin_run("discover --reference" discover --reference ${WORK}/reference --data ${WORK}/after
+            --json ${WORK}/discover.json)
 drytwin_expect_first_cause(${WORK}/discover.json heat_transfer_fouling "against the reference")
 string(JSON changed GET "${json}" detection changed)
 if(NOT changed)

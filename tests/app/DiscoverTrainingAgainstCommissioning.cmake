@@ -5,15 +5,12 @@
 # once a detector has flagged the change the screen only ranks the causes, and fouling is fitted
 # and named first (DiscoveryOptions::screenAlphaOnceDetected). Usage:
 #   cmake -DEXE=drytwin -DSCENARIO=training_shift.json -DWORK=dir -P this file
+include(${CMAKE_CURRENT_LIST_DIR}/DiscoverJson.cmake)
 file(REMOVE_RECURSE ${WORK})
 file(READ ${SCENARIO} scenario)
 function(run_training name json)
   file(WRITE ${WORK}/${name}.json "${json}")
-  execute_process(COMMAND ${EXE} -q training --script ${WORK}/${name}.json --out ${WORK}/${name}
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "training ${name}: exit ${rc}\n${out}\n${err}")
-  endif()
+  drytwin_run("training ${name}" training --script ${WORK}/${name}.json --out ${WORK}/${name})
 endfunction()
 foreach(run 1 2 3)
   math(EXPR seed "90007 + ${run}")
@@ -27,13 +24,8 @@ foreach(run 1 2 3)
 endforeach()
 run_training(fouled "{\"scenario\": ${scenario}, \"end_s\": 3600, \"events\": [{\"at_s\": 0, \"type\": \"fault\", \
 \"cause\": \"heat_transfer_fouling\", \"strength\": 0.4, \"onset_s\": 300}]}")
-execute_process(COMMAND ${EXE} -q discover --reference ${WORK}/reference --data ${WORK}/fouled/recording
-                        --json ${WORK}/discover.json
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "discover --reference: exit ${rc}\n${out}\n${err}")
-endif()
-include(${CMAKE_CURRENT_LIST_DIR}/DiscoverJson.cmake)
+drytwin_run("discover --reference" discover --reference ${WORK}/reference --data ${WORK}/fouled/recording
+            --json ${WORK}/discover.json)
 drytwin_expect_first_cause(${WORK}/discover.json heat_transfer_fouling "against the commissioning runs")
 string(JSON changed GET "${json}" detection changed)
 if(NOT changed)

@@ -4,18 +4,10 @@
 # batches to compare, so the lag's estimate is judged on thirds of it; fitted from the start the
 # thirds disagree (the first one holds 5 min without the lag), and the onset found on the lag's own
 # effect makes them agree. Usage: cmake -DEXE=drytwin -DSCRIPT=a.json -DWORK=dir -P this file
-file(REMOVE_RECURSE ${WORK})
-execute_process(COMMAND ${EXE} -q training --script ${SCRIPT} --out ${WORK}/session
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "training replay: exit ${rc}\n${out}\n${err}")
-endif()
-execute_process(COMMAND ${EXE} -q discover --data ${WORK}/session/recording --json ${WORK}/discover.json
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "discover: exit ${rc}\n${out}\n${err}")
-endif()
 include(${CMAKE_CURRENT_LIST_DIR}/DiscoverJson.cmake)
+file(REMOVE_RECURSE ${WORK})
+drytwin_run("training replay" training --script ${SCRIPT} --out ${WORK}/session)
+drytwin_run(discover discover --data ${WORK}/session/recording --json ${WORK}/discover.json)
 drytwin_expect_first_cause(${WORK}/discover.json moisture_meter_lag "on the recording")
 string(JSON tau GET "${json}" findings 0 parameter value)
 string(JSON onset ERROR_VARIABLE noOnset GET "${json}" findings 0 onset_s)

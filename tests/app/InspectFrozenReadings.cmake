@@ -1,18 +1,11 @@
 # Frozen transmitter readings in a generated data set (the plant's stuck faults, three per channel
 # and hour): `drytwin inspect --json` lists each one the plant's truth file counts, and no other
 # (the cleaning rule of docs/plant.md). Usage: cmake -DEXE=drytwin -DWORK=dir -P this file
+include(${CMAKE_CURRENT_LIST_DIR}/DiscoverJson.cmake) # drytwin_run
 file(REMOVE_RECURSE ${WORK})
-execute_process(COMMAND ${EXE} -q generate --out ${WORK}/data --truth ${WORK}/truth.json --seed 11 --batches 2
-                        --samples 3000 --sensor-stuck 3
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "generate: exit ${rc}\n${out}\n${err}")
-endif()
-execute_process(COMMAND ${EXE} -q inspect --data ${WORK}/data --json ${WORK}/inspect.json
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "inspect: exit ${rc}\n${out}\n${err}")
-endif()
+drytwin_run(generate generate --out ${WORK}/data --truth ${WORK}/truth.json --seed 11 --batches 2 --samples 3000
+            --sensor-stuck 3)
+drytwin_run(inspect inspect --data ${WORK}/data --json ${WORK}/inspect.json)
 file(READ ${WORK}/truth.json truth)
 string(JSON channels GET "${truth}" sensors channels)
 string(JSON count LENGTH "${channels}")
