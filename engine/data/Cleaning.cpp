@@ -48,10 +48,13 @@ std::vector<CleaningReport::StuckSpan> frozenReadings(const DataSet& data, const
         if (cs.role == ColumnRole::Index || cs.id == Column::THotSp) {
             continue;
         }
+        // Each batch's runs, found once: their lengths say what is usual, the long ones are flagged.
+        std::vector<std::vector<std::pair<std::size_t, std::size_t>>> runs(data.batches.size());
         std::vector<std::size_t> lengths;
-        for (const auto& b : data.batches) {
-            if (const auto* v = b.values(cs.id)) {
-                for (const auto& [from, to] : identicalRuns(*v)) {
+        for (std::size_t bi = 0; bi < data.batches.size(); ++bi) {
+            if (const auto* v = data.batches[bi].values(cs.id)) {
+                runs[bi] = identicalRuns(*v);
+                for (const auto& [from, to] : runs[bi]) {
                     lengths.push_back(to - from);
                 }
             }
@@ -63,13 +66,9 @@ std::vector<CleaningReport::StuckSpan> frozenReadings(const DataSet& data, const
         std::nth_element(lengths.begin(), at, lengths.end());
         const double usualRows = static_cast<double>(*at);
         for (std::size_t bi = 0; bi < data.batches.size(); ++bi) {
-            const auto& b = data.batches[bi];
-            const auto* v = b.values(cs.id);
-            const auto* t = b.values(Column::Time);
-            if (!v) {
-                continue;
-            }
-            for (const auto& [from, to] : identicalRuns(*v)) {
+            const auto* v = data.batches[bi].values(cs.id);
+            const auto* t = data.batches[bi].values(Column::Time);
+            for (const auto& [from, to] : runs[bi]) {
                 const double rows = static_cast<double>(to - from);
                 const double seconds = t && std::isfinite((*t)[to - 1]) && std::isfinite((*t)[from])
                                            ? (*t)[to - 1] - (*t)[from]

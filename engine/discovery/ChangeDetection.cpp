@@ -13,27 +13,28 @@
 
 namespace drytwin::discovery::detail {
 
+const std::array<InputColumn, 8>& inputColumns() {
+    static const std::array<InputColumn, 8> columns{{
+        {"T_hot_sp_C", "°C",
+         [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tHotSpK[k]); }},
+        {"T_hot_C", "°C",
+         [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tHotK[k]); }},
+        {"air_speed_m_s", "m/s", [](const data::SiBatch& b, std::size_t k) { return b.airSpeedMPerS[k]; }},
+        {"feed_kg_h", "kg/h", [](const data::SiBatch& b, std::size_t k) { return 3600 * b.feedKgPerS[k]; }},
+        {"X_in_pct", "% wb",
+         [](const data::SiBatch& b, std::size_t k) { return units::dryToWetPct(b.xInDb[k]); }},
+        {"T_in_C", "°C",
+         [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tInK[k]); }},
+        {"T_amb_C", "°C",
+         [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tAmbK[k]); }},
+        {"RH_amb_pct", "%", [](const data::SiBatch& b, std::size_t k) { return 100 * b.rhAmb[k]; }},
+    }};
+    return columns;
+}
+
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-/// A column of a batch: its name and its value at row k (file units), NaN when missing.
-struct Column {
-    const char* name;
-    double (*at)(const data::SiBatch& b, std::size_t k);
-};
-
-const Column kInputs[] = {
-    {"T_hot_sp_C",
-     [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tHotSpK[k]); }},
-    {"T_hot_C", [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tHotK[k]); }},
-    {"air_speed_m_s", [](const data::SiBatch& b, std::size_t k) { return b.airSpeedMPerS[k]; }},
-    {"feed_kg_h", [](const data::SiBatch& b, std::size_t k) { return 3600 * b.feedKgPerS[k]; }},
-    {"X_in_pct", [](const data::SiBatch& b, std::size_t k) { return units::dryToWetPct(b.xInDb[k]); }},
-    {"T_in_C", [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tInK[k]); }},
-    {"T_amb_C", [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tAmbK[k]); }},
-    {"RH_amb_pct", [](const data::SiBatch& b, std::size_t k) { return 100 * b.rhAmb[k]; }},
-};
 
 const char* const kMeasuredOutputs[] = {"X_out_pct", "T_out_C", "X_hdt_pct", "T_hdt_C"};
 const char* const kResidualNames[] = {"error_X_out_pct", "error_T_out_C", "error_X_hdt_pct", "error_T_hdt_C"};
@@ -62,7 +63,8 @@ monitoring::MonitorRun runOf(const data::SiBatch& b, const physics::SimulationRe
     monitoring::MonitorRun run;
     run.id = b.id;
     run.timeS = b.timeS;
-    const std::size_t inputs = residuals ? 0 : std::size(kInputs);
+    const auto& kInputs = inputColumns();
+    const std::size_t inputs = residuals ? 0 : kInputs.size();
     const auto cols = static_cast<Eigen::Index>(inputs + channels.size());
     run.values.resize(static_cast<Eigen::Index>(b.rows()), cols);
     for (std::size_t k = 0; k < b.rows(); ++k) {
@@ -87,7 +89,7 @@ judgeWith(const std::vector<data::SiBatch>& reference, const std::vector<physics
           std::vector<std::string>& columns) {
     columns.clear();
     if (!residuals) {
-        for (const auto& in : kInputs) {
+        for (const auto& in : inputColumns()) {
             columns.emplace_back(in.name);
         }
     }

@@ -413,6 +413,15 @@ struct LineStructure {
     /// The reference so corrected, each part by a fit on the other parts (an honest null).
     std::vector<data::SiBatch> referenceCorrected;
 };
+/// @brief A measured input column of a batch: its file name, unit, and value at row k (file
+/// units), NaN when missing.
+struct InputColumn {
+    const char* name;
+    const char* unit;
+    double (*at)(const data::SiBatch& b, std::size_t k);
+};
+/// @brief The inputs as the monitors and the operating-range notes read them (ChangeDetection.cpp).
+const std::array<InputColumn, 8>& inputColumns();
 /// @brief Notes for each new batch whose typical input value (its median) lies outside what the
 /// reference saw (its 0.5-99.5 % range widened by a quarter of the span), naming the input, its
 /// value and the reference's range (ReferenceDiscovery.cpp).

@@ -17,6 +17,7 @@
 #include <boost/math/distributions/chi_squared.hpp>
 #include <chrono>
 #include <cmath>
+#include <string_view>
 
 namespace drytwin::discovery {
 
@@ -143,31 +144,16 @@ Expected<std::string> judgeAgainstReference(const Problem& pr, Finding& f) {
 /// the unseen condition for a change (a hot summer day against a winter reference).
 std::vector<std::string> operatingRangeNotes(const std::vector<data::SiBatch>& reference,
                                              const std::vector<data::SiBatch>& batches) {
-    struct Input {
-        const char* name;
-        const char* unit;
-        double (*at)(const data::SiBatch& b, std::size_t k);
-    };
-    static const Input inputs[] = {
-        {"T_hot_C", "°C",
-         [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tHotK[k]); }},
-        {"air_speed_m_s", "m/s", [](const data::SiBatch& b, std::size_t k) { return b.airSpeedMPerS[k]; }},
-        {"feed_kg_h", "kg/h", [](const data::SiBatch& b, std::size_t k) { return 3600 * b.feedKgPerS[k]; }},
-        {"X_in_pct", "% wb",
-         [](const data::SiBatch& b, std::size_t k) { return units::dryToWetPct(b.xInDb[k]); }},
-        {"T_in_C", "°C",
-         [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tInK[k]); }},
-        {"T_amb_C", "°C",
-         [](const data::SiBatch& b, std::size_t k) { return units::kelvinToCelsius(b.tAmbK[k]); }},
-        {"RH_amb_pct", "%", [](const data::SiBatch& b, std::size_t k) { return 100 * b.rhAmb[k]; }},
-    };
     const auto quantile = [](std::vector<double>& v, double q) {
         const auto at = v.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
         std::nth_element(v.begin(), at, v.end());
         return *at;
     };
     std::vector<std::string> notes;
-    for (const auto& in : inputs) {
+    for (const auto& in : inputColumns()) {
+        if (std::string_view(in.name) == "T_hot_sp_C") { // the controller's; the hot air itself is judged
+            continue;
+        }
         std::vector<double> seen;
         for (const auto& b : reference) {
             for (std::size_t k = 0; k < b.rows(); ++k) {
