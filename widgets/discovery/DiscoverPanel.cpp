@@ -419,9 +419,10 @@ QString noteText(const std::string& note) {
     static const QRegularExpression outside(QStringLiteral(
         "^(.+): (\\S+) is typically (\\S+) (.+), outside what the reference saw \\((\\S+) to (\\S+) "));
     if (const auto m = outside.match(n); m.hasMatch()) {
-        return DiscoverPanel::tr("%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "
-                                 "model's error there is judged beyond the reference's conditions, and an alarm "
-                                 "there may be that condition rather than a change of the line.")
+        return DiscoverPanel::tr(
+                   "%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "
+                   "model's error there is judged beyond the reference's conditions, and an alarm "
+                   "there may be that condition rather than a change of the line.")
             .arg(m.captured(1), columnDisplayName(m.captured(2).toStdString()), m.captured(3), m.captured(4),
                  m.captured(5), m.captured(6));
     }
