@@ -23,3 +23,12 @@ macro(drytwin_expect_first_cause FILE CAUSE WHAT)
     message(FATAL_ERROR "first cause named ${WHAT}: ${cause}, not ${CAUSE}:\n${out}")
   endif()
 endmacro()
+
+# As drytwin_expect_first_cause, and the judgement against a reference must have detected a change.
+macro(drytwin_expect_change_and_first_cause FILE CAUSE WHAT)
+  drytwin_expect_first_cause(${FILE} ${CAUSE} "${WHAT}")
+  string(JSON changed GET "${json}" detection changed)
+  if(NOT changed)
+    message(FATAL_ERROR "no change detected ${WHAT}:\n${out}")
+  endif()
+endmacro()
