@@ -211,6 +211,11 @@ void restateAtExtendedModel(const Problem& pr, const ParameterSet& extended,
             static_cast<int>(std::find(nuisance.begin(), nuisance.end(), f.parameter) - nuisance.begin());
         const auto sc = scoreTest(*at, columnsBut(static_cast<int>(nuisance.size()), col), col);
         f.value = extended[f.parameter];
+        for (auto& l : f.lookAlikes) {
+            if (l.namedAfter) { // folded into this finding: its joint value
+                l.value = extended[l.parameter];
+            }
+        }
         const double se = sc.se > 0 ? sc.se : 0.5 * (f.ci95High - f.ci95Low) / 1.96;
         f.ci95Low = f.value - 1.96 * se;
         f.ci95High = f.value + 1.96 * se;
@@ -240,7 +245,7 @@ void conclude(const Problem& pr, const ParameterSet& extended, const std::vector
               DiscoveryResult& result) {
     // Later rounds refit the causes named before: report every cause at the extended model's
     // value, with its interval from the score of the final fit (the others held as nuisance).
-    if (result.findings.size() > 1) {
+    if (nuisance.size() > 1) {
         restateAtExtendedModel(pr, extended, nuisance, result.findings);
     }
     // Bounds for what was tested last and not named: that round's score tests ran at the final

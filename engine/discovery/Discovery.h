@@ -223,6 +223,10 @@ struct LookAlike {
     /// The measured output the named cause predicts significantly worse than this look-alike
     /// ("" when none): then it is not ruled out whatever pValue says.
     std::string worseOutput;
+    /// Named in a later round on top of the cause (ruled out alone, yet the change needs both
+    /// forms): then not ruled out, the finding names the group, and value is the joint fit's.
+    bool namedAfter = false;
+    double explainedAfter = 0; ///< the share of the held-out error it removed on top of the cause
 };
 
 /// @brief A named cause with its fitted parameter, evidence and gain.

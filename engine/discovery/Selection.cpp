@@ -216,6 +216,9 @@ Status SelectionRound::confirmMeterLagAlone() {
 /// part), recorded, and the model extended by it.
 Status SelectionRound::nameWithLookAlikes() {
     Finding& f = *m_named;
+    if (foldIntoEarlierFinding()) {
+        return extendModel();
+    }
     const auto fitInPlace = [&](Param other) -> Expected<const ParameterSet*> {
         if (!m_fits.count(other)) {
             auto it = std::find_if(m_cands.begin(), m_cands.end(),
@@ -240,6 +243,44 @@ Status SelectionRound::nameWithLookAlikes() {
     describeOutput(f, m_model.residuals);
     f.evidence = findingEvidence(f, m_options);
     m_result.findings.push_back(f);
+    return extendModel();
+}
+
+/// A look-alike of a cause named in an earlier round, ruled out then because alone it predicted
+/// worse, now named on top of it: the change needs both forms, so the earlier verdict that the
+/// data tell them apart does not hold (on the lumped plant a wall loss was named as a gas-phase
+/// coupling plus a wall loss, and a gas-phase coupling the other way round). The earlier finding
+/// then names the group and holds this one's joint value: one change, one finding.
+bool SelectionRound::foldIntoEarlierFinding() {
+    const Finding& f = *m_named;
+    for (auto& earlier : m_result.findings) {
+        for (auto& l : earlier.lookAlikes) {
+            if (l.parameter != f.parameter || !l.ruledOut) {
+                continue;
+            }
+            const LookAlikeGroup* group = lookAlikeGroupOf(earlier.parameter);
+            if (!group) {
+                continue;
+            }
+            l.ruledOut = false;
+            l.namedAfter = true;
+            l.value = f.value;
+            l.explainedAfter = f.explainedFraction;
+            earlier.group = group->name;
+            earlier.tellApart = group->tellApart;
+            earlier.evidence = findingEvidence(earlier, m_options);
+            m_record.named = true;
+            m_result.rounds.push_back(m_record);
+            return true;
+        }
+    }
+    return false;
+}
+
+/// The model extended by the cause just named, and its look-alikes that the data could not
+/// tell from it taken off the list.
+Status SelectionRound::extendModel() {
+    const Finding& f = *m_named;
     auto sims = physics::simulateBatches(m_pr.inputs, m_namedParams, m_pr.simulation);
     if (!sims) {
         return sims.error();

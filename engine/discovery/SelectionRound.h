@@ -55,6 +55,8 @@ private:
     Status timeChannels();
     Status confirmMeterLagAlone();
     Status nameWithLookAlikes();
+    bool foldIntoEarlierFinding();
+    Status extendModel();
 
     const Prepared& m_prepared;
     const Problem& m_pr;

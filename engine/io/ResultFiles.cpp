@@ -437,7 +437,9 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                                           {"by_channels", l.byChannels},
                                           {"moisture_delay_s", num(l.moistureDelayS)},
                                           {"temperature_delay_s", num(l.temperatureDelayS)},
-                                          {"worse_output", l.worseOutput}});
+                                          {"worse_output", l.worseOutput},
+                                          {"named_after", l.namedAfter},
+                                          {"explained_after", num(l.explainedAfter)}});
         }
         if (!f.tellApart.empty()) {
             out["tell_apart"] = f.tellApart;

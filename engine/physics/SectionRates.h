@@ -14,8 +14,8 @@ using properties::ParameterSet;
 /// @brief What a parcel in the drying tube sees. The PBM uses T_hot, the parameter w and the
 /// tube coefficients; the virtual plant passes modified values for its extra mechanisms.
 template <class T> struct TubeEnvironmentT {
-    T tGasK{};       ///< gas temperature around the parcel (PBM: T_hot)
-    double wGas = 0; ///< humidity ratio of the gas (PBM: parameter w)
+    T tGasK{};                                   ///< gas temperature around the parcel (PBM: T_hot)
+    T wGas = properties::math::constant<T>(0.0); ///< humidity ratio of the gas (PBM: parameter w)
     // Eigen's Pack2 leaves its elements uninitialised by default: every member starts from a value.
     T h = properties::math::constant<T>(0.0); ///< heat-transfer coefficient [W/(m²·K)] (h_HDT, less fouling)
     double k = 0;                             ///< mass-transfer coefficient [m/s] (PBM: k_HDT)
@@ -91,8 +91,8 @@ SectionRatesT<T> tubeRates(const T& x, const T& t, const TubeEnvironmentT<T>& en
     r.heatIn = env.h * area * (env.tGasK - t);                                                // Eq. (8)
     r.waterActivity = pr::waterActivity(t, x, p, s.clampWaterActivity);
     const T rhoSurf = pr::vapourDensity(T(r.waterActivity * pr::saturationPressure(t)), t, p); // Eq. (9)
-    const double pvGas = properties::vapourPressureOfHumidityRatio(env.wGas, p[Param::P_total]);
-    const T rhoGas = pr::vapourDensity(properties::math::constant<T>(pvGas), env.tGasK, p);
+    const T pvGas = env.wGas * p[Param::P_total] / (0.622 + env.wGas); // Eq. (9), from the humidity ratio
+    const T rhoGas = pr::vapourDensity(pvGas, env.tGasK, p);
     r.evaporation =
         env.dryingFactor * env.k * area * properties::math::maxOf(T(rhoSurf - rhoGas), 0.0); // Eq. (10)
     r.dXdt = -r.evaporation;                                                                 // Eq. (11)

@@ -126,7 +126,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Gain, split, maeMoistureBefore, 
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(PartEstimate, part, value, se)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(LookAlike, cause, parameter, value, heldOutLossRatio, pValue,
                                                 ruledOut, byChannels, moistureDelayS, temperatureDelayS,
-                                                worseOutput)
+                                                worseOutput, namedAfter, explainedAfter)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Finding, cause, parameter, value, ci95Low, ci95High,
                                                 explainedFraction, explainedFractionFast, fastPartCounted,
                                                 output, biasBefore, trendPerHourBefore, evidence, gain,

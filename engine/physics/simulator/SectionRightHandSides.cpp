@@ -147,6 +147,7 @@ bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, con
             double gas[kMaxLanes] = {};
             double hours[kMaxLanes] = {};      // since the batch started
             double gasCooling[kMaxLanes] = {}; // K per kg/kg evaporated
+            double gasLoad[kMaxLanes] = {};    // kg dry product per kg of air
             double xEntry[kMaxLanes] = {};
             double fallingLane[kMaxLanes] = {};
             const double onset = p[Param::t_onset];
@@ -172,8 +173,8 @@ bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, con
                     xEntry[lane] = in0.of(x.in->xInDb);
                     const double dryFeed = in0.of(x.in->feedKgPerS) / (1 + xEntry[lane]);
                     const double air = std::max(1.0, in0.of(x.in->airSpeedMPerS));
-                    gasCooling[lane] =
-                        kModelLatentHeat * dryFeed / (kModelAirHeatCapacity * kModelAirMassPerSpeed * air);
+                    gasLoad[lane] = dryFeed / (kModelAirMassPerSpeed * air);
+                    gasCooling[lane] = kModelLatentHeat * gasLoad[lane] / kModelAirHeatCapacity;
                 }
             }
             TubeEnvironmentT<T> env;
@@ -181,7 +182,14 @@ bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, con
             if (gasCoupling != 0) { // gas_phase_coupling, simple form
                 env.tGasK = env.tGasK - gasCoupling * l.load(gasCooling) * (l.load(xEntry) - l.state(0));
             }
-            env.wGas = p[Param::w];
+            env.wGas = properties::math::constant<T>(p[Param::w]);
+            if (gasCoupling != 0) {
+                // The same balance's vapour side: the air takes up what the parcels evaporated.
+                // Both plants couple both balances; with the cooling alone (the form until
+                // 2026-11-27) a wall loss fitted a weaker coupling better than the coupling did.
+                env.wGas = env.wGas + gasCoupling * l.load(gasLoad) *
+                                          properties::math::maxOf(T(l.load(xEntry) - l.state(0)), 0.0);
+            }
             env.h = properties::math::constant<T>(p[Param::h_HDT]);
             if (fouling != 0) { // heat_transfer_fouling, simple form
                 env.h = p[Param::h_HDT] * properties::math::maxOf(T(1.0 - fouling * l.load(hours)), 0.05);

@@ -149,23 +149,25 @@ template <class Pack> double packedRatesWorstDifference(const ParameterSet& p) {
         s.latentHeatCorrection = sw == 0;
         s.moistureDependentCp = sw == 0;
         for (int k = 0; k < 200; ++k) {
-            Pack xp, tp, gas, tAir, rh, xMix, tMix;
+            Pack xp, tp, gas, humidity, tAir, rh, xMix, tMix;
             for (int lane = 0; lane < lanes; ++lane) {
                 xp[lane] = ux(rng);
                 tp[lane] = ut(rng);
                 gas[lane] = ut(rng) + 100;
+                // Each lane its own humidity, as the gas-phase coupling gives each parcel.
+                humidity[lane] = p[Param::w] + 0.01 * lane;
                 tAir[lane] = lane % 2 == 0 ? 295.0 : 301.0;
                 rh[lane] = lane % 2 == 0 ? 0.4 : 0.7;
                 xMix[lane] = 0.2 + 0.05 * lane;
                 tMix[lane] = 330.0 - 20.0 * lane;
             }
-            TubeEnvironmentT<Pack> tubeP{gas, p[Param::w], Pack::Constant(70.0), 0.02, Pack::Constant(1.0)};
+            TubeEnvironmentT<Pack> tubeP{gas, humidity, Pack::Constant(70.0), 0.02, Pack::Constant(1.0)};
             AmbientEnvironmentT<Pack> airP{tAir, rh, Pack::Constant(0.0), Pack::Zero(), false};
             const auto tube = generic::tubeRates(xp, tp, tubeP, p, s);
             const auto conv = generic::conveyorRates(xp, tp, airP, p, s);
             const auto winn = generic::winnowerRates(xp, tp, 1.5, xMix, tMix, airP, p, s);
             for (int lane = 0; lane < lanes; ++lane) {
-                const TubeEnvironment tube1{gas[lane], p[Param::w], 70.0, 0.02, 1.0};
+                const TubeEnvironment tube1{gas[lane], humidity[lane], 70.0, 0.02, 1.0};
                 const AmbientEnvironment air1{tAir[lane], rh[lane], 0.0};
                 const auto t1 = tubeRates(xp[lane], tp[lane], tube1, p, s);
                 const auto c1 = conveyorRates(xp[lane], tp[lane], air1, p, s);
@@ -305,6 +307,38 @@ private Q_SLOTS:
             QVERIFY(hot->tOutK[k] > base->tOutK[k]);
             QVERIFY(wet->xOutDb[k] > base->xOutDb[k]);
         }
+    }
+
+    /// The gas-phase coupling's simple form couples both balances: the air cools by what it gives
+    /// the strands and takes up what they evaporate, so a stronger coupling dries less and leaves
+    /// the product cooler, and humid air alone dries less than dry air at the same temperature.
+    void gasCouplingCoolsAndHumidifiesTheAir() {
+        ParameterSet weak = m_p, strong = m_p;
+        weak[Param::theta_gas] = 0.3;
+        strong[Param::theta_gas] = 0.9;
+        const auto none = simulateLine(constantInputs(120), m_p);
+        const auto w = simulateLine(constantInputs(120), weak);
+        const auto s = simulateLine(constantInputs(120), strong);
+        QVERIFY(none.ok() && w.ok() && s.ok());
+        for (std::size_t k : {60u, 119u}) {
+            QVERIFY(w->xHdtDb[k] > none->xHdtDb[k]);
+            QVERIFY(s->xHdtDb[k] > w->xHdtDb[k]);
+            QVERIFY(s->tHdtK[k] < none->tHdtK[k]);
+        }
+        TubeEnvironment dry{400.0, 0.01, 70.0, 0.02, 1.0};
+        TubeEnvironment humid = dry;
+        humid.wGas = 0.06;
+        const auto rDry = tubeRates(0.25, 330.0, dry, m_p, m_sw);
+        const auto rHumid = tubeRates(0.25, 330.0, humid, m_p, m_sw);
+        QVERIFY(rHumid.evaporation < rDry.evaporation);
+        QCOMPARE(rHumid.heatIn, rDry.heatIn);
+        // Eq. (9)-(10) by hand: the gas side's vapour density from the humidity ratio.
+        const double pv = 0.06 * m_p[Param::P_total] / (0.622 + 0.06);
+        const double drop =
+            (pv - 0.01 * m_p[Param::P_total] / (0.622 + 0.01)) / (m_p[Param::R_water] * 400.0);
+        const double area = (1.25) / m_p[Param::rho_mat] * (2.0 / m_p[Param::r] + 2.0 / m_p[Param::L_t]);
+        QVERIFY(std::abs(rDry.evaporation - rHumid.evaporation - 0.02 * area * drop) <
+                1e-9 * rDry.evaporation);
     }
 
     void outputsFollowTheTransportDelay() {
