@@ -54,11 +54,13 @@ std::optional<LineInputs> correctedInputs(const LineInputs& in, const ParameterS
     const double onset = in.timeS.front() + p[Param::t_onset];
     LineInputs out = in;
     if (scatterShare > 0) { // inlet_moisture_sensor_noise: remove that share of the fast variation
+        // Throughout, not from the onset: the share is the gauge's normal scatter, fitted with h_HDT
+        // and k_HDT before any cause (discovery's start, a reference's commissioning). Gated by a
+        // later cause's onset, the first minutes of every batch lost it, and a 60 s meter lag from
+        // 11 min predicted the held-out part worse than none (distributed plant, 0 of 6 named).
         const auto smooth = zeroPhaseFilter(in.timeS, in.xInDb, kInletScatterFilterS);
         for (std::size_t i = 0; i < out.size(); ++i) {
-            if (in.timeS[i] >= onset) {
-                out.xInDb[i] = in.xInDb[i] + scatterShare * (smooth[i] - in.xInDb[i]);
-            }
+            out.xInDb[i] = in.xInDb[i] + scatterShare * (smooth[i] - in.xInDb[i]);
         }
     }
     if (offsetPct != 0) { // inlet_moisture_sensor_offset: the gauge reads true + offset

@@ -341,6 +341,31 @@ private Q_SLOTS:
                 1e-9 * rDry.evaporation);
     }
 
+    /// The inlet gauge's scatter share is the instrument's normal state, fitted before any cause:
+    /// a later cause's onset must not switch it off before that onset (it did, and a meter lag
+    /// from 11 min then predicted worse than none on the distributed plant).
+    void gaugeScatterShareActsBeforeAnOnset() {
+        LineInputs in = varyingInputs(400);
+        for (std::size_t i = 0; i < in.size(); ++i) { // a scattering gauge
+            in.xInDb[i] += (i % 2 == 0 ? 0.004 : -0.004);
+        }
+        ParameterSet throughout = m_p;
+        throughout[Param::phi_X_in_scatter] = 0.9;
+        ParameterSet withOnset = throughout;
+        withOnset[Param::t_onset] = 300;
+        ParameterSet none = m_p;
+        const auto a = simulateLine(in, throughout);
+        const auto b = simulateLine(in, withOnset);
+        const auto c = simulateLine(in, none);
+        QVERIFY(a.ok() && b.ok() && c.ok());
+        double differsFromNone = 0;
+        for (std::size_t k = 0; k < 300; ++k) {
+            QCOMPARE(b->xHdtDb[k], a->xHdtDb[k]);
+            differsFromNone = std::max(differsFromNone, std::abs(a->xHdtDb[k] - c->xHdtDb[k]));
+        }
+        QVERIFY(differsFromNone > 1e-4); // the share acts there
+    }
+
     void outputsFollowTheTransportDelay() {
         // A hot-air step between t = 99 s and 100 s reaches a parcel whose tube passage
         // [t_k − delay, t_k − delay + tau_HDT] ends after 99 s.
