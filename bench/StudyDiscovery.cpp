@@ -13,8 +13,11 @@
 //      that flags it flags the seed's conditions, not the mechanism)] [--no-structure (with --reference: the
 //      line's own structure not learnt, the causes' normal values alone)] [--size-rule (with --reference:
 //      an output a cause acts on counts against it when its error rises, as alone; the rule before
-//      2026-11-27, instead of the direction of the cause's effect)] [--seeds FIRST (mechanism runs'
-//      three seeds; default 101, onsets FIRST+100)] [--unimproved-alpha A (default 0.05; 1: the rule before)]
+//      2026-11-27, instead of the direction of the cause's effect)] [--share-of-whole (with --reference:
+//      a cause's share counted of the whole held-out error only, not of its change against the
+//      reference once a detector flags one; the rule before 2026-11-27, evening)] [--seeds FIRST (mechanism
+//      runs' three seeds; default 101, onsets FIRST+100)] [--unimproved-alpha A (default 0.05; 1: the rule
+//      before)]
 //      [--no-constancy (an offset, wall loss or gas coupling not checked for constancy within the batch)]
 //      [--look-alike-overall (a look-alike ruled out on the overall held-out loss alone, even where
 //      it predicts one output better)]: the rules before 2026-11-26, for a before/after
@@ -243,6 +246,8 @@ int main(int argc, char** argv) {
             discoveryOptions.lookAlikeWorseOnNoOutput = false;
         } else if (a == "--size-rule") { // against a reference: no output made worse, as before 2026-11-27
             discoveryOptions.referenceJudgesDirection = false;
+        } else if (a == "--share-of-whole") { // against a reference: the floor of the whole error only
+            discoveryOptions.shareOfChangeOnceDetected = false;
         } else if (a == "--no-structure") { // against a reference: the causes' normal values alone
             discoveryOptions.learnLineStructure = false;
         } else if (a == "--mechanism" && !next.empty()) {

@@ -331,6 +331,20 @@ std::pair<double, double> explainedShares(const HeldOut& before, const HeldOut& 
     return {whole, fast};
 }
 
+double shareOfChange(const Problem& pr, const HeldOut& before, const HeldOut& after) {
+    if (!pr.reference || !pr.reference->changeDetected || !pr.options.shareOfChangeOnceDetected ||
+        !(pr.reference->normalHeldLoss > 0)) {
+        return 0;
+    }
+    const double lossBefore = meanOf(before.loss);
+    const double excess = lossBefore - pr.reference->normalHeldLoss;
+    // Only a clear excess: a share of a difference near 0 is noise.
+    if (!(excess > 0.1 * pr.reference->normalHeldLoss)) {
+        return 0;
+    }
+    return std::min(1.0, (lossBefore - meanOf(after.loss)) / excess);
+}
+
 std::vector<int> columnsBut(int count, int skip) {
     std::vector<int> out;
     for (int i = 0; i < count; ++i) {

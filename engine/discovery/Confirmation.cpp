@@ -21,12 +21,19 @@ Expected<Confirmation> confirmCandidate(const ConfirmationInput& in) {
     out.pValue = gain.pValue;
     out.explained = explained;
     out.explainedFast = explainedFast;
-    if (!(gain.pValue < in.level && std::max(explained, explainedFast) >= options.minExplainedFraction)) {
+    const double ofChange = shareOfChange(in.pr, in.currentHeld, *afterHeld);
+    if (!(gain.pValue < in.level &&
+          std::max({explained, explainedFast, ofChange}) >= options.minExplainedFraction)) {
         // It fits the training part but does not predict clearly better: not a cause.
         out.code = "no_held_out_gain";
         out.why =
             gain.pValue >= in.level
                 ? format("held-out gain not significant (p = %.2g, needs < %.2g)", gain.pValue, in.level)
+            : ofChange > 0
+                ? format("removes only %.0f %% of the held-out error left, %.0f %% of its fast part and "
+                         "%.0f %% of its change against the reference (needs %.0f %% of one)",
+                         100 * explained, 100 * explainedFast, 100 * ofChange,
+                         100 * options.minExplainedFraction)
                 : format("removes only %.0f %% of the held-out error left and %.0f %% of its fast "
                          "part (needs %.0f %% of either)",
                          100 * explained, 100 * explainedFast, 100 * options.minExplainedFraction);

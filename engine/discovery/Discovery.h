@@ -113,6 +113,12 @@ struct DiscoveryOptions {
     /// A look-alike is ruled out only when the named cause is not significantly worse on any
     /// measured output; false: on the overall held-out loss alone, as before 2026-11-26.
     bool lookAlikeWorseOnNoOutput = true;
+    /// Against a reference, once a detector has flagged a change: the share a cause must remove
+    /// (minExplainedFraction) may also be counted of the change, the new data's held-out error
+    /// beyond the reference's own level, not only of the whole error, whose noise and leftover
+    /// structure the reference had too. false: of the whole error (or its fast part) alone, as
+    /// before 2026-11-27 (evening).
+    bool shareOfChangeOnceDetected = true;
     Status validate() const;
 };
 

@@ -65,6 +65,12 @@ struct Reference {
     std::map<Param, ReferenceValue> linear;
     /// The cause fitted alone on the reference from the commissioned model (cached by the caller).
     std::function<Expected<ReferenceValue>(Param)> fitted;
+    /// The reference's own held-out error at the commissioned model (its structure taken off,
+    /// part by part), as heldOut() weighs it: the level a period has without a change.
+    double normalHeldLoss = 0;
+    /// A detector flagged the new data (DiscoveryResult::detection): the monitors before selection,
+    /// the causes' test once the first round's ranking gives it (SelectionRound::run).
+    mutable bool changeDetected = false;
 };
 
 /// The data of one discovery run: batches, their split, and the training rows the tests use.
@@ -139,6 +145,10 @@ double meanOf(const std::vector<std::vector<double>>& series);
 /// (DiscoveryOptions::fastBandWindowS; 0 when off), that @p after removes from @p before.
 std::pair<double, double> explainedShares(const HeldOut& before, const HeldOut& after,
                                           const DiscoveryOptions& options);
+/// Against a reference, once a change is detected: the share of the change (the held-out error
+/// beyond the reference's own level) that @p after removes; 0 where that does not apply or the
+/// excess is under a tenth of the normal level.
+double shareOfChange(const Problem& pr, const HeldOut& before, const HeldOut& after);
 Gain gainOf(const HeldOut& before, const HeldOut& after);
 /// One-sided Diebold-Mariano p that @p better has a lower held-out loss than @p worse.
 double heldOutPValue(const HeldOut& worse, const HeldOut& better);

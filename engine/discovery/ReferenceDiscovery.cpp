@@ -410,6 +410,9 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
             ref.linear[remaining[i]] =
                 normalValue(normalPr, *refStack, static_cast<int>(i), options.consistencyTolerance);
         }
+        // The reference's own error level, every kept row (the commissioning leaves no held-out
+        // part): what a period has without a change.
+        ref.normalHeldLoss = stackLoss(*refStack);
     }
     // A cause fitted on the reference alone, once, when a finding asks for its normal value; a
     // failed fit keeps the one-step estimate (no better evidence), a cancel stops discovery.
@@ -493,6 +496,7 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
         return detection.error();
     }
     result.detection = std::move(*detection);
+    ref.changeDetected = result.detection.changed;
     if (result.detection.changed && options.screenAlphaOnceDetected > 0) {
         auto& screen = prepared->pr.options.screenAlpha;
         screen = std::max(screen, options.screenAlphaOnceDetected);

@@ -36,6 +36,10 @@ Expected<bool> SelectionRound::run() {
                      });
     if (m_round == 0) {
         m_result.ranking = m_record.candidates;
+        if (m_pr.reference) { // the causes' test, the detector's second half, as soon as it can be
+            testCauses(m_result.ranking, m_result.detection);
+            m_pr.reference->changeDetected = m_result.detection.changed;
+        }
     }
     if (auto st = tryFitted(); !st) {
         return st.error();

@@ -239,6 +239,34 @@ private Q_SLOTS:
                  notes.front().c_str());
         QVERIFY(operatingRangeNotes(reference, {batchAt("N3", 24, 300)}).empty()); // within the margin
     }
+
+    /// Against a reference, once a change is detected, a cause's share is also counted of the
+    /// change: the held-out error beyond the reference's own level, not of the noise both have.
+    void aCauseIsMeasuredAgainstTheChangeOnceOneIsDetected() {
+        const auto heldWith = [](double perRow) {
+            HeldOut h;
+            h.loss = {std::vector<double>(100, perRow)};
+            return h;
+        };
+        Reference ref;
+        ref.normalHeldLoss = 0.027;
+        Problem pr;
+        pr.reference = &ref;
+        const HeldOut before = heldWith(0.035), after = heldWith(0.030);
+        QCOMPARE(shareOfChange(pr, before, after), 0.0); // nothing detected yet
+        ref.changeDetected = true;
+        // (0.035 - 0.030) / (0.035 - 0.027): 62 % of the change, 14 % of the whole error.
+        QVERIFY(std::abs(shareOfChange(pr, before, after) - 0.625) < 1e-9);
+        pr.options.shareOfChangeOnceDetected = false; // the rule before
+        QCOMPARE(shareOfChange(pr, before, after), 0.0);
+        pr.options.shareOfChangeOnceDetected = true;
+        ref.normalHeldLoss = 0.033; // an excess under a tenth of the normal level is noise
+        QCOMPARE(shareOfChange(pr, before, after), 0.0);
+        ref.normalHeldLoss = 0.027;
+        QCOMPARE(shareOfChange(pr, before, heldWith(0.020)), 1.0); // at most all of it
+        Problem alone;                                             // one data set alone: the whole error only
+        QCOMPARE(shareOfChange(alone, before, after), 0.0);
+    }
 };
 
 QTEST_APPLESS_MAIN(TestChannelJudgement)
