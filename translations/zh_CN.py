@@ -934,6 +934,7 @@ ZH = {
     "the outlet temperature": "出口温度",
     "the tube-outlet moisture": "管出口含水率",
     "the tube-outlet temperature": "管出口温度",
+    "%1 was named on top of it (a further %2 % of the held-out error): alone it predicts worse (%3 times the held-out error), but the change needs both forms, so the data cannot say which of them it is.": "在它之上又判定了 %1（再减少留出误差的 %2 %）：单独使用时预测更差（留出误差的 %3 倍），但这一变化需要两种形式共同解释，因此数据无法判断是其中哪一个。",
 }
 
 
