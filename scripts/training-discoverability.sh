@@ -8,9 +8,9 @@
 # ORACLE=1: Discover is asked about the fault alone (`discover --causes CAUSE`): the bound on what
 # any choice among the candidates can reach with discovery's judgement rules.
 # REFERENCE=1: each recording is judged against the line's healthy commissioning data
-# (`discover --reference`): three fault-free runs of the same scenario, the seeds the Training tab's
-# monitor commissions on (seed + 90001 … 90003, engine/training/LineMonitor.cpp), whole length;
-# COMMISSIONING_RUNS=N: N of them (seed + 90001 … 90000 + N) instead of the tab's 3.
+# (`discover --reference`): six fault-free runs of the same scenario, the seeds the Training tab's
+# monitor commissions on (seed + 90001 … 90006, engine/training/LineMonitor.h), whole length;
+# COMMISSIONING_RUNS=N: N of them (seed + 90001 … 90000 + N) instead of the tab's 6.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$here/build}"
@@ -56,7 +56,7 @@ commission() {
 export -f run commission
 export drytwin work scenario
 if [ -n "${REFERENCE:-}" ]; then
-  for seed in 7 8 9; do for r in $(seq 1 "${COMMISSIONING_RUNS:-3}"); do echo "$seed $r"; done; done |
+  for seed in 7 8 9; do for r in $(seq 1 "${COMMISSIONING_RUNS:-6}"); do echo "$seed $r"; done; done |
     xargs -P "${JOBS:-2}" -L 1 bash -c 'commission "$@"' _
 fi
 results="$work/results.txt"

@@ -113,9 +113,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             m_pendingTab = m_tabs->indexOf(m_discover);
             // The recording is judged alone: a reference chosen for the loaded data belongs to another
             // line. The line's commissioning runs are offered in the note as the reference to compare
-            // with; not set by default, because against three commissioning runs the change screen
-            // misses the fouling that the recording alone shows (measured 2026-11-26: theta_foul's
-            // change p 0.08; TestTrainingPanel names it alone).
+            // with; not set by default: against three commissioning runs the change screen missed
+            // the fouling that the recording alone shows (measured 2026-11-26: theta_foul's change
+            // p 0.08; TestTrainingPanel names it alone). With six runs (since 2026-11-27) the
+            // reference names 16 of 24 one-hour faults (docs/training.md).
             m_workbench.setReferencePath({});
             if (!reference.isEmpty()) {
                 m_statusLabel->setText(

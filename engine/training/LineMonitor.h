@@ -48,9 +48,12 @@ class LineMonitor {
 public:
     /// @brief Commissions the monitors on @p runs healthy runs of @p scenario (its mechanisms left
     /// out), each the scenario's length; the runs' recordings (batch ids C01, C02, …) are kept for
-    /// a discovery against them.
-    static Expected<LineMonitor> commission(const control::Scenario& scenario, int runs = 3,
-                                            double falseAlarmRate = 0.01);
+    /// a discovery against them. Six by default: a reference's normal spread between 3 runs has
+    /// 2 degrees of freedom, and a recording judged against it named the right fault in 12 of 24
+    /// hours (6 runs: 16; 10 runs: 16; scripts/training-discoverability.sh, docs/training.md).
+    static constexpr int kDefaultCommissioningRuns = 6;
+    static Expected<LineMonitor> commission(const control::Scenario& scenario,
+                                            int runs = kDefaultCommissioningRuns, double falseAlarmRate = 0.01);
     /// @brief Feeds the session from where it was fed last (all of it again after a restore).
     /// The model's error is fed a minute at a time (one simulation of the line per minute).
     Status feed(const TrainingSession& session);

@@ -1,5 +1,6 @@
 # A training recording judged against the line's commissioning runs (three fault-free runs of the
-# same scenario with other seeds, as the Training tab's monitor commissions on): one hour of the
+# same scenario with other seeds, the first three the Training tab's monitor commissions on; the
+# fewest it could have, where each change test has least power): one hour of the
 # training_shift scenario (seed 7) with fouling at twice its default from 5 min. One recording
 # against three runs gives each cause's change test little power (z about 1.4 for every cause);
 # once a detector has flagged the change the screen only ranks the causes, and fouling is fitted

@@ -135,7 +135,7 @@ Q_SIGNALS:
 
 private:
     void adopt(training::TrainingSession session, const std::string& scenarioJson) {
-        // The line's monitor, commissioned on healthy runs of the same scenario (a second or two).
+        // The line's monitor, commissioned on healthy runs of the same scenario (a few seconds).
         m_monitor.reset();
         m_monitorNote.clear();
         if (auto monitor = training::LineMonitor::commission(session.scenario()); monitor) {
