@@ -53,7 +53,8 @@ public:
     /// hours (6 runs: 16; 10 runs: 16; scripts/training-discoverability.sh, docs/training.md).
     static constexpr int kDefaultCommissioningRuns = 6;
     static Expected<LineMonitor> commission(const control::Scenario& scenario,
-                                            int runs = kDefaultCommissioningRuns, double falseAlarmRate = 0.01);
+                                            int runs = kDefaultCommissioningRuns,
+                                            double falseAlarmRate = 0.01);
     /// @brief Feeds the session from where it was fed last (all of it again after a restore).
     /// The model's error is fed a minute at a time (one simulation of the line per minute).
     Status feed(const TrainingSession& session);
