@@ -91,7 +91,7 @@ SectionRatesT<T> tubeRates(const T& x, const T& t, const TubeEnvironmentT<T>& en
     r.heatIn = env.h * area * (env.tGasK - t);                                                // Eq. (8)
     r.waterActivity = pr::waterActivity(t, x, p, s.clampWaterActivity);
     const T rhoSurf = pr::vapourDensity(T(r.waterActivity * pr::saturationPressure(t)), t, p); // Eq. (9)
-    const T pvGas = env.wGas * p[Param::P_total] / (0.622 + env.wGas); // Eq. (9), from the humidity ratio
+    const T pvGas = pr::vapourPressureOfHumidityRatio(env.wGas, p[Param::P_total]);            // Eq. (9)
     const T rhoGas = pr::vapourDensity(pvGas, env.tGasK, p);
     r.evaporation =
         env.dryingFactor * env.k * area * properties::math::maxOf(T(rhoSurf - rhoGas), 0.0); // Eq. (10)

@@ -85,9 +85,8 @@ const std::array<ParameterInfo, kParamCount>& parameterTable() {
         {Param::theta_wall, "theta_wall", "tube wall heat loss: T_gas = T_hot - theta (T_hot - T_amb)", "-",
          0, 0, 0.5, "extension tube_wall_heat_loss", false, false},
         {Param::theta_gas, "theta_gas",
-         "gas-phase coupling: T_gas falls by theta L_v (X_in - X) m_dry / (c_air m_air) along the tube, and "
-         "w "
-         "rises by theta (X_in - X) m_dry / m_air",
+         "gas-phase coupling: T_gas falls by theta L_v (X_in - X) m_dry / (c_air m_air) along the tube, "
+         "and w rises by theta (X_in - X) m_dry / m_air",
          "-", 0, 0, 2, "extension gas_phase_coupling", false, false},
         {Param::theta_foul, "theta_foul", "fouling: h = h_HDT (1 - theta t), t since the batch started",
          "1/h", 0, 0, 0.4, "extension heat_transfer_fouling", false, false},

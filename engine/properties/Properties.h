@@ -85,6 +85,12 @@ template <class T> T vapourDensity(const T& pv, const T& tK, const ParameterSet&
     return pv / (p[Param::R_water] * tK); // Eq. (9)
 }
 
+/// Partial pressure of water vapour in air of humidity ratio w [Pa] (each parcel's own w where
+/// the gas-phase coupling humidifies the air).
+template <class T> T vapourPressureOfHumidityRatio(const T& w, double pTotal) {
+    return w * pTotal / (0.622 + w); // Eq. (9)
+}
+
 } // namespace generic
 
 /// @brief Saturation vapour pressure of water [Pa], Magnus form, T in K. Eq. (1)
@@ -135,7 +141,7 @@ inline double effectiveDiffusivity(double tK, double rh, double xDb, const Param
 
 /// @brief Partial pressure of water vapour in air of humidity ratio w [Pa]. Eq. (9)
 inline double vapourPressureOfHumidityRatio(double w, double pTotal) {
-    return w * pTotal / (0.622 + w);
+    return generic::vapourPressureOfHumidityRatio(w, pTotal);
 }
 
 /// @brief Vapour density of an ideal gas at partial pressure pv and temperature T [kg/m³]. Eq. (9)
