@@ -7,8 +7,8 @@
 # headless. Run scripts/run.sh (or scripts/test.sh) once first: it builds build/app/drytwin.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-DRYTWIN=build/app/drytwin
-OUT=build/demo-reference
+DRYTWIN="${DRYTWIN:-build/app/drytwin}" # the program, and where the story goes (ctest sets both)
+OUT="${OUT:-build/demo-reference}"
 "$DRYTWIN" generate --out "$OUT/reference" --seed 2030 --batches 6 --samples 3000
 "$DRYTWIN" generate --out "$OUT/after" --seed 2031 --batches 4 --samples 3000 \
   --effect moisture_meter_offset=0.8 --onset moisture_meter_offset=1200 --truth "$OUT/truth.json"
