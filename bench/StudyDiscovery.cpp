@@ -246,6 +246,8 @@ int main(int argc, char** argv) {
             discoveryOptions.lookAlikeWorseOnNoOutput = false;
         } else if (a == "--size-rule") { // against a reference: no output made worse, as before 2026-11-27
             discoveryOptions.referenceJudgesDirection = false;
+        } else if (a == "--spread-bound") { // against a reference: naming at the spread's upper bound always
+            discoveryOptions.pointSpreadOnceDetected = false;
         } else if (a == "--share-of-whole") { // against a reference: the floor of the whole error only
             discoveryOptions.shareOfChangeOnceDetected = false;
         } else if (a == "--no-structure") { // against a reference: the causes' normal values alone

@@ -119,6 +119,10 @@ struct DiscoveryOptions {
     /// structure the reference had too. false: of the whole error (or its fast part) alone, as
     /// before 2026-11-27 (evening).
     bool shareOfChangeOnceDetected = true;
+    /// Against a reference, once a detector has flagged a change: a fitted cause is judged against
+    /// its normal spread at the spread's point estimate, not its upper 75 % bound (which keeps the
+    /// causes' change test at its false-alarm rate). false: the bound, as before 2026-11-27 (late).
+    bool pointSpreadOnceDetected = true;
     Status validate() const;
 };
 

@@ -56,7 +56,8 @@ struct Stack {
 struct ReferenceValue {
     double value = 0;
     double se = 0;     ///< HAC standard error of the pooled value
-    double spread = 0; ///< between-part standard deviation beyond the parts' own errors
+    double spread = 0; ///< between-part standard deviation beyond the parts' own errors (upper 75 % bound)
+    double spreadPoint = 0; ///< the same at its point estimate (naming once a change is detected)
     std::vector<PartEstimate> parts;
 };
 /// The reference a change is judged against (ReferenceDiscovery.cpp): each cause's one-step

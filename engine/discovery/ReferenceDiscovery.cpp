@@ -66,6 +66,7 @@ ReferenceValue normalValue(const Problem& pr, const Stack& st, int col, double t
         // the truth half the time, and a new period then sits beyond the normal spread by chance.
         // Its upper 75 % confidence bound, (K − 1) s² / χ²_{0.25, K−1}, as the monitor's null
         // takes its run effects (monitoring/ChangePoint.cpp): one rule for both halves of the detector.
+        rv.spreadPoint = std::sqrt(std::max(0.0, between - ownVariance));
         const boost::math::chi_squared chi(n - 1);
         between *= (n - 1) / boost::math::quantile(chi, 0.25);
         rv.spread = std::sqrt(std::max(0.0, between - ownVariance));
@@ -120,7 +121,11 @@ Expected<std::string> judgeAgainstReference(const Problem& pr, Finding& f) {
     // The reference's fitted value is about as precise as this one (the one-step error of a lag
     // far from 0 understates it): the larger of the two.
     const double seRef = std::max(rv->se, seHere);
-    const double normalSd = std::sqrt(seRef * seRef + rv->spread * rv->spread);
+    // Once a detector has flagged a change (at its stated false-alarm rate, with the spread's upper
+    // bound), naming asks which cause moved: the spread at its point estimate, not its bound.
+    const double spread =
+        pr.reference->changeDetected && pr.options.pointSpreadOnceDetected ? rv->spreadPoint : rv->spread;
+    const double normalSd = std::sqrt(seRef * seRef + spread * spread);
     f.hasReference = true;
     f.referenceValue = rv->value;
     f.referenceCi95Low = std::max(info.lower, rv->value - 1.96 * normalSd);
