@@ -267,6 +267,38 @@ private Q_SLOTS:
         Problem alone;                                             // one data set alone: the whole error only
         QCOMPARE(shareOfChange(alone, before, after), 0.0);
     }
+
+    /// A fitted cause's normal spread: at its upper 75 % bound until a detector has flagged a
+    /// change (it keeps the causes' change test at its false-alarm rate), at its point estimate
+    /// once one has (naming then asks which cause moved).
+    void theNormalSpreadIsItsPointEstimateOnceAChangeIsDetected() {
+        Reference ref;
+        ref.fitted = [](Param) -> drytwin::Expected<ReferenceValue> {
+            ReferenceValue rv;
+            rv.value = 0.2;
+            rv.se = 0.01;
+            rv.spread = 0.3;       // bound
+            rv.spreadPoint = 0.12; // point estimate
+            return rv;
+        };
+        Problem pr;
+        pr.reference = &ref;
+        drytwin::discovery::Finding f;
+        f.parameter = Param::theta_reabs;
+        f.value = 0.55; // 0.35 above the normal value: beyond 1.96 × 0.12, within 1.96 × 0.3
+        f.ci95Low = 0.53;
+        f.ci95High = 0.57;
+        auto within = judgeAgainstReference(pr, f);
+        QVERIFY(within.ok());
+        QVERIFY2(within->find("within its normal spread") == 0, within->c_str());
+        ref.changeDetected = true;
+        auto moved = judgeAgainstReference(pr, f);
+        QVERIFY(moved.ok());
+        QVERIFY2(moved->empty(), moved->c_str());
+        pr.options.pointSpreadOnceDetected = false; // the rule before
+        auto bound = judgeAgainstReference(pr, f);
+        QVERIFY(bound.ok() && !bound->empty());
+    }
 };
 
 QTEST_APPLESS_MAIN(TestChannelJudgement)
