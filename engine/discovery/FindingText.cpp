@@ -143,7 +143,14 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
                        f.onsetLowS / 60, f.onsetHighS / 60);
     }
     for (const auto& l : f.lookAlikes) {
-        if (l.byChannels && !l.namedAfter) {
+        if (l.namedAfter) {
+            text += format(" %s was named on top of it (a further %.0f %% of the held-out error): alone "
+                           "it predicts worse (%.2g times the held-out error), but the change needs both "
+                           "forms, so the data cannot say which of them it is.",
+                           l.cause.c_str(), 100 * l.explainedAfter, l.heldOutLossRatio);
+            continue;
+        }
+        if (l.byChannels) {
             // The outlet channels' timing told (or showed that it cannot tell).
             text +=
                 l.ruledOut
@@ -156,13 +163,6 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
                              "tell them apart (the temperature has dynamics of its own, or the difference is "
                              "within the noise).",
                              l.cause.c_str(), l.moistureDelayS, l.temperatureDelayS, l.pValue);
-            continue;
-        }
-        if (l.namedAfter) {
-            text += format(" %s was named on top of it (a further %.0f %% of the held-out error): alone "
-                           "it predicts worse (%.2g times the held-out error), but the change needs both "
-                           "forms, so the data cannot say which of them it is.",
-                           l.cause.c_str(), 100 * l.explainedAfter, l.heldOutLossRatio);
             continue;
         }
         text +=

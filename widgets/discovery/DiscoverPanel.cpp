@@ -504,7 +504,16 @@ QString DiscoverPanel::specificityText(const discovery::Finding& f) {
                      .arg(f.onsetHighS / 60, 0, 'f', 0);
     }
     for (const auto& l : f.lookAlikes) {
-        if (l.byChannels && !l.namedAfter) {
+        if (l.namedAfter) {
+            parts << tr("%1 was named on top of it (a further %2 % of the held-out error): alone it predicts "
+                        "worse (%3 times the held-out error), but the change needs both forms, so the data "
+                        "cannot say which of them it is.")
+                         .arg(causeDisplayName(l.cause))
+                         .arg(100 * l.explainedAfter, 0, 'f', 0)
+                         .arg(l.heldOutLossRatio, 0, 'g', 2);
+            continue;
+        }
+        if (l.byChannels) {
             parts
                 << (l.ruledOut
                         ? tr("Not %1: the moisture answers %2 s later than the model and the outlet "
@@ -522,15 +531,6 @@ QString DiscoverPanel::specificityText(const discovery::Finding& f) {
                               .arg(l.moistureDelayS, 0, 'g', 3)
                               .arg(l.temperatureDelayS, 0, 'g', 3))
                        .arg(l.pValue, 0, 'g', 2);
-            continue;
-        }
-        if (l.namedAfter) {
-            parts << tr("%1 was named on top of it (a further %2 % of the held-out error): alone it predicts "
-                        "worse (%3 times the held-out error), but the change needs both forms, so the data "
-                        "cannot say which of them it is.")
-                         .arg(causeDisplayName(l.cause))
-                         .arg(100 * l.explainedAfter, 0, 'f', 0)
-                         .arg(l.heldOutLossRatio, 0, 'g', 2);
             continue;
         }
         if (!l.ruledOut && !l.worseOutput.empty()) {
