@@ -308,6 +308,8 @@ ZH = {
     "A batch file with your column names": "一个使用您的列名的批次文件",
     "Save the column mapping": "保存列映射",
     "Mappings (*.json)": "映射 (*.json)",
+    "%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.":
+        "%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。",
     "%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the model's error there is judged beyond the reference's conditions, and an alarm there may be that condition rather than a change of the line.":
         "%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。",
     "A transmitter hung (the same reading for a minute or more) on %1 rows: left out, an input bridged like a dropout.":

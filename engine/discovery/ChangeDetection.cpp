@@ -86,7 +86,7 @@ Expected<monitoring::Detection>
 judgeWith(const std::vector<data::SiBatch>& reference, const std::vector<physics::SimulationResult>& refSims,
           const std::vector<data::SiBatch>& batches, const std::vector<physics::SimulationResult>& sims,
           const std::vector<int>& channels, bool residuals, const monitoring::MonitorOptions& mo,
-          std::vector<std::string>& columns) {
+          const std::vector<bool>& levelJudged, std::vector<std::string>& columns) {
     columns.clear();
     if (!residuals) {
         for (const auto& in : inputColumns()) {
@@ -102,6 +102,7 @@ judgeWith(const std::vector<data::SiBatch>& reference, const std::vector<physics
     }
     for (std::size_t b = 0; b < batches.size(); ++b) {
         newRuns.push_back(runOf(batches[b], sims[b], channels, residuals));
+        newRuns.back().levelJudged = levelJudged[b];
     }
     auto monitor = monitoring::Monitor::fit(refRuns, columns, mo);
     if (!monitor) {
@@ -127,17 +128,23 @@ detectChange(const std::vector<data::SiBatch>& reference, const std::vector<data
     }
     monitoring::MonitorOptions mo;
     mo.falseAlarmRate = options.falseAlarmRate;
+    std::vector<bool> levelJudged(batches.size(), true);
+    if (options.judgeOnlyChangesBeyondReferenceConditions) {
+        for (const auto& o : outsideReference(reference, batches)) {
+            levelJudged[o.batch] = false;
+        }
+    }
     ChangeDetection out;
     out.falseAlarmRate = options.falseAlarmRate;
     // DryTwin's monitor shares its detector's rate with the causes' change tests (Bonferroni).
     monitoring::MonitorOptions half = mo;
     half.falseAlarmRate = options.falseAlarmRate / 2;
     auto drytwin = judgeWith(referenceForModel, refSims, batchesForModel, sims, channels, true, half,
-                             out.drytwinColumns);
+                             levelJudged, out.drytwinColumns);
     if (!drytwin) {
         return drytwin.error();
     }
-    auto pca = judgeWith(reference, refSims, batches, sims, channels, false, mo, out.pcaColumns);
+    auto pca = judgeWith(reference, refSims, batches, sims, channels, false, mo, levelJudged, out.pcaColumns);
     if (!pca) {
         return pca.error();
     }

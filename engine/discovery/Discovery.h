@@ -100,6 +100,13 @@ struct DiscoveryOptions {
     /// take it off every period's measurements before a change is looked for. false: the
     /// causes' normal values alone carry the structure.
     bool learnLineStructure = true;
+    /// Against a reference period: a new batch whose typical value of an input lies outside what
+    /// the reference saw (its 0.5-99.5 % range widened by a quarter of the span: a winter batch
+    /// against summer runs) has no normal level to be compared with; both detectors judge only
+    /// changes within it (its standardised statistics lose their own mean, and so do the null's).
+    /// Every alarm on the healthy pairs of the study had such a batch. false: its level is
+    /// judged like any other's, with a note, as before 2026-11-28.
+    bool judgeOnlyChangesBeyondReferenceConditions = true;
     /// Against a reference period: a cause counts against an output it acts on when its effect
     /// there does not point the way that output changed (or differs in size by more than a factor
     /// of 4), not whenever it raises that output's error: the lumped model may state a change's

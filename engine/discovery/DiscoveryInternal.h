@@ -437,7 +437,18 @@ const std::array<InputColumn, 8>& inputColumns();
 /// reference saw (its 0.5-99.5 % range widened by a quarter of the span), naming the input, its
 /// value and the reference's range (ReferenceDiscovery.cpp).
 std::vector<std::string> operatingRangeNotes(const std::vector<data::SiBatch>& reference,
-                                             const std::vector<data::SiBatch>& batches);
+                                             const std::vector<data::SiBatch>& batches,
+                                             bool levelNotJudged = true);
+/// @brief A new batch whose typical value (median) of one input lies outside what the reference
+/// saw (its 0.5-99.5 % range widened by a quarter of the span).
+struct OutsideReference {
+    std::size_t batch = 0;
+    const InputColumn* input = nullptr;
+    double typical = 0, low = 0, high = 0; ///< the batch's median and the reference's range, file units
+};
+/// @brief Every such batch and input (ReferenceDiscovery.cpp); the notes and the detectors use it.
+std::vector<OutsideReference> outsideReference(const std::vector<data::SiBatch>& reference,
+                                               const std::vector<data::SiBatch>& batches);
 LineStructure learnLineStructure(const std::vector<data::SiBatch>& reference,
                                  const std::vector<physics::SimulationResult>& refSims);
 /// Progress at a fraction of the whole discovery; true when the user stopped it.

@@ -147,14 +147,14 @@ Expected<std::string> judgeAgainstReference(const Problem& pr, Finding& f) {
 /// outside what the reference saw (its 0.5-99.5 % range, widened by a quarter of the span): the
 /// model's error there is judged beyond the reference's conditions, and the detectors may take
 /// the unseen condition for a change (a hot summer day against a winter reference).
-std::vector<std::string> operatingRangeNotes(const std::vector<data::SiBatch>& reference,
-                                             const std::vector<data::SiBatch>& batches) {
+std::vector<OutsideReference> outsideReference(const std::vector<data::SiBatch>& reference,
+                                               const std::vector<data::SiBatch>& batches) {
     const auto quantile = [](std::vector<double>& v, double q) {
         const auto at = v.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
         std::nth_element(v.begin(), at, v.end());
         return *at;
     };
-    std::vector<std::string> notes;
+    std::vector<OutsideReference> out;
     for (const auto& in : inputColumns()) {
         if (std::string_view(in.name) == "T_hot_sp_C") { // the controller's; the hot air itself is judged
             continue;
@@ -172,7 +172,8 @@ std::vector<std::string> operatingRangeNotes(const std::vector<data::SiBatch>& r
         }
         const double lo = quantile(seen, 0.005), hi = quantile(seen, 0.995);
         const double margin = 0.25 * (hi - lo);
-        for (const auto& b : batches) {
+        for (std::size_t i = 0; i < batches.size(); ++i) {
+            const auto& b = batches[i];
             std::vector<double> v;
             for (std::size_t k = 0; k < b.rows(); ++k) {
                 if (b.keep[k] && std::isfinite(in.at(b, k))) {
@@ -184,14 +185,25 @@ std::vector<std::string> operatingRangeNotes(const std::vector<data::SiBatch>& r
             }
             const double typical = quantile(v, 0.5);
             if (typical < lo - margin || typical > hi + margin) {
-                notes.push_back(
-                    format("%s: %s is typically %.4g %s, outside what the reference saw (%.4g to %.4g "
-                           "%s): the model's error there is judged beyond the reference's "
-                           "conditions, and an alarm there may be that condition rather than a "
-                           "change of the line",
-                           b.id.c_str(), in.name, typical, in.unit, lo, hi, in.unit));
+                out.push_back({i, &in, typical, lo, hi});
             }
         }
+    }
+    return out;
+}
+
+std::vector<std::string> operatingRangeNotes(const std::vector<data::SiBatch>& reference,
+                                             const std::vector<data::SiBatch>& batches, bool levelNotJudged) {
+    std::vector<std::string> notes;
+    for (const auto& o : outsideReference(reference, batches)) {
+        notes.push_back(format(
+            "%s: %s is typically %.4g %s, outside what the reference saw (%.4g to %.4g %s): %s",
+            batches[o.batch].id.c_str(), o.input->name, o.typical, o.input->unit, o.low, o.high,
+            o.input->unit,
+            levelNotJudged ? "the reference has no normal level for these conditions, so the detectors "
+                             "judge only changes within this batch, not its level"
+                           : "the model's error there is judged beyond the reference's conditions, and an "
+                             "alarm there may be that condition rather than a change of the line"));
     }
     return notes;
 }
@@ -468,7 +480,8 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
             "residuals below are what is left",
             structure.lambda));
     }
-    for (auto& note : detail::operatingRangeNotes(reference, batches)) {
+    for (auto& note :
+         detail::operatingRangeNotes(reference, batches, options.judgeOnlyChangesBeyondReferenceConditions)) {
         result.notes.push_back(std::move(note));
     }
     if (!options.causes.empty()) {

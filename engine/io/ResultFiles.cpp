@@ -348,6 +348,8 @@ json detectionJson(const monitoring::Detection& d, const std::vector<std::string
                 {"spe_window", num(d.limits.speWindow)}}}};
     j["first_alarm"] = d.hasFirstAlarm ? json{{"batch", d.firstAlarmRun}, {"time_s", num(d.firstAlarmTimeS)}}
                                        : json(nullptr);
+    // Batches in conditions the reference never saw: only changes within them are judged.
+    j["level_not_judged"] = d.levelNotJudged;
     j["onset"] = d.hasOnset ? json{{"batch", d.onsetRun},
                                    {"time_s", num(d.onsetS)},
                                    {"ci95", {num(d.onsetLowS), num(d.onsetHighS)}}}

@@ -82,26 +82,42 @@ std::vector<std::shared_ptr<NullDistribution>> simulate(const std::vector<NullMo
     }
     StandardNormal normal(o.seed);
     std::vector<double> z(count * static_cast<std::size_t>(length)); // model-major
-    std::vector<double> cusum(count), cusumMax(count);
+    const std::vector<char>& levelFree = models.front().levelFree;
     for (int s = 0; s < o.simulations; ++s) {
         const double offset = normal();
-        std::fill(cusum.begin(), cusum.end(), 0.0);
-        std::fill(cusumMax.begin(), cusumMax.end(), 0.0);
         std::size_t t = 0;
-        for (int runLength : runLengths) {
+        for (std::size_t r = 0; r < runLengths.size(); ++r) {
+            const int runLength = runLengths[r];
+            const std::size_t first = t;
             const double level = normal();
             for (int i = 0; i < runLength; ++i, ++t) {
                 const double noise = normal();
                 for (std::size_t m = 0; m < count; ++m) {
-                    const double v = noise + runSd[m] * level + offsetSd[m] * offset;
-                    z[m * static_cast<std::size_t>(length) + t] = v;
-                    cusum[m] = std::max(0.0, cusum[m] + v - o.cusumK);
-                    cusumMax[m] = std::max(cusumMax[m], cusum[m]);
+                    z[m * static_cast<std::size_t>(length) + t] =
+                        noise + runSd[m] * level + offsetSd[m] * offset;
+                }
+            }
+            if (r < levelFree.size() && levelFree[r] && runLength > 0) {
+                for (std::size_t m = 0; m < count; ++m) {
+                    double* run = z.data() + m * static_cast<std::size_t>(length) + first;
+                    double mean = 0;
+                    for (int i = 0; i < runLength; ++i) {
+                        mean += run[i];
+                    }
+                    mean /= runLength;
+                    for (int i = 0; i < runLength; ++i) {
+                        run[i] -= mean;
+                    }
                 }
             }
         }
         for (std::size_t m = 0; m < count; ++m) {
             const double* zm = z.data() + m * static_cast<std::size_t>(length);
+            double cusum = 0, cusumMax = 0;
+            for (int i = 0; i < length; ++i) {
+                cusum = std::max(0.0, cusum + zm[i] - o.cusumK);
+                cusumMax = std::max(cusumMax, cusum);
+            }
             double tail = 0, glrMax = 0;
             for (int tau = length - 1; tau >= 0; --tau) {
                 tail += zm[tau];
@@ -111,7 +127,7 @@ std::vector<std::shared_ptr<NullDistribution>> simulate(const std::vector<NullMo
                 }
             }
             out[m]->glrMaxima.push_back(glrMax);
-            out[m]->cusumMaxima.push_back(cusumMax[m]);
+            out[m]->cusumMaxima.push_back(cusumMax);
         }
     }
     const int allowed = allowedExceedances(o);
@@ -171,12 +187,14 @@ int NullModel::length() const {
 
 std::vector<std::shared_ptr<const NullDistribution>> nullDistributions(const std::vector<NullModel>& models,
                                                                        const ChangePointOptions& options) {
-    using Key = std::tuple<std::vector<int>, double, double, int, double, double, int, unsigned>;
+    using Key =
+        std::tuple<std::vector<int>, std::vector<char>, double, double, int, double, double, int, unsigned>;
     static std::mutex mutex;
     static std::map<Key, std::shared_ptr<const NullDistribution>> cache;
     std::vector<Key> keys;
     std::vector<std::shared_ptr<const NullDistribution>> out(models.size());
-    std::map<std::vector<int>, std::vector<std::size_t>> missing; // by runs: each group simulated together
+    // By runs (and which runs' levels are free): each group simulated together.
+    std::map<std::pair<std::vector<int>, std::vector<char>>, std::vector<std::size_t>> missing;
     {
         std::lock_guard lock(mutex);
         for (std::size_t i = 0; i < models.size(); ++i) {
@@ -184,22 +202,23 @@ std::vector<std::shared_ptr<const NullDistribution>> nullDistributions(const std
             for (int& l : runs) {
                 l = std::max(0, l);
             }
-            keys.emplace_back(runs, models[i].runEffectVariance, models[i].offsetVariance, options.minSegment,
-                              options.falseAlarmRate, options.cusumK, options.simulations, options.seed);
+            keys.emplace_back(runs, models[i].levelFree, models[i].runEffectVariance,
+                              models[i].offsetVariance, options.minSegment, options.falseAlarmRate,
+                              options.cusumK, options.simulations, options.seed);
             if (auto it = cache.find(keys.back()); it != cache.end()) {
                 out[i] = it->second;
             } else {
-                missing[runs].push_back(i);
+                missing[{runs, models[i].levelFree}].push_back(i);
             }
         }
     }
     // Simulated outside the lock: two threads asking for the same new model both compute it
     // (the same numbers, the seed is fixed) rather than one waiting on the other's lock.
-    for (const auto& [runs, indices] : missing) {
+    for (const auto& [runsAndLevels, indices] : missing) {
         std::vector<NullModel> group;
         for (std::size_t i : indices) {
             group.push_back(models[i]);
-            group.back().runLengths = runs;
+            group.back().runLengths = runsAndLevels.first;
         }
         const auto simulated = simulate(group, options);
         std::lock_guard lock(mutex);

@@ -27,6 +27,9 @@ struct NullModel {
     std::vector<int> runLengths;  ///< values per run, in order; their sum is the series length
     double runEffectVariance = 0; ///< τ²: variance of each run's own offset
     double offsetVariance = 0;    ///< v: variance of the offset shared by all runs
+    /// Per run (empty: none): its own mean is taken off, as the judged series' is for a run whose
+    /// level is not compared with the reference (conditions the reference never saw).
+    std::vector<char> levelFree;
 
     /// @brief iid N(0,1) values, one run of @p length.
     static NullModel iid(int length);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numeric>
 
 namespace drytwin::monitoring {
 
@@ -16,9 +17,13 @@ Error notEnoughData(const std::string& place, const std::string& reason, const s
     return Error{ErrorKind::BadInput, place, reason, ErrorCode::NotEnoughData, {what, std::to_string(count)}};
 }
 
-NullModel nullModelOf(const LongRunNull& null, const std::vector<int>& runWindows) {
+NullModel nullModelOf(const LongRunNull& null, const std::vector<int>& runWindows,
+                      const std::vector<char>& levelFree) {
     NullModel m;
     m.runLengths = runWindows;
+    if (std::find(levelFree.begin(), levelFree.end(), char{1}) != levelFree.end()) {
+        m.levelFree = levelFree; // else empty: the same cached null as every fully judged series
+    }
     m.runEffectVariance = null.runEffectVariance;
     m.offsetVariance = null.offsetVariance;
     return m;
@@ -262,12 +267,13 @@ void Monitor::scoreBlock(const Eigen::Ref<const Eigen::VectorXd>& lagged, double
     logSpe /= static_cast<double>(m_leaveOneOut.size());
 }
 
-NullModel Monitor::t2NullModel(const std::vector<int>& runWindows) const {
-    return nullModelOf(m_t2Null, runWindows);
+NullModel Monitor::t2NullModel(const std::vector<int>& runWindows, const std::vector<char>& levelFree) const {
+    return nullModelOf(m_t2Null, runWindows, levelFree);
 }
 
-NullModel Monitor::speNullModel(const std::vector<int>& runWindows) const {
-    return nullModelOf(m_speNull, runWindows);
+NullModel Monitor::speNullModel(const std::vector<int>& runWindows,
+                                const std::vector<char>& levelFree) const {
+    return nullModelOf(m_speNull, runWindows, levelFree);
 }
 
 Expected<Detection> Monitor::judge(const std::vector<MonitorRun>& runs) const {
@@ -291,6 +297,7 @@ Expected<Detection> Monitor::judge(const std::vector<MonitorRun>& runs) const {
     std::vector<double> zT2, zSpe;
     std::vector<int> zWhere;     // series index of each z
     std::vector<int> runWindows; // valid windows per run
+    std::vector<char> levelFree; // per run: its level is not judged
     for (std::size_t r = 0; r < runs.size(); ++r) {
         const Eigen::MatrixXd lagged =
             lagBlocks(runs[r].timeS, runs[r].values, m_options.blockS, m_options.lags);
@@ -324,12 +331,32 @@ Expected<Detection> Monitor::judge(const std::vector<MonitorRun>& runs) const {
             }
             d.series.push_back(pt);
         }
+        levelFree.push_back(runs[r].levelJudged ? 0 : 1);
+        if (!runs[r].levelJudged && runWindows.back() > 0) { // only changes within the run count
+            const auto first = zT2.end() - runWindows.back();
+            const double meanT2 = std::accumulate(first, zT2.end(), 0.0) / runWindows.back();
+            const auto firstSpe = zSpe.end() - runWindows.back();
+            const double meanSpe = std::accumulate(firstSpe, zSpe.end(), 0.0) / runWindows.back();
+            for (auto it = first; it != zT2.end(); ++it) {
+                *it -= meanT2;
+            }
+            for (auto it = firstSpe; it != zSpe.end(); ++it) {
+                *it -= meanSpe;
+            }
+            for (auto it = zWhere.end() - runWindows.back(); it != zWhere.end(); ++it) {
+                d.series[static_cast<std::size_t>(*it)].zT2 -= meanT2;
+                d.series[static_cast<std::size_t>(*it)].zSpe -= meanSpe;
+            }
+            d.levelNotJudged.push_back(runs[r].id);
+        }
     }
 
     const ChangePointOptions cp = m_options.changePointOptions();
-    nullDistributions({t2NullModel(runWindows), speNullModel(runWindows)}, cp); // one simulation for both
-    auto t2 = detectChangePoint(zT2, t2NullModel(runWindows), cp);
-    auto spe = detectChangePoint(zSpe, speNullModel(runWindows), cp);
+    const NullModel t2Model = t2NullModel(runWindows, levelFree),
+                    speModel = speNullModel(runWindows, levelFree);
+    nullDistributions({t2Model, speModel}, cp); // one simulation for both
+    auto t2 = detectChangePoint(zT2, t2Model, cp);
+    auto spe = detectChangePoint(zSpe, speModel, cp);
     if (!t2 || !spe) {
         return (!t2 ? t2 : spe).error();
     }

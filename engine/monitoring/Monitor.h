@@ -16,6 +16,10 @@ struct MonitorRun {
     std::string id;
     std::vector<double> timeS; ///< strictly increasing; nominally 1 s apart
     Eigen::MatrixXd values;    ///< rows × columns, in the order of the monitor's column names
+    /// false: the run's level is not compared with the reference's, only changes within it (its
+    /// standardised statistics lose their own mean, in the null as well): a run in conditions the
+    /// reference never saw has no normal level to be judged against.
+    bool levelJudged = true;
 };
 
 /// @brief Everything the monitor can be told; defaults suit 1 s data and hour-long runs.
@@ -103,7 +107,8 @@ struct Detection {
     /// reconstruction-based share.
     std::vector<Contribution> contributions;
     std::vector<WindowPoint> series;
-    std::vector<int> runStarts; ///< index in `series` of each run's first window
+    std::vector<int> runStarts;              ///< index in `series` of each run's first window
+    std::vector<std::string> levelNotJudged; ///< runs whose level was not compared (MonitorRun::levelJudged)
     StatisticJudgement t2, spe;
     MonitorLimits limits;
     int components = 0;
@@ -143,9 +148,9 @@ public:
     /// fits (NaN when the row is incomplete): what the windows and the null are built from.
     void scoreBlock(const Eigen::Ref<const Eigen::VectorXd>& lagged, double& logT2, double& logSpe) const;
     /// @brief The null of the standardised T² and SPE window series for runs of @p runWindows.
-    NullModel t2NullModel(const std::vector<int>& runWindows) const;
+    NullModel t2NullModel(const std::vector<int>& runWindows, const std::vector<char>& levelFree = {}) const;
     /// @brief As t2NullModel(), for SPE.
-    NullModel speNullModel(const std::vector<int>& runWindows) const;
+    NullModel speNullModel(const std::vector<int>& runWindows, const std::vector<char>& levelFree = {}) const;
 
 private:
     MonitorOptions m_options;

@@ -418,6 +418,14 @@ QString noteText(const std::string& note) {
     // the reference saw (11 to 23 °C): ..."
     static const QRegularExpression outside(QStringLiteral(
         "^(.+): (\\S+) is typically (\\S+) (.+), outside what the reference saw \\((\\S+) to (\\S+) "));
+    if (const auto m = outside.match(n); m.hasMatch() && n.contains(QStringLiteral("only changes within"))) {
+        return DiscoverPanel::tr(
+                   "%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "
+                   "reference has no normal level for these conditions, so the detectors judge only "
+                   "changes within this batch, not its level.")
+            .arg(m.captured(1), columnDisplayName(m.captured(2).toStdString()), m.captured(3), m.captured(4),
+                 m.captured(5), m.captured(6));
+    }
     if (const auto m = outside.match(n); m.hasMatch()) {
         return DiscoverPanel::tr(
                    "%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "

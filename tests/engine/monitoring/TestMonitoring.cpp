@@ -191,6 +191,14 @@ private Q_SLOTS:
         const auto d3 = nullDistribution(wander, o);
         QVERIFY(d3->glrThreshold > d1->glrThreshold && d3->cusumThreshold > d1->cusumThreshold);
         QVERIFY(!detectChangePoint(std::vector<double>(49, 0.0), wander, o).ok()); // 49 ≠ 50 values
+        // Runs whose own mean is taken off wander less than any run with its level: the run and
+        // shared offsets are gone, and what is left sums to zero within each run.
+        NullModel levelFree = wander;
+        levelFree.levelFree = {1, 1};
+        const auto d4 = nullDistribution(levelFree, o);
+        QVERIFY(d4.get() != d3.get()); // a model of its own in the cache
+        QVERIFY2(d4->glrThreshold < d1->glrThreshold && d4->cusumThreshold < d1->cusumThreshold,
+                 qPrintable(QString("%1 vs %2").arg(d4->glrThreshold).arg(d1->glrThreshold)));
     }
 
     void contributionsSumToTheStatistics() {
@@ -319,6 +327,48 @@ private Q_SLOTS:
         QVERIFY(d->series[static_cast<std::size_t>(d->firstAlarmWindow)].alarm);
         QCOMPARE(static_cast<int>(d->series.size()), 4 * rows / 60);
         QCOMPARE(d->runStarts, (std::vector<int>{0, 50, 100, 150}));
+    }
+
+    // A run in conditions the reference never saw has no normal level: with its level not
+    // judged, a whole-run offset (a new operating point) is no change, while a fault that starts
+    // within the run and persists is still found, from its onset there.
+    void aRunWhoseLevelIsNotJudgedShowsOnlyChangesWithinIt() {
+        const Process proc;
+        const int rows = 3000;
+        auto m = Monitor::fit(proc.runs(11, 4, rows, "ref"), proc.names());
+        QVERIFY2(m.ok(), why(m).c_str());
+        auto newRuns = proc.runs(5003, 4, rows, "new", 1, meanShift(0, 2, 2.5));
+        const auto judged = m->judge(newRuns);
+        QVERIFY2(judged.ok(), why(judged).c_str());
+        QVERIFY(judged->changed); // its level, judged, is a change
+        QVERIFY(judged->levelNotJudged.empty());
+        newRuns[1].levelJudged = false;
+        const auto free = m->judge(newRuns);
+        QVERIFY2(free.ok(), why(free).c_str());
+        qInfo("whole-run offset: judged p %.3g; level not judged p %.3g", judged->pValue, free->pValue);
+        QVERIFY(!free->changed);
+        QCOMPARE(free->levelNotJudged, (std::vector<std::string>{"new2"}));
+        double sumT2 = 0, sumSpe = 0; // the run's standardised statistics lost their own mean
+        for (int w = free->runStarts[1]; w < free->runStarts[2]; ++w) {
+            sumT2 += free->series[static_cast<std::size_t>(w)].zT2;
+            sumSpe += free->series[static_cast<std::size_t>(w)].zSpe;
+        }
+        QVERIFY2(std::abs(sumT2) < 1e-9 && std::abs(sumSpe) < 1e-9, qPrintable(QString::number(sumT2)));
+
+        // A fault from mid-run on, persisting into the runs after it (judged as usual).
+        const int shiftRow = 1500;
+        auto within = proc.runs(5003, 4, rows, "new", 1, meanShift(shiftRow, 2, 1.5));
+        for (int r : {2, 3}) {
+            within[static_cast<std::size_t>(r)].values.col(2).array() += 1.5 * proc.marginalSd(2);
+        }
+        within[1].levelJudged = false;
+        const auto d = m->judge(within);
+        QVERIFY2(d.ok(), why(d).c_str());
+        qInfo("shift within: %s; onset %s %.0f s [%.0f, %.0f]", d->ending.message.c_str(),
+              d->onsetRun.c_str(), d->onsetS, d->onsetLowS, d->onsetHighS);
+        QVERIFY(d->changed);
+        QCOMPARE(d->onsetRun, std::string("new2"));
+        QVERIFY2(std::abs(d->onsetS - shiftRow) <= 300, qPrintable(QString::number(d->onsetS)));
     }
 
     void correlationBreakIsSeenBySpe() {
