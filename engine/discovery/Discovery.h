@@ -105,7 +105,7 @@ struct DiscoveryOptions {
     /// against summer runs) has no normal level to be compared with; both detectors judge only
     /// changes within it (its standardised statistics lose their own mean, and so do the null's).
     /// Every alarm on the healthy pairs of the study had such a batch. false: its level is
-    /// judged like any other's, with a note, as before 2026-11-28.
+    /// judged like any other's, with a note, as before `9366b58`.
     bool judgeOnlyChangesBeyondReferenceConditions = true;
     /// Against a reference period: a cause counts against an output it acts on when its effect
     /// there does not point the way that output changed (or differs in size by more than a factor
