@@ -653,13 +653,17 @@
         <translation>出口混合：X_out 和 T_out 的一阶滞后（输送带和风选机存料）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="49"/>
         <source>tube wall heat loss: T_gas = T_hot - theta (T_hot - T_amb)</source>
-        <translation>管壁散热：T_gas = T_hot - theta (T_hot - T_amb)</translation>
+        <translation type="vanished">管壁散热：T_gas = T_hot - theta (T_hot - T_amb)</translation>
     </message>
     <message>
         <source>gas-phase coupling: T_gas falls by theta L_v (X_in - X) m_dry / (c_air m_air) along the tube</source>
         <translation type="vanished">气相耦合：沿管 T_gas 降低 theta L_v (X_in - X) m_dry / (c_air m_air)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="49"/>
+        <source>tube wall heat loss, its transfer units over the tube: T_gas = T_amb + (T_hot - T_amb) exp(-theta s / tau_HDT)</source>
+        <translation>管壁散热，整根管的传热单元数：T_gas = T_amb + (T_hot - T_amb) exp(-theta s / tau_HDT)</translation>
     </message>
     <message>
         <location filename="../widgets/model/ParameterTexts.cpp" line="50"/>

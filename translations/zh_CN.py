@@ -747,7 +747,7 @@ ZH = {
     "transport time on the conveyor": "输送机上的输送时间",
     "time constant of the hot-air temperature actuator": "热风温度执行机构的时间常数",
     "outlet mixing: first-order lag of X_out and T_out (belt and winnower holdup)": "出口混合：X_out 和 T_out 的一阶滞后（输送带和风选机存料）",
-    "tube wall heat loss: T_gas = T_hot - theta (T_hot - T_amb)": "管壁散热：T_gas = T_hot - theta (T_hot - T_amb)",
+    "tube wall heat loss, its transfer units over the tube: T_gas = T_amb + (T_hot - T_amb) exp(-theta s / tau_HDT)": "管壁散热，整根管的传热单元数：T_gas = T_amb + (T_hot - T_amb) exp(-theta s / tau_HDT)",
     "gas-phase coupling: T_gas falls by theta L_v (X_in - X) m_dry / (c_air m_air) along the tube, and w rises by theta (X_in - X) m_dry / m_air": "气相耦合：沿管 T_gas 降低 theta L_v (X_in - X) m_dry / (c_air m_air)，w 升高 theta (X_in - X) m_dry / m_air",
     "fouling: h = h_HDT (1 - theta t), t since the batch started": "结垢：h = h_HDT (1 - theta t)，t 为批次开始后的时间",
     "first-order lag of the outlet moisture meter": "出口水分仪的一阶滞后",

@@ -82,8 +82,10 @@ const std::array<ParameterInfo, kParamCount>& parameterTable() {
         // the virtual plant has its own, richer forms (docs/mechanisms.md). Default 0: the paper's
         // model. Those acting outside the ODEs are marked like durations: their sensitivities come
         // from differences of whole runs.
-        {Param::theta_wall, "theta_wall", "tube wall heat loss: T_gas = T_hot - theta (T_hot - T_amb)", "-",
-         0, 0, 0.5, "extension tube_wall_heat_loss", false, false},
+        {Param::theta_wall, "theta_wall",
+         "tube wall heat loss, its transfer units over the tube: T_gas = T_amb + (T_hot - T_amb) exp(-theta "
+         "s / tau_HDT)",
+         "-", 0, 0, 1.0, "extension tube_wall_heat_loss", false, false},
         {Param::theta_gas, "theta_gas",
          "gas-phase coupling: T_gas falls by theta L_v (X_in - X) m_dry / (c_air m_air) along the tube, "
          "and w rises by theta (X_in - X) m_dry / m_air",

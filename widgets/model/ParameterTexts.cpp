@@ -46,7 +46,8 @@ namespace {
     QT_TRANSLATE_NOOP("ParameterTexts", "time constant of the hot-air temperature actuator"),
     QT_TRANSLATE_NOOP("ParameterTexts",
                       "outlet mixing: first-order lag of X_out and T_out (belt and winnower holdup)"),
-    QT_TRANSLATE_NOOP("ParameterTexts", "tube wall heat loss: T_gas = T_hot - theta (T_hot - T_amb)"),
+    QT_TRANSLATE_NOOP("ParameterTexts", "tube wall heat loss, its transfer units over the tube: T_gas = "
+                                        "T_amb + (T_hot - T_amb) exp(-theta s / tau_HDT)"),
     QT_TRANSLATE_NOOP(
         "ParameterTexts",
         "gas-phase coupling: T_gas falls by theta L_v (X_in - X) m_dry / (c_air m_air) along the tube, and w "

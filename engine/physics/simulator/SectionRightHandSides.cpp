@@ -141,6 +141,7 @@ bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, con
             const auto& l) {
             using T = std::decay_t<decltype(l.state(0))>;
             const double wall = p[Param::theta_wall];
+            const double tubeResidenceS = std::max(p[Param::tau_HDT], 1e-6);
             const double gasCoupling = p[Param::theta_gas];
             const double fouling = p[Param::theta_foul];
             const double falling = p[Param::theta_fall];
@@ -149,6 +150,7 @@ bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, con
             double gasCooling[kMaxLanes] = {}; // K per kg/kg evaporated
             double gasLoad[kMaxLanes] = {};    // kg dry product per kg of air
             double xEntry[kMaxLanes] = {};
+            double tEntry[kMaxLanes] = {};
             double fallingLane[kMaxLanes] = {};
             const double onset = p[Param::t_onset];
             for (int lane = 0; lane < l.width; ++lane) {
@@ -163,7 +165,16 @@ bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, con
                 }
                 fallingLane[lane] = falling;
                 if (wall != 0) { // tube_wall_heat_loss, simple form
-                    gas[lane] = tHot - wall * (tHot - where.of(x.in->tAmbK));
+                    // The gas loses heat to the wall as it passes, so it approaches ambient
+                    // exponentially along the tube: θ is the wall's number of transfer units over
+                    // the whole tube (the mean loss is about θ/2 of the excess over ambient).
+                    // Constant along the tube (T_hot − θ (T_hot − T_amb), the form until
+                    // 2026-11-27), it matched the line's wall loss less well than the gas
+                    // coupling, whose cooling also grows as the parcels dry, and a wall loss of
+                    // 0.15 was named as gas coupling alone (seeds 102, 322).
+                    const double along = std::clamp(s / tubeResidenceS, 0.0, 1.0);
+                    const double ambient = where.of(x.in->tAmbK);
+                    gas[lane] = ambient + (tHot - ambient) * std::exp(-wall * along);
                 }
                 if (fouling != 0) {
                     hours[lane] = (sinceStart - onset) / 3600.0;
@@ -171,6 +182,7 @@ bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, con
                 if (gasCoupling != 0) { // conditions at the parcel's entry
                     const SamplePoint in0 = x.locate(parcel, 0.0);
                     xEntry[lane] = in0.of(x.in->xInDb);
+                    tEntry[lane] = in0.of(x.in->tInK);
                     const double dryFeed = in0.of(x.in->feedKgPerS) / (1 + xEntry[lane]);
                     const double air = std::max(1.0, in0.of(x.in->airSpeedMPerS));
                     gasLoad[lane] = dryFeed / (kModelAirMassPerSpeed * air);
@@ -180,7 +192,14 @@ bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, con
             TubeEnvironmentT<T> env;
             env.tGasK = l.load(gas);
             if (gasCoupling != 0) { // gas_phase_coupling, simple form
-                env.tGasK = env.tGasK - gasCoupling * l.load(gasCooling) * (l.load(xEntry) - l.state(0));
+                // The air gives up the heat the parcels took so far: the latent heat of what they
+                // evaporated and the sensible heat that warmed them from their entry temperature
+                // (until 2026-11-27 the latent part alone; the warming, largest near the inlet,
+                // was then taken up by a second cause, a wall loss or a falling rate).
+                const T sensible = properties::generic::heatCapacityPerDryKg(l.state(0), p, sw) *
+                                   (l.state(1) - l.load(tEntry)) / kModelLatentHeat;
+                env.tGasK =
+                    env.tGasK - gasCoupling * l.load(gasCooling) * (l.load(xEntry) - l.state(0) + sensible);
             }
             env.wGas = properties::math::constant<T>(p[Param::w]);
             if (gasCoupling != 0) {
