@@ -666,247 +666,247 @@
         <translation>管壁散热，整根管的传热单元数：T_gas = T_amb + (T_hot - T_amb) exp(-theta s / tau_HDT)</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="50"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="51"/>
         <source>gas-phase coupling: T_gas falls by theta L_v (X_in - X) m_dry / (c_air m_air) along the tube, and w rises by theta (X_in - X) m_dry / m_air</source>
         <translation>气相耦合：沿管 T_gas 降低 theta L_v (X_in - X) m_dry / (c_air m_air)，w 升高 theta (X_in - X) m_dry / m_air</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="54"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="55"/>
         <source>fouling: h = h_HDT (1 - theta t), t since the batch started</source>
         <translation>结垢：h = h_HDT (1 - theta t)，t 为批次开始后的时间</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="55"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="56"/>
         <source>first-order lag of the outlet moisture meter</source>
         <translation>出口水分仪的一阶滞后</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="56"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="57"/>
         <source>constant offset of the outlet moisture meter</source>
         <translation>出口水分仪的恒定偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="57"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="58"/>
         <source>conveyor transport time minus tau_conv</source>
         <translation>输送时间减去 tau_conv</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="58"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="59"/>
         <source>falling-rate drying: Eq. 10 times 1 - theta (X_cr - X)/X_cr below X_cr = 0.25 kg/kg</source>
         <translation>降速干燥：低于 X_cr = 0.25 kg/kg 时公式 10 乘以 1 - theta (X_cr - X)/X_cr</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="60"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="61"/>
         <source>re-absorption on the conveyor: dX/dt gains theta RH</source>
         <translation>输送机上的回潮：dX/dt 增加 theta RH</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="61"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="62"/>
         <source>offset of the inlet moisture gauge: the line sees X_in measured minus it</source>
         <translation>入口水分仪偏差：产线实际含水率为 X_in 测量值减去它</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="63"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="64"/>
         <source>time constant of the hot-air sensor: the line sees T_hot + tau dT_hot/dt (its inverse lag)</source>
         <translation>热风传感器时间常数：产线实际为 T_hot + tau dT_hot/dt（其逆滞后）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="66"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="67"/>
         <source>share of the inlet gauge&apos;s fast variation (about its 20 s zero-phase mean) that is scatter, not moisture: the line sees X_in with that share removed</source>
         <translation>入口水分仪快速变化（相对其 20 s 零相位均值）中属于仪表波动而非真实水分的比例：产线实际为去掉这一部分的 X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="69"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="70"/>
         <source>onset of the mechanism extensions since each batch&apos;s start (0: from the start; transport_delay_error always acts from the start)</source>
         <translation>机理扩展自各批次开始起的起始时间（0：从开始；transport_delay_error 总是从开始起作用）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="71"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="72"/>
         <source>paper App. A</source>
         <translation>论文附录 A</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="72"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="73"/>
         <source>paper App. A (bounds: sign kept, tenfold range)</source>
         <translation>论文附录 A（范围：保持符号，十倍区间）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="73"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="74"/>
         <source>gives D_eff ≈ 1.7e-10 m²/s at 57 °C, the order reported for tobacco lamina</source>
         <translation>在 57 °C 时 D_eff ≈ 1.7e-10 m²/s，与烟叶文献报道的量级一致</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="75"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="76"/>
         <source>typical of leaf materials (20–40 kJ/mol)</source>
         <translation>叶类物料的典型值（20–40 kJ/mol）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="76"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="77"/>
         <source>heat of sorption of tobacco adds up to about a third near dryness</source>
         <translation>接近干燥时烟草的吸附热可增加约三分之一</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="77"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="78"/>
         <source>humid air halves the surface gradient at saturation</source>
         <translation>饱和时湿空气使表面梯度减半</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="78"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="79"/>
         <source>cut tobacco strands (lamina with air spaces)</source>
         <translation>烟丝（含气隙的叶片）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="79"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="80"/>
         <source>cut width about 1 mm</source>
         <translation>切丝宽度约 1 mm</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="80"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="81"/>
         <source>cut tobacco strands of 1–3 cm</source>
         <translation>长 1–3 cm 的烟丝</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="81"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="82"/>
         <source>paper §IV.C calibrated value</source>
         <translation>论文 §IV.C 标定值</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="82"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="83"/>
         <source>recirculated hot air of a tobacco dryer is humid</source>
         <translation>烟草干燥机的循环热风较湿</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="83"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="84"/>
         <source>atmospheric</source>
         <translation>大气压</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="84"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="85"/>
         <source>0 °C, the reference of the 2501 kJ/kg in Eq. 4</source>
         <translation>0 °C，即公式 4 中 2501 kJ/kg 的参考温度</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="85"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="86"/>
         <source>loose single layer</source>
         <translation>松散单层</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="86"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="87"/>
         <source>gives about 1 % dry-basis loss of the top layer on a 60 s belt</source>
         <translation>在 60 s 的输送带上表层约损失 1 %（干基）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="87"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="88"/>
         <source>natural convection of a horizontal layer</source>
         <translation>水平料层的自然对流</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="88"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="89"/>
         <source>top layer of about 2 kg/m²</source>
         <translation>表层约 2 kg/m²</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="89"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="90"/>
         <source>top third of the layer exchanges with the air</source>
         <translation>料层上部三分之一与空气交换</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="90"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="91"/>
         <source>about 0.4 % wb flash loss at 35 K excess temperature</source>
         <translation>过热 35 K 时约 0.4 %（湿基）的闪蒸损失</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="91"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="92"/>
         <source>turbulent air, short contact</source>
         <translation>湍流空气，接触时间短</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="92"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="93"/>
         <source>a few seconds</source>
         <translation>几秒</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="93"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="94"/>
         <source>tube of about 70 m at 10 m/s particle speed</source>
         <translation>管长约 70 m，颗粒速度 10 m/s</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="94"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="95"/>
         <source>belt of 12 m at 0.2 m/s</source>
         <translation>输送带长 12 m，速度 0.2 m/s</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="95"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="96"/>
         <source>heat exchanger and duct lag; used when T_hot follows its setpoint (MPC)</source>
         <translation>换热器和风道的滞后；用于 T_hot 跟随设定值时（MPC）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="97"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="98"/>
         <source>distributed line: axial mixing on the belt, the winnower&apos;s stirred volume</source>
         <translation>分布式产线：输送带上的轴向混合、风选机的搅拌容积</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="99"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="100"/>
         <source>extension tube_wall_heat_loss</source>
         <translation>扩展 tube_wall_heat_loss</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="100"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="101"/>
         <source>extension gas_phase_coupling</source>
         <translation>扩展 gas_phase_coupling</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="101"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="102"/>
         <source>extension heat_transfer_fouling</source>
         <translation>扩展 heat_transfer_fouling</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="102"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="103"/>
         <source>extension moisture_meter_lag</source>
         <translation>扩展 moisture_meter_lag</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="103"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="104"/>
         <source>extension moisture_meter_offset</source>
         <translation>扩展 moisture_meter_offset</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="104"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="105"/>
         <source>extension transport_delay_error</source>
         <translation>扩展 transport_delay_error</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="105"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="106"/>
         <source>extension falling_rate_drying</source>
         <translation>扩展 falling_rate_drying</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="106"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="107"/>
         <source>extension ambient_reabsorption</source>
         <translation>扩展 ambient_reabsorption</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="107"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="108"/>
         <source>extension inlet_moisture_sensor_offset</source>
         <translation>扩展 inlet_moisture_sensor_offset</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="108"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="109"/>
         <source>extension hot_air_sensor_lag</source>
         <translation>扩展 hot_air_sensor_lag</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="109"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="110"/>
         <source>extension inlet_moisture_sensor_noise</source>
         <translation>扩展 inlet_moisture_sensor_noise</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="110"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="111"/>
         <source>set by discovery for a cause that starts mid-batch</source>
         <translation>由发现功能为批次中途出现的原因设定</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="129"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="130"/>
         <source>added for the cause: %1</source>
         <translation>为原因“%1”添加</translation>
     </message>
@@ -1974,9 +1974,8 @@
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="285"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)</source>
-        <translation>误差随进料量和入口水分增大（按 feed_kg_h 和 X_in_pct 分组的偏差）</translation>
+        <translation type="vanished">误差随进料量和入口水分增大（按 feed_kg_h 和 X_in_pct 分组的偏差）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="288"/>
@@ -2395,12 +2394,17 @@
         <translation>°C</translation>
     </message>
     <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="285"/>
+        <source>the errors grow with feed rate and inlet moisture (bias by feed rate and by inlet moisture)</source>
+        <translation>误差随进料量和入口水分增大（按进料量和按入口水分分组的偏差）</translation>
+    </message>
+    <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="353"/>
         <source>it does not change within a batch (an offset, the tube&apos;s wall or gas phase), but this error grows or shrinks within the batch (fouling, a drifting reading)</source>
         <translation>它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="422"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="426"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。</translation>
     </message>

@@ -413,7 +413,7 @@ ZH = {
     "named": "已确认",
     "<p><b>Not named</b>; what the data allow (95 %): %1</p>": "<p><b>未确认</b>；数据允许的范围（95 %）：%1</p>",
     "the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)": "出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）",
-    "the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)": "误差随进料量和入口水分增大（按 feed_kg_h 和 X_in_pct 分组的偏差）",
+    "the errors grow with feed rate and inlet moisture (bias by feed rate and by inlet moisture)": "误差随进料量和入口水分增大（按进料量和按入口水分分组的偏差）",
     "the error drifts within every batch and resets at each batch start": "误差在每个批次内漂移，并在每个批次开始时复位",
     "the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not": "出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随",
     "a steady outlet-moisture bias that the tube-outlet moisture does not share": "出口水分存在稳定偏差，而管道出口水分没有",

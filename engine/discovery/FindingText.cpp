@@ -24,7 +24,7 @@ const char* lookFor(Param p) {
         return "the outlet-temperature error grows with the hot-air excess over ambient "
                "(bias by T_amb and T_hot)";
     case Param::theta_gas:
-        return "the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)";
+        return "the errors grow with feed rate and inlet moisture (bias by feed rate and by inlet moisture)";
     case Param::theta_foul:
         return "the error drifts within every batch and resets at each batch start";
     case Param::tau_meter:

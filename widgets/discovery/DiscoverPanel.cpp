@@ -283,7 +283,7 @@ QString lookForText(properties::Param p) {
                                  "(bias by T_amb and T_hot)");
     case Param::theta_gas:
         return DiscoverPanel::tr(
-            "the errors grow with feed rate and inlet moisture (bias by feed_kg_h and X_in_pct)");
+            "the errors grow with feed rate and inlet moisture (bias by feed rate and by inlet moisture)");
     case Param::theta_foul:
         return DiscoverPanel::tr("the error drifts within every batch and resets at each batch start");
     case Param::tau_meter:
@@ -418,21 +418,21 @@ QString noteText(const std::string& note) {
     // the reference saw (11 to 23 °C): ..."
     static const QRegularExpression outside(QStringLiteral(
         "^(.+): (\\S+) is typically (\\S+) (.+), outside what the reference saw \\((\\S+) to (\\S+) "));
-    if (const auto m = outside.match(n); m.hasMatch() && n.contains(QStringLiteral("only changes within"))) {
-        return DiscoverPanel::tr(
-                   "%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "
-                   "reference has no normal level for these conditions, so the detectors judge only "
-                   "changes within this batch, not its level.")
-            .arg(m.captured(1), columnDisplayName(m.captured(2).toStdString()), m.captured(3), m.captured(4),
-                 m.captured(5), m.captured(6));
-    }
     if (const auto m = outside.match(n); m.hasMatch()) {
-        return DiscoverPanel::tr(
-                   "%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "
-                   "model's error there is judged beyond the reference's conditions, and an alarm "
-                   "there may be that condition rather than a change of the line.")
-            .arg(m.captured(1), columnDisplayName(m.captured(2).toStdString()), m.captured(3), m.captured(4),
-                 m.captured(5), m.captured(6));
+        // Whether the detectors judged the batch's level
+        // (DiscoveryOptions::judgeOnlyChangesBeyondReferenceConditions).
+        const QString text =
+            n.contains(QStringLiteral("only changes within"))
+                ? DiscoverPanel::tr(
+                      "%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "
+                      "reference has no normal level for these conditions, so the detectors judge "
+                      "only changes within this batch, not its level.")
+                : DiscoverPanel::tr(
+                      "%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "
+                      "model's error there is judged beyond the reference's conditions, and an alarm "
+                      "there may be that condition rather than a change of the line.");
+        return text.arg(m.captured(1), columnDisplayName(m.captured(2).toStdString()), m.captured(3),
+                        m.captured(4), m.captured(5), m.captured(6));
     }
     return n;
 }
