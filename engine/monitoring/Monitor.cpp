@@ -333,17 +333,15 @@ Expected<Detection> Monitor::judge(const std::vector<MonitorRun>& runs) const {
         }
         levelFree.push_back(runs[r].levelJudged ? 0 : 1);
         if (!runs[r].levelJudged && runWindows.back() > 0) { // only changes within the run count
-            const auto first = zT2.end() - runWindows.back();
-            const double meanT2 = std::accumulate(first, zT2.end(), 0.0) / runWindows.back();
-            const auto firstSpe = zSpe.end() - runWindows.back();
-            const double meanSpe = std::accumulate(firstSpe, zSpe.end(), 0.0) / runWindows.back();
-            for (auto it = first; it != zT2.end(); ++it) {
-                *it -= meanT2;
-            }
-            for (auto it = firstSpe; it != zSpe.end(); ++it) {
-                *it -= meanSpe;
-            }
-            for (auto it = zWhere.end() - runWindows.back(); it != zWhere.end(); ++it) {
+            const int n = runWindows.back();
+            const auto takeOffRunMean = [n](std::vector<double>& z) { // the run's values are z's last n
+                const auto first = z.end() - n;
+                const double mean = std::accumulate(first, z.end(), 0.0) / n;
+                std::for_each(first, z.end(), [mean](double& v) { v -= mean; });
+                return mean;
+            };
+            const double meanT2 = takeOffRunMean(zT2), meanSpe = takeOffRunMean(zSpe);
+            for (auto it = zWhere.end() - n; it != zWhere.end(); ++it) {
                 d.series[static_cast<std::size_t>(*it)].zT2 -= meanT2;
                 d.series[static_cast<std::size_t>(*it)].zSpe -= meanSpe;
             }
