@@ -72,6 +72,9 @@ struct Reference {
     /// A detector flagged the new data (DiscoveryResult::detection): the monitors before selection,
     /// the causes' test once the first round's ranking gives it (SelectionRound::run).
     mutable bool changeDetected = false;
+    /// The screen's level before a detected change widened it (DiscoveryOptions::screenAlpha): a
+    /// cause of timing that passes it is fitted even outside the leading few (SelectionRound).
+    double strictScreenAlpha = 0.05;
 };
 
 /// The data of one discovery run: batches, their split, and the training rows the tests use.

@@ -515,6 +515,7 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     }
     result.detection = std::move(*detection);
     ref.changeDetected = result.detection.changed;
+    ref.strictScreenAlpha = options.screenAlpha;
     if (result.detection.changed && options.screenAlphaOnceDetected > 0) {
         auto& screen = prepared->pr.options.screenAlpha;
         screen = std::max(screen, options.screenAlphaOnceDetected);
