@@ -15,10 +15,6 @@ bool isLag(Param p) {
     return p == Param::tau_meter || p == Param::tau_hot_sensor;
 }
 
-bool isTiming(Param p) {
-    return isLag(p) || p == Param::dtau_conv;
-}
-
 bool isSensorFault(Param p) {
     return p == Param::tau_meter || p == Param::X_meter_offset || p == Param::X_in_offset ||
            p == Param::tau_hot_sensor || p == Param::phi_X_in_scatter;
@@ -59,12 +55,14 @@ Status SelectionRound::scoreAndFit() {
         }
     }
     // Against a reference, once a change is detected, the screen only ranks, by the tangent's
-    // predicted reduction; a timing cause's tangent at 0 says little of a lag of a minute (a 60 s
-    // meter lag on a one-hour training recording: p 0.001 against its normal value, fourth by
-    // predicted reduction, never fitted). One that passes the strict screen is fitted as well.
+    // predicted reduction; a lag's tangent at 0 says little of a lag of a minute (a 60 s meter lag
+    // on a one-hour training recording: p 0.001 against its normal value, fourth by predicted
+    // reduction, never fitted). One that passes the strict screen is fitted as well. Not the
+    // transport time: its tangent does rank it, and fitted from fourth place it took a falling
+    // rate's slower drying for a transport 20 s shorter (30 min training recording, seed 9).
     if (m_pr.reference && m_pr.reference->changeDetected) {
         for (auto& c : m_cands) {
-            if (!c.fitted && isTiming(c.parameter) && c.pValue < m_pr.reference->strictScreenAlpha) {
+            if (!c.fitted && isLag(c.parameter) && c.pValue < m_pr.reference->strictScreenAlpha) {
                 if (auto fs =
                         fitCause(c, m_model.parameters[Param::t_onset], m_frac0 + 0.2, "fitting " + c.cause);
                     !fs) {
