@@ -329,6 +329,9 @@ struct ChannelTiming {
     /// One-sided held-out p that the later channel is better predicted at its own delay than at
     /// the other channel's.
     double pValue = 1;
+    /// Where the temperature is the later one: one-sided held-out p that the moisture is predicted
+    /// worse at the temperature's delay than at its own (the moisture contradicts that delay).
+    double moistureWorseAtTemperatureDelayP = 1;
     enum class Pattern {
         Alike,            ///< within a transport time's floor: what a transport time does
         MoistureLater,    ///< only a meter lag does that

@@ -133,12 +133,7 @@ Status SelectionRound::tryFitted() {
                 return st.error();
             }
         }
-        // Alone, an outlet temperature that answers later than the model while the moisture does
-        // not is the distributed line's own thermal dynamics. Against a reference that answer is
-        // part of the line's structure learnt there, and the delay has just moved beyond its normal
-        // spread: the timing no longer speaks for the line (a 30 s transport time on one-hour
-        // training recordings and a 30 s meter lag of the study were turned down by it).
-        if (!m_pr.reference && m_timing && m_timing->pattern == ChannelTiming::Pattern::TemperatureOnly &&
+        if (m_timing && m_timing->pattern == ChannelTiming::Pattern::TemperatureOnly &&
             isOutletDelay(cand.parameter)) {
             m_record.rejected.push_back({cand.cause, "line_dynamics", lineDynamicsReason(*m_timing)});
             if (m_tried == 1) {

@@ -268,6 +268,47 @@ private Q_SLOTS:
         QCOMPARE(shareOfChange(alone, before, after), 0.0);
     }
 
+    /// The outlet temperature answers 18 s later than the model, the moisture 3 s (under a meter's
+    /// normal response). Alone that is the line's own thermal dynamics. Against a reference, whose
+    /// structure holds the line's own answer, it is so only where the moisture contradicts the
+    /// temperature's delay: its held-out error worse at 18 s than at its own 3 s.
+    void againstAReferenceALaterTemperatureIsTheLinesOnlyWhereTheMoistureContradictsIt() {
+        // The held-out errors at each channel's own delay: the moisture's the same at both
+        // (it does not pin its delay down) or 30 % larger in rms at the temperature's.
+        const auto held = [](double moistureScale, double temperatureScale) {
+            std::mt19937 rng(5);
+            std::normal_distribution<double> z(0, 1);
+            HeldOut h;
+            for (int b = 0; b < 3; ++b) {
+                h.channels.emplace_back();
+                double ar = 0;
+                for (int i = 0; i < 2000; ++i) {
+                    ar = 0.5 * ar + z(rng);
+                    h.channels.back()[kXOut].weightedError.push_back(moistureScale * ar);
+                    h.channels.back()[kTOut].weightedError.push_back(temperatureScale * ar);
+                }
+            }
+            return h;
+        };
+        const HeldOut atMoistureDelay = held(1.0, 1.5);
+        const HeldOut atTemperatureDelay = held(1.0, 1.0);      // the moisture no worse at 18 s
+        const HeldOut atTemperatureDelayWorse = held(1.3, 1.0); // the moisture worse at 18 s
+        Problem alone;
+        QVERIFY(channelTiming(alone, 0, 3, 18, atMoistureDelay, atTemperatureDelay).pattern ==
+                ChannelTiming::Pattern::TemperatureOnly);
+        Reference ref;
+        Problem against;
+        against.reference = &ref;
+        const ChannelTiming consistent =
+            channelTiming(against, 0, 3, 18, atMoistureDelay, atTemperatureDelay);
+        QVERIFY(consistent.pattern == ChannelTiming::Pattern::TemperatureLater);
+        QVERIFY(consistent.moistureWorseAtTemperatureDelayP > 0.05);
+        const ChannelTiming contradicted =
+            channelTiming(against, 0, 3, 18, atMoistureDelay, atTemperatureDelayWorse);
+        QVERIFY(contradicted.pattern == ChannelTiming::Pattern::TemperatureOnly);
+        QVERIFY(contradicted.moistureWorseAtTemperatureDelayP < 1e-6);
+    }
+
     /// A fitted cause's normal spread: at its upper 75 % bound until a detector has flagged a
     /// change (it keeps the causes' change test at its false-alarm rate), at its point estimate
     /// once one has (naming then asks which cause moved).
