@@ -34,6 +34,15 @@ Eigen::Vector2d ResidualModel::correctionWeight(int h) const {
     return m_shrinkHorizons.empty() ? Eigen::Vector2d::Ones() : onGrid(m_shrinkHorizons, m_shrink, h);
 }
 
+Eigen::Vector2d ResidualModel::boundedLearnt(int h, const Eigen::Vector2d& learnt) const {
+    if (m_learntBound.empty() || m_shrinkHorizons.empty()) {
+        return learnt;
+    }
+    const Eigen::Vector2d limit =
+        onGrid(m_shrinkHorizons, m_learntBound, h).cwiseProduct(correctionWeight(h)).cwiseQuotient(m_eScale);
+    return learnt.cwiseMax(-limit).cwiseMin(limit);
+}
+
 Eigen::Vector2d ResidualModel::referenceChangeAt(int h) const {
     return m_shrinkHorizons.empty() || m_referenceByHorizon.empty()
                ? Eigen::Vector2d::Constant(m_referenceChange)
@@ -110,6 +119,8 @@ Expected<ResidualModel> ResidualModel::trainOnBase(const std::vector<BatchView>&
         double aa = 0, ab = 0, bb = 0, at = 0, bt = 0;
     };
     std::vector<std::array<Normal, kOutputs>> normal(kShrinkGrid.size());
+    // The largest learnt correction the held-out blocks saw, per horizon and output.
+    std::vector<Eigen::Vector2d> largestLearnt(kShrinkGrid.size(), Eigen::Vector2d::Zero());
     // For the absolute-error criterion every (a, b, t) is kept (floats: 12 bytes a row, horizon
     // and output; about 12 MB for the demo's 41,000 training rows).
     std::vector<std::array<std::vector<std::array<float, 3>>, kOutputs>> samples(
@@ -146,6 +157,7 @@ Expected<ResidualModel> ResidualModel::trainOnBase(const std::vector<BatchView>&
                     for (int j = 0; j < kOutputs; ++j) {
                         const double a = -pbmChange(j), b = model(j) - reference(j),
                                      t = truth(j) - atOrigin(j);
+                        largestLearnt[g](j) = std::max(largestLearnt[g](j), std::abs(b));
                         if (options.correctionByAbsoluteError) {
                             samples[g][static_cast<std::size_t>(j)].push_back(
                                 {static_cast<float>(a), static_cast<float>(b), static_cast<float>(t)});
@@ -240,6 +252,9 @@ Expected<ResidualModel> ResidualModel::trainOnBase(const std::vector<BatchView>&
     m->m_shrinkHorizons = kShrinkGrid;
     m->m_shrink.assign(kShrinkGrid.size(), Eigen::Vector2d::Ones());
     m->m_referenceByHorizon.assign(kShrinkGrid.size(), Eigen::Vector2d::Constant(m->m_referenceChange));
+    if (options.boundLearntByValidation) {
+        m->m_learntBound = largestLearnt;
+    }
     for (std::size_t g = 0; g < kShrinkGrid.size(); ++g) {
         for (int j = 0; j < kOutputs; ++j) {
             const Eigen::Vector2d sk = chosen[g][static_cast<std::size_t>(j)];

@@ -107,7 +107,7 @@ std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
             }
             Eigen::Vector2d e = stateGain[h] * states.col(static_cast<Eigen::Index>(origin - first)) + forced;
             if (velocity()) {
-                e = e.cwiseProduct(correctionWeight(static_cast<int>(h)));
+                e = boundedLearnt(static_cast<int>(h), e.cwiseProduct(correctionWeight(static_cast<int>(h))));
             }
             const Eigen::Vector2d base = velocity() ? levelOf(v, origin, target) : targetBase;
             for (std::size_t slot : slotsOf[h]) {
@@ -191,6 +191,9 @@ std::vector<HybridPrediction> ResidualModel::forecastFrom(const std::vector<Batc
         if (velocity()) {
             sum += e;
             e = correctionWeight(static_cast<int>(i) + 1).asDiagonal() * sum;
+            for (Eigen::Index c = 0; c < e.cols(); ++c) {
+                e.col(c) = boundedLearnt(static_cast<int>(i) + 1, e.col(c));
+            }
         }
         for (Eigen::Index c = 0; c < nv; ++c) {
             const BatchView& v = views[static_cast<std::size_t>(c)];
@@ -264,7 +267,7 @@ HybridPrediction ResidualModel::predictFreeRun(const BatchView& v) const {
             const int ahead = static_cast<int>(k - start);
             const bool fitted = !m_shrinkHorizons.empty() && ahead <= m_shrinkHorizons.back();
             const Eigen::Vector2d e =
-                velocity() ? (fitted ? Eigen::Vector2d(correctionWeight(ahead).cwiseProduct(sum))
+                velocity() ? (fitted ? boundedLearnt(ahead, correctionWeight(ahead).cwiseProduct(sum))
                                      : Eigen::Vector2d::Zero())
                            : Eigen::Vector2d(m_c * x);
             // Velocity form: without any measured output the reference is the PBM itself (its

@@ -24,6 +24,7 @@ std::string ResidualModel::toJson() const {
                     {"shrink_validation_fraction", o.shrinkValidationFraction},
                     {"correction_folds", o.correctionFolds},
                     {"correction_criterion", o.correctionByAbsoluteError ? "absolute" : "squared"},
+                    {"bound_learnt_by_validation", o.boundLearntByValidation},
                     {"control_consistent_weights", o.controlConsistentWeights},
                     {"stability_constraint", o.stabilityConstraint},
                     {"stability_method",
@@ -101,6 +102,13 @@ std::string ResidualModel::toJson() const {
         changes.push_back({k(0), k(1)});
     }
     j["reference_change_by_horizon"] = changes;
+    if (!m_learntBound.empty()) {
+        nlohmann::json bounds = nlohmann::json::array();
+        for (const auto& k : m_learntBound) {
+            bounds.push_back({k(0), k(1)});
+        }
+        j["learnt_bound_by_horizon"] = bounds; // [% wb, °C]
+    }
     j["training_snapshots"] = m_snapshots;
     j["training_seconds"] = m_trainSeconds;
     return j.dump();
@@ -124,6 +132,7 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
         o.shrinkValidationFraction = jo.value("shrink_validation_fraction", 0.0);
         o.correctionFolds = jo.value("correction_folds", 0);
         o.correctionByAbsoluteError = jo.value("correction_criterion", std::string("squared")) == "absolute";
+        o.boundLearntByValidation = jo.value("bound_learnt_by_validation", false);
         o.controlConsistentWeights = jo.at("control_consistent_weights");
         o.stabilityConstraint = jo.at("stability_constraint");
         // Files written before Eq. (30) was solved as stated used the eigenvalue pull.
@@ -220,9 +229,13 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
             for (const auto& k : j.value("reference_change_by_horizon", nlohmann::json::array())) {
                 m.m_referenceByHorizon.emplace_back(k.at(0).get<double>(), k.at(1).get<double>());
             }
+            for (const auto& k : j.value("learnt_bound_by_horizon", nlohmann::json::array())) {
+                m.m_learntBound.emplace_back(k.at(0).get<double>(), k.at(1).get<double>());
+            }
             if (m.m_shrink.size() != m.m_shrinkHorizons.size() ||
                 (!m.m_referenceByHorizon.empty() &&
                  m.m_referenceByHorizon.size() != m.m_shrinkHorizons.size()) ||
+                (!m.m_learntBound.empty() && m.m_learntBound.size() != m.m_shrinkHorizons.size()) ||
                 !std::is_sorted(m.m_shrinkHorizons.begin(), m.m_shrinkHorizons.end())) {
                 return Error{ErrorKind::BadInput, "residual model",
                              "correction weights do not match their horizons"};

@@ -10,6 +10,8 @@
 
 #include <QtTest>
 #include <cmath>
+#include <functional>
+#include <nlohmann/json.hpp>
 
 using namespace drytwin;
 using namespace drytwin::residual;
@@ -307,6 +309,74 @@ private slots:
                 QVERIFY(model < old);
             }
         }
+    }
+
+    void theLearntCorrectionIsHeldWithinWhatValidationSaw() {
+        // Issue #42: a lifted state beyond anything the training rows held turned the summed
+        // correction of a new batch into 15 % wb at 180 steps. The model stores the largest learnt
+        // correction its cross-validation saw per horizon and holds the forecast's within κ_H times
+        // it: a bound of 0 is then the learnt part switched off (κ_H = 0), a bound of 10⁹ no bound,
+        // in every forecast form (one horizon after another, from one origin as the MPC asks, free
+        // run), and the file keeps it.
+        const auto& train = distributed(4201);
+        const auto& judged = distributed(4202);
+        auto trained = ResidualModel::train(train.views(), ResidualOptions{});
+        QVERIFY2(trained.ok(), trained ? "" : trained.error().message().c_str());
+        auto file = nlohmann::json::parse(trained->toJson());
+        QVERIFY(file.contains("learnt_bound_by_horizon"));
+        QCOMPARE(file["learnt_bound_by_horizon"].size(), file["correction_weight_horizons"].size());
+        QVERIFY(file["learnt_bound_by_horizon"].back()[0].get<double>() > 0);
+        const auto variant = [&](const std::function<void(nlohmann::json&)>& edit) {
+            auto j = file;
+            edit(j);
+            auto m = ResidualModel::fromJson(j.dump());
+            if (!m) {
+                qFatal("%s", m.error().message().c_str());
+            }
+            return std::move(*m);
+        };
+        const auto setAll = [](nlohmann::json& array, double value) {
+            for (auto& pair : array) {
+                pair = {value, value};
+            }
+        };
+        const ResidualModel boundZero = variant([&](auto& j) { setAll(j["learnt_bound_by_horizon"], 0.0); });
+        const ResidualModel kappaZero = variant([&](auto& j) { setAll(j["correction_weights"], 0.0); });
+        const ResidualModel boundHuge = variant([&](auto& j) { setAll(j["learnt_bound_by_horizon"], 1e9); });
+        const ResidualModel noBound = variant([&](auto& j) { j.erase("learnt_bound_by_horizon"); });
+        const auto same = [](const HybridPrediction& a, const HybridPrediction& b) {
+            for (std::size_t i = 0; i < a.xOutPct.size(); ++i) {
+                const double x = a.xOutPct[i] - b.xOutPct[i], t = a.tOutC[i] - b.tOutC[i];
+                if (std::isfinite(x) && std::abs(x) > 1e-9) {
+                    return false;
+                }
+                if (std::isfinite(t) && std::abs(t) > 1e-9) {
+                    return false;
+                }
+            }
+            return true;
+        };
+        const BatchView v = judged.views()[1];
+        QVERIFY(same(boundZero.predictHorizons(v, {1, 30, 180})[2],
+                     kappaZero.predictHorizons(v, {1, 30, 180})[2]));
+        QVERIFY(same(boundHuge.predictHorizons(v, {30})[0], noBound.predictHorizons(v, {30})[0]));
+        // Where κ_H > 0 the bound of 0 changes the forecast (the learnt part does something).
+        const std::vector<int> horizons{1, 2, 5, 10, 20, 30, 60, 180};
+        const auto zero = boundZero.predictHorizons(v, horizons), free = noBound.predictHorizons(v, horizons);
+        bool anyDiffers = false;
+        for (std::size_t i = 0; i < horizons.size(); ++i) {
+            anyDiffers = anyDiffers || !same(zero[i], free[i]);
+        }
+        QVERIFY(anyDiffers);
+        QVERIFY(same(boundZero.forecastFrom(v, 500, 180), kappaZero.forecastFrom(v, 500, 180)));
+        QVERIFY(!same(boundZero.forecastFrom(v, 500, 180), noBound.forecastFrom(v, 500, 180)));
+        QVERIFY(same(boundZero.predictFreeRun(v), kappaZero.predictFreeRun(v)));
+        // The file keeps it, and a bound that does not match the horizons is refused.
+        QCOMPARE(nlohmann::json::parse(boundZero.toJson())["learnt_bound_by_horizon"].back()[0].get<double>(),
+                 0.0);
+        auto bad = file;
+        bad["learnt_bound_by_horizon"].erase(0);
+        QVERIFY(!ResidualModel::fromJson(bad.dump()).ok());
     }
 
     void residualModelsFreeRunIsThePbmPlusTheCorrection() {
