@@ -38,9 +38,16 @@ Eigen::Vector2d ResidualModel::boundedLearnt(int h, const Eigen::Vector2d& learn
     if (m_learntBound.empty() || m_shrinkHorizons.empty()) {
         return learnt;
     }
-    const Eigen::Vector2d limit =
-        onGrid(m_shrinkHorizons, m_learntBound, h).cwiseProduct(correctionWeight(h)).cwiseQuotient(m_eScale);
-    return learnt.cwiseMax(-limit).cwiseMin(limit);
+    const Eigen::Vector2d bound =
+        onGrid(m_shrinkHorizons, m_learntBound, h).cwiseProduct(correctionWeight(h));
+    Eigen::Vector2d out = learnt;
+    for (int j = 0; j < kOutputs; ++j) {
+        if (m_eScale(j) > 0 && bound(j) >= 0) { // the model's scaled units; no scale, no bound
+            const double limit = bound(j) / m_eScale(j);
+            out(j) = std::clamp(learnt(j), -limit, limit);
+        }
+    }
+    return out;
 }
 
 Eigen::Vector2d ResidualModel::referenceChangeAt(int h) const {
