@@ -1,15 +1,21 @@
 #!/usr/bin/env bash
-# PGRL-CC's forecasts with and without the bound on the learnt correction of 2026-11-27, late
-# (issue #42, docs/hybrid-study.md): the ten data sets of `study_hybrid --part unseen` on seeds
-# BASE+1 … BASE+10, each generated, calibrated and trained once with the command line (the LSTM
-# for one epoch only: it is not what is compared), then evaluated twice from the same model file,
-# with the bound taken out of the file ("off": the learnt part unbounded, as before) and kept.
-# Usage: scripts/study-learnt-bound.sh [BASE (default 980)] [WORK (default /tmp/drytwin-bound)]
+# PGRL-CC's forecasts with and without one of its forecast-time switches (issue #42,
+# docs/hybrid-study.md): the ten data sets of `study_hybrid --part unseen` on seeds BASE+1 …
+# BASE+10, each generated, calibrated and trained once with the command line (the LSTM for one
+# epoch only: it is not what is compared), then evaluated twice from the same model file, with
+# the switch off and on. SWITCH:
+#   realised-weights  the three realised-weight switches of 2026-11-27 (off: the trained s_H and
+#                     held error alone)
+#   learnt-bound      the bound on the learnt correction of 2026-11-27, late (off: taken out of
+#                     the model file, the learnt part unbounded)
+# Usage: scripts/study-forecast-switch.sh SWITCH [BASE (default 960)] [WORK (default /tmp/drytwin-SWITCH)]
 # Prints, per data set and switch setting, PGRL-CC's moisture skill at each horizon 1-180.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-BASE="${1:-980}"
-WORK="${2:-/tmp/drytwin-bound}"
+SWITCH="${1:?usage: $0 realised-weights|learnt-bound [BASE] [WORK]}"
+case "$SWITCH" in realised-weights|learnt-bound) ;; *) echo "$0: unknown switch '$SWITCH'" >&2; exit 2;; esac
+BASE="${2:-960}"
+WORK="${3:-/tmp/drytwin-$SWITCH}"
 DRYTWIN=build/app/drytwin
 mkdir -p "$WORK"
 sets=()
@@ -42,14 +48,19 @@ l 9 4 3000 lumped null 1
 l 10 10 6300 lumped demo 1
 LIST
 for setting in off on; do
-  echo "bound on the learnt correction $setting"
+  echo "$SWITCH $setting"
   for name in "${sets[@]}"; do
-    python3 - "$WORK/$name.model.json" "$WORK/$name.$setting.model.json" "$setting" <<'PY'
+    python3 - "$WORK/$name.model.json" "$WORK/$name.$setting.model.json" "$setting" "$SWITCH" <<'PY'
 import json, sys
 model = json.load(open(sys.argv[1]))
+on = sys.argv[3] == "on"
 for m in model["residual_models"].values():
-    if sys.argv[3] == "off":
-        m.pop("learnt_bound_by_horizon", None)
+    if sys.argv[4] == "learnt-bound":
+        if not on:
+            m.pop("learnt_bound_by_horizon", None)
+    elif "options" in m:
+        for key in ("realised_reference_blend", "realised_weight_by_absolute_error", "realised_held_error_decay"):
+            m["options"][key] = on
 json.dump(model, open(sys.argv[2], "w"))
 PY
     "$DRYTWIN" evaluate --data "$WORK/$name" --model "$WORK/$name.$setting.model.json" \
