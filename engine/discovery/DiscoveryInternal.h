@@ -73,7 +73,7 @@ struct Reference {
     /// the causes' test once the first round's ranking gives it (SelectionRound::run).
     mutable bool changeDetected = false;
     /// The screen's level before a detected change widened it (DiscoveryOptions::screenAlpha): a
-    /// cause of timing that passes it is fitted even outside the leading few (SelectionRound).
+    /// lag that passes it is fitted even outside the leading few (SelectionRound::scoreAndFit).
     double strictScreenAlpha = 0.05;
 };
 

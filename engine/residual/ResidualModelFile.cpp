@@ -8,6 +8,25 @@
 
 namespace drytwin::residual {
 
+namespace {
+/// Per-horizon (X_out, T_out) pairs as [[x, t], …] in model files, and back.
+nlohmann::json pairsToJson(const std::vector<Eigen::Vector2d>& pairs) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& k : pairs) {
+        out.push_back({k(0), k(1)});
+    }
+    return out;
+}
+
+std::vector<Eigen::Vector2d> pairsFromJson(const nlohmann::json& j) {
+    std::vector<Eigen::Vector2d> out;
+    for (const auto& k : j) {
+        out.emplace_back(k.at(0).get<double>(), k.at(1).get<double>());
+    }
+    return out;
+}
+} // namespace
+
 using namespace detail;
 
 std::string ResidualModel::toJson() const {
@@ -92,22 +111,10 @@ std::string ResidualModel::toJson() const {
                                  {"outer_iterations", cmp.outerIterations}};
     j["reference_change_weight"] = m_referenceChange;
     j["correction_weight_horizons"] = m_shrinkHorizons;
-    nlohmann::json weights = nlohmann::json::array();
-    for (const auto& k : m_shrink) {
-        weights.push_back({k(0), k(1)});
-    }
-    j["correction_weights"] = weights;
-    nlohmann::json changes = nlohmann::json::array();
-    for (const auto& k : m_referenceByHorizon) {
-        changes.push_back({k(0), k(1)});
-    }
-    j["reference_change_by_horizon"] = changes;
+    j["correction_weights"] = pairsToJson(m_shrink);
+    j["reference_change_by_horizon"] = pairsToJson(m_referenceByHorizon);
     if (!m_learntBound.empty()) {
-        nlohmann::json bounds = nlohmann::json::array();
-        for (const auto& k : m_learntBound) {
-            bounds.push_back({k(0), k(1)});
-        }
-        j["learnt_bound_by_horizon"] = bounds; // [% wb, °C]
+        j["learnt_bound_by_horizon"] = pairsToJson(m_learntBound); // [% wb, °C]
     }
     j["training_snapshots"] = m_snapshots;
     j["training_seconds"] = m_trainSeconds;
@@ -223,15 +230,10 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
         m.m_referenceChange = j.value("reference_change_weight", 0.0);
         if (j.contains("correction_weight_horizons")) {
             m.m_shrinkHorizons = j.at("correction_weight_horizons").get<std::vector<int>>();
-            for (const auto& k : j.at("correction_weights")) {
-                m.m_shrink.emplace_back(k.at(0).get<double>(), k.at(1).get<double>());
-            }
-            for (const auto& k : j.value("reference_change_by_horizon", nlohmann::json::array())) {
-                m.m_referenceByHorizon.emplace_back(k.at(0).get<double>(), k.at(1).get<double>());
-            }
-            for (const auto& k : j.value("learnt_bound_by_horizon", nlohmann::json::array())) {
-                m.m_learntBound.emplace_back(k.at(0).get<double>(), k.at(1).get<double>());
-            }
+            m.m_shrink = pairsFromJson(j.at("correction_weights"));
+            m.m_referenceByHorizon =
+                pairsFromJson(j.value("reference_change_by_horizon", nlohmann::json::array()));
+            m.m_learntBound = pairsFromJson(j.value("learnt_bound_by_horizon", nlohmann::json::array()));
             if (m.m_shrink.size() != m.m_shrinkHorizons.size() ||
                 (!m.m_referenceByHorizon.empty() &&
                  m.m_referenceByHorizon.size() != m.m_shrinkHorizons.size()) ||
