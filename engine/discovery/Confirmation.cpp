@@ -117,21 +117,26 @@ ChannelTiming channelTiming(const Problem& pr, double currentDelayS, double mois
     // nulls ask for 1-5 s (docs/discovery-study.md).
     out.moistureFloorS = std::max(apart, pr.options.floors.moistureResponseS);
     const bool moistureAsks = moistureDelayS - currentDelayS >= out.moistureFloorS;
-    // Against a reference the line's own thermal answer is part of the structure learnt there (the
-    // reference's channels then ask for 0-1 s): a later temperature is a change, and it is the
+    if (!moistureAsks && temperatureDelayS - moistureDelayS >= apart) {
+        out.pattern = ChannelTiming::Pattern::TemperatureOnly;
+        out.moistureWorseAtTemperatureDelayP =
+            channelChanges(atMoistureDelay, atTemperatureDelay)[kXOut].pWorse;
+    }
+    return out;
+}
+
+bool transportSparedByMoisture(const Problem& pr, const ChannelTiming& timing) {
+    // Against a reference the line's own thermal answer is part of the structure learnt there
+    // (the reference's channels then ask for 0-1 s): a later temperature is a change, and it is the
     // line's dynamics only where the moisture contradicts the temperature's delay (held-out worse
     // there). A transport time 30 s longer on a one-hour training recording under the PI loop
     // delayed the temperature 18 s and the moisture 3 s, whose error was no worse at 18 s (p 0.64-
     // 0.74); on seed 322 of the study the temperature answered 10-12 s later and the moisture's
-    // error was clearly worse there (p < 0.001).
-    if (!moistureAsks && temperatureDelayS - moistureDelayS >= apart) {
-        out.moistureWorseAtTemperatureDelayP =
-            channelChanges(atMoistureDelay, atTemperatureDelay)[kXOut].pWorse;
-        if (!pr.reference || out.moistureWorseAtTemperatureDelayP < pr.options.gainAlpha) {
-            out.pattern = ChannelTiming::Pattern::TemperatureOnly;
-        }
-    }
-    return out;
+    // error was clearly worse there (p < 0.001). A meter lag is never spared: it delays the
+    // moisture alone, which here asks for no delay (a 73 s lag was named where the moisture asked
+    // for -5 s, lumped seed 102).
+    return pr.reference && timing.pattern == ChannelTiming::Pattern::TemperatureOnly &&
+           timing.moistureWorseAtTemperatureDelayP >= pr.options.gainAlpha;
 }
 
 std::string lineDynamicsReason(const ChannelTiming& timing) {

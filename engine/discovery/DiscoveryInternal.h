@@ -356,6 +356,10 @@ ChannelTiming channelTiming(const Problem& pr, double currentDelayS, double mois
 std::string inconsistencyReason(const Consistency& c, Param p, double pooled);
 /// Why an outlet delay is the line's own dynamics (Pattern::TemperatureOnly), in numbers.
 std::string lineDynamicsReason(const ChannelTiming& timing);
+/// A transport time where the temperature alone asks for a delay (TemperatureOnly), against a
+/// reference, when the moisture does not contradict the temperature's delay: not the line's
+/// dynamics, the transport time stays a candidate. Alone, or for a meter lag, false.
+bool transportSparedByMoisture(const Problem& pr, const ChannelTiming& timing);
 /// Why a transport time is ruled out by a later moisture (Pattern::MoistureLater), in numbers.
 std::string moistureLaterReason(const ChannelTiming& timing);
 /// A fit of dtau_conv alone from @p start with the given channel weights (discovery's refit).

@@ -134,7 +134,8 @@ Status SelectionRound::tryFitted() {
             }
         }
         if (m_timing && m_timing->pattern == ChannelTiming::Pattern::TemperatureOnly &&
-            isOutletDelay(cand.parameter)) {
+            isOutletDelay(cand.parameter) &&
+            !(cand.parameter == Param::dtau_conv && transportSparedByMoisture(m_pr, *m_timing))) {
             m_record.rejected.push_back({cand.cause, "line_dynamics", lineDynamicsReason(*m_timing)});
             if (m_tried == 1) {
                 m_record.reason = m_record.rejected.back().reason;

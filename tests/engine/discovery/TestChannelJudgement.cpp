@@ -270,8 +270,9 @@ private Q_SLOTS:
 
     /// The outlet temperature answers 18 s later than the model, the moisture 3 s (under a meter's
     /// normal response). Alone that is the line's own thermal dynamics. Against a reference, whose
-    /// structure holds the line's own answer, it is so only where the moisture contradicts the
-    /// temperature's delay: its held-out error worse at 18 s than at its own 3 s.
+    /// structure holds the line's own answer, it turns a transport time down only where the
+    /// moisture contradicts the temperature's delay (its held-out error worse at 18 s than at its
+    /// own 3 s); a meter lag, which delays the moisture alone, is turned down either way.
     void againstAReferenceALaterTemperatureIsTheLinesOnlyWhereTheMoistureContradictsIt() {
         // The held-out errors at each channel's own delay: the moisture's the same at both
         // (it does not pin its delay down) or 30 % larger in rms at the temperature's.
@@ -294,19 +295,22 @@ private Q_SLOTS:
         const HeldOut atTemperatureDelay = held(1.0, 1.0);      // the moisture no worse at 18 s
         const HeldOut atTemperatureDelayWorse = held(1.3, 1.0); // the moisture worse at 18 s
         Problem alone;
-        QVERIFY(channelTiming(alone, 0, 3, 18, atMoistureDelay, atTemperatureDelay).pattern ==
-                ChannelTiming::Pattern::TemperatureOnly);
+        const ChannelTiming aloneTiming = channelTiming(alone, 0, 3, 18, atMoistureDelay, atTemperatureDelay);
+        QVERIFY(aloneTiming.pattern == ChannelTiming::Pattern::TemperatureOnly);
+        QVERIFY(!transportSparedByMoisture(alone, aloneTiming)); // alone: the line's dynamics
         Reference ref;
         Problem against;
         against.reference = &ref;
         const ChannelTiming consistent =
             channelTiming(against, 0, 3, 18, atMoistureDelay, atTemperatureDelay);
-        QVERIFY(consistent.pattern == ChannelTiming::Pattern::TemperatureLater);
+        QVERIFY(consistent.pattern ==
+                ChannelTiming::Pattern::TemperatureOnly); // a meter lag still turned down
         QVERIFY(consistent.moistureWorseAtTemperatureDelayP > 0.05);
+        QVERIFY(transportSparedByMoisture(against, consistent)); // the transport time stays a candidate
         const ChannelTiming contradicted =
             channelTiming(against, 0, 3, 18, atMoistureDelay, atTemperatureDelayWorse);
-        QVERIFY(contradicted.pattern == ChannelTiming::Pattern::TemperatureOnly);
         QVERIFY(contradicted.moistureWorseAtTemperatureDelayP < 1e-6);
+        QVERIFY(!transportSparedByMoisture(against, contradicted));
     }
 
     /// A fitted cause's normal spread: at its upper 75 % bound until a detector has flagged a
