@@ -34,23 +34,15 @@ foreach(run 1 2 3 4 5 6)
   endif()
   file(WRITE ${WORK}/reference6/C${run}.csv "${text}")
 endforeach()
-run_training(fouled "{\"scenario\": ${scenario}, \"end_s\": 3600, \"events\": [{\"at_s\": 0, \"type\": \"fault\", \
-\"cause\": \"heat_transfer_fouling\", \"strength\": 0.4, \"onset_s\": 300}]}")
-drytwin_run("discover --reference" discover --reference ${WORK}/reference --data ${WORK}/fouled/recording
-            --json ${WORK}/discover.json)
-drytwin_expect_change_and_first_cause(${WORK}/discover.json heat_transfer_fouling "against the commissioning runs")
-message(STATUS "heat_transfer_fouling named first against the commissioning runs")
-
-run_training(transport "{\"scenario\": ${scenario}, \"end_s\": 3600, \"events\": [{\"at_s\": 0, \"type\": \"fault\", \
-\"cause\": \"transport_delay_error\", \"strength\": 30, \"onset_s\": 300}]}")
-drytwin_run("discover --reference (transport)" discover --reference ${WORK}/reference --data ${WORK}/transport/recording
-            --json ${WORK}/discover-transport.json)
-drytwin_expect_change_and_first_cause(${WORK}/discover-transport.json transport_delay_error "against the commissioning runs")
-message(STATUS "transport_delay_error named first against the commissioning runs")
-
-run_training(meterlag "{\"scenario\": ${scenario}, \"end_s\": 3600, \"events\": [{\"at_s\": 0, \"type\": \"fault\", \
-\"cause\": \"moisture_meter_lag\", \"strength\": 60, \"onset_s\": 300}]}")
-drytwin_run("discover --reference (meter lag)" discover --reference ${WORK}/reference6 --data ${WORK}/meterlag/recording
-            --json ${WORK}/discover-meterlag.json)
-drytwin_expect_change_and_first_cause(${WORK}/discover-meterlag.json moisture_meter_lag "against six commissioning runs")
-message(STATUS "moisture_meter_lag named first against six commissioning runs")
+# One hour of the scenario with CAUSE at STRENGTH from 5 min, judged against REFERENCE: CAUSE first.
+function(expect_named_first cause strength reference what)
+  run_training(${cause} "{\"scenario\": ${scenario}, \"end_s\": 3600, \"events\": [{\"at_s\": 0, \
+\"type\": \"fault\", \"cause\": \"${cause}\", \"strength\": ${strength}, \"onset_s\": 300}]}")
+  drytwin_run("discover --reference (${cause})" discover --reference ${WORK}/${reference}
+              --data ${WORK}/${cause}/recording --json ${WORK}/discover-${cause}.json)
+  drytwin_expect_change_and_first_cause(${WORK}/discover-${cause}.json ${cause} "${what}")
+  message(STATUS "${cause} named first ${what}")
+endfunction()
+expect_named_first(heat_transfer_fouling 0.4 reference "against the commissioning runs")
+expect_named_first(transport_delay_error 30 reference "against the commissioning runs")
+expect_named_first(moisture_meter_lag 60 reference6 "against six commissioning runs")
