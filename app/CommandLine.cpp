@@ -8,8 +8,10 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <map>
+#include <unistd.h>
 
 namespace drytwin::app {
 
@@ -186,7 +188,7 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     train->add_option("--model", o.modelPath, "calibrated model file")->required();
     train->add_option("--out", o.outPath, "model file to write")->required();
     train->add_option("--lags", o.residualLags,
-                      "measured residual lags in the lifted state (default: chosen among 8 and 16 by "
+                      "measured residual lags in the lifted state (default: chosen among 16, 32 and 60 by "
                       "multi-step validation inside the training part)");
     train->add_option("--degree", o.degree, "polynomial dictionary degree (1-3)")->capture_default_str();
     train->add_option("--base", o.baseFeatures,
@@ -286,6 +288,34 @@ CommandLine::~CommandLine() {
     delete m_impl;
 }
 
+namespace {
+
+/// Why a file cannot be written at @p path (its folder missing or not writable, or it is a
+/// folder), or "" when it can.
+std::string unwritableReason(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) {
+        return "is a folder; give a file name";
+    }
+    fs::path folder = fs::path(path).parent_path();
+    if (folder.empty()) {
+        folder = ".";
+    }
+    if (!fs::is_directory(folder, ec)) {
+        return "the folder '" + folder.string() + "' does not exist";
+    }
+    if (::access(folder.c_str(), W_OK) != 0) {
+        return "the folder '" + folder.string() + "' is not writable";
+    }
+    if (fs::exists(path, ec) && ::access(path.c_str(), W_OK) != 0) {
+        return "the file exists and is not writable";
+    }
+    return {};
+}
+
+} // namespace
+
 ParsedCommandLine CommandLine::parse(int argc, char** argv) {
     ParsedCommandLine result;
     try {
@@ -299,6 +329,28 @@ ParsedCommandLine CommandLine::parse(int argc, char** argv) {
     }
     for (auto* sub : m_impl->app.get_subcommands()) {
         m_impl->selected = sub;
+    }
+    // A file the command will write, checked before the work: an unwritable path found only after
+    // minutes of computing loses them (folders made by generate, training and pipeline excepted).
+    if (m_impl->selected) {
+        const std::string name = m_impl->selected->get_name();
+        const bool writesFolder = name == "generate" || name == "training" || name == "pipeline";
+        for (const auto& [flag, path] :
+             {std::pair<const char*, const std::string*>{"--out", &m_impl->options.outPath},
+              {"--json", &m_impl->options.jsonPath}}) {
+            if (path->empty() || (writesFolder && std::string(flag) == "--out")) {
+                continue;
+            }
+            const std::string why = unwritableReason(*path);
+            if (!why.empty()) {
+                std::fprintf(stderr, "drytwin: error: %s %s: %s\n",
+                             name == "discover" && std::string(flag) == "--out" ? "--out-model" : flag,
+                             path->c_str(), why.c_str());
+                result.exitNow = true;
+                result.exitCode = 2;
+                return result;
+            }
+        }
     }
     if (!m_impl->selected) {
         // Extras are for Qt's own options (-platform ...); a bare word is a mistyped subcommand.

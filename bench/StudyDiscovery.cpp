@@ -250,6 +250,8 @@ int main(int argc, char** argv) {
             discoveryOptions.pointSpreadOnceDetected = false;
         } else if (a == "--share-of-whole") { // against a reference: the floor of the whole error only
             discoveryOptions.shareOfChangeOnceDetected = false;
+        } else if (a == "--structure-within-range") { // against a reference: the ridge held within its range
+            discoveryOptions.lineStructureWithinReferenceRange = true;
         } else if (a == "--no-structure") { // against a reference: the causes' normal values alone
             discoveryOptions.learnLineStructure = false;
         } else if (a == "--mechanism" && !next.empty()) {
@@ -274,12 +276,14 @@ int main(int argc, char** argv) {
             discoveryOptions.maxEvaluationsPerFit = std::atoi(next.c_str());
             ++i;
         } else {
-            std::fprintf(stderr, "usage: study_discovery [--quick] [--plant distributed|lumped] "
-                                 "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
-                                 "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
-                                 "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
-                                 "[--evaluations N] [--oracle] [--reference] [--no-structure] [--size-rule] "
-                                 "[--no-constancy] [--look-alike-overall]\n");
+            std::fprintf(stderr,
+                         "usage: study_discovery [--quick] [--plant distributed|lumped] "
+                         "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
+                         "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
+                         "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
+                         "[--evaluations N] [--oracle] [--reference] [--no-structure] "
+                         "[--structure-within-range] [--size-rule] [--spread-bound] [--share-of-whole] "
+                         "[--no-constancy] [--look-alike-overall]\n");
             return 2;
         }
     }

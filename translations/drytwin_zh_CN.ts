@@ -396,77 +396,82 @@
         <translation>管内风温（管壁散热或风冷却）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="206"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="208"/>
+        <source>% wb</source>
+        <translation>% 湿基</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="216"/>
         <source>Cause found</source>
         <translation>找到原因</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="207"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="217"/>
         <source>Cause found: %1</source>
         <translation>找到原因：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="210"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="220"/>
         <source>No cause found: what the model gets wrong is within the measurements&apos; noise</source>
         <translation>未找到原因：模型的误差在测量噪声范围之内</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="214"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="224"/>
         <source>Something is left that no known cause explains</source>
         <translation>仍有已知原因无法解释的结构</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="221"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="231"/>
         <source>Next: check that part of the line (the evidence says where and from when), then “Extend the model” to add the cause and see how much the simulation improves.</source>
         <translation>下一步：检查产线的这一部分（证据说明了位置和起始时间），然后点击“扩展模型”加入该原因，看仿真改善了多少。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="226"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="236"/>
         <source>Next: nothing in the model needs changing for these data. To see smaller effects, record longer or more batches.</source>
         <translation>下一步：对这些数据，模型无需修改。若要看出更小的影响，请记录更长时间或更多批次。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="231"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="241"/>
         <source>Next: compare with data from a time when the line ran well (“Compare with a reference period”): what changed since then is named more surely than from one data set alone. The evidence says which measurement the error follows; check that transmitter and the maintenance log around the time it starts.</source>
         <translation>下一步：与产线运行良好时的数据比较（“与参考时段比较”）：与单个数据集相比，能更可靠地指出此后发生的变化。证据说明了误差跟随哪个测量值；请检查该变送器以及误差开始前后的维护记录。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="244"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="254"/>
         <source>Completed</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="246"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="256"/>
         <source>Converged</source>
         <translation>已收敛</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="248"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="258"/>
         <source>Evaluation budget used up</source>
         <translation>评估次数已用完</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="250"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="260"/>
         <source>Stopped by you, best so far kept</source>
         <translation>已由您停止，保留目前最优</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="257"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="267"/>
         <source>Stopped by you; the runs so far are kept, the last one is partial</source>
         <translation>已由您停止；保留已完成的运行，最后一次不完整</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="264"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="274"/>
         <source>Scenario %1: %2 of %3 controllers run over %4 scored seconds</source>
         <translation>情景 %1：%3 个控制器中运行了 %2 个，评分时长 %4 秒</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="274"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="284"/>
         <source>none (the sensitivities could not be computed)</source>
         <translation>无（无法计算灵敏度）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="277"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="287"/>
         <source>widened because neighbouring rows are alike and not independent evidence (sandwich covariance with a Newey-West middle term)</source>
         <translation>已加宽：相邻样本彼此相似，不是独立的证据（夹心协方差，中间项为 Newey-West）</translation>
     </message>
@@ -475,17 +480,17 @@
         <translation>对相关样本稳健（夹心协方差，中间项为 Newey-West）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="287"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="297"/>
         <source>R² could not be computed (too few rows).</source>
         <translation>无法计算 R²（行数太少）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="290"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="300"/>
         <source>R² below 0: the model predicts worse than the batch&apos;s mean would. Usual for the physics model alone on a short held-out part with little movement; compare MAE instead.</source>
         <translation>R² 小于 0：模型的预测比批次均值还差。对于变化很小的短留出段，单独的物理模型常出现这种情况；请改为比较 MAE。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="295"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="305"/>
         <source>R² %1: the model explains %2 % of the variation of the measured values about their mean.</source>
         <translation>R² %1：模型解释了测量值围绕其均值变化的 %2 %。</translation>
     </message>
@@ -1676,7 +1681,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="134"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="137"/>
         <source>Extend the model</source>
         <translation>扩展模型</translation>
     </message>
@@ -1697,6 +1702,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="701"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
@@ -1717,6 +1723,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="42"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="706"/>
         <source>Score z: how strongly the model&apos;s error points at this cause, in standard deviations of chance; above about 3 is strong evidence.</source>
         <translation>得分 z：模型误差指向该原因的强度，以偶然波动的标准差计；约 3 以上为有力证据。</translation>
     </message>
@@ -1761,113 +1768,123 @@
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="50"/>
+        <source>Before: the starting model (as commissioned, or calibrated).</source>
+        <translation>之前：起始模型（调试所得或标定后的模型）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="51"/>
+        <source>After: the extended model, every named cause fitted together (a finding&apos;s own sentence gives the gain when that cause was named).</source>
+        <translation>之后：扩展后的模型，所有已识别原因一起拟合（各项发现的文字给出识别该原因时的改进）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="55"/>
         <source>X_out residual [% wb]</source>
         <translation>X_out 残差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="53"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="56"/>
         <source>T_out residual [°C]</source>
         <translation>T_out 残差 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="54"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="88"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="57"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="91"/>
         <source>time, batches one after another [h]</source>
         <translation>时间，批次首尾相接 [h]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="57"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="60"/>
         <source>Compare with a reference period…</source>
         <translation>与参考期比较…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="59"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="62"/>
         <source>Choose batches from a time when the line ran as it should (the weeks after a cleaning, commissioning runs): Discover then says whether, from when and why the loaded data differ</source>
         <translation>选择产线正常运行时期的批次（清洗后的几周、调试运行）：发现功能将说明已加载的数据是否、从何时起以及为何与之不同</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="62"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="65"/>
         <source>A folder of batch files…</source>
         <translation>批次文件所在的文件夹…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="64"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="67"/>
         <source>Reference period: a folder of batch files</source>
         <translation>参考期：批次文件所在的文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="69"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="72"/>
         <source>One batch or historian file…</source>
         <translation>单个批次或历史库文件…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="71"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="74"/>
         <source>Reference period: a batch or historian file</source>
         <translation>参考期：批次或历史库文件</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="72"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="75"/>
         <source>CSV files (*.csv *.txt)</source>
         <translation>CSV 文件 (*.csv *.txt)</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="77"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="80"/>
         <source>No reference: judge the data alone</source>
         <translation>不用参考期：单独判断数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="86"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="89"/>
         <source>T² [-]</source>
         <translation>T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="87"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
         <source>SPE [-]</source>
         <translation>SPE [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="91"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="94"/>
         <source>Choose a reference period and run Discover to see the monitor</source>
         <translation>选择参考期并运行“发现”以查看监控图</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="93"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
         <source>Column</source>
         <translation>列</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="93"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
         <source>Share of the change</source>
         <translation>在变化中的占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="93"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
         <source>Detector</source>
         <translation>检测器</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="98"/>
         <source>How much each column contributes to the monitor&apos;s statistic after the onset (reconstruction-based contributions: the column that, put back to normal, removes most of it)</source>
         <translation>起始点之后各列对监控统计量的贡献（基于重构的贡献：将该列恢复正常后消除的部分最多者）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="102"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="105"/>
         <source>Model error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="103"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="106"/>
         <source>Monitor against the reference</source>
         <translation>相对参考期的监控</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="115"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="118"/>
         <source>Candidate causes, first round:</source>
         <translation>候选原因（第一轮）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="117"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="120"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -1876,100 +1893,98 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="675"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="695"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="149"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="152"/>
         <source>Run Discover to see the physics model&apos;s error over the batches</source>
         <translation>运行发现，可看到物理模型在各批次上的误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="156"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="159"/>
         <source>No reference period: the data are judged alone.</source>
         <translation>无参考期：单独判断数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="160"/>
         <source>Reference period: %1</source>
         <translation>参考期：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="177"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="180"/>
         <source>%1: &lt;b&gt;changed&lt;/b&gt; (p = %2)</source>
         <translation>%1：&lt;b&gt;已变化&lt;/b&gt;（p = %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="178"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="181"/>
         <source>%1: no change (p = %2)</source>
         <translation>%1：无变化（p = %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="180"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="183"/>
         <source>, first alarm in %1 at %2 min</source>
         <translation>，首次报警于 %1 第 %2 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="185"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="188"/>
         <source>, from %1 at %2 min (95 %: %3 to %4 min)</source>
         <translation>，自 %1 第 %2 分钟起（95 %：%3 至 %4 分钟）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="196"/>
         <source>DryTwin (the causes&apos; parameters): &lt;b&gt;changed&lt;/b&gt; (p = %1): %2 moved beyond its normal spread</source>
         <translation>DryTwin（各原因的参数）：&lt;b&gt;已变化&lt;/b&gt;（p = %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="200"/>
         <source>DryTwin (the causes&apos; parameters): none moved beyond its normal spread (p = %1)</source>
         <translation>DryTwin（各原因的参数）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="211"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="220"/>
         <source>&lt;b&gt;The line has changed since the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;自参考期以来产线已发生变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="212"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="226"/>
         <source>&lt;b&gt;No change against the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;与参考期相比无变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="213"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="227"/>
         <source> Each detector&apos;s false-alarm rate: %1 % per data set.</source>
         <translation> 每个检测器的误报率：每个数据集 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="214"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="228"/>
         <source>DryTwin (the model&apos;s error)</source>
         <translation>DryTwin（模型误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="216"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="230"/>
         <source>Dynamic PCA (the measured columns)</source>
         <translation>动态 PCA（测量列）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="241"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="257"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="255"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="271"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="241"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="257"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="255"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="271"/>
         <source>dynamic PCA</source>
         <translation>动态 PCA</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="243"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="245"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="257"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="259"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="282"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="301"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
@@ -1978,72 +1993,71 @@
         <translation type="vanished">误差随进料量和入口水分增大（按 feed_kg_h 和 X_in_pct 分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="288"/>
         <source>the error drifts within every batch and resets at each batch start</source>
         <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="290"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="310"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="294"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="314"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="297"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="317"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="299"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="319"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="303"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="323"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="307"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="327"/>
         <source>a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less</source>
         <translation>干燥管出口与出口水分有相同的稳定偏差，干燥管干燥越少处越大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="310"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="330"/>
         <source>after each hot-air setpoint step the outlet temperature and moisture move before the simulation, which follows the slow reading</source>
         <translation>每次热风设定值阶跃后，出口温度和水分先于仿真变化，仿真跟随的是迟缓的读数</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="313"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="333"/>
         <source>the inlet-moisture reading scatters from second to second while the outlet does not follow it, and the simulated outlet does</source>
         <translation>入口水分读数逐秒跳动，出口并不跟随，而仿真的出口却跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="323"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="343"/>
         <source>a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet temperature&apos;s response as much as the moisture&apos;s, a meter lag delays the moisture reading alone; or grab samples timed against the meter</source>
         <translation>以 1 s 记录一次热风设定值阶跃：输送时间误差使出口温度与水分的响应同样延迟，水分仪滞后只延迟水分读数；或对照水分仪定时取样</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="330"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="350"/>
         <source>oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter offset does not</source>
         <translation>在出口对照水分仪、在入口对照入口水分计做烘箱法实验室取样；或增加干燥管出口水分通道（X_hdt）：入口水分计偏差会使其变化，出口水分仪偏差不会</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="337"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="357"/>
         <source>a gas-temperature reading at the tube&apos;s outlet end at two feed rates: wall loss does not change with the feed, gas-phase cooling grows with it</source>
         <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="347"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="367"/>
         <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
         <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="350"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="370"/>
         <source>its size is not consistent across batches or operating regions</source>
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
@@ -2052,62 +2066,62 @@
         <translation type="vanished">偏差在整个批次中读数不变；此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="358"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="378"/>
         <source>its value lies within the reference period&apos;s normal range: not a change</source>
         <translation>其值在参考期的正常范围内：不是变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="361"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="381"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="364"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="384"/>
         <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
         <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="368"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="388"/>
         <source>the outlet channels&apos; timing points to its look-alike (the moisture answers later than the temperature: a meter, not the transport)</source>
         <translation>出口两个通道的时序指向它的相似原因（水分比温度响应更晚：是水分仪，而非输送）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="393"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="376"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="396"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="393"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="413"/>
         <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
         <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="398"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="418"/>
         <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
         <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="401"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="421"/>
         <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
         <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="406"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="426"/>
         <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
         <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="412"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="432"/>
         <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="443"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="463"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
@@ -2116,112 +2130,132 @@
         <translation type="vanished">误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="458"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="478"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="463"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="483"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="475"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="495"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="482"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="502"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="497"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="517"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="502"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="522"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="502"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="522"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="505"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="525"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="509"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="529"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="527"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="547"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="533"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="553"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="516"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="536"/>
         <source>%1 was named on top of it (a further %2 % of the held-out error): alone it predicts worse (%3 times the held-out error), but the change needs both forms, so the data cannot say which of them it is.</source>
         <translation>在它之上又判定了 %1（再减少留出误差的 %2 %）：单独使用时预测更差（留出误差的 %3 倍），但这一变化需要两种形式共同解释，因此数据无法判断是其中哪一个。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="546"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="199"/>
+        <source>DryTwin (the causes&apos; one-step estimates): &lt;b&gt;changed&lt;/b&gt; (p = %1): %2 moved beyond its normal spread</source>
+        <translation>DryTwin（各原因的一步估计）：&lt;b&gt;已变化&lt;/b&gt;（p = %1）：%2 超出其正常范围</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="203"/>
+        <source>DryTwin (the causes&apos; one-step estimates): none moved beyond its normal spread (p = %1)</source>
+        <translation>DryTwin（各原因的一步估计）：均未超出其正常范围（p = %1）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="222"/>
+        <source>&lt;b&gt;A cause has changed since the reference period: %1.&lt;/b&gt; The detectors, judging the data set as a whole, stayed below their limits; fitting the causes found it beyond its normal spread with a gain on held-out data (below). Check it on the plots.</source>
+        <translation>&lt;b&gt;自参考期以来有一个原因发生了变化：%1。&lt;/b&gt;检测器对整个数据集的判断未超出其限值；拟合各原因发现它超出正常范围，且在留出数据上有改进（见下）。请在图上核对。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="307"/>
+        <source>the error drifts over each batch, or over the recording from the fouling&apos;s onset, and starts afresh with each new batch</source>
+        <translation>误差在每个批次内（或在记录中自结垢开始起）逐渐漂移，每个新批次重新开始</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="566"/>
         <source>%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts %4 better; which output a cause favours is the model&apos;s structure, so the data cannot tell them apart.</source>
         <translation>%1 同样拟合：总体上它留下 %2 倍的留出误差（p = %3），但它对%4的预测更好；原因偏向哪个输出取决于模型自身的结构，因此数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="552"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="572"/>
         <source>the outlet moisture</source>
         <translation>出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="553"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="573"/>
         <source>the outlet temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="554"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="574"/>
         <source>the tube-outlet moisture</source>
         <translation>管出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="555"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="575"/>
         <source>the tube-outlet temperature</source>
         <translation>管出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="559"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="579"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="560"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="580"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="567"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="587"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="579"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="599"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="583"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="603"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -2230,27 +2264,27 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="600"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="620"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="600"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="620"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="641"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="661"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="662"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="659"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="679"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2267,12 +2301,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="683"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="714"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="683"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="714"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2281,37 +2315,37 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="708"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="759"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="711"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="762"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="719"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="770"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="472"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="492"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="584"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="604"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="585"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="605"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="589"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="609"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
@@ -2320,166 +2354,196 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="662"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="682"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="672"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="692"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="673"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="217"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="693"/>
         <source>, </source>
         <translation>、</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="676"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="615"/>
+        <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
+        <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="696"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="729"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="780"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="745"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="796"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="750"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="801"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="757"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="808"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="762"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="813"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="770"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="821"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="780"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="831"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="574"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="781"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="799"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="594"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="832"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="850"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="782"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="833"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="574"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="783"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="803"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="594"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="834"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="854"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="285"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="304"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed rate and by inlet moisture)</source>
         <translation>误差随进料量和入口水分增大（按进料量和按入口水分分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="353"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
         <source>it does not change within a batch (an offset, the tube&apos;s wall or gas phase), but this error grows or shrinks within the batch (fouling, a drifting reading)</source>
         <translation>它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="426"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="446"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="430"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="450"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the model&apos;s error there is judged beyond the reference&apos;s conditions, and an alarm there may be that condition rather than a change of the line.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="448"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="468"/>
         <source>the error follows %1 %2 s later (correlation %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（相关系数 %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="595"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="627"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="647"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="704"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="701"/>
+        <source>Change z</source>
+        <translation>变化 z</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="703"/>
+        <source>Change z: how far the cause&apos;s one-step estimate here lies from its normal value on the reference period, in units of both estimates&apos; errors and the spread between the reference&apos;s periods; above 2 it moved.</source>
+        <translation>变化 z：该原因在此处的一步估计与其在参考期的正常值相差多远，以两次估计的误差及参考期各时段间的离散为单位；大于 2 即为发生了变化。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="721"/>
+        <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
+        <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="735"/>
+        <source>%1 = %2%3, 95 % CI [%4, %5]</source>
+        <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="741"/>
+        <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
+        <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="755"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="784"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="835"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="785"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="836"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="798"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="849"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="798"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="849"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="799"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="850"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="802"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="853"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="802"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="853"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="803"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="854"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="827"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="878"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="828"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="879"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -3027,6 +3091,11 @@
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="51"/>
+        <source>Training session %1 (its recording is on the Training tab; no data set is loaded for the other tabs)</source>
+        <translation>培训会话 %1（其记录显示在“培训”选项卡上；其他选项卡未加载数据集）</translation>
+    </message>
 </context>
 <context>
     <name>drytwin::widgets::ModelPanel</name>
@@ -3434,12 +3503,12 @@ The results below are from the last complete run.</source>
 <context>
     <name>drytwin::widgets::PlotStack</name>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="190"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="207"/>
         <source>Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click to zoom out, middle drag to pan</source>
         <translation>Ctrl+单击：游标 A，Shift+单击：游标 B，Alt+单击：时间游标；拖动放大，右键缩小，中键拖动平移</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="92"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="103"/>
         <source>Export…</source>
         <translation>导出…</translation>
     </message>
@@ -3448,62 +3517,62 @@ The results below are from the last complete run.</source>
         <translation>将这些图表保存为 PNG、SVG 或 PDF</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="93"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="104"/>
         <source>Save these plots as PNG, SVG or PDF, or their data as CSV</source>
         <translation>把这些曲线图保存为 PNG、SVG 或 PDF，或把数据保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="174"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="191"/>
         <source>time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="253"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="270"/>
         <source>No data yet</source>
         <translation>尚无数据</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="517"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="534"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="520"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="537"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="523"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="540"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="527"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="544"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="531"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="548"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="617"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="634"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="645"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="662"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
         <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="681"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="698"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="595"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="612"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
@@ -3512,7 +3581,7 @@ The results below are from the last complete run.</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="680"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="697"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
@@ -3521,12 +3590,12 @@ The results below are from the last complete run.</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="687"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="704"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="689"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="706"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
@@ -4187,7 +4256,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="135"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="616"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="620"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
@@ -4198,7 +4267,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="601"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="605"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
@@ -4219,7 +4288,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="158"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="600"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="604"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
@@ -4265,16 +4334,19 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="182"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="205"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="182"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="207"/>
         <source>Strength</source>
         <translation>强度</translation>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="182"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="209"/>
         <source>Acts from</source>
         <translation>起作用时间</translation>
     </message>
@@ -4295,8 +4367,8 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="188"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="227"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="341"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="231"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="345"/>
         <source>Instructor</source>
         <translation>教员</translation>
     </message>
@@ -4306,165 +4378,169 @@ extrapolation</source>
         <translation>时钟与快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="209"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="213"/>
         <source>Faults</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="213"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="217"/>
         <source>A session file holds the scenario, every event (faults, snapshots, answers) and the recording as a batch file; reopening replays it to the same data.</source>
         <translation>会话文件包含工况、每个事件（故障、快照、回答）以及作为批次文件的记录；重新打开时会回放得到相同的数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="221"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="225"/>
         <source>Set instructor password…</source>
         <translation>设置教员密码…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="222"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="226"/>
         <source>Asked before the instructor window opens (empty: no password)</source>
         <translation>打开教员窗口前询问（留空：不设密码）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="228"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="232"/>
         <source>New instructor password (empty: none):</source>
         <translation>新的教员密码（留空：无）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="235"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="239"/>
         <source>Session file</source>
         <translation>会话文件</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="238"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="242"/>
         <source>Start a session: the line runs live under its PI loop.</source>
         <translation>开始会话：产线在其 PI 回路下实时运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="243"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="247"/>
         <source>Two detectors commissioned on healthy runs of this line: the physics model&apos;s error, and a dynamic PCA monitor of the screens&apos; signals. Each alarms when the line leaves its normal (1 % chance of a false alarm over the session)</source>
         <translation>两个检测器在本产线的健康运行数据上调试：物理模型误差，以及画面信号的动态 PCA 监控。产线偏离正常状态时各自报警（整个会话的误报概率为 1 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="262"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="277"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="266"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="281"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="263"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="267"/>
         <source>T_hot [°C]</source>
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="264"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="268"/>
+        <source>Feed [kg/h]</source>
+        <translation>进料 [kg/h]</translation>
+    </message>
+    <message>
         <source>Feed [t/h]</source>
         <translation>进料 [t/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="265"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="266"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="278"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="270"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="282"/>
         <source>session time [min]</source>
         <translation>会话时间 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="268"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="272"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="270"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="274"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="271"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="281"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="275"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="285"/>
         <source>X_out measured</source>
         <translation>X_out 测量值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="274"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="278"/>
         <source>DryTwin — instructor</source>
         <translation>DryTwin — 教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="283"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="287"/>
         <source>X_out true</source>
         <translation>X_out 真实值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="295"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="299"/>
         <source>Monitor T² [-]</source>
         <translation>监控 T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="297"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="301"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="298"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="302"/>
         <source>T² of the model&apos;s error</source>
         <translation>模型误差的 T²</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="307"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="311"/>
         <source>Start a session to see the line run</source>
         <translation>开始会话即可看到产线运行</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="308"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
         <source>The monitor&apos;s T² shows once it has a minute of the model&apos;s error</source>
         <translation>监测器积累一分钟的模型误差后显示 T²</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="311"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="315"/>
         <source>Start a session to see the true outlet moisture beside the measured</source>
         <translation>开始会话即可看到真实出口含水率与测量值的对比</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="413"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="417"/>
         <source>Save the session as a folder</source>
         <translation>把会话保存为文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="416"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="420"/>
         <source>Session folder (*)</source>
         <translation>会话文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="659"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="663"/>
         <source>Line monitor unavailable: %1</source>
         <translation>产线监控不可用：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="661"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="665"/>
         <source>Line monitor: normal (as on its commissioning runs).</source>
         <translation>产线监控：正常（与调试运行一致）。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="666"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="670"/>
         <source>the model&apos;s error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="666"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="670"/>
         <source>the screens&apos; signals (PCA)</source>
         <translation>画面信号（PCA）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="669"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="673"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal; the change began at about %3. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态；变化约始于 %3。请诊断记录以确定原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="672"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="676"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态。请诊断记录以确定原因。</translation>
     </message>
@@ -4473,52 +4549,52 @@ extrapolation</source>
         <translation>X_out 真实值（教员）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="291"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="295"/>
         <source>T_hot setpoint</source>
         <translation>T_hot 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="292"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="296"/>
         <source>T_hot</source>
         <translation>T_hot</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="293"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="297"/>
         <source>feed</source>
         <translation>进料</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="294"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="298"/>
         <source>X_in</source>
         <translation>X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="316"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="320"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="317"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="321"/>
         <source>Stops the replay or the run ahead; the line stays where it got to</source>
         <translation>停止回放或快进；产线停留在已运行到的位置</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="319"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="323"/>
         <source>Scenario</source>
         <translation>工况</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="341"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="345"/>
         <source>Instructor password:</source>
         <translation>教员密码：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="344"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="348"/>
         <source>Wrong password: the instructor window stays closed.</source>
         <translation>密码错误：教员窗口保持关闭。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="401"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="405"/>
         <source>Select a snapshot to restore.</source>
         <translation>请选择要恢复的快照。</translation>
     </message>
@@ -4527,132 +4603,132 @@ extrapolation</source>
         <translation>将会话保存到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="422"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="426"/>
         <source>Open a training session</source>
         <translation>打开培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="422"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="426"/>
         <source>Sessions (*.json)</source>
         <translation>会话 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="431"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="435"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="438"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="442"/>
         <source>Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录以供诊断：%1。请在其上运行“发现”，然后在此给出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="441"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="445"/>
         <source>Recording opened for diagnosis: %1; the line&apos;s commissioning runs are in %2. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录用于诊断：%1；产线的调试运行数据位于 %2。对其运行“发现”，然后在此处指出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="448"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="452"/>
         <source>Session saved: %1</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="504"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="508"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="508"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="512"/>
         <source>The previous session was saved in %1.</source>
         <translation>上一个会话已保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="521"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="525"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="546"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="550"/>
         <source>%1 (stale: retrain)</source>
         <translation>%1（过期：需重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="547"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="551"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="595"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="599"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="597"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="601"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="597"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="601"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="597"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="601"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="599"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="603"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="600"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="604"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="601"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="605"/>
         <source>Continue</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="611"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="615"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="612"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="616"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="616"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="620"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="623"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="627"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="633"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="637"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="633"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="637"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="636"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="640"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="647"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="651"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>
@@ -4849,6 +4925,11 @@ extrapolation</source>
         <translation>标定：%1；损失 %2 → %3</translation>
     </message>
     <message>
+        <location filename="../widgets/common/Workbench.cpp" line="573"/>
+        <source> (and %1 more)</source>
+        <translation>（另有 %1 个）</translation>
+    </message>
+    <message>
         <source>the physics model was calibrated after it was learnt</source>
         <translation>学习之后物理模型又经过了标定</translation>
     </message>
@@ -4897,33 +4978,33 @@ extrapolation</source>
         <translation>相对参考期发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="573"/>
+        <location filename="../widgets/common/Workbench.cpp" line="576"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="580"/>
+        <location filename="../widgets/common/Workbench.cpp" line="583"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="595"/>
+        <location filename="../widgets/common/Workbench.cpp" line="598"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="128"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="599"/>
+        <location filename="../widgets/common/Workbench.cpp" line="602"/>
         <source>Ablation: %1 variants trained and evaluated</source>
         <translation>消融实验：已训练并评估 %1 个变体</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="606"/>
+        <location filename="../widgets/common/Workbench.cpp" line="609"/>
         <source>Generate</source>
         <translation>生成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="609"/>
+        <location filename="../widgets/common/Workbench.cpp" line="612"/>
         <source>Wrote %1 virtual-plant batches to %2</source>
         <translation>已将 %1 个虚拟装置批次写入 %2</translation>
     </message>

@@ -8,6 +8,21 @@ import re
 import sys
 
 ZH = {
+    "Before: the starting model (as commissioned, or calibrated).": "之前：起始模型（调试所得或标定后的模型）。",
+    "After: the extended model, every named cause fitted together (a finding's own sentence gives the gain when that cause was named).": "之后：扩展后的模型，所有已识别原因一起拟合（各项发现的文字给出识别该原因时的改进）。",
+    "DryTwin (the causes' one-step estimates): <b>changed</b> (p = %1): %2 moved beyond its normal spread": "DryTwin（各原因的一步估计）：<b>已变化</b>（p = %1）：%2 超出其正常范围",
+    "DryTwin (the causes' one-step estimates): none moved beyond its normal spread (p = %1)": "DryTwin（各原因的一步估计）：均未超出其正常范围（p = %1）",
+    "<b>A cause has changed since the reference period: %1.</b> The detectors, judging the data set as a whole, stayed below their limits; fitting the causes found it beyond its normal spread with a gain on held-out data (below). Check it on the plots.": "<b>自参考期以来有一个原因发生了变化：%1。</b>检测器对整个数据集的判断未超出其限值；拟合各原因发现它超出正常范围，且在留出数据上有改进（见下）。请在图上核对。",
+    "the error drifts over each batch, or over the recording from the fouling's onset, and starts afresh with each new batch": "误差在每个批次内（或在记录中自结垢开始起）逐渐漂移，每个新批次重新开始",
+    "%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.": "扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。",
+    "Change z": "变化 z",
+    "Change z: how far the cause's one-step estimate here lies from its normal value on the reference period, in units of both estimates' errors and the spread between the reference's periods; above 2 it moved.": "变化 z：该原因在此处的一步估计与其在参考期的正常值相差多远，以两次估计的误差及参考期各时段间的离散为单位；大于 2 即为发生了变化。",
+    "* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test's; a lag's one-step estimate understates how far it moved, so the fit decides.": "* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。",
+    "%1 = %2%3, 95 % CI [%4, %5]": "%1 = %2%3，95 % 置信区间 [%4, %5]",
+    " in the final model, fitted with every other named cause (%1%2 when it was named, as below)": "（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）",
+    "Training session %1 (its recording is on the Training tab; no data set is loaded for the other tabs)": "培训会话 %1（其记录显示在“培训”选项卡上；其他选项卡未加载数据集）",
+    "Feed [kg/h]": "进料 [kg/h]",
+    " (and %1 more)": "（另有 %1 个）",
     " %1 moved %2 times as much as this cause's model form says: the direction agrees, the size is the model's to answer.":
         " %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。",
     " The model is extended.": " 模型已扩展。",

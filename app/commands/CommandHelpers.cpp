@@ -30,7 +30,8 @@ int fail(const Error& e) {
 }
 
 /// Opens --data (with --mapping and the cleaning rules) and --model in @p session.
-bool open(const CommandOptions& o, workflow::Session& session, int& exitCode, bool withData) {
+bool open(const CommandOptions& o, workflow::Session& session, int& exitCode, bool withData,
+          bool printNotes) {
     workflow::OpenOptions oo;
     oo.dataPath = withData ? o.dataPath : std::string();
     oo.mappingPath = o.mappingPath;
@@ -43,6 +44,20 @@ bool open(const CommandOptions& o, workflow::Session& session, int& exitCode, bo
     if (!r) {
         exitCode = fail(r.error());
         return false;
+    }
+    // What the files did not say (a gap, an empty column, a parameter the model file lacks): on
+    // stderr, so that a JSON answer on stdout stays clean; `inspect` lists every data note.
+    std::vector<std::string> notes = r->modelNotes;
+    if (printNotes) {
+        notes.insert(notes.end(), r->summary.notes.begin(), r->summary.notes.end());
+    }
+    constexpr std::size_t kShown = 8;
+    for (std::size_t i = 0; i < notes.size() && i < kShown; ++i) {
+        std::fprintf(stderr, "drytwin: note: %s\n", notes[i].c_str());
+    }
+    if (notes.size() > kShown) {
+        std::fprintf(stderr, "drytwin: note: %zu more (drytwin inspect lists the data's)\n",
+                     notes.size() - kShown);
     }
     return true;
 }

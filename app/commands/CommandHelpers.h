@@ -14,7 +14,9 @@ namespace drytwin::app::detail {
 /// @brief Prints @p e (and each rejected file) to stderr; the contract's exit code.
 int fail(const Error& e);
 /// @brief Opens --data (with --mapping and the cleaning rules) and --model in @p session.
-bool open(const CommandOptions& o, workflow::Session& session, int& exitCode, bool withData = true);
+/// Notes on what the files did not say go to stderr unless @p printNotes is false (inspect lists them).
+bool open(const CommandOptions& o, workflow::Session& session, int& exitCode, bool withData = true,
+          bool printNotes = true);
 /// @brief @p v with @p precision decimals, "-" for NaN.
 std::string fmt(double v, int precision = 3);
 /// @brief "--bound NAME=LO:HI" into the options; false with a message on a malformed one.

@@ -30,7 +30,21 @@ void printDetection(const discovery::DiscoveryResult& d) {
     std::printf(
         "  %s (each detector's false-alarm rate %.3g per data set; DryTwin's split between its monitor "
         "and its causes' test)\n",
-        det.changed ? "CHANGED" : "no change detected", det.falseAlarmRate);
+        det.changed       ? "CHANGED"
+        : det.namedChange ? "CHANGED (a named cause)"
+                          : "no change detected",
+        det.falseAlarmRate);
+    if (!det.changed && det.namedChange) {
+        std::string causes;
+        for (const auto& c : det.namedCauses) {
+            causes += (causes.empty() ? "" : ", ") + c;
+        }
+        std::printf(
+            "  the detectors, judging the data set as a whole, did not flag it; fitting the causes found "
+            "%s beyond its normal spread with a held-out gain (below). Such a name is a claim the "
+            "detectors' rate does not cover: check it on the plots.\n",
+            causes.c_str());
+    }
     const auto line = [](const char* name, const monitoring::Detection& m) {
         std::printf("  %-38s %s, p %.3g (%s)", name, m.changed ? "flags a change" : "no change", m.pValue,
                     m.statistic.c_str());
@@ -54,7 +68,7 @@ void printDetection(const discovery::DiscoveryResult& d) {
         }
     };
     line("DryTwin, monitor of the model's errors:", det.drytwin);
-    std::printf("  %-38s %s, p %.3g (Bonferroni; smallest: %s)\n", "DryTwin, the causes' parameters:",
+    std::printf("  %-38s %s, p %.3g (Bonferroni; smallest: %s)\n", "DryTwin, the causes' one-step estimates:",
                 det.causeTest.changed ? "one moved beyond its normal spread" : "none moved",
                 det.causeTest.pValue, det.causeTest.cause.empty() ? "-" : det.causeTest.cause.c_str());
     line("dynamic PCA (the measured columns):", det.pca);
@@ -112,14 +126,15 @@ int runDiscover(const CommandOptions& o) {
     }
     std::printf(
         d.hasReference
-            ? "\nCandidate causes (change of the one-step estimate from the reference's, in units of "
-              "both errors and the reference's spread; Bonferroni):\n"
+            ? "\nCandidate causes (z: change of the one-step estimate from the reference's, in units of "
+              "both errors and the reference's spread; p: its test, or * a timing cause's own score test "
+              "where that is smaller (a lag's one-step estimate understates its change); Bonferroni):\n"
             : "\nCandidate causes (score test on the training part, HAC variance, Holm-corrected):\n");
-    std::printf("%-24s %8s %10s %10s %12s %14s\n", "cause", "z", "p", "p (Holm)", "fitted", "train loss");
+    std::printf("%-24s %8s %10s %10s %12s %14s\n", "cause", "z", "p ", "p (Holm)", "fitted", "train loss");
     for (const auto& c : d.ranking) {
         std::printf(
-            "%-24s %8.2f %10.3g %10.3g %12s %14s%s\n", c.cause.c_str(), c.score, c.pValue, c.pHolm,
-            c.fitted ? "yes" : "no",
+            "%-24s %8.2f %9.3g%s %10.3g %12s %14s%s\n", c.cause.c_str(), c.score, c.pValue,
+            c.pFromOwnScreen ? "*" : " ", c.pHolm, c.fitted ? "yes" : "no",
             c.fitted ? (fmt(c.fitLossBefore, 4) + " -> " + fmt(c.fitLossAfter, 4)).c_str() : "-",
             c.screenedFromS >= 0 ? ("  (tested from " + fmt(c.screenedFromS / 60, 0) + " min)").c_str() : "");
     }
@@ -147,6 +162,15 @@ int runDiscover(const CommandOptions& o) {
         }
         if (!f.perPart.empty()) {
             std::printf("  per part: %s\n", discovery::describeParts(f.perPart).c_str());
+        }
+        if (f.restated &&
+            std::abs(f.value - f.valueWhenNamed) > 0.25 * (f.ci95HighWhenNamed - f.ci95LowWhenNamed)) {
+            const auto& info = properties::info(f.parameter);
+            std::printf(
+                "  in the final model, fitted jointly with every other named cause: %s = %.4g %s, 95 %% CI "
+                "[%.4g, %.4g] (the sentence above and the parts: the fit when it was named)\n",
+                std::string(info.symbol).c_str(), f.value, std::string(info.unit).c_str(), f.ci95Low,
+                f.ci95High);
         }
         if (f.hasReference) {
             const auto& info = properties::info(f.parameter);

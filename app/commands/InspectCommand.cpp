@@ -25,7 +25,7 @@ int runInspect(const CommandOptions& o) {
     }
     workflow::Session session;
     int rc = 0;
-    if (!open(o, session, rc)) {
+    if (!open(o, session, rc, true, false)) { // its own list below holds every note
         return rc;
     }
     auto summary = session.inspect();

@@ -233,6 +233,12 @@ void restateAtExtendedModel(const Problem& pr, const ParameterSet& extended,
         const auto col =
             static_cast<int>(std::find(nuisance.begin(), nuisance.end(), f.parameter) - nuisance.begin());
         const auto sc = scoreTest(*at, columnsBut(static_cast<int>(nuisance.size()), col), col);
+        if (!f.restated) {
+            f.restated = true;
+            f.valueWhenNamed = f.value;
+            f.ci95LowWhenNamed = f.ci95Low;
+            f.ci95HighWhenNamed = f.ci95High;
+        }
         f.value = extended[f.parameter];
         for (auto& l : f.lookAlikes) {
             if (l.namedAfter) { // folded into this finding: its joint value

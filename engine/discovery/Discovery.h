@@ -100,6 +100,14 @@ struct DiscoveryOptions {
     /// take it off every period's measurements before a change is looked for. false: the
     /// causes' normal values alone carry the structure.
     bool learnLineStructure = true;
+    /// Against a reference period: the line's structure is applied only within the conditions
+    /// the reference saw: each of its features (inputs, the model's outputs, their filtered
+    /// forms) is held at the edge of the range it had in the fit before the ridge is applied. A
+    /// linear map fitted on a few weeks' weather is not a law for another season: its slope on
+    /// ambient temperature or humidity is barely identified there and would extrapolate to an
+    /// error that is the map's, not the line's. false (the default while it is measured): applied
+    /// as fitted everywhere.
+    bool lineStructureWithinReferenceRange = false;
     /// Against a reference period: a new batch whose typical value of an input lies outside what
     /// the reference saw (its 0.5-99.5 % range widened by a quarter of the span: a winter batch
     /// against summer runs) has no normal level to be compared with; both detectors judge only
@@ -184,6 +192,9 @@ struct Candidate {
     double score = 0;              ///< z of the score test (positive: the mechanism helps)
     double pValue = 1;             ///< one-sided for parameters bounded at 0, two-sided otherwise
     double pHolm = 1;              ///< Holm-adjusted over all candidates of the round (reported)
+    /// Against a reference: p is a timing cause's own score test (screened as alone), smaller than
+    /// its change test's, whose z is the score column (a lag's one-step estimate understates it).
+    bool pFromOwnScreen = false;
     double predictedReduction = 0; ///< share of the training loss one Gauss-Newton step would remove
     double linearEstimate = 0;     ///< one Gauss-Newton step from 0: U / (s̃ᵀs̃)
     double linearSe = 0;           ///< its HAC standard error
@@ -252,6 +263,11 @@ struct Finding {
     properties::Param parameter{};
     double value = 0;
     double ci95Low = 0, ci95High = 0; ///< value ± 1.96 HAC standard errors of the score step
+    /// Where later causes were named, value and interval are restated at the final model (every
+    /// named cause fitted jointly); the evidence, the gain and the part-by-part values are from
+    /// the fit when this cause was named: that value here (restated false: value is that one).
+    bool restated = false;
+    double valueWhenNamed = 0, ci95LowWhenNamed = 0, ci95HighWhenNamed = 0;
     double explainedFraction = 0;     ///< share of the held-out weighted squared error it removes
     double explainedFractionFast = 0; ///< share of its fast part (DiscoveryOptions::fastBandWindowS)
     bool fastPartCounted = false;     ///< the whole share fell short; the fast part's made it count
@@ -357,6 +373,13 @@ struct ChangeDetection {
         double pValue = 1; ///< Bonferroni-adjusted
         std::string cause; ///< the one with the smallest p
     } causeTest;
+    /// A cause named against the reference (its fitted parameter beyond its normal spread, with a
+    /// held-out gain): the line has changed even where the detectors, judging the data set as a
+    /// whole at their stated rate, did not flag it. Its false-naming rate is the study's, not α.
+    bool namedChange = false;
+    std::vector<std::string> namedCauses;
+    /// Either detector, or a cause named: what the headline says.
+    bool lineChanged() const { return changed || namedChange; }
     monitoring::Detection drytwin, pca;
     std::vector<std::string> drytwinColumns, pcaColumns;
 };

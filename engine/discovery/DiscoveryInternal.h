@@ -459,8 +459,11 @@ struct OutsideReference {
 /// @brief Every such batch and input (ReferenceDiscovery.cpp); the notes and the detectors use it.
 std::vector<OutsideReference> outsideReference(const std::vector<data::SiBatch>& reference,
                                                const std::vector<data::SiBatch>& batches);
+/// @brief The line's structure learnt on the reference (LineStructure.cpp); @p withinRange holds
+/// each feature within the range the fit saw before the map is applied
+/// (DiscoveryOptions::lineStructureWithinReferenceRange).
 LineStructure learnLineStructure(const std::vector<data::SiBatch>& reference,
-                                 const std::vector<physics::SimulationResult>& refSims);
+                                 const std::vector<physics::SimulationResult>& refSims, bool withinRange);
 /// Progress at a fraction of the whole discovery; true when the user stopped it.
 using StopAt = std::function<bool(double fraction, const std::string& detail)>;
 /// One round of selection (Selection.cpp): the remaining causes' score tests at @p model, the

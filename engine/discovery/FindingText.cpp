@@ -26,7 +26,8 @@ const char* lookFor(Param p) {
     case Param::theta_gas:
         return "the errors grow with feed rate and inlet moisture (bias by feed rate and by inlet moisture)";
     case Param::theta_foul:
-        return "the error drifts within every batch and resets at each batch start";
+        return "the error drifts over each batch, or over the recording from the fouling's onset, and "
+               "starts afresh with each new batch";
     case Param::tau_meter:
         return "the outlet-moisture error follows the rate of change of the simulated outlet moisture, "
                "and the tube-outlet error does not";

@@ -66,6 +66,35 @@ Eigen::MatrixXd featuresOf(const data::SiBatch& b, const physics::SimulationResu
     return f;
 }
 
+/// Each feature's range over some feature matrices (their finite values).
+struct FeatureRange {
+    Eigen::VectorXd low, high;
+};
+
+FeatureRange rangeOf(const std::vector<const Eigen::MatrixXd*>& features) {
+    FeatureRange r;
+    r.low = Eigen::VectorXd::Constant(kFeatures, INFINITY);
+    r.high = Eigen::VectorXd::Constant(kFeatures, -INFINITY);
+    for (const auto* f : features) {
+        if (f->rows() == 0) {
+            continue;
+        }
+        r.low = r.low.cwiseMin(f->colwise().minCoeff().transpose());
+        r.high = r.high.cwiseMax(f->colwise().maxCoeff().transpose());
+    }
+    return r;
+}
+
+/// The features held within @p range, column by column (a column never seen is left alone).
+Eigen::MatrixXd heldWithin(Eigen::MatrixXd f, const FeatureRange& range) {
+    for (Eigen::Index j = 0; j < f.cols(); ++j) {
+        if (range.low(j) <= range.high(j)) {
+            f.col(j) = f.col(j).cwiseMax(range.low(j)).cwiseMin(range.high(j));
+        }
+    }
+    return f;
+}
+
 /// Rows (features, target) of one channel over some batches, kept and measured rows only.
 struct Rows {
     Eigen::MatrixXd x;
@@ -204,7 +233,7 @@ data::SiBatch masked(const data::SiBatch& b, std::size_t lo, std::size_t hi, boo
 } // namespace
 
 LineStructure learnLineStructure(const std::vector<data::SiBatch>& reference,
-                                 const std::vector<physics::SimulationResult>& refSims) {
+                                 const std::vector<physics::SimulationResult>& refSims, bool withinRange) {
     LineStructure out;
     std::vector<Eigen::MatrixXd> features;
     std::vector<const physics::SimulationResult*> sims;
@@ -281,8 +310,13 @@ LineStructure learnLineStructure(const std::vector<data::SiBatch>& reference,
         fits[static_cast<std::size_t>(c)] = fitRidge(rowsOf(all, sims, features, c), bestLambda);
         out.fitted[static_cast<std::size_t>(c)] = fits[static_cast<std::size_t>(c)].ok;
     }
-    out.apply = [fits](const data::SiBatch& b, const physics::SimulationResult& s) {
-        return corrected(b, featuresOf(b, s), fits);
+    std::vector<const Eigen::MatrixXd*> allFeatures;
+    for (const auto& f : features) {
+        allFeatures.push_back(&f);
+    }
+    const FeatureRange seen = rangeOf(allFeatures);
+    out.apply = [fits, seen, withinRange](const data::SiBatch& b, const physics::SimulationResult& s) {
+        return corrected(b, withinRange ? heldWithin(featuresOf(b, s), seen) : featuresOf(b, s), fits);
     };
     // The reference itself, each part corrected by its fold's fit on the other parts: its normal
     // values and its monitor's null then carry the structure model's own error, as new data will.
@@ -292,8 +326,19 @@ LineStructure learnLineStructure(const std::vector<data::SiBatch>& reference,
         for (std::size_t c = 0; c < 4; ++c) {
             partFits[c] = fitRidge(folds[p].train[c], bestLambda);
         }
+        // The part's rows held within what the other parts saw, as new data are within the whole.
+        std::vector<const Eigen::MatrixXd*> othersFeatures;
+        for (std::size_t q = 0; q < parts.size(); ++q) {
+            if (q != p) {
+                for (const auto& [b, range] : parts[q]) {
+                    othersFeatures.push_back(&features[b]); // whole batches: thirds share their batch
+                }
+            }
+        }
+        const FeatureRange othersSeen = rangeOf(othersFeatures);
         for (const auto& [b, range] : parts[p]) {
-            const data::SiBatch fixed = corrected(reference[b], features[b], partFits);
+            const data::SiBatch fixed = corrected(
+                reference[b], withinRange ? heldWithin(features[b], othersSeen) : features[b], partFits);
             for (std::size_t k = range.first; k < range.second; ++k) {
                 auto& o = out.referenceCorrected[b];
                 o.xOutDb[k] = fixed.xOutDb[k];

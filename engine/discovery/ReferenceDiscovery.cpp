@@ -96,8 +96,9 @@ void scoreAgainstReference(const Problem& pr, std::vector<Candidate>& cands) {
         c.score = (c.linearEstimate - rv.value) / se;
         c.pValue = twoSided(c.parameter) ? 2 * upperTail(std::abs(c.score)) : upperTail(c.score);
         if (isTiming(c.parameter)) {
-            c.pValue =
-                std::min(c.pValue, ownP); // screened as alone; judged by its fit against the reference's
+            c.pFromOwnScreen =
+                ownP < c.pValue; // screened as alone; judged by its fit against the reference's
+            c.pValue = std::min(c.pValue, ownP);
         }
     }
     // Bonferroni over the round's candidates, reported beside the raw p (the screen is liberal on
@@ -137,10 +138,13 @@ Expected<std::string> judgeAgainstReference(const Problem& pr, Finding& f) {
     if (moved) {
         return std::string();
     }
-    return format("within its normal spread: %.4g %s here against %.4g (normal range %.4g to %.4g) on the "
-                  "reference period",
-                  f.value, std::string(info.unit).c_str(), rv->value, f.referenceCi95Low,
-                  f.referenceCi95High);
+    // The test weighs this estimate's own uncertainty with the normal spread: say both, so that a
+    // value outside the normal range but too uncertain to tell reads as what it is.
+    return format("within its normal spread: %.4g %s here (95 %% CI %.4g to %.4g) against %.4g on the "
+                  "reference period (a period's normal range %.4g to %.4g); the change is %.2g times its "
+                  "combined uncertainty, needs %s1.96",
+                  f.value, std::string(info.unit).c_str(), f.ci95Low, f.ci95High, rv->value,
+                  f.referenceCi95Low, f.referenceCi95High, z, twoSided(f.parameter) ? "|z| > " : "> ");
 }
 
 /// Notes for each batch of the new data whose typical value of an input (its median) lies
@@ -399,7 +403,7 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     std::vector<data::SiBatch> newForModel = batches;
     LineStructure structure;
     if (options.learnLineStructure) {
-        structure = learnLineStructure(reference, *refSims);
+        structure = learnLineStructure(reference, *refSims, options.lineStructureWithinReferenceRange);
         refForModel = structure.referenceCorrected;
         for (std::size_t b = 0; b < batches.size(); ++b) {
             newForModel[b] = structure.apply(batches[b], (*newSims)[b]);
@@ -480,6 +484,16 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
             "residuals below are what is left",
             structure.lambda));
     }
+    // Fewer than three batches: a period's normal spread comes from thirds of a recording, which
+    // share its day and weather; what varies between weeks is not in it.
+    if (reference.size() < 3) {
+        result.notes.push_back(format(
+            "the reference holds %zu batch(es): a period's normal spread comes from thirds of them, which "
+            "share their day and weather; a change named here may be a difference of conditions the "
+            "reference never showed. A reference of several batches over the conditions the line runs in "
+            "(weeks, seasons) judges better",
+            reference.size()));
+    }
     for (auto& note :
          detail::operatingRangeNotes(reference, batches, options.judgeOnlyChangesBeyondReferenceConditions)) {
         result.notes.push_back(std::move(note));
@@ -533,6 +547,11 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
         return st.error();
     }
     testCauses(result.ranking, result.detection);
+    // Every finding against a reference is a change (its parameter beyond its normal spread).
+    for (const auto& f : result.findings) {
+        result.detection.namedChange = true;
+        result.detection.namedCauses.push_back(f.cause);
+    }
     if (stop(0.95, "what is left")) {
         return cancelledError("discover");
     }
@@ -546,7 +565,10 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     reportProgress(progress, "discover", 1.0, "done");
     result.ending = {Termination::Completed,
                      std::string(result.detection.changed ? "changed against the reference; "
-                                                          : "no change against the reference; ") +
+                                 : result.detection.namedChange
+                                     ? "a cause changed against the reference "
+                                       "(the detectors did not flag the data set); "
+                                     : "no change against the reference; ") +
                          std::to_string(result.findings.size()) + " cause(s) named",
                      elapsed()};
     return result;

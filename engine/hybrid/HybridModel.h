@@ -67,6 +67,9 @@ struct HybridModel {
     /// Top-level keys of a model file that this version does not know, as their JSON text,
     /// written back unchanged so that nothing a newer stage stored is lost. Nothing reads them.
     std::map<std::string, std::string> foreignKeys;
+    /// What reading the file had to assume (a parameter it lacks, taken at its default), for
+    /// the user to see; not written back.
+    std::vector<std::string> readNotes;
 
     /// @brief The simulation options this model implies (switches, winnower form).
     physics::SimulationOptions simulationOptions() const {

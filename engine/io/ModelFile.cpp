@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
+#include <set>
 
 namespace drytwin::io {
 
@@ -132,6 +134,24 @@ Expected<HybridModel> parseModelFile(const std::string& text, const std::string&
 
 namespace {
 
+/// A unit as written by hand or by DryTwin, reduced to what tells units apart: "W/(m2 K)",
+/// "W/(m^2*K)" and "W/(m²·K)" are one unit; "kW/(m²·K)" is another.
+std::string unitSpelling(const std::string& unit) {
+    std::string out;
+    for (std::size_t i = 0; i < unit.size(); ++i) {
+        const auto rest = std::string_view(unit).substr(i);
+        if (rest.rfind("²", 0) == 0 || rest.rfind("³", 0) == 0) {
+            out += rest.rfind("²", 0) == 0 ? '2' : '3';
+            i += std::string_view("²").size() - 1;
+        } else if (rest.rfind("·", 0) == 0) {
+            i += std::string_view("·").size() - 1;
+        } else if (unit[i] != ' ' && unit[i] != '*' && unit[i] != '^') {
+            out += unit[i];
+        }
+    }
+    return out;
+}
+
 Expected<HybridModel> parseModelJson(const json& j, const std::string& name) {
     auto bad = [&](const std::string& key, const std::string& why) {
         return Error{
@@ -150,6 +170,7 @@ Expected<HybridModel> parseModelJson(const json& j, const std::string& name) {
     }
     const int version = j["format_version"].get<int>();
     HybridModel m;
+    std::set<properties::Param> present;
     if (j.contains("parameters")) {
         if (!j["parameters"].is_object()) {
             return bad("parameters", "must be an object keyed by parameter symbol");
@@ -163,7 +184,35 @@ Expected<HybridModel> parseModelJson(const json& j, const std::string& name) {
             if (!v.is_number()) {
                 return bad("parameters." + symbol, "\"value\" must be a number");
             }
+            // A unit other than DryTwin's would be read as DryTwin's (72 kW as 72 W): refused.
+            const auto& expected = properties::info(*id).unit;
+            if (entry.is_object() && entry.contains("unit") &&
+                (!entry["unit"].is_string() ||
+                 unitSpelling(entry["unit"].get<std::string>()) != unitSpelling(std::string(expected)))) {
+                return bad("parameters." + symbol + ".unit",
+                           "is " + entry["unit"].dump() + "; DryTwin reads this parameter in " +
+                               std::string(expected) + ": convert the value and write that unit");
+            }
             m.parameters[*id] = v.get<double>();
+            present.insert(*id);
+        }
+        // A parameter the file lacks takes its default; the user is told, unless it is a
+        // mechanism's (absent: the mechanism is not in the model, which is what 0 means).
+        std::string absent;
+        std::size_t count = 0;
+        for (const auto& i : properties::parameterTable()) {
+            if (!present.count(i.id) && !i.fixed && !properties::mechanismOf(i.id)) {
+                char text[160];
+                std::snprintf(text, sizeof text, "%s%s %g %s", count ? ", " : "",
+                              std::string(i.symbol).c_str(), i.defaultValue, std::string(i.unit).c_str());
+                absent += text;
+                ++count;
+            }
+        }
+        if (count > 0) {
+            m.readNotes.push_back(name + ": " + std::to_string(count) +
+                                  " parameter(s) not in the file take " +
+                                  (count == 1 ? "its default: " : "their defaults: ") + absent);
         }
     }
     if (auto st = m.parameters.validate(); !st) {
@@ -296,6 +345,13 @@ std::string truthJson(const plant::PlantOptions& options, const plant::PlantResu
     for (const auto& [m, s] : result.effects) {
         if (s > 0) {
             j["effects"][std::string(plant::info(m).name)] = s;
+        }
+    }
+    // When each mechanism sets in, seconds from every batch's start (absent: from the start).
+    j["effect_onsets_s"] = json::object();
+    for (const auto& [m, onset] : options.effectOnsetS) {
+        if (result.effects.count(m) && result.effects.at(m) > 0) {
+            j["effect_onsets_s"][std::string(plant::info(m).name)] = onset;
         }
     }
     j["seed"] = options.seed;

@@ -397,7 +397,14 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                                   {{"name", std::string(properties::info(f.parameter).symbol)},
                                    {"value", num(f.value)},
                                    {"unit", std::string(properties::info(f.parameter).unit)},
-                                   {"ci95", {num(f.ci95Low), num(f.ci95High)}}}},
+                                   {"ci95", {num(f.ci95Low), num(f.ci95High)}},
+                                   // The fit when it was named, which its evidence, gain and parts
+                                   // describe; "value" is at the final model (every cause jointly).
+                                   {"when_named",
+                                    {{"value", num(f.restated ? f.valueWhenNamed : f.value)},
+                                     {"ci95",
+                                      {num(f.restated ? f.ci95LowWhenNamed : f.ci95Low),
+                                       num(f.restated ? f.ci95HighWhenNamed : f.ci95High)}}}}}},
                                  {"explained_fraction", num(f.explainedFraction)},
                                  {"explained_fraction_fast", num(f.explainedFractionFast)},
                                  {"evidence", f.evidence},
@@ -481,6 +488,10 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                                         "SPE (dynamic PCA, leave-one-out reference null), either detector"},
                           {"false_alarm_rate", num(d.falseAlarmRate)},
                           {"decided_by", d.decidedBy},
+                          // Either detector or a cause named beyond its normal spread: whether the
+                          // line changed, as the headline says (issue #41's reports, 2026-11-27).
+                          {"line_changed", d.lineChanged()},
+                          {"named_change", {{"changed", d.namedChange}, {"causes", d.namedCauses}}},
                           {"detectors",
                            {{"drytwin", detectionJson(d.drytwin, d.drytwinColumns)},
                             {"pca", detectionJson(d.pca, d.pcaColumns)}}}};

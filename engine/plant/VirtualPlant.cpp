@@ -95,6 +95,12 @@ Status PlantOptions::validate() const {
     return {};
 }
 
+std::string batchId(int oneBased) {
+    char id[16];
+    std::snprintf(id, sizeof id, "B%02d", oneBased);
+    return id;
+}
+
 Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     if (auto st = o.validate(); !st) {
@@ -129,9 +135,7 @@ Expected<PlantResult> runPlant(const PlantOptions& o, const Progress& progress) 
             sum.samples += counts.samples;
         }
         PlantBatch pb = std::move(line.record());
-        char id[16];
-        std::snprintf(id, sizeof id, "B%02d", b + 1);
-        pb.id = id;
+        pb.id = batchId(b + 1);
         result.batches.push_back(std::move(pb));
     }
     reportProgress(progress, "generate", 1.0);

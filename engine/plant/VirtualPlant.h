@@ -95,6 +95,8 @@ struct PlantResult {
 /// @brief Runs the virtual plant: the line with its own parameters, mechanisms, sensor noise,
 /// disturbances, a PI controller moving the hot-air setpoint, and cleaning between batches.
 /// Integrates with fixed-step RK4 (its own numerics, independent of the model's CVODE path).
+/// @brief The id (and file name stem) of the plant's batch number @p oneBased: B01, B02, ...
+std::string batchId(int oneBased);
 Expected<PlantResult> runPlant(const PlantOptions& options, const Progress& progress = {});
 
 } // namespace drytwin::plant

@@ -115,7 +115,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(OutputResidual, output, unit, ro
                                                 seriesBatch, seriesTimeS, seriesValue)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Candidate, cause, parameter, score, pValue, pHolm,
                                                 predictedReduction, linearEstimate, linearSe, fitted,
-                                                fitLossBefore, fitLossAfter)
+                                                fitLossBefore, fitLossAfter, pFromOwnScreen)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Gain, split, maeMoistureBefore, maeMoistureAfter,
                                                 maeTemperatureBefore, maeTemperatureAfter, r2MoistureBefore,
                                                 r2MoistureAfter, r2TemperatureBefore, r2TemperatureAfter,
@@ -132,7 +132,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Finding, cause, parameter, value
                                                 output, biasBefore, trendPerHourBefore, evidence, gain,
                                                 perPart, consistent, transferChecked, transferReduction,
                                                 hasOnset, onsetS, onsetLowS, onsetHighS, group, lookAlikes,
-                                                tellApart)
+                                                tellApart, restated, valueWhenNamed, ci95LowWhenNamed,
+                                                ci95HighWhenNamed)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Signature, type, output, periodS, column, lagS, batches,
                                                 strength)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Round::Rejection, cause, code, reason)

@@ -9,6 +9,8 @@
 
 #include "io/ModelFile.h"
 
+#include <algorithm>
+
 namespace drytwin::workflow {
 
 Status Session::requireData(const std::string& action) const {
@@ -20,6 +22,32 @@ Status Session::requireData(const std::string& action) const {
                      {}};
     }
     return {};
+}
+
+Status Session::requireUsableRows(const std::string& action) const {
+    std::size_t kept = 0, rows = 0;
+    for (const auto& b : m_si) {
+        rows += b.rows();
+        kept += static_cast<std::size_t>(std::count(b.keep.begin(), b.keep.end(), 1));
+    }
+    if (kept > 0) {
+        return {};
+    }
+    // Say why, from what the loading noted (a column with no value at all, say), instead of a
+    // later "0 usable rows" that names neither the file nor the column.
+    std::string why;
+    for (const auto& note : m_dataSet->notes) {
+        if (note.find("holds no value") != std::string::npos) {
+            why += (why.empty() ? "" : "; ") + note;
+        }
+    }
+    return Error{
+        ErrorKind::BadInput,
+        action,
+        "no row of the loaded data (" + std::to_string(rows) + " rows) passes the cleaning" +
+            (why.empty() ? std::string("; `drytwin inspect` lists what each rule dropped") : ": " + why),
+        ErrorCode::NotEnoughData,
+        {"usable rows", "0"}};
 }
 
 Expected<data::DataSetSummary> Session::inspect() const {

@@ -40,6 +40,8 @@ struct OpenResult {
     std::shared_ptr<const data::DataSet> dataSet; ///< null when no data path was given
     data::DataSetSummary summary;
     bool modelLoaded = false;
+    /// What reading the model file had to assume (hybrid::HybridModel::readNotes).
+    std::vector<std::string> modelNotes;
     Ending ending;
 };
 
@@ -302,6 +304,8 @@ private:
     loadReference(const std::string& path, const std::string& mappingPath, const Progress& progress) const;
 
     Status requireData(const std::string& action) const;
+    /// The loaded data keep at least one row after cleaning; else why not (BadInput).
+    Status requireUsableRows(const std::string& action) const;
     /// Options valid and data loaded: the precondition of every action on the data.
     template <class Options> Status ready(const Options& options, const std::string& action) const;
 

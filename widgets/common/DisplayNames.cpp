@@ -200,6 +200,16 @@ QString groupDisplayName(const std::string& group) {
     return QString::fromStdString(group);
 }
 
+QString unitSuffix(std::string_view unit) {
+    if (unit.empty() || unit == "-") {
+        return {};
+    }
+    if (unit == "% wb") {
+        return QLatin1Char(' ') + QCoreApplication::translate("DisplayNames", "% wb");
+    }
+    return QLatin1Char(' ') + QString::fromUtf8(unit.data(), static_cast<int>(unit.size()));
+}
+
 QString verdictDisplayText(const std::string& verdict, const QString& firstCause) {
     if (verdict == "cause_found") {
         return firstCause.isEmpty()

@@ -36,6 +36,9 @@ QString mappingReasonText(const std::string& reason);
 /// 600/1300" becomes "Physics + learnt correction (PGRL-CC): second 600 of 1300"; other details as
 /// they are.
 QString progressDetailText(const std::string& stage, const std::string& detail);
+/// @brief An engine unit after a value, in the user's language: " % wb" (" % 湿基"), " 1/h", and
+/// nothing for a dimensionless one ("-"), which read as a stray dash in a sentence.
+QString unitSuffix(std::string_view unit);
 /// @brief A look-alike group by its name ("outlet response time: meter lag or transport time").
 QString groupDisplayName(const std::string& group);
 /// @brief Discovery's verdict as a heading ("Cause found: heat-transfer fouling").

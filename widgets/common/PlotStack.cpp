@@ -41,6 +41,17 @@ namespace drytwin::widgets {
 
 namespace {
 
+/// A canvas note that wraps within the canvas: QwtPlotTextLabel lays its text out at its unwrapped
+/// size, so a sentence wider than a narrow plot was cut at both ends.
+class WrappingTextLabel : public QwtPlotTextLabel {
+protected:
+    QRectF textRect(const QRectF& rect, const QSizeF&) const override { return rect.adjusted(8, 0, -8, 0); }
+};
+
+} // namespace
+
+namespace {
+
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 QwtPlotMarker* verticalLine(QwtPlot* plot, const QColor& colour, Qt::PenStyle style) {
@@ -124,7 +135,9 @@ int PlotStack::addPlot(const QString& yTitle) {
         auto* legend = new QwtLegend;
         legend->setDefaultItemMode(QwtLegendData::Checkable);
         legend->setMaxColumns(8);
-        plot->insertLegend(legend, QwtPlot::TopLegend);
+        // Up to 0.6 of the plot for the legend (Qwt's default, a third, cut its second row in
+        // half on Training's short top plot); a legend takes only the rows it needs.
+        plot->insertLegend(legend, QwtPlot::TopLegend, 0.6);
         connect(legend, &QwtLegend::checked, this, [this, plot](const QVariant& info, bool on, int) {
             auto* item = plot->infoToItem(info);
             if (!item) {
@@ -167,8 +180,12 @@ int PlotStack::addPlot(const QString& yTitle) {
     // The bottom plot also holds the time axis: a little more room keeps its canvas as tall.
     for (std::size_t i = 0; i < m_plots.size(); ++i) {
         // The top plot holds the legend, the bottom one the time axis: each a little more room.
-        m_layout->setStretch(static_cast<int>(i),
-                             i + 1 == m_plots.size() || (i == 0 && m_plots.size() > 2) ? 5 : 4);
+        // In a stack of four or more (Training) the legend may take two rows: the top plot gets
+        // more, so that its canvas keeps room for its axis title.
+        const int top = m_plots.size() > 3 ? 6 : 5;
+        m_layout->setStretch(static_cast<int>(i), i == 0 && m_plots.size() > 2 ? top
+                                                  : i + 1 == m_plots.size()    ? 5
+                                                                               : 4);
     }
     // A plot added after setXTitle() keeps that title (Training's monitor plot, below the rest).
     setXTitle(m_xTitle.isEmpty() ? tr("time [s]") : m_xTitle);
@@ -234,7 +251,7 @@ void PlotStack::updateEmptyText() {
         hasData = hasData || curveCount(i) > 0;
     }
     while (m_emptyLabels.size() < m_plots.size()) {
-        auto* label = new QwtPlotTextLabel;
+        auto* label = new WrappingTextLabel;
         label->setZ(100);
         m_emptyLabels.push_back(label);
     }

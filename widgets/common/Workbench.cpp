@@ -569,6 +569,9 @@ void Workbench::discover() {
             if (!r.discovery.findings.empty()) {
                 const auto& f = r.discovery.findings.front();
                 first = f.group.empty() ? causeDisplayName(f.cause) : groupDisplayName(f.group);
+                if (r.discovery.findings.size() > 1) { // the others are not hidden behind the first
+                    first += tr(" (and %1 more)").arg(r.discovery.findings.size() - 1);
+                }
             }
             Q_EMIT status(tr("Discovery: %1").arg(verdictDisplayText(r.discovery.verdict, first)));
             Q_EMIT discovered();

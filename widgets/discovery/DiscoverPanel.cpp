@@ -46,7 +46,11 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
          tr("Fitted: whether the cause's parameter was fitted to the data (only the leading causes are)."),
          tr("Loss: the fit's error with the cause in the model; lower is a better fit.")});
     m_gains = makeResultTable({tr("Held-out"), tr("Before"), tr("After"), tr("Unit")});
-    setHeaderToolTips(m_gains, {tr("The held-out part: batches the fit did not see.")});
+    setHeaderToolTips(m_gains,
+                      {tr("The held-out part: batches the fit did not see."),
+                       tr("Before: the starting model (as commissioned, or calibrated)."),
+                       tr("After: the extended model, every named cause fitted together (a finding's "
+                          "own sentence gives the gain when that cause was named).")});
     m_evidence = new QTextBrowser;
     m_plots = new PlotStack;
     m_plots->addPlot(tr("X_out residual [% wb]"));
@@ -193,11 +197,11 @@ void DiscoverPanel::showDetection() {
     // DryTwin's detector: its monitor of the model's error, or a cause's parameter beyond its spread.
     const QString causes =
         det.causeTest.changed
-            ? tr("DryTwin (the causes' parameters): <b>changed</b> (p = %1): %2 moved beyond its normal "
-                 "spread")
+            ? tr("DryTwin (the causes' one-step estimates): <b>changed</b> (p = %1): %2 moved beyond its "
+                 "normal spread")
                   .arg(det.causeTest.pValue, 0, 'g', 2)
                   .arg(causeDisplayName(det.causeTest.cause).toHtmlEscaped())
-            : tr("DryTwin (the causes' parameters): none moved beyond its normal spread (p = %1)")
+            : tr("DryTwin (the causes' one-step estimates): none moved beyond its normal spread (p = %1)")
                   .arg(det.causeTest.pValue, 0, 'g', 2);
     // Conditions the reference never saw, beside the verdict they may explain.
     QString unseenConditions;
@@ -207,9 +211,21 @@ void DiscoverPanel::showDetection() {
                                     .arg(noteText(n).toHtmlEscaped());
         }
     }
+    // A cause named beyond its normal spread is a change even where the detectors, judging the
+    // data set as a whole, stayed below their limits: the headline must not say "no change" beside it.
+    QString namedCauses;
+    for (const auto& c : det.namedCauses) {
+        namedCauses += (namedCauses.isEmpty() ? QString() : tr(", ")) + causeDisplayName(c);
+    }
     m_detection->setText(
         (det.changed ? tr("<b>The line has changed since the reference period.</b>")
-                     : tr("<b>No change against the reference period.</b>")) +
+         : det.namedChange
+             ? tr("<b>A cause has changed since the reference period: %1.</b> The detectors, judging the "
+                  "data "
+                  "set as a whole, stayed below their limits; fitting the causes found it beyond its normal "
+                  "spread with a gain on held-out data (below). Check it on the plots.")
+                   .arg(namedCauses.toHtmlEscaped())
+             : tr("<b>No change against the reference period.</b>")) +
         tr(" Each detector's false-alarm rate: %1 % per data set.").arg(100 * det.falseAlarmRate, 0, 'g', 2) +
         QStringLiteral("<br>") + describe(tr("DryTwin (the model's error)"), det.drytwin) +
         QStringLiteral("<br>") + causes + QStringLiteral("<br>") +
@@ -275,6 +291,11 @@ namespace {
 /// What to look for on the plots, per cause. The engine has the same sentences in English for the
 /// CLI's evidence sentence (lookFor in engine/discovery/Discovery.cpp, which has no Qt); they are
 /// worded here again because the GUI translates them.
+/// A parameter's unit after its value (" 1/h"), nothing for a dimensionless one ("-").
+QString paramUnitSuffix(properties::Param p) {
+    return unitSuffix(properties::info(p).unit);
+}
+
 QString lookForText(properties::Param p) {
     using properties::Param;
     switch (p) {
@@ -285,7 +306,9 @@ QString lookForText(properties::Param p) {
         return DiscoverPanel::tr(
             "the errors grow with feed rate and inlet moisture (bias by feed rate and by inlet moisture)");
     case Param::theta_foul:
-        return DiscoverPanel::tr("the error drifts within every batch and resets at each batch start");
+        return DiscoverPanel::tr(
+            "the error drifts over each batch, or over the recording from the fouling's onset, "
+            "and starts afresh with each new batch");
     case Param::tau_meter:
         return DiscoverPanel::tr(
             "the outlet-moisture error follows the rate of change of the simulated outlet "
@@ -592,7 +615,7 @@ QString DiscoverPanel::evidenceText(const discovery::Finding& f) {
                   .arg(f.referenceCi95Low, 0, 'g', 3)
                   .arg(f.referenceCi95High, 0, 'g', 3)
             : QString();
-    return tr("%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, "
+    return tr("%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, "
               "%10]) "
               "and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out "
               "from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); "
@@ -603,10 +626,10 @@ QString DiscoverPanel::evidenceText(const discovery::Finding& f) {
                .arg(f.trendPerHourBefore, 0, 'g', 3)
                .arg(causeDisplayName(f.cause))
                .arg(QString::fromUtf8(info.symbol.data(), static_cast<int>(info.symbol.size())))
-               .arg(f.value, 0, 'g', 4)
-               .arg(QString::fromUtf8(info.unit.data(), static_cast<int>(info.unit.size())))
-               .arg(f.ci95Low, 0, 'g', 3)
-               .arg(f.ci95High, 0, 'g', 3)
+               .arg(f.restated ? f.valueWhenNamed : f.value, 0, 'g', 4)
+               .arg(paramUnitSuffix(f.parameter))
+               .arg(f.restated ? f.ci95LowWhenNamed : f.ci95Low, 0, 'g', 3)
+               .arg(f.restated ? f.ci95HighWhenNamed : f.ci95High, 0, 'g', 3)
                .arg(g.maeMoistureBefore, 0, 'f', 3)
                .arg(g.maeMoistureAfter, 0, 'f', 3)
                .arg(g.maeTemperatureBefore, 0, 'f', 2)
@@ -675,26 +698,59 @@ void DiscoverPanel::show() {
         (extended ? tr(" The model is extended.") : QString()));
     m_verdict->setToolTip(tr("Discovery's verdict key: %1").arg(QString::fromStdString(d.verdict)));
     m_extend->setEnabled(!d.findings.empty() && !extended);
+    // Against a reference the z is the change of the cause's one-step estimate from its normal
+    // value; a timing cause's p may come from its own score test instead (marked *), which is
+    // why a small z can sit beside a small p.
+    m_ranking->horizontalHeaderItem(1)->setText(d.hasReference ? tr("Change z") : tr("Score z"));
+    m_ranking->horizontalHeaderItem(1)->setToolTip(
+        d.hasReference
+            ? tr("Change z: how far the cause's one-step estimate here lies from its normal value on "
+                 "the reference period, in units of both estimates' errors and the spread between "
+                 "the reference's periods; above 2 it moved.")
+            : tr("Score z: how strongly the model's error points at this cause, in standard "
+                 "deviations of chance; above about 3 is strong evidence."));
     m_ranking->setRowCount(static_cast<int>(d.ranking.size()));
     for (std::size_t i = 0; i < d.ranking.size(); ++i) {
         const auto& c = d.ranking[i];
         const QStringList cells{
-            causeDisplayName(c.cause), QString::number(c.score, 'f', 2), QString::number(c.pHolm, 'g', 3),
+            causeDisplayName(c.cause), QString::number(c.score, 'f', 2),
+            QString::number(c.pHolm, 'g', 3) + (c.pFromOwnScreen ? QStringLiteral(" *") : QString()),
             c.fitted ? tr("yes") : tr("no"),
             c.fitted
                 ? QStringLiteral("%1 → %2").arg(c.fitLossBefore, 0, 'g', 4).arg(c.fitLossAfter, 0, 'g', 4)
                 : QStringLiteral("–")};
         setTableRow(m_ranking, static_cast<int>(i), cells);
+        if (c.pFromOwnScreen) {
+            m_ranking->item(static_cast<int>(i), 2)
+                ->setToolTip(tr("* A timing cause: p is its own score test (how strongly the error points at "
+                                "it), smaller than its change test's; a lag's one-step estimate understates "
+                                "how far it moved, so the fit decides."));
+        }
     }
     fitTableWidth(m_ranking);
     QString html;
     for (const auto& f : d.findings) {
-        html += QStringLiteral("<h4>%1 = %2 [%3, %4]</h4><p>%5</p>")
-                    .arg(causeDisplayName(f.cause).toHtmlEscaped())
-                    .arg(f.value, 0, 'g', 4)
-                    .arg(f.ci95Low, 0, 'g', 4)
-                    .arg(f.ci95High, 0, 'g', 4)
-                    .arg((evidenceText(f) + QLatin1Char(' ') + specificityText(f)).toHtmlEscaped());
+        // The heading gives the final model's value (every named cause fitted jointly); the
+        // sentence, the gain and the parts describe the fit when the cause was named. Where the
+        // two differ, the heading says which is which.
+        const bool moved = f.restated && std::abs(f.value - f.valueWhenNamed) >
+                                             0.25 * (f.ci95HighWhenNamed - f.ci95LowWhenNamed);
+        const QString heading =
+            tr("%1 = %2%3, 95 % CI [%4, %5]")
+                .arg(causeDisplayName(f.cause))
+                .arg(f.value, 0, 'g', 4)
+                .arg(paramUnitSuffix(f.parameter))
+                .arg(f.ci95Low, 0, 'g', 4)
+                .arg(f.ci95High, 0, 'g', 4) +
+            (moved
+                 ? tr(" in the final model, fitted with every other named cause (%1%2 when it was named, as "
+                      "below)")
+                       .arg(f.valueWhenNamed, 0, 'g', 4)
+                       .arg(paramUnitSuffix(f.parameter))
+                 : QString());
+        html += QStringLiteral("<h4>%1</h4><p>%2</p>")
+                    .arg(heading.toHtmlEscaped(),
+                         (evidenceText(f) + QLatin1Char(' ') + specificityText(f)).toHtmlEscaped());
     }
     // What the error moves with: the strongest cross-correlations of the differenced residuals
     // with the differenced inputs and proxies (lags 0–300 s), as the analysis found them.

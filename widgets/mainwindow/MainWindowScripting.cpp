@@ -47,6 +47,10 @@ bool MainWindow::hasPendingActions() const {
 
 void MainWindow::openTrainingSession(const QString& sessionFile) {
     m_tabs->setCurrentWidget(m_training);
+    // The recording is the training session's own: the status line says so rather than "no data".
+    m_statusLabel->setText(tr("Training session %1 (its recording is on the Training tab; no data set is "
+                              "loaded for the other tabs)")
+                               .arg(QDir::toNativeSeparators(sessionFile)));
     m_training->openSession(sessionFile);
 }
 

@@ -201,11 +201,15 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     pages->addTab(clockPage, tr("Clock and snapshots"));
     auto* faultPage = new QWidget;
     auto* fl = new QGridLayout(faultPage);
-    fl->addWidget(m_faultKind, 0, 0, 1, 2);
-    fl->addWidget(m_faultStrength, 1, 0);
-    fl->addWidget(m_faultDelay, 1, 1);
-    fl->addWidget(m_inject, 0, 2, 2, 1);
-    fl->addWidget(m_faults, 2, 0, 1, 3);
+    // Each field says what it is: a bare number and unit left the instructor guessing.
+    fl->addWidget(new QLabel(tr("Fault")), 0, 0);
+    fl->addWidget(m_faultKind, 0, 1, 1, 2);
+    fl->addWidget(new QLabel(tr("Strength")), 1, 0);
+    fl->addWidget(m_faultStrength, 1, 1);
+    fl->addWidget(new QLabel(tr("Acts from")), 2, 0);
+    fl->addWidget(m_faultDelay, 2, 1);
+    fl->addWidget(m_inject, 1, 2, 2, 1);
+    fl->addWidget(m_faults, 3, 0, 1, 3);
     pages->addTab(faultPage, tr("Faults"));
     auto* filePage = new QWidget;
     auto* filesLayout = new QVBoxLayout(filePage);
@@ -261,7 +265,7 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_plots = new PlotStack;
     m_plots->addPlot(tr("X_out [% wb]"));
     m_plots->addPlot(tr("T_hot [°C]"));
-    m_plots->addPlot(tr("Feed [t/h]"));
+    m_plots->addPlot(tr("Feed [kg/h]")); // the unit of the batch files and the Data tab
     m_plots->addPlot(tr("X_in [% wb]"));
     m_plots->setXTitle(tr("session time [min]"));
     const QVector<double> none;
@@ -298,11 +302,11 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_monitorT2 = m_plots->addCurve(4, tr("T² of the model's error"), none, none, QColor(214, 39, 40),
                                     Qt::SolidLine, 1.3);
     // Before a session runs, each plot shows its quantity's usual range on the line, not 0–1000.
-    m_plots->setEmptyRange(0, 10, 16);   // X_out [% wb]
-    m_plots->setEmptyRange(1, 140, 200); // T_hot [°C]
-    m_plots->setEmptyRange(2, 5, 8);     // feed [t/h]
-    m_plots->setEmptyRange(3, 18, 26);   // X_in [% wb]
-    m_plots->setEmptyRange(4, 0.1, 100); // T² (log scale)
+    m_plots->setEmptyRange(0, 10, 16);     // X_out [% wb]
+    m_plots->setEmptyRange(1, 140, 200);   // T_hot [°C]
+    m_plots->setEmptyRange(2, 5000, 8000); // feed [kg/h]
+    m_plots->setEmptyRange(3, 18, 26);     // X_in [% wb]
+    m_plots->setEmptyRange(4, 0.1, 100);   // T² (log scale)
     m_plots->setEmptyXRange(0, kWindowS / 60.0);
     m_plots->setEmptyText(tr("Start a session to see the line run"));
     m_plots->setPlotEmptyText(4, tr("The monitor's T² shows once it has a minute of the model's error"));
@@ -579,7 +583,7 @@ void TrainingPanel::updateFaultUnit() {
     m_faultStrength->setRange(0, mi.maxStrength);
     m_faultStrength->setSingleStep(mi.maxStrength / 50);
     m_faultStrength->setValue(mi.defaultStrength * 2); // clearly visible to a trainee, still realistic
-    m_faultStrength->setSuffix(QStringLiteral(" ") + fromView(mi.unit));
+    m_faultStrength->setSuffix(unitSuffix(mi.unit));
     m_faultStrength->setToolTip(fromView(mi.strengthMeaning));
 }
 
@@ -636,11 +640,10 @@ void TrainingPanel::showFrame() {
                 found = tr("%1 s").arg(fs.timeToFindS, 0, 'f', 0);
             }
         }
-        setTableRow(
-            m_faults, static_cast<int>(i),
-            {mechanismLabel(fault.mechanism),
-             QStringLiteral("%1 %2").arg(fault.strength).arg(fromView(plant::info(fault.mechanism).unit)),
-             clockText(fault.onsetS), found});
+        setTableRow(m_faults, static_cast<int>(i),
+                    {mechanismLabel(fault.mechanism),
+                     QString::number(fault.strength) + unitSuffix(plant::info(fault.mechanism).unit),
+                     clockText(fault.onsetS), found});
     }
     fitTableWidth(m_faults);
     m_score->setText(
@@ -694,7 +697,7 @@ void TrainingPanel::redrawPlots() {
         lo << s.setpointPct - f.bandPct;
         hsp << s.hotAirSetpointC;
         h << s.hotAirC;
-        feed << s.feedKgH / 1000.0;
+        feed << s.feedKgH;
         xin << s.xInPct;
     }
     m_xMeasured->setSamples(t, xm);

@@ -15,6 +15,7 @@
 #include "plant/PlantExport.h"
 #include "workflow/session/SessionInternal.h"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace drytwin::workflow {
@@ -86,6 +87,7 @@ Expected<OpenResult> Session::open(const OpenOptions& options, const Progress& p
         result.summary = data::summarize(*dataSet, options.cleaning);
     }
     if (model) {
+        result.modelNotes = model->readNotes;
         m_model = std::move(*model);
         result.modelLoaded = true;
     }
@@ -153,6 +155,31 @@ Expected<data::PlantFileRuns> Session::previewRuns(const std::string& path,
     return data::parsePlantText(*text, path, o);
 }
 
+namespace {
+
+/// The CSV files in @p folder other than the B01.csv ... B<n>.csv a generate of @p batches writes.
+std::vector<std::string> batchFilesNotWritten(const std::string& folder, int batches) {
+    std::vector<std::string> out;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+        const auto name = entry.path().filename().string();
+        if (entry.path().extension() != ".csv") {
+            continue;
+        }
+        bool written = false;
+        for (int b = 1; b <= batches && !written; ++b) {
+            written = name == plant::batchId(b) + ".csv";
+        }
+        if (!written) {
+            out.push_back(name);
+        }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+} // namespace
+
 Expected<GenerateResult> Session::generate(const GenerateOptions& options, const Progress& progress) const {
     const auto t0 = std::chrono::steady_clock::now();
     if (auto st = options.validate(); !st) {
@@ -162,6 +189,21 @@ Expected<GenerateResult> Session::generate(const GenerateOptions& options, const
     std::filesystem::create_directories(options.outFolder, ec);
     if (ec) {
         return Error{ErrorKind::BadInput, options.outFolder, "cannot create the folder: " + ec.message()};
+    }
+    // Batch files this run would not overwrite (an earlier, larger data set) would be read with
+    // the new ones as one mixed data set: refused before anything is written, nothing deleted.
+    if (auto stale = batchFilesNotWritten(options.outFolder, options.plant.batches); !stale.empty()) {
+        std::string names;
+        for (std::size_t i = 0; i < stale.size() && i < 5; ++i) {
+            names += (i ? ", " : "") + stale[i];
+        }
+        if (stale.size() > 5) {
+            names += ", ... (" + std::to_string(stale.size()) + " in all)";
+        }
+        return Error{ErrorKind::Usage, options.outFolder,
+                     "the folder already holds batch files that this run would not overwrite (" + names +
+                         "): they would be read with the new batches as one data set; choose an empty "
+                         "folder or remove them"};
     }
     auto plantResult = plant::runPlant(options.plant, progress);
     if (!plantResult) {

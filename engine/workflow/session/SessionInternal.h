@@ -19,7 +19,10 @@ template <class Options> Status Session::ready(const Options& options, const std
     if (auto st = options.validate(); !st) {
         return st;
     }
-    return requireData(action);
+    if (auto st = requireData(action); !st) {
+        return st;
+    }
+    return requireUsableRows(action);
 }
 
 } // namespace drytwin::workflow

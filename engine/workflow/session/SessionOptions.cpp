@@ -23,6 +23,16 @@ Status GenerateOptions::validate() const {
     if (auto st = plant.validate(); !st) {
         return invalidOption(st.error().place, st.error().reason);
     }
+    // A batch file holds `samples` rows 1 s apart: an onset at or after its end would write a
+    // truth file claiming an effect that no row shows.
+    for (const auto& [m, onset] : plant.effectOnsetS) {
+        if (onset >= plant.samples) {
+            return invalidOption("onset " + std::string(plant::info(m).name),
+                                 "at " + std::to_string(static_cast<long long>(onset)) +
+                                     " s it lies after each batch's end (" + std::to_string(plant.samples) +
+                                     " samples, 1 s apart): no row would show the mechanism");
+        }
+    }
     return {};
 }
 

@@ -131,6 +131,9 @@ private Q_SLOTS:
         const auto r = judge(plantData(43, {{Mechanism::MoistureMeterOffset, 0.4}}));
         QVERIFY2(namesFirst(r, "moisture_meter_offset"), qPrintable(story(r)));
         QVERIFY2(r.detection.drytwinChanged, qPrintable(story(r)));
+        // A named cause is a change the headline states, whatever the detectors said.
+        QVERIFY(r.detection.namedChange && r.detection.lineChanged());
+        QCOMPARE(r.detection.namedCauses.front(), std::string("moisture_meter_offset"));
     }
 
     /// Healthy data of another seed against the healthy reference: nothing changed, nothing named.
@@ -139,6 +142,7 @@ private Q_SLOTS:
         QVERIFY2(!r.detection.changed, qPrintable(story(r)));
         QVERIFY2(r.findings.empty(), qPrintable(story(r)));
         QCOMPARE(r.verdict, std::string("no_structural_cause"));
+        QVERIFY(!r.detection.namedChange && !r.detection.lineChanged());
     }
 
     /// A change from mid-batch: the detector's onset lies in its own interval and near the truth.

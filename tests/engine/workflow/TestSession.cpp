@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 using namespace drytwin;
 using properties::Param;
@@ -77,6 +78,90 @@ private Q_SLOTS:
             QCOMPARE(exitCodeFor(e.kind), 2);
         }
         QCOMPARE(s.open({}).error().code, ErrorCode::InvalidOption);
+    }
+
+    // generate never leaves a mixed data set: batch files it would not overwrite are refused, before
+    // anything is written; an onset after the batches' end is refused; the truth names each onset.
+    void generateRefusesStaleBatchesAndLateOnsets() {
+        QTemporaryDir dir;
+        workflow::GenerateOptions g;
+        g.plant.batches = 3;
+        g.plant.samples = 300;
+        g.outFolder = dir.filePath("set").toStdString();
+        QVERIFY(workflow::Session().generate(g).ok());
+        const auto b02 = std::filesystem::last_write_time(std::filesystem::path(g.outFolder) / "B02.csv");
+        g.plant.batches = 1;
+        g.plant.seed = 2;
+        auto smaller = workflow::Session().generate(g);
+        QVERIFY(!smaller.ok());
+        QCOMPARE(exitCodeFor(smaller.error().kind), 2);
+        QVERIFY(smaller.error().reason.find("B02.csv, B03.csv") != std::string::npos);
+        QVERIFY(std::filesystem::last_write_time(std::filesystem::path(g.outFolder) / "B02.csv") == b02);
+        g.plant.batches = 3; // the same files: overwritten (an interrupted run repeated)
+        QVERIFY(workflow::Session().generate(g).ok());
+
+        workflow::GenerateOptions late;
+        late.plant.batches = 1;
+        late.plant.samples = 300;
+        late.plant.effects[plant::Mechanism::MoistureMeterOffset] = 0.8;
+        late.plant.effectOnsetS[plant::Mechanism::MoistureMeterOffset] = 300;
+        late.outFolder = dir.filePath("late").toStdString();
+        late.truthPath = dir.filePath("late.json").toStdString();
+        auto refused = workflow::Session().generate(late);
+        QVERIFY(!refused.ok());
+        QVERIFY(refused.error().reason.find("after each batch's end") != std::string::npos);
+        late.plant.effectOnsetS[plant::Mechanism::MoistureMeterOffset] = 120;
+        QVERIFY(workflow::Session().generate(late).ok());
+        std::ifstream in(late.truthPath);
+        const auto truth = nlohmann::json::parse(in);
+        QCOMPARE(truth.at("effect_onsets_s").at("moisture_meter_offset").get<double>(), 120.0);
+    }
+
+    // A column with no value at all is named where it is read, and an action on data that keep no
+    // row says why instead of a bare "0 usable rows".
+    void anEmptyColumnIsNamedAndStopsTheActionsWithItsName() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("B01.csv");
+        {
+            std::ifstream in(m_data.toStdString() + "/B01.csv");
+            std::ofstream out(path.toStdString());
+            std::string line;
+            int xIn = -1;
+            while (std::getline(in, line)) {
+                if (line.rfind('#', 0) == 0) {
+                    out << line << '\n';
+                    continue;
+                }
+                std::vector<std::string> cells;
+                std::stringstream ss(line);
+                for (std::string c; std::getline(ss, c, ',');) {
+                    cells.push_back(c);
+                }
+                if (xIn < 0) {
+                    xIn = static_cast<int>(std::find(cells.begin(), cells.end(), "X_in_pct") - cells.begin());
+                } else {
+                    cells.at(static_cast<std::size_t>(xIn)) = "NaN";
+                }
+                for (std::size_t i = 0; i < cells.size(); ++i) {
+                    out << (i ? "," : "") << cells[i];
+                }
+                out << '\n';
+            }
+        }
+        workflow::Session s;
+        workflow::OpenOptions o;
+        o.dataPath = path.toStdString();
+        auto opened = s.open(o);
+        QVERIFY(opened.ok());
+        const auto& notes = opened->summary.notes;
+        QVERIFY(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
+            return n.find("column 'X_in_pct' holds no value in any of its 1500 rows") != std::string::npos;
+        }));
+        auto cal = s.calibrate(quickCalibration());
+        QVERIFY(!cal.ok());
+        QCOMPARE(exitCodeFor(cal.error().kind), 3);
+        QVERIFY2(cal.error().reason.find("X_in_pct") != std::string::npos, cal.error().reason.c_str());
+        QVERIFY(s.inspect().ok()); // inspect still shows what was loaded
     }
 
     void rejectedLoadChangesNothing() {
