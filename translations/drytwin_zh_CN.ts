@@ -1681,7 +1681,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="137"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="138"/>
         <source>Extend the model</source>
         <translation>扩展模型</translation>
     </message>
@@ -1702,7 +1702,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="701"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="704"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
@@ -1723,7 +1723,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="42"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="706"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="710"/>
         <source>Score z: how strongly the model&apos;s error points at this cause, in standard deviations of chance; above about 3 is strong evidence.</source>
         <translation>得分 z：模型误差指向该原因的强度，以偶然波动的标准差计；约 3 以上为有力证据。</translation>
     </message>
@@ -1743,7 +1743,7 @@
         <translation>损失：模型加入该原因后拟合的误差；越低拟合越好。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="50"/>
         <source>The held-out part: batches the fit did not see.</source>
         <translation>留出部分：拟合时未使用的批次。</translation>
     </message>
@@ -1768,123 +1768,123 @@
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="50"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="51"/>
         <source>Before: the starting model (as commissioned, or calibrated).</source>
         <translation>之前：起始模型（调试所得或标定后的模型）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="51"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
         <source>After: the extended model, every named cause fitted together (a finding&apos;s own sentence gives the gain when that cause was named).</source>
         <translation>之后：扩展后的模型，所有已识别原因一起拟合（各项发现的文字给出识别该原因时的改进）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="55"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="56"/>
         <source>X_out residual [% wb]</source>
         <translation>X_out 残差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="56"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="57"/>
         <source>T_out residual [°C]</source>
         <translation>T_out 残差 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="57"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="91"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="58"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="92"/>
         <source>time, batches one after another [h]</source>
         <translation>时间，批次首尾相接 [h]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="60"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="61"/>
         <source>Compare with a reference period…</source>
         <translation>与参考期比较…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="62"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="63"/>
         <source>Choose batches from a time when the line ran as it should (the weeks after a cleaning, commissioning runs): Discover then says whether, from when and why the loaded data differ</source>
         <translation>选择产线正常运行时期的批次（清洗后的几周、调试运行）：发现功能将说明已加载的数据是否、从何时起以及为何与之不同</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="65"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="66"/>
         <source>A folder of batch files…</source>
         <translation>批次文件所在的文件夹…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="67"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="68"/>
         <source>Reference period: a folder of batch files</source>
         <translation>参考期：批次文件所在的文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="72"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="73"/>
         <source>One batch or historian file…</source>
         <translation>单个批次或历史库文件…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="74"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="75"/>
         <source>Reference period: a batch or historian file</source>
         <translation>参考期：批次或历史库文件</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="75"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="76"/>
         <source>CSV files (*.csv *.txt)</source>
         <translation>CSV 文件 (*.csv *.txt)</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="80"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="81"/>
         <source>No reference: judge the data alone</source>
         <translation>不用参考期：单独判断数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="89"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
         <source>T² [-]</source>
         <translation>T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="91"/>
         <source>SPE [-]</source>
         <translation>SPE [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="94"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
         <source>Choose a reference period and run Discover to see the monitor</source>
         <translation>选择参考期并运行“发现”以查看监控图</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
         <source>Column</source>
         <translation>列</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
         <source>Share of the change</source>
         <translation>在变化中的占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
         <source>Detector</source>
         <translation>检测器</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="98"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="99"/>
         <source>How much each column contributes to the monitor&apos;s statistic after the onset (reconstruction-based contributions: the column that, put back to normal, removes most of it)</source>
         <translation>起始点之后各列对监控统计量的贡献（基于重构的贡献：将该列恢复正常后消除的部分最多者）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="105"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="106"/>
         <source>Model error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="106"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="107"/>
         <source>Monitor against the reference</source>
         <translation>相对参考期的监控</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="118"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="119"/>
         <source>Candidate causes, first round:</source>
         <translation>候选原因（第一轮）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="120"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="121"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -1893,42 +1893,42 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="695"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="698"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="152"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="153"/>
         <source>Run Discover to see the physics model&apos;s error over the batches</source>
         <translation>运行发现，可看到物理模型在各批次上的误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="159"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="160"/>
         <source>No reference period: the data are judged alone.</source>
         <translation>无参考期：单独判断数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="160"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="161"/>
         <source>Reference period: %1</source>
         <translation>参考期：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="180"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="181"/>
         <source>%1: &lt;b&gt;changed&lt;/b&gt; (p = %2)</source>
         <translation>%1：&lt;b&gt;已变化&lt;/b&gt;（p = %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="181"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="182"/>
         <source>%1: no change (p = %2)</source>
         <translation>%1：无变化（p = %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="183"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="184"/>
         <source>, first alarm in %1 at %2 min</source>
         <translation>，首次报警于 %1 第 %2 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="188"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="189"/>
         <source>, from %1 at %2 min (95 %: %3 to %4 min)</source>
         <translation>，自 %1 第 %2 分钟起（95 %：%3 至 %4 分钟）</translation>
     </message>
@@ -1941,50 +1941,50 @@
         <translation>DryTwin（各原因的参数）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="220"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="221"/>
         <source>&lt;b&gt;The line has changed since the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;自参考期以来产线已发生变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="226"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="228"/>
         <source>&lt;b&gt;No change against the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;与参考期相比无变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="227"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="229"/>
         <source> Each detector&apos;s false-alarm rate: %1 % per data set.</source>
         <translation> 每个检测器的误报率：每个数据集 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="228"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="230"/>
         <source>DryTwin (the model&apos;s error)</source>
         <translation>DryTwin（模型误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="230"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="232"/>
         <source>Dynamic PCA (the measured columns)</source>
         <translation>动态 PCA（测量列）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="255"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="271"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="257"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="273"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="255"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="271"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="257"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="273"/>
         <source>dynamic PCA</source>
         <translation>动态 PCA</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="257"/>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="259"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="261"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="301"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="303"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
@@ -1997,67 +1997,67 @@
         <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="310"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="313"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="314"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="317"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="317"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="320"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="319"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="322"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="323"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="326"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="327"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="330"/>
         <source>a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less</source>
         <translation>干燥管出口与出口水分有相同的稳定偏差，干燥管干燥越少处越大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="330"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="333"/>
         <source>after each hot-air setpoint step the outlet temperature and moisture move before the simulation, which follows the slow reading</source>
         <translation>每次热风设定值阶跃后，出口温度和水分先于仿真变化，仿真跟随的是迟缓的读数</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="333"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="336"/>
         <source>the inlet-moisture reading scatters from second to second while the outlet does not follow it, and the simulated outlet does</source>
         <translation>入口水分读数逐秒跳动，出口并不跟随，而仿真的出口却跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="343"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="346"/>
         <source>a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet temperature&apos;s response as much as the moisture&apos;s, a meter lag delays the moisture reading alone; or grab samples timed against the meter</source>
         <translation>以 1 s 记录一次热风设定值阶跃：输送时间误差使出口温度与水分的响应同样延迟，水分仪滞后只延迟水分读数；或对照水分仪定时取样</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="350"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="353"/>
         <source>oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter offset does not</source>
         <translation>在出口对照水分仪、在入口对照入口水分计做烘箱法实验室取样；或增加干燥管出口水分通道（X_hdt）：入口水分计偏差会使其变化，出口水分仪偏差不会</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="357"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="360"/>
         <source>a gas-temperature reading at the tube&apos;s outlet end at two feed rates: wall loss does not change with the feed, gas-phase cooling grows with it</source>
         <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="367"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="370"/>
         <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
         <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="370"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
         <source>its size is not consistent across batches or operating regions</source>
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
@@ -2066,62 +2066,62 @@
         <translation type="vanished">偏差在整个批次中读数不变；此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="378"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="381"/>
         <source>its value lies within the reference period&apos;s normal range: not a change</source>
         <translation>其值在参考期的正常范围内：不是变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="381"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="384"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="384"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="387"/>
         <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
         <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="388"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="391"/>
         <source>the outlet channels&apos; timing points to its look-alike (the moisture answers later than the temperature: a meter, not the transport)</source>
         <translation>出口两个通道的时序指向它的相似原因（水分比温度响应更晚：是水分仪，而非输送）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="393"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="396"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="396"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="399"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="413"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="416"/>
         <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
         <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="418"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="421"/>
         <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
         <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="421"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="424"/>
         <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
         <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="426"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="429"/>
         <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
         <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="432"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="435"/>
         <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="463"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="466"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
@@ -2130,132 +2130,132 @@
         <translation type="vanished">误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="478"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="481"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="483"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="486"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="495"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="498"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="502"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="505"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="517"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="520"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="522"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="525"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="522"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="525"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="525"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="528"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="529"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="532"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="547"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="550"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="553"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="556"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="536"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="539"/>
         <source>%1 was named on top of it (a further %2 % of the held-out error): alone it predicts worse (%3 times the held-out error), but the change needs both forms, so the data cannot say which of them it is.</source>
         <translation>在它之上又判定了 %1（再减少留出误差的 %2 %）：单独使用时预测更差（留出误差的 %3 倍），但这一变化需要两种形式共同解释，因此数据无法判断是其中哪一个。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="199"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="200"/>
         <source>DryTwin (the causes&apos; one-step estimates): &lt;b&gt;changed&lt;/b&gt; (p = %1): %2 moved beyond its normal spread</source>
         <translation>DryTwin（各原因的一步估计）：&lt;b&gt;已变化&lt;/b&gt;（p = %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="203"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="204"/>
         <source>DryTwin (the causes&apos; one-step estimates): none moved beyond its normal spread (p = %1)</source>
         <translation>DryTwin（各原因的一步估计）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="222"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="223"/>
         <source>&lt;b&gt;A cause has changed since the reference period: %1.&lt;/b&gt; The detectors, judging the data set as a whole, stayed below their limits; fitting the causes found it beyond its normal spread with a gain on held-out data (below). Check it on the plots.</source>
         <translation>&lt;b&gt;自参考期以来有一个原因发生了变化：%1。&lt;/b&gt;检测器对整个数据集的判断未超出其限值；拟合各原因发现它超出正常范围，且在留出数据上有改进（见下）。请在图上核对。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="307"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="309"/>
         <source>the error drifts over each batch, or over the recording from the fouling&apos;s onset, and starts afresh with each new batch</source>
         <translation>误差在每个批次内（或在记录中自结垢开始起）逐渐漂移，每个新批次重新开始</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="566"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="569"/>
         <source>%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts %4 better; which output a cause favours is the model&apos;s structure, so the data cannot tell them apart.</source>
         <translation>%1 同样拟合：总体上它留下 %2 倍的留出误差（p = %3），但它对%4的预测更好；原因偏向哪个输出取决于模型自身的结构，因此数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="572"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="575"/>
         <source>the outlet moisture</source>
         <translation>出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="573"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="576"/>
         <source>the outlet temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="574"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="577"/>
         <source>the tube-outlet moisture</source>
         <translation>管出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="575"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="578"/>
         <source>the tube-outlet temperature</source>
         <translation>管出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="579"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="582"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="580"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="583"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="587"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="590"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="599"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="602"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="603"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="606"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -2264,27 +2264,27 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="620"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="623"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="620"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="623"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="661"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="664"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="662"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="665"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="679"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="682"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2301,12 +2301,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="714"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="718"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="714"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="718"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2315,37 +2315,37 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="759"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="764"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="762"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="767"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="770"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="775"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="492"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="495"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="604"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="607"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="605"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="608"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="609"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="612"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
@@ -2354,107 +2354,107 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="682"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="685"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="692"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="695"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="217"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="693"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="218"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="696"/>
         <source>, </source>
         <translation>、</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="615"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="618"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="696"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="699"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="780"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="785"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="796"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="801"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="801"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="810"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="808"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="817"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="813"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="822"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="821"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="830"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="831"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="840"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="594"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="832"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="850"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="597"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="841"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="859"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="833"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="842"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="594"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="834"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="854"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="597"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="843"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="863"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="304"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="306"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed rate and by inlet moisture)</source>
         <translation>误差随进料量和入口水分增大（按进料量和按入口水分分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="376"/>
         <source>it does not change within a batch (an offset, the tube&apos;s wall or gas phase), but this error grows or shrinks within the batch (fouling, a drifting reading)</source>
         <translation>它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="446"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="449"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="450"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="453"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the model&apos;s error there is judged beyond the reference&apos;s conditions, and an alarm there may be that condition rather than a change of the line.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="468"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="471"/>
         <source>the error follows %1 %2 s later (correlation %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（相关系数 %3）</translation>
     </message>
@@ -2463,87 +2463,92 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="647"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="650"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="701"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="704"/>
         <source>Change z</source>
         <translation>变化 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="703"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="707"/>
         <source>Change z: how far the cause&apos;s one-step estimate here lies from its normal value on the reference period, in units of both estimates&apos; errors and the spread between the reference&apos;s periods; above 2 it moved.</source>
         <translation>变化 z：该原因在此处的一步估计与其在参考期的正常值相差多远，以两次估计的误差及参考期各时段间的离散为单位；大于 2 即为发生了变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="721"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="725"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="735"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="739"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="741"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="746"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="755"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="760"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="835"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="805"/>
+        <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="844"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="836"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="845"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="849"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="858"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="849"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="858"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="850"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="859"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="853"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="862"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="853"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="862"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="854"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="863"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="878"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="887"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="879"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="888"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -4515,32 +4520,32 @@ extrapolation</source>
         <translation>会话文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="663"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="662"/>
         <source>Line monitor unavailable: %1</source>
         <translation>产线监控不可用：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="665"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="664"/>
         <source>Line monitor: normal (as on its commissioning runs).</source>
         <translation>产线监控：正常（与调试运行一致）。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="670"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="669"/>
         <source>the model&apos;s error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="670"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="669"/>
         <source>the screens&apos; signals (PCA)</source>
         <translation>画面信号（PCA）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="673"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="672"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal; the change began at about %3. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态；变化约始于 %3。请诊断记录以确定原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="676"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="675"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态。请诊断记录以确定原因。</translation>
     </message>
@@ -4728,7 +4733,7 @@ extrapolation</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="651"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="650"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>

@@ -8,6 +8,7 @@ import re
 import sys
 
 ZH = {
+    "<p>The patterns left in the error below are within what the reference period shows: the data did not change against it.</p>": "<p>下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。</p>",
     "Before: the starting model (as commissioned, or calibrated).": "之前：起始模型（调试所得或标定后的模型）。",
     "After: the extended model, every named cause fitted together (a finding's own sentence gives the gain when that cause was named).": "之后：扩展后的模型，所有已识别原因一起拟合（各项发现的文字给出识别该原因时的改进）。",
     "DryTwin (the causes' one-step estimates): <b>changed</b> (p = %1): %2 moved beyond its normal spread": "DryTwin（各原因的一步估计）：<b>已变化</b>（p = %1）：%2 超出其正常范围",

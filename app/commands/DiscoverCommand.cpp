@@ -190,6 +190,12 @@ int runDiscover(const CommandOptions& o) {
                         std::string(info.unit).c_str());
         }
     }
+    // Against a reference where nothing changed, a pattern left in the error is the line's as it
+    // was on the reference too: said, so that it is not read as a finding beside "no change".
+    if (d.hasReference && !d.detection.lineChanged() && !d.unexplained.empty()) {
+        std::printf("\nPatterns left in the error below: the data did not change against the reference, so "
+                    "they are within what the reference period shows, not a change.");
+    }
     for (const auto& s : d.unexplained) {
         std::printf("\nUnexplained (%s): %s", s.output.c_str(), s.type.c_str());
         if (s.type == "periodic") {

@@ -105,6 +105,24 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(AblationRow, variant, descriptio
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(AblationResult, rows, multiStepHorizon, regimeSplit, ending)
 } // namespace hybrid
 
+namespace monitoring {
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Contribution, column, speShare, t2Share,
+                                                speReconstructionShare, t2ReconstructionShare)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(MonitorLimits, t2Theoretical, speTheoretical, t2Empirical,
+                                                speEmpirical, t2Window, speWindow)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(WindowPoint, run, runIndex, timeS, t2, spe, t2Limit, speLimit,
+                                                zT2, zSpe, cusumT2, cusumSpe, alarm)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(StatisticJudgement, changed, pValue, glr, glrThreshold,
+                                                cusumThreshold, firstAlarmWindow, onsetWindow, onsetLowWindow,
+                                                onsetHighWindow)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Detection, changed, pValue, statistic, falseAlarmRate,
+                                                hasFirstAlarm, firstAlarmRun, firstAlarmTimeS,
+                                                firstAlarmWindow, hasOnset, onsetRun, onsetS, onsetLowS,
+                                                onsetHighS, onsetWindow, onsetLowWindow, onsetHighWindow,
+                                                contributions, series, runStarts, levelNotJudged, t2, spe,
+                                                limits, components, varianceExplainedActual, ending)
+} // namespace monitoring
+
 namespace discovery {
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(OutputResidual::BatchBias, batch, mean, se)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(OutputResidual::Correlate, column, lagS, ccf, significant)
@@ -127,13 +145,18 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(PartEstimate, part, value, se)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(LookAlike, cause, parameter, value, heldOutLossRatio, pValue,
                                                 ruledOut, byChannels, moistureDelayS, temperatureDelayS,
                                                 worseOutput, namedAfter, explainedAfter)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Finding, cause, parameter, value, ci95Low, ci95High,
-                                                explainedFraction, explainedFractionFast, fastPartCounted,
-                                                output, biasBefore, trendPerHourBefore, evidence, gain,
-                                                perPart, consistent, transferChecked, transferReduction,
-                                                hasOnset, onsetS, onsetLowS, onsetHighS, group, lookAlikes,
-                                                tellApart, restated, valueWhenNamed, ci95LowWhenNamed,
-                                                ci95HighWhenNamed)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(
+    Finding, cause, parameter, value, ci95Low, ci95High, explainedFraction, explainedFractionFast,
+    fastPartCounted, output, biasBefore, trendPerHourBefore, evidence, gain, perPart, consistent,
+    transferChecked, transferReduction, hasOnset, onsetS, onsetLowS, onsetHighS, group, lookAlikes, tellApart,
+    restated, valueWhenNamed, ci95LowWhenNamed, ci95HighWhenNamed, hasReference, referenceValue,
+    referenceCi95Low, referenceCi95High, responseJudged, responseScale)
+// A result judged against a reference comes back with its detection and reference values, so that
+// a reopened project shows the headline, the monitor chart and each finding's change as they were.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(ChangeDetection::CauseTest, changed, pValue, cause)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(ChangeDetection, changed, falseAlarmRate, decidedBy,
+                                                drytwinChanged, causeTest, namedChange, namedCauses, drytwin,
+                                                pca, drytwinColumns, pcaColumns)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Signature, type, output, periodS, column, lagS, batches,
                                                 strength)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Round::Rejection, cause, code, reason)
@@ -142,7 +165,9 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Round, candidates, best, heldOut
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Bound, cause, parameter, estimate, ci95Low, ci95High)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(DiscoveryResult, verdict, residuals, residualsAfter, ranking,
                                                 rounds, findings, unexplained, bounds, baseParameters,
-                                                parameters, trainingRows, heldOutRows, notes, ending)
+                                                parameters, trainingRows, heldOutRows, notes, hasReference,
+                                                referencePath, referenceBatches, referenceRows, detection,
+                                                ending)
 } // namespace discovery
 
 namespace control {

@@ -801,6 +801,10 @@ void DiscoverPanel::show() {
         html += tr("<p><b>Not named</b>; what the data allow (95 %): %1</p>")
                     .arg(items.join(QStringLiteral("; ")));
     }
+    if (d.hasReference && !d.detection.lineChanged() && !d.unexplained.empty()) {
+        html += tr("<p>The patterns left in the error below are within what the reference period shows: the "
+                   "data did not change against it.</p>");
+    }
     for (const auto& u : d.unexplained) {
         if (u.type == "dynamics") {
             html += tr("<p><b>Unexplained</b> (%1): the error follows the simulated rate of change (a lag of "

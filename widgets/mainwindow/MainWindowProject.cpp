@@ -70,24 +70,24 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
     o[QStringLiteral("format")] = QStringLiteral("drytwin-project");
     o[QStringLiteral("format_version")] = 1;
     const QDir base = QFileInfo(path).absoluteDir();
-    o[QStringLiteral("data_path")] =
-        m_workbench.dataPath().isEmpty() ? QString() : base.relativeFilePath(m_workbench.dataPath());
-    o[QStringLiteral("model_path")] = base.relativeFilePath(modelPath);
-    o[QStringLiteral("mapping_path")] =
-        m_workbench.mappingPath().isEmpty() ? QString() : base.relativeFilePath(m_workbench.mappingPath());
+    // Paths relative to the project file, which reopening resolves against its folder: a path
+    // given relative to the working directory (`drytwin --data lag`) is made absolute first, or a
+    // project saved elsewhere would look for "lag" beside itself.
+    const auto fromProject = [&base](const QString& p) {
+        return p.isEmpty() ? QString() : base.relativeFilePath(QFileInfo(p).absoluteFilePath());
+    };
+    o[QStringLiteral("data_path")] = fromProject(m_workbench.dataPath());
+    o[QStringLiteral("model_path")] = fromProject(modelPath);
+    o[QStringLiteral("mapping_path")] = fromProject(m_workbench.mappingPath());
     // The reference period discovery compares with: the project remembers it (issue #41).
-    o[QStringLiteral("reference_path")] = m_workbench.referencePath().isEmpty()
-                                              ? QString()
-                                              : base.relativeFilePath(m_workbench.referencePath());
+    o[QStringLiteral("reference_path")] = fromProject(m_workbench.referencePath());
     // Every data set opened in the window (a historian export with its mapping, a training
     // recording beside the plant's data), so that a reopened project can switch to them again.
     QJsonArray dataSets;
     for (const auto& e : m_workbench.dataSets()) {
-        dataSets.append(
-            QJsonObject{{QStringLiteral("path"), base.relativeFilePath(e.path)},
-                        {QStringLiteral("mapping_path"),
-                         e.mappingPath.isEmpty() ? QString() : base.relativeFilePath(e.mappingPath)},
-                        {QStringLiteral("label"), e.label}});
+        dataSets.append(QJsonObject{{QStringLiteral("path"), fromProject(e.path)},
+                                    {QStringLiteral("mapping_path"), fromProject(e.mappingPath)},
+                                    {QStringLiteral("label"), e.label}});
     }
     o[QStringLiteral("data_sets")] = dataSets;
     o[QStringLiteral("tab")] = QString::fromLatin1(kTabKeys[std::max(0, m_tabs->currentIndex())]);
@@ -96,7 +96,7 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
         batches.append(r.row());
     }
     o[QStringLiteral("selected_batches")] = batches;
-    o[QStringLiteral("results_path")] = base.relativeFilePath(resultsPath);
+    o[QStringLiteral("results_path")] = fromProject(resultsPath);
     QJsonArray parts;
     for (const auto& part : m_workbench.learntParts()) {
         parts.append(

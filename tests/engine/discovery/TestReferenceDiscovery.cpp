@@ -4,6 +4,8 @@
 #include "discovery/Discovery.h"
 #include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
+#include "workflow/ResultArchive.h"
+#include "workflow/Session.h"
 
 #include <QtTest>
 #include <algorithm>
@@ -134,6 +136,22 @@ private Q_SLOTS:
         // A named cause is a change the headline states, whatever the detectors said.
         QVERIFY(r.detection.namedChange && r.detection.lineChanged());
         QCOMPARE(r.detection.namedCauses.front(), std::string("moisture_meter_offset"));
+        // A project keeps it as judged: the reference, the detection with its chart, each finding's
+        // change (a reopened project showed "refitted" and no headline before).
+        workflow::LatestResults latest;
+        latest.discover = workflow::DiscoverResult{};
+        latest.discover->discovery = r;
+        const std::string text = workflow::latestResultsJson(latest);
+        auto back = workflow::parseLatestResults(text, "p.drytwin.results.json");
+        QVERIFY2(back.ok(), back ? "" : back.error().message().c_str());
+        const auto& b = back->discover->discovery;
+        QVERIFY(b.hasReference && b.detection.namedChange && b.detection.drytwinChanged);
+        QCOMPARE(b.referenceBatches, r.referenceBatches);
+        QCOMPARE(b.detection.drytwin.series.size(), r.detection.drytwin.series.size());
+        QVERIFY(!b.detection.drytwin.series.empty());
+        QVERIFY(b.findings.front().hasReference);
+        QCOMPARE(b.findings.front().referenceValue, r.findings.front().referenceValue);
+        QCOMPARE(workflow::latestResultsJson(*back), text);
     }
 
     /// Healthy data of another seed against the healthy reference: nothing changed, nothing named.
