@@ -250,8 +250,9 @@ int main(int argc, char** argv) {
             discoveryOptions.pointSpreadOnceDetected = false;
         } else if (a == "--share-of-whole") { // against a reference: the floor of the whole error only
             discoveryOptions.shareOfChangeOnceDetected = false;
-        } else if (a == "--structure-within-range") { // against a reference: the ridge held within its range
-            discoveryOptions.lineStructureWithinReferenceRange = true;
+        } else if (a ==
+                   "--structure-extrapolates") { // against a reference: the ridge beyond its range, as before
+            discoveryOptions.lineStructureWithinReferenceRange = false;
         } else if (a == "--no-structure") { // against a reference: the causes' normal values alone
             discoveryOptions.learnLineStructure = false;
         } else if (a == "--mechanism" && !next.empty()) {
@@ -282,7 +283,7 @@ int main(int argc, char** argv) {
                          "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
                          "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
                          "[--evaluations N] [--oracle] [--reference] [--no-structure] "
-                         "[--structure-within-range] [--size-rule] [--spread-bound] [--share-of-whole] "
+                         "[--structure-extrapolates] [--size-rule] [--spread-bound] [--share-of-whole] "
                          "[--no-constancy] [--look-alike-overall]\n");
             return 2;
         }
