@@ -1,5 +1,7 @@
 #include "data/MappingGuess.h"
 
+#include "data/historian/NarrowLayout.h"
+
 #include "data/historian/CsvLines.h"
 #include "data/historian/NumberFormat.h"
 #include "data/historian/PlaceInFile.h"
@@ -141,7 +143,13 @@ Expected<MappingGuess> guessMapping(const std::string& raw, const std::string& f
     if (!decoded) {
         return decoded.error();
     }
-    const std::string& text = decoded->text(raw);
+    // A tag/value export is guessed on the table it stands for: its tags are the headers.
+    auto narrow =
+        historian::pivotNarrowExport(decoded->text(raw), file, RunSplitOptions{}.maxInterpolatedGapS);
+    if (!narrow) {
+        return narrow.error();
+    }
+    const std::string& text = *narrow ? (*narrow)->wideText : decoded->text(raw);
     auto shape = sniffPlantText(text, file, {});
     if (!shape) {
         return shape.error();

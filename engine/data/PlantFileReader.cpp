@@ -7,6 +7,7 @@
 #include "common/AtomicFile.h"
 #include "data/historian/ClockSteps.h"
 #include "data/historian/CsvLines.h"
+#include "data/historian/NarrowLayout.h"
 #include "data/historian/NumberFormat.h"
 #include "data/historian/PlaceInFile.h"
 #include "data/historian/RunSegmentation.h"
@@ -204,9 +205,19 @@ Expected<PlantFileRuns> parsePlantText(const std::string& raw, const std::string
     if (!decoded) {
         return decoded.error();
     }
-    const std::string& text = decoded->text(raw);
     PlantFileRuns result;
     result.notes = decoded->notes;
+    // A tag/value export (one row per tag and stamp) is read as the wide table it stands for.
+    auto narrow = pivotNarrowExport(decoded->text(raw), file, options.mapping.runs.maxInterpolatedGapS);
+    if (!narrow) {
+        return narrow.error();
+    }
+    if (*narrow) {
+        for (auto& n : (*narrow)->notes) {
+            result.notes.push_back(std::move(n));
+        }
+    }
+    const std::string& text = *narrow ? (*narrow)->wideText : decoded->text(raw);
     auto sniffed = sniffPlantText(text, file, options.mapping);
     if (!sniffed || !sniffed->historian) {
         // The contract's own form, or neither shape fits: the batch reader accepts what it can;

@@ -8,12 +8,15 @@
 #include "data/historian/NumberFormat.h"
 #include "physics/LineInputs.h"
 
+#include "data/MappingGuess.h"
 #include <QString>
+
 #include <QtTest>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <functional>
+#include <sstream>
 
 using namespace drytwin;
 using namespace drytwin::data;
@@ -689,6 +692,72 @@ private Q_SLOTS:
         auto l = parsePlantText(loneSurrogate, "utf16.csv", sevenTags());
         QVERIFY(!l.ok());
         VERIFY_MESSAGE(l.error().message(), "utf16.csv:1:2: a UTF-16 low surrogate without its high half");
+    }
+
+    // 5b. A tag/value export (one row per tag and stamp, PI's archive export sorted by tag, with a
+    // quality column) reads the same cells as the wide export of the same shift; a tag sampled at
+    // other stamps is bridged like gaps; the note says what was done.
+    void tagValueExportReadsAsTheWideOne() {
+        const std::string wide = shiftText(
+            400, [](int i) { return iso(i); }, ',');
+        auto w = parsePlantText(wide, "wide.csv", sevenTags());
+        VERIFY_OK(w);
+        // Pivot the wide text back to narrow, tag by tag (the order PI writes).
+        std::vector<std::vector<std::string>> table;
+        std::stringstream in(wide);
+        for (std::string line; std::getline(in, line);) {
+            std::vector<std::string> cells;
+            std::stringstream ls(line);
+            for (std::string c; std::getline(ls, c, ',');) {
+                cells.push_back(c);
+            }
+            table.push_back(cells);
+        }
+        const auto narrowText = [&](bool sparse) {
+            std::string text = "# exported from the plant historian\nTag,Timestamp,Value,Quality\n";
+            for (std::size_t col = 1; col < table[0].size(); ++col) {
+                for (std::size_t row = 1; row < table.size(); ++row) {
+                    if (sparse && col == 3 && row % 2 == 0) {
+                        continue; // this tag every other second only (a deadband)
+                    }
+                    text += table[0][col] + "," + table[row][0] + "," + table[row][col] + ",Good\n";
+                }
+            }
+            return text;
+        };
+        auto n = parsePlantText(narrowText(false), "narrow.csv", sevenTags());
+        VERIFY_OK(n);
+        QVERIFY2(
+            hasNote(
+                *n,
+                "narrow.csv: a tag/value export (one row per tag and time stamp: columns 'Timestamp', "
+                "'Tag', 'Value'), read as one column per tag: 7 tags over 400 time stamps; 0 cells where a "
+                "tag has no sample at a stamp hold its last sample"),
+            notesOf(*n).c_str());
+        QCOMPARE(n->runs.size(), w->runs.size());
+        for (const auto c : {Column::THot, Column::Feed, Column::XOut}) {
+            QCOMPARE(*n->runs[0].values(c), *w->runs[0].values(c));
+        }
+        auto sparse = parsePlantText(narrowText(true), "sparse.csv", sevenTags());
+        VERIFY_OK(sparse);
+        QVERIFY2(hasNote(*sparse, "200 cells where a tag has no sample at a stamp hold its last sample"),
+                 notesOf(*sparse).c_str());
+        const auto& x = *sparse->runs[0].values(static_cast<Column>(kTags[4].column));
+        QVERIFY(std::none_of(x.begin(), x.end(), [](double v) { return std::isnan(v); }));
+        QCOMPARE(x[5], x[4]); // held from the second before
+        // The mapping dialog's guess sees the tags as the headers they stand for.
+        auto guess = guessMapping(narrowText(false), "narrow.csv");
+        VERIFY_OK(guess);
+        QCOMPARE(guess->shape.headers.size(), std::size_t(8));
+        QCOMPARE(guess->shape.headers[1], std::string("HDT_TT101.PV"));
+        // A row of the wrong width is named by its line.
+        std::string broken = narrowText(false);
+        broken.insert(broken.find("Good\n") + 5, "HDT_TT101.PV,2025-06-03 08:00:01\n");
+        auto b = parsePlantText(broken, "broken.csv", sevenTags());
+        QVERIFY(!b.ok());
+        VERIFY_MESSAGE(b.error().message(),
+                       "broken.csv:4:3: expected 4 fields as in the header of this tag/value "
+                       "export, found 2");
     }
 
     // 6. Impossible values name line and column; the model's refusal names batch, file:line, time,
