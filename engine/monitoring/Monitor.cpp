@@ -153,12 +153,19 @@ Expected<Monitor> Monitor::fit(const std::vector<MonitorRun>& reference,
                              : lagBlocks(part.timeS, part.values, options.blockS, options.lags));
         moments.push_back(LaggedMoments::of(lagged.back()));
     }
+    // Windows in the words of the line: minutes of data.
+    const double windowMinutes = options.blocksPerWindow() * options.blockS / 60;
+    const auto minutesOf = [windowMinutes](int windows) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.0f min", windows * windowMinutes);
+        return std::string(text);
+    };
     const auto tooShort = [&](const std::string& why) {
         const MonitorRun& run = reference.front();
         return notEnoughData(place + ": reference run '" + run.id + "'",
                              "a single reference run of " + std::to_string(run.values.rows()) +
-                                 " rows is too short to split in three parts for the leave-one-out null (" +
-                                 why + "); give a longer run or more runs",
+                                 " rows is too short to split in three parts for the monitor's null (" + why +
+                                 "); give a longer run or more runs",
                              "reference rows", static_cast<std::size_t>(run.values.rows()));
     };
 
@@ -215,14 +222,17 @@ Expected<Monitor> Monitor::fit(const std::vector<MonitorRun>& reference,
         // A part shorter than the shortest shifted stretch could not show the wander the GLR
         // is judged against, and the null would rest on too few windows.
         if (thirds && static_cast<int>(seriesT2.back().size()) < minWindows) {
-            return tooShort("each third needs " + std::to_string(minWindows) + " valid windows, minSegmentS");
+            return tooShort("each third needs at least " + minutesOf(minWindows) +
+                            " of valid data, the shortest change the monitor looks for");
         }
     }
     if (static_cast<int>(windowT2.size()) < 3 * minWindows) {
         return notEnoughData(place,
-                             "the reference gives only " + std::to_string(windowT2.size()) +
-                                 " valid leave-one-out windows; the null needs at least " +
-                                 std::to_string(3 * minWindows) + " (three times minSegmentS)",
+                             "the reference holds only " + minutesOf(static_cast<int>(windowT2.size())) +
+                                 " of valid data; the monitor's null needs at least " +
+                                 minutesOf(3 * minWindows) +
+                                 " (three times the shortest change it looks for): give a longer reference "
+                                 "period or more runs",
                              "reference windows", windowT2.size());
     }
     auto t2Null = longRunNull(seriesT2, place + ": T2 null");
