@@ -277,14 +277,14 @@ int main(int argc, char** argv) {
             discoveryOptions.maxEvaluationsPerFit = std::atoi(next.c_str());
             ++i;
         } else {
-            std::fprintf(stderr,
-                         "usage: study_discovery [--quick] [--plant distributed|lumped] "
-                         "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
-                         "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
-                         "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
-                         "[--evaluations N] [--oracle] [--reference] [--no-structure] "
-                         "[--structure-extrapolates] [--size-rule] [--spread-bound] [--share-of-whole] "
-                         "[--no-constancy] [--look-alike-overall]\n");
+            std::fprintf(stderr, "usage: study_discovery [--quick] [--plant distributed|lumped] "
+                                 "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
+                                 "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
+                                 "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
+                                 "[--evaluations N] [--oracle] [--reference] [--no-structure] "
+                                 "[--structure-extrapolates] [--keep-taken-up] [--size-rule] "
+                                 "[--spread-bound] [--share-of-whole] "
+                                 "[--no-constancy] [--look-alike-overall]\n");
             return 2;
         }
     }

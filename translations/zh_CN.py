@@ -8,6 +8,8 @@ import re
 import sys
 
 ZH = {
+    "%1 was named first, then withdrawn: refitted together with the causes named after it, it is no change of the line (it had taken up what they explain). In detail: %2.": "%1 先被识别，随后撤回：与之后识别的原因一起重新拟合后，它并非产线的变化（它曾吸收了那些原因所解释的部分）。详情：%2。",
+    "The reference holds %1 batch(es): a period's normal spread comes from thirds of them, which share their day and weather; a change named here may be a difference of conditions the reference never showed. A reference of several batches over the conditions the line runs in (weeks, seasons) judges better.": "参考期仅含 %1 个批次：一个时段的正常离散取自其三等分，它们同属一天、同样天气；此处识别出的变化可能只是参考期从未出现过的工况差异。覆盖产线运行工况（数周、不同季节）的多批次参考期判断得更好。",
     "<p>The patterns left in the error below are within what the reference period shows: the data did not change against it.</p>": "<p>下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。</p>",
     "Before: the starting model (as commissioned, or calibrated).": "之前：起始模型（调试所得或标定后的模型）。",
     "After: the extended model, every named cause fitted together (a finding's own sentence gives the gain when that cause was named).": "之后：扩展后的模型，所有已识别原因一起拟合（各项发现的文字给出识别该原因时的改进）。",

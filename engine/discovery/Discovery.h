@@ -109,6 +109,10 @@ struct DiscoveryOptions {
     /// healthy pairs alarming 3 → 0 of 20 on the fresh seeds 741–743, naming level. false: applied
     /// as fitted everywhere, as before 2026-11-27 (late).
     bool lineStructureWithinReferenceRange = true;
+    /// Against a reference: a cause named early whose value, refitted with the causes named after
+    /// it, lies back within its normal spread is withdrawn with a note (it had taken up their
+    /// effect while alone). false: every cause named stays, as before 2026-11-27 (late).
+    bool withdrawCausesTakenUpLater = true;
     /// Against a reference period: a new batch whose typical value of an input lies outside what
     /// the reference saw (its 0.5-99.5 % range widened by a quarter of the span: a winter batch
     /// against summer runs) has no normal level to be compared with; both detectors judge only

@@ -404,6 +404,9 @@ void scoreAgainstReference(const Problem& pr, std::vector<Candidate>& cands);
 /// Whether a fitted finding moved beyond the reference's normal spread; fills its reference
 /// value and interval. "" when it did, else the reason (code "within_normal_spread").
 Expected<std::string> judgeAgainstReference(const Problem& pr, Finding& f);
+/// Against a reference: drops each finding that, restated at the final model (refitted with the
+/// causes named after it), lies back within its normal spread, with a note naming it.
+Status withdrawTakenUp(const Problem& pr, DiscoveryResult& result);
 /// Detection against a reference period (ChangeDetection.cpp): a dynamic PCA monitor of the
 /// measured columns and DryTwin's physics-residual monitor (the measured inputs and the
 /// commissioned model's error on each measured output), both fitted on @p reference and its

@@ -437,6 +437,25 @@ QString noteText(const std::string& note) {
                    "as gauge scatter, not moisture, in the starting model.")
             .arg(numbers().at(0), numbers().at(1));
     }
+    // ReferenceDiscovery.cpp's withdrawTakenUp and its note on a short reference.
+    static const QRegularExpression withdrawn(QStringLiteral(
+        "^(\\S+): named first, then withdrawn: refitted with the causes named after it, it is (.*); it had "
+        "taken up what they explain$"));
+    if (const auto m = withdrawn.match(n); m.hasMatch()) {
+        return DiscoverPanel::tr(
+                   "%1 was named first, then withdrawn: refitted together with the causes named "
+                   "after it, it is no change of the line (it had taken up what they explain). "
+                   "In detail: %2.")
+            .arg(causeDisplayName(m.captured(1).toStdString()), m.captured(2));
+    }
+    if (starts("the reference holds ") && !numbers().isEmpty()) {
+        return DiscoverPanel::tr(
+                   "The reference holds %1 batch(es): a period's normal spread comes from thirds of "
+                   "them, which share their day and weather; a change named here may be a "
+                   "difference of conditions the reference never showed. A reference of several "
+                   "batches over the conditions the line runs in (weeks, seasons) judges better.")
+            .arg(numbers().first());
+    }
     // ReferenceDiscovery.cpp's operatingRangeNotes: "B04: T_amb_C is typically 31.6 °C, outside what
     // the reference saw (11 to 23 °C): ..."
     static const QRegularExpression outside(QStringLiteral(
