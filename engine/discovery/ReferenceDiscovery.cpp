@@ -177,6 +177,9 @@ Status withdrawTakenUp(const Problem& pr, DiscoveryResult& result) {
                 }
             }
             if (!why->empty()) {
+                // The extended model leaves it out too, so that the model and its file agree with the
+                // causes named (a file keeps a mechanism only with its finding).
+                result.parameters[f.parameter] = result.baseParameters[f.parameter];
                 result.notes.push_back(f.cause +
                                        ": named first, then withdrawn: refitted with the causes named "
                                        "after it, it is " +

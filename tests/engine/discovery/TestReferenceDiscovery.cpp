@@ -176,6 +176,9 @@ private Q_SLOTS:
         }));
         QVERIFY(r->detection.namedChange);
         QCOMPARE(r->detection.namedCauses, std::vector<std::string>{"ambient_reabsorption"});
+        // The extended model holds what was named, not the withdrawn delay.
+        QCOMPARE(r->parameters[properties::Param::dtau_conv],
+                 r->baseParameters[properties::Param::dtau_conv]);
     }
 
     /// Healthy data of another seed against the healthy reference: nothing changed, nothing named.
