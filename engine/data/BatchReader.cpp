@@ -96,62 +96,6 @@ extern "C" void onCsvRowEnd(int, void* data) {
     ctx->rowStartLine = -1;
 }
 
-/// What a reader of the batch must know but no single cell shows: a column that holds no value
-/// at all (every cell empty or NaN: the rows all fail the cleaning, and the later "no usable
-/// rows" would not say why), a sampling step other than the contract's 1 s, and a gap in time
-/// (a stop, a lost connection) that the model runs across as if the line had run on.
-std::vector<std::string> batchNotes(const Batch& b) {
-    std::vector<std::string> notes;
-    const std::string where = b.sourcePath.empty() ? b.id : b.sourcePath;
-    for (const auto& col : b.numeric) {
-        if (col.id == Column::Time || col.values.empty()) {
-            continue;
-        }
-        if (std::none_of(col.values.begin(), col.values.end(), [](double v) { return std::isfinite(v); })) {
-            const std::string name(spec(col.id).name);
-            notes.push_back(where + ": column '" + col.fileName + "'" +
-                            (col.fileName == name ? std::string() : " (" + name + ")") +
-                            " holds no value in any of its " + std::to_string(col.values.size()) + " rows" +
-                            (spec(col.id).required
-                                 ? ": every row fails the cleaning, nothing of this batch can be used"
-                                 : ": it is treated as not measured"));
-        }
-    }
-    const auto* t = b.values(Column::Time);
-    if (!t || t->size() < 3 || b.run) { // a historian run is put on its own grid, gaps noted there
-        return notes;
-    }
-    std::vector<double> steps;
-    std::size_t largestAt = 1;
-    for (std::size_t i = 1; i < t->size(); ++i) {
-        steps.push_back((*t)[i] - (*t)[i - 1]);
-        if (steps.back() > steps[largestAt - 1]) {
-            largestAt = i;
-        }
-    }
-    const double largest = steps[largestAt - 1];
-    auto mid = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
-    std::nth_element(steps.begin(), mid, steps.end());
-    const double median = *mid;
-    char text[256];
-    if (std::abs(median - 1.0) > 0.05) {
-        std::snprintf(text, sizeof text,
-                      ": rows are typically %.3g s apart, not the 1 s the model and the learnt layer's lags "
-                      "assume; the physics follows the time stamps, the lags and horizons count rows",
-                      median);
-        notes.push_back(where + text);
-    }
-    if (largest > std::max(10.0, 5 * median)) {
-        std::snprintf(
-            text, sizeof text,
-            ":%d: a gap of %.0f s in time (rows typically %.3g s apart): the model runs across it as "
-            "if the line had run on; a stop is better cut into two batches",
-            b.lineOfRow.size() > largestAt ? b.lineOfRow[largestAt] : 0, largest, median);
-        notes.push_back(where + text);
-    }
-    return notes;
-}
-
 } // namespace
 
 Status checkBatchTextEncoding(const std::string& rawText, const std::string& file) {
@@ -491,10 +435,6 @@ LoadResult loadDataSet(const std::string& path, const ReadOptions& options, cons
             result.dataSet.notes.push_back(std::move(note));
         }
         for (auto& batch : read->runs) {
-            for (auto& note : batchNotes(batch)) {
-                result.notes.push_back(note);
-                result.dataSet.notes.push_back(std::move(note));
-            }
             if (!ids.insert(batch.id).second) {
                 result.errors.push_back({ErrorKind::BadInput, files[i],
                                          "batch id '" + batch.id + "' is used by an earlier file or run"});

@@ -14,6 +14,46 @@ std::string formatNumber(double v) {
     std::snprintf(buf, sizeof buf, "%g", v);
     return buf;
 }
+
+/// What a reader must know but no single cell shows, in the batch's file: a sampling step other than
+/// the contract's 1 s, and a gap in time (a stop, a lost connection) that the model runs across as
+/// if the line had run on.
+void timingNotes(const Batch& b, const BatchSummary& bs, int gapLine, std::vector<std::string>& notes) {
+    const std::string where = b.sourcePath.empty() ? b.id : b.sourcePath;
+    char text[256];
+    if (std::abs(bs.medianStepS - 1.0) > 0.05) {
+        std::snprintf(text, sizeof text,
+                      ": rows are typically %.3g s apart, not the 1 s the model and the learnt layer's lags "
+                      "assume; the physics follows the time stamps, the lags and horizons count rows",
+                      bs.medianStepS);
+        notes.push_back(where + text);
+    }
+    if (bs.largestGapS > std::max(10.0, 5 * bs.medianStepS)) {
+        std::snprintf(
+            text, sizeof text,
+            ":%d: a gap of %.0f s in time (rows typically %.3g s apart): the model runs across it as "
+            "if the line had run on; a stop is better cut into two batches",
+            gapLine, bs.largestGapS, bs.medianStepS);
+        notes.push_back(where + text);
+    }
+}
+
+/// A column that holds no value at all: every row then fails the cleaning (a required one), and a
+/// later "no usable rows" would not say why.
+void emptyColumnNote(const Batch& b, const Batch::NumericColumn& col, std::vector<std::string>& notes) {
+    if (col.id == Column::Time || col.values.empty() ||
+        std::any_of(col.values.begin(), col.values.end(), [](double v) { return std::isfinite(v); })) {
+        return;
+    }
+    const std::string name(spec(col.id).name);
+    notes.push_back((b.sourcePath.empty() ? b.id : b.sourcePath) + ": column '" + col.fileName + "'" +
+                    (col.fileName == name ? std::string() : " (" + name + ")") +
+                    " holds no value in any of its " + std::to_string(col.values.size()) + " rows" +
+                    (spec(col.id).required
+                         ? ": every row fails the cleaning, nothing of this batch can be used"
+                         : ": it is treated as not measured"));
+}
+
 } // namespace
 
 DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOptions) {
@@ -50,10 +90,15 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
                 steps.push_back((*t)[i] - (*t)[i - 1]);
             }
             if (!steps.empty()) {
-                bs.largestGapS = *std::max_element(steps.begin(), steps.end());
+                const auto largest = std::max_element(steps.begin(), steps.end());
+                bs.largestGapS = *largest;
+                const std::size_t gapRow = static_cast<std::size_t>(largest - steps.begin()) + 1;
                 std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2),
                                  steps.end());
                 bs.medianStepS = steps[steps.size() / 2];
+                if (!b.run) { // a historian run is put on its own grid, its gaps noted where it is cut
+                    timingNotes(b, bs, gapRow < b.lineOfRow.size() ? b.lineOfRow[gapRow] : 0, s.notes);
+                }
             }
         }
         for (std::size_t ci = 0; ci < b.numeric.size(); ++ci) {
@@ -84,6 +129,7 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
                     }
                 }
             }
+            emptyColumnNote(b, col, s.notes);
             for (double v : col.values) {
                 if (std::isnan(v)) {
                     ++cs.missing;
