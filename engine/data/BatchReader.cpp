@@ -76,6 +76,18 @@ bool parseDouble(const std::string& s, double& v) {
     return ec == std::errc() && ptr == e;
 }
 
+/// A number written correctly but too large (or too small) for a double: said as such, not as text.
+bool outOfDoubleRange(const std::string& s) {
+    const char* b = s.data();
+    const char* e = s.data() + s.size();
+    if (b != e && *b == '+') {
+        ++b;
+    }
+    double v = 0;
+    auto [ptr, ec] = std::from_chars(b, e, v);
+    return ec == std::errc::result_out_of_range && ptr == e;
+}
+
 /// State shared with libcsv's C callbacks while one file is parsed.
 struct CsvContext {
     std::vector<RawRow> rows;
@@ -335,6 +347,11 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
             double v = nan;
             if (isMissingToken(cell)) {
                 batch.missing.push_back({row.line, static_cast<int>(c) + 1, std::string(spec(col.id).name)});
+            } else if (!parseDouble(cell, v) && outOfDoubleRange(cell)) {
+                return badInput(file, row.line, static_cast<int>(c) + 1,
+                                "number '" + cell + "' in column '" + col.fileName +
+                                    "' lies outside what a number can hold (sizes 1e-308 to 1.8e308): a unit "
+                                    "or exponent error?");
             } else if (!parseDouble(cell, v)) {
                 return withCode(badInput(file, row.line, static_cast<int>(c) + 1,
                                          "text '" + cell + "' in numeric column '" + col.fileName + "'"),
