@@ -30,11 +30,11 @@ void printDetection(const discovery::DiscoveryResult& d) {
     std::printf(
         "  %s (each detector's false-alarm rate %.3g per data set; DryTwin's split between its monitor "
         "and its causes' test)\n",
-        det.changed       ? "CHANGED"
-        : det.namedChange ? "CHANGED (a named cause)"
-                          : "no change detected",
+        det.changed         ? "CHANGED"
+        : det.namedChange() ? "CHANGED (a named cause)"
+                            : "no change detected",
         det.falseAlarmRate);
-    if (!det.changed && det.namedChange) {
+    if (!det.changed && det.namedChange()) {
         std::string causes;
         for (const auto& c : det.namedCauses) {
             causes += (causes.empty() ? "" : ", ") + c;

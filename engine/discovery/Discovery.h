@@ -381,10 +381,10 @@ struct ChangeDetection {
     /// A cause named against the reference (its fitted parameter beyond its normal spread, with a
     /// held-out gain): the line has changed even where the detectors, judging the data set as a
     /// whole at their stated rate, did not flag it. Its false-naming rate is the study's, not α.
-    bool namedChange = false;
     std::vector<std::string> namedCauses;
+    bool namedChange() const { return !namedCauses.empty(); }
     /// Either detector, or a cause named: what the headline says.
-    bool lineChanged() const { return changed || namedChange; }
+    bool lineChanged() const { return changed || namedChange(); }
     monitoring::Detection drytwin, pca;
     std::vector<std::string> drytwinColumns, pcaColumns;
 };

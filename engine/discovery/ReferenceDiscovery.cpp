@@ -151,7 +151,7 @@ Status withdrawTakenUp(const Problem& pr, DiscoveryResult& result) {
     // A cause named early and refitted with the causes named after it (restated at the final model)
     // may fall back within its normal spread: it had taken up, while it was alone, what a later
     // cause explains (seed 743 of the study: a re-absorption first named as a transport time of
-    // -12.5 s, which at the final model with the re-absorption is 2.5 s, the line's normal 2 s).
+    // -12.5 s, which at the final model with the re-absorption is 2.5 s, against the reference's 0.5 s).
     // It is no change of the line, and a technician sent to it would find nothing.
     std::vector<Finding> kept;
     for (auto& f : result.findings) {
@@ -189,10 +189,7 @@ Status withdrawTakenUp(const Problem& pr, DiscoveryResult& result) {
         }
         kept.push_back(std::move(f));
     }
-    result.findings = std::move(kept);
-    if (result.findings.empty()) {
-        result.verdict = result.unexplained.empty() ? "no_structural_cause" : "unexplained_structure";
-    }
+    result.findings = std::move(kept); // the caller's verdict follows what is left
     return {};
 }
 
@@ -608,7 +605,6 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     }
     // Every finding against a reference is a change (its parameter beyond its normal spread).
     for (const auto& f : result.findings) {
-        result.detection.namedChange = true;
         result.detection.namedCauses.push_back(f.cause);
     }
     // The line's own structure is on the reference too: only a change the detectors see and no
@@ -619,7 +615,7 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     reportProgress(progress, "discover", 1.0, "done");
     result.ending = {Termination::Completed,
                      std::string(result.detection.changed ? "changed against the reference; "
-                                 : result.detection.namedChange
+                                 : result.detection.namedChange()
                                      ? "a cause changed against the reference "
                                        "(the detectors did not flag the data set); "
                                      : "no change against the reference; ") +

@@ -491,7 +491,7 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                           // Either detector or a cause named beyond its normal spread: whether the
                           // line changed, as the headline says (issue #41's reports, 2026-11-27).
                           {"line_changed", d.lineChanged()},
-                          {"named_change", {{"changed", d.namedChange}, {"causes", d.namedCauses}}},
+                          {"named_change", {{"changed", d.namedChange()}, {"causes", d.namedCauses}}},
                           {"detectors",
                            {{"drytwin", detectionJson(d.drytwin, d.drytwinColumns)},
                             {"pca", detectionJson(d.pca, d.pcaColumns)}}}};

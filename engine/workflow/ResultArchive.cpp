@@ -155,8 +155,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(
 // a reopened project shows the headline, the monitor chart and each finding's change as they were.
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(ChangeDetection::CauseTest, changed, pValue, cause)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(ChangeDetection, changed, falseAlarmRate, decidedBy,
-                                                drytwinChanged, causeTest, namedChange, namedCauses, drytwin,
-                                                pca, drytwinColumns, pcaColumns)
+                                                drytwinChanged, causeTest, namedCauses, drytwin, pca,
+                                                drytwinColumns, pcaColumns)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Signature, type, output, periodS, column, lagS, batches,
                                                 strength)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Round::Rejection, cause, code, reason)

@@ -219,7 +219,7 @@ void DiscoverPanel::showDetection() {
     }
     m_detection->setText(
         (det.changed ? tr("<b>The line has changed since the reference period.</b>")
-         : det.namedChange
+         : det.namedChange()
              ? tr("<b>A cause has changed since the reference period: %1.</b> The detectors, judging the "
                   "data "
                   "set as a whole, stayed below their limits; fitting the causes found it beyond its normal "

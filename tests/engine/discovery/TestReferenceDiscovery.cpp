@@ -134,7 +134,7 @@ private Q_SLOTS:
         QVERIFY2(namesFirst(r, "moisture_meter_offset"), qPrintable(story(r)));
         QVERIFY2(r.detection.drytwinChanged, qPrintable(story(r)));
         // A named cause is a change the headline states, whatever the detectors said.
-        QVERIFY(r.detection.namedChange && r.detection.lineChanged());
+        QVERIFY(r.detection.namedChange() && r.detection.lineChanged());
         QCOMPARE(r.detection.namedCauses.front(), std::string("moisture_meter_offset"));
         // A project keeps it as judged: the reference, the detection with its chart, each finding's
         // change (a reopened project showed "refitted" and no headline before).
@@ -145,7 +145,7 @@ private Q_SLOTS:
         auto back = workflow::parseLatestResults(text, "p.drytwin.results.json");
         QVERIFY2(back.ok(), back ? "" : back.error().message().c_str());
         const auto& b = back->discover->discovery;
-        QVERIFY(b.hasReference && b.detection.namedChange && b.detection.drytwinChanged);
+        QVERIFY(b.hasReference && b.detection.namedChange() && b.detection.drytwinChanged);
         QCOMPARE(b.referenceBatches, r.referenceBatches);
         QCOMPARE(b.detection.drytwin.series.size(), r.detection.drytwin.series.size());
         QVERIFY(!b.detection.drytwin.series.empty());
@@ -174,7 +174,7 @@ private Q_SLOTS:
         QVERIFY(std::any_of(r->notes.begin(), r->notes.end(), [](const std::string& n) {
             return n.find("transport_delay_error: named first, then withdrawn") != std::string::npos;
         }));
-        QVERIFY(r->detection.namedChange);
+        QVERIFY(r->detection.namedChange());
         QCOMPARE(r->detection.namedCauses, std::vector<std::string>{"ambient_reabsorption"});
         // The extended model holds what was named, not the withdrawn delay.
         QCOMPARE(r->parameters[properties::Param::dtau_conv],
@@ -187,7 +187,7 @@ private Q_SLOTS:
         QVERIFY2(!r.detection.changed, qPrintable(story(r)));
         QVERIFY2(r.findings.empty(), qPrintable(story(r)));
         QCOMPARE(r.verdict, std::string("no_structural_cause"));
-        QVERIFY(!r.detection.namedChange && !r.detection.lineChanged());
+        QVERIFY(!r.detection.namedChange() && !r.detection.lineChanged());
     }
 
     /// A change from mid-batch: the detector's onset lies in its own interval and near the truth.
