@@ -40,18 +40,21 @@ void timingNotes(const Batch& b, const BatchSummary& bs, int gapLine, std::vecto
 
 /// A column that holds no value at all: every row then fails the cleaning (a required one), and a
 /// later "no usable rows" would not say why.
-void emptyColumnNote(const Batch& b, const Batch::NumericColumn& col, std::vector<std::string>& notes) {
+void emptyColumnNote(const Batch& b, const Batch::NumericColumn& col, DataSetSummary& summary) {
     if (col.id == Column::Time || col.values.empty() ||
         std::any_of(col.values.begin(), col.values.end(), [](double v) { return std::isfinite(v); })) {
         return;
     }
     const std::string name(spec(col.id).name);
-    notes.push_back((b.sourcePath.empty() ? b.id : b.sourcePath) + ": column '" + col.fileName + "'" +
-                    (col.fileName == name ? std::string() : " (" + name + ")") +
-                    " holds no value in any of its " + std::to_string(col.values.size()) + " rows" +
-                    (spec(col.id).required
-                         ? ": every row fails the cleaning, nothing of this batch can be used"
-                         : ": it is treated as not measured"));
+    const bool required = spec(col.id).required;
+    summary.notes.push_back((b.sourcePath.empty() ? b.id : b.sourcePath) + ": column '" + col.fileName + "'" +
+                            (col.fileName == name ? std::string() : " (" + name + ")") +
+                            " holds no value in any of its " + std::to_string(col.values.size()) + " rows" +
+                            (required ? ": every row fails the cleaning, nothing of this batch can be used"
+                                      : ": it is treated as not measured"));
+    if (required) {
+        summary.emptyRequiredColumns.push_back(summary.notes.back());
+    }
 }
 
 } // namespace
@@ -129,7 +132,7 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
                     }
                 }
             }
-            emptyColumnNote(b, col, s.notes);
+            emptyColumnNote(b, col, s);
             for (double v : col.values) {
                 if (std::isnan(v)) {
                     ++cs.missing;

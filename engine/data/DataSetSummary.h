@@ -57,6 +57,9 @@ struct DataSetSummary {
     std::vector<ImpossibleValue> impossible;
     std::size_t impossibleTotal = 0; ///< … and how many there are in all
     std::vector<std::string> notes;  ///< what reading the files noticed (DataSet::notes)
+    /// The notes (also in `notes`) on a required column without a single value: why no row can be
+    /// used, kept apart so that an error can say so without matching the notes' wording.
+    std::vector<std::string> emptyRequiredColumns;
     static constexpr std::size_t kMaxListedImpossible = 20;
 };
 

@@ -143,6 +143,11 @@ Status SelectionRound::tryFitted() {
             continue;
         }
         m_record.best = cand.cause;
+        // The round reports the cause it named, not the first one tried (which the finding's own
+        // numbers would then contradict).
+        m_record.heldOutPValue = conf.pValue;
+        m_record.explainedFraction = conf.explained;
+        m_record.explainedFractionFast = conf.explainedFast;
         m_named = std::move(conf.finding);
         m_namedParams = fit.parameters;
         m_namedLoss = fit.loss;

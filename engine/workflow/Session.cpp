@@ -36,10 +36,8 @@ Status Session::requireUsableRows(const std::string& action) const {
     // Say why, from what the loading noted (a column with no value at all, say), instead of a
     // later "0 usable rows" that names neither the file nor the column.
     std::string why;
-    for (const auto& note : data::summarize(*m_dataSet, m_cleaning).notes) {
-        if (note.find("holds no value") != std::string::npos) {
-            why += (why.empty() ? "" : "; ") + note;
-        }
+    for (const auto& note : data::summarize(*m_dataSet, m_cleaning).emptyRequiredColumns) {
+        why += (why.empty() ? "" : "; ") + note;
     }
     return Error{
         ErrorKind::BadInput,

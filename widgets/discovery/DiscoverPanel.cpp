@@ -861,6 +861,14 @@ void DiscoverPanel::show() {
         row(tr("MAE T_out (physics)"), d.findings.front().gain.maeTemperatureBefore, g.maeTemperatureAfter,
             tr("°C"));
         row(tr("R² X_out"), d.findings.front().gain.r2MoistureBefore, g.r2MoistureAfter, QString());
+        // An R² below 0 reads as an error to a newcomer: each cell says what its value means.
+        const int r2Row = m_gains->rowCount() - 1;
+        for (const auto& [column, value] :
+             {std::pair{1, d.findings.front().gain.r2MoistureBefore}, std::pair{2, g.r2MoistureAfter}}) {
+            if (auto* item = m_gains->item(r2Row, column)) {
+                item->setToolTip(r2Explanation(value));
+            }
+        }
         row(tr("low-frequency share"), d.findings.front().gain.lowFrequencyShareBefore,
             g.lowFrequencyShareAfter, QString());
     }

@@ -1,6 +1,7 @@
 // Discovery on virtual-plant data with an effect hidden in it: the test must find it from the
 // data alone. The plant writes every mechanism in its own, richer form (docs/mechanisms.md), and
 // the seed (21) is not one the settings were chosen on (12-14).
+#include "RoundsAgree.h"
 #include "discovery/Discovery.h"
 #include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
@@ -127,6 +128,8 @@ private Q_SLOTS:
         QVERIFY2(!r.findings.empty(), qPrintable(names(r)));
         QCOMPARE(r.verdict, std::string("cause_found"));
         QCOMPARE(r.findings.front().cause, hidden);
+        QVERIFY2(test::roundsDisagreeWithFindings(r).isEmpty(),
+                 qPrintable(test::roundsDisagreeWithFindings(r)));
         // The held-out MAE of the output it affects falls by at least 30 % with the extended PBM.
         const auto& g = r.findings.front().gain;
         const double dropX = 1 - g.maeMoistureAfter / g.maeMoistureBefore;
@@ -198,6 +201,8 @@ private Q_SLOTS:
         }
         QVERIFY2(found.contains("heat_transfer_fouling") && found.contains("moisture_meter_offset"),
                  qPrintable(names(r)));
+        QVERIFY2(test::roundsDisagreeWithFindings(r).isEmpty(),
+                 qPrintable(test::roundsDisagreeWithFindings(r)));
         QCOMPARE(found.size(), 2);
     }
 

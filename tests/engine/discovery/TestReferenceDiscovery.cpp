@@ -1,6 +1,7 @@
 // What changed against a reference period (issue #41), on the distributed plant with realistic
 // sensors: the model is commissioned on healthy data of one seed and judged on data of another.
 // The seeds (41-44) are not the study's (101-103 and their references 7101-7103).
+#include "RoundsAgree.h"
 #include "discovery/Discovery.h"
 #include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
@@ -118,6 +119,8 @@ private Q_SLOTS:
             QVERIFY(f.referenceCi95Low <= f.referenceValue && f.referenceValue <= f.referenceCi95High);
         }
         QVERIFY2(namesFirst(r, "heat_transfer_fouling"), qPrintable(story(r)));
+        QVERIFY2(test::roundsDisagreeWithFindings(r).isEmpty(),
+                 qPrintable(test::roundsDisagreeWithFindings(r)));
         const auto& f = r.findings.front();
         QVERIFY(f.responseJudged);
         // The moisture as the model says, an outlet temperature well under it (the line's gas phase).
@@ -132,6 +135,8 @@ private Q_SLOTS:
     void meterOffsetAgainstAHealthyReferenceIsNamed() {
         const auto r = judge(plantData(43, {{Mechanism::MoistureMeterOffset, 0.4}}));
         QVERIFY2(namesFirst(r, "moisture_meter_offset"), qPrintable(story(r)));
+        QVERIFY2(test::roundsDisagreeWithFindings(r).isEmpty(),
+                 qPrintable(test::roundsDisagreeWithFindings(r)));
         QVERIFY2(r.detection.drytwinChanged, qPrintable(story(r)));
         // A named cause is a change the headline states, whatever the detectors said.
         QVERIFY(r.detection.namedChange() && r.detection.lineChanged());
@@ -169,6 +174,8 @@ private Q_SLOTS:
         auto r = discovery::discoverChange(ref, data, hybrid::HybridModel{});
         QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
         QVERIFY2(namesFirst(*r, "ambient_reabsorption"), qPrintable(story(*r)));
+        QVERIFY2(test::roundsDisagreeWithFindings(*r).isEmpty(),
+                 qPrintable(test::roundsDisagreeWithFindings(*r)));
         QVERIFY(std::none_of(r->findings.begin(), r->findings.end(),
                              [](const auto& f) { return f.cause == "transport_delay_error"; }));
         QVERIFY(std::any_of(r->notes.begin(), r->notes.end(), [](const std::string& n) {
@@ -182,6 +189,36 @@ private Q_SLOTS:
     }
 
     /// Healthy data of another seed against the healthy reference: nothing changed, nothing named.
+    /// A gas-phase coupling on the lumped plant (seeds 7101 and 101, as cli_discover_reference_look_alike):
+    /// the round after the coupling first tries an inlet-gauge offset, turns it down, then names
+    /// the wall loss on top of the coupling. That round reports the wall loss's own share of the
+    /// error, the one its entry in the coupling's finding gives (it once gave the offset's).
+    void aRoundTellsTheNumbersOfTheCauseItNamed() {
+        const auto lumped = [](unsigned seed, const std::map<Mechanism, double>& effects) {
+            plant::PlantOptions o;
+            o.plant = plant::PlantKind::Lumped;
+            o.sensors = plant::SensorMode::Default; // "builtin"
+            o.seed = seed;
+            o.batches = 4;
+            o.samples = 3000;
+            o.effects = effects;
+            auto r = plant::runPlant(o);
+            if (!r) {
+                qFatal("%s", r.error().message().c_str());
+            }
+            return plant::toSiBatches(*r, o.seed);
+        };
+        auto r = discovery::discoverChange(
+            lumped(7101, {}), lumped(101, {{Mechanism::GasPhaseCoupling, 0.25}}), hybrid::HybridModel{});
+        QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
+        const auto afterARejection = std::find_if(r->rounds.begin(), r->rounds.end(), [](const auto& rd) {
+            return rd.named && !rd.rejected.empty();
+        });
+        QVERIFY2(afterARejection != r->rounds.end(), qPrintable(story(*r))); // the case this test is for
+        QVERIFY2(test::roundsDisagreeWithFindings(*r).isEmpty(),
+                 qPrintable(test::roundsDisagreeWithFindings(*r)));
+    }
+
     void healthyPairNamesNothing() {
         const auto r = judge(plantData(44));
         QVERIFY2(!r.detection.changed, qPrintable(story(r)));
