@@ -15,7 +15,9 @@
 //      an output a cause acts on counts against it when its error rises, as alone; the rule before
 //      2026-11-27, instead of the direction of the cause's effect)] [--share-of-whole (with --reference:
 //      a cause's share counted of the whole held-out error only, not of its change against the
-//      reference once a detector flags one; the rule before 2026-11-27, evening)] [--seeds FIRST (mechanism
+//      reference once a detector flags one; the rule before 2026-11-27, evening)] [--undetected-at-5-percent
+//      (with --reference: a cause named while no detector flags judged beyond its normal spread at
+//      z 1.96, not at the detectors' rate; the rule before 2026-11-28)] [--seeds FIRST (mechanism
 //      runs' three seeds; default 101, onsets FIRST+100)] [--unimproved-alpha A (default 0.05; 1: the rule
 //      before)]
 //      [--no-constancy (an offset, wall loss or gas coupling not checked for constancy within the batch)]
@@ -138,7 +140,9 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
     if (verbose && !out.named.empty()) { // the look-alikes' numbers and what was turned down
         char text[256];
         for (const auto& f : r->findings) {
-            std::snprintf(text, sizeof text, " [%s %.3g", f.cause.c_str(), f.value);
+            std::snprintf(text, sizeof text, " [%s %.3g (z %.2f, held-out p %.2g, explains %.0f/%.0f %%)",
+                          f.cause.c_str(), f.value, f.changeZ, f.gain.pValue, 100 * f.explainedFraction,
+                          100 * f.explainedFractionFast);
             out.named += text;
             if (f.hasOnset) {
                 std::snprintf(text, sizeof text, " from %.1f min [%.1f, %.1f]", f.onsetS / 60,
@@ -246,6 +250,8 @@ int main(int argc, char** argv) {
             discoveryOptions.lookAlikeWorseOnNoOutput = false;
         } else if (a == "--size-rule") { // against a reference: no output made worse, as before 2026-11-27
             discoveryOptions.referenceJudgesDirection = false;
+        } else if (a == "--undetected-at-5-percent") { // against a reference: 1.96 also before a detection
+            discoveryOptions.undetectedChangeAtDetectorRate = false;
         } else if (a == "--spread-bound") { // against a reference: naming at the spread's upper bound always
             discoveryOptions.pointSpreadOnceDetected = false;
         } else if (a == "--share-of-whole") { // against a reference: the floor of the whole error only
@@ -283,7 +289,7 @@ int main(int argc, char** argv) {
                                  "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
                                  "[--evaluations N] [--oracle] [--reference] [--no-structure] "
                                  "[--structure-extrapolates] [--keep-taken-up] [--size-rule] "
-                                 "[--spread-bound] [--share-of-whole] "
+                                 "[--spread-bound] [--undetected-at-5-percent] [--share-of-whole] "
                                  "[--no-constancy] [--look-alike-overall]\n");
             return 2;
         }

@@ -143,6 +143,11 @@ struct DiscoveryOptions {
     /// its normal spread at the spread's point estimate, not its upper 75 % bound (which keeps the
     /// causes' change test at its false-alarm rate). false: the bound, as before 2026-11-27 (late).
     bool pointSpreadOnceDetected = true;
+    /// Against a reference, while neither detector has flagged a change: a cause named then is
+    /// itself the claim that the line changed, so its fitted change must pass at the rate a
+    /// detector states (falseAlarmRate, Bonferroni over the round's candidates), not at the 5 %
+    /// that names a cause once a change is seen. false: z 1.96 either way, as before 2026-11-28.
+    bool undetectedChangeAtDetectorRate = true;
     Status validate() const;
 };
 
@@ -305,6 +310,9 @@ struct Finding {
     /// reference's parts), so that the finding is a change, not a level.
     bool hasReference = false;
     double referenceValue = 0, referenceCi95Low = 0, referenceCi95High = 0;
+    /// Against a reference: the change from the normal value in units of its combined uncertainty
+    /// (this estimate's and the normal spread's), when it was judged; not stored in files.
+    double changeZ = 0;
     /// Against a reference: on each channel it acts on, how much the line moved against what this
     /// cause's model form says (the best scale of its effect there; 1: as the model says). Judged
     /// by direction (DiscoveryOptions::referenceJudgesDirection); not stored in files.

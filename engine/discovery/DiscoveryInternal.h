@@ -72,6 +72,8 @@ struct Reference {
     /// A detector flagged the new data (DiscoveryResult::detection): the monitors before selection,
     /// the causes' test once the first round's ranking gives it (SelectionRound::run).
     mutable bool changeDetected = false;
+    /// The causes' test's family: the first round's candidates (SelectionRound::run).
+    mutable std::size_t candidatesTested = 0;
     /// The screen's level before a detected change widened it (DiscoveryOptions::screenAlpha): a
     /// lag that passes it is fitted even outside the leading few (SelectionRound::scoreAndFit).
     double strictScreenAlpha = 0.05;

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <boost/math/distributions/chi_squared.hpp>
+#include <boost/math/distributions/normal.hpp>
 #include <chrono>
 #include <cmath>
 #include <string_view>
@@ -133,18 +134,34 @@ Expected<std::string> judgeAgainstReference(const Problem& pr, Finding& f) {
     f.referenceCi95High = std::min(info.upper, rv->value + 1.96 * normalSd);
     const double sd = std::sqrt(seHere * seHere + normalSd * normalSd);
     const double z = sd > 0 ? (f.value - rv->value) / sd : 0.0;
+    f.changeZ = z;
     // A cause bounded at 0 (a loss, a lag, fouling) changes by growing; an offset either way.
-    const bool moved = twoSided(f.parameter) ? std::abs(z) > 1.96 : z > 1.96;
+    // Before any detector has flagged, naming is the only claim of a change: at the rate a
+    // detector states (falseAlarmRate per data set, Bonferroni over the round's candidates), so
+    // that a healthy pair whose unmeasured drift a falling rate takes up (z 2.1 and 2.7 on two
+    // study nulls) names nothing, while a fouling of 0.1 the monitors miss (z 9.4) is still named.
+    const bool atDetectorRate = !pr.reference->changeDetected && pr.options.undetectedChangeAtDetectorRate;
+    double critical = 1.96;
+    if (atDetectorRate) {
+        // p (the upper tail, doubled for an offset) times the candidates ≤ the false-alarm rate.
+        const double tail = pr.options.falseAlarmRate /
+                            static_cast<double>(std::max<std::size_t>(1, pr.reference->candidatesTested)) /
+                            (twoSided(f.parameter) ? 2.0 : 1.0);
+        critical = boost::math::quantile(boost::math::complement(boost::math::normal(), tail));
+    }
+    const bool moved = twoSided(f.parameter) ? std::abs(z) > critical : z > critical;
     if (moved) {
         return std::string();
     }
     // The test weighs this estimate's own uncertainty with the normal spread: say both, so that a
     // value outside the normal range but too uncertain to tell reads as what it is.
-    return format("within its normal spread: %.4g %s here (95 %% CI %.4g to %.4g) against %.4g on the "
-                  "reference period (a period's normal range %.4g to %.4g); the change is %.2g times its "
-                  "combined uncertainty, needs %s1.96",
-                  f.value, std::string(info.unit).c_str(), f.ci95Low, f.ci95High, rv->value,
-                  f.referenceCi95Low, f.referenceCi95High, z, twoSided(f.parameter) ? "|z| > " : "> ");
+    return format(
+        "within its normal spread: %.4g %s here (95 %% CI %.4g to %.4g) against %.4g on the "
+        "reference period (a period's normal range %.4g to %.4g); the change is %.2g times its "
+        "combined uncertainty, needs %s%.3g%s",
+        f.value, std::string(info.unit).c_str(), f.ci95Low, f.ci95High, rv->value, f.referenceCi95Low,
+        f.referenceCi95High, z, twoSided(f.parameter) ? "|z| > " : "> ", critical,
+        atDetectorRate ? " (no detector has flagged a change: the detectors' false-alarm rate)" : "");
 }
 
 Status withdrawTakenUp(const Problem& pr, DiscoveryResult& result) {

@@ -39,6 +39,7 @@ Expected<bool> SelectionRound::run() {
         if (m_pr.reference) { // the causes' test, the detector's second half, as soon as it can be
             testCauses(m_result.ranking, m_result.detection);
             m_pr.reference->changeDetected = m_result.detection.changed;
+            m_pr.reference->candidatesTested = m_result.ranking.size();
         }
     }
     if (auto st = tryFitted(); !st) {

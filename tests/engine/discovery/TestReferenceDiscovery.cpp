@@ -219,6 +219,48 @@ private Q_SLOTS:
                  qPrintable(test::roundsDisagreeWithFindings(*r)));
     }
 
+    /// A healthy pair of the lumped plant with unmeasured drift (null 206 of study_discovery
+    /// --reference --plant lumped, its reference seed 7206): neither detector flags, yet a falling
+    /// rate takes up the new data's drift, removes 74 % of its held-out error and sits 2.1 times
+    /// its combined uncertainty above the reference's value. Named while nothing is detected, a
+    /// cause is itself the claim that the line changed: it must pass at a detector's stated rate.
+    void anUndetectedChangeIsJudgedAtTheDetectorsRate() {
+        const auto lumpedWithDrift = [](unsigned seed) {
+            plant::PlantOptions o;
+            o.plant = plant::PlantKind::Lumped;
+            o.seed = seed;
+            o.batches = 4;
+            o.samples = 3000;
+            o.unmeasuredDrift = true;
+            o.sensorFaults = plant::SensorFaultRates{0, 0, 0};
+            auto r = plant::runPlant(o);
+            if (!r) {
+                qFatal("%s", r.error().message().c_str());
+            }
+            return plant::toSiBatches(*r, o.seed);
+        };
+        const auto ref = lumpedWithDrift(7206);
+        const auto data = lumpedWithDrift(206);
+        discovery::DiscoveryOptions before;
+        before.undetectedChangeAtDetectorRate = false;
+        auto atFivePercent = discovery::discoverChange(ref, data, hybrid::HybridModel{}, before);
+        QVERIFY2(atFivePercent.ok(), atFivePercent ? "" : atFivePercent.error().message().c_str());
+        QVERIFY2(!atFivePercent->detection.changed, qPrintable(story(*atFivePercent))); // the rule's case
+        QVERIFY2(namesFirst(*atFivePercent, "falling_rate_drying"), qPrintable(story(*atFivePercent)));
+        auto r = discovery::discoverChange(ref, data, hybrid::HybridModel{});
+        QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
+        QVERIFY2(r->findings.empty(), qPrintable(story(*r)));
+        QVERIFY(!r->detection.namedChange());
+        bool saysWhy = false;
+        for (const auto& rd : r->rounds) {
+            for (const auto& x : rd.rejected) {
+                saysWhy |= x.cause == "falling_rate_drying" && x.code == "within_normal_spread" &&
+                           x.reason.find("no detector has flagged a change") != std::string::npos;
+            }
+        }
+        QVERIFY2(saysWhy, qPrintable(story(*r)));
+    }
+
     void healthyPairNamesNothing() {
         const auto r = judge(plantData(44));
         QVERIFY2(!r.detection.changed, qPrintable(story(r)));
