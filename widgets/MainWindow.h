@@ -153,6 +153,11 @@ private:
     int m_pendingTab = -1;
     std::optional<workflow::LatestResults> m_pendingResults;
     std::optional<std::array<LearntPart, 3>> m_pendingParts;
+    /// What the project's data held when it was saved ("B01:3000 B02:3000 …"), compared once the
+    /// data are in again: a batch file removed or changed since then makes the restored results
+    /// and learnt parts stale, and the user is told (empty: no project being opened).
+    QString m_pendingDataFingerprint;
+    QString dataFingerprint() const;
 };
 
 } // namespace drytwin::widgets

@@ -61,7 +61,13 @@ MpcDecision MpcController::decide(const DecisionPoint& at, double lastSetpointK,
     const auto hold = [&](const std::string& why) {
         out.fallback = true;
         out.fallbackReason = why;
-        out.setpointK = std::clamp(nominal[0], lo, hi);
+        // The plan held may step at a later block's start by that block's whole move (the rate
+        // limit times its span); applied now it must still keep the rate limit from the setpoint
+        // in force (an LSTM that saw no effect of the hot air jumped 15 K in one second).
+        const double step = s.rateLimitKPerS * std::max(1, controlIntervalS);
+        out.setpointK =
+            std::clamp(std::clamp(nominal[0], lastSetpointK - step, lastSetpointK + step), lo, hi);
+        nominal[0] = out.setpointK;
         out.planK = nominal;
         m_plan = nominal;
         m_planOrigin = at.now;

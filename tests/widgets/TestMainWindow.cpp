@@ -27,6 +27,8 @@
 #include <QComboBox>
 #include <QFileDialog>
 #include <QHeaderView>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QMenuBar>
 #include <QPlainTextEdit>
@@ -47,6 +49,7 @@
 #include <QUndoStack>
 #include <QtTest>
 #include <fstream>
+#include <functional>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
 
@@ -646,6 +649,80 @@ private Q_SLOTS:
                  w.workbench().learntPart(control::ControllerKind::PgrlCc).learntOn);
         QVERIFY(!reopened.openProject(m_dir.filePath("plant/B01.csv"), &error)); // not a project
         QVERIFY(error.contains("not a DryTwin project"));
+
+        // The project file copied away from its data (its model and results beside it): the data
+        // are found where they were when saved.
+        const auto copyProject = [&](const QString& folder, const std::function<void(QJsonObject&)>& edit) {
+            QDir().mkpath(folder);
+            const QString to = QDir(folder).filePath("p.drytwin");
+            for (const QString& suffix : {QStringLiteral(".model.json"), QStringLiteral(".results.json")}) {
+                QFile::remove(to + suffix);
+                QFile::copy(project + suffix, to + suffix);
+            }
+            QFile in(project);
+            in.open(QIODevice::ReadOnly);
+            QJsonObject o = QJsonDocument::fromJson(in.readAll()).object();
+            edit(o);
+            QFile out(to);
+            out.open(QIODevice::WriteOnly | QIODevice::Truncate);
+            out.write(QJsonDocument(o).toJson());
+            return to;
+        };
+        const auto keep = [](QJsonObject& o) {
+            // As a copy elsewhere finds them: the relative paths lead nowhere.
+            for (const char* key : {"model_path", "results_path"}) {
+                o[key] = QStringLiteral("p.drytwin") +
+                         (QString(key) == "model_path" ? ".model.json" : ".results.json");
+                o[QString(key) + "_absolute"] = QString();
+            }
+        };
+        {
+            const QString moved = copyProject(m_dir.filePath("elsewhere/a/b"), keep);
+            MainWindow copy;
+            QVERIFY(copy.openProject(moved, &error));
+            QVERIFY(waitIdle(copy));
+            QCOMPARE(copy.dataPanel()->batchTable()->rowCount(), 2);
+            QCOMPARE(copy.workbench().model().parameters[properties::Param::k_HDT], kSaved);
+            QCOMPARE(copy.workbench().learntPart(control::ControllerKind::PgrlCc).state,
+                     widgets::PartState::Current);
+        }
+        // Its data gone: the model and the saved results still open, and the status says why.
+        {
+            const QString orphan = copyProject(m_dir.filePath("orphan"), [&](QJsonObject& o) {
+                keep(o);
+                o["data_path"] = QStringLiteral("../no such folder");
+                o["data_path_absolute"] = m_dir.filePath("no such folder");
+            });
+            MainWindow copy;
+            QVERIFY(copy.openProject(orphan, &error));
+            QVERIFY(waitIdle(copy));
+            QVERIFY(!copy.workbench().hasData());
+            QCOMPARE(copy.workbench().model().parameters[properties::Param::k_HDT], kSaved);
+            QVERIFY(copy.workbench().model().pgrlCc != nullptr);
+            QVERIFY(copy.workbench().latest().discover.has_value());
+            const QString said = copy.statusBar()->findChild<QLabel*>()->text();
+            QVERIFY2(said.contains("could not be opened") && said.contains("no such folder"),
+                     qPrintable(said));
+        }
+        // Its data changed (one batch file fewer): the learnt parts are stale, and the user is told.
+        {
+            const QString fewer = m_dir.filePath("fewer");
+            QDir().mkpath(fewer);
+            QFile::copy(m_data + "/B01.csv", fewer + "/B01.csv");
+            const QString changed = copyProject(m_dir.filePath("changed"), [&](QJsonObject& o) {
+                keep(o);
+                o["data_path"] = QStringLiteral("../fewer");
+                o["data_path_absolute"] = fewer;
+            });
+            MainWindow copy;
+            QVERIFY(copy.openProject(changed, &error));
+            QVERIFY(waitIdle(copy));
+            QCOMPARE(copy.dataPanel()->batchTable()->rowCount(), 1);
+            const auto& part = copy.workbench().learntPart(control::ControllerKind::PgrlCc);
+            QCOMPARE(part.state, widgets::PartState::Stale);
+            QVERIFY2(part.staleBecause.contains("changed since the project was saved"),
+                     qPrintable(part.staleBecause));
+        }
     }
 
     // Story 1: the tabs agree about the model. Train, then calibrate keeping the learnt models

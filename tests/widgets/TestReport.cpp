@@ -49,7 +49,15 @@ private Q_SLOTS:
         QFile html(files->at(0));
         QVERIFY(html.open(QIODevice::ReadOnly));
         const QString text = QString::fromUtf8(html.readAll());
-        QCOMPARE(text.count(QStringLiteral("<svg")), 8); // every figure inline
+        QCOMPARE(text.count(QStringLiteral("<svg")), 9); // every figure inline
+        // The residual's ACF on its own linear lag axis, the PSD on a logarithmic frequency axis:
+        // two figures (one stack shares its x axis, and drew lags 0-40 s on 0.001-1 Hz).
+        const auto acf = text.indexOf(QStringLiteral("Paper Fig. 4 (a)"));
+        const auto psd = text.indexOf(QStringLiteral("Paper Fig. 4 (b)"));
+        QVERIFY(acf > 0 && psd > acf);
+        QVERIFY(text.mid(0, acf).lastIndexOf(QStringLiteral("lag [s]")) >
+                text.mid(0, acf).lastIndexOf(QStringLiteral("<svg")));
+        QVERIFY(!text.contains(QStringLiteral("lag [s] / frequency [Hz]")));
         QVERIFY(text.contains(QStringLiteral("Paper Fig. 5")));
         // Numbers equal to the JSON beside it, in the report's own formatting.
         const auto json = [&](const char* name) {

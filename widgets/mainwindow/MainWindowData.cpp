@@ -14,6 +14,7 @@
 #include <QStandardPaths>
 #include <QTabWidget>
 #include <algorithm>
+#include <memory>
 #include <utility>
 
 namespace drytwin::widgets {
@@ -61,6 +62,27 @@ void MainWindow::connectDataLoading() {
         Q_EMIT loadFinished(true);
         m_mapButton->setVisible(false);
         m_workbench.simulate();
+        // A project's data that changed since it was saved (a batch file removed, rows added): the
+        // results and learnt parts restored below were made on the data as saved; say so, and
+        // mark the learnt parts stale, rather than show them as this data's.
+        const QString saved = std::exchange(m_pendingDataFingerprint, QString());
+        const QString now = dataFingerprint();
+        if (!saved.isEmpty() && saved != now) {
+            const QString why = tr("the data changed since the project was saved");
+            if (m_pendingParts) {
+                for (auto& part : *m_pendingParts) {
+                    if (part.state == PartState::Current) {
+                        part.state = PartState::Stale;
+                        part.staleBecause = why;
+                    }
+                }
+            }
+            showError(tr("Project data changed"),
+                      tr("The project's data are not what they were when it was saved (then: %1; now: %2). "
+                         "The results shown were made on the data as saved; run the steps again to update "
+                         "them.")
+                          .arg(saved, now.isEmpty() ? tr("nothing") : now));
+        }
         if (!m_pendingModel.isEmpty()) {
             m_workbench.openModel(m_pendingModel, std::exchange(m_pendingParts, std::nullopt));
             m_workbench.simulate(); // again, with the project's model
@@ -74,6 +96,32 @@ void MainWindow::connectDataLoading() {
                 // A file whose columns were not recognised: the way to the column mapping, at hand.
                 m_mapFile = mappingMayHelp ? path : QString();
                 m_mapButton->setVisible(mappingMayHelp);
+                // A project whose data are gone (moved, renamed): its model and saved results still
+                // open, so that nothing saved is lost from view; the failure itself is shown.
+                m_pendingDataFingerprint.clear();
+                if (!m_pendingModel.isEmpty() || m_pendingResults || m_pendingParts) {
+                    const QString note = tr("The project's data could not be opened from %1: its model and "
+                                            "saved results are shown. Open the data (File ▸ Open data set "
+                                            "folder…) to run anything on them.")
+                                             .arg(QDir::toNativeSeparators(path));
+                    // Said once the failure's own message (the load's end) and, with a model, the
+                    // model's opening (the next action to end) have been shown.
+                    auto said = std::make_shared<QMetaObject::Connection>();
+                    auto ends = std::make_shared<int>(m_pendingModel.isEmpty() ? 1 : 2);
+                    *said = connect(&m_workbench, &Workbench::actionFinished, this, [this, said, ends, note] {
+                        if (--*ends > 0) {
+                            return;
+                        }
+                        disconnect(*said);
+                        m_lastStatus = note;
+                        m_statusLabel->setText(note);
+                    });
+                    if (!m_pendingModel.isEmpty()) {
+                        m_workbench.openModel(m_pendingModel, std::exchange(m_pendingParts, std::nullopt));
+                        m_pendingModel.clear();
+                    }
+                    restorePending();
+                }
                 Q_EMIT loadFinished(false);
             });
 }

@@ -76,17 +76,29 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
     const auto fromProject = [&base](const QString& p) {
         return p.isEmpty() ? QString() : base.relativeFilePath(QFileInfo(p).absoluteFilePath());
     };
-    o[QStringLiteral("data_path")] = fromProject(m_workbench.dataPath());
-    o[QStringLiteral("model_path")] = fromProject(modelPath);
-    o[QStringLiteral("mapping_path")] = fromProject(m_workbench.mappingPath());
+    // Each path also absolute: a project file copied away from its data (mailed, moved into an
+    // archive folder) still finds them where they were.
+    const auto absolute = [](const QString& p) {
+        return p.isEmpty() ? QString() : QFileInfo(p).absoluteFilePath();
+    };
+    const auto withAbsolute = [&](const QString& key, const QString& p) {
+        o[key] = fromProject(p);
+        o[key + QStringLiteral("_absolute")] = absolute(p);
+    };
+    withAbsolute(QStringLiteral("data_path"), m_workbench.dataPath());
+    withAbsolute(QStringLiteral("model_path"), modelPath);
+    withAbsolute(QStringLiteral("mapping_path"), m_workbench.mappingPath());
     // The reference period discovery compares with: the project remembers it (issue #41).
-    o[QStringLiteral("reference_path")] = fromProject(m_workbench.referencePath());
+    withAbsolute(QStringLiteral("reference_path"), m_workbench.referencePath());
+    o[QStringLiteral("data_fingerprint")] = dataFingerprint();
     // Every data set opened in the window (a historian export with its mapping, a training
     // recording beside the plant's data), so that a reopened project can switch to them again.
     QJsonArray dataSets;
     for (const auto& e : m_workbench.dataSets()) {
         dataSets.append(QJsonObject{{QStringLiteral("path"), fromProject(e.path)},
+                                    {QStringLiteral("path_absolute"), absolute(e.path)},
                                     {QStringLiteral("mapping_path"), fromProject(e.mappingPath)},
+                                    {QStringLiteral("mapping_path_absolute"), absolute(e.mappingPath)},
                                     {QStringLiteral("label"), e.label}});
     }
     o[QStringLiteral("data_sets")] = dataSets;
@@ -96,7 +108,7 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
         batches.append(r.row());
     }
     o[QStringLiteral("selected_batches")] = batches;
-    o[QStringLiteral("results_path")] = fromProject(resultsPath);
+    withAbsolute(QStringLiteral("results_path"), resultsPath);
     QJsonArray parts;
     for (const auto& part : m_workbench.learntParts()) {
         parts.append(
@@ -148,8 +160,20 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
     }
     const QJsonObject o = doc.object();
     const QDir base = QFileInfo(path).absoluteDir();
-    const QString data = o.value(QStringLiteral("data_path")).toString();
-    const QString model = o.value(QStringLiteral("model_path")).toString();
+    // A path relative to the project file where it exists there (a folder moved with its data),
+    // else where it was when saved; relative, it is what the user reads in a message.
+    const auto resolve = [&base](const QJsonObject& from, const QString& key) {
+        const QString relative = from.value(key).toString();
+        if (relative.isEmpty()) {
+            return QString();
+        }
+        const QString here = QDir::cleanPath(base.filePath(relative));
+        const QString saved = from.value(key + QStringLiteral("_absolute")).toString();
+        return QFileInfo::exists(here) || saved.isEmpty() || !QFileInfo::exists(saved) ? here : saved;
+    };
+    const QString data = resolve(o, QStringLiteral("data_path"));
+    const QString model = resolve(o, QStringLiteral("model_path"));
+    m_pendingDataFingerprint = o.value(QStringLiteral("data_fingerprint")).toString();
     m_pendingTab = -1;
     const QString tab = o.value(QStringLiteral("tab")).toString();
     for (int i = 0; i < 8; ++i) {
@@ -163,12 +187,11 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
     }
     // Results and the learnt parts' states, put back once the data and the model are in.
     m_pendingResults.reset();
-    const QString resultsFile = o.value(QStringLiteral("results_path")).toString();
-    if (!resultsFile.isEmpty() && QFileInfo::exists(base.filePath(resultsFile))) {
-        QFile rf(base.filePath(resultsFile));
+    const QString resultsFile = resolve(o, QStringLiteral("results_path"));
+    if (!resultsFile.isEmpty() && QFileInfo::exists(resultsFile)) {
+        QFile rf(resultsFile);
         if (rf.open(QIODevice::ReadOnly)) {
-            auto parsed = workflow::parseLatestResults(rf.readAll().toStdString(),
-                                                       base.filePath(resultsFile).toStdString());
+            auto parsed = workflow::parseLatestResults(rf.readAll().toStdString(), resultsFile.toStdString());
             if (parsed) {
                 m_pendingResults = std::move(*parsed);
             } else {
@@ -194,26 +217,23 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
         }
         m_pendingParts = restored;
     }
-    if (!model.isEmpty() && QFileInfo::exists(base.filePath(model))) {
-        m_pendingModel = base.filePath(model);
+    if (!model.isEmpty() && QFileInfo::exists(model)) {
+        m_pendingModel = model;
     }
-    const QString mapping = o.value(QStringLiteral("mapping_path")).toString();
-    const QString reference = o.value(QStringLiteral("reference_path")).toString();
-    m_workbench.setReferencePath(reference.isEmpty() ? QString() : base.filePath(reference));
+    const QString mapping = resolve(o, QStringLiteral("mapping_path"));
+    m_workbench.setReferencePath(resolve(o, QStringLiteral("reference_path")));
     std::vector<DataSetEntry> dataSets;
     for (const auto& v : o.value(QStringLiteral("data_sets")).toArray()) {
         const QJsonObject e = v.toObject();
-        const QString setPath = e.value(QStringLiteral("path")).toString();
-        const QString setMapping = e.value(QStringLiteral("mapping_path")).toString();
+        const QString setPath = resolve(e, QStringLiteral("path"));
         if (!setPath.isEmpty()) {
-            dataSets.push_back({base.filePath(setPath),
-                                setMapping.isEmpty() ? QString() : base.filePath(setMapping),
+            dataSets.push_back({setPath, resolve(e, QStringLiteral("mapping_path")),
                                 e.value(QStringLiteral("label")).toString()});
         }
     }
     m_workbench.restoreDataSets(dataSets);
     if (!data.isEmpty()) {
-        m_workbench.openData(base.filePath(data), mapping.isEmpty() ? QString() : base.filePath(mapping));
+        m_workbench.openData(data, mapping);
     } else {
         if (!m_pendingModel.isEmpty()) {
             m_workbench.openModel(m_pendingModel, std::exchange(m_pendingParts, std::nullopt));
@@ -222,6 +242,17 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
         restorePending(); // no data: the results (an MPC run needs none) come back at once
     }
     return true;
+}
+
+QString MainWindow::dataFingerprint() const {
+    if (!m_workbench.hasData()) {
+        return {};
+    }
+    QStringList parts;
+    for (const auto& b : m_workbench.summary().batches) {
+        parts << QStringLiteral("%1:%2").arg(QString::fromStdString(b.id)).arg(b.rows);
+    }
+    return parts.join(QLatin1Char(' '));
 }
 
 void MainWindow::restorePending() {

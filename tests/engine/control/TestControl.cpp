@@ -250,6 +250,39 @@ private Q_SLOTS:
         QCOMPARE(f.setpointK, 440.0);
     }
 
+    /// A fallback holds the previous plan, which may step at a later block's start by that block's
+    /// whole move: applied, the setpoint must still keep the rate limit (an LSTM that saw no effect
+    /// of the hot air once jumped 15 K in one second).
+    void aFallbackKeepsTheRateLimit() {
+        const LinearProcess p;
+        control::MpcSettings settings;
+        auto model = std::make_unique<LinearForecaster>(p);
+        LinearForecaster* raw = model.get();
+        control::MpcController mpc(std::move(model), settings, 20.0);
+        data::SiBatch record;
+        for (int k = 0; k < 120; ++k) {
+            appendRow(record, 440, 440);
+            record.xOutDb.push_back(units::wetPctToDry(14.0)); // far from the setpoint: a plan that moves
+            record.tOutK.push_back(320);
+            record.xHdtDb.push_back(0.2);
+            record.tHdtK.push_back(330);
+        }
+        const auto d = mpc.decide(control::DecisionPoint{&record, 50}, 440, 13.0, 0.5, 2);
+        QVERIFY(!d.fallback);
+        const auto far = static_cast<std::size_t>(settings.horizonS / 2);
+        QVERIFY2(std::abs(d.planK.at(far) - d.setpointK) > 4 * settings.rateLimitKPerS,
+                 qPrintable(QStringLiteral("plan at %1 s: %2 K, now %3 K")
+                                .arg(far)
+                                .arg(d.planK.at(far))
+                                .arg(d.setpointK)));
+        raw->failing = true; // the next decision, far into that plan, falls back to it
+        const auto f = mpc.decide(control::DecisionPoint{&record, 50 + far}, d.setpointK, 13.0, 0.5, 2);
+        QVERIFY(f.fallback);
+        QVERIFY2(std::abs(f.setpointK - d.setpointK) <= 2 * settings.rateLimitKPerS + 1e-9,
+                 qPrintable(QStringLiteral("%1 K after %2 K").arg(f.setpointK).arg(d.setpointK)));
+        QVERIFY(f.setpointK != d.setpointK); // it follows the plan, as fast as the limit allows
+    }
+
     void mechanismOnsetLeavesTheStartAlone() {
         plant::PlantOptions o;
         o.samples = 400;
