@@ -1702,7 +1702,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="721"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="723"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
@@ -1723,7 +1723,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="42"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="727"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="729"/>
         <source>Score z: how strongly the model&apos;s error points at this cause, in standard deviations of chance; above about 3 is strong evidence.</source>
         <translation>得分 z：模型误差指向该原因的强度，以偶然波动的标准差计；约 3 以上为有力证据。</translation>
     </message>
@@ -1893,7 +1893,7 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="717"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
@@ -2121,7 +2121,7 @@
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="483"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="485"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
@@ -2130,62 +2130,62 @@
         <translation type="vanished">误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="498"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="500"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="503"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="505"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="515"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="517"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="522"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="524"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="537"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="539"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="542"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="544"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="542"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="544"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="545"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="547"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="549"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="551"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="567"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="569"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="573"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="575"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="556"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="558"/>
         <source>%1 was named on top of it (a further %2 % of the held-out error): alone it predicts worse (%3 times the held-out error), but the change needs both forms, so the data cannot say which of them it is.</source>
         <translation>在它之上又判定了 %1（再减少留出误差的 %2 %）：单独使用时预测更差（留出误差的 %3 倍），但这一变化需要两种形式共同解释，因此数据无法判断是其中哪一个。</translation>
     </message>
@@ -2215,57 +2215,57 @@
         <translation>%1 先被识别，随后撤回：与之后识别的原因一起重新拟合后，它并非产线的变化（它曾吸收了那些原因所解释的部分）。详情：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="451"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="452"/>
         <source>The reference holds %1 batch(es): a period&apos;s normal spread comes from thirds of them, which share their day and weather; a change named here may be a difference of conditions the reference never showed. A reference of several batches over the conditions the line runs in (weeks, seasons) judges better.</source>
         <translation>参考期仅含 %1 个批次：一个时段的正常离散取自其三等分，它们同属一天、同样天气；此处识别出的变化可能只是参考期从未出现过的工况差异。覆盖产线运行工况（数周、不同季节）的多批次参考期判断得更好。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="586"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="588"/>
         <source>%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts %4 better; which output a cause favours is the model&apos;s structure, so the data cannot tell them apart.</source>
         <translation>%1 同样拟合：总体上它留下 %2 倍的留出误差（p = %3），但它对%4的预测更好；原因偏向哪个输出取决于模型自身的结构，因此数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="592"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="594"/>
         <source>the outlet moisture</source>
         <translation>出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="593"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="595"/>
         <source>the outlet temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="594"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="596"/>
         <source>the tube-outlet moisture</source>
         <translation>管出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="595"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="597"/>
         <source>the tube-outlet temperature</source>
         <translation>管出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="599"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="601"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="600"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="602"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="607"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="609"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="619"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="621"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="623"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="625"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -2274,27 +2274,27 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="640"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="640"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="681"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="683"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="682"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="684"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="699"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="701"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2311,12 +2311,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="735"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="737"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="735"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="737"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2325,37 +2325,37 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="781"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="783"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="784"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="786"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="792"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="794"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="512"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="514"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="624"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="626"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="625"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="627"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="629"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="631"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
@@ -2364,82 +2364,82 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="702"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="704"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="712"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="714"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="218"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="713"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
         <source>, </source>
         <translation>、</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="635"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="637"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="716"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="718"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="802"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="804"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="818"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="820"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="827"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="829"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="834"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="836"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="839"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="841"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="847"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="849"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="857"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="859"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="614"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="858"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="876"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="616"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="860"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="886"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="859"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="861"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="614"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="860"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="880"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="616"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="862"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="890"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2454,17 +2454,17 @@
         <translation>它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="466"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="468"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="470"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="472"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the model&apos;s error there is judged beyond the reference&apos;s conditions, and an alarm there may be that condition rather than a change of the line.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="488"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="490"/>
         <source>the error follows %1 %2 s later (correlation %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（相关系数 %3）</translation>
     </message>
@@ -2473,92 +2473,92 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="667"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="669"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="721"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="723"/>
         <source>Change z</source>
         <translation>变化 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="724"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="726"/>
         <source>Change z: how far the cause&apos;s one-step estimate here lies from its normal value on the reference period, in units of both estimates&apos; errors and the spread between the reference&apos;s periods; above 2 it moved.</source>
         <translation>变化 z：该原因在此处的一步估计与其在参考期的正常值相差多远，以两次估计的误差及参考期各时段间的离散为单位；大于 2 即为发生了变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="742"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="744"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="756"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="758"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="763"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="765"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="777"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="779"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="822"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="824"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="861"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="863"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="862"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="872"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="875"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="885"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="875"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="885"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="876"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="886"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="879"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="889"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="879"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="889"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="880"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="890"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="904"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="914"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="905"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="915"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -2764,19 +2764,44 @@
         <translation>&lt;b&gt;培训&lt;/b&gt;：产线为学员实时运行；教员窗口可注入故障、冻结时钟并为回答评分。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="25"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="26"/>
         <source>The data set every tab shows; the others opened in this window stay here</source>
         <translation>各页显示的数据集；在本窗口打开过的其他数据集也保留在这里</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="31"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="32"/>
         <source>Data set:</source>
         <translation>数据集：</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="42"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="43"/>
         <source>none loaded</source>
         <translation>未加载</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="71"/>
+        <source>the data changed since the project was saved</source>
+        <translation>项目保存后数据已改变</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="80"/>
+        <source>Project data changed</source>
+        <translation>项目数据已改变</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="81"/>
+        <source>The project&apos;s data are not what they were when it was saved (then: %1; now: %2). The results shown were made on the data as saved; run the steps again to update them.</source>
+        <translation>项目的数据与保存时不同（当时：%1；现在：%2）。显示的结果基于保存时的数据；请重新运行各步骤以更新结果。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="84"/>
+        <source>nothing</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="103"/>
+        <source>The project&apos;s data could not be opened from %1: its model and saved results are shown. Open the data (File ▸ Open data set folder…) to run anything on them.</source>
+        <translation>无法从 %1 打开项目的数据：已显示其模型和保存的结果。请打开数据（文件 ▸ 打开数据集文件夹…）后再运行任何步骤。</translation>
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="24"/>
@@ -2962,22 +2987,22 @@
         <translation>项目已保存到 %1（模型、结果和视图）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="128"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="140"/>
         <source>Saving the project to %1…</source>
         <translation>正在保存项目到 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="176"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="199"/>
         <source>The project&apos;s results could not be read (%1); it opens without them.</source>
         <translation>无法读取项目的结果（%1）；项目将不带结果打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="241"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="272"/>
         <source>Wait until the running job has finished (or cancel it), then switch the language.</source>
         <translation>请等待当前任务完成（或取消它），然后再切换语言。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="274"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="305"/>
         <source>The training session under way was saved in %1 when the language changed: the instructor window&apos;s Session file ▸ Open session… continues it.</source>
         <translation>切换语言时，进行中的培训会话已保存到 %1：在教员窗口的 会话文件 ▸ 打开会话… 可继续。</translation>
     </message>
@@ -3081,14 +3106,14 @@
         <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="93"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="141"/>
         <source>Writing the bundled demo (10 batches of the virtual plant) to %1…</source>
         <translation>正在把自带演示数据（虚拟工厂的 10 个批次）写入 %1…</translation>
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="53"/>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="112"/>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="119"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="124"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="131"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -3097,12 +3122,12 @@
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="136"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="148"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="145"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="157"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>

@@ -8,6 +8,13 @@ import re
 import sys
 
 ZH = {
+    "the data changed since the project was saved": "项目保存后数据已改变",
+    "Project data changed": "项目数据已改变",
+    "The project's data are not what they were when it was saved (then: %1; now: %2). The results shown were made on the data as saved; run the steps again to update them.":
+        "项目的数据与保存时不同（当时：%1；现在：%2）。显示的结果基于保存时的数据；请重新运行各步骤以更新结果。",
+    "nothing": "无",
+    "The project's data could not be opened from %1: its model and saved results are shown. Open the data (File ▸ Open data set folder…) to run anything on them.":
+        "无法从 %1 打开项目的数据：已显示其模型和保存的结果。请打开数据（文件 ▸ 打开数据集文件夹…）后再运行任何步骤。",
     "%1 was named first, then withdrawn: refitted together with the causes named after it, it is no change of the line (it had taken up what they explain). In detail: %2.": "%1 先被识别，随后撤回：与之后识别的原因一起重新拟合后，它并非产线的变化（它曾吸收了那些原因所解释的部分）。详情：%2。",
     "The reference holds %1 batch(es): a period's normal spread comes from thirds of them, which share their day and weather; a change named here may be a difference of conditions the reference never showed. A reference of several batches over the conditions the line runs in (weeks, seasons) judges better.": "参考期仅含 %1 个批次：一个时段的正常离散取自其三等分，它们同属一天、同样天气；此处识别出的变化可能只是参考期从未出现过的工况差异。覆盖产线运行工况（数周、不同季节）的多批次参考期判断得更好。",
     "<p>The patterns left in the error below are within what the reference period shows: the data did not change against it.</p>": "<p>下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。</p>",
