@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <string>
 
@@ -26,6 +27,18 @@ int runMpc(const CommandOptions& o) {
         if (control::bundledScenarios().count(o.scenarioPath)) {
             options.bundledScenario = o.scenarioPath;
         } else {
+            std::error_code ec;
+            const bool bareName = o.scenarioPath.find_first_of("/\\.") == std::string::npos;
+            if (bareName && !std::filesystem::exists(o.scenarioPath, ec)) {
+                // A bare name that is not bundled: say which are, rather than "cannot open the file".
+                std::string names;
+                for (const auto& [name, text] : control::bundledScenarios()) {
+                    names += (names.empty() ? "" : ", ") + name;
+                }
+                return fail(Error{ErrorKind::Usage, "--scenario",
+                                  "\"" + o.scenarioPath + "\" is neither a bundled scenario (" + names +
+                                      ") nor an existing file"});
+            }
             options.scenarioPath = o.scenarioPath;
         }
     }
@@ -91,6 +104,7 @@ int runMpc(const CommandOptions& o) {
         "update), MAE of X_out [%% wb]\n%-20s",
         "model");
     bool header = false;
+    bool tooShort = false;
     for (const auto& run : r.runs) {
         if (!run.forecastCheck) {
             continue;
@@ -104,9 +118,17 @@ int runMpc(const CommandOptions& o) {
         }
         std::printf("%-20s", control::controllerName(run.kind));
         for (double m : run.forecastCheck->maePct) {
-            std::printf(" %11.4f", m);
+            if (std::isfinite(m)) {
+                std::printf(" %11.4f", m);
+            } else {
+                std::printf(" %11s", "n/a");
+                tooShort = true;
+            }
         }
         std::printf("\n");
+    }
+    if (tooShort) {
+        std::printf("n/a: the scenario's PI run is too short to score a forecast that far ahead.\n");
     }
     std::printf("\n%.1f s\n", result->ending.elapsedSeconds);
     if (result->ending.termination == Termination::StoppedKeptBest) {
@@ -115,6 +137,20 @@ int runMpc(const CommandOptions& o) {
     if (!o.jsonPath.empty()) {
         if (auto st = writeFileAtomically(o.jsonPath, io::mpcJson(r)); !st) {
             return fail(st.error());
+        }
+    }
+    // A controller asked for by name that could not run (a model file without that learnt part)
+    // is a failed request, not a result: the table says why, the exit code says it failed.
+    if (!o.controllers.empty()) {
+        std::string skipped;
+        for (const auto& run : r.runs) {
+            if (!run.ran && !run.skippedReason.empty()) {
+                skipped += (skipped.empty() ? "" : "; ") + std::string(control::controllerName(run.kind)) +
+                           ": " + run.skippedReason;
+            }
+        }
+        if (!skipped.empty()) {
+            return fail(Error{ErrorKind::BadInput, o.modelPath, "asked for, could not run: " + skipped});
         }
     }
     return 0;
