@@ -106,7 +106,7 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
                      100 * f.explainedFraction, 100 * f.explainedFractionFast, options.fastBandWindowS / 60);
     std::string text = format(
         "%s error before: bias %+.3g %s, within-batch trend %+.3g %s/h. With %s (%s = %.4g %s, 95 %% CI "
-        "[%.3g, %.3g]) and %s, the held-out MAE of X_out falls from %.3f to %.3f %% "
+        "[%.3g, %.3g]) and %s, the held-out MAE of X_out goes from %.3f to %.3f %% "
         "wb and of T_out from %.2f to %.2f °C (Diebold-Mariano p = %.2g); %s. Check on the plots: %s.",
         moisture ? "Outlet-moisture" : "Outlet-temperature", f.biasBefore, moisture ? "% wb" : "°C",
         f.trendPerHourBefore, moisture ? "% wb" : "°C", f.cause.c_str(), std::string(info.symbol).c_str(),

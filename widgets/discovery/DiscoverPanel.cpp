@@ -636,7 +636,7 @@ QString DiscoverPanel::evidenceText(const discovery::Finding& f) {
             : QString();
     return tr("%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, "
               "%10]) "
-              "and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out "
+              "and %18, the held-out MAE of X_out goes from %11 to %12 % wb and of T_out "
               "from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); "
               "%16. Check on the plots: %17.")
                .arg(moisture ? tr("Outlet-moisture") : tr("Outlet-temperature"))
