@@ -124,12 +124,6 @@ private:
 };
 
 std::unique_ptr<LstmFollowerState> TorchLstmNetwork::follower() const {
-    // A follower runs in a closed loop beside other controllers on their own threads (ClosedLoop:
-    // two at a time). Torch's operations split over its intra-op pool as the load allows, and the
-    // split changes the rounding: the same what-if gave an LSTM IAE of 1,811.8 and 1,804.3 %·s on
-    // two runs. One thread makes it reproducible; the network is small, so little is lost. Set
-    // here, where the forecasters are built before any run starts; training sets its own count.
-    torch::set_num_threads(1);
     return std::make_unique<TorchLstmFollower>(m_model);
 }
 
