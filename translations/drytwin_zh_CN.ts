@@ -2740,7 +2740,7 @@
     <message>
         <location filename="../widgets/MainWindow.cpp" line="72"/>
         <source>&lt;b&gt;Residual model&lt;/b&gt;: learns a correction of the physics model from the data (PGRL-CC, paper Eqs. 20–30) and scores it on held-out data beside the comparison models and the two trivial forecasts. Skill below 1 beats both.</source>
-        <translation>&lt;b&gt;残差模型&lt;/b&gt;：从数据学习物理模型的修正（PGRL-CC，论文公式 20–30），并在留出数据上与对比模型及两个平凡预测一起评分。技能小于 1 即优于二者。</translation>
+        <translation>&lt;b&gt;残差模型&lt;/b&gt;：从数据学习物理模型的修正（PGRL-CC，论文公式 20–30），并在留出数据上与对比模型及两个平凡预测一起评分。预报技巧小于 1 即优于二者。</translation>
     </message>
     <message>
         <location filename="../widgets/MainWindow.cpp" line="76"/>
@@ -2755,7 +2755,7 @@
     <message>
         <location filename="../widgets/MainWindow.cpp" line="84"/>
         <source>&lt;b&gt;What-if MPC&lt;/b&gt;: a scenario run against the virtual plant once per controller, an MPC on each model that exists and the plant&apos;s own PI loop, with the paper&apos;s Table 2 metrics.</source>
-        <translation>&lt;b&gt;假设分析 MPC&lt;/b&gt;：针对虚拟工厂，为每个控制器运行一次情景：每个已有模型上的 MPC 以及工厂自己的 PI 回路，并给出论文表 2 的指标。</translation>
+        <translation>&lt;b&gt;假设分析 MPC&lt;/b&gt;：针对虚拟装置，为每个控制器运行一次情景：每个已有模型上的 MPC 以及装置自己的 PI 回路，并给出论文表 2 的指标。</translation>
     </message>
     <message>
         <location filename="../widgets/MainWindow.cpp" line="88"/>
@@ -3097,7 +3097,7 @@
     <message>
         <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="137"/>
         <source>Generating plant data</source>
-        <translation>正在生成工厂数据</translation>
+        <translation>正在生成装置数据</translation>
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="138"/>
@@ -3112,7 +3112,7 @@
     <message>
         <location filename="../widgets/mainwindow/MainWindowData.cpp" line="141"/>
         <source>Writing the bundled demo (10 batches of the virtual plant) to %1…</source>
-        <translation>正在把自带演示数据（虚拟工厂的 10 个批次）写入 %1…</translation>
+        <translation>正在把自带演示数据（虚拟装置的 10 个批次）写入 %1…</translation>
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="53"/>
@@ -3328,7 +3328,7 @@
     <message>
         <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
         <source>Effort [K²]</source>
-        <translation>控制量 [K²]</translation>
+        <translation>控制动作量 [K²]</translation>
     </message>
     <message>
         <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
@@ -3358,7 +3358,7 @@
     <message>
         <location filename="../widgets/mpc/MpcPanel.cpp" line="74"/>
         <source>Effort: the squared moves of the hot-air setpoint, summed (K²); smaller is gentler on the burner.</source>
-        <translation>控制量：热风设定值各次调整的平方和（K²）；越小对燃烧器越温和。</translation>
+        <translation>控制动作量：热风设定值各次调整的平方和（K²）；越小对燃烧器越温和。</translation>
     </message>
     <message>
         <location filename="../widgets/mpc/MpcPanel.cpp" line="76"/>
@@ -3705,11 +3705,11 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>skill 1 step</source>
-        <translation>1 步技能值</translation>
+        <translation>1 步预报技巧</translation>
     </message>
     <message>
         <source>skill 30 steps</source>
-        <translation>30 步技能值</translation>
+        <translation>30 步预报技巧</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="72"/>
@@ -3723,7 +3723,7 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>skill: MAE over the better reference [-]</source>
-        <translation>技能值：MAE 与较优参考之比 [-]</translation>
+        <translation>预报技巧：MAE 与较优参考之比 [-]</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="78"/>
@@ -3822,14 +3822,14 @@ The results below are from the last complete run.</source>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="61"/>
         <source>skill
 1 step</source>
-        <translation>技能
+        <translation>预报技巧
 1 步</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="61"/>
         <source>skill
 30 steps</source>
-        <translation>技能
+        <translation>预报技巧
 30 步</translation>
     </message>
     <message>
@@ -3850,22 +3850,22 @@ The results below are from the last complete run.</source>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="67"/>
         <source>Skill one second ahead: the model&apos;s error over the better of two simple forecasts; below 1 it beats both.</source>
-        <translation>提前 1 秒的技能值：模型误差除以两个简单预测中较好者的误差；小于 1 即优于二者。</translation>
+        <translation>提前 1 秒的预报技巧：模型误差除以两个简单预测中较好者的误差；小于 1 即优于二者。</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="69"/>
         <source>Skill 30 seconds ahead, alike.</source>
-        <translation>提前 30 秒的技能值，含义相同。</translation>
+        <translation>提前 30 秒的预报技巧，含义相同。</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="75"/>
         <source>skill [-]</source>
-        <translation>技能 [-]</translation>
+        <translation>预报技巧 [-]</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="76"/>
         <source>Skill: a model&apos;s MAE over the better of the two reference forecasts at that horizon; below 1 it beats both</source>
-        <translation>技能：模型在该步长上的 MAE 除以两个参考预测中较好者的 MAE；小于 1 即优于二者</translation>
+        <translation>预报技巧：模型在该步长上的 MAE 除以两个参考预测中较好者的 MAE；小于 1 即优于二者</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="85"/>
@@ -3882,7 +3882,7 @@ extrapolation</source>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="87"/>
         <source>Learn the correction models to see their skill by forecast horizon</source>
-        <translation>学习修正模型后可看到其随预测步长的技能</translation>
+        <translation>学习修正模型后可看到其随预测步长的预报技巧</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="115"/>
@@ -3897,7 +3897,7 @@ extrapolation</source>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="154"/>
         <source>Steady gain of X_out to the hot-air setpoint [% wb per K] at the scenario&apos;s start: the plant (open-loop step test) %1; each model as its MPC saw it, and how far from the plant&apos;s: %2. A learnt residual&apos;s response to the setpoint plan comes from the physics model, since data under the plant&apos;s own loop cannot tell it from the disturbances the loop answered.</source>
-        <translation>情景起点处 X_out 对热风设定值的稳态增益 [% wb/K]：装置（开环阶跃试验）%1；各模型在其 MPC 中的增益及与装置的偏差：%2。学习得到的残差对设定值计划的响应取自物理模型，因为装置自身闭环下的数据无法将其与闭环所应对的扰动区分开。</translation>
+        <translation>情景起点处 X_out 对热风设定值的稳态增益 [% 湿基/K]：装置（开环阶跃试验）%1；各模型在其 MPC 中的增益及与装置的偏差：%2。学习得到的残差对设定值计划的响应取自物理模型，因为装置自身闭环下的数据无法将其与闭环所应对的扰动区分开。</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="183"/>
@@ -3922,7 +3922,7 @@ extrapolation</source>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="235"/>
         <source>skill 1 (ties the better reference)</source>
-        <translation>技能值 1（与较优参考持平）</translation>
+        <translation>预报技巧 1（与较优参考持平）</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="245"/>
@@ -3947,11 +3947,11 @@ extrapolation</source>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="297"/>
         <source>On %1, held-out part: %2 rows. Skill below 1 beats both reference predictors (the last measurement held, and the physics model with its last error held). R² below 0 means a model predicts worse than the batch&apos;s mean (hover an R² for what it says).</source>
-        <translation>数据 %1，留出部分：%2 行。技能小于 1 表示优于两个参考预测（保持最后测量值；物理模型保持最后误差）。R² 小于 0 表示模型预测比批次均值还差（鼠标悬停在 R² 上可看说明）。</translation>
+        <translation>数据 %1，留出部分：%2 行。预报技巧小于 1 表示优于两个参考预测（保持最后测量值；物理模型保持最后误差）。R² 小于 0 表示模型预测比批次均值还差（鼠标悬停在 R² 上可看说明）。</translation>
     </message>
     <message>
         <source>Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).</source>
-        <translation>留出部分：%1 行。技能值低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
+        <translation>留出部分：%1 行。预报技巧低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
     </message>
 </context>
 <context>
@@ -3995,7 +3995,7 @@ extrapolation</source>
     <message>
         <location filename="../widgets/mpc/ScenarioForm.cpp" line="100"/>
         <source>Plant</source>
-        <translation>工厂</translation>
+        <translation>装置</translation>
     </message>
     <message>
         <location filename="../widgets/mpc/ScenarioForm.cpp" line="101"/>
@@ -4086,7 +4086,7 @@ extrapolation</source>
     <message>
         <location filename="../widgets/mpc/ScenarioForm.cpp" line="148"/>
         <source>Hidden causes in the plant (no controller knows them)</source>
-        <translation>工厂中的隐藏原因（控制器均不知道）</translation>
+        <translation>装置中的隐藏原因（控制器均不知道）</translation>
     </message>
     <message>
         <location filename="../widgets/mpc/ScenarioForm.cpp" line="151"/>
