@@ -41,6 +41,18 @@ namespace drytwin::widgets {
 
 namespace {
 
+/// A legend item as small as it can be and still be read and clicked: Qwt's checkable items are
+/// framed buttons 30 px tall, and the What-if tab's ten of them took the moisture plot's room at
+/// 1280 x 800 (a newcomer's screenshot).
+void compactLegendLabel(QwtLegendLabel& label) {
+    label.setMargin(1);
+    label.setSpacing(4);
+    label.setIndent(2);
+    QFont f = label.font();
+    f.setPointSizeF(8.5);
+    label.setFont(f);
+}
+
 /// A canvas note that wraps within the canvas: QwtPlotTextLabel lays its text out at its unwrapped
 /// size, so a sentence wider than a narrow plot was cut at both ends.
 class WrappingTextLabel : public QwtPlotTextLabel {
@@ -182,8 +194,8 @@ int PlotStack::addPlot(const QString& yTitle) {
         // The top plot holds the legend, the bottom one the time axis: each a little more room.
         // In a stack of four or more (Training) the legend may take two rows: the top plot gets
         // more, so that its canvas keeps room for its axis title.
-        const int top = m_plots.size() > 3 ? 6 : 5;
-        m_layout->setStretch(static_cast<int>(i), i == 0 && m_plots.size() > 2 ? top
+        const int top = m_plots.size() > 3 || m_plots.size() == 2 ? 6 : 5;
+        m_layout->setStretch(static_cast<int>(i), i == 0 && m_plots.size() > 1 ? top
                                                   : i + 1 == m_plots.size()    ? 5
                                                                                : 4);
     }
@@ -366,6 +378,7 @@ QwtPlotCurve* PlotStack::addCurve(int index, const QString& name, const QVector<
             if (auto* label = qobject_cast<QwtLegendLabel*>(
                     legend->legendWidget(m_plots.front()->itemToInfo(standIn)))) {
                 label->setChecked(true);
+                compactLegendLabel(*label);
             }
         }
     }
@@ -373,6 +386,7 @@ QwtPlotCurve* PlotStack::addCurve(int index, const QString& name, const QVector<
     if (auto* legend = qobject_cast<QwtLegend*>(plot->legend())) {
         if (auto* label = qobject_cast<QwtLegendLabel*>(legend->legendWidget(plot->itemToInfo(c)))) {
             label->setChecked(true);
+            compactLegendLabel(*label);
         }
     }
     return c;
