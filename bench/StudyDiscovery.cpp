@@ -17,7 +17,7 @@
 //      a cause's share counted of the whole held-out error only, not of its change against the
 //      reference once a detector flags one; the rule before 2026-11-27, evening)] [--undetected-at-5-percent
 //      (with --reference: a cause named while no detector flags judged beyond its normal spread at
-//      z 1.96, not at the detectors' rate; the rule before 2026-11-28)] [--seeds FIRST (mechanism
+//      z 1.96, not at the detectors' rate; the rule before 2026-11-27, night)] [--seeds FIRST (mechanism
 //      runs' three seeds; default 101, onsets FIRST+100)] [--unimproved-alpha A (default 0.05; 1: the rule
 //      before)]
 //      [--no-constancy (an offset, wall loss or gas coupling not checked for constancy within the batch)]

@@ -146,7 +146,7 @@ struct DiscoveryOptions {
     /// Against a reference, while neither detector has flagged a change: a cause named then is
     /// itself the claim that the line changed, so its fitted change must pass at the rate a
     /// detector states (falseAlarmRate, Bonferroni over the round's candidates), not at the 5 %
-    /// that names a cause once a change is seen. false: z 1.96 either way, as before 2026-11-28.
+    /// that names a cause once a change is seen. false: z 1.96 either way, as before 2026-11-27 (night).
     bool undetectedChangeAtDetectorRate = true;
     Status validate() const;
 };
