@@ -2783,27 +2783,26 @@
         <translation>未加载</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="71"/>
         <source>the data changed since the project was saved</source>
         <translation>项目保存后数据已改变</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="80"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="75"/>
         <source>Project data changed</source>
         <translation>项目数据已改变</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="81"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="72"/>
         <source>The project&apos;s data are not what they were when it was saved (then: %1; now: %2). The results shown were made on the data as saved; run the steps again to update them.</source>
         <translation>项目的数据与保存时不同（当时：%1；现在：%2）。显示的结果基于保存时的数据；请重新运行各步骤以更新结果。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="84"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="74"/>
         <source>nothing</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="103"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="94"/>
         <source>The project&apos;s data could not be opened from %1: its model and saved results are shown. Open the data (File ▸ Open data set folder…) to run anything on them.</source>
         <translation>无法从 %1 打开项目的数据：已显示其模型和保存的结果。请打开数据（文件 ▸ 打开数据集文件夹…）后再运行任何步骤。</translation>
     </message>
@@ -3110,7 +3109,7 @@
         <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="141"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="132"/>
         <source>Writing the bundled demo (10 batches of the virtual plant) to %1…</source>
         <translation>正在把自带演示数据（虚拟装置的 10 个批次）写入 %1…</translation>
     </message>
@@ -3547,12 +3546,12 @@ The results below are from the last complete run.</source>
 <context>
     <name>drytwin::widgets::PlotStack</name>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="207"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="219"/>
         <source>Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click to zoom out, middle drag to pan</source>
         <translation>Ctrl+单击：游标 A，Shift+单击：游标 B，Alt+单击：时间游标；拖动放大，右键缩小，中键拖动平移</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="103"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="115"/>
         <source>Export…</source>
         <translation>导出…</translation>
     </message>
@@ -3561,62 +3560,62 @@ The results below are from the last complete run.</source>
         <translation>将这些图表保存为 PNG、SVG 或 PDF</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="104"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="116"/>
         <source>Save these plots as PNG, SVG or PDF, or their data as CSV</source>
         <translation>把这些曲线图保存为 PNG、SVG 或 PDF，或把数据保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="191"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="203"/>
         <source>time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="270"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="282"/>
         <source>No data yet</source>
         <translation>尚无数据</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="534"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="548"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="537"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="551"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="540"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="554"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="544"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="558"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="548"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="562"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="634"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="648"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="662"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="676"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
         <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="698"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="712"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="612"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="626"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
@@ -3625,7 +3624,7 @@ The results below are from the last complete run.</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="697"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="711"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
@@ -3634,12 +3633,12 @@ The results below are from the last complete run.</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="704"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="718"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="706"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="720"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>

@@ -86,6 +86,8 @@ public:
     static QString aboutText();
     /// @brief The status line with no data: where to open data, and the bundled demo.
     static QString noDataHint();
+    /// @brief What opening the last project warned of (its data changed since it was saved), or empty.
+    QString projectWarning() const { return m_projectWarning; }
     /// @brief An engine progress stage ("calibrate") in the user's language ("Calibrating").
     static QString stageText(const QString& stage);
     /// @brief Help ▸ User guide: the workflow, shipped as a resource, in the window's language.
@@ -157,6 +159,7 @@ private:
     /// data are in again: a batch file removed or changed since then makes the restored results
     /// and learnt parts stale, and the user is told (empty: no project being opened).
     QString m_pendingDataFingerprint;
+    QString m_projectWarning; ///< what opening the last project warned of (its data changed), or empty
     QString dataFingerprint() const;
 };
 

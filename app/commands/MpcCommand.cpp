@@ -71,9 +71,11 @@ int runMpc(const CommandOptions& o) {
     }
     const auto& r = result->closedLoop;
     std::printf(
-        "Scenario %s: %d scored steps of 1 s after %d s of PI warm-up, MPC every %d s, band ±%.2f %% wb\n",
-        r.scenario.name.c_str(), r.scenario.lengthS, r.scenario.warmupS, r.scenario.controlIntervalS,
-        r.scenario.bandPct);
+        "Scenario %s on DryTwin's virtual %s plant (%s instruments): %d scored steps of 1 s after %d s "
+        "of PI warm-up, MPC every %d s, band ±%.2f %% wb\n",
+        r.scenario.name.c_str(), std::string(plant::plantKindName(r.scenario.plant)).c_str(),
+        std::string(r.scenario.instrumentsName()).c_str(), r.scenario.lengthS, r.scenario.warmupS,
+        r.scenario.controlIntervalS, r.scenario.bandPct);
     std::printf("\n%-20s %12s %12s %10s %11s %11s %11s %9s %12s\n", "controller", "IAE [%*s]", "effort [K^2]",
                 "viol. [%]", "solve med", "solve max", "model med", "fallback", "gain [%/K]");
     for (const auto& run : r.runs) {

@@ -318,4 +318,13 @@ Expected<Scenario> loadScenario(const std::string& path) {
     return parseScenario(ss.str(), path);
 }
 
+std::string_view Scenario::instrumentsName() const {
+    if (sensors == plant::SensorMode::Ideal) {
+        return "ideal";
+    }
+    const bool realistic = sensors == plant::SensorMode::Realistic ||
+                           (sensors == plant::SensorMode::Default && plant == plant::PlantKind::Distributed);
+    return realistic ? "realistic" : "builtin";
+}
+
 } // namespace drytwin::control

@@ -57,6 +57,9 @@ struct Scenario {
     /// which every scenario ran on before the distributed plant existed).
     plant::PlantKind plant = plant::PlantKind::Lumped;
     plant::SensorMode sensors = plant::SensorMode::Default; ///< file key "sensors": realistic | ideal
+    /// The instruments the scenario's plant reads with, as a word: "realistic", "ideal", or
+    /// "builtin" (the lumped plant's own small noise), so that a result says which line it ran on.
+    std::string_view instrumentsName() const;
     bool unmeasuredDrift = true;
     std::vector<SetpointStep> setpointSteps;
     std::vector<InputChange> inputChanges;

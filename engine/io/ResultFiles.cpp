@@ -126,7 +126,10 @@ std::string mpcJson(const control::ClosedLoopResult& result) {
                      {"seed", sc.seed},
                      {"warmup_s", sc.warmupS},
                      {"control_interval_s", sc.controlIntervalS},
-                     {"band_pct", sc.bandPct}};
+                     {"band_pct", sc.bandPct},
+                     // Which line it ran against: a file without "plant" runs on the lumped one.
+                     {"plant", std::string(plant::plantKindName(sc.plant))},
+                     {"sensors", std::string(sc.instrumentsName())}};
     j["units"] = {{"iae", "% wb * s"},
                   {"effort", "K^2"},
                   {"violation_pct", "% of steps"},

@@ -394,9 +394,9 @@ void Workbench::restoreResults(const workflow::LatestResults& results) {
 
 void Workbench::restoreLearntParts(const std::array<LearntPart, 3>& parts) {
     for (std::size_t i = 0; i < m_parts.size(); ++i) {
-        // Only what the open model agrees with: a part saved as current or stale must be in the model.
+        // Only what the open model agrees with: a part saved as current must be in the model.
         const bool holds = holdsPart(m_model, m_parts[i].kind);
-        if (parts[i].kind == m_parts[i].kind && (parts[i].state != PartState::Absent) == holds) {
+        if (parts[i].kind == m_parts[i].kind && (parts[i].state == PartState::Current) == holds) {
             m_parts[i] = parts[i];
         }
     }

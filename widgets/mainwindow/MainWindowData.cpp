@@ -63,25 +63,16 @@ void MainWindow::connectDataLoading() {
         m_mapButton->setVisible(false);
         m_workbench.simulate();
         // A project's data that changed since it was saved (a batch file removed, rows added): the
-        // results and learnt parts restored below were made on the data as saved; say so, and
-        // mark the learnt parts stale, rather than show them as this data's.
+        // results and learnt parts restored below were made on the data as saved; say so rather
+        // than show them as this data's (each learnt part still names the data it was learnt on).
         const QString saved = std::exchange(m_pendingDataFingerprint, QString());
         const QString now = dataFingerprint();
         if (!saved.isEmpty() && saved != now) {
-            const QString why = tr("the data changed since the project was saved");
-            if (m_pendingParts) {
-                for (auto& part : *m_pendingParts) {
-                    if (part.state == PartState::Current) {
-                        part.state = PartState::Stale;
-                        part.staleBecause = why;
-                    }
-                }
-            }
-            showError(tr("Project data changed"),
-                      tr("The project's data are not what they were when it was saved (then: %1; now: %2). "
-                         "The results shown were made on the data as saved; run the steps again to update "
-                         "them.")
-                          .arg(saved, now.isEmpty() ? tr("nothing") : now));
+            m_projectWarning =
+                tr("The project's data are not what they were when it was saved (then: %1; now: %2). "
+                   "The results shown were made on the data as saved; run the steps again to update them.")
+                    .arg(saved, now.isEmpty() ? tr("nothing") : now);
+            showError(tr("Project data changed"), m_projectWarning);
         }
         if (!m_pendingModel.isEmpty()) {
             m_workbench.openModel(m_pendingModel, std::exchange(m_pendingParts, std::nullopt));

@@ -17,25 +17,30 @@ using plant::Mechanism;
 
 namespace {
 
+/// Four batches of 3,000 s of the plant @p o describes (as study_discovery --reference runs).
+std::vector<data::SiBatch> runFourBatches(plant::PlantOptions o) {
+    o.batches = 4;
+    o.samples = 3000;
+    auto r = plant::runPlant(o);
+    if (!r) {
+        qFatal("%s", r.error().message().c_str());
+    }
+    return plant::toSiBatches(*r, o.seed);
+}
+
 std::vector<data::SiBatch> plantData(unsigned seed, const std::map<Mechanism, double>& effects = {},
                                      const std::map<Mechanism, double>& onsets = {}) {
     plant::PlantOptions o;
     o.plant = plant::PlantKind::Distributed;
     o.sensors = plant::SensorMode::Realistic;
     o.seed = seed;
-    o.batches = 4;
-    o.samples = 3000;
     for (const auto& [m, s] : effects) {
         o.effects[m] = s;
     }
     for (const auto& [m, t] : onsets) {
         o.effectOnsetS[m] = t;
     }
-    auto r = plant::runPlant(o);
-    if (!r) {
-        qFatal("%s", r.error().message().c_str());
-    }
-    return plant::toSiBatches(*r, o.seed);
+    return runFourBatches(o);
 }
 
 const std::vector<data::SiBatch>& healthyReference() {
@@ -195,18 +200,10 @@ private Q_SLOTS:
     /// error, the one its entry in the coupling's finding gives (it once gave the offset's).
     void aRoundTellsTheNumbersOfTheCauseItNamed() {
         const auto lumped = [](unsigned seed, const std::map<Mechanism, double>& effects) {
-            plant::PlantOptions o;
-            o.plant = plant::PlantKind::Lumped;
-            o.sensors = plant::SensorMode::Default; // "builtin"
+            plant::PlantOptions o; // the lumped plant with its built-in instruments
             o.seed = seed;
-            o.batches = 4;
-            o.samples = 3000;
             o.effects = effects;
-            auto r = plant::runPlant(o);
-            if (!r) {
-                qFatal("%s", r.error().message().c_str());
-            }
-            return plant::toSiBatches(*r, o.seed);
+            return runFourBatches(o);
         };
         auto r = discovery::discoverChange(
             lumped(7101, {}), lumped(101, {{Mechanism::GasPhaseCoupling, 0.25}}), hybrid::HybridModel{});
@@ -226,18 +223,11 @@ private Q_SLOTS:
     /// cause is itself the claim that the line changed: it must pass at a detector's stated rate.
     void anUndetectedChangeIsJudgedAtTheDetectorsRate() {
         const auto lumpedWithDrift = [](unsigned seed) {
-            plant::PlantOptions o;
-            o.plant = plant::PlantKind::Lumped;
+            plant::PlantOptions o; // the lumped plant, drift, no sensor faults (as the study's null)
             o.seed = seed;
-            o.batches = 4;
-            o.samples = 3000;
             o.unmeasuredDrift = true;
             o.sensorFaults = plant::SensorFaultRates{0, 0, 0};
-            auto r = plant::runPlant(o);
-            if (!r) {
-                qFatal("%s", r.error().message().c_str());
-            }
-            return plant::toSiBatches(*r, o.seed);
+            return runFourBatches(o);
         };
         const auto ref = lumpedWithDrift(7206);
         const auto data = lumpedWithDrift(206);
