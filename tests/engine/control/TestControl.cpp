@@ -82,6 +82,20 @@ void appendRow(data::SiBatch& b, double hotK, double spK) {
     b.rhAmb.push_back(0.5);
 }
 
+/// @p rows rows of a line held at 440 K whose outlet reads 14 % wb, far from a 13 % wb setpoint: an
+/// MPC's plan moves the hot air.
+data::SiBatch recordFarFromSetpoint(int rows) {
+    data::SiBatch record;
+    for (int k = 0; k < rows; ++k) {
+        appendRow(record, 440, 440);
+        record.xOutDb.push_back(units::wetPctToDry(14.0));
+        record.tOutK.push_back(320);
+        record.xHdtDb.push_back(0.2);
+        record.tHdtK.push_back(330);
+    }
+    return record;
+}
+
 /// A session opened on virtual-plant batches written into @p dir (false on any failure).
 bool openPlantData(const QTemporaryDir& dir, const plant::PlantOptions& plantOptions, workflow::Session& s) {
     workflow::GenerateOptions g;
@@ -230,14 +244,7 @@ private Q_SLOTS:
         auto model = std::make_unique<LinearForecaster>(p);
         LinearForecaster* raw = model.get();
         control::MpcController mpc(std::move(model), settings, 20.0);
-        data::SiBatch record;
-        for (int k = 0; k < 50; ++k) {
-            appendRow(record, 440, 440);
-            record.xOutDb.push_back(units::wetPctToDry(14.0)); // far from the setpoint
-            record.tOutK.push_back(320);
-            record.xHdtDb.push_back(0.2);
-            record.tHdtK.push_back(330);
-        }
+        data::SiBatch record = recordFarFromSetpoint(50);
         record.xOutDb.push_back(units::wetPctToDry(14.0));
         const auto d = mpc.decide(control::DecisionPoint{&record, 50}, 440, 13.0, 0.5, 2);
         QVERIFY(d.fallback);
@@ -259,14 +266,7 @@ private Q_SLOTS:
         auto model = std::make_unique<LinearForecaster>(p);
         LinearForecaster* raw = model.get();
         control::MpcController mpc(std::move(model), settings, 20.0);
-        data::SiBatch record;
-        for (int k = 0; k < 120; ++k) {
-            appendRow(record, 440, 440);
-            record.xOutDb.push_back(units::wetPctToDry(14.0)); // far from the setpoint: a plan that moves
-            record.tOutK.push_back(320);
-            record.xHdtDb.push_back(0.2);
-            record.tHdtK.push_back(330);
-        }
+        const data::SiBatch record = recordFarFromSetpoint(120);
         const auto d = mpc.decide(control::DecisionPoint{&record, 50}, 440, 13.0, 0.5, 2);
         QVERIFY(!d.fallback);
         const auto far = static_cast<std::size_t>(settings.horizonS / 2);

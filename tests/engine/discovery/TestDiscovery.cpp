@@ -1,7 +1,7 @@
 // Discovery on virtual-plant data with an effect hidden in it: the test must find it from the
 // data alone. The plant writes every mechanism in its own, richer form (docs/mechanisms.md), and
 // the seed (21) is not one the settings were chosen on (12-14).
-#include "RoundsAgree.h"
+#include "DiscoveryTestSupport.h"
 #include "discovery/Discovery.h"
 #include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
@@ -17,13 +17,7 @@ namespace {
 
 std::vector<data::SiBatch> plantData(plant::PlantOptions o) {
     o.seed = 21;
-    o.batches = 4;
-    o.samples = 3000;
-    auto r = plant::runPlant(o);
-    if (!r) {
-        qFatal("%s", r.error().message().c_str());
-    }
-    return plant::toSiBatches(*r, o.seed);
+    return test::fourBatchesOf(o);
 }
 
 discovery::DiscoveryResult discoverIn(const plant::PlantOptions& o) {

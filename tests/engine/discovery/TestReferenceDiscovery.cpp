@@ -1,7 +1,7 @@
 // What changed against a reference period (issue #41), on the distributed plant with realistic
 // sensors: the model is commissioned on healthy data of one seed and judged on data of another.
 // The seeds (41-44) are not the study's (101-103 and their references 7101-7103).
-#include "RoundsAgree.h"
+#include "DiscoveryTestSupport.h"
 #include "discovery/Discovery.h"
 #include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
@@ -17,17 +17,6 @@ using plant::Mechanism;
 
 namespace {
 
-/// Four batches of 3,000 s of the plant @p o describes (as study_discovery --reference runs).
-std::vector<data::SiBatch> runFourBatches(plant::PlantOptions o) {
-    o.batches = 4;
-    o.samples = 3000;
-    auto r = plant::runPlant(o);
-    if (!r) {
-        qFatal("%s", r.error().message().c_str());
-    }
-    return plant::toSiBatches(*r, o.seed);
-}
-
 std::vector<data::SiBatch> plantData(unsigned seed, const std::map<Mechanism, double>& effects = {},
                                      const std::map<Mechanism, double>& onsets = {}) {
     plant::PlantOptions o;
@@ -40,7 +29,7 @@ std::vector<data::SiBatch> plantData(unsigned seed, const std::map<Mechanism, do
     for (const auto& [m, t] : onsets) {
         o.effectOnsetS[m] = t;
     }
-    return runFourBatches(o);
+    return test::fourBatchesOf(o);
 }
 
 const std::vector<data::SiBatch>& healthyReference() {
@@ -203,7 +192,7 @@ private Q_SLOTS:
             plant::PlantOptions o; // the lumped plant with its built-in instruments
             o.seed = seed;
             o.effects = effects;
-            return runFourBatches(o);
+            return test::fourBatchesOf(o);
         };
         auto r = discovery::discoverChange(
             lumped(7101, {}), lumped(101, {{Mechanism::GasPhaseCoupling, 0.25}}), hybrid::HybridModel{});
@@ -227,7 +216,7 @@ private Q_SLOTS:
             o.seed = seed;
             o.unmeasuredDrift = true;
             o.sensorFaults = plant::SensorFaultRates{0, 0, 0};
-            return runFourBatches(o);
+            return test::fourBatchesOf(o);
         };
         const auto ref = lumpedWithDrift(7206);
         const auto data = lumpedWithDrift(206);

@@ -1,12 +1,27 @@
 #pragma once
-// Shared by the discovery tests: a round and the finding it named must tell the same numbers.
+// Shared by the discovery tests: the virtual plant's data as the studies take them, and a check
+// that a round and the finding it named tell the same numbers.
 
 #include "discovery/Discovery.h"
+#include "plant/PlantExport.h"
+#include "plant/VirtualPlant.h"
 
 #include <QString>
+#include <QtGlobal>
 #include <algorithm>
 
 namespace drytwin::test {
+
+/// Four batches of 3,000 s of the plant @p o describes (as study_discovery runs them).
+inline std::vector<data::SiBatch> fourBatchesOf(plant::PlantOptions o) {
+    o.batches = 4;
+    o.samples = 3000;
+    auto r = plant::runPlant(o);
+    if (!r) {
+        qFatal("%s", r.error().message().c_str());
+    }
+    return plant::toSiBatches(*r, o.seed);
+}
 
 /// Empty when each round that named a cause reports that cause's held-out numbers, as its finding
 /// (or, for a look-alike folded into another finding, that finding's entry for it) does; else what
