@@ -2614,54 +2614,55 @@
     <name>drytwin::widgets::LineView3D</name>
     <message>
         <location filename="../widgets/view3d/LineView3D.cpp" line="73"/>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="319"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="333"/>
         <source>moisture [% wb]</source>
         <translation>含水率 [% 湿基]</translation>
     </message>
     <message>
         <location filename="../widgets/view3d/LineView3D.cpp" line="73"/>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="319"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="333"/>
         <source>temperature [°C]</source>
         <translation>温度 [°C]</translation>
     </message>
     <message>
         <location filename="../widgets/view3d/LineView3D.cpp" line="76"/>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="98"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="100"/>
         <source>Play</source>
         <translation>播放</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="78"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="80"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="316"/>
         <source>Simulate the model to see the parcels.</source>
         <translation>运行模型仿真以查看物料团。</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="82"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="84"/>
         <source>Batch</source>
         <translation>批次</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="98"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="100"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="181"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="187"/>
         <source>drying tube</source>
         <translation>干燥管</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="182"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="188"/>
         <source>conveyor</source>
         <translation>输送机</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="183"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="189"/>
         <source>winnower</source>
         <translation>风选机</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="300"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="306"/>
         <source>%1 s of %2</source>
         <translation>%1 s / %2</translation>
     </message>

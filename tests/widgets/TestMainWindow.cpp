@@ -398,6 +398,8 @@ private Q_SLOTS:
     void mainFlowsThroughTheWidgets() {
         MainWindow w;
         w.show();
+        // The 3D line with nothing simulated: no time to move through (its scale is hidden too).
+        QVERIFY(!w.lineView()->slider()->isEnabled());
         w.openDataSet(m_data);
         QVERIFY(waitIdle(w));
         // Data: both batches listed, every column plotted for the selected one.
@@ -594,6 +596,7 @@ private Q_SLOTS:
         QTest::qWait(200);
         w.lineView()->slider()->setValue(300);
         QVERIFY(w.lineView()->parcelCount() > 50);
+        QVERIFY(w.lineView()->slider()->isEnabled());
         QCOMPARE(w.dataPanel()->plots()->timeCursor(), 300.0);
         const auto range = w.lineView()->colourRange();
         QVERIFY(range.first < range.second);

@@ -75,6 +75,8 @@ LineView3D::LineView3D(Workbench& workbench, QWidget* parent) : QWidget(parent),
     m_slider->setRange(0, 0);
     m_play = new QPushButton(tr("Play"));
     m_play->setCheckable(true);
+    m_play->setEnabled(false); // until there are parcels (updateParcels)
+    m_slider->setEnabled(false);
     m_clock = new QLabel(tr("Simulate the model to see the parcels."));
     m_timer = new QTimer(this);
     m_timer->setInterval(40); // 25 Hz: ten seconds of the batch per frame
@@ -172,6 +174,10 @@ void LineView3D::buildScene() {
     m_bar->SetWidth(0.08);
     m_bar->SetHeight(0.6);
     m_bar->SetPosition(0.02, 0.2); // left, clear of the line
+    // Room between the title and the top value, which overlapped at 1280 x 800.
+    m_bar->SetVerticalTitleSeparation(12);
+    // No scale until there are parcels to colour: an empty line showed an invented 0–1 % wb.
+    m_bar->SetVisibility(false);
     m_renderer->AddViewProp(m_bar);
     // Section names above each section, in the window's language. VTK's own font has no CJK
     // glyphs: a font file that has them is used where one is installed (fonts-wqy-zenhei).
@@ -302,10 +308,18 @@ void LineView3D::updateParcels() {
     }
     m_parcels->SetPoints(points);
     m_parcels->GetPointData()->SetScalars(values);
-    if (values->GetNumberOfTuples() > 0) {
+    const bool drawn = values->GetNumberOfTuples() > 0;
+    if (drawn) {
         values->GetRange(m_range);
         m_lut->SetTableRange(m_range[0], m_range[1] > m_range[0] ? m_range[1] : m_range[0] + 1e-6);
+    } else {
+        m_clock->setText(tr("Simulate the model to see the parcels."));
+        m_play->setChecked(false);
     }
+    // Nothing to play or scale without parcels.
+    m_bar->SetVisibility(drawn);
+    m_play->setEnabled(drawn);
+    m_slider->setEnabled(drawn);
     m_parcels->Modified();
     // Hidden (another tab), the scene is only updated: every move of the shared time cursor
     // rendered it before, for nobody. The widget renders the updated scene when it is shown.
