@@ -2685,9 +2685,72 @@
         <translation>模型</translation>
     </message>
     <message>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="21"/>
+        <source>open data</source>
+        <translation>打开数据</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="24"/>
         <location filename="../widgets/MainWindow.cpp" line="50"/>
         <source>Calibrate</source>
         <translation>标定</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="27"/>
+        <source>Learn the correction models (Residual model tab)</source>
+        <translation>学习修正模型（残差模型页）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="30"/>
+        <source>Ablation (Residual model tab)</source>
+        <translation>消融实验（残差模型页）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="36"/>
+        <source>Run scenario (What-if MPC tab)</source>
+        <translation>运行情景（假设分析 MPC 页）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="43"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="79"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="89"/>
+        <source>Export report</source>
+        <translation>导出报告</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="44"/>
+        <source>the report needs every step&apos;s result; still to run: %1</source>
+        <translation>报告需要每一步的结果；尚需运行：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="49"/>
+        <source>cannot create the folder</source>
+        <translation>无法创建该文件夹</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="64"/>
+        <source>DryTwin workbench: data %1, model %2</source>
+        <translation>DryTwin 工作台：数据 %1，模型 %2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="67"/>
+        <source>as built in this window (save it with File ▸ Save model as…)</source>
+        <translation>本窗口中构建的模型（用 文件 ▸ 模型另存为… 保存）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="79"/>
+        <source>The report needs every step&apos;s result; still to run: %1.</source>
+        <translation>报告需要每一步的结果；尚需运行：%1。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="83"/>
+        <source>Export report into folder</source>
+        <translation>将报告导出到文件夹</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="93"/>
+        <source>Report written: %1</source>
+        <translation>报告已写入：%1</translation>
     </message>
     <message>
         <location filename="../widgets/MainWindow.cpp" line="51"/>
@@ -2700,6 +2763,7 @@
         <translation>诊断</translation>
     </message>
     <message>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="33"/>
         <location filename="../widgets/MainWindow.cpp" line="53"/>
         <source>Discover</source>
         <translation>发现</translation>
@@ -2921,7 +2985,7 @@
     <message>
         <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="66"/>
         <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="69"/>
-        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="149"/>
+        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="151"/>
         <source>Open project</source>
         <translation>打开项目</translation>
     </message>
@@ -2951,27 +3015,32 @@
         <translation>项目另存为…</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="92"/>
+        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="93"/>
+        <source>Export &amp;report…</source>
+        <translation>导出报告(&amp;R)…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="94"/>
         <source>Recent projects</source>
         <translation>最近的项目</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="95"/>
+        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="97"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="98"/>
+        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="100"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="99"/>
+        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="101"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="117"/>
+        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="119"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
@@ -3015,27 +3084,27 @@
         <translation>语言将在 DryTwin 重新启动后生效。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="121"/>
+        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="123"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="122"/>
+        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="124"/>
         <source>&amp;User guide</source>
         <translation>用户指南(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="125"/>
+        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="127"/>
         <source>&amp;About DryTwin</source>
         <translation>关于 DryTwin(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="126"/>
+        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="128"/>
         <source>About DryTwin</source>
         <translation>关于 DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="127"/>
+        <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="129"/>
         <source>About &amp;Qt</source>
         <translation>关于 Qt(&amp;Q)</translation>
     </message>

@@ -8,6 +8,19 @@ import re
 import sys
 
 ZH = {
+    "open data": "打开数据",
+    "Learn the correction models (Residual model tab)": "学习修正模型（残差模型页）",
+    "Ablation (Residual model tab)": "消融实验（残差模型页）",
+    "Run scenario (What-if MPC tab)": "运行情景（假设分析 MPC 页）",
+    "Export report": "导出报告",
+    "the report needs every step's result; still to run: %1": "报告需要每一步的结果；尚需运行：%1",
+    "cannot create the folder": "无法创建该文件夹",
+    "DryTwin workbench: data %1, model %2": "DryTwin 工作台：数据 %1，模型 %2",
+    "as built in this window (save it with File ▸ Save model as…)": "本窗口中构建的模型（用 文件 ▸ 模型另存为… 保存）",
+    "The report needs every step's result; still to run: %1.": "报告需要每一步的结果；尚需运行：%1。",
+    "Export report into folder": "将报告导出到文件夹",
+    "Report written: %1": "报告已写入：%1",
+    "Export &report…": "导出报告(&R)…",
     "the data changed since the project was saved": "项目保存后数据已改变",
     "Project data changed": "项目数据已改变",
     "The project's data are not what they were when it was saved (then: %1; now: %2). The results shown were made on the data as saved; run the steps again to update them.":

@@ -86,6 +86,10 @@ public:
     static QString aboutText();
     /// @brief The status line with no data: where to open data, and the bundled demo.
     static QString noDataHint();
+    /// @brief The steps still to run before File ▸ Export report… can write the report (empty: ready).
+    QStringList reportMissingSteps() const;
+    /// @brief Writes the pipeline's report (HTML and PDF) from this window's results into @p folder.
+    Expected<QStringList> exportReport(const QString& folder) const;
     /// @brief What opening the last project warned of (its data changed since it was saved), or empty.
     QString projectWarning() const { return m_projectWarning; }
     /// @brief An engine progress stage ("calibrate") in the user's language ("Calibrating").
@@ -121,6 +125,7 @@ private:
     void setBusy(bool busy);
     void rememberRecent(const QString& path);
     void fillRecent();
+    void askAndExportReport();
     void showError(const QString& title, const QString& message);
     /// Puts back a reopened project's results and learnt parts' states.
     void restorePending();

@@ -591,6 +591,21 @@ private Q_SLOTS:
         QVERIFY2(mpc->note()->text().contains("line 3"), qPrintable(mpc->note()->text()));
         QVERIFY(w.workbench().latest().mpc.has_value());
 
+        // File ▸ Export report…: it names what is still to run, then writes the pipeline's report
+        // of this window's work.
+        QVERIFY2(w.reportMissingSteps() == QStringList{"Ablation (Residual model tab)"},
+                 qPrintable(w.reportMissingSteps().join(", ")));
+        const auto early = w.exportReport(m_dir.filePath("report"));
+        QVERIFY(!early && early.error().message().find("Ablation") != std::string::npos);
+        w.workbench().ablation();
+        QVERIFY(waitIdle(w, 300000));
+        const auto report = w.exportReport(m_dir.filePath("report"));
+        QVERIFY2(report.ok(), report ? "" : report.error().message().c_str());
+        QCOMPARE(report->size(), 2);
+        for (const auto& file : *report) {
+            QVERIFY2(QFileInfo(file).size() > 10000, qPrintable(file));
+        }
+
         // The 3D line: parcels drawn, the slider moves the shared time cursor.
         w.tabs()->setCurrentWidget(w.lineView());
         QTest::qWait(200);

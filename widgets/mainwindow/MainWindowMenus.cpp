@@ -89,6 +89,8 @@ void MainWindow::createMenus() {
             showError(tr("Save project"), error);
         }
     });
+    file->addSeparator();
+    file->addAction(tr("Export &report…"), this, &MainWindow::askAndExportReport);
     m_recent = file->addMenu(tr("Recent projects"));
     fillRecent();
     file->addSeparator();
