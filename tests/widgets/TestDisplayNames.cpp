@@ -198,6 +198,13 @@ private Q_SLOTS:
         QVERIFY2(!state.contains("extended by discovery") && state.contains(QString::fromUtf8("发现功能")),
                  qPrintable(state));
 
+        // What a part was learnt on, saved in English ("demo (4 batches)"), reads back in Chinese.
+        LearntPart learnt;
+        learnt.learntOn = QStringLiteral("demo (4 batches)");
+        learnt.learntOnName = QStringLiteral("demo");
+        learnt.learntOnBatches = 4;
+        QCOMPARE(learnt.learntOnText(), QString::fromUtf8("demo（4 个批次）"));
+
         // The column-mapping dialog: why each header was proposed, what each column means, the
         // time stamps' format, why each run ended.
         QTemporaryDir dir;

@@ -106,13 +106,25 @@ JobId Workbench::start(Action kind, const QString& action, Work work, Done done,
     return id;
 }
 
+namespace {
+
+QString dataSetWords(const QString& name, std::size_t batches) {
+    return batches == 1 ? Workbench::tr("%1 (1 batch)").arg(name)
+                        : Workbench::tr("%1 (%2 batches)").arg(name).arg(batches);
+}
+
+} // namespace
+
+QString LearntPart::learntOnText() const {
+    return learntOnBatches >= 0 ? dataSetWords(learntOnName, static_cast<std::size_t>(learntOnBatches))
+                                : learntOn;
+}
+
 QString Workbench::dataSetLabel() const {
     if (!m_dataSet) {
         return {};
     }
-    const QString name = QFileInfo(m_dataPath).fileName();
-    const auto n = m_summary.batches.size();
-    return n == 1 ? tr("%1 (1 batch)").arg(name) : tr("%1 (%2 batches)").arg(name).arg(n);
+    return dataSetWords(QFileInfo(m_dataPath).fileName(), m_summary.batches.size());
 }
 
 const LearntPart& Workbench::learntPart(control::ControllerKind kind) const {
@@ -160,6 +172,10 @@ void Workbench::takeModel(const hybrid::HybridModel& model, const QString& why, 
         if (after && (!before || !learntOn.isEmpty())) {
             p.state = PartState::Current;
             p.learntOn = learntOn;
+            // Learnt on the loaded data set: kept as name and count, worded when shown.
+            const bool onData = m_dataSet && !learntOn.isEmpty() && learntOn == dataSetLabel();
+            p.learntOnName = onData ? QFileInfo(m_dataPath).fileName() : QString();
+            p.learntOnBatches = onData ? static_cast<int>(m_summary.batches.size()) : -1;
             p.staleBecause.clear();
         } else if (!after && fromFile) {
             p = LearntPart::absent(p.kind); // a model file opened: what it lacks was never learnt for it
@@ -236,8 +252,8 @@ QString Workbench::modelStateText() const {
             lines << tr("%1: not learnt yet.").arg(name);
             break;
         case PartState::Current:
-            lines << (p.learntOn.isEmpty() ? tr("%1: learnt.").arg(name)
-                                           : tr("%1: learnt on %2.").arg(name, p.learntOn));
+            lines << (p.learntOnText().isEmpty() ? tr("%1: learnt.").arg(name)
+                                                 : tr("%1: learnt on %2.").arg(name, p.learntOnText()));
             break;
         case PartState::Stale:
             lines << tr("%1: stale, since %2; retrain it to use it.")

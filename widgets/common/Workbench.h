@@ -39,8 +39,15 @@ enum class PartState { Absent, Current, Stale };
 struct LearntPart {
     control::ControllerKind kind = control::ControllerKind::PgrlCc;
     PartState state = PartState::Absent;
-    QString learntOn;     ///< the data set's label, or "model file x.json"
+    QString learntOn; ///< the data set's label, or "model file x.json", as worded when learnt
+    /// Learnt on a data set: its folder or file name and batch count, worded when shown
+    /// (learntOnText()), so that a project saved in English reads back in Chinese; -1: not a data set.
+    QString learntOnName;
+    int learntOnBatches = -1;
     QString staleBecause; ///< the action that made it stale: a staleReason key (staleReasonText() words it)
+
+    /// @brief What it was learnt on, in the user's language.
+    QString learntOnText() const;
 
     static LearntPart absent(control::ControllerKind kind) {
         LearntPart part;

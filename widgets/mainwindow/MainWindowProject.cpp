@@ -115,6 +115,8 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
             QJsonObject{{QStringLiteral("kind"), QString::fromLatin1(control::controllerName(part.kind))},
                         {QStringLiteral("state"), static_cast<int>(part.state)},
                         {QStringLiteral("learnt_on"), part.learntOn},
+                        {QStringLiteral("learnt_on_data_set"), part.learntOnName},
+                        {QStringLiteral("learnt_on_batches"), part.learntOnBatches},
                         {QStringLiteral("stale_because"), part.staleBecause}});
     }
     o[QStringLiteral("learnt_parts")] = parts;
@@ -209,11 +211,13 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
             const QJsonObject p = parts[i].toObject();
             const auto kind =
                 control::controllerByName(p.value(QStringLiteral("kind")).toString().toStdString());
-            restored[static_cast<std::size_t>(i)] =
-                LearntPart{kind.value_or(control::ControllerKind::Pi),
-                           static_cast<PartState>(std::clamp(p.value(QStringLiteral("state")).toInt(), 0, 2)),
-                           p.value(QStringLiteral("learnt_on")).toString(),
-                           p.value(QStringLiteral("stale_because")).toString()};
+            auto& part = restored[static_cast<std::size_t>(i)];
+            part.kind = kind.value_or(control::ControllerKind::Pi);
+            part.state = static_cast<PartState>(std::clamp(p.value(QStringLiteral("state")).toInt(), 0, 2));
+            part.learntOn = p.value(QStringLiteral("learnt_on")).toString();
+            part.learntOnName = p.value(QStringLiteral("learnt_on_data_set")).toString();
+            part.learntOnBatches = p.value(QStringLiteral("learnt_on_batches")).toInt(-1);
+            part.staleBecause = p.value(QStringLiteral("stale_because")).toString();
         }
         m_pendingParts = restored;
     }
