@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <string>
 
@@ -52,6 +53,11 @@ int main(int argc, char** argv) {
         }
         options.mpc.holdCorrectionOverHorizon = false;
     }
+    // BENCH_MPC_MOVE_WEIGHT: the MPC's move weight (MpcSettings::moveWeight), for docs/mpc.md.
+    if (const char* weight = std::getenv("BENCH_MPC_MOVE_WEIGHT")) {
+        options.mpc.moveWeight = std::atof(weight);
+    }
+    std::printf("move weight %.3g per K²\n", options.mpc.moveWeight);
     std::printf("input-driven correction over the horizon: %s\n",
                 options.mpc.holdCorrectionOverHorizon ? "held at the decision" : "moving");
     std::map<std::string, std::vector<double>> iae, viol;
