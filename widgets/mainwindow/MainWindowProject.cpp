@@ -176,6 +176,7 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
     const QString data = resolve(o, QStringLiteral("data_path"));
     const QString model = resolve(o, QStringLiteral("model_path"));
     m_pendingDataFingerprint = o.value(QStringLiteral("data_fingerprint")).toString();
+    m_projectWarning.clear(); // a warning of the project opened before does not carry over
     m_pendingTab = -1;
     const QString tab = o.value(QStringLiteral("tab")).toString();
     for (int i = 0; i < 8; ++i) {
