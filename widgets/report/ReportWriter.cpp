@@ -280,9 +280,12 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
              "X_out, extrapolation</th></tr>")
              .arg(r.ablation.multiStepHorizon));
     for (const auto& a : r.ablation.rows) {
-        both(QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td><td>%6</td></tr>")
-                 .arg(esc(a.variant), num(a.maeMoisture), num(a.r2Moisture, 3), num(a.maeTemperature),
-                      num(a.maeMoistureMultiStep), num(a.regimeMaeMoisture)));
+        // The paper's words for each variant, its key below them (as in ablation.json).
+        both(QStringLiteral("<tr><td>%1<br/><small>%7</small></td><td>%2</td><td>%3</td><td>%4</td><td>%5</"
+                            "td><td>%6</td></tr>")
+                 .arg(esc(a.description.empty() ? a.variant : a.description), num(a.maeMoisture),
+                      num(a.r2Moisture, 3), num(a.maeTemperature), num(a.maeMoistureMultiStep),
+                      num(a.regimeMaeMoisture), esc(a.variant)));
     }
     both(QStringLiteral("</table>"));
 
