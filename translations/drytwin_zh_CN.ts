@@ -2712,7 +2712,7 @@
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="43"/>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="79"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="80"/>
         <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="89"/>
         <source>Export report</source>
         <translation>导出报告</translation>
@@ -2738,7 +2738,6 @@
         <translation>本窗口中构建的模型（用 文件 ▸ 模型另存为… 保存）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="79"/>
         <source>The report needs every step&apos;s result; still to run: %1.</source>
         <translation>报告需要每一步的结果；尚需运行：%1。</translation>
     </message>
@@ -3060,22 +3059,22 @@
         <translation>项目已保存到 %1（模型、结果和视图）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="140"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="138"/>
         <source>Saving the project to %1…</source>
         <translation>正在保存项目到 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="199"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="198"/>
         <source>The project&apos;s results could not be read (%1); it opens without them.</source>
         <translation>无法读取项目的结果（%1）；项目将不带结果打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="272"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="273"/>
         <source>Wait until the running job has finished (or cancel it), then switch the language.</source>
         <translation>请等待当前任务完成（或取消它），然后再切换语言。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="305"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="306"/>
         <source>The training session under way was saved in %1 when the language changed: the instructor window&apos;s Session file ▸ Open session… continues it.</source>
         <translation>切换语言时，进行中的培训会话已保存到 %1：在教员窗口的 会话文件 ▸ 打开会话… 可继续。</translation>
     </message>
@@ -3185,8 +3184,8 @@
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="53"/>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="124"/>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="131"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="122"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="129"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -3195,12 +3194,12 @@
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="148"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="146"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="157"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="155"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
@@ -4907,138 +4906,138 @@ extrapolation</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="115"/>
+        <location filename="../widgets/common/Workbench.cpp" line="112"/>
         <source>%1 (1 batch)</source>
         <translation>%1（1 个批次）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="115"/>
+        <location filename="../widgets/common/Workbench.cpp" line="113"/>
         <source>%1 (%2 batches)</source>
         <translation>%1（%2 个批次）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="192"/>
+        <location filename="../widgets/common/Workbench.cpp" line="208"/>
         <source>%1 changes the physics model that %2 learnt its corrections on: they will no longer match it and are set aside as stale.</source>
         <translation>“%1”会改变 %2 学习修正时所依据的物理模型：它们将不再匹配，并被标为过期。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="196"/>
+        <location filename="../widgets/common/Workbench.cpp" line="212"/>
         <source>%1, then retrain them</source>
         <translation>%1，然后重新训练它们</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="197"/>
+        <location filename="../widgets/common/Workbench.cpp" line="213"/>
         <source>%1 only (retrain later)</source>
         <translation>仅%1（稍后重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="221"/>
+        <location filename="../widgets/common/Workbench.cpp" line="237"/>
         <source>Physics model calibrated (%1 fitted to data).</source>
         <translation>物理模型已标定（%1 已拟合到数据）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="223"/>
+        <location filename="../widgets/common/Workbench.cpp" line="239"/>
         <source>Physics model with its default parameters (not calibrated).</source>
         <translation>物理模型使用默认参数（未标定）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="230"/>
+        <location filename="../widgets/common/Workbench.cpp" line="246"/>
         <source>Extended by discovery with: %1.</source>
         <translation>已由发现功能扩展：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="236"/>
+        <location filename="../widgets/common/Workbench.cpp" line="252"/>
         <source>%1: not learnt yet.</source>
         <translation>%1：尚未学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="239"/>
+        <location filename="../widgets/common/Workbench.cpp" line="255"/>
         <source>%1: learnt.</source>
         <translation>%1：已学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="240"/>
+        <location filename="../widgets/common/Workbench.cpp" line="256"/>
         <source>%1: learnt on %2.</source>
         <translation>%1：在 %2 上学习。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="243"/>
+        <location filename="../widgets/common/Workbench.cpp" line="259"/>
         <source>%1: stale, since %2; retrain it to use it.</source>
         <translation>%1：已过期，因为%2；需重新训练才能使用。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="258"/>
+        <location filename="../widgets/common/Workbench.cpp" line="274"/>
         <source>Read the model</source>
         <translation>读取模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="273"/>
+        <location filename="../widgets/common/Workbench.cpp" line="289"/>
         <source>Loading %1…</source>
         <translation>正在加载 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="282"/>
+        <location filename="../widgets/common/Workbench.cpp" line="298"/>
         <source>Load %1</source>
         <translation>加载 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="318"/>
+        <location filename="../widgets/common/Workbench.cpp" line="334"/>
         <source>%1: %2 batches, %3 rows, %4 missing cells; the cleaning keeps %5 rows</source>
         <translation>%1：%2 个批次，%3 行，%4 个缺失值；清洗后保留 %5 行</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="344"/>
+        <location filename="../widgets/common/Workbench.cpp" line="360"/>
         <source>Open model %1</source>
         <translation>打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="348"/>
+        <location filename="../widgets/common/Workbench.cpp" line="364"/>
         <source>Model %1 opened</source>
         <translation>已打开模型 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="349"/>
+        <location filename="../widgets/common/Workbench.cpp" line="365"/>
         <source>model file %1</source>
         <translation>模型文件 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="408"/>
+        <location filename="../widgets/common/Workbench.cpp" line="424"/>
         <source>Save model</source>
         <translation>保存模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="417"/>
+        <location filename="../widgets/common/Workbench.cpp" line="433"/>
         <source>Model saved to %1</source>
         <translation>模型已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="423"/>
+        <location filename="../widgets/common/Workbench.cpp" line="439"/>
         <source>Set %1</source>
         <translation>设置 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="439"/>
+        <location filename="../widgets/common/Workbench.cpp" line="455"/>
         <source>Set the model</source>
         <translation>设置模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="456"/>
-        <location filename="../widgets/common/Workbench.cpp" line="478"/>
+        <location filename="../widgets/common/Workbench.cpp" line="472"/>
+        <location filename="../widgets/common/Workbench.cpp" line="494"/>
         <source>Simulate</source>
         <translation>仿真</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="464"/>
+        <location filename="../widgets/common/Workbench.cpp" line="480"/>
         <source>Simulated %1 batches; mean outlet-moisture MAE %2 % wb</source>
         <translation>已仿真 %1 个批次；出口含水率平均 MAE %2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="496"/>
+        <location filename="../widgets/common/Workbench.cpp" line="512"/>
         <source>Calibration: %1; loss %2 → %3</source>
         <translation>标定：%1；损失 %2 → %3</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="573"/>
+        <location filename="../widgets/common/Workbench.cpp" line="589"/>
         <source> (and %1 more)</source>
         <translation>（另有 %1 个）</translation>
     </message>
@@ -5047,19 +5046,19 @@ extrapolation</source>
         <translation>学习之后物理模型又经过了标定</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="522"/>
+        <location filename="../widgets/common/Workbench.cpp" line="538"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="127"/>
         <source>Learn the correction models</source>
         <translation>学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="526"/>
+        <location filename="../widgets/common/Workbench.cpp" line="542"/>
         <source>Learnt the correction models (PGRL-CC) and the two comparison models</source>
         <translation>已学习修正模型（PGRL-CC）和两个对比模型</translation>
     </message>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="154"/>
-        <location filename="../widgets/common/Workbench.cpp" line="491"/>
+        <location filename="../widgets/common/Workbench.cpp" line="507"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
@@ -5076,48 +5075,48 @@ extrapolation</source>
         <translation>已训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="541"/>
+        <location filename="../widgets/common/Workbench.cpp" line="557"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="563"/>
+        <location filename="../widgets/common/Workbench.cpp" line="579"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="563"/>
+        <location filename="../widgets/common/Workbench.cpp" line="579"/>
         <source>Discover against the reference</source>
         <translation>相对参考期发现</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="576"/>
+        <location filename="../widgets/common/Workbench.cpp" line="592"/>
         <source>Discovery: %1</source>
         <translation>发现：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="583"/>
+        <location filename="../widgets/common/Workbench.cpp" line="599"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="598"/>
+        <location filename="../widgets/common/Workbench.cpp" line="614"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="128"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="602"/>
+        <location filename="../widgets/common/Workbench.cpp" line="618"/>
         <source>Ablation: %1 variants trained and evaluated</source>
         <translation>消融实验：已训练并评估 %1 个变体</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="609"/>
+        <location filename="../widgets/common/Workbench.cpp" line="625"/>
         <source>Generate</source>
         <translation>生成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/Workbench.cpp" line="612"/>
+        <location filename="../widgets/common/Workbench.cpp" line="628"/>
         <source>Wrote %1 virtual-plant batches to %2</source>
         <translation>已将 %1 个虚拟装置批次写入 %2</translation>
     </message>

@@ -78,28 +78,24 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
     };
     // Each path also absolute: a project file copied away from its data (mailed, moved into an
     // archive folder) still finds them where they were.
-    const auto absolute = [](const QString& p) {
-        return p.isEmpty() ? QString() : QFileInfo(p).absoluteFilePath();
+    const auto withAbsolute = [&](QJsonObject& into, const QString& key, const QString& p) {
+        into[key] = fromProject(p);
+        into[key + QStringLiteral("_absolute")] = p.isEmpty() ? QString() : QFileInfo(p).absoluteFilePath();
     };
-    const auto withAbsolute = [&](const QString& key, const QString& p) {
-        o[key] = fromProject(p);
-        o[key + QStringLiteral("_absolute")] = absolute(p);
-    };
-    withAbsolute(QStringLiteral("data_path"), m_workbench.dataPath());
-    withAbsolute(QStringLiteral("model_path"), modelPath);
-    withAbsolute(QStringLiteral("mapping_path"), m_workbench.mappingPath());
+    withAbsolute(o, QStringLiteral("data_path"), m_workbench.dataPath());
+    withAbsolute(o, QStringLiteral("model_path"), modelPath);
+    withAbsolute(o, QStringLiteral("mapping_path"), m_workbench.mappingPath());
     // The reference period discovery compares with: the project remembers it (issue #41).
-    withAbsolute(QStringLiteral("reference_path"), m_workbench.referencePath());
+    withAbsolute(o, QStringLiteral("reference_path"), m_workbench.referencePath());
     o[QStringLiteral("data_fingerprint")] = dataFingerprint();
     // Every data set opened in the window (a historian export with its mapping, a training
     // recording beside the plant's data), so that a reopened project can switch to them again.
     QJsonArray dataSets;
     for (const auto& e : m_workbench.dataSets()) {
-        dataSets.append(QJsonObject{{QStringLiteral("path"), fromProject(e.path)},
-                                    {QStringLiteral("path_absolute"), absolute(e.path)},
-                                    {QStringLiteral("mapping_path"), fromProject(e.mappingPath)},
-                                    {QStringLiteral("mapping_path_absolute"), absolute(e.mappingPath)},
-                                    {QStringLiteral("label"), e.label}});
+        QJsonObject entry{{QStringLiteral("label"), e.label}};
+        withAbsolute(entry, QStringLiteral("path"), e.path);
+        withAbsolute(entry, QStringLiteral("mapping_path"), e.mappingPath);
+        dataSets.append(entry);
     }
     o[QStringLiteral("data_sets")] = dataSets;
     o[QStringLiteral("tab")] = QString::fromLatin1(kTabKeys[std::max(0, m_tabs->currentIndex())]);
@@ -108,7 +104,7 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
         batches.append(r.row());
     }
     o[QStringLiteral("selected_batches")] = batches;
-    withAbsolute(QStringLiteral("results_path"), resultsPath);
+    withAbsolute(o, QStringLiteral("results_path"), resultsPath);
     QJsonArray parts;
     for (const auto& part : m_workbench.learntParts()) {
         parts.append(

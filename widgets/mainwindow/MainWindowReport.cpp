@@ -75,9 +75,9 @@ Expected<QStringList> MainWindow::exportReport(const QString& folder) const {
 }
 
 void MainWindow::askAndExportReport() {
-    if (const QStringList missing = reportMissingSteps(); !missing.isEmpty()) {
-        showError(tr("Export report"), tr("The report needs every step's result; still to run: %1.")
-                                           .arg(missing.join(QStringLiteral(", "))));
+    // Before the folder is asked for: the same message exportReport() would give.
+    if (!reportMissingSteps().isEmpty()) {
+        showError(tr("Export report"), QString::fromStdString(exportReport(QString()).error().message()));
         return;
     }
     const QString folder = QFileDialog::getExistingDirectory(this, tr("Export report into folder"));
