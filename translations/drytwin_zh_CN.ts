@@ -3474,140 +3474,144 @@
         <translation>预测时刻</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="150"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="151"/>
         <source>Open scenario</source>
         <translation>打开情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="150"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="151"/>
         <source>Scenarios (*.json)</source>
         <translation>情景 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="160"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="161"/>
         <source>Run a scenario to see each controller&apos;s outlet moisture and hot-air setpoint</source>
         <translation>运行一个情景，可看到各控制器的出口含水率和热风设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="177"/>
         <location filename="../widgets/mpc/MpcPanel.cpp" line="178"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="179"/>
         <source>the scenario</source>
         <translation>该情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="183"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="184"/>
         <source>The run was cancelled; the results below are from the last complete run.</source>
         <translation>运行已取消；下方结果来自上一次完整运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="184"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="185"/>
         <source>The run was cancelled.</source>
         <translation>运行已取消。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="188"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="189"/>
         <source>%1
 The results below are from the last complete run.</source>
         <translation>%1
 下方结果来自上一次完整运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="199"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="200"/>
         <source>%1 (problems in the form: %2)</source>
         <translation>%1（表单中的问题：%2 个）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="210"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="211"/>
         <source>The scenario&apos;s JSON: %1</source>
         <translation>情景 JSON：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="211"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="212"/>
         <source>The scenario&apos;s JSON, line %1: %2</source>
         <translation>情景 JSON 第 %1 行：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="217"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="218"/>
         <source>Run is off until this is fixed: %1</source>
         <translation>修正以下问题前无法运行：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="230"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="231"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="243"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="244"/>
         <source>Not run: %1</source>
         <translation>未运行：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="253"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="254"/>
         <source>Cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="271"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="272"/>
         <source>Choose at least one controller.</source>
         <translation>请至少选择一个控制器。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="275"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="276"/>
         <source>Running…</source>
         <translation>正在运行…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="287"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="288"/>
         <source>Contract key: %1</source>
         <translation>接口代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="289"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="290"/>
         <source>%1 (stale)</source>
         <translation>%1（过期）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="290"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="291"/>
         <source>Learnt before %1: retrain it to run it.</source>
         <translation>学习于以下变化之前：%1；需重新训练才能运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="292"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="293"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="293"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="294"/>
         <source>Learn the correction models on the Residual model tab to run it.</source>
         <translation>在残差模型页学习修正模型后才能运行它。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="319"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="316"/>
+        <source>predicted at %1 s</source>
+        <translation>在 %1 s 时的预测</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="325"/>
         <source>skipped</source>
         <translation>已跳过</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="320"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="326"/>
         <source>the model holds no such prediction model</source>
         <translation>模型中没有这种预测模型</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="333"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="339"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="341"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="348"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="357"/>
         <source>%1 predicted at %2 s</source>
         <translation>%1 在 %2 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="366"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="376"/>
         <source>%1. IAE and violations on the product&apos;s true outlet moisture; the plant&apos;s own gain is %2 % wb/K.</source>
         <translation>%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。</translation>
     </message>
@@ -3615,12 +3619,12 @@ The results below are from the last complete run.</source>
 <context>
     <name>drytwin::widgets::PlotStack</name>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="219"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="228"/>
         <source>Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click to zoom out, middle drag to pan</source>
         <translation>Ctrl+单击：游标 A，Shift+单击：游标 B，Alt+单击：时间游标；拖动放大，右键缩小，中键拖动平移</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="115"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="124"/>
         <source>Export…</source>
         <translation>导出…</translation>
     </message>
@@ -3629,62 +3633,62 @@ The results below are from the last complete run.</source>
         <translation>将这些图表保存为 PNG、SVG 或 PDF</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="116"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="125"/>
         <source>Save these plots as PNG, SVG or PDF, or their data as CSV</source>
         <translation>把这些曲线图保存为 PNG、SVG 或 PDF，或把数据保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="203"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="212"/>
         <source>time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="282"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="291"/>
         <source>No data yet</source>
         <translation>尚无数据</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="548"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="559"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="551"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="562"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="554"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="565"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="558"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="569"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="562"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="573"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="648"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="659"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="676"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="687"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
         <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="712"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="723"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="626"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="637"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
@@ -3693,7 +3697,7 @@ The results below are from the last complete run.</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="711"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="722"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
@@ -3702,12 +3706,12 @@ The results below are from the last complete run.</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="718"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="729"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="720"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="731"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>

@@ -8,6 +8,7 @@ import re
 import sys
 
 ZH = {
+    "predicted at %1 s": "在 %1 s 时的预测",
     "open data": "打开数据",
     "Learn the correction models (Residual model tab)": "学习修正模型（残差模型页）",
     "Ablation (Residual model tab)": "消融实验（残差模型页）",

@@ -6,9 +6,11 @@
 #include "mpc/ScenarioForm.h"
 
 #include <QCheckBox>
+#include <QHeaderView>
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStandardPaths>
@@ -37,6 +39,20 @@ class TestMpcPanel : public QObject {
     Q_OBJECT
 private Q_SLOTS:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    // At 1280 x 800 the tab is about 1270 x 700: the results table keeps the room for a row per
+    // controller (five) and the scenario form above it scrolls; it showed 3½ rows before.
+    void theResultsTableShowsEveryControllerAt1280x800() {
+        Workbench wb;
+        MpcPanel panel(wb);
+        panel.resize(1270, 700);
+        static_cast<QWidget&>(panel).show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QTableWidget* table = panel.table();
+        const int rowsShown = (table->viewport()->height() - table->horizontalScrollBar()->height()) /
+                              table->verticalHeader()->defaultSectionSize();
+        QVERIFY2(rowsShown >= 5, qPrintable(QString("%1 rows in %2 px").arg(rowsShown).arg(table->height())));
+    }
 
     // Scored length 600 s, a setpoint step at 780 s: the form says so under the steps and under
     // the length, the cell is marked, Run is off and run() starts nothing.

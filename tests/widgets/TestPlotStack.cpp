@@ -21,7 +21,10 @@
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QtTest>
+#include <qwt_legend.h>
+#include <qwt_legend_label.h>
 #include <qwt_plot.h>
+#include <qwt_plot_curve.h>
 #include <qwt_scale_div.h>
 
 using namespace drytwin;
@@ -127,6 +130,31 @@ private Q_SLOTS:
         QVERIFY(loss->noteShown(0).isEmpty());
         // The bottom plot labels the shared time axis: the loss's, not 0–1000.
         QVERIFY2(xUpper(loss->plot(1)) <= 1.5, qPrintable(QString::number(xUpper(loss->plot(1)))));
+    }
+
+    // A legend's key is the curve's line (a setpoint dashed, its band dotted, a prediction
+    // dash-dot), and every entry's text starts after its key: the last entry added kept an indent
+    // of 2 px and wrote its text over the key (the Training tab's "T² of the model's error").
+    void legendKeysShowTheLineAndTextFollowsThem() {
+        PlotStack s;
+        s.addPlot("a [-]");
+        s.addPlot("b [-]");
+        s.resize(700, 400);
+        s.show();
+        s.addCurve(0, "setpoint", {0, 10}, {1, 1}, Qt::black, Qt::DashLine);
+        s.addCurve(0, "band", {0, 10}, {2, 2}, Qt::black, Qt::DotLine);
+        s.addCurve(1, "only on the lower plot, a long name", {0, 10}, {5, 6}, Qt::blue);
+        auto* legend = qobject_cast<QwtLegend*>(s.plot(0)->legend());
+        QVERIFY(legend);
+        const auto labels = legend->findChildren<QwtLegendLabel*>();
+        QCOMPARE(labels.size(), 3);
+        for (const auto* label : labels) {
+            QVERIFY2(label->indent() >= 22,
+                     qPrintable(label->text().text() + ": indent " + QString::number(label->indent())));
+        }
+        for (auto* item : s.plot(0)->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+            QVERIFY(static_cast<QwtPlotCurve*>(item)->testLegendAttribute(QwtPlotCurve::LegendShowLine));
+        }
     }
 
     // Item 12: a plot without data and without a known range hides its y-axis and says so.

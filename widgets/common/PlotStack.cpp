@@ -46,11 +46,20 @@ namespace {
 /// 1280 x 800 (a newcomer's screenshot).
 void compactLegendLabel(QwtLegendLabel& label) {
     label.setMargin(1);
+    // The spacing also places the text after the key (Qwt sets the text's indent from margin, key
+    // and spacing): an indent set here put the text of the last entry on top of its key.
     label.setSpacing(4);
-    label.setIndent(2);
     QFont f = label.font();
     f.setPointSizeF(8.5);
     label.setFont(f);
+}
+
+/// The legend's key drawn as the curve's line, long enough to show its style: Qwt's default, a
+/// filled square, made a setpoint (dashed), its band (dotted) and a prediction (dash-dot) look
+/// alike, and the physics model and its prediction one grey square twice.
+void showLineInLegend(QwtPlotCurve& curve) {
+    curve.setLegendAttribute(QwtPlotCurve::LegendShowLine, true);
+    curve.setLegendIconSize(QSize(22, 8));
 }
 
 /// A canvas note that wraps within the canvas: QwtPlotTextLabel lays its text out at its unwrapped
@@ -313,6 +322,7 @@ QwtPlotCurve* PlotStack::addCurve(int index, const QString& name, const QVector<
                                   double width) {
     auto* plot = m_plots.at(static_cast<std::size_t>(index));
     auto* c = new QwtPlotCurve(name);
+    showLineInLegend(*c);
     // Colours unique within a plot: a second named series in the same colour and line style
     // (two batches, two models mapped alike) takes the next free colour of the palette.
     QColor unique = colour;
@@ -371,6 +381,7 @@ QwtPlotCurve* PlotStack::addCurve(int index, const QString& name, const QVector<
         auto* standIn = new QwtPlotCurve(name);
         standIn->setPen(c->pen());
         standIn->setStyle(c->style());
+        showLineInLegend(*standIn);
         standIn->attach(m_plots.front());
         c->setItemAttribute(QwtPlotItem::Legend, false);
         m_plots.front()->updateLegend();

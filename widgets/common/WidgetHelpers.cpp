@@ -106,6 +106,14 @@ void fitTableWidth(QTableWidget* table, int maxWidth) {
     table->setMinimumWidth(std::min(maxWidth, width));
 }
 
+void fitTableHeight(QTableWidget* table, int rows) {
+    Q_ASSERT(table);
+    const int height = table->horizontalHeader()->sizeHint().height() +
+                       rows * table->verticalHeader()->defaultSectionSize() +
+                       table->horizontalScrollBar()->sizeHint().height() + 2 * table->frameWidth();
+    table->setMinimumHeight(height);
+}
+
 void setHeaderToolTips(QTableWidget* table, const QStringList& tips) {
     Q_ASSERT(table);
     for (int c = 0; c < tips.size() && c < table->columnCount(); ++c) {

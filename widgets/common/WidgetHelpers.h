@@ -24,6 +24,10 @@ QTableWidget* makeResultTable(const QStringList& headers);
 /// all (up to @p maxWidth; a wider table scrolls), so that no header is cut at the table's edge.
 /// Call after filling it.
 void fitTableWidth(QTableWidget* table, int maxWidth = kMaxFittedTableWidth);
+/// @brief Asks for the height that shows @p rows rows of @p table below its header (and a
+/// horizontal scroll bar, should its columns not fit), so that a layout short of room shrinks its
+/// neighbours rather than the table: the What-if tab showed 3½ of its five controllers at 1280 × 800.
+void fitTableHeight(QTableWidget* table, int rows);
 /// @brief Plain-words tooltips on the column headers of @p table, in column order (an empty one:
 /// none), for headers that name a statistic or a method ("Score z", "IAE [%·s]").
 void setHeaderToolTips(QTableWidget* table, const QStringList& tips);

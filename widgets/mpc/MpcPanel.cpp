@@ -110,6 +110,7 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     ll->addWidget(m_blocked);
     ll->addWidget(m_note);
     ll->addWidget(m_table, 1);
+    fitTableHeight(m_table, 5); // a row per controller; the form above scrolls instead
     auto* split = new QSplitter;
     split->addWidget(left);
     split->addWidget(m_plots);
@@ -309,6 +310,11 @@ void MpcPanel::show() {
     m_plots->clearCurves();
     const double at = m_prediction->currentData().toDouble();
     bool setpointDrawn = false;
+    // Every controller's prediction under one legend entry, drawn dash-dot in its controller's
+    // colour: ten entries, five of them "… predicted at 60 s", took the legend a column of its own
+    // and the plot's room. The entry's key is black; its check box shows or hides them all.
+    const QString predictedName = tr("predicted at %1 s").arg(at);
+    bool predictedKeyDrawn = false;
     for (const auto& run : cl.runs) {
         const int row = m_table->rowCount();
         m_table->insertRow(row);
@@ -338,8 +344,9 @@ void MpcPanel::show() {
                 hi << s + cl.scenario.bandPct;
                 lo << s - cl.scenario.bandPct;
             }
-            m_plots->addCurve(0, tr("band"), t, hi, Qt::gray, Qt::DotLine, 1.0);
-            m_plots->addCurve(0, QString(), t, lo, Qt::gray, Qt::DotLine, 1.0);
+            // Black like the setpoint it belongs to: grey is the physics model's colour.
+            m_plots->addCurve(0, tr("band"), t, hi, Qt::black, Qt::DotLine, 1.0);
+            m_plots->addCurve(0, QString(), t, lo, Qt::black, Qt::DotLine, 1.0);
             setpointDrawn = true;
         }
         const QString name = controllerDisplayName(run.kind);
@@ -354,8 +361,11 @@ void MpcPanel::show() {
                     pt << p.atS + static_cast<double>(i);
                     px << p.xOutPct[i];
                 }
-                m_plots->addCurve(0, tr("%1 predicted at %2 s").arg(name).arg(at), pt, px, colour,
-                                  Qt::DashDotLine, 1.6);
+                if (!predictedKeyDrawn) {
+                    m_plots->addCurve(0, predictedName, {}, {}, Qt::black, Qt::DashDotLine, 1.6);
+                    predictedKeyDrawn = true;
+                }
+                m_plots->addCurve(0, predictedName, pt, px, colour, Qt::DashDotLine, 1.6);
             }
         }
     }
