@@ -71,7 +71,8 @@ CommandLine::CommandLine() : m_impl(new Impl) {
                    "GUI: compare the data with this reference period (a batch file or folder from a time "
                    "when the line ran as it should) when Discover runs");
     app.add_option("--run", m_impl->runActions,
-                   "GUI: after loading, run these actions in order, e.g. calibrate,train,discover,mpc");
+                   "GUI: after loading, run these actions in order: calibrate, train, evaluate, ablation, "
+                   "discover, mpc (e.g. calibrate,train,discover,mpc)");
     app.add_option("--lang", m_impl->language,
                    "GUI: language, en or zh_CN (default: as chosen before, else the "
                    "system's)");
@@ -282,6 +283,14 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     addData(pipeline);
     pipeline->add_option("--out", o.outPath, "report folder")->required();
     reg(pipeline, runPipeline);
+
+    auto* report = app.add_subcommand(
+        "report", "the pipeline's HTML and PDF report from a saved project's results, re-running nothing");
+    report->add_option("--project", o.projectPath, "project file (.dtproj) saved by the workbench")
+        ->required()
+        ->check(CLI::ExistingFile);
+    report->add_option("--out", o.outPath, "report folder")->required();
+    reg(report, runReport);
 }
 
 CommandLine::~CommandLine() {

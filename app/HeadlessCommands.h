@@ -29,6 +29,7 @@ struct CommandOptions {
     std::string truthPath;
     std::string scenarioPath;
     std::string scriptPath;               ///< training: the session file to replay
+    std::string projectPath;              ///< report: a project saved by the workbench
     std::vector<std::string> controllers; ///< mpc: a subset of the controllers
     unsigned seed = 1;
     int batches = 10;
@@ -63,7 +64,7 @@ struct CommandOptions {
     data::CleaningOptions cleaning;
     bool quiet = false;
     Progress progress;
-    /// pipeline: writes report.html and report.pdf from the run's results (set by main, which has
+    /// pipeline, report: writes report.html and report.pdf from the run's results (set by main, which has
     /// the GUI's plot code); returns the files written, or an error message.
     std::function<std::vector<std::string>(const workflow::PipelineResult&, const workflow::Session&,
                                            const std::string& folder, std::string& error)>
@@ -82,5 +83,6 @@ int runDiscover(const CommandOptions& o);
 int runPipeline(const CommandOptions& o);
 int runMpc(const CommandOptions& o);
 int runTraining(const CommandOptions& o);
+int runReport(const CommandOptions& o);
 
 } // namespace drytwin::app

@@ -477,7 +477,7 @@
     </message>
     <message>
         <source>robust to correlated rows (sandwich covariance with a Newey-West middle term)</source>
-        <translation>对相关样本稳健（夹心协方差，中间项为 Newey-West）</translation>
+        <translation type="vanished">对相关样本稳健（夹心协方差，中间项为 Newey-West）</translation>
     </message>
     <message>
         <location filename="../widgets/common/DisplayNames.cpp" line="297"/>
@@ -964,23 +964,23 @@
     <name>TrainingPanel</name>
     <message>
         <source>PI loop (the plant&apos;s own)</source>
-        <translation>PI 回路（装置自带）</translation>
+        <translation type="vanished">PI 回路（装置自带）</translation>
     </message>
     <message>
         <source>MPC on the physics model</source>
-        <translation>基于物理模型的 MPC</translation>
+        <translation type="vanished">基于物理模型的 MPC</translation>
     </message>
     <message>
         <source>MPC on PGRL-CC</source>
-        <translation>基于 PGRL-CC 的 MPC</translation>
+        <translation type="vanished">基于 PGRL-CC 的 MPC</translation>
     </message>
     <message>
         <source>MPC on the external-input residual model</source>
-        <translation>基于外部输入残差模型的 MPC</translation>
+        <translation type="vanished">基于外部输入残差模型的 MPC</translation>
     </message>
     <message>
         <source>MPC on the LSTM</source>
-        <translation>基于 LSTM 的 MPC</translation>
+        <translation type="vanished">基于 LSTM 的 MPC</translation>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="59"/>
@@ -989,47 +989,47 @@
     </message>
     <message>
         <source>Tube wall heat loss</source>
-        <translation>管壁散热损失</translation>
+        <translation type="vanished">管壁散热损失</translation>
     </message>
     <message>
         <source>Gas-phase coupling</source>
-        <translation>气相耦合</translation>
+        <translation type="vanished">气相耦合</translation>
     </message>
     <message>
         <source>Heat-transfer fouling</source>
-        <translation>传热结垢</translation>
+        <translation type="vanished">传热结垢</translation>
     </message>
     <message>
         <source>Moisture meter lag</source>
-        <translation>水分仪滞后</translation>
+        <translation type="vanished">水分仪滞后</translation>
     </message>
     <message>
         <source>Moisture meter offset</source>
-        <translation>水分仪偏差</translation>
+        <translation type="vanished">水分仪偏差</translation>
     </message>
     <message>
         <source>Transport delay error</source>
-        <translation>输送延时误差</translation>
+        <translation type="vanished">输送延时误差</translation>
     </message>
     <message>
         <source>Falling-rate drying</source>
-        <translation>降速干燥</translation>
+        <translation type="vanished">降速干燥</translation>
     </message>
     <message>
         <source>Ambient re-absorption</source>
-        <translation>环境回潮</translation>
+        <translation type="vanished">环境回潮</translation>
     </message>
     <message>
         <source>Inlet moisture gauge offset</source>
-        <translation>入口水分仪零点偏移</translation>
+        <translation type="vanished">入口水分仪零点偏移</translation>
     </message>
     <message>
         <source>Hot-air thermocouple lag</source>
-        <translation>热风热电偶滞后</translation>
+        <translation type="vanished">热风热电偶滞后</translation>
     </message>
     <message>
         <source>Inlet moisture gauge scatter</source>
-        <translation>入口水分仪读数离散</translation>
+        <translation type="vanished">入口水分仪读数离散</translation>
     </message>
 </context>
 <context>
@@ -1125,7 +1125,7 @@
     </message>
     <message>
         <source>Fits the free parameters to the calibration rows (every 10th kept row, the first 300) with NLopt: a global search, then BOBYQA.</source>
-        <translation>用 NLopt 将自由参数拟合到标定行（保留行中每隔 10 行取一行，取前 300 行）：先全局搜索，再用 BOBYQA。</translation>
+        <translation type="vanished">用 NLopt 将自由参数拟合到标定行（保留行中每隔 10 行取一行，取前 300 行）：先全局搜索，再用 BOBYQA。</translation>
     </message>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="69"/>
@@ -1267,11 +1267,11 @@
     </message>
     <message>
         <source>Could not read the headers of %1.</source>
-        <translation>无法读取 %1 的表头。</translation>
+        <translation type="vanished">无法读取 %1 的表头。</translation>
     </message>
     <message>
         <source>Choose, for each column DryTwin needs, the header your files use and the unit its values are in (converted when read); required columns are marked *.</source>
-        <translation>为 DryTwin 需要的每一列选择您文件中使用的表头及其数值的单位（读取时换算）；必需的列标有 *。</translation>
+        <translation type="vanished">为 DryTwin 需要的每一列选择您文件中使用的表头及其数值的单位（读取时换算）；必需的列标有 *。</translation>
     </message>
     <message>
         <location filename="../widgets/data/ColumnMappingDialog.cpp" line="44"/>
@@ -1890,7 +1890,7 @@
     </message>
     <message>
         <source>the model was extended by discovery</source>
-        <translation>模型已由发现功能扩展</translation>
+        <translation type="vanished">模型已由发现功能扩展</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="717"/>
@@ -1934,11 +1934,11 @@
     </message>
     <message>
         <source>DryTwin (the causes&apos; parameters): &lt;b&gt;changed&lt;/b&gt; (p = %1): %2 moved beyond its normal spread</source>
-        <translation>DryTwin（各原因的参数）：&lt;b&gt;已变化&lt;/b&gt;（p = %1）：%2 超出其正常范围</translation>
+        <translation type="vanished">DryTwin（各原因的参数）：&lt;b&gt;已变化&lt;/b&gt;（p = %1）：%2 超出其正常范围</translation>
     </message>
     <message>
         <source>DryTwin (the causes&apos; parameters): none moved beyond its normal spread (p = %1)</source>
-        <translation>DryTwin（各原因的参数）：均未超出其正常范围（p = %1）</translation>
+        <translation type="vanished">DryTwin（各原因的参数）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="221"/>
@@ -1994,7 +1994,7 @@
     </message>
     <message>
         <source>the error drifts within every batch and resets at each batch start</source>
-        <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
+        <translation type="vanished">误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="313"/>
@@ -2271,7 +2271,7 @@
     </message>
     <message>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.</source>
-        <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
+        <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
@@ -2300,15 +2300,15 @@
     </message>
     <message>
         <source>one of %1 (look-alikes)</source>
-        <translation>%1 之一（相似原因）</translation>
+        <translation type="vanished">%1 之一（相似原因）</translation>
     </message>
     <message>
         <source>Verdict: %1. No mechanism is named.</source>
-        <translation>结论：%1。未命名任何机理。</translation>
+        <translation type="vanished">结论：%1。未命名任何机理。</translation>
     </message>
     <message>
         <source>Verdict: %1. Named: %2.</source>
-        <translation>结论：%1。已命名：%2。</translation>
+        <translation type="vanished">结论：%1。已命名：%2。</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="737"/>
@@ -2361,7 +2361,7 @@
     </message>
     <message>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.</source>
-        <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
+        <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="704"/>
@@ -2474,7 +2474,7 @@
     </message>
     <message>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
-        <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
+        <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="669"/>
@@ -2685,69 +2685,69 @@
         <translation>模型</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="21"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="22"/>
         <source>open data</source>
         <translation>打开数据</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="24"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="25"/>
         <location filename="../widgets/MainWindow.cpp" line="50"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="27"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="26"/>
         <source>Learn the correction models (Residual model tab)</source>
         <translation>学习修正模型（残差模型页）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="30"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="27"/>
         <source>Ablation (Residual model tab)</source>
         <translation>消融实验（残差模型页）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="36"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="29"/>
         <source>Run scenario (What-if MPC tab)</source>
         <translation>运行情景（假设分析 MPC 页）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="43"/>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="80"/>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="89"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="38"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="68"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="77"/>
         <source>Export report</source>
         <translation>导出报告</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="44"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="39"/>
         <source>the report needs every step&apos;s result; still to run: %1</source>
         <translation>报告需要每一步的结果；尚需运行：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="49"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="44"/>
         <source>cannot create the folder</source>
         <translation>无法创建该文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="64"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="52"/>
         <source>DryTwin workbench: data %1, model %2</source>
         <translation>DryTwin 工作台：数据 %1，模型 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="67"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="55"/>
         <source>as built in this window (save it with File ▸ Save model as…)</source>
         <translation>本窗口中构建的模型（用 文件 ▸ 模型另存为… 保存）</translation>
     </message>
     <message>
         <source>The report needs every step&apos;s result; still to run: %1.</source>
-        <translation>报告需要每一步的结果；尚需运行：%1。</translation>
+        <translation type="vanished">报告需要每一步的结果；尚需运行：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="83"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="71"/>
         <source>Export report into folder</source>
         <translation>将报告导出到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="93"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="81"/>
         <source>Report written: %1</source>
         <translation>报告已写入：%1</translation>
     </message>
@@ -2762,7 +2762,7 @@
         <translation>诊断</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="33"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="28"/>
         <location filename="../widgets/MainWindow.cpp" line="53"/>
         <source>Discover</source>
         <translation>发现</translation>
@@ -2784,7 +2784,7 @@
     </message>
     <message>
         <source>No data loaded. File ▸ Open data set…</source>
-        <translation>未加载数据。文件 ▸ 打开数据集…</translation>
+        <translation type="vanished">未加载数据。文件 ▸ 打开数据集…</translation>
     </message>
     <message>
         <location filename="../widgets/MainWindow.cpp" line="61"/>
@@ -2848,7 +2848,7 @@
     </message>
     <message>
         <source>the data changed since the project was saved</source>
-        <translation>项目保存后数据已改变</translation>
+        <translation type="vanished">项目保存后数据已改变</translation>
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowData.cpp" line="75"/>
@@ -2893,7 +2893,7 @@
     </message>
     <message>
         <source>%1: %2</source>
-        <translation>%1：%2</translation>
+        <translation type="vanished">%1：%2</translation>
     </message>
     <message>
         <location filename="../widgets/MainWindow.cpp" line="123"/>
@@ -3049,38 +3049,38 @@
         <translation>就绪。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="43"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="44"/>
         <source>cannot create the folder %1 for the project</source>
         <translation>无法为项目创建文件夹 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="58"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="59"/>
         <source>Project saved to %1 (model, results and view)</source>
         <translation>项目已保存到 %1（模型、结果和视图）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="138"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="139"/>
         <source>Saving the project to %1…</source>
         <translation>正在保存项目到 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="198"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="196"/>
         <source>The project&apos;s results could not be read (%1); it opens without them.</source>
         <translation>无法读取项目的结果（%1）；项目将不带结果打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="273"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="266"/>
         <source>Wait until the running job has finished (or cancel it), then switch the language.</source>
         <translation>请等待当前任务完成（或取消它），然后再切换语言。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="306"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="299"/>
         <source>The training session under way was saved in %1 when the language changed: the instructor window&apos;s Session file ▸ Open session… continues it.</source>
         <translation>切换语言时，进行中的培训会话已保存到 %1：在教员窗口的 会话文件 ▸ 打开会话… 可继续。</translation>
     </message>
     <message>
         <source>The language changes when DryTwin is started again.</source>
-        <translation>语言将在 DryTwin 重新启动后生效。</translation>
+        <translation type="vanished">语言将在 DryTwin 重新启动后生效。</translation>
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="123"/>
@@ -3183,28 +3183,28 @@
         <translation>正在把自带演示数据（虚拟装置的 10 个批次）写入 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="53"/>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="122"/>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="129"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="54"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="123"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="130"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
     <message>
         <source>Project saved to %1</source>
-        <translation>项目已保存到 %1</translation>
+        <translation type="vanished">项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="146"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="147"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="155"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="156"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="51"/>
+        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="53"/>
         <source>Training session %1 (its recording is on the Training tab; no data set is loaded for the other tabs)</source>
         <translation>培训会话 %1（其记录显示在“培训”选项卡上；其他选项卡未加载数据集）</translation>
     </message>
@@ -3608,7 +3608,7 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>%1 predicted at %2 s</source>
-        <translation>%1 在 %2 s 时的预测</translation>
+        <translation type="vanished">%1 在 %2 s 时的预测</translation>
     </message>
     <message>
         <location filename="../widgets/mpc/MpcPanel.cpp" line="376"/>
@@ -3630,7 +3630,7 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>Save these plots as PNG, SVG or PDF</source>
-        <translation>将这些图表保存为 PNG、SVG 或 PDF</translation>
+        <translation type="vanished">将这些图表保存为 PNG、SVG 或 PDF</translation>
     </message>
     <message>
         <location filename="../widgets/common/PlotStack.cpp" line="125"/>
@@ -3694,7 +3694,7 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>unknown format &apos;%1&apos;: use .png, .svg or .pdf</source>
-        <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
+        <translation type="vanished">未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
         <location filename="../widgets/common/PlotStack.cpp" line="722"/>
@@ -3703,7 +3703,7 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)</source>
-        <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
+        <translation type="vanished">PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
         <location filename="../widgets/common/PlotStack.cpp" line="729"/>
@@ -3725,23 +3725,23 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>Eq. 30: constrained fit with certificate</source>
-        <translation>式 30：带证书的约束拟合</translation>
+        <translation type="vanished">式 30：带证书的约束拟合</translation>
     </message>
     <message>
         <source>eigenvalues pulled in after the fit</source>
-        <translation>拟合后将特征值收缩</translation>
+        <translation type="vanished">拟合后将特征值收缩</translation>
     </message>
     <message>
         <source>orthogonal projection P⊥ (Eq. 27)</source>
-        <translation>正交投影 P⊥（式 27）</translation>
+        <translation type="vanished">正交投影 P⊥（式 27）</translation>
     </message>
     <message>
         <source>Train PGRL-CC and the baselines</source>
-        <translation>训练 PGRL-CC 及基线模型</translation>
+        <translation type="vanished">训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
         <source>residual lags</source>
-        <translation>残差滞后阶数</translation>
+        <translation type="vanished">残差滞后阶数</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
@@ -3765,23 +3765,23 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>MAE X_out [% wb]</source>
-        <translation>MAE X_out [% 湿基]</translation>
+        <translation type="vanished">MAE X_out [% 湿基]</translation>
     </message>
     <message>
         <source>R² X_out</source>
-        <translation>R² X_out</translation>
+        <translation type="vanished">R² X_out</translation>
     </message>
     <message>
         <source>MAE T_out [°C]</source>
-        <translation>MAE T_out [°C]</translation>
+        <translation type="vanished">MAE T_out [°C]</translation>
     </message>
     <message>
         <source>skill 1 step</source>
-        <translation>1 步预报技巧</translation>
+        <translation type="vanished">1 步预报技巧</translation>
     </message>
     <message>
         <source>skill 30 steps</source>
-        <translation>30 步预报技巧</translation>
+        <translation type="vanished">30 步预报技巧</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="72"/>
@@ -3795,7 +3795,7 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>skill: MAE over the better reference [-]</source>
-        <translation>预报技巧：MAE 与较优参考之比 [-]</translation>
+        <translation type="vanished">预报技巧：MAE 与较优参考之比 [-]</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="78"/>
@@ -3819,7 +3819,7 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>MAE X_out, extrapolation</source>
-        <translation>MAE X_out（外推）</translation>
+        <translation type="vanished">MAE X_out（外推）</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="32"/>
@@ -4023,7 +4023,7 @@ extrapolation</source>
     </message>
     <message>
         <source>Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).</source>
-        <translation>留出部分：%1 行。预报技巧低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
+        <translation type="vanished">留出部分：%1 行。预报技巧低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
     </message>
 </context>
 <context>
@@ -4304,11 +4304,11 @@ extrapolation</source>
     </message>
     <message>
         <source>Instructor view</source>
-        <translation>教员视图</translation>
+        <translation type="vanished">教员视图</translation>
     </message>
     <message>
         <source>Shows the instructor&apos;s controls, the faults, the true moisture and the score; hide it before handing the screen to the trainee</source>
-        <translation>显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
+        <translation type="vanished">显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="90"/>
@@ -4551,7 +4551,7 @@ extrapolation</source>
     </message>
     <message>
         <source>Feed [t/h]</source>
-        <translation>进料 [t/h]</translation>
+        <translation type="vanished">进料 [t/h]</translation>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
@@ -4662,7 +4662,7 @@ extrapolation</source>
     </message>
     <message>
         <source>X_out true (instructor)</source>
-        <translation>X_out 真实值（教员）</translation>
+        <translation type="vanished">X_out 真实值（教员）</translation>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="295"/>
@@ -4716,7 +4716,7 @@ extrapolation</source>
     </message>
     <message>
         <source>Save the session into a folder</source>
-        <translation>将会话保存到文件夹</translation>
+        <translation type="vanished">将会话保存到文件夹</translation>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="426"/>
@@ -5047,7 +5047,7 @@ extrapolation</source>
     </message>
     <message>
         <source>the physics model was calibrated after it was learnt</source>
-        <translation>学习之后物理模型又经过了标定</translation>
+        <translation type="vanished">学习之后物理模型又经过了标定</translation>
     </message>
     <message>
         <location filename="../widgets/common/Workbench.cpp" line="538"/>
@@ -5068,15 +5068,15 @@ extrapolation</source>
     </message>
     <message>
         <source>Calibration %1: loss %2 → %3</source>
-        <translation>标定 %1：损失 %2 → %3</translation>
+        <translation type="vanished">标定 %1：损失 %2 → %3</translation>
     </message>
     <message>
         <source>Train</source>
-        <translation>训练</translation>
+        <translation type="vanished">训练</translation>
     </message>
     <message>
         <source>Trained PGRL-CC and the baselines</source>
-        <translation>已训练 PGRL-CC 及基线模型</translation>
+        <translation type="vanished">已训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
         <location filename="../widgets/common/Workbench.cpp" line="557"/>

@@ -11,6 +11,7 @@
 #include "mainwindow/MainWindowInternal.h"
 #include "training/TrainingPanel.h"
 #include "training/TrainingRunner.h"
+#include "workflow/ProjectFile.h"
 #include "workflow/ResultArchive.h"
 
 #include <QCoreApplication>
@@ -157,20 +158,17 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
         return false;
     }
     const QJsonObject o = doc.object();
-    const QDir base = QFileInfo(path).absoluteDir();
-    // A path relative to the project file where it exists there (a folder moved with its data),
-    // else where it was when saved; relative, it is what the user reads in a message.
-    const auto resolve = [&base](const QJsonObject& from, const QString& key) {
-        const QString relative = from.value(key).toString();
-        if (relative.isEmpty()) {
-            return QString();
+    // Every path resolved as `drytwin report` resolves it (workflow/ProjectFile.h).
+    const auto paths = workflow::readProjectPaths(path.toStdString());
+    if (!paths) {
+        if (error) {
+            *error = errorText(paths.error());
         }
-        const QString here = QDir::cleanPath(base.filePath(relative));
-        const QString saved = from.value(key + QStringLiteral("_absolute")).toString();
-        return QFileInfo::exists(here) || saved.isEmpty() || !QFileInfo::exists(saved) ? here : saved;
-    };
-    const QString data = resolve(o, QStringLiteral("data_path"));
-    const QString model = resolve(o, QStringLiteral("model_path"));
+        return false;
+    }
+    const auto q = [](const std::string& p) { return QString::fromStdString(p); };
+    const QString data = q(paths->data);
+    const QString model = q(paths->model);
     m_pendingDataFingerprint = o.value(QStringLiteral("data_fingerprint")).toString();
     m_projectWarning.clear(); // a warning of the project opened before does not carry over
     m_pendingTab = -1;
@@ -186,7 +184,7 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
     }
     // Results and the learnt parts' states, put back once the data and the model are in.
     m_pendingResults.reset();
-    const QString resultsFile = resolve(o, QStringLiteral("results_path"));
+    const QString resultsFile = q(paths->results);
     if (!resultsFile.isEmpty() && QFileInfo::exists(resultsFile)) {
         QFile rf(resultsFile);
         if (rf.open(QIODevice::ReadOnly)) {
@@ -221,16 +219,11 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
     if (!model.isEmpty() && QFileInfo::exists(model)) {
         m_pendingModel = model;
     }
-    const QString mapping = resolve(o, QStringLiteral("mapping_path"));
-    m_workbench.setReferencePath(resolve(o, QStringLiteral("reference_path")));
+    const QString mapping = q(paths->mapping);
+    m_workbench.setReferencePath(q(paths->reference));
     std::vector<DataSetEntry> dataSets;
-    for (const auto& v : o.value(QStringLiteral("data_sets")).toArray()) {
-        const QJsonObject e = v.toObject();
-        const QString setPath = resolve(e, QStringLiteral("path"));
-        if (!setPath.isEmpty()) {
-            dataSets.push_back({setPath, resolve(e, QStringLiteral("mapping_path")),
-                                e.value(QStringLiteral("label")).toString()});
-        }
+    for (const auto& e : paths->dataSets) {
+        dataSets.push_back({q(e.path), q(e.mapping), q(e.label)});
     }
     m_workbench.restoreDataSets(dataSets);
     if (!data.isEmpty()) {

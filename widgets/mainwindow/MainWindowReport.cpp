@@ -4,10 +4,12 @@
 #include "MainWindow.h"
 
 #include "report/ReportWriter.h"
+#include "workflow/ProjectFile.h"
 
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QMap>
 #include <QStringList>
 
 namespace drytwin::widgets {
@@ -15,25 +17,18 @@ namespace drytwin::widgets {
 QStringList MainWindow::reportMissingSteps() const {
     // The report has a section for each: a step not run would leave it empty, or worse, show
     // numbers of another model. Each named as its tab's button says it.
-    const auto& latest = m_workbench.latest();
     QStringList missing;
     if (!m_workbench.hasData()) {
         missing << tr("open data");
     }
-    if (!latest.calibrate) {
-        missing << tr("Calibrate");
-    }
-    if (!latest.evaluate) {
-        missing << tr("Learn the correction models (Residual model tab)");
-    }
-    if (!latest.ablation) {
-        missing << tr("Ablation (Residual model tab)");
-    }
-    if (!latest.discover) {
-        missing << tr("Discover");
-    }
-    if (!latest.mpc) {
-        missing << tr("Run scenario (What-if MPC tab)");
+    const QMap<QString, QString> buttons{
+        {QStringLiteral("calibrate"), tr("Calibrate")},
+        {QStringLiteral("evaluate"), tr("Learn the correction models (Residual model tab)")},
+        {QStringLiteral("ablation"), tr("Ablation (Residual model tab)")},
+        {QStringLiteral("discover"), tr("Discover")},
+        {QStringLiteral("mpc"), tr("Run scenario (What-if MPC tab)")}};
+    for (const auto& step : workflow::stepsMissingForReport(m_workbench.latest())) {
+        missing << buttons.value(QString::fromStdString(step));
     }
     return missing;
 }
@@ -48,17 +43,10 @@ Expected<QStringList> MainWindow::exportReport(const QString& folder) const {
     if (!QDir().mkpath(folder)) {
         return Error{ErrorKind::BadInput, folder.toStdString(), tr("cannot create the folder").toStdString()};
     }
-    const auto& latest = m_workbench.latest();
-    workflow::PipelineResult r;
-    r.inspect = m_workbench.summary();
-    r.calibrate = *latest.calibrate;
-    if (latest.train) {
-        r.train = *latest.train;
+    auto r = workflow::reportInputs(m_workbench.latest(), m_workbench.summary());
+    if (!r) {
+        return r.error();
     }
-    r.evaluate = *latest.evaluate;
-    r.ablation = *latest.ablation;
-    r.discover = *latest.discover;
-    r.mpc = *latest.mpc;
     ReportContext context;
     // What a reader needs to redo it: the data and model files the window worked on.
     context.command = tr("DryTwin workbench: data %1, model %2")
@@ -71,7 +59,7 @@ Expected<QStringList> MainWindow::exportReport(const QString& folder) const {
             context.dataFiles.push_back(b.sourcePath);
         }
     }
-    return writeHtmlPdfReport(r, m_workbench.siBatches(), context, folder);
+    return writeHtmlPdfReport(*r, m_workbench.siBatches(), context, folder);
 }
 
 void MainWindow::askAndExportReport() {

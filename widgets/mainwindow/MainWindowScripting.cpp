@@ -33,6 +33,8 @@ void MainWindow::startActions() {
             m_residual->train();
         } else if (a == QLatin1String("evaluate")) {
             m_workbench.evaluate();
+        } else if (a == QLatin1String("ablation")) {
+            m_workbench.ablation();
         } else if (a == QLatin1String("discover")) {
             m_workbench.discover();
         } else if (a == QLatin1String("mpc")) {

@@ -1,0 +1,91 @@
+// `drytwin report --project FILE --out DIR`: the pipeline's HTML and PDF report from what a saved
+// project holds (its results file and its data), so that work done in the workbench, or step by
+// step on the command line and saved as a project, reaches a report without re-running anything.
+
+#include "HeadlessCommands.h"
+#include "commands/CommandHelpers.h"
+
+#include "workflow/ProjectFile.h"
+#include "workflow/ResultArchive.h"
+#include "workflow/Session.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace drytwin::app {
+
+using namespace detail;
+
+int runReport(const CommandOptions& o) {
+    auto paths = workflow::readProjectPaths(o.projectPath);
+    if (!paths) {
+        return fail(paths.error());
+    }
+    std::error_code ec;
+    if (paths->results.empty() || !std::filesystem::exists(paths->results, ec)) {
+        return fail(Error{ErrorKind::BadInput, o.projectPath,
+                          paths->results.empty()
+                              ? "the project holds no results; run the steps in the workbench and save it"
+                              : "its results file " + paths->results + " is missing"});
+    }
+    std::ifstream in(paths->results, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    if (!in) {
+        return fail(Error{ErrorKind::BadInput, paths->results, "cannot read the project's results file"});
+    }
+    auto latest = workflow::parseLatestResults(text.str(), paths->results);
+    if (!latest) {
+        return fail(latest.error());
+    }
+    // Before the data are read: a project without every step's result fails at once, naming them.
+    if (auto missing = workflow::reportInputs(*latest, {}); !missing) {
+        return fail(
+            Error{ErrorKind::BadInput, o.projectPath,
+                  missing.error().reason +
+                      " (run them in the workbench and save the project, or run `drytwin pipeline`)"});
+    }
+    if (paths->data.empty()) {
+        return fail(Error{ErrorKind::BadInput, o.projectPath, "the project names no data set"});
+    }
+    // The report's figures draw the data the results came from.
+    CommandOptions withData = o;
+    withData.dataPath = paths->data;
+    withData.mappingPath = paths->mapping;
+    withData.modelPath.clear();
+    workflow::Session session;
+    int rc = 0;
+    if (!open(withData, session, rc)) {
+        return rc;
+    }
+    auto summary = session.inspect();
+    if (!summary) {
+        return fail(summary.error());
+    }
+    auto inputs = workflow::reportInputs(*latest, *summary);
+    if (!inputs) {
+        return fail(inputs.error());
+    }
+    if (!o.renderReport) {
+        return fail(Error{ErrorKind::Usage, "report", "this build cannot draw the report's figures"});
+    }
+    if (std::filesystem::create_directories(o.outPath, ec); ec) {
+        return fail(
+            Error{ErrorKind::BadInput, o.outPath, "cannot create the report folder: " + ec.message()});
+    }
+    std::string error;
+    const auto files = o.renderReport(*inputs, session, o.outPath, error);
+    if (!error.empty()) {
+        return fail(Error{ErrorKind::BadInput, o.outPath, "the HTML/PDF report: " + error});
+    }
+    std::printf("report of project %s (data %s)\n", o.projectPath.c_str(), paths->data.c_str());
+    for (const auto& f : files) {
+        std::printf("report %s\n", f.c_str());
+    }
+    return 0;
+}
+
+} // namespace drytwin::app

@@ -1,0 +1,99 @@
+#include "workflow/ProjectFile.h"
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace drytwin::workflow {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+std::string text(const json& from, const std::string& key) {
+    const auto it = from.find(key);
+    return it != from.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+} // namespace
+
+Expected<ProjectPaths> readProjectPaths(const std::string& projectPath) {
+    std::ifstream in(projectPath, std::ios::binary);
+    if (!in) {
+        return Error{ErrorKind::BadInput, projectPath, "cannot open the project file"};
+    }
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const json o = json::parse(buffer.str(), nullptr, false);
+    if (o.is_discarded() || !o.is_object() || text(o, "format") != "drytwin-project") {
+        return Error{ErrorKind::BadInput, projectPath,
+                     o.is_discarded() ? "not a DryTwin project (not JSON)"
+                                      : "not a DryTwin project (no \"format\": \"drytwin-project\")"};
+    }
+    const fs::path base = fs::absolute(fs::path(projectPath)).parent_path();
+    const auto resolve = [&base](const json& from, const std::string& key) {
+        const std::string relative = text(from, key);
+        if (relative.empty()) {
+            return std::string();
+        }
+        const fs::path here = (base / relative).lexically_normal();
+        const std::string saved = text(from, key + "_absolute");
+        std::error_code ec;
+        return fs::exists(here, ec) || saved.empty() || !fs::exists(saved, ec) ? here.string() : saved;
+    };
+    ProjectPaths p;
+    p.data = resolve(o, "data_path");
+    p.mapping = resolve(o, "mapping_path");
+    p.model = resolve(o, "model_path");
+    p.results = resolve(o, "results_path");
+    p.reference = resolve(o, "reference_path");
+    if (const auto sets = o.find("data_sets"); sets != o.end() && sets->is_array()) {
+        for (const auto& e : *sets) {
+            if (e.is_object() && !resolve(e, "path").empty()) {
+                p.dataSets.push_back({text(e, "label"), resolve(e, "path"), resolve(e, "mapping_path")});
+            }
+        }
+    }
+    return p;
+}
+
+std::vector<std::string> stepsMissingForReport(const LatestResults& latest) {
+    std::vector<std::string> missing;
+    const std::pair<bool, const char*> steps[] = {{latest.calibrate.has_value(), "calibrate"},
+                                                  {latest.evaluate.has_value(), "evaluate"},
+                                                  {latest.ablation.has_value(), "ablation"},
+                                                  {latest.discover.has_value(), "discover"},
+                                                  {latest.mpc.has_value(), "mpc"}};
+    for (const auto& [done, name] : steps) {
+        if (!done) {
+            missing.emplace_back(name);
+        }
+    }
+    return missing;
+}
+
+Expected<PipelineResult> reportInputs(const LatestResults& latest, const data::DataSetSummary& inspect) {
+    if (const auto missing = stepsMissingForReport(latest); !missing.empty()) {
+        std::string list;
+        for (const auto& m : missing) {
+            list += (list.empty() ? "" : ", ") + m;
+        }
+        return Error{ErrorKind::Usage, "report",
+                     "the report needs every step's result; still to run: " + list};
+    }
+    PipelineResult r;
+    r.inspect = inspect;
+    r.calibrate = *latest.calibrate;
+    if (latest.train) {
+        r.train = *latest.train;
+    }
+    r.evaluate = *latest.evaluate;
+    r.ablation = *latest.ablation;
+    r.discover = *latest.discover;
+    r.mpc = *latest.mpc;
+    return r;
+}
+
+} // namespace drytwin::workflow

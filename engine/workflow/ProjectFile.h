@@ -1,0 +1,38 @@
+#pragma once
+
+#include "common/Error.h"
+#include "workflow/Session.h"
+
+#include <string>
+#include <vector>
+
+namespace drytwin::workflow {
+
+/// @brief The files a project (`.dtproj`, written by the workbench's File ▸ Save project) points
+/// to, each resolved: relative to the project's folder where it exists there (a folder moved with
+/// its data), else where it was when the project was saved (a project file mailed away from its
+/// data). An entry the project does not have is empty. Read alike by the workbench and by
+/// `drytwin report`.
+struct ProjectPaths {
+    std::string data, mapping, model, results, reference;
+    struct DataSet {
+        std::string label, path, mapping;
+    };
+    std::vector<DataSet> dataSets; ///< every data set the window had open
+};
+
+/// @brief Reads @p projectPath; a BadInput error naming the file when it cannot be read or is not a
+/// DryTwin project.
+Expected<ProjectPaths> readProjectPaths(const std::string& projectPath);
+
+/// @brief The steps a report needs whose result @p latest lacks, by their subcommand's name
+/// (calibrate, evaluate, ablation, discover, mpc), in the pipeline's order.
+std::vector<std::string> stepsMissingForReport(const LatestResults& latest);
+
+/// @brief What the pipeline's report is drawn from, put together from a session's (or a saved
+/// project's) latest results and the data's summary; a Usage error naming the steps still to run
+/// when one is missing (stepsMissingForReport()), so that no section shows numbers of another
+/// model or none.
+Expected<PipelineResult> reportInputs(const LatestResults& latest, const data::DataSetSummary& inspect);
+
+} // namespace drytwin::workflow

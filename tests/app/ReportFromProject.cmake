@@ -1,0 +1,59 @@
+# `drytwin report --project`: the pipeline's report from a project the workbench saved, re-running
+# nothing. The workbench runs every step on a small data set and saves the project; the project is
+# then copied where its relative paths lead nowhere (it must find its data where they were saved),
+# and the report must be written with every section. A project lacking a step's result is refused
+# naming the step, and a file that is not a project is refused naming the file; both exit 3 and
+# write no report. Usage: cmake -DEXE=drytwin -DWORK=dir -P this file
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+function(run expect_rc)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL expect_rc)
+    message(FATAL_ERROR "${ARGN}: exit ${rc}, expected ${expect_rc}\n${out}\n${err}")
+  endif()
+  set(out "${out}" PARENT_SCOPE)
+  set(err "${err}" PARENT_SCOPE)
+endfunction()
+
+run(0 ${EXE} generate --seed 3 --batches 2 --samples 900 --out ${WORK}/data)
+run(0 ${CMAKE_COMMAND} -E env QT_QPA_PLATFORM=offscreen ${EXE} --data ${WORK}/data
+    --run calibrate,train,evaluate,ablation,discover,mpc --save-project ${WORK}/saved/line.dtproj
+    --screenshot ${WORK}/window.png)
+file(COPY ${WORK}/saved/ DESTINATION ${WORK}/mailed/away/project)
+
+run(0 ${EXE} report --project ${WORK}/mailed/away/project/line.dtproj --out ${WORK}/report)
+foreach(f report.html report.pdf)
+  if(NOT EXISTS ${WORK}/report/${f})
+    message(FATAL_ERROR "no ${f} written:\n${out}\n${err}")
+  endif()
+endforeach()
+file(READ ${WORK}/report/report.html html)
+foreach(section "Calibration" "Held-out accuracy" "Ablation (paper Table 3)" "Discovery"
+        "Closed-loop MPC (paper Table 2)" "drytwin report --project")
+  string(FIND "${html}" "${section}" at)
+  if(at LESS 0)
+    message(FATAL_ERROR "the report lacks '${section}'")
+  endif()
+endforeach()
+
+# The same project without its what-if run: refused, naming the step, no report.
+file(READ ${WORK}/saved/line.dtproj.results.json results)
+string(JSON results REMOVE "${results}" mpc)
+file(WRITE ${WORK}/partial/line.dtproj.results.json "${results}")
+file(READ ${WORK}/saved/line.dtproj project)
+string(JSON project SET "${project}" results_path "\"line.dtproj.results.json\"")
+string(JSON project SET "${project}" results_path_absolute "\"\"")
+file(WRITE ${WORK}/partial/line.dtproj "${project}")
+run(3 ${EXE} report --project ${WORK}/partial/line.dtproj --out ${WORK}/partial-report)
+if(NOT err MATCHES "line.dtproj: the report needs every step's result; still to run: mpc")
+  message(FATAL_ERROR "the refusal does not name the missing step:\n${err}")
+endif()
+if(EXISTS ${WORK}/partial-report/report.html)
+  message(FATAL_ERROR "a report was written without the what-if run")
+endif()
+
+run(3 ${EXE} report --project ${WORK}/data/B01.csv --out ${WORK}/not-a-project)
+if(NOT err MATCHES "B01.csv: not a DryTwin project")
+  message(FATAL_ERROR "a batch file given as a project is not named as such:\n${err}")
+endif()
+message(STATUS "report from a moved project: every section; a missing step and a non-project refused")
