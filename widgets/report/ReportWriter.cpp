@@ -80,6 +80,18 @@ QString sha256(const std::string& path) {
     return QString::fromLatin1(h.result().toHex());
 }
 
+/// A table's start with its header row, each column given its share of the page's width: left to
+/// the PDF's layout (QTextDocument), every column took an equal share and broke words inside
+/// ("extrapolati-on", "controlle-r", "no_lv_correcti-on"), names in the first column most.
+QString tableHead(const std::vector<std::pair<QString, int>>& columns) {
+    QString head =
+        QStringLiteral("<table border=\"1\" cellpadding=\"3\" cellspacing=\"0\" width=\"100%\"><tr>");
+    for (const auto& [title, percent] : columns) {
+        head += QStringLiteral("<th width=\"%1%\">%2</th>").arg(percent).arg(title);
+    }
+    return head + QStringLiteral("</tr>");
+}
+
 } // namespace
 
 Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
@@ -128,10 +140,13 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
 
     // Calibration.
     const auto& c = r.calibrate.calibration;
-    both(QStringLiteral(
-             "<h2>Calibration</h2><p>%1, %2 evaluations; loss %3 → %4; outlet MAE %5 → %6 % wb. Intervals: "
-             "%7.</p><table border=\"1\" cellpadding=\"3\"><tr><th>parameter</th><th>estimate</th>"
-             "<th>95 % interval</th><th>unit</th></tr>")
+    both((QStringLiteral(
+              "<h2>Calibration</h2><p>%1, %2 evaluations; loss %3 → %4; outlet MAE %5 → %6 % wb. Intervals: "
+              "%7.</p>") +
+          tableHead({{QStringLiteral("parameter"), 30},
+                     {QStringLiteral("estimate"), 20},
+                     {QStringLiteral("95 % interval"), 35},
+                     {QStringLiteral("unit"), 15}}))
              .arg(QString::fromLatin1(terminationName(r.calibrate.ending.termination)))
              .arg(c.evaluations)
              .arg(num(c.before.loss, 5), num(c.after.loss, 5), num(c.before.maeXOutPct, 3),
@@ -159,11 +174,14 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
 
     // Held-out metrics.
     const auto& ev = r.evaluate.evaluation;
-    both(QStringLiteral(
-             "<h2>Held-out accuracy</h2><p>Split %1, %2 test rows; skill = MAE over the better of the two "
-             "reference predictors at the same horizon (below 1 beats both).</p><table border=\"1\" "
-             "cellpadding=\"3\"><tr><th>model</th><th>MAE X_out [% wb]</th><th>R² X_out</th><th>MAE T_out "
-             "[°C]</th><th>skill, 1 step</th></tr>")
+    both((QStringLiteral(
+              "<h2>Held-out accuracy</h2><p>Split %1, %2 test rows; skill = MAE over the better of the two "
+              "reference predictors at the same horizon (below 1 beats both).</p>") +
+          tableHead({{QStringLiteral("model"), 32},
+                     {QStringLiteral("MAE X_out [% wb]"), 17},
+                     {QStringLiteral("R² X_out"), 17},
+                     {QStringLiteral("MAE T_out [°C]"), 17},
+                     {QStringLiteral("skill, 1 step"), 17}}))
              .arg(esc(ev.split))
              .arg(ev.testRows));
     for (const auto& m : ev.models) {
@@ -274,10 +292,13 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
     }
 
     // Ablation (Table 3).
-    both(QStringLiteral(
-             "<h2>Ablation (paper Table 3)</h2><table border=\"1\" cellpadding=\"3\"><tr><th>variant</th>"
-             "<th>MAE X_out</th><th>R² X_out</th><th>MAE T_out</th><th>MAE X_out, %1 steps</th><th>MAE "
-             "X_out, extrapolation</th></tr>")
+    both((QStringLiteral("<h2>Ablation (paper Table 3)</h2>") +
+          tableHead({{QStringLiteral("variant"), 35},
+                     {QStringLiteral("MAE X_out"), 13},
+                     {QStringLiteral("R² X_out"), 12},
+                     {QStringLiteral("MAE T_out"), 13},
+                     {QStringLiteral("MAE X_out, %1 steps"), 13},
+                     {QStringLiteral("MAE X_out, extra\u00ADpolation"), 14}}))
              .arg(r.ablation.multiStepHorizon));
     for (const auto& a : r.ablation.rows) {
         // The paper's words for each variant, its key below them (as in ablation.json).
@@ -322,13 +343,18 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
 
     // Closed loop (Table 2, Fig. 5).
     const auto& cl = r.mpc.closedLoop;
-    both(QStringLiteral(
-             "<h2>Closed-loop MPC (paper Table 2)</h2><p>Scenario %1 on DryTwin's virtual %4 plant (%5 "
-             "instruments), %2 steps, band ±%6 % wb; plant gain %3 % wb/K. A fallback is a decision that "
-             "kept the previous plan (the model saw no effect of the hot air, or the solve failed).</p>"
-             "<table border=\"1\" cellpadding=\"3\"><tr><th>controller</th><th>IAE [%·s]</th><th>effort "
-             "[K²]</th><th>violations [%]</th><th>solve median [ms]</th><th>believed gain [%/K]</th>"
-             "<th>fallbacks</th></tr>")
+    both((QStringLiteral(
+              "<h2>Closed-loop MPC (paper Table 2)</h2><p>Scenario %1 on DryTwin's virtual %4 plant (%5 "
+              "instruments), %2 steps, band ±%6 % wb; plant gain %3 % wb/K. A fallback is a decision that "
+              "kept the previous plan (the model saw no effect of the hot air, or the solve failed).</p>"
+              "") +
+          tableHead({{QStringLiteral("controller"), 25},
+                     {QStringLiteral("IAE [%·s]"), 10},
+                     {QStringLiteral("effort [K²]"), 11},
+                     {QStringLiteral("violations [%]"), 16},
+                     {QStringLiteral("solve median [ms]"), 12},
+                     {QStringLiteral("believed gain [%/K]"), 14},
+                     {QStringLiteral("fallbacks"), 12}}))
              .arg(esc(cl.scenario.name))
              .arg(cl.scenario.lengthS)
              .arg(num(cl.plantGainPctPerK))
@@ -403,10 +429,10 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
     for (const auto& [name, version] : engineLibraryVersions()) {
         both(QStringLiteral("; %1 %2").arg(esc(name), esc(version)));
     }
-    both(QStringLiteral(
-             ".</p><p>Closed-loop scenario seed %1; every other random choice uses the options' fixed "
-             "seeds, so the same command on the same files gives the same numbers.</p><table border=\"1\" "
-             "cellpadding=\"3\"><tr><th>data file</th><th>SHA-256</th></tr>")
+    both((QStringLiteral(
+              ".</p><p>Closed-loop scenario seed %1; every other random choice uses the options' fixed "
+              "seeds, so the same command on the same files gives the same numbers.</p>") +
+          tableHead({{QStringLiteral("data file"), 45}, {QStringLiteral("SHA-256"), 55}}))
              .arg(cl.scenario.seed));
     for (const auto& f : context.dataFiles) {
         both(QStringLiteral("<tr><td>%1</td><td><code>%2</code></td></tr>").arg(esc(f), sha256(f)));
@@ -435,6 +461,9 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
         writer.setPageSize(QPageSize(QPageSize::A4));
         writer.setResolution(110);
         writer.setTitle(QStringLiteral("DryTwin pipeline report"));
+        // Tables a size below the text: seven columns of Table 2 at the text's size broke numbers
+        // and words inside ("1464.-1", "fallbac-ks") on A4.
+        pdfDoc.setDefaultStyleSheet(QStringLiteral("td, th { font-size: 8pt; }"));
         pdfDoc.setHtml(pdf); // clears resources: the images go in after it
         for (const auto& [name, image] : fig.images) {
             pdfDoc.addResource(QTextDocument::ImageResource, QUrl(name), image);
