@@ -10,7 +10,8 @@
 //      [--oracle (each mechanism run asks about its hidden cause alone)]
 //      [--reference (issue #41: each run judged against healthy data of another seed, 4 x 3,000 s,
 //      by discoverChange; the detectors' flags in each row, and each seed's healthy run first: a detector
-//      that flags it flags the seed's conditions, not the mechanism)] [--no-structure (with --reference: the
+//      that flags it flags the seed's conditions, not the mechanism)] [--reference-batches N (with --reference:
+//      the reference period's batches, default 4)] [--no-structure (with --reference: the
 //      line's own structure not learnt, the causes' normal values alone)] [--size-rule (with --reference:
 //      an output a cause acts on counts against it when its error rises, as alone; the rule before
 //      2026-11-27, instead of the direction of the cause's effect)] [--share-of-whole (with --reference:
@@ -62,6 +63,8 @@ discovery::DiscoveryOptions discoveryOptions; ///< --min-explained changes its s
 /// mechanism, no onset), as an engineer judges a line against the weeks when it ran well.
 bool againstReference = false;
 constexpr unsigned kReferenceSeedOffset = 7000;
+/// --reference-batches N: the reference period's batches of 3,000 s (default 4, as the data judged).
+int referenceBatches = 4;
 
 Outcome run(plant::PlantOptions o, const std::string& hidden) {
     o.batches = 4;
@@ -87,6 +90,7 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
         // The same line in normal operation: where it drifts (an unmeasured disturbance that
         // comes and goes), the reference drifts too; its sensors fault as often.
         healthy.seed = o.seed + kReferenceSeedOffset;
+        healthy.batches = referenceBatches;
         auto ref = plant::runPlant(healthy);
         if (!ref) {
             out.named = "reference plant failed: " + ref.error().message();
@@ -261,6 +265,9 @@ int main(int argc, char** argv) {
             discoveryOptions.lineStructureWithinReferenceRange = false;
         } else if (a == "--no-structure") { // against a reference: the causes' normal values alone
             discoveryOptions.learnLineStructure = false;
+        } else if (a == "--reference-batches" && std::atoi(next.c_str()) >= 2) {
+            referenceBatches = std::atoi(next.c_str());
+            ++i;
         } else if (a == "--mechanism" && !next.empty()) {
             only = next;
             ++i;
@@ -287,7 +294,7 @@ int main(int argc, char** argv) {
                                  "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
                                  "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
                                  "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
-                                 "[--evaluations N] [--oracle] [--reference] [--no-structure] "
+                                 "[--evaluations N] [--oracle] [--reference] [--reference-batches N] [--no-structure] "
                                  "[--structure-extrapolates] [--keep-taken-up] [--size-rule] "
                                  "[--spread-bound] [--undetected-at-5-percent] [--share-of-whole] "
                                  "[--no-constancy] [--look-alike-overall]\n");
