@@ -2,6 +2,7 @@
 #include "CommandLine.h"
 #include "MainWindow.h"
 #include "common/AllocatorTuning.h"
+#include "common/BlasThreads.h"
 #include "common/Translations.h"
 #include "report/ReportWriter.h"
 #include "workflow/Session.h"
@@ -231,6 +232,10 @@ std::vector<std::string> renderReport(char** argv, const drytwin::workflow::Pipe
 
 int main(int argc, char** argv) {
     drytwin::tuneAllocatorForLargeMatrices();
+    drytwin::blasInCallingThread();
+    if (const std::string problem = drytwin::blasConcurrencyProblem(); !problem.empty()) {
+        std::fprintf(stderr, "drytwin: warning: %s\n", problem.c_str());
+    }
     drytwin::app::CommandLine commandLine;
     std::string command;
     for (int i = 0; i < argc; ++i) {

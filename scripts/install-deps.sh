@@ -16,8 +16,11 @@ PACKAGES=(
   libeigen3-dev libsundials-dev libnlopt-cxx-dev coinor-libipopt-dev libtorch-dev
   # libtorch's matrix products go to whichever libblas.so.3 is installed; without this it is the
   # reference BLAS, and the LSTM's sgemm was 43 % of `drytwin evaluate` on the demo (10.2 s; 4.7 s
-  # with OpenBLAS). The serial build: DryTwin runs its own two jobs side by side (docs/speed.md).
-  libopenblas0-serial
+  # with OpenBLAS). The threaded build, set to one thread per caller at start
+  # (engine/common/BlasThreads.h): DryTwin calls BLAS from two threads at once (a training
+  # session's MPC beside a Train job), which the serial build is not safe for (it crashed inside
+  # Ipopt; test_baselines trainsBesideIpoptSolvesOnAnotherThread).
+  libopenblas0-pthread
   # 3D view
   libvtk9-dev libvtk9-qt-dev
   # well-kept helpers instead of hand-written code:

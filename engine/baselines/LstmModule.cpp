@@ -1,5 +1,7 @@
 #include "baselines/LstmNetwork.h"
 
+#include "common/BlasThreads.h"
+
 #include <cstdlib>
 #include <dlfcn.h>
 #include <filesystem>
@@ -69,6 +71,7 @@ Loaded load() {
             continue;
         }
         out.entry = entry;
+        blasInCallingThread(); // libtorch's BLAS, called beside other threads' (common/BlasThreads.h)
         return out;
     }
     out.failure = "the LSTM's libtorch module (" + std::string(kModuleFile) +

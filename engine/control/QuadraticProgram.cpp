@@ -1,5 +1,7 @@
 #include "control/QuadraticProgram.h"
 
+#include "common/BlasThreads.h"
+
 #include <IpIpoptApplication.hpp>
 #include <IpSolveStatistics.hpp>
 #include <IpTNLP.hpp>
@@ -172,6 +174,7 @@ struct IpoptQpSolver::Impl {
 };
 
 IpoptQpSolver::IpoptQpSolver(int maxIterations) : m_impl(std::make_unique<Impl>()) {
+    blasInCallingThread(); // MUMPS's BLAS, called beside other threads' (common/BlasThreads.h)
     std::lock_guard<std::mutex> lock(ipoptMutex());
     auto& app = m_impl->app;
     app = IpoptApplicationFactory();

@@ -1,5 +1,7 @@
 #include "baselines/LstmBaseline.h"
+#include "common/BlasThreads.h"
 #include "common/Units.h"
+#include "control/QuadraticProgram.h"
 #include "hybrid/Evaluation.h"
 #include "hybrid/HybridTraining.h"
 #include "plant/PlantExport.h"
@@ -7,8 +9,10 @@
 
 #include <QtTest>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <optional>
+#include <thread>
 
 using namespace drytwin;
 
@@ -62,6 +66,55 @@ class TestLstmBaseline : public QObject {
     }
 
 private Q_SLOTS:
+    // The LSTM (libtorch's matrix products in OpenBLAS) trains on one thread while Ipopt (MUMPS's,
+    // in the same BLAS) solves on another, as in the workbench when a training session's MPC runs
+    // beside a Train job. Debian's OpenBLAS built without threads crashed there inside Ipopt; the
+    // threaded build (scripts/install-deps.sh) takes both. Every solve must give the same answer
+    // as the one made alone, and the training must end.
+    void trainsBesideIpoptSolvesOnAnotherThread() {
+        QVERIFY2(blasConcurrencyProblem().empty(), blasConcurrencyProblem().c_str());
+        control::DenseQp qp;
+        const int n = 160; // a horizon's moves, rate-limited: MUMPS factors blocks big enough for BLAS
+        const Eigen::MatrixXd spread = Eigen::MatrixXd::Random(n, n);
+        qp.h = spread.transpose() * spread + Eigen::MatrixXd::Identity(n, n);
+        qp.f = Eigen::VectorXd::LinSpaced(n, -1, 1);
+        qp.xLow = Eigen::VectorXd::Constant(n, -0.2);
+        qp.xHigh = Eigen::VectorXd::Constant(n, 0.3);
+        // Cumulative moves bounded (a dense lower triangle), as the MPC bounds the hot air.
+        qp.a = Eigen::MatrixXd::Ones(n, n).triangularView<Eigen::Lower>();
+        qp.aLow = Eigen::VectorXd::Constant(n, -1.0);
+        qp.aHigh = Eigen::VectorXd::Constant(n, 1.0);
+        const Eigen::VectorXd start = Eigen::VectorXd::Zero(n);
+        const auto alone = control::IpoptQpSolver().solve(qp, start);
+        QVERIFY(alone.solved);
+        std::atomic<bool> stop{false};
+        std::atomic<int> solves{0}, differing{0};
+        std::thread solver([&] {
+            while (!stop) {
+                control::IpoptQpSolver fresh; // cold, as the first decision of a session
+                const auto s = fresh.solve(qp, start);
+                differing += !s.solved || (s.x - alone.x).cwiseAbs().maxCoeff() > 1e-9;
+                ++solves;
+            }
+        });
+        auto o = plant::PlantOptions::demo(5, plant::PlantKind::Lumped);
+        o.batches = 3;
+        o.samples = 2000;
+        auto r = plant::runPlant(o);
+        QVERIFY(r.ok());
+        const auto batches = plant::toSiBatches(*r, o.seed);
+        const auto pbm = std::move(*hybrid::simulatePbm(batches, hybrid::HybridModel{}, {}));
+        baselines::LstmOptions options; // the workbench's size: its products use BLAS's buffers
+        options.epochs = 4;
+        options.seed = 11;
+        auto lstm = baselines::LstmBaseline::train(hybrid::splitViews(batches, pbm, false), options);
+        stop = true;
+        solver.join();
+        QVERIFY2(lstm.ok(), lstm.ok() ? "" : lstm.error().message().c_str());
+        QVERIFY2(solves > 5, qPrintable(QString("only %1 solves beside the training").arg(solves.load())));
+        QCOMPARE(differing.load(), 0);
+    }
+
     void initTestCase() {
         // The plant, the PBM and the split are the engine's own: libtorch is not loaded for them
         // (it costs every program a second at start); the first LSTM trained loads its module.
