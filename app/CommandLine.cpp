@@ -286,10 +286,10 @@ CommandLine::CommandLine() : m_impl(new Impl) {
 
     auto* report = app.add_subcommand(
         "report", "the pipeline's HTML and PDF report from a saved project's results, re-running nothing");
-    report->add_option("--project", o.projectPath, "project file (.dtproj) saved by the workbench")
-        ->required()
-        ->check(CLI::ExistingFile);
-    report->add_option("--out", o.outPath, "report folder")->required();
+    // Not CLI11's ExistingFile check: a missing project is bad input (exit 3), named by the reader.
+    report->add_option("--project", o.projectPath, "project file (.dtproj) saved by the workbench")->required();
+    report->add_option("--out", o.outPath, "report folder (made if missing; its report.html and report.pdf are replaced)")
+        ->required();
     reg(report, runReport);
 }
 
@@ -343,7 +343,8 @@ ParsedCommandLine CommandLine::parse(int argc, char** argv) {
     // minutes of computing loses them (folders made by generate, training and pipeline excepted).
     if (m_impl->selected) {
         const std::string name = m_impl->selected->get_name();
-        const bool writesFolder = name == "generate" || name == "training" || name == "pipeline";
+        const bool writesFolder =
+            name == "generate" || name == "training" || name == "pipeline" || name == "report";
         for (const auto& [flag, path] :
              {std::pair<const char*, const std::string*>{"--out", &m_impl->options.outPath},
               {"--json", &m_impl->options.jsonPath}}) {

@@ -212,6 +212,7 @@ std::vector<std::string> renderReport(char** argv, const drytwin::workflow::Pipe
     }
     drytwin::widgets::ReportContext context;
     context.command = QString::fromStdString(command);
+    context.resultsFile = QString::fromStdString(result.resultsFrom);
     if (const auto data = session.dataSet()) {
         for (const auto& b : data->batches) {
             context.dataFiles.push_back(b.sourcePath);

@@ -4,493 +4,540 @@
 <context>
     <name>ColumnMeanings</name>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="95"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="104"/>
         <source>time since batch start</source>
         <translation>批次开始以来的时间</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="96"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="105"/>
         <source>hot-air temperature setpoint</source>
         <translation>热风温度设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="97"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="106"/>
         <source>measured hot-air temperature at the tube inlet</source>
         <translation>管道入口处实测热风温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="98"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="107"/>
         <source>air speed in the drying tube</source>
         <translation>干燥管内风速</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="99"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="108"/>
         <source>wet feed rate entering the tube</source>
         <translation>进入干燥管的湿物料流量</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="100"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="109"/>
         <source>inlet moisture</source>
         <translation>入口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="101"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="110"/>
         <source>inlet material temperature</source>
         <translation>入口物料温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="102"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="111"/>
         <source>ambient air temperature</source>
         <translation>环境空气温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="103"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="112"/>
         <source>ambient relative humidity</source>
         <translation>环境相对湿度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="104"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="113"/>
         <source>moisture at the tube outlet</source>
         <translation>管道出口处含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="105"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="114"/>
         <source>material temperature at the tube outlet</source>
         <translation>管道出口处物料温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="106"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="115"/>
         <source>final outlet moisture after the winnower</source>
         <translation>风选机后最终出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="107"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="116"/>
         <source>final outlet temperature after the winnower</source>
         <translation>风选机后最终出口温度</translation>
     </message>
 </context>
 <context>
+    <name>DiscoverPanel</name>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="375"/>
+        <source>compensation</source>
+        <translation>相互补偿</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="376"/>
+        <source>inconsistent</source>
+        <translation>各批次不一致</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="377"/>
+        <source>not constant</source>
+        <translation>批次内不恒定</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="378"/>
+        <source>within normal range</source>
+        <translation>在正常范围内</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="379"/>
+        <source>below the floor</source>
+        <translation>低于实用下限</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="380"/>
+        <source>no held-out gain</source>
+        <translation>留出集无增益</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="381"/>
+        <source>its look-alike</source>
+        <translation>是其相似原因</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="382"/>
+        <source>line dynamics</source>
+        <translation>产线自身动态</translation>
+    </message>
+</context>
+<context>
     <name>DisplayNames</name>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="11"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="20"/>
         <source>Physics model</source>
         <translation>物理模型</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="13"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="22"/>
         <source>Physics + learnt correction (PGRL-CC)</source>
         <translation>物理模型 + 学习修正（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="15"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="24"/>
         <source>Physics + input-only correction</source>
         <translation>物理模型 + 仅输入修正</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="17"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="26"/>
         <source>LSTM (black box)</source>
         <translation>LSTM（黑箱）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="19"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="28"/>
         <source>PI loop (the plant&apos;s own)</source>
         <translation>PI 回路（装置自带）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="29"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="38"/>
         <source>Last measurement held</source>
         <translation>保持最后测量值</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="32"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="41"/>
         <source>Physics model, last error held</source>
         <translation>物理模型，保持最后误差</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="39"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="48"/>
         <source>hot-air setpoint</source>
         <translation>热风设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="40"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="49"/>
         <source>hot-air temperature</source>
         <translation>热风温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="41"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="50"/>
         <source>air speed</source>
         <translation>风速</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="42"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="51"/>
         <source>feed rate</source>
         <translation>进料量</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="43"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="52"/>
         <source>inlet moisture</source>
         <translation>入口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="44"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="53"/>
         <source>inlet material temperature</source>
         <translation>入口物料温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="45"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="54"/>
         <source>ambient temperature</source>
         <translation>环境温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="46"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="55"/>
         <source>ambient humidity</source>
         <translation>环境湿度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="47"/>
-        <location filename="../widgets/common/DisplayNames.cpp" line="52"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="56"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="61"/>
         <source>outlet moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="48"/>
-        <location filename="../widgets/common/DisplayNames.cpp" line="53"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="57"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="62"/>
         <source>outlet temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="49"/>
-        <location filename="../widgets/common/DisplayNames.cpp" line="54"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="58"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="63"/>
         <source>tube-outlet moisture</source>
         <translation>管道出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="50"/>
-        <location filename="../widgets/common/DisplayNames.cpp" line="55"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="59"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="64"/>
         <source>tube-outlet temperature</source>
         <translation>管道出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="56"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="65"/>
         <source>model error, outlet moisture</source>
         <translation>模型误差，出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="57"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="66"/>
         <source>model error, outlet temperature</source>
         <translation>模型误差，出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="58"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="67"/>
         <source>model error, tube-outlet moisture</source>
         <translation>模型误差，管道出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="59"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="68"/>
         <source>model error, tube-outlet temperature</source>
         <translation>模型误差，管道出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="61"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="70"/>
         <source>model&apos;s tube-outlet moisture</source>
         <translation>模型计算的管道出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="62"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="71"/>
         <source>model&apos;s tube-outlet temperature</source>
         <translation>模型计算的管道出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="63"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="72"/>
         <source>model&apos;s moisture on the conveyor</source>
         <translation>模型计算的输送带上水分</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="64"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="73"/>
         <source>model&apos;s temperature on the conveyor</source>
         <translation>模型计算的输送带上温度</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="74"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="83"/>
         <source>tube-wall heat loss</source>
         <translation>管壁散热</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="75"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="84"/>
         <source>drying air cooling along the tube</source>
         <translation>干燥风沿管降温</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="76"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="85"/>
         <source>heat-transfer fouling</source>
         <translation>传热结垢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="77"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="86"/>
         <source>slow outlet moisture meter</source>
         <translation>出口水分仪响应慢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="78"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="87"/>
         <source>outlet moisture meter offset</source>
         <translation>出口水分仪偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="79"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="88"/>
         <source>conveyor transport time off</source>
         <translation>输送时间偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="80"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="89"/>
         <source>slower drying below critical moisture</source>
         <translation>低于临界含水率时干燥变慢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="81"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="90"/>
         <source>moisture taken back on the conveyor</source>
         <translation>输送中回潮</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="82"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="91"/>
         <source>inlet moisture gauge offset</source>
         <translation>入口水分仪偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="83"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="92"/>
         <source>slow hot-air thermocouple</source>
         <translation>热风热电偶响应慢</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="84"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="93"/>
         <source>noisy inlet moisture gauge</source>
         <translation>入口水分仪噪声大</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="85"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="94"/>
         <source>outlet mixing</source>
         <translation>出口混合</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="115"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="124"/>
         <source>seconds since the start</source>
         <translation>自开始起的秒数</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="116"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="125"/>
         <source>date and time, ISO 8601 (2024-05-31T08:00:00)</source>
         <translation>日期和时间，ISO 8601 格式（2024-05-31T08:00:00）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="117"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="126"/>
         <source>year/month/day and time</source>
         <translation>年/月/日 及时间</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="118"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="127"/>
         <source>day.month.year and time</source>
         <translation>日.月.年 及时间</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="119"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="128"/>
         <source>day/month/year and time</source>
         <translation>日/月/年 及时间</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="120"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="129"/>
         <source>month/day/year and time</source>
         <translation>月/日/年 及时间</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="121"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="130"/>
         <source>day-month name-year and time</source>
         <translation>日-月份名-年 及时间</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="122"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="131"/>
         <source>spreadsheet day numbers</source>
         <translation>电子表格日期序号</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="123"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="132"/>
         <source>Unix time in seconds</source>
         <translation>Unix 时间（秒）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="124"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="133"/>
         <source>Unix time in milliseconds</source>
         <translation>Unix 时间（毫秒）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="133"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="142"/>
         <source>line stop</source>
         <translation>产线停机</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="134"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="143"/>
         <source>gap in the recording</source>
         <translation>记录中断</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="135"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="144"/>
         <source>next batch id</source>
         <translation>下一批次编号</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="136"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="145"/>
         <source>clock jump</source>
         <translation>时钟跳变</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="137"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="146"/>
         <source>end of file</source>
         <translation>文件结束</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="149"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="158"/>
         <source>DryTwin&apos;s own column name</source>
         <translation>DryTwin 自身的列名</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="152"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="161"/>
         <source>time stamps: %1</source>
         <translation>时间戳：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="158"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="167"/>
         <source>values in %1</source>
         <translation>数值在 %1 之间</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="161"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="170"/>
         <source>words of the header</source>
         <translation>列标题中的词</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="163"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="172"/>
         <source>tag letters %1</source>
         <translation>位号字母 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="168"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="177"/>
         <source>, </source>
         <translation>、</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="180"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="189"/>
         <source>%1: second %2 of %3</source>
         <translation>%1：第 %2 秒，共 %3 秒</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="190"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="199"/>
         <source>outlet response time (meter lag or transport time)</source>
         <translation>出口响应时间（仪表滞后或输送时间）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="194"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="203"/>
         <source>moisture offset (outlet meter or inlet gauge)</source>
         <translation>水分偏差（出口水分仪或入口水分仪）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="197"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="206"/>
         <source>air temperature in the tube (wall loss or air cooling)</source>
         <translation>管内风温（管壁散热或风冷却）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="208"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="217"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="216"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="225"/>
         <source>Cause found</source>
         <translation>找到原因</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="217"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="226"/>
         <source>Cause found: %1</source>
         <translation>找到原因：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="220"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="231"/>
+        <source>No cause named: no candidate passed every check (the table says why each was not named)</source>
+        <translation>未指认原因：没有候选原因通过全部检验（表中给出每个未被指认的理由）</translation>
+    </message>
+    <message>
         <source>No cause found: what the model gets wrong is within the measurements&apos; noise</source>
         <translation>未找到原因：模型的误差在测量噪声范围之内</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="224"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="236"/>
         <source>Something is left that no known cause explains</source>
         <translation>仍有已知原因无法解释的结构</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="231"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="243"/>
         <source>Next: check that part of the line (the evidence says where and from when), then “Extend the model” to add the cause and see how much the simulation improves.</source>
         <translation>下一步：检查产线的这一部分（证据说明了位置和起始时间），然后点击“扩展模型”加入该原因，看仿真改善了多少。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="236"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="248"/>
         <source>Next: nothing in the model needs changing for these data. To see smaller effects, record longer or more batches.</source>
         <translation>下一步：对这些数据，模型无需修改。若要看出更小的影响，请记录更长时间或更多批次。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="241"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="253"/>
         <source>Next: compare with data from a time when the line ran well (“Compare with a reference period”): what changed since then is named more surely than from one data set alone. The evidence says which measurement the error follows; check that transmitter and the maintenance log around the time it starts.</source>
         <translation>下一步：与产线运行良好时的数据比较（“与参考时段比较”）：与单个数据集相比，能更可靠地指出此后发生的变化。证据说明了误差跟随哪个测量值；请检查该变送器以及误差开始前后的维护记录。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="254"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="266"/>
         <source>Completed</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="256"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="268"/>
         <source>Converged</source>
         <translation>已收敛</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="258"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="270"/>
         <source>Evaluation budget used up</source>
         <translation>评估次数已用完</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="260"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="272"/>
         <source>Stopped by you, best so far kept</source>
         <translation>已由您停止，保留目前最优</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="267"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="279"/>
         <source>Stopped by you; the runs so far are kept, the last one is partial</source>
         <translation>已由您停止；保留已完成的运行，最后一次不完整</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="274"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="286"/>
         <source>Scenario %1: %2 of %3 controllers run over %4 scored seconds</source>
         <translation>情景 %1：%3 个控制器中运行了 %2 个，评分时长 %4 秒</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="284"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="296"/>
         <source>none (the sensitivities could not be computed)</source>
         <translation>无（无法计算灵敏度）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="287"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="299"/>
         <source>widened because neighbouring rows are alike and not independent evidence (sandwich covariance with a Newey-West middle term)</source>
         <translation>已加宽：相邻样本彼此相似，不是独立的证据（夹心协方差，中间项为 Newey-West）</translation>
     </message>
     <message>
         <source>robust to correlated rows (sandwich covariance with a Newey-West middle term)</source>
-        <translation type="vanished">对相关样本稳健（夹心协方差，中间项为 Newey-West）</translation>
+        <translation>对相关样本稳健（夹心协方差，中间项为 Newey-West）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="297"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="309"/>
         <source>R² could not be computed (too few rows).</source>
         <translation>无法计算 R²（行数太少）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="300"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="312"/>
         <source>R² below 0: the model predicts worse than the batch&apos;s mean would. Usual for the physics model alone on a short held-out part with little movement; compare MAE instead.</source>
         <translation>R² 小于 0：模型的预测比批次均值还差。对于变化很小的短留出段，单独的物理模型常出现这种情况；请改为比较 MAE。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="305"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="317"/>
         <source>R² %1: the model explains %2 % of the variation of the measured values about their mean.</source>
         <translation>R² %1：模型解释了测量值围绕其均值变化的 %2 %。</translation>
     </message>
@@ -964,23 +1011,23 @@
     <name>TrainingPanel</name>
     <message>
         <source>PI loop (the plant&apos;s own)</source>
-        <translation type="vanished">PI 回路（装置自带）</translation>
+        <translation>PI 回路（装置自带）</translation>
     </message>
     <message>
         <source>MPC on the physics model</source>
-        <translation type="vanished">基于物理模型的 MPC</translation>
+        <translation>基于物理模型的 MPC</translation>
     </message>
     <message>
         <source>MPC on PGRL-CC</source>
-        <translation type="vanished">基于 PGRL-CC 的 MPC</translation>
+        <translation>基于 PGRL-CC 的 MPC</translation>
     </message>
     <message>
         <source>MPC on the external-input residual model</source>
-        <translation type="vanished">基于外部输入残差模型的 MPC</translation>
+        <translation>基于外部输入残差模型的 MPC</translation>
     </message>
     <message>
         <source>MPC on the LSTM</source>
-        <translation type="vanished">基于 LSTM 的 MPC</translation>
+        <translation>基于 LSTM 的 MPC</translation>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="59"/>
@@ -989,47 +1036,47 @@
     </message>
     <message>
         <source>Tube wall heat loss</source>
-        <translation type="vanished">管壁散热损失</translation>
+        <translation>管壁散热损失</translation>
     </message>
     <message>
         <source>Gas-phase coupling</source>
-        <translation type="vanished">气相耦合</translation>
+        <translation>气相耦合</translation>
     </message>
     <message>
         <source>Heat-transfer fouling</source>
-        <translation type="vanished">传热结垢</translation>
+        <translation>传热结垢</translation>
     </message>
     <message>
         <source>Moisture meter lag</source>
-        <translation type="vanished">水分仪滞后</translation>
+        <translation>水分仪滞后</translation>
     </message>
     <message>
         <source>Moisture meter offset</source>
-        <translation type="vanished">水分仪偏差</translation>
+        <translation>水分仪偏差</translation>
     </message>
     <message>
         <source>Transport delay error</source>
-        <translation type="vanished">输送延时误差</translation>
+        <translation>输送延时误差</translation>
     </message>
     <message>
         <source>Falling-rate drying</source>
-        <translation type="vanished">降速干燥</translation>
+        <translation>降速干燥</translation>
     </message>
     <message>
         <source>Ambient re-absorption</source>
-        <translation type="vanished">环境回潮</translation>
+        <translation>环境回潮</translation>
     </message>
     <message>
         <source>Inlet moisture gauge offset</source>
-        <translation type="vanished">入口水分仪零点偏移</translation>
+        <translation>入口水分仪零点偏移</translation>
     </message>
     <message>
         <source>Hot-air thermocouple lag</source>
-        <translation type="vanished">热风热电偶滞后</translation>
+        <translation>热风热电偶滞后</translation>
     </message>
     <message>
         <source>Inlet moisture gauge scatter</source>
-        <translation type="vanished">入口水分仪读数离散</translation>
+        <translation>入口水分仪读数离散</translation>
     </message>
 </context>
 <context>
@@ -1125,7 +1172,7 @@
     </message>
     <message>
         <source>Fits the free parameters to the calibration rows (every 10th kept row, the first 300) with NLopt: a global search, then BOBYQA.</source>
-        <translation type="vanished">用 NLopt 将自由参数拟合到标定行（保留行中每隔 10 行取一行，取前 300 行）：先全局搜索，再用 BOBYQA。</translation>
+        <translation>用 NLopt 将自由参数拟合到标定行（保留行中每隔 10 行取一行，取前 300 行）：先全局搜索，再用 BOBYQA。</translation>
     </message>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="69"/>
@@ -1267,11 +1314,11 @@
     </message>
     <message>
         <source>Could not read the headers of %1.</source>
-        <translation type="vanished">无法读取 %1 的表头。</translation>
+        <translation>无法读取 %1 的表头。</translation>
     </message>
     <message>
         <source>Choose, for each column DryTwin needs, the header your files use and the unit its values are in (converted when read); required columns are marked *.</source>
-        <translation type="vanished">为 DryTwin 需要的每一列选择您文件中使用的表头及其数值的单位（读取时换算）；必需的列标有 *。</translation>
+        <translation>为 DryTwin 需要的每一列选择您文件中使用的表头及其数值的单位（读取时换算）；必需的列标有 *。</translation>
     </message>
     <message>
         <location filename="../widgets/data/ColumnMappingDialog.cpp" line="44"/>
@@ -1670,321 +1717,331 @@
 <context>
     <name>drytwin::widgets::DiscoverPanel</name>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="29"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="30"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="32"/>
         <source>What does the simulation get wrong, and why? (score tests, fits, held-out gain)</source>
         <translation>仿真哪里出错，为什么？（得分检验、拟合、留出数据上的改进）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="31"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="138"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="33"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="142"/>
         <source>Extend the model</source>
         <translation>扩展模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="34"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
         <source>Make the extended model (named causes, refitted h_HDT and k_HDT, residual models retrained) the session&apos;s model</source>
         <translation>将扩展后的模型（已命名的原因、重新拟合的 h_HDT 与 k_HDT、重新训练的残差模型）设为当前模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
         <source>Run discovery on the loaded data with the current model.</source>
         <translation>用当前模型在已加载的数据上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
         <source>Cause</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="723"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="743"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
         <source>p (Holm)</source>
         <translation>p（Holm）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
         <source>Fitted</source>
         <translation>已拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
         <source>Loss</source>
         <translation>损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="42"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="729"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="46"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="749"/>
         <source>Score z: how strongly the model&apos;s error points at this cause, in standard deviations of chance; above about 3 is strong evidence.</source>
         <translation>得分 z：模型误差指向该原因的强度，以偶然波动的标准差计；约 3 以上为有力证据。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="44"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
         <source>p (Holm): the chance of evidence this strong if the cause were absent, corrected for testing many causes at once (Holm&apos;s method); below 0.05 the cause is taken seriously.</source>
         <translation>p（Holm）：若该原因不存在，出现如此强证据的概率，已按同时检验多个原因校正（Holm 法）；低于 0.05 即应认真对待该原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="46"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="50"/>
         <source>Fitted: whether the cause&apos;s parameter was fitted to the data (only the leading causes are).</source>
         <translation>已拟合：该原因的参数是否已拟合到数据（只拟合排名靠前的原因）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="47"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="51"/>
         <source>Loss: the fit&apos;s error with the cause in the model; lower is a better fit.</source>
         <translation>损失：模型加入该原因后拟合的误差；越低拟合越好。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="50"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="54"/>
         <source>The held-out part: batches the fit did not see.</source>
         <translation>留出部分：拟合时未使用的批次。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
         <source>Held-out</source>
         <translation>留出数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
+        <source>Outcome</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="45"/>
+        <source>Outcome: named, or why not (the whole reason in the cell&apos;s tooltip, and under the evidence).</source>
+        <translation>结果：已指认，或未指认的理由（完整理由见单元格提示及证据下方）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
         <source>Before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
         <source>After</source>
         <translation>之后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="51"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="55"/>
         <source>Before: the starting model (as commissioned, or calibrated).</source>
         <translation>之前：起始模型（调试所得或标定后的模型）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="56"/>
         <source>After: the extended model, every named cause fitted together (a finding&apos;s own sentence gives the gain when that cause was named).</source>
         <translation>之后：扩展后的模型，所有已识别原因一起拟合（各项发现的文字给出识别该原因时的改进）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="56"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="60"/>
         <source>X_out residual [% wb]</source>
         <translation>X_out 残差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="57"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="61"/>
         <source>T_out residual [°C]</source>
         <translation>T_out 残差 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="58"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="92"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="62"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
         <source>time, batches one after another [h]</source>
         <translation>时间，批次首尾相接 [h]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="61"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="65"/>
         <source>Compare with a reference period…</source>
         <translation>与参考期比较…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="63"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="67"/>
         <source>Choose batches from a time when the line ran as it should (the weeks after a cleaning, commissioning runs): Discover then says whether, from when and why the loaded data differ</source>
         <translation>选择产线正常运行时期的批次（清洗后的几周、调试运行）：发现功能将说明已加载的数据是否、从何时起以及为何与之不同</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="66"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="70"/>
         <source>A folder of batch files…</source>
         <translation>批次文件所在的文件夹…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="68"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="72"/>
         <source>Reference period: a folder of batch files</source>
         <translation>参考期：批次文件所在的文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="73"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="77"/>
         <source>One batch or historian file…</source>
         <translation>单个批次或历史库文件…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="75"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="79"/>
         <source>Reference period: a batch or historian file</source>
         <translation>参考期：批次或历史库文件</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="76"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="80"/>
         <source>CSV files (*.csv *.txt)</source>
         <translation>CSV 文件 (*.csv *.txt)</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="81"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="85"/>
         <source>No reference: judge the data alone</source>
         <translation>不用参考期：单独判断数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="90"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="94"/>
         <source>T² [-]</source>
         <translation>T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="91"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
         <source>SPE [-]</source>
         <translation>SPE [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="99"/>
         <source>Choose a reference period and run Discover to see the monitor</source>
         <translation>选择参考期并运行“发现”以查看监控图</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="101"/>
         <source>Column</source>
         <translation>列</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="101"/>
         <source>Share of the change</source>
         <translation>在变化中的占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="101"/>
         <source>Detector</source>
         <translation>检测器</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="99"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="103"/>
         <source>How much each column contributes to the monitor&apos;s statistic after the onset (reconstruction-based contributions: the column that, put back to normal, removes most of it)</source>
         <translation>起始点之后各列对监控统计量的贡献（基于重构的贡献：将该列恢复正常后消除的部分最多者）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="106"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="110"/>
         <source>Model error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="107"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="111"/>
         <source>Monitor against the reference</source>
         <translation>相对参考期的监控</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="119"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="123"/>
         <source>Candidate causes, first round:</source>
         <translation>候选原因（第一轮）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="121"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="125"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
     <message>
         <source>the model was extended by discovery</source>
-        <translation type="vanished">模型已由发现功能扩展</translation>
+        <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="717"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="737"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="153"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
         <source>Run Discover to see the physics model&apos;s error over the batches</source>
         <translation>运行发现，可看到物理模型在各批次上的误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="160"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="164"/>
         <source>No reference period: the data are judged alone.</source>
         <translation>无参考期：单独判断数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="161"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="165"/>
         <source>Reference period: %1</source>
         <translation>参考期：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="181"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="185"/>
         <source>%1: &lt;b&gt;changed&lt;/b&gt; (p = %2)</source>
         <translation>%1：&lt;b&gt;已变化&lt;/b&gt;（p = %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="182"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="186"/>
         <source>%1: no change (p = %2)</source>
         <translation>%1：无变化（p = %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="184"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="188"/>
         <source>, first alarm in %1 at %2 min</source>
         <translation>，首次报警于 %1 第 %2 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="189"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="193"/>
         <source>, from %1 at %2 min (95 %: %3 to %4 min)</source>
         <translation>，自 %1 第 %2 分钟起（95 %：%3 至 %4 分钟）</translation>
     </message>
     <message>
         <source>DryTwin (the causes&apos; parameters): &lt;b&gt;changed&lt;/b&gt; (p = %1): %2 moved beyond its normal spread</source>
-        <translation type="vanished">DryTwin（各原因的参数）：&lt;b&gt;已变化&lt;/b&gt;（p = %1）：%2 超出其正常范围</translation>
+        <translation>DryTwin（各原因的参数）：&lt;b&gt;已变化&lt;/b&gt;（p = %1）：%2 超出其正常范围</translation>
     </message>
     <message>
         <source>DryTwin (the causes&apos; parameters): none moved beyond its normal spread (p = %1)</source>
-        <translation type="vanished">DryTwin（各原因的参数）：均未超出其正常范围（p = %1）</translation>
+        <translation>DryTwin（各原因的参数）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="221"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="225"/>
         <source>&lt;b&gt;The line has changed since the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;自参考期以来产线已发生变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="228"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="232"/>
         <source>&lt;b&gt;No change against the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;与参考期相比无变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="229"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="233"/>
         <source> Each detector&apos;s false-alarm rate: %1 % per data set.</source>
         <translation> 每个检测器的误报率：每个数据集 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="230"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="234"/>
         <source>DryTwin (the model&apos;s error)</source>
         <translation>DryTwin（模型误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="232"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="236"/>
         <source>Dynamic PCA (the measured columns)</source>
         <translation>动态 PCA（测量列）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="257"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="273"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="261"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="277"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="257"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="273"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="261"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="277"/>
         <source>dynamic PCA</source>
         <translation>动态 PCA</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="259"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="261"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="263"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="265"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="303"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="307"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
@@ -1994,70 +2051,70 @@
     </message>
     <message>
         <source>the error drifts within every batch and resets at each batch start</source>
-        <translation type="vanished">误差在每个批次内漂移，并在每个批次开始时复位</translation>
+        <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="313"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="317"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="317"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="321"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="320"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="324"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="322"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="326"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="326"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="330"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="330"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="334"/>
         <source>a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less</source>
         <translation>干燥管出口与出口水分有相同的稳定偏差，干燥管干燥越少处越大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="333"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="337"/>
         <source>after each hot-air setpoint step the outlet temperature and moisture move before the simulation, which follows the slow reading</source>
         <translation>每次热风设定值阶跃后，出口温度和水分先于仿真变化，仿真跟随的是迟缓的读数</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="336"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="340"/>
         <source>the inlet-moisture reading scatters from second to second while the outlet does not follow it, and the simulated outlet does</source>
         <translation>入口水分读数逐秒跳动，出口并不跟随，而仿真的出口却跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="346"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="350"/>
         <source>a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet temperature&apos;s response as much as the moisture&apos;s, a meter lag delays the moisture reading alone; or grab samples timed against the meter</source>
         <translation>以 1 s 记录一次热风设定值阶跃：输送时间误差使出口温度与水分的响应同样延迟，水分仪滞后只延迟水分读数；或对照水分仪定时取样</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="353"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="357"/>
         <source>oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter offset does not</source>
         <translation>在出口对照水分仪、在入口对照入口水分计做烘箱法实验室取样；或增加干燥管出口水分通道（X_hdt）：入口水分计偏差会使其变化，出口水分仪偏差不会</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="360"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="364"/>
         <source>a gas-temperature reading at the tube&apos;s outlet end at two feed rates: wall loss does not change with the feed, gas-phase cooling grows with it</source>
         <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="370"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="390"/>
         <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
         <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="393"/>
         <source>its size is not consistent across batches or operating regions</source>
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
@@ -2066,62 +2123,62 @@
         <translation type="vanished">偏差在整个批次中读数不变；此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="381"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="401"/>
         <source>its value lies within the reference period&apos;s normal range: not a change</source>
         <translation>其值在参考期的正常范围内：不是变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="384"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="404"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="387"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="407"/>
         <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
         <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="391"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="411"/>
         <source>the outlet channels&apos; timing points to its look-alike (the moisture answers later than the temperature: a meter, not the transport)</source>
         <translation>出口两个通道的时序指向它的相似原因（水分比温度响应更晚：是水分仪，而非输送）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="396"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="416"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="399"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="419"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="416"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="436"/>
         <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
         <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="421"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="441"/>
         <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
         <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="424"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="444"/>
         <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
         <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="429"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="449"/>
         <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
         <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="435"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="455"/>
         <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="485"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="505"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
@@ -2130,193 +2187,198 @@
         <translation type="vanished">误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="500"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="520"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="505"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="525"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="517"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="537"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="524"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="544"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="539"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="559"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="544"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="564"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="544"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="564"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="547"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="567"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="551"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="571"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="569"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="589"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="575"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="595"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="558"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="578"/>
         <source>%1 was named on top of it (a further %2 % of the held-out error): alone it predicts worse (%3 times the held-out error), but the change needs both forms, so the data cannot say which of them it is.</source>
         <translation>在它之上又判定了 %1（再减少留出误差的 %2 %）：单独使用时预测更差（留出误差的 %3 倍），但这一变化需要两种形式共同解释，因此数据无法判断是其中哪一个。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="200"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="204"/>
         <source>DryTwin (the causes&apos; one-step estimates): &lt;b&gt;changed&lt;/b&gt; (p = %1): %2 moved beyond its normal spread</source>
         <translation>DryTwin（各原因的一步估计）：&lt;b&gt;已变化&lt;/b&gt;（p = %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="204"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="208"/>
         <source>DryTwin (the causes&apos; one-step estimates): none moved beyond its normal spread (p = %1)</source>
         <translation>DryTwin（各原因的一步估计）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="223"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="227"/>
         <source>&lt;b&gt;A cause has changed since the reference period: %1.&lt;/b&gt; The detectors, judging the data set as a whole, stayed below their limits; fitting the causes found it beyond its normal spread with a gain on held-out data (below). Check it on the plots.</source>
         <translation>&lt;b&gt;自参考期以来有一个原因发生了变化：%1。&lt;/b&gt;检测器对整个数据集的判断未超出其限值；拟合各原因发现它超出正常范围，且在留出数据上有改进（见下）。请在图上核对。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="309"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="313"/>
         <source>the error drifts over each batch, or over the recording from the fouling&apos;s onset, and starts afresh with each new batch</source>
         <translation>误差在每个批次内（或在记录中自结垢开始起）逐渐漂移，每个新批次重新开始</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="445"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="384"/>
+        <source>not named</source>
+        <translation>未指认</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="465"/>
         <source>%1 was named first, then withdrawn: refitted together with the causes named after it, it is no change of the line (it had taken up what they explain). In detail: %2.</source>
         <translation>%1 先被识别，随后撤回：与之后识别的原因一起重新拟合后，它并非产线的变化（它曾吸收了那些原因所解释的部分）。详情：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="452"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="472"/>
         <source>The reference holds %1 batch(es): a period&apos;s normal spread comes from thirds of them, which share their day and weather; a change named here may be a difference of conditions the reference never showed. A reference of several batches over the conditions the line runs in (weeks, seasons) judges better.</source>
         <translation>参考期仅含 %1 个批次：一个时段的正常离散取自其三等分，它们同属一天、同样天气；此处识别出的变化可能只是参考期从未出现过的工况差异。覆盖产线运行工况（数周、不同季节）的多批次参考期判断得更好。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="588"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="608"/>
         <source>%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts %4 better; which output a cause favours is the model&apos;s structure, so the data cannot tell them apart.</source>
         <translation>%1 同样拟合：总体上它留下 %2 倍的留出误差（p = %3），但它对%4的预测更好；原因偏向哪个输出取决于模型自身的结构，因此数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="594"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="614"/>
         <source>the outlet moisture</source>
         <translation>出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="595"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="615"/>
         <source>the outlet temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="596"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="616"/>
         <source>the tube-outlet moisture</source>
         <translation>管出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="597"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="617"/>
         <source>the tube-outlet temperature</source>
         <translation>管出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="601"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="621"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="602"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="622"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="609"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="629"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="621"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="641"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="625"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="645"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
     <message>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and h_HDT, k_HDT refitted, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.</source>
-        <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
+        <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="662"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="662"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="683"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="703"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="684"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="704"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="701"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="721"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
     <message>
         <source>one of %1 (look-alikes)</source>
-        <translation type="vanished">%1 之一（相似原因）</translation>
+        <translation>%1 之一（相似原因）</translation>
     </message>
     <message>
         <source>Verdict: %1. No mechanism is named.</source>
-        <translation type="vanished">结论：%1。未命名任何机理。</translation>
+        <translation>结论：%1。未命名任何机理。</translation>
     </message>
     <message>
         <source>Verdict: %1. Named: %2.</source>
-        <translation type="vanished">结论：%1。已命名：%2。</translation>
+        <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="737"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="778"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="737"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="778"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2325,57 +2387,58 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="783"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="827"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="786"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="830"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="794"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="838"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="514"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="534"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="758"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="626"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="646"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="627"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="647"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="631"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="651"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
     <message>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15); %16. Check on the plots: %17.</source>
-        <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
+        <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="704"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="724"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="714"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="734"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="218"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="222"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="735"/>
         <source>, </source>
         <translation>、</translation>
     </message>
@@ -2384,185 +2447,198 @@
         <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="718"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="738"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="804"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="775"/>
+        <source>not fitted (weaker)</source>
+        <translation>未拟合（证据较弱）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="848"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="820"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="864"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="829"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="873"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="836"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="880"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="841"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="885"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="849"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="893"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="859"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="903"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="616"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="860"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="886"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="636"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="904"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="930"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="637"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="657"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out goes from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="861"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="905"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="616"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="862"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="890"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="636"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="906"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="934"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="306"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="310"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed rate and by inlet moisture)</source>
         <translation>误差随进料量和入口水分增大（按进料量和按入口水分分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="376"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="396"/>
         <source>it does not change within a batch (an offset, the tube&apos;s wall or gas phase), but this error grows or shrinks within the batch (fouling, a drifting reading)</source>
         <translation>它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="468"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="488"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="472"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="492"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the model&apos;s error there is judged beyond the reference&apos;s conditions, and an alarm there may be that condition rather than a change of the line.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="490"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="510"/>
         <source>the error follows %1 %2 s later (correlation %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（相关系数 %3）</translation>
     </message>
     <message>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7 %8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out falls from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
-        <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
+        <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="669"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="689"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="723"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="743"/>
         <source>Change z</source>
         <translation>变化 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="726"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="746"/>
         <source>Change z: how far the cause&apos;s one-step estimate here lies from its normal value on the reference period, in units of both estimates&apos; errors and the spread between the reference&apos;s periods; above 2 it moved.</source>
         <translation>变化 z：该原因在此处的一步估计与其在参考期的正常值相差多远，以两次估计的误差及参考期各时段间的离散为单位；大于 2 即为发生了变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="744"/>
+        <source>not named: %1</source>
+        <translation>未指认：%1</translation>
+    </message>
+    <message>
+        <source>not fitted: weaker evidence than those fitted</source>
+        <translation>未拟合：证据弱于已拟合的候选</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="788"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="758"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="802"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="765"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="809"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="779"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="823"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="824"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="868"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="863"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="907"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="872"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="916"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="885"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="929"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="885"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="929"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="886"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="930"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="889"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="933"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="889"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="933"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="890"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="934"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="914"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="958"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="915"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="959"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -2697,57 +2773,58 @@
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="26"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="27"/>
         <source>Learn the correction models (Residual model tab)</source>
         <translation>学习修正模型（残差模型页）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="27"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="28"/>
         <source>Ablation (Residual model tab)</source>
         <translation>消融实验（残差模型页）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="29"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="30"/>
         <source>Run scenario (What-if MPC tab)</source>
         <translation>运行情景（假设分析 MPC 页）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="38"/>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="68"/>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="77"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="41"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="71"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="80"/>
         <source>Export report</source>
         <translation>导出报告</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="39"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="42"/>
         <source>the report needs every step&apos;s result; still to run: %1</source>
         <translation>报告需要每一步的结果；尚需运行：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="44"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="47"/>
         <source>cannot create the folder</source>
         <translation>无法创建该文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="52"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="55"/>
         <source>DryTwin workbench: data %1, model %2</source>
         <translation>DryTwin 工作台：数据 %1，模型 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="55"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="58"/>
         <source>as built in this window (save it with File ▸ Save model as…)</source>
         <translation>本窗口中构建的模型（用 文件 ▸ 模型另存为… 保存）</translation>
     </message>
     <message>
         <source>The report needs every step&apos;s result; still to run: %1.</source>
-        <translation type="vanished">报告需要每一步的结果；尚需运行：%1。</translation>
+        <translation>报告需要每一步的结果；尚需运行：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="71"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="74"/>
         <source>Export report into folder</source>
         <translation>将报告导出到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="81"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="84"/>
         <source>Report written: %1</source>
         <translation>报告已写入：%1</translation>
     </message>
@@ -2762,7 +2839,7 @@
         <translation>诊断</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="28"/>
+        <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="29"/>
         <location filename="../widgets/MainWindow.cpp" line="53"/>
         <source>Discover</source>
         <translation>发现</translation>
@@ -2784,7 +2861,7 @@
     </message>
     <message>
         <source>No data loaded. File ▸ Open data set…</source>
-        <translation type="vanished">未加载数据。文件 ▸ 打开数据集…</translation>
+        <translation>未加载数据。文件 ▸ 打开数据集…</translation>
     </message>
     <message>
         <location filename="../widgets/MainWindow.cpp" line="61"/>
@@ -2848,7 +2925,7 @@
     </message>
     <message>
         <source>the data changed since the project was saved</source>
-        <translation type="vanished">项目保存后数据已改变</translation>
+        <translation>项目保存后数据已改变</translation>
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowData.cpp" line="75"/>
@@ -2893,7 +2970,7 @@
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="vanished">%1：%2</translation>
+        <translation>%1：%2</translation>
     </message>
     <message>
         <location filename="../widgets/MainWindow.cpp" line="123"/>
@@ -3069,18 +3146,18 @@
         <translation>无法读取项目的结果（%1）；项目将不带结果打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="266"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="260"/>
         <source>Wait until the running job has finished (or cancel it), then switch the language.</source>
         <translation>请等待当前任务完成（或取消它），然后再切换语言。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="299"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="293"/>
         <source>The training session under way was saved in %1 when the language changed: the instructor window&apos;s Session file ▸ Open session… continues it.</source>
         <translation>切换语言时，进行中的培训会话已保存到 %1：在教员窗口的 会话文件 ▸ 打开会话… 可继续。</translation>
     </message>
     <message>
         <source>The language changes when DryTwin is started again.</source>
-        <translation type="vanished">语言将在 DryTwin 重新启动后生效。</translation>
+        <translation>语言将在 DryTwin 重新启动后生效。</translation>
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowMenus.cpp" line="123"/>
@@ -3191,7 +3268,7 @@
     </message>
     <message>
         <source>Project saved to %1</source>
-        <translation type="vanished">项目已保存到 %1</translation>
+        <translation>项目已保存到 %1</translation>
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="147"/>
@@ -3608,7 +3685,7 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>%1 predicted at %2 s</source>
-        <translation type="vanished">%1 在 %2 s 时的预测</translation>
+        <translation>%1 在 %2 s 时的预测</translation>
     </message>
     <message>
         <location filename="../widgets/mpc/MpcPanel.cpp" line="376"/>
@@ -3630,7 +3707,7 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>Save these plots as PNG, SVG or PDF</source>
-        <translation type="vanished">将这些图表保存为 PNG、SVG 或 PDF</translation>
+        <translation>将这些图表保存为 PNG、SVG 或 PDF</translation>
     </message>
     <message>
         <location filename="../widgets/common/PlotStack.cpp" line="125"/>
@@ -3694,7 +3771,7 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>unknown format &apos;%1&apos;: use .png, .svg or .pdf</source>
-        <translation type="vanished">未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
+        <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
         <location filename="../widgets/common/PlotStack.cpp" line="722"/>
@@ -3703,7 +3780,7 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)</source>
-        <translation type="vanished">PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
+        <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
         <location filename="../widgets/common/PlotStack.cpp" line="729"/>
@@ -3725,23 +3802,23 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>Eq. 30: constrained fit with certificate</source>
-        <translation type="vanished">式 30：带证书的约束拟合</translation>
+        <translation>式 30：带证书的约束拟合</translation>
     </message>
     <message>
         <source>eigenvalues pulled in after the fit</source>
-        <translation type="vanished">拟合后将特征值收缩</translation>
+        <translation>拟合后将特征值收缩</translation>
     </message>
     <message>
         <source>orthogonal projection P⊥ (Eq. 27)</source>
-        <translation type="vanished">正交投影 P⊥（式 27）</translation>
+        <translation>正交投影 P⊥（式 27）</translation>
     </message>
     <message>
         <source>Train PGRL-CC and the baselines</source>
-        <translation type="vanished">训练 PGRL-CC 及基线模型</translation>
+        <translation>训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
         <source>residual lags</source>
-        <translation type="vanished">残差滞后阶数</translation>
+        <translation>残差滞后阶数</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
@@ -3765,23 +3842,23 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>MAE X_out [% wb]</source>
-        <translation type="vanished">MAE X_out [% 湿基]</translation>
+        <translation>MAE X_out [% 湿基]</translation>
     </message>
     <message>
         <source>R² X_out</source>
-        <translation type="vanished">R² X_out</translation>
+        <translation>R² X_out</translation>
     </message>
     <message>
         <source>MAE T_out [°C]</source>
-        <translation type="vanished">MAE T_out [°C]</translation>
+        <translation>MAE T_out [°C]</translation>
     </message>
     <message>
         <source>skill 1 step</source>
-        <translation type="vanished">1 步预报技巧</translation>
+        <translation>1 步预报技巧</translation>
     </message>
     <message>
         <source>skill 30 steps</source>
-        <translation type="vanished">30 步预报技巧</translation>
+        <translation>30 步预报技巧</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="72"/>
@@ -3795,7 +3872,7 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>skill: MAE over the better reference [-]</source>
-        <translation type="vanished">预报技巧：MAE 与较优参考之比 [-]</translation>
+        <translation>预报技巧：MAE 与较优参考之比 [-]</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="78"/>
@@ -3819,7 +3896,7 @@ The results below are from the last complete run.</source>
     </message>
     <message>
         <source>MAE X_out, extrapolation</source>
-        <translation type="vanished">MAE X_out（外推）</translation>
+        <translation>MAE X_out（外推）</translation>
     </message>
     <message>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="32"/>
@@ -4023,7 +4100,7 @@ extrapolation</source>
     </message>
     <message>
         <source>Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).</source>
-        <translation type="vanished">留出部分：%1 行。预报技巧低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
+        <translation>留出部分：%1 行。预报技巧低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。</translation>
     </message>
 </context>
 <context>
@@ -4304,11 +4381,11 @@ extrapolation</source>
     </message>
     <message>
         <source>Instructor view</source>
-        <translation type="vanished">教员视图</translation>
+        <translation>教员视图</translation>
     </message>
     <message>
         <source>Shows the instructor&apos;s controls, the faults, the true moisture and the score; hide it before handing the screen to the trainee</source>
-        <translation type="vanished">显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
+        <translation>显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="90"/>
@@ -4551,7 +4628,7 @@ extrapolation</source>
     </message>
     <message>
         <source>Feed [t/h]</source>
-        <translation type="vanished">进料 [t/h]</translation>
+        <translation>进料 [t/h]</translation>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
@@ -4662,7 +4739,7 @@ extrapolation</source>
     </message>
     <message>
         <source>X_out true (instructor)</source>
-        <translation type="vanished">X_out 真实值（教员）</translation>
+        <translation>X_out 真实值（教员）</translation>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="295"/>
@@ -4716,7 +4793,7 @@ extrapolation</source>
     </message>
     <message>
         <source>Save the session into a folder</source>
-        <translation type="vanished">将会话保存到文件夹</translation>
+        <translation>将会话保存到文件夹</translation>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="426"/>
@@ -5047,7 +5124,7 @@ extrapolation</source>
     </message>
     <message>
         <source>the physics model was calibrated after it was learnt</source>
-        <translation type="vanished">学习之后物理模型又经过了标定</translation>
+        <translation>学习之后物理模型又经过了标定</translation>
     </message>
     <message>
         <location filename="../widgets/common/Workbench.cpp" line="538"/>
@@ -5068,15 +5145,15 @@ extrapolation</source>
     </message>
     <message>
         <source>Calibration %1: loss %2 → %3</source>
-        <translation type="vanished">标定 %1：损失 %2 → %3</translation>
+        <translation>标定 %1：损失 %2 → %3</translation>
     </message>
     <message>
         <source>Train</source>
-        <translation type="vanished">训练</translation>
+        <translation>训练</translation>
     </message>
     <message>
         <source>Trained PGRL-CC and the baselines</source>
-        <translation type="vanished">已训练 PGRL-CC 及基线模型</translation>
+        <translation>已训练 PGRL-CC 及基线模型</translation>
     </message>
     <message>
         <location filename="../widgets/common/Workbench.cpp" line="557"/>

@@ -8,6 +8,21 @@ import re
 import sys
 
 ZH = {
+    "compensation": "相互补偿",
+    "inconsistent": "各批次不一致",
+    "not constant": "批次内不恒定",
+    "within normal range": "在正常范围内",
+    "below the floor": "低于实用下限",
+    "no held-out gain": "留出集无增益",
+    "its look-alike": "是其相似原因",
+    "line dynamics": "产线自身动态",
+    "Outcome: named, or why not (the whole reason in the cell's tooltip, and under the evidence).": "结果：已指认，或未指认的理由（完整理由见单元格提示及证据下方）。",
+    "not named": "未指认",
+    "not fitted (weaker)": "未拟合（证据较弱）",
+    "No cause named: no candidate passed every check (the table says why each was not named)": "未指认原因：没有候选原因通过全部检验（表中给出每个未被指认的理由）",
+    "Outcome": "结果",
+    "not named: %1": "未指认：%1",
+    "not fitted: weaker evidence than those fitted": "未拟合：证据弱于已拟合的候选",
     "predicted at %1 s": "在 %1 s 时的预测",
     "open data": "打开数据",
     "Learn the correction models (Residual model tab)": "学习修正模型（残差模型页）",

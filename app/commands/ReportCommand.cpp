@@ -20,11 +20,16 @@ namespace drytwin::app {
 using namespace detail;
 
 int runReport(const CommandOptions& o) {
+    std::error_code ec;
+    if (std::filesystem::exists(o.outPath, ec) && !std::filesystem::is_directory(o.outPath, ec)) {
+        return fail(Error{ErrorKind::Usage, "--out " + o.outPath,
+                          "is a file; give a folder (made if missing; report.html and report.pdf in it are "
+                          "replaced)"});
+    }
     auto paths = workflow::readProjectPaths(o.projectPath);
     if (!paths) {
         return fail(paths.error());
     }
-    std::error_code ec;
     if (paths->results.empty() || !std::filesystem::exists(paths->results, ec)) {
         return fail(Error{ErrorKind::BadInput, o.projectPath,
                           paths->results.empty()
@@ -51,6 +56,13 @@ int runReport(const CommandOptions& o) {
     if (paths->data.empty()) {
         return fail(Error{ErrorKind::BadInput, o.projectPath, "the project names no data set"});
     }
+    if (!std::filesystem::exists(paths->data, ec)) {
+        return fail(Error{ErrorKind::BadInput, o.projectPath,
+                          "its data set is not where the project says, beside it or where it was saved (" +
+                              paths->data +
+                              "); put the data back, or open the project in the workbench and open the data "
+                              "where they are now"});
+    }
     // The report's figures draw the data the results came from.
     CommandOptions withData = o;
     withData.dataPath = paths->data;
@@ -65,10 +77,20 @@ int runReport(const CommandOptions& o) {
     if (!summary) {
         return fail(summary.error());
     }
+    // The results were made on the data as saved: a report that drew other data beside them (and
+    // hashed them as the results' source) would be wrong without a word.
+    if (const std::string now = workflow::dataFingerprint(*summary);
+        !paths->dataFingerprint.empty() && now != paths->dataFingerprint) {
+        return fail(Error{ErrorKind::BadInput, o.projectPath,
+                          "its data are not those its results were made on (batches and rows then: " +
+                              paths->dataFingerprint + "; now, at " + paths->data + ": " + now +
+                              "); run the steps again on these data and save the project"});
+    }
     auto inputs = workflow::reportInputs(*latest, *summary);
     if (!inputs) {
         return fail(inputs.error());
     }
+    inputs->resultsFrom = std::filesystem::absolute(paths->results, ec).string();
     if (!o.renderReport) {
         return fail(Error{ErrorKind::Usage, "report", "this build cannot draw the report's figures"});
     }
@@ -81,7 +103,8 @@ int runReport(const CommandOptions& o) {
     if (!error.empty()) {
         return fail(Error{ErrorKind::BadInput, o.outPath, "the HTML/PDF report: " + error});
     }
-    std::printf("report of project %s (data %s)\n", o.projectPath.c_str(), paths->data.c_str());
+    std::printf("report of project %s (results %s, data %s)\n", o.projectPath.c_str(), paths->results.c_str(),
+                paths->data.c_str());
     for (const auto& f : files) {
         std::printf("report %s\n", f.c_str());
     }

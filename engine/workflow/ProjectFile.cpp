@@ -26,11 +26,23 @@ Expected<ProjectPaths> readProjectPaths(const std::string& projectPath) {
     }
     std::stringstream buffer;
     buffer << in.rdbuf();
-    const json o = json::parse(buffer.str(), nullptr, false);
-    if (o.is_discarded() || !o.is_object() || text(o, "format") != "drytwin-project") {
+    json o;
+    try {
+        o = json::parse(buffer.str());
+    } catch (const json::parse_error& e) {
+        // A JSON object that breaks off or goes wrong (a full disk, a copy interrupted, an edit):
+        // damaged, not a file of another kind.
+        const std::string& all = buffer.str();
+        const auto first = all.find_first_not_of(" \t\r\n");
+        const bool cutShort = first != std::string::npos && all[first] == '{';
         return Error{ErrorKind::BadInput, projectPath,
-                     o.is_discarded() ? "not a DryTwin project (not JSON)"
-                                      : "not a DryTwin project (no \"format\": \"drytwin-project\")"};
+                     cutShort ? "the project file is damaged or cut short (not valid JSON at byte " +
+                                    std::to_string(e.byte) + ")"
+                              : "not a DryTwin project (not JSON)"};
+    }
+    if (!o.is_object() || text(o, "format") != "drytwin-project") {
+        return Error{ErrorKind::BadInput, projectPath,
+                     "not a DryTwin project (no \"format\": \"drytwin-project\")"};
     }
     const fs::path base = fs::absolute(fs::path(projectPath)).parent_path();
     const auto resolve = [&base](const json& from, const std::string& key) {
@@ -49,6 +61,7 @@ Expected<ProjectPaths> readProjectPaths(const std::string& projectPath) {
     p.model = resolve(o, "model_path");
     p.results = resolve(o, "results_path");
     p.reference = resolve(o, "reference_path");
+    p.dataFingerprint = text(o, "data_fingerprint");
     if (const auto sets = o.find("data_sets"); sets != o.end() && sets->is_array()) {
         for (const auto& e : *sets) {
             if (e.is_object() && !resolve(e, "path").empty()) {
@@ -59,9 +72,24 @@ Expected<ProjectPaths> readProjectPaths(const std::string& projectPath) {
     return p;
 }
 
+std::string dataFingerprint(const data::DataSetSummary& summary) {
+    std::string out;
+    for (const auto& b : summary.batches) {
+        out += (out.empty() ? "" : " ") + b.id + ":" + std::to_string(b.rows);
+    }
+    return out;
+}
+
 std::vector<std::string> stepsMissingForReport(const LatestResults& latest) {
     std::vector<std::string> missing;
+    bool learnt = latest.train.has_value();
+    if (latest.evaluate) {
+        for (const auto& m : latest.evaluate->evaluation.models) {
+            learnt = learnt || m.name == "pgrl_cc";
+        }
+    }
     const std::pair<bool, const char*> steps[] = {{latest.calibrate.has_value(), "calibrate"},
+                                                  {learnt, "train"},
                                                   {latest.evaluate.has_value(), "evaluate"},
                                                   {latest.ablation.has_value(), "ablation"},
                                                   {latest.discover.has_value(), "discover"},

@@ -19,14 +19,24 @@ struct ProjectPaths {
         std::string label, path, mapping;
     };
     std::vector<DataSet> dataSets; ///< every data set the window had open
+    /// The data's batches and rows when the project was saved (dataFingerprint()); "" in a project
+    /// that does not say.
+    std::string dataFingerprint;
 };
+
+/// @brief A data set's batches and rows as a project stores them ("B01:1500 B02:1500"): whether
+/// the data a project names are still those its results were made on.
+std::string dataFingerprint(const data::DataSetSummary& summary);
 
 /// @brief Reads @p projectPath; a BadInput error naming the file when it cannot be read or is not a
 /// DryTwin project.
 Expected<ProjectPaths> readProjectPaths(const std::string& projectPath);
 
 /// @brief The steps a report needs whose result @p latest lacks, by their subcommand's name
-/// (calibrate, evaluate, ablation, discover, mpc), in the pipeline's order.
+/// (calibrate, train, evaluate, ablation, discover, mpc), in the pipeline's order. train counts as
+/// missing when the evaluation holds no PGRL-CC (a project's results do not keep the training
+/// itself: its models are in the model file), so that no report shows the PBM alone under the
+/// paper's captions.
 std::vector<std::string> stepsMissingForReport(const LatestResults& latest);
 
 /// @brief What the pipeline's report is drawn from, put together from a session's (or a saved

@@ -259,9 +259,14 @@ Expected<LatestResults> parseLatestResults(const std::string& text, const std::s
     const auto bad = [&](const std::string& why) {
         return Error{ErrorKind::BadInput, place, why, ErrorCode::Unspecified, {}};
     };
-    json j = json::parse(text, nullptr, false);
-    if (j.is_discarded() || !j.is_object()) {
-        return bad("not JSON (the results file is damaged; the project opens without its results)");
+    json j;
+    try {
+        j = json::parse(text);
+    } catch (const json::parse_error& e) {
+        return bad("not valid JSON at byte " + std::to_string(e.byte) + " (the file is damaged or cut short)");
+    }
+    if (!j.is_object()) {
+        return bad("not a DryTwin results file (not a JSON object)");
     }
     if (j.value("format", std::string()) != kFormat) {
         return bad("not a DryTwin results file");
@@ -340,8 +345,7 @@ Expected<LatestResults> parseLatestResults(const std::string& text, const std::s
             r.mpc = std::move(out);
         }
     } catch (const json::exception& e) {
-        return bad("section \"" + section + "\" cannot be read (" + e.what() +
-                   "); the project opens without its results");
+        return bad("section \"" + section + "\" cannot be read (" + e.what() + ")");
     }
     return r;
 }

@@ -220,6 +220,9 @@ struct PipelineResult {
     DiscoverResult discover;
     MpcResult mpc;
     std::string reportPath;
+    /// A saved project's results file these were read from (`drytwin report`); empty when this run
+    /// made them.
+    std::string resultsFrom;
     std::vector<PipelineStage> stages;
     Ending ending;
 };

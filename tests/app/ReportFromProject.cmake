@@ -36,6 +36,28 @@ foreach(section "Calibration" "Held-out accuracy" "Ablation (paper Table 3)" "Di
   endif()
 endforeach()
 
+# A nightly job writes into the same folder again: replaced, not refused.
+run(0 ${EXE} report --project ${WORK}/mailed/away/project/line.dtproj --out ${WORK}/report)
+string(FIND "${html}" "re-draws results made earlier" at)
+if(at LESS 0)
+  message(FATAL_ERROR "the report does not say it re-draws the project's results")
+endif()
+
+# The project pointed at other data (two batches of 600 s): refused, naming then and now.
+run(0 ${EXE} generate --seed 4 --batches 2 --samples 600 --out ${WORK}/other-data)
+file(READ ${WORK}/saved/line.dtproj project)
+string(JSON project SET "${project}" data_path "\"../other-data\"")
+string(JSON project SET "${project}" data_path_absolute "\"\"")
+string(JSON project SET "${project}" results_path_absolute "\"${WORK}/saved/line.dtproj.results.json\"")
+file(WRITE ${WORK}/pointed/line.dtproj "${project}")
+run(3 ${EXE} report --project ${WORK}/pointed/line.dtproj --out ${WORK}/pointed-report)
+if(NOT err MATCHES "its data are not those its results were made on .batches and rows then: B01:900 B02:900; now, at .*other-data: B01:600 B02:600")
+  message(FATAL_ERROR "a report on other data than the results' is not refused as such:\n${err}")
+endif()
+if(EXISTS ${WORK}/pointed-report/report.html)
+  message(FATAL_ERROR "a report was written on other data")
+endif()
+
 # The same project without its what-if run: refused, naming the step, no report.
 file(READ ${WORK}/saved/line.dtproj.results.json results)
 string(JSON results REMOVE "${results}" mpc)

@@ -531,9 +531,16 @@ private Q_SLOTS:
         auto* disc = w.discoverPanel();
         QVERIFY(w.workbench().latest().discover.has_value());
         QVERIFY(disc->ranking()->rowCount() == 10); // the inlet scatter share is fitted with h_HDT, k_HDT
+        // Every fitted candidate says whether it was named and, if not, why (its outcome column).
+        for (int row = 0; row < disc->ranking()->rowCount(); ++row) {
+            if (disc->ranking()->item(row, 5)->text() != QStringLiteral("–")) { // fitted: a loss
+                QVERIFY2(!disc->ranking()->item(row, 1)->text().isEmpty(),
+                         qPrintable(disc->ranking()->item(row, 0)->text()));
+            }
+        }
         // The verdict in an engineer's words, with the data set it belongs to; the key in the tooltip.
         const QString verdict = disc->verdict()->text();
-        QVERIFY2((verdict.startsWith("Cause found") || verdict.startsWith("No cause found") ||
+        QVERIFY2((verdict.startsWith("Cause found") || verdict.startsWith("No cause named") ||
                   verdict.startsWith("Something is left")) &&
                      verdict.contains("plant (2 batches)"),
                  qPrintable(verdict));

@@ -72,9 +72,13 @@ private Q_SLOTS:
             return nlohmann::json::parse(f.readAll().toStdString());
         };
         const double iae = json("mpc.json")["controllers"]["pbm"]["iae"].get<double>();
-        QVERIFY(text.contains(QStringLiteral("<td>pbm</td><td>%1</td>").arg(iae, 0, 'f', 1)));
+        // Named in words, as the workbench names them (in English, whatever its language).
+        QVERIFY(text.contains(QStringLiteral("<td>Physics model</td><td>%1</td>").arg(iae, 0, 'f', 1)));
         const double mae = json("evaluate.json")["models"]["pgrl_cc"]["moisture"]["mae"].get<double>();
-        QVERIFY(text.contains(QStringLiteral("<td>pgrl_cc</td><td>%1</td>").arg(mae, 0, 'f', 4)));
+        QVERIFY(text.contains(
+            QStringLiteral("<td>Physics + learnt correction (PGRL-CC)</td><td>%1</td>").arg(mae, 0, 'f', 4)));
+        // Every table's header in <thead>, which the PDF repeats on each page a table runs over.
+        QCOMPARE(text.count(QStringLiteral("<thead>")), text.count(QStringLiteral("<table")));
         // The reproducibility block hashes every data file.
         QVERIFY(text.contains(QString::fromStdString(context.dataFiles.front())));
         QFile pdf(files->at(1));

@@ -5,31 +5,40 @@
 
 namespace drytwin::widgets {
 
-QString controllerDisplayName(control::ControllerKind kind) {
+namespace {
+
+/// @p source in the workbench's language, or as written (English: the report).
+QString named(const char* source, bool translated) {
+    return translated ? QCoreApplication::translate("DisplayNames", source) : QString::fromUtf8(source);
+}
+
+} // namespace
+
+QString controllerDisplayName(control::ControllerKind kind, bool translated) {
     switch (kind) {
     case control::ControllerKind::Pbm:
-        return QCoreApplication::translate("DisplayNames", "Physics model");
+        return named(QT_TRANSLATE_NOOP("DisplayNames", "Physics model"), translated);
     case control::ControllerKind::PgrlCc:
-        return QCoreApplication::translate("DisplayNames", "Physics + learnt correction (PGRL-CC)");
+        return named(QT_TRANSLATE_NOOP("DisplayNames", "Physics + learnt correction (PGRL-CC)"), translated);
     case control::ControllerKind::ExtInputResidual:
-        return QCoreApplication::translate("DisplayNames", "Physics + input-only correction");
+        return named(QT_TRANSLATE_NOOP("DisplayNames", "Physics + input-only correction"), translated);
     case control::ControllerKind::Lstm:
-        return QCoreApplication::translate("DisplayNames", "LSTM (black box)");
+        return named(QT_TRANSLATE_NOOP("DisplayNames", "LSTM (black box)"), translated);
     case control::ControllerKind::Pi:
-        return QCoreApplication::translate("DisplayNames", "PI loop (the plant's own)");
+        return named(QT_TRANSLATE_NOOP("DisplayNames", "PI loop (the plant's own)"), translated);
     }
     return {};
 }
 
-QString modelDisplayName(const std::string& key) {
+QString modelDisplayName(const std::string& key, bool translated) {
     if (const auto kind = control::controllerByName(key)) {
-        return controllerDisplayName(*kind);
+        return controllerDisplayName(*kind, translated);
     }
     if (key == "persistence") {
-        return QCoreApplication::translate("DisplayNames", "Last measurement held");
+        return named(QT_TRANSLATE_NOOP("DisplayNames", "Last measurement held"), translated);
     }
     if (key == "pbm_residual_hold") {
-        return QCoreApplication::translate("DisplayNames", "Physics model, last error held");
+        return named(QT_TRANSLATE_NOOP("DisplayNames", "Physics model, last error held"), translated);
     }
     return QString::fromStdString(key);
 }
@@ -217,8 +226,11 @@ QString verdictDisplayText(const std::string& verdict, const QString& firstCause
                    : QCoreApplication::translate("DisplayNames", "Cause found: %1").arg(firstCause);
     }
     if (verdict == "no_structural_cause") {
+        // Not "within the noise": a bias the model always has (the line's own structure) or a
+        // candidate that fits but fails a check leaves this verdict too.
         return QCoreApplication::translate(
-            "DisplayNames", "No cause found: what the model gets wrong is within the measurements' noise");
+            "DisplayNames", "No cause named: no candidate passed every check (the table says why each was "
+                            "not named)");
     }
     if (verdict == "unexplained_structure") {
         return QCoreApplication::translate("DisplayNames", "Something is left that no known cause explains");

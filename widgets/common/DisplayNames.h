@@ -13,11 +13,12 @@ namespace drytwin::widgets {
 // which the CLI and the result files keep. A process engineer reads the GUI: these word them in
 // plain language, translated; the key and the paper's name go into tooltips (issue #26).
 
-/// @brief A controller or prediction model in an engineer's words ("Physics + learnt correction").
-QString controllerDisplayName(control::ControllerKind kind);
+/// @brief A controller or prediction model in an engineer's words ("Physics + learnt correction"),
+/// in the workbench's language, or in English with @p translated false (the report is English).
+QString controllerDisplayName(control::ControllerKind kind, bool translated = true);
 /// @brief A model by its contract key (pbm, pgrl_cc, ext_input_residual, lstm, persistence,
-/// pbm_residual_hold, pi); the key itself when unknown.
-QString modelDisplayName(const std::string& key);
+/// pbm_residual_hold, pi); the key itself when unknown. @p translated as for controllerDisplayName().
+QString modelDisplayName(const std::string& key, bool translated = true);
 /// @brief A cause of CONTRACT.md §4 by its name ("heat-transfer fouling"); the name when unknown.
 QString causeDisplayName(const std::string& cause);
 /// @brief A monitored column by its contract name ("T_hot_C": "hot-air temperature", "error_X_out_pct":

@@ -6,6 +6,7 @@
 #include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 
+#include <QCoreApplication>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -21,6 +22,7 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace drytwin::widgets {
 
@@ -35,10 +37,12 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
            "retrained) the session's model"));
     m_verdict = new QLabel(tr("Run discovery on the loaded data with the current model."));
     m_verdict->setWordWrap(true);
-    m_ranking = makeResultTable({tr("Cause"), tr("Score z"), tr("p (Holm)"), tr("Fitted"), tr("Loss")});
+    m_ranking = makeResultTable(
+        {tr("Cause"), tr("Outcome"), tr("Score z"), tr("p (Holm)"), tr("Fitted"), tr("Loss")});
     setHeaderToolTips(
         m_ranking,
         {QString(),
+         tr("Outcome: named, or why not (the whole reason in the cell's tooltip, and under the evidence)."),
          tr("Score z: how strongly the model's error points at this cause, in standard deviations of "
             "chance; above about 3 is strong evidence."),
          tr("p (Holm): the chance of evidence this strong if the cause were absent, corrected for "
@@ -365,6 +369,22 @@ QString tellApartText(const std::string& group) {
 
 /// Why a candidate that predicted better was not named, in the GUI's language (the engine's
 /// sentence follows in the details).
+/// The outcome column's words for a candidate not named (rejectionText() says it in full).
+QString rejectionShortText(const std::string& code) {
+    static const std::map<std::string, const char*> shortTexts{
+        {"compensation", QT_TRANSLATE_NOOP("DiscoverPanel", "compensation")},
+        {"inconsistent", QT_TRANSLATE_NOOP("DiscoverPanel", "inconsistent")},
+        {"not_constant", QT_TRANSLATE_NOOP("DiscoverPanel", "not constant")},
+        {"within_normal_spread", QT_TRANSLATE_NOOP("DiscoverPanel", "within normal range")},
+        {"below_floor", QT_TRANSLATE_NOOP("DiscoverPanel", "below the floor")},
+        {"no_held_out_gain", QT_TRANSLATE_NOOP("DiscoverPanel", "no held-out gain")},
+        {"channels", QT_TRANSLATE_NOOP("DiscoverPanel", "its look-alike")},
+        {"line_dynamics", QT_TRANSLATE_NOOP("DiscoverPanel", "line dynamics")}};
+    const auto it = shortTexts.find(code);
+    return it == shortTexts.end() ? DiscoverPanel::tr("not named")
+                                  : QCoreApplication::translate("DiscoverPanel", it->second);
+}
+
 QString rejectionText(const std::string& code) {
     if (code == "compensation") {
         return DiscoverPanel::tr("it lowers one output's error by raising another's (compensation)");
@@ -720,8 +740,8 @@ void DiscoverPanel::show() {
     // Against a reference the z is the change of the cause's one-step estimate from its normal
     // value; a timing cause's p may come from its own score test instead (marked *), which is
     // why a small z can sit beside a small p.
-    m_ranking->horizontalHeaderItem(1)->setText(d.hasReference ? tr("Change z") : tr("Score z"));
-    m_ranking->horizontalHeaderItem(1)->setToolTip(
+    m_ranking->horizontalHeaderItem(2)->setText(d.hasReference ? tr("Change z") : tr("Score z"));
+    m_ranking->horizontalHeaderItem(2)->setToolTip(
         d.hasReference
             ? tr("Change z: how far the cause's one-step estimate here lies from its normal value on "
                  "the reference period, in units of both estimates' errors and the spread between "
@@ -729,18 +749,42 @@ void DiscoverPanel::show() {
             : tr("Score z: how strongly the model's error points at this cause, in standard "
                  "deviations of chance; above about 3 is strong evidence."));
     m_ranking->setRowCount(static_cast<int>(d.ranking.size()));
+    // Each candidate's outcome beside its evidence: a significant candidate left unnamed with no
+    // word on why read as a contradiction of the verdict (a newcomer's review, 2026-11-28). The
+    // last round that judged it decides; the sentence behind it is the cell's tooltip.
+    const auto outcome = [&d](const std::string& cause) -> std::pair<QString, QString> {
+        for (const auto& f : d.findings) {
+            if (f.cause == cause) {
+                return {tr("named"), QString()};
+            }
+        }
+        for (auto r = d.rounds.rbegin(); r != d.rounds.rend(); ++r) {
+            for (const auto& x : r->rejected) {
+                if (x.cause == cause) {
+                    return {rejectionShortText(x.code), QString::fromStdString(x.reason)};
+                }
+            }
+        }
+        return {QString(), QString()};
+    };
     for (std::size_t i = 0; i < d.ranking.size(); ++i) {
         const auto& c = d.ranking[i];
+        const auto [outcomeText, outcomeWhy] = outcome(c.cause);
         const QStringList cells{
-            causeDisplayName(c.cause), QString::number(c.score, 'f', 2),
+            causeDisplayName(c.cause),
+            outcomeText.isEmpty() ? (c.fitted ? QString() : tr("not fitted (weaker)")) : outcomeText,
+            QString::number(c.score, 'f', 2),
             QString::number(c.pHolm, 'g', 3) + (c.pFromOwnScreen ? QStringLiteral(" *") : QString()),
             c.fitted ? tr("yes") : tr("no"),
             c.fitted
                 ? QStringLiteral("%1 → %2").arg(c.fitLossBefore, 0, 'g', 4).arg(c.fitLossAfter, 0, 'g', 4)
                 : QStringLiteral("–")};
         setTableRow(m_ranking, static_cast<int>(i), cells);
+        if (!outcomeWhy.isEmpty()) {
+            m_ranking->item(static_cast<int>(i), 1)->setToolTip(outcomeWhy);
+        }
         if (c.pFromOwnScreen) {
-            m_ranking->item(static_cast<int>(i), 2)
+            m_ranking->item(static_cast<int>(i), 3)
                 ->setToolTip(tr("* A timing cause: p is its own score test (how strongly the error points at "
                                 "it), smaller than its change test's; a lag's one-step estimate understates "
                                 "how far it moved, so the fit decides."));

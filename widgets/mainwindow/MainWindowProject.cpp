@@ -239,14 +239,8 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
 }
 
 QString MainWindow::dataFingerprint() const {
-    if (!m_workbench.hasData()) {
-        return {};
-    }
-    QStringList parts;
-    for (const auto& b : m_workbench.summary().batches) {
-        parts << QStringLiteral("%1:%2").arg(QString::fromStdString(b.id)).arg(b.rows);
-    }
-    return parts.join(QLatin1Char(' '));
+    return m_workbench.hasData() ? QString::fromStdString(workflow::dataFingerprint(m_workbench.summary()))
+                                 : QString();
 }
 
 void MainWindow::restorePending() {

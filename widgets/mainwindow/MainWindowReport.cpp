@@ -23,12 +23,15 @@ QStringList MainWindow::reportMissingSteps() const {
     }
     const QMap<QString, QString> buttons{
         {QStringLiteral("calibrate"), tr("Calibrate")},
+        {QStringLiteral("train"), tr("Learn the correction models (Residual model tab)")},
         {QStringLiteral("evaluate"), tr("Learn the correction models (Residual model tab)")},
         {QStringLiteral("ablation"), tr("Ablation (Residual model tab)")},
         {QStringLiteral("discover"), tr("Discover")},
         {QStringLiteral("mpc"), tr("Run scenario (What-if MPC tab)")}};
     for (const auto& step : workflow::stepsMissingForReport(m_workbench.latest())) {
-        missing << buttons.value(QString::fromStdString(step));
+        if (const QString button = buttons.value(QString::fromStdString(step)); !missing.contains(button)) {
+            missing << button; // train and evaluate are one button
+        }
     }
     return missing;
 }

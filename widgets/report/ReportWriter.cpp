@@ -1,5 +1,7 @@
 #include "report/ReportWriter.h"
 
+#include "common/DisplayNames.h"
+
 #include "common/LibraryVersions.h"
 #include "common/PlotStack.h"
 #include "common/Series.h"
@@ -84,12 +86,13 @@ QString sha256(const std::string& path) {
 /// the PDF's layout (QTextDocument), every column took an equal share and broke words inside
 /// ("extrapolati-on", "controlle-r", "no_lv_correcti-on"), names in the first column most.
 QString tableHead(const std::vector<std::pair<QString, int>>& columns) {
-    QString head =
-        QStringLiteral("<table border=\"1\" cellpadding=\"3\" cellspacing=\"0\" width=\"100%\"><tr>");
+    // In <thead>: the PDF repeats the header row on every page a table runs over.
+    QString head = QStringLiteral(
+        "<table border=\"1\" cellpadding=\"3\" cellspacing=\"0\" width=\"100%\"><thead><tr>");
     for (const auto& [title, percent] : columns) {
         head += QStringLiteral("<th width=\"%1%\">%2</th>").arg(percent).arg(title);
     }
-    return head + QStringLiteral("</tr>");
+    return head + QStringLiteral("</tr></thead>");
 }
 
 } // namespace
@@ -141,8 +144,8 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
     // Calibration.
     const auto& c = r.calibrate.calibration;
     both((QStringLiteral(
-              "<h2>Calibration</h2><p>%1, %2 evaluations; loss %3 → %4; outlet MAE %5 → %6 % wb. Intervals: "
-              "%7.</p>") +
+              "<h2>Calibration</h2><p>%1, %2 evaluations; loss %3 → %4; outlet MAE %5 → %6 % wb and %8 → %9 "
+              "°C. Intervals: %7.</p>") +
           tableHead({{QStringLiteral("parameter"), 30},
                      {QStringLiteral("estimate"), 20},
                      {QStringLiteral("95 % interval"), 35},
@@ -151,7 +154,8 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
              .arg(c.evaluations)
              .arg(num(c.before.loss, 5), num(c.after.loss, 5), num(c.before.maeXOutPct, 3),
                   num(c.after.maeXOutPct, 3))
-             .arg(esc(c.intervalMethod)));
+             .arg(esc(c.intervalMethod))
+             .arg(num(c.before.maeTOutC, 3), num(c.after.maeTOutC, 3)));
     for (const auto& e : c.estimates) {
         const auto& info = properties::info(e.param);
         both(QStringLiteral("<tr><td>%1</td><td>%2</td><td>[%3, %4]</td><td>%5</td></tr>")
@@ -186,12 +190,14 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
              .arg(ev.testRows));
     for (const auto& m : ev.models) {
         both(QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td></tr>")
-                 .arg(esc(m.name), num(m.moisture.mae), num(m.moisture.r2, 3), num(m.temperature.mae),
+                 .arg(modelDisplayName(m.name, false).toHtmlEscaped(), num(m.moisture.mae), num(m.moisture.r2, 3),
+                      num(m.temperature.mae),
                       num(m.skillMoisture, 3)));
     }
     both(QStringLiteral("</table>"));
     {
         auto s = stack({QStringLiteral("X_out error [% wb]")}, QStringLiteral("held-out row [-]"));
+        std::size_t rowsDrawn = 0;
         for (const auto& m : ev.models) {
             if (m.name != "pbm" && m.name != "pgrl_cc") {
                 continue;
@@ -201,12 +207,15 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
                 x << static_cast<double>(k);
                 y << m.moistureResidual[k];
             }
-            s->addCurve(0, QString::fromStdString(m.name), x, y, modelColour(m.name), Qt::SolidLine, 0.8);
+            rowsDrawn = std::max(rowsDrawn, static_cast<std::size_t>(x.size()));
+            s->addCurve(0, modelDisplayName(m.name, false), x, y, modelColour(m.name), Qt::SolidLine, 0.8);
         }
         s->rescale();
-        figure(*s, QStringLiteral(
-                       "Paper Fig. 3: the outlet-moisture error of the calibrated PBM and of the hybrid "
-                       "PGRL-CC one step ahead, first 3,000 held-out rows."));
+        figure(*s, QStringLiteral("Paper Fig. 3: the outlet-moisture error of the calibrated PBM and of the "
+                                  "hybrid PGRL-CC one step ahead, %1 held-out rows%2.")
+                       .arg(rowsDrawn)
+                       .arg(rowsDrawn < ev.testRows ? QStringLiteral(" (the first of %1)").arg(ev.testRows)
+                                                    : QString()));
     }
     {
         // Two figures, each on its own axis: a stack's plots share their x axis, and the PSD's
@@ -294,11 +303,11 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
     // Ablation (Table 3).
     both((QStringLiteral("<h2>Ablation (paper Table 3)</h2>") +
           tableHead({{QStringLiteral("variant"), 35},
-                     {QStringLiteral("MAE X_out"), 13},
+                     {QStringLiteral("MAE X_out [% wb]"), 13},
                      {QStringLiteral("R² X_out"), 12},
-                     {QStringLiteral("MAE T_out"), 13},
-                     {QStringLiteral("MAE X_out, %1 steps"), 13},
-                     {QStringLiteral("MAE X_out, extra\u00ADpolation"), 14}}))
+                     {QStringLiteral("MAE T_out [°C]"), 13},
+                     {QStringLiteral("MAE X_out, %1 steps [% wb]"), 13},
+                     {QStringLiteral("MAE X_out, extra\u00ADpolation [% wb]"), 14}}))
              .arg(r.ablation.multiStepHorizon));
     for (const auto& a : r.ablation.rows) {
         // The paper's words for each variant, its key below them (as in ablation.json).
@@ -335,10 +344,12 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
         series(disc.residuals, QStringLiteral("starting model"), QColor(214, 39, 40));
         series(disc.residualsAfter, QStringLiteral("extended model"), QColor(31, 119, 180));
         s->rescale();
-        figure(
-            *s,
-            QStringLiteral(
-                "Discovery: the physics model's outlet-moisture error before and after the named causes."));
+        figure(*s, disc.findings.empty()
+                       ? QStringLiteral("Discovery: the physics model's outlet-moisture error; no cause was named, "
+                                        "so the extended model is the starting model and its dots cover the "
+                                        "starting model's.")
+                       : QStringLiteral("Discovery: the physics model's outlet-moisture error before and after the "
+                                        "named causes."));
     }
 
     // Closed loop (Table 2, Fig. 5).
@@ -362,15 +373,21 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
                   QString::fromLatin1(cl.scenario.instrumentsName().data()))
              .arg(num(cl.scenario.bandPct, 2)));
     double piEffort = 0, mpcEffort = 0;
+    QString mostEffort;
     for (const auto& run : cl.runs) {
         if (!run.ran) {
             continue;
         }
         const bool pi = run.kind == control::ControllerKind::Pi;
-        (pi ? piEffort : mpcEffort) = std::max(pi ? piEffort : mpcEffort, run.metrics.effortK2);
+        if (pi) {
+            piEffort = std::max(piEffort, run.metrics.effortK2);
+        } else if (run.metrics.effortK2 > mpcEffort) {
+            mpcEffort = run.metrics.effortK2;
+            mostEffort = controllerDisplayName(run.kind, false);
+        }
         both(QStringLiteral(
                  "<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td><td>%6</td><td>%7</td></tr>")
-                 .arg(QString::fromLatin1(control::controllerName(run.kind)), num(run.metrics.iaePctS, 1),
+                 .arg(controllerDisplayName(run.kind, false).toHtmlEscaped(), num(run.metrics.iaePctS, 1),
                       num(run.metrics.effortK2, 1), num(run.metrics.violationPct, 1),
                       pi ? QStringLiteral("–") : num(run.metrics.solveMsMedian, 2),
                       pi ? QStringLiteral("–") : num(run.metrics.gainPctPerKMedian),
@@ -381,10 +398,11 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
     // The ranking is on IAE, as the paper's Table 2; a controller that gets there by moving the
     // burner every decision must not read as the better one without a word (docs/mpc.md, Limits).
     if (piEffort > 0 && mpcEffort > 10 * piEffort) {
-        both(QStringLiteral("<p><b>Effort:</b> an MPC moved the hot-air setpoint %1 times as much as the "
-                            "plant's PI loop (%2 against %3 K²): its setpoint chatters, which IAE alone does "
-                            "not show; see Fig. 5's lower plot.</p>")
-                 .arg(num(mpcEffort / piEffort, 0), num(mpcEffort, 0), num(piEffort, 1)));
+        both(QStringLiteral("<p><b>Effort:</b> the MPC on the %4 moved the hot-air setpoint %1 times as much "
+                            "as the plant's PI loop (%2 against %3 K²): its setpoint chatters, which IAE alone "
+                            "does not show; see the lower plot of the closed-loop figure below (paper Fig. 5).</p>")
+                 .arg(num(mpcEffort / piEffort, 0), num(mpcEffort, 0), num(piEffort, 1),
+                      mostEffort.toHtmlEscaped()));
     }
     {
         auto s = stack({QStringLiteral("X_out, true [% wb]"), QStringLiteral("T_hot setpoint [°C]")},
@@ -410,7 +428,7 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
                 s->addCurve(0, QStringLiteral("band"), t, high, Qt::gray, Qt::DotLine);
                 setpoint = true;
             }
-            const QString name = QString::fromLatin1(control::controllerName(run.kind));
+            const QString name = controllerDisplayName(run.kind, false);
             s->addCurve(0, name, t, QVector<double>(run.xOutTruePct.begin(), run.xOutTruePct.end()),
                         modelColour(control::controllerName(run.kind)));
             s->addCurve(1, name, t, QVector<double>(run.hotAirSetpointC.begin(), run.hotAirSetpointC.end()),
@@ -429,11 +447,16 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
     for (const auto& [name, version] : engineLibraryVersions()) {
         both(QStringLiteral("; %1 %2").arg(esc(name), esc(version)));
     }
-    both((QStringLiteral(
-              ".</p><p>Closed-loop scenario seed %1; every other random choice uses the options' fixed "
-              "seeds, so the same command on the same files gives the same numbers.</p>") +
+    both((QStringLiteral(".</p><p>Closed-loop scenario seed %1; every other random choice uses the options' "
+                         "fixed seeds, so the same steps on the same files give the same numbers.%2</p>") +
           tableHead({{QStringLiteral("data file"), 45}, {QStringLiteral("SHA-256"), 55}}))
-             .arg(cl.scenario.seed));
+             .arg(cl.scenario.seed)
+             .arg(context.resultsFile.isEmpty()
+                      ? QString()
+                      : QStringLiteral(" This report re-draws results made earlier, which the project keeps in "
+                                       "<code>%1</code> (SHA-256 <code>%2</code>): the command above drew the "
+                                       "report, it did not make the numbers.")
+                            .arg(context.resultsFile.toHtmlEscaped(), sha256(context.resultsFile.toStdString()))));
     for (const auto& f : context.dataFiles) {
         both(QStringLiteral("<tr><td>%1</td><td><code>%2</code></td></tr>").arg(esc(f), sha256(f)));
     }
@@ -463,7 +486,7 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
         writer.setTitle(QStringLiteral("DryTwin pipeline report"));
         // Tables a size below the text: seven columns of Table 2 at the text's size broke numbers
         // and words inside ("1464.-1", "fallbac-ks") on A4.
-        pdfDoc.setDefaultStyleSheet(QStringLiteral("td, th { font-size: 8pt; }"));
+        pdfDoc.setDefaultStyleSheet(QStringLiteral("td, th { font-size: 8pt; } small { font-size: 7pt; }"));
         pdfDoc.setHtml(pdf); // clears resources: the images go in after it
         for (const auto& [name, image] : fig.images) {
             pdfDoc.addResource(QTextDocument::ImageResource, QUrl(name), image);

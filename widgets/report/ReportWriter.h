@@ -12,6 +12,9 @@ namespace drytwin::widgets {
 struct ReportContext {
     QString command;                    ///< the exact command line
     std::vector<std::string> dataFiles; ///< batch files read (hashed in the report)
+    /// A saved project's results file the report re-draws (`drytwin report`), named and hashed in
+    /// the report; empty when the results were made by the run that writes it.
+    QString resultsFile;
 };
 
 /// @brief The pipeline's report as `report.html` (self-contained, figures as inline SVG) and
