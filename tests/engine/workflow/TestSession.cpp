@@ -3,6 +3,7 @@
 #include "common/AtomicFile.h"
 #include "common/Units.h"
 #include "io/ModelFile.h"
+#include "workflow/ProjectFile.h"
 #include "workflow/ResultArchive.h"
 #include "workflow/Session.h"
 
@@ -53,6 +54,58 @@ class TestSession : public QObject {
     QString m_data; ///< a small virtual-plant data set, written once
 
 private Q_SLOTS:
+    // A report needs every step; an evaluation without PGRL-CC means Train never ran (a project's
+    // results do not keep the training itself), and the paper's captions would describe the PBM.
+    void aReportNamesEveryStepStillToRunTrainIncluded() {
+        workflow::LatestResults latest;
+        QCOMPARE(workflow::stepsMissingForReport(latest),
+                 (std::vector<std::string>{"calibrate", "train", "evaluate", "ablation", "discover", "mpc"}));
+        latest.calibrate.emplace();
+        latest.evaluate.emplace();
+        latest.evaluate->evaluation.models.resize(1);
+        latest.evaluate->evaluation.models[0].name = "pbm";
+        latest.ablation.emplace();
+        latest.discover.emplace();
+        latest.mpc.emplace();
+        QCOMPARE(workflow::stepsMissingForReport(latest), (std::vector<std::string>{"train"}));
+        const auto refused = workflow::reportInputs(latest, {});
+        QVERIFY(!refused.ok());
+        QVERIFY(refused.error().reason.find("still to run: train") != std::string::npos);
+        latest.evaluate->evaluation.models.resize(2);
+        latest.evaluate->evaluation.models[1].name = "pgrl_cc";
+        QVERIFY(workflow::stepsMissingForReport(latest).empty());
+        QVERIFY(workflow::reportInputs(latest, {}).ok());
+    }
+
+    // A project's paths: beside the project where they exist there, else where they were saved.
+    void aProjectFindsItsDataBesideItOrWhereTheyWereSaved() {
+        QTemporaryDir dir;
+        const std::string root = dir.path().toStdString();
+        std::filesystem::create_directories(root + "/saved/data");
+        std::filesystem::create_directories(root + "/moved/project");
+        nlohmann::json o{{"format", "drytwin-project"},
+                         {"data_path", "data"},
+                         {"data_path_absolute", root + "/saved/data"},
+                         {"data_fingerprint", "B01:10"}};
+        o["data_sets"] = nlohmann::json::array(
+            {{{"label", "x"}, {"path", "data"}, {"path_absolute", root + "/saved/data"}}});
+        const std::string project = o.dump();
+        std::ofstream(root + "/moved/project/p.dtproj") << project;
+        auto paths = workflow::readProjectPaths(root + "/moved/project/p.dtproj");
+        QVERIFY(paths.ok());
+        QCOMPARE(paths->data, root + "/saved/data"); // not beside the moved project: where saved
+        QCOMPARE(paths->dataFingerprint, std::string("B01:10"));
+        QCOMPARE(paths->dataSets.size(), std::size_t(1));
+        std::filesystem::create_directories(root + "/moved/project/data");
+        paths = workflow::readProjectPaths(root + "/moved/project/p.dtproj");
+        QCOMPARE(paths->data, root + "/moved/project/data"); // moved with its data: beside it
+        std::ofstream(root + "/cut.dtproj") << project.substr(0, 40);
+        const auto cut = workflow::readProjectPaths(root + "/cut.dtproj");
+        QVERIFY(!cut.ok());
+        QVERIFY2(cut.error().reason.find("damaged or cut short") != std::string::npos,
+                 cut.error().reason.c_str());
+    }
+
     void initTestCase() {
         QVERIFY(m_dir.isValid());
         m_data = m_dir.filePath("plant");
