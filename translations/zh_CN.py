@@ -8,6 +8,7 @@ import re
 import sys
 
 ZH = {
+    "Held-out accuracy": "留出集精度",
     "compensation": "相互补偿",
     "inconsistent": "各批次不一致",
     "not constant": "批次内不恒定",

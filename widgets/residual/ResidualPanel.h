@@ -7,6 +7,7 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QTabWidget;
 class QTableWidget;
 
 namespace drytwin::widgets {
@@ -24,6 +25,7 @@ public:
     explicit ResidualPanel(Workbench& workbench, QWidget* parent = nullptr);
     QTableWidget* metrics() const { return m_metrics; }
     QTableWidget* ablation() const { return m_ablation; }
+    QTabWidget* tables() const { return m_tables; }
     PlotStack* eigenvalues() const { return m_eigen; }
     PlotStack* skill() const { return m_skill; }
     void train();
@@ -44,6 +46,7 @@ private:
     QCheckBox* m_projection = nullptr;
     QTableWidget* m_metrics = nullptr;
     QTableWidget* m_ablation = nullptr;
+    QTabWidget* m_tables = nullptr; ///< the held-out table and the ablation, a tab each
     PlotStack* m_eigen = nullptr;
     PlotStack* m_skill = nullptr;
     QLabel* m_note = nullptr;
