@@ -287,8 +287,11 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     auto* report = app.add_subcommand(
         "report", "the pipeline's HTML and PDF report from a saved project's results, re-running nothing");
     // Not CLI11's ExistingFile check: a missing project is bad input (exit 3), named by the reader.
-    report->add_option("--project", o.projectPath, "project file (.dtproj) saved by the workbench")->required();
-    report->add_option("--out", o.outPath, "report folder (made if missing; its report.html and report.pdf are replaced)")
+    report->add_option("--project", o.projectPath, "project file (.dtproj) saved by the workbench")
+        ->required();
+    report
+        ->add_option("--out", o.outPath,
+                     "report folder (made if missing; its report.html and report.pdf are replaced)")
         ->required();
     reg(report, runReport);
 }

@@ -10,17 +10,16 @@
 //      [--oracle (each mechanism run asks about its hidden cause alone)]
 //      [--reference (issue #41: each run judged against healthy data of another seed, 4 x 3,000 s,
 //      by discoverChange; the detectors' flags in each row, and each seed's healthy run first: a detector
-//      that flags it flags the seed's conditions, not the mechanism)] [--reference-batches N (with --reference:
-//      the reference period's batches, default 4)] [--no-structure (with --reference: the
-//      line's own structure not learnt, the causes' normal values alone)] [--size-rule (with --reference:
-//      an output a cause acts on counts against it when its error rises, as alone; the rule before
-//      2026-11-27, instead of the direction of the cause's effect)] [--share-of-whole (with --reference:
-//      a cause's share counted of the whole held-out error only, not of its change against the
-//      reference once a detector flags one; the rule before 2026-11-27, evening)] [--undetected-at-5-percent
-//      (with --reference: a cause named while no detector flags judged beyond its normal spread at
-//      z 1.96, not at the detectors' rate; the rule before 2026-11-27, night)] [--seeds FIRST (mechanism
-//      runs' three seeds; default 101, onsets FIRST+100)] [--unimproved-alpha A (default 0.05; 1: the rule
-//      before)]
+//      that flags it flags the seed's conditions, not the mechanism)] [--reference-batches N (with
+//      --reference: the reference period's batches, default 4)] [--no-structure (with --reference: the line's
+//      own structure not learnt, the causes' normal values alone)] [--size-rule (with --reference: an output
+//      a cause acts on counts against it when its error rises, as alone; the rule before 2026-11-27, instead
+//      of the direction of the cause's effect)] [--share-of-whole (with --reference: a cause's share counted
+//      of the whole held-out error only, not of its change against the reference once a detector flags one;
+//      the rule before 2026-11-27, evening)] [--undetected-at-5-percent (with --reference: a cause named
+//      while no detector flags judged beyond its normal spread at z 1.96, not at the detectors' rate; the
+//      rule before 2026-11-27, night)] [--seeds FIRST (mechanism runs' three seeds; default 101, onsets
+//      FIRST+100)] [--unimproved-alpha A (default 0.05; 1: the rule before)]
 //      [--no-constancy (an offset, wall loss or gas coupling not checked for constancy within the batch)]
 //      [--look-alike-overall (a look-alike ruled out on the overall held-out loss alone, even where
 //      it predicts one output better)]: the rules before 2026-11-26, for a before/after
@@ -290,14 +289,15 @@ int main(int argc, char** argv) {
             discoveryOptions.maxEvaluationsPerFit = std::atoi(next.c_str());
             ++i;
         } else {
-            std::fprintf(stderr, "usage: study_discovery [--quick] [--plant distributed|lumped] "
-                                 "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
-                                 "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
-                                 "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
-                                 "[--evaluations N] [--oracle] [--reference] [--reference-batches N] [--no-structure] "
-                                 "[--structure-extrapolates] [--keep-taken-up] [--size-rule] "
-                                 "[--spread-bound] [--undetected-at-5-percent] [--share-of-whole] "
-                                 "[--no-constancy] [--look-alike-overall]\n");
+            std::fprintf(
+                stderr, "usage: study_discovery [--quick] [--plant distributed|lumped] "
+                        "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
+                        "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
+                        "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
+                        "[--evaluations N] [--oracle] [--reference] [--reference-batches N] [--no-structure] "
+                        "[--structure-extrapolates] [--keep-taken-up] [--size-rule] "
+                        "[--spread-bound] [--undetected-at-5-percent] [--share-of-whole] "
+                        "[--no-constancy] [--look-alike-overall]\n");
             return 2;
         }
     }

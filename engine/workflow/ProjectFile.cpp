@@ -88,12 +88,10 @@ std::vector<std::string> stepsMissingForReport(const LatestResults& latest) {
             learnt = learnt || m.name == "pgrl_cc";
         }
     }
-    const std::pair<bool, const char*> steps[] = {{latest.calibrate.has_value(), "calibrate"},
-                                                  {learnt, "train"},
-                                                  {latest.evaluate.has_value(), "evaluate"},
-                                                  {latest.ablation.has_value(), "ablation"},
-                                                  {latest.discover.has_value(), "discover"},
-                                                  {latest.mpc.has_value(), "mpc"}};
+    const std::pair<bool, const char*> steps[] = {
+        {latest.calibrate.has_value(), "calibrate"}, {learnt, "train"},
+        {latest.evaluate.has_value(), "evaluate"},   {latest.ablation.has_value(), "ablation"},
+        {latest.discover.has_value(), "discover"},   {latest.mpc.has_value(), "mpc"}};
     for (const auto& [done, name] : steps) {
         if (!done) {
             missing.emplace_back(name);

@@ -263,7 +263,8 @@ Expected<LatestResults> parseLatestResults(const std::string& text, const std::s
     try {
         j = json::parse(text);
     } catch (const json::parse_error& e) {
-        return bad("not valid JSON at byte " + std::to_string(e.byte) + " (the file is damaged or cut short)");
+        return bad("not valid JSON at byte " + std::to_string(e.byte) +
+                   " (the file is damaged or cut short)");
     }
     if (!j.is_object()) {
         return bad("not a DryTwin results file (not a JSON object)");

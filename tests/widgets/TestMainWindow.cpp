@@ -58,6 +58,19 @@ using drytwin::widgets::MainWindow;
 
 namespace {
 
+/// A look-alike of a finding as discovery reports it: its cause, parameter and fitted value, its
+/// held-out loss over the named cause's and the p that the named cause predicts better.
+discovery::LookAlike lookAlike(const char* cause, properties::Param parameter, double value, double lossRatio,
+                               double pValue) {
+    discovery::LookAlike l;
+    l.cause = cause;
+    l.parameter = parameter;
+    l.value = value;
+    l.heldOutLossRatio = lossRatio;
+    l.pValue = pValue;
+    return l;
+}
+
 void writeText(const QString& path, const std::string& text) {
     std::ofstream out(path.toStdString(), std::ios::binary);
     out << text;
@@ -146,13 +159,8 @@ private Q_SLOTS:
         f.onsetLowS = 1080;
         f.onsetHighS = 1320;
         f.group = "moisture_offset";
-        discovery::LookAlike gauge;
-        gauge.cause = "inlet_moisture_sensor_offset";
-        gauge.parameter = properties::Param::X_in_offset;
-        gauge.value = 0.9;
-        gauge.heldOutLossRatio = 1.01;
-        gauge.pValue = 0.4;
-        f.lookAlikes.push_back(gauge);
+        f.lookAlikes.push_back(
+            lookAlike("inlet_moisture_sensor_offset", properties::Param::X_in_offset, 0.9, 1.01, 0.4));
         const QString english = widgets::DiscoverPanel::specificityText(f);
         for (const char* part : {"between 0.48 and 0.52", "consistent", "starts 20 min into the batch",
                                  "inlet moisture gauge offset fits these data about as well",
@@ -179,12 +187,7 @@ private Q_SLOTS:
         lag.parameter = properties::Param::tau_meter;
         lag.value = 29.2;
         lag.output = "X_out";
-        discovery::LookAlike transport;
-        transport.cause = "transport_delay_error";
-        transport.parameter = properties::Param::dtau_conv;
-        transport.value = 20.7;
-        transport.heldOutLossRatio = 0.93;
-        transport.pValue = 0.001;
+        auto transport = lookAlike("transport_delay_error", properties::Param::dtau_conv, 20.7, 0.93, 0.001);
         transport.ruledOut = true;
         transport.byChannels = true;
         transport.moistureDelayS = 20.7;

@@ -87,8 +87,8 @@ QString sha256(const std::string& path) {
 /// ("extrapolati-on", "controlle-r", "no_lv_correcti-on"), names in the first column most.
 QString tableHead(const std::vector<std::pair<QString, int>>& columns) {
     // In <thead>: the PDF repeats the header row on every page a table runs over.
-    QString head = QStringLiteral(
-        "<table border=\"1\" cellpadding=\"3\" cellspacing=\"0\" width=\"100%\"><thead><tr>");
+    QString head =
+        QStringLiteral("<table border=\"1\" cellpadding=\"3\" cellspacing=\"0\" width=\"100%\"><thead><tr>");
     for (const auto& [title, percent] : columns) {
         head += QStringLiteral("<th width=\"%1%\">%2</th>").arg(percent).arg(title);
     }
@@ -190,9 +190,8 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
              .arg(ev.testRows));
     for (const auto& m : ev.models) {
         both(QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td></tr>")
-                 .arg(modelDisplayName(m.name, false).toHtmlEscaped(), num(m.moisture.mae), num(m.moisture.r2, 3),
-                      num(m.temperature.mae),
-                      num(m.skillMoisture, 3)));
+                 .arg(modelDisplayName(m.name, false).toHtmlEscaped(), num(m.moisture.mae),
+                      num(m.moisture.r2, 3), num(m.temperature.mae), num(m.skillMoisture, 3)));
     }
     both(QStringLiteral("</table>"));
     {
@@ -344,12 +343,14 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
         series(disc.residuals, QStringLiteral("starting model"), QColor(214, 39, 40));
         series(disc.residualsAfter, QStringLiteral("extended model"), QColor(31, 119, 180));
         s->rescale();
-        figure(*s, disc.findings.empty()
-                       ? QStringLiteral("Discovery: the physics model's outlet-moisture error; no cause was named, "
-                                        "so the extended model is the starting model and its dots cover the "
-                                        "starting model's.")
-                       : QStringLiteral("Discovery: the physics model's outlet-moisture error before and after the "
-                                        "named causes."));
+        figure(
+            *s,
+            disc.findings.empty()
+                ? QStringLiteral("Discovery: the physics model's outlet-moisture error; no cause was named, "
+                                 "so the extended model is the starting model and its dots cover the "
+                                 "starting model's.")
+                : QStringLiteral("Discovery: the physics model's outlet-moisture error before and after the "
+                                 "named causes."));
     }
 
     // Closed loop (Table 2, Fig. 5).
@@ -398,9 +399,10 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
     // The ranking is on IAE, as the paper's Table 2; a controller that gets there by moving the
     // burner every decision must not read as the better one without a word (docs/mpc.md, Limits).
     if (piEffort > 0 && mpcEffort > 10 * piEffort) {
-        both(QStringLiteral("<p><b>Effort:</b> the MPC on the %4 moved the hot-air setpoint %1 times as much "
-                            "as the plant's PI loop (%2 against %3 K²): its setpoint chatters, which IAE alone "
-                            "does not show; see the lower plot of the closed-loop figure below (paper Fig. 5).</p>")
+        both(QStringLiteral(
+                 "<p><b>Effort:</b> the MPC on the %4 moved the hot-air setpoint %1 times as much "
+                 "as the plant's PI loop (%2 against %3 K²): its setpoint chatters, which IAE alone "
+                 "does not show; see the lower plot of the closed-loop figure below (paper Fig. 5).</p>")
                  .arg(num(mpcEffort / piEffort, 0), num(mpcEffort, 0), num(piEffort, 1),
                       mostEffort.toHtmlEscaped()));
     }
@@ -453,10 +455,12 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
              .arg(cl.scenario.seed)
              .arg(context.resultsFile.isEmpty()
                       ? QString()
-                      : QStringLiteral(" This report re-draws results made earlier, which the project keeps in "
-                                       "<code>%1</code> (SHA-256 <code>%2</code>): the command above drew the "
-                                       "report, it did not make the numbers.")
-                            .arg(context.resultsFile.toHtmlEscaped(), sha256(context.resultsFile.toStdString()))));
+                      : QStringLiteral(
+                            " This report re-draws results made earlier, which the project keeps in "
+                            "<code>%1</code> (SHA-256 <code>%2</code>): the command above drew the "
+                            "report, it did not make the numbers.")
+                            .arg(context.resultsFile.toHtmlEscaped(),
+                                 sha256(context.resultsFile.toStdString()))));
     for (const auto& f : context.dataFiles) {
         both(QStringLiteral("<tr><td>%1</td><td><code>%2</code></td></tr>").arg(esc(f), sha256(f)));
     }
