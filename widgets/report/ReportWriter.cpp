@@ -235,8 +235,8 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
                 f << m.psdFrequencyHz[k];
                 p << std::max(1e-12, m.psdDensity[k]);
             }
-            acfStack->addCurve(0, QString::fromStdString(m.name), lag, acf, modelColour(m.name));
-            psdStack->addCurve(0, QString::fromStdString(m.name), f, p, modelColour(m.name));
+            acfStack->addCurve(0, modelDisplayName(m.name, false), lag, acf, modelColour(m.name));
+            psdStack->addCurve(0, modelDisplayName(m.name, false), f, p, modelColour(m.name));
         }
         acfStack->rescale();
         psdStack->rescale();
@@ -256,13 +256,19 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
                 h << ev.horizons[i];
                 k << m.skillMoistureByHorizon[i];
             }
-            s->addCurve(0, QString::fromStdString(m.name), h, k, modelColour(m.name));
+            s->addCurve(0, modelDisplayName(m.name, false), h, k, modelColour(m.name));
         }
         s->rescale();
+        // The horizons evaluated, not the log axis's next decade (it ran to 1,000 for 180).
+        if (!ev.horizons.empty()) {
+            s->plot(0)->setAxisScale(QwtPlot::xBottom, 1, ev.horizons.back());
+        }
         s->plot(0)->setAxisScale(QwtPlot::yLeft, 0, 2.5);
         s->plot(0)->replot(); // the renderer reads the scales replot computes
-        figure(*s,
-               QStringLiteral("The horizon curve: moisture skill of every predictor, 1 to 180 steps ahead."));
+        figure(*s, QStringLiteral(
+                       "The horizon curve: moisture skill of every predictor, 1 to %1 steps ahead (a "
+                       "skill above 2.5 leaves the frame at the top: worse than the references by far).")
+                       .arg(ev.horizons.empty() ? 0 : ev.horizons.back()));
     }
     const auto& d = r.evaluate.diagnostics;
     if (d.hasPgrlCcEigenvalues) {
