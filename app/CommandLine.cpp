@@ -289,6 +289,10 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     // Not CLI11's ExistingFile check: a missing project is bad input (exit 3), named by the reader.
     report->add_option("--project", o.projectPath, "project file (.dtproj) saved by the workbench")
         ->required();
+    report->add_option("--data", o.dataPath,
+                       "the project's data where they are now, when moved (must be the batches and rows "
+                       "the results were made on)");
+    report->add_option("--mapping", o.mappingPath, "their column mapping (default: the project's)");
     report
         ->add_option("--out", o.outPath,
                      "report folder (made if missing; its report.html and report.pdf are replaced)")

@@ -53,15 +53,21 @@ int runReport(const CommandOptions& o) {
                   missing.error().reason +
                       " (run them in the workbench and save the project, or run `drytwin pipeline`)"});
     }
+    // --data: the same data moved elsewhere (an archive folder); the fingerprint below still checks
+    // that they are the batches and rows the results were made on.
+    if (!o.dataPath.empty()) {
+        paths->data = o.dataPath;
+        if (!o.mappingPath.empty()) {
+            paths->mapping = o.mappingPath;
+        }
+    }
     if (paths->data.empty()) {
-        return fail(Error{ErrorKind::BadInput, o.projectPath, "the project names no data set"});
+        return fail(Error{ErrorKind::BadInput, o.projectPath, "the project names no data set (give --data)"});
     }
     if (!std::filesystem::exists(paths->data, ec)) {
         return fail(Error{ErrorKind::BadInput, o.projectPath,
                           "its data set is not where the project says, beside it or where it was saved (" +
-                              paths->data +
-                              "); put the data back, or open the project in the workbench and open the data "
-                              "where they are now"});
+                              paths->data + "); give --data where they are now, or put them back"});
     }
     // The report's figures draw the data the results came from.
     CommandOptions withData = o;

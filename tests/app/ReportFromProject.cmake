@@ -66,6 +66,16 @@ if(EXISTS ${WORK}/pointed-report/report.html)
   message(FATAL_ERROR "a report was written on other data")
 endif()
 
+# The data moved to an archive: named with --data, the report is written; without it, refused.
+file(COPY ${WORK}/data/ DESTINATION ${WORK}/archive/data)
+write_project(${WORK}/archived/line.dtproj data_path "\"../nowhere\"" data_path_absolute "\"${WORK}/gone\""
+              results_path_absolute "\"${WORK}/saved/line.dtproj.results.json\"")
+run(3 ${EXE} report --project ${WORK}/archived/line.dtproj --out ${WORK}/archived-report)
+if(NOT err MATCHES "its data set is not where the project says.*give --data")
+  message(FATAL_ERROR "moved data are not named as such:\n${err}")
+endif()
+run(0 ${EXE} report --project ${WORK}/archived/line.dtproj --data ${WORK}/archive/data --out ${WORK}/archived-report)
+
 # The same project without its what-if run: refused, naming the step, no report.
 file(READ ${WORK}/saved/line.dtproj.results.json results)
 string(JSON results REMOVE "${results}" mpc)
