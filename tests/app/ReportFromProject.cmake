@@ -17,6 +17,19 @@ function(write_project dest)
   file(WRITE ${dest} "${project}")
 endfunction()
 
+# `report --project PROJECT` refused with exit 3, its message matching PATTERN, and no report in
+# the folder it was given; WHAT names the case in a failure.
+function(expect_refused project pattern what)
+  execute_process(COMMAND ${EXE} report --project ${project} --out ${WORK}/refused-report
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 3 OR NOT err MATCHES "${pattern}")
+    message(FATAL_ERROR "${what}: exit ${rc}, not refused as such:\n${out}\n${err}")
+  endif()
+  if(EXISTS ${WORK}/refused-report/report.html)
+    message(FATAL_ERROR "${what}: a report was written")
+  endif()
+endfunction()
+
 function(run expect_rc)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL expect_rc)
@@ -58,22 +71,16 @@ endif()
 run(0 ${EXE} generate --seed 4 --batches 2 --samples 600 --out ${WORK}/other-data)
 write_project(${WORK}/pointed/line.dtproj data_path "\"../other-data\"" data_path_absolute "\"\""
               results_path_absolute "\"${WORK}/saved/line.dtproj.results.json\"")
-run(3 ${EXE} report --project ${WORK}/pointed/line.dtproj --out ${WORK}/pointed-report)
-if(NOT err MATCHES "its data are not those its results were made on .batches and rows then: B01:900 B02:900; now, at .*other-data: B01:600 B02:600")
-  message(FATAL_ERROR "a report on other data than the results' is not refused as such:\n${err}")
-endif()
-if(EXISTS ${WORK}/pointed-report/report.html)
-  message(FATAL_ERROR "a report was written on other data")
-endif()
+expect_refused(${WORK}/pointed/line.dtproj
+  "its data are not those its results were made on .batches and rows then: B01:900 B02:900; now, at .*other-data: B01:600 B02:600"
+  "a report on other data than the results'")
 
 # The data moved to an archive: named with --data, the report is written; without it, refused.
 file(COPY ${WORK}/data/ DESTINATION ${WORK}/archive/data)
 write_project(${WORK}/archived/line.dtproj data_path "\"../nowhere\"" data_path_absolute "\"${WORK}/gone\""
               results_path_absolute "\"${WORK}/saved/line.dtproj.results.json\"")
-run(3 ${EXE} report --project ${WORK}/archived/line.dtproj --out ${WORK}/archived-report)
-if(NOT err MATCHES "its data set is not where the project says.*give --data")
-  message(FATAL_ERROR "moved data are not named as such:\n${err}")
-endif()
+expect_refused(${WORK}/archived/line.dtproj "its data set is not where the project says.*give --data"
+  "moved data without --data")
 run(0 ${EXE} report --project ${WORK}/archived/line.dtproj --data ${WORK}/archive/data --out ${WORK}/archived-report)
 
 # The same project without its what-if run: refused, naming the step, no report.
@@ -81,16 +88,7 @@ file(READ ${WORK}/saved/line.dtproj.results.json results)
 string(JSON results REMOVE "${results}" mpc)
 file(WRITE ${WORK}/partial/line.dtproj.results.json "${results}")
 write_project(${WORK}/partial/line.dtproj results_path "\"line.dtproj.results.json\"" results_path_absolute "\"\"")
-run(3 ${EXE} report --project ${WORK}/partial/line.dtproj --out ${WORK}/partial-report)
-if(NOT err MATCHES "line.dtproj: the report needs every step's result; still to run: mpc")
-  message(FATAL_ERROR "the refusal does not name the missing step:\n${err}")
-endif()
-if(EXISTS ${WORK}/partial-report/report.html)
-  message(FATAL_ERROR "a report was written without the what-if run")
-endif()
-
-run(3 ${EXE} report --project ${WORK}/data/B01.csv --out ${WORK}/not-a-project)
-if(NOT err MATCHES "B01.csv: not a DryTwin project")
-  message(FATAL_ERROR "a batch file given as a project is not named as such:\n${err}")
-endif()
+expect_refused(${WORK}/partial/line.dtproj "line.dtproj: the report needs every step's result; still to run: mpc"
+  "a project without its what-if run")
+expect_refused(${WORK}/data/B01.csv "B01.csv: not a DryTwin project" "a batch file given as a project")
 message(STATUS "report from a moved project: every section; a missing step and a non-project refused")
