@@ -5,14 +5,13 @@
 #include "HeadlessCommands.h"
 #include "commands/CommandHelpers.h"
 
+#include "common/AtomicFile.h"
 #include "workflow/ProjectFile.h"
 #include "workflow/ResultArchive.h"
 #include "workflow/Session.h"
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 namespace drytwin::app {
@@ -36,13 +35,11 @@ int runReport(const CommandOptions& o) {
                               ? "the project holds no results; run the steps in the workbench and save it"
                               : "its results file " + paths->results + " is missing"});
     }
-    std::ifstream in(paths->results, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    if (!in) {
-        return fail(Error{ErrorKind::BadInput, paths->results, "cannot read the project's results file"});
+    const auto text = readWholeFile(paths->results);
+    if (!text) {
+        return fail(text.error());
     }
-    auto latest = workflow::parseLatestResults(text.str(), paths->results);
+    auto latest = workflow::parseLatestResults(*text, paths->results);
     if (!latest) {
         return fail(latest.error());
     }

@@ -1,9 +1,9 @@
 #include "workflow/ProjectFile.h"
 
+#include "common/AtomicFile.h"
+
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 namespace drytwin::workflow {
 
@@ -20,21 +20,18 @@ std::string text(const json& from, const std::string& key) {
 } // namespace
 
 Expected<ProjectPaths> readProjectPaths(const std::string& projectPath) {
-    std::ifstream in(projectPath, std::ios::binary);
-    if (!in) {
-        return Error{ErrorKind::BadInput, projectPath, "cannot open the project file"};
+    const auto all = readWholeFile(projectPath);
+    if (!all) {
+        return all.error();
     }
-    std::stringstream buffer;
-    buffer << in.rdbuf();
     json o;
     try {
-        o = json::parse(buffer.str());
+        o = json::parse(*all);
     } catch (const json::parse_error& e) {
         // A JSON object that breaks off or goes wrong (a full disk, a copy interrupted, an edit):
         // damaged, not a file of another kind.
-        const std::string& all = buffer.str();
-        const auto first = all.find_first_not_of(" \t\r\n");
-        const bool cutShort = first != std::string::npos && all[first] == '{';
+        const auto first = all->find_first_not_of(" \t\r\n");
+        const bool cutShort = first != std::string::npos && (*all)[first] == '{';
         return Error{ErrorKind::BadInput, projectPath,
                      cutShort ? "the project file is damaged or cut short (not valid JSON at byte " +
                                     std::to_string(e.byte) + ")"
