@@ -2909,17 +2909,17 @@
         <translation>&lt;b&gt;培训&lt;/b&gt;：产线为学员实时运行；教员窗口可注入故障、冻结时钟并为回答评分。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="26"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="27"/>
         <source>The data set every tab shows; the others opened in this window stay here</source>
         <translation>各页显示的数据集；在本窗口打开过的其他数据集也保留在这里</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="32"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="33"/>
         <source>Data set:</source>
         <translation>数据集：</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="43"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="44"/>
         <source>none loaded</source>
         <translation>未加载</translation>
     </message>
@@ -2928,22 +2928,36 @@
         <translation>项目保存后数据已改变</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="75"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="83"/>
         <source>Project data changed</source>
         <translation>项目数据已改变</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="72"/>
         <source>The project&apos;s data are not what they were when it was saved (then: %1; now: %2). The results shown were made on the data as saved; run the steps again to update them.</source>
-        <translation>项目的数据与保存时不同（当时：%1；现在：%2）。显示的结果基于保存时的数据；请重新运行各步骤以更新结果。</translation>
+        <translation type="vanished">项目的数据与保存时不同（当时：%1；现在：%2）。显示的结果基于保存时的数据；请重新运行各步骤以更新结果。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="74"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="73"/>
         <source>nothing</source>
         <translation>无</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="94"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="77"/>
+        <source>the same batches and rows, %1, hold other values</source>
+        <translation>批次和行数相同（%1），但数值已改变</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="78"/>
+        <source>then: %1; now: %2</source>
+        <translation>当时：%1；现在：%2</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="80"/>
+        <source>The project&apos;s data are not what they were when it was saved (%1). The results shown were made on the data as saved; run the steps again to update them.</source>
+        <translation>项目的数据与保存时不同（%1）。显示的结果基于保存时的数据；请重新运行各步骤以更新结果。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="102"/>
         <source>The project&apos;s data could not be opened from %1: its model and saved results are shown. Open the data (File ▸ Open data set folder…) to run anything on them.</source>
         <translation>无法从 %1 打开项目的数据：已显示其模型和保存的结果。请打开数据（文件 ▸ 打开数据集文件夹…）后再运行任何步骤。</translation>
     </message>
@@ -3255,7 +3269,7 @@
         <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="132"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="140"/>
         <source>Writing the bundled demo (10 batches of the virtual plant) to %1…</source>
         <translation>正在把自带演示数据（虚拟装置的 10 个批次）写入 %1…</translation>
     </message>

@@ -40,8 +40,10 @@ ZH = {
     "Export &report…": "导出报告(&R)…",
     "the data changed since the project was saved": "项目保存后数据已改变",
     "Project data changed": "项目数据已改变",
-    "The project's data are not what they were when it was saved (then: %1; now: %2). The results shown were made on the data as saved; run the steps again to update them.":
-        "项目的数据与保存时不同（当时：%1；现在：%2）。显示的结果基于保存时的数据；请重新运行各步骤以更新结果。",
+    "The project's data are not what they were when it was saved (%1). The results shown were made on the data as saved; run the steps again to update them.":
+        "项目的数据与保存时不同（%1）。显示的结果基于保存时的数据；请重新运行各步骤以更新结果。",
+    "then: %1; now: %2": "当时：%1；现在：%2",
+    "the same batches and rows, %1, hold other values": "批次和行数相同（%1），但数值已改变",
     "nothing": "无",
     "The project's data could not be opened from %1: its model and saved results are shown. Open the data (File ▸ Open data set folder…) to run anything on them.":
         "无法从 %1 打开项目的数据：已显示其模型和保存的结果。请打开数据（文件 ▸ 打开数据集文件夹…）后再运行任何步骤。",

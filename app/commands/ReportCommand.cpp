@@ -82,11 +82,12 @@ int runReport(const CommandOptions& o) {
     }
     // The results were made on the data as saved: a report that drew other data beside them (and
     // hashed them as the results' source) would be wrong without a word.
-    if (const std::string now = workflow::dataFingerprint(*summary);
-        !paths->dataFingerprint.empty() && now != paths->dataFingerprint) {
+    if (const auto change =
+            workflow::dataChangeSince(paths->dataFingerprint, workflow::dataFingerprint(*summary));
+        !paths->dataFingerprint.empty() && change) {
         return fail(Error{ErrorKind::BadInput, o.projectPath,
-                          "its data are not those its results were made on (batches and rows then: " +
-                              paths->dataFingerprint + "; now, at " + paths->data + ": " + now +
+                          "its data at " + paths->data + " are not those its results were made on (" +
+                              change->describe() +
                               "); run the steps again on these data and save the project"});
     }
     auto inputs = workflow::reportInputs(*latest, *summary);

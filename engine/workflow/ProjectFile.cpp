@@ -2,6 +2,8 @@
 
 #include "common/AtomicFile.h"
 
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -69,12 +71,85 @@ Expected<ProjectPaths> readProjectPaths(const std::string& projectPath) {
     return p;
 }
 
+namespace {
+
+constexpr const char* kValuesTag = " values:";
+
+/// FNV-1a, 64 bit: a digest that is the same on every machine and build (std::hash is not), to
+/// recognise changed data, not to resist tampering; a cryptographic hash library is not needed.
+class Fnv1a {
+public:
+    void add(const std::string& text) {
+        for (const unsigned char c : text) {
+            m_state = (m_state ^ c) * 1099511628211ULL;
+        }
+        m_state = (m_state ^ 0xffU) * 1099511628211ULL; // a separator, so "ab","c" ≠ "a","bc"
+    }
+    void add(double value) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.17g", value);
+        add(std::string(buffer));
+    }
+    std::string hex() const {
+        char buffer[17];
+        std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(m_state));
+        return buffer;
+    }
+
+private:
+    std::uint64_t m_state = 14695981039346656037ULL;
+};
+
+std::string batchesAndRows(const std::string& fingerprint) {
+    return fingerprint.substr(0, fingerprint.find(kValuesTag));
+}
+
+} // namespace
+
 std::string dataFingerprint(const data::DataSetSummary& summary) {
     std::string out;
+    // The values enter through what the summary keeps of them: each column's range, mean and gaps
+    // in file units and each batch's time span, all at full precision; one value edited in a file
+    // moves its column's mean.
+    Fnv1a values;
     for (const auto& b : summary.batches) {
         out += (out.empty() ? "" : " ") + b.id + ":" + std::to_string(b.rows);
+        values.add(b.id);
+        values.add(b.startS);
+        values.add(b.endS);
+        values.add(static_cast<double>(b.missing));
+        values.add(static_cast<double>(b.droppedByCleaning));
     }
-    return out;
+    for (const auto& c : summary.columns) {
+        values.add(c.name);
+        values.add(c.unit);
+        if (c.present) {
+            values.add(c.min);
+            values.add(c.max);
+            values.add(c.mean);
+            values.add(static_cast<double>(c.missing));
+        }
+    }
+    return out + kValuesTag + values.hex();
+}
+
+std::optional<DataChange> dataChangeSince(const std::string& saved, const std::string& now) {
+    const bool savedHasValues = saved.find(kValuesTag) != std::string::npos;
+    if (savedHasValues ? saved == now : saved == batchesAndRows(now)) {
+        return std::nullopt;
+    }
+    DataChange change{batchesAndRows(saved), batchesAndRows(now), false};
+    change.valuesOnly = change.batchesThen == change.batchesNow;
+    return change;
+}
+
+std::string DataChange::describe() const {
+    if (valuesOnly) {
+        return "the same batches and rows (" + batchesNow +
+               ") hold other values than when the results were made";
+    }
+    return "batches and rows then: " + (batchesThen.empty() ? "none" : batchesThen) +
+           "; now: " + (batchesNow.empty() ? "none" : batchesNow);
 }
 
 std::vector<std::string> stepsMissingForReport(const LatestResults& latest) {

@@ -3,6 +3,7 @@
 #include "common/Error.h"
 #include "workflow/Session.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,9 +25,23 @@ struct ProjectPaths {
     std::string dataFingerprint;
 };
 
-/// @brief A data set's batches and rows as a project stores them ("B01:1500 B02:1500"): whether
-/// the data a project names are still those its results were made on.
+/// @brief A data set's batches and rows, and a digest of its values, as a project stores them
+/// ("B01:1500 B02:1500 values:3f9a…"): whether the data a project names are still those its
+/// results were made on, a value edited in place included.
 std::string dataFingerprint(const data::DataSetSummary& summary);
+
+/// @brief How a data set differs from the one a project's results were made on.
+struct DataChange {
+    std::string batchesThen, batchesNow; ///< "B01:1500 B02:1500"; "" for none
+    bool valuesOnly = false;             ///< the same batches and rows, other values
+    /// In English for the command line and logs; the workbench words it from the fields.
+    std::string describe() const;
+};
+
+/// @brief Whether the data @p now (a dataFingerprint()) differ from those @p saved describes, and
+/// how. A fingerprint saved before the digest existed ("B01:1500 B02:1500") is compared by its
+/// batches and rows alone.
+std::optional<DataChange> dataChangeSince(const std::string& saved, const std::string& now);
 
 /// @brief Reads @p projectPath; a BadInput error naming the file when it cannot be read or is not a
 /// DryTwin project.

@@ -72,8 +72,23 @@ run(0 ${EXE} generate --seed 4 --batches 2 --samples 600 --out ${WORK}/other-dat
 write_project(${WORK}/pointed/line.dtproj data_path "\"../other-data\"" data_path_absolute "\"\""
               results_path_absolute "\"${WORK}/saved/line.dtproj.results.json\"")
 expect_refused(${WORK}/pointed/line.dtproj
-  "its data are not those its results were made on .batches and rows then: B01:900 B02:900; now, at .*other-data: B01:600 B02:600"
+  "its data at .*other-data are not those its results were made on .batches and rows then: B01:900 B02:900; now: B01:600 B02:600"
   "a report on other data than the results'")
+
+# The same batches and rows with one reading edited in place (a cleaned spike, a corrected
+# value): refused too, saying that the values changed.
+file(COPY ${WORK}/data/ DESTINATION ${WORK}/edited-data)
+file(READ ${WORK}/edited-data/B01.csv batch)
+string(REGEX REPLACE "\n(5,[^\n]*),[0-9.]+\n" "\n\\1,60.5\n" edited "${batch}")
+if(edited STREQUAL batch)
+  message(FATAL_ERROR "the test could not edit row 5 of B01.csv")
+endif()
+file(WRITE ${WORK}/edited-data/B01.csv "${edited}")
+write_project(${WORK}/edited/line.dtproj data_path "\"../edited-data\"" data_path_absolute "\"\""
+              results_path_absolute "\"${WORK}/saved/line.dtproj.results.json\"")
+expect_refused(${WORK}/edited/line.dtproj
+  "the same batches and rows .B01:900 B02:900. hold other values than when the results were made"
+  "a report on data edited in place")
 
 # The data moved to an archive: named with --data, the report is written; without it, refused.
 file(COPY ${WORK}/data/ DESTINATION ${WORK}/archive/data)

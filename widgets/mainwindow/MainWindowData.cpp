@@ -5,6 +5,7 @@
 #include "MainWindow.h"
 
 #include "data/DataPanel.h"
+#include "workflow/ProjectFile.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -66,12 +67,19 @@ void MainWindow::connectDataLoading() {
         // results and learnt parts restored below were made on the data as saved; say so rather
         // than show them as this data's (each learnt part still names the data it was learnt on).
         const QString saved = std::exchange(m_pendingDataFingerprint, QString());
-        const QString now = dataFingerprint();
-        if (!saved.isEmpty() && saved != now) {
+        const auto change = workflow::dataChangeSince(saved.toStdString(), dataFingerprint().toStdString());
+        if (!saved.isEmpty() && change) {
+            const auto batches = [this](const std::string& list) {
+                return list.empty() ? tr("nothing") : QString::fromStdString(list);
+            };
+            const QString how =
+                change->valuesOnly
+                    ? tr("the same batches and rows, %1, hold other values").arg(batches(change->batchesNow))
+                    : tr("then: %1; now: %2").arg(batches(change->batchesThen), batches(change->batchesNow));
             m_projectWarning =
-                tr("The project's data are not what they were when it was saved (then: %1; now: %2). "
+                tr("The project's data are not what they were when it was saved (%1). "
                    "The results shown were made on the data as saved; run the steps again to update them.")
-                    .arg(saved, now.isEmpty() ? tr("nothing") : now);
+                    .arg(how);
             showError(tr("Project data changed"), m_projectWarning);
         }
         if (!m_pendingModel.isEmpty()) {

@@ -106,6 +106,44 @@ private Q_SLOTS:
                  cut.error().reason.c_str());
     }
 
+    // A project's data fingerprint: batches and rows, and a digest of the values, so that one
+    // reading edited in place is caught; a fingerprint of an older project (no digest) still
+    // compares by batches and rows.
+    void aDataFingerprintSeesAValueEditedInPlace() {
+        data::DataSetSummary summary;
+        for (const auto& [id, rows] : {std::pair{"B01", 10}, std::pair{"B02", 12}}) {
+            data::BatchSummary batch;
+            batch.id = id;
+            batch.rows = rows;
+            summary.batches.push_back(batch);
+        }
+        data::ColumnSummary outlet;
+        outlet.name = "X_out_pct";
+        outlet.unit = "%";
+        outlet.present = true;
+        outlet.min = 11.0;
+        outlet.max = 13.0;
+        outlet.mean = 12.0;
+        summary.columns.push_back(outlet);
+        const std::string saved = workflow::dataFingerprint(summary);
+        QVERIFY2(saved.rfind("B01:10 B02:12 values:", 0) == 0, saved.c_str());
+        QVERIFY(!workflow::dataChangeSince(saved, workflow::dataFingerprint(summary)));
+
+        summary.columns[0].mean = 12.0 + 1e-9; // one reading of 22 moved by 2e-8 % wb
+        const auto edited = workflow::dataChangeSince(saved, workflow::dataFingerprint(summary));
+        QVERIFY(edited && edited->valuesOnly);
+        QVERIFY2(edited->describe().find("the same batches and rows (B01:10 B02:12) hold other values") !=
+                     std::string::npos,
+                 edited->describe().c_str());
+        QVERIFY(!workflow::dataChangeSince("B01:10 B02:12", workflow::dataFingerprint(summary)));
+
+        summary.batches.pop_back();
+        const auto shorter = workflow::dataChangeSince(saved, workflow::dataFingerprint(summary));
+        QVERIFY(shorter && !shorter->valuesOnly);
+        QCOMPARE(shorter->describe(), std::string("batches and rows then: B01:10 B02:12; now: B01:10"));
+        QVERIFY(workflow::dataChangeSince("B01:10 B02:12", workflow::dataFingerprint(summary)));
+    }
+
     void initTestCase() {
         QVERIFY(m_dir.isValid());
         m_data = m_dir.filePath("plant");
