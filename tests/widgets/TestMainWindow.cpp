@@ -529,6 +529,25 @@ private Q_SLOTS:
         QVERIFY(w.residualPanel()->metrics()->rowCount() >= 4);
         QVERIFY(curvesWithData(w.residualPanel()->eigenvalues()->plot(0)) >= 2);
         QVERIFY(curvesWithData(w.residualPanel()->skill()->plot(0)) >= 4);
+        // The unit circle is round: one unit as long on both axes, also after the window changed
+        // its size (a wide plot once drew it as a flat ellipse).
+        w.tabs()->setCurrentWidget(w.residualPanel());
+        for (const QSize size : {QSize(1280, 800), QSize(1000, 900)}) {
+            w.resize(size);
+            QTest::qWait(200);
+            QwtPlot* eigen = w.residualPanel()->eigenvalues()->plot(0);
+            eigen->replot(); // the maps follow the canvas at the next drawing
+            const double unitX = std::abs(eigen->canvasMap(QwtPlot::xBottom).transform(1.0) -
+                                          eigen->canvasMap(QwtPlot::xBottom).transform(0.0));
+            const double unitY = std::abs(eigen->canvasMap(QwtPlot::yLeft).transform(1.0) -
+                                          eigen->canvasMap(QwtPlot::yLeft).transform(0.0));
+            QVERIFY2(unitX > 20 && std::abs(unitX - unitY) <= 0.02 * unitX,
+                     qPrintable(QString("one unit: %1 px across, %2 px up in a %3 x %4 window")
+                                    .arg(unitX)
+                                    .arg(unitY)
+                                    .arg(size.width())
+                                    .arg(size.height())));
+        }
 
         // Discover (run above, behind Learn), then extend the model in one click.
         auto* disc = w.discoverPanel();

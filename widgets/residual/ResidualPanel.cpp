@@ -1,6 +1,7 @@
 #include "residual/ResidualPanel.h"
 
 #include "common/DisplayNames.h"
+#include "common/EqualAspect.h"
 #include "common/ModelStateBar.h"
 #include "common/PlotStack.h"
 #include "common/WidgetHelpers.h"
@@ -88,8 +89,7 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     m_skill->setEmptyText(tr("Learn the correction models to see their skill by forecast horizon"));
     m_eigen->setHintVisible(false);
     // Sensible empty axes until a model is evaluated (a log axis would autoscale to 1e-100).
-    m_eigen->plot(0)->setAxisScale(QwtPlot::xBottom, -2.5, 2.5);
-    m_eigen->plot(0)->setAxisScale(QwtPlot::yLeft, -1.1, 1.1);
+    keepEqualAspect(m_eigen->plot(0), 1.15);
     m_skill->plot(0)->setAxisScale(QwtPlot::xBottom, 1, 200);
     m_skill->plot(0)->setAxisScale(QwtPlot::yLeft, 0, 2.5);
     auto* left = new QWidget;
@@ -288,15 +288,15 @@ void ResidualPanel::showEvaluation() {
             new QwtSymbol(QwtSymbol::Ellipse, QBrush(QColor(31, 119, 180)), Qt::NoPen, QSize(4, 4)));
     }
     m_eigen->rescale();
-    // One unit the same length on both axes, so the unit circle is drawn as a circle.
-    const QWidget* canvas = m_eigen->plot(0)->canvas();
-    const double aspect =
-        canvas->height() > 0 ? static_cast<double>(canvas->width()) / canvas->height() : 1.0;
-    m_eigen->plot(0)->setAxisScale(QwtPlot::xBottom, -1.15 * std::max(1.0, aspect),
-                                   1.15 * std::max(1.0, aspect));
-    m_eigen->plot(0)->setAxisScale(QwtPlot::yLeft, -1.15 * std::max(1.0, 1.0 / aspect),
-                                   1.15 * std::max(1.0, 1.0 / aspect));
-    m_eigen->plot(0)->replot();
+    // The rescaler keeps one unit the same length on both axes at any size of the plot, so the
+    // unit circle stays a circle; the view holds the circle and every eigenvalue.
+    double radius = 1.15;
+    for (const auto* set : {&d.pgrlCcBefore.eigenvalues, &d.pgrlCcAfter.eigenvalues}) {
+        for (const auto& l : *set) {
+            radius = std::max(radius, 1.1 * std::abs(l));
+        }
+    }
+    keepEqualAspect(m_eigen->plot(0), radius);
     // The curves start at 1 step; the open-loop PBM's skill (about 10) would flatten the rest.
     m_skill->plot(0)->setAxisScale(QwtPlot::xBottom, 1, 200);
     m_skill->plot(0)->setAxisScale(QwtPlot::yLeft, 0, 2.5);
