@@ -308,6 +308,14 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
             if (const auto it = options.mapping.contractToFile.find(std::string(s.name));
                 it != options.mapping.contractToFile.end()) {
                 hint = " (the column mapping names it '" + it->second + "')";
+            } else {
+                for (const auto& t : batch.text) {
+                    if (headerLooksLike(t.fileName, s.id)) {
+                        hint = " (the file has '" + t.fileName + "': rename it to '" + std::string(s.name) +
+                               "' or give a column mapping)";
+                        break;
+                    }
+                }
             }
             return withCode(badInput(file, header.line, 1,
                                      "missing required column '" + std::string(s.name) + "' [" +

@@ -1,6 +1,10 @@
 #include "data/Columns.h"
 
+#include <cctype>
 #include <cmath>
+#include <set>
+#include <string>
+#include <vector>
 
 #include <limits>
 
@@ -52,6 +56,75 @@ std::optional<Column> columnByName(std::string_view name) {
         }
     }
     return std::nullopt;
+}
+
+namespace {
+
+std::vector<std::string> lowerWords(std::string_view text) {
+    std::vector<std::string> words(1);
+    for (const char ch : text) {
+        if (ch == '_' || ch == ' ' || ch == '-' || ch == '.' || ch == '/' || ch == '[' || ch == ']' ||
+            ch == '(' || ch == ')') {
+            if (!words.back().empty()) {
+                words.emplace_back();
+            }
+        } else {
+            words.back() += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        }
+    }
+    if (words.back().empty()) {
+        words.pop_back();
+    }
+    return words;
+}
+
+/// "sp" in "setpoint", "in" in "inlet": the same first letter, the rest in order.
+bool abbreviates(const std::string& shortWord, const std::string& longWord) {
+    if (shortWord.empty() || longWord.empty() || shortWord.front() != longWord.front()) {
+        return false;
+    }
+    std::size_t at = 0;
+    for (const char ch : longWord) {
+        at += at < shortWord.size() && shortWord[at] == ch ? 1 : 0;
+    }
+    return at == shortWord.size();
+}
+
+std::string joined(const std::vector<std::string>& words, std::size_t count) {
+    std::string out;
+    for (std::size_t i = 0; i < count && i < words.size(); ++i) {
+        out += words[i];
+    }
+    return out;
+}
+
+} // namespace
+
+bool headerLooksLike(std::string_view header, Column c) {
+    const auto name = lowerWords(spec(c).name);
+    const auto words = lowerWords(header);
+    if (words.empty() || joined(words, words.size()) == joined(name, name.size())) {
+        return !words.empty();
+    }
+    // The contract's symbol: its name without the unit words at its end ("T_in" of "T_in_C").
+    static const std::set<std::string> unitWords{"c", "pct", "m", "s", "kg", "h"};
+    std::size_t symbol = name.size();
+    while (symbol > 1 && unitWords.count(name[symbol - 1]) > 0) {
+        --symbol;
+    }
+    const std::string stem = joined(name, symbol);
+    if (stem.size() >= 4 && joined(words, words.size()).rfind(stem, 0) == 0) {
+        return true; // "Tamb_degC", "airspeed"
+    }
+    if (words.size() < symbol) {
+        return false;
+    }
+    for (std::size_t i = 0; i < symbol; ++i) {
+        if (!abbreviates(name[i], words[i])) {
+            return false;
+        }
+    }
+    return true;
 }
 
 bool possibleRange(Column c, double& low, double& high) {

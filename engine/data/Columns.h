@@ -55,4 +55,11 @@ bool impossibleValue(Column c, double v);
 /// @brief Column whose header name is @p name, if it is a contract column.
 std::optional<Column> columnByName(std::string_view name);
 
+/// @brief Whether a file's header that is not a contract name looks like the contract column
+/// @p c spelt another way: the same name in other case or separators ("x_out_pct"), or the
+/// contract's symbol without its unit, each word abbreviated the same way ("T_inlet_C" for
+/// T_in_C, "air_speed" for air_speed_m_s, "T_hot_setpoint_C" for T_hot_sp_C). A hint for the
+/// user, never applied: a header read under a name it does not have would be a silent guess.
+bool headerLooksLike(std::string_view header, Column c);
+
 } // namespace drytwin::data

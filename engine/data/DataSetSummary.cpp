@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 
 namespace drytwin::data {
@@ -74,6 +75,10 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
         s.columns.push_back(c);
     }
     std::set<std::string> extras;
+    // A header that is an optional contract column spelt otherwise ("T_inlet_C"): read as text and
+    // the column taken as absent, which changes the model's result without an error; said once per
+    // header, with the files it is in.
+    std::map<std::pair<std::string, Column>, std::vector<std::string>> lookalikes;
     std::vector<std::size_t> listed(kColumnCount, 0);
     for (std::size_t bi = 0; bi < data.batches.size(); ++bi) {
         const Batch& b = data.batches[bi];
@@ -146,6 +151,13 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
         }
         for (const auto& t : b.text) {
             extras.insert(t.fileName);
+            for (const auto& contract : columnSpecs()) {
+                if (!contract.required && !b.values(contract.id) &&
+                    headerLooksLike(t.fileName, contract.id)) {
+                    lookalikes[{t.fileName, contract.id}].push_back(b.sourcePath.empty() ? b.id
+                                                                                         : b.sourcePath);
+                }
+            }
         }
         s.rows += bs.rows;
         s.missing += bs.missing;
@@ -160,6 +172,18 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
         }
     }
     s.extraColumns.assign(extras.begin(), extras.end());
+    for (const auto& [key, files] : lookalikes) {
+        const auto& [header, id] = key;
+        const ColumnSpec& contract = spec(id);
+        const std::string where =
+            files.front() + (files.size() > 1 ? " and " + std::to_string(files.size() - 1) + " more" : "");
+        s.notes.push_back(where + ": column '" + header +
+                          "' is not a contract column and is kept as text; it looks like '" +
+                          std::string(contract.name) + "' [" + std::string(contract.unit) + ", " +
+                          std::string(contract.meaning) + "], which therefore counts as absent (" +
+                          std::string(contract.defaultReason) + "). Rename the header to '" +
+                          std::string(contract.name) + "' or give a column mapping.");
+    }
     return s;
 }
 

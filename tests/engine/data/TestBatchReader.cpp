@@ -67,6 +67,45 @@ private Q_SLOTS:
         QCOMPARE((*b->values(Column::XOut))[1], 12.6);
     }
 
+    // A contract column spelt another way is not read under a name it does not have, but the user
+    // is told: an optional one in a note naming the header and the contract name, a required one
+    // in the error. Headers that only share a letter are not taken for one.
+    void aMisspeltContractColumnIsNamed() {
+        QVERIFY(headerLooksLike("T_inlet_C", Column::TIn));
+        QVERIFY(headerLooksLike("T_hot_setpoint_C", Column::THotSp));
+        QVERIFY(headerLooksLike("air_speed", Column::AirSpeed));
+        QVERIFY(headerLooksLike("X_hdt", Column::XHdt));
+        QVERIFY(headerLooksLike("x_out_pct", Column::XOut));
+        QVERIFY(headerLooksLike("Tamb degC", Column::TAmb));
+        QVERIFY(!headerLooksLike("T_hot_C", Column::THotSp));
+        QVERIFY(!headerLooksLike("T_hot_C", Column::THdt));
+        QVERIFY(!headerLooksLike("operator", Column::TIn));
+        QVERIFY(!headerLooksLike("X_out_pct", Column::XHdt));
+
+        std::string text = goodFile(3);
+        text.replace(text.find(",T_in_C,"), 8, ",T_inlet_C,");
+        QTemporaryDir dir;
+        writeText(dir.filePath("B07.csv"), text);
+        const auto loaded = loadDataSet(dir.path().toStdString());
+        QVERIFY(loaded.ok());
+        const auto summary = summarize(loaded.dataSet);
+        QVERIFY(!summary.columns[static_cast<std::size_t>(Column::TIn)].present);
+        const auto note = std::find_if(summary.notes.begin(), summary.notes.end(), [](const std::string& n) {
+            return n.find("column 'T_inlet_C' is not a contract column") != std::string::npos &&
+                   n.find("looks like 'T_in_C'") != std::string::npos;
+        });
+        QVERIFY2(note != summary.notes.end() && note->find("B07.csv") != std::string::npos,
+                 summary.notes.empty() ? "no note" : summary.notes.front().c_str());
+
+        std::string required = goodFile(3);
+        required.replace(required.find(",X_out_pct,"), 11, ",x_out_pct,");
+        const auto refused = parseBatchText(required, "B08.csv");
+        QVERIFY(!refused.ok());
+        QVERIFY2(refused.error().message().find("missing required column 'X_out_pct'") != std::string::npos &&
+                     refused.error().message().find("the file has 'x_out_pct'") != std::string::npos,
+                 refused.error().message().c_str());
+    }
+
     void missingCellsReportedNotZeroFilled() {
         std::string s = std::string(kHeader) + "\n" + row(0) + "\n" +
                         "1,170,169.5,16,6200,22,25,24,55,14,58,,55.2\n" +
