@@ -29,6 +29,22 @@ int runPipeline(const CommandOptions& o) {
         !open(o, session, rc)) {
         return rc;
     }
+    // The HTML/PDF report is drawn into the pipeline's staging folder, so that it is moved into
+    // the output folder with the rest, or not at all.
+    double renderSeconds = 0;
+    if (o.renderReport) {
+        options.finishInFolder = [&](const workflow::PipelineResult& r,
+                                     const std::string& folder) -> Expected<std::vector<std::string>> {
+            const auto t0 = std::chrono::steady_clock::now();
+            std::string error;
+            auto files = o.renderReport(r, session, folder, error);
+            renderSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            if (!error.empty()) {
+                return Error{ErrorKind::BadInput, o.outPath, "the HTML/PDF report: " + error};
+            }
+            return files;
+        };
+    }
     auto result = session.pipeline(options, o.progress);
     if (!result) {
         return fail(result.error());
@@ -71,18 +87,14 @@ int runPipeline(const CommandOptions& o) {
         "diagnostics.json, discover.json, model-extended.json and mpc.json beside it\n",
         r.reportPath.c_str());
     if (o.renderReport) {
-        const auto t0 = std::chrono::steady_clock::now();
-        std::string error;
-        const auto files = o.renderReport(r, session, o.outPath, error);
-        if (!error.empty()) {
-            return fail(Error{ErrorKind::BadInput, o.outPath, "the HTML/PDF report: " + error});
+        for (const auto& stage : r.stages) {
+            for (const auto& f : stage.files) {
+                if (stage.name == "report" && f != r.reportPath) {
+                    std::printf("report %s\n", f.c_str());
+                }
+            }
         }
-        for (const auto& f : files) {
-            std::printf("report %s", f.c_str());
-            std::printf("\n");
-        }
-        std::printf("HTML and PDF report with figures: %.1f s\n",
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        std::printf("HTML and PDF report with figures: %.1f s\n", renderSeconds);
     }
     return 0;
 }

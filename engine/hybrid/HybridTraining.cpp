@@ -371,8 +371,19 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
     if (reportProgress(progress, "ablation", 0.0, "input-driven correction")) {
         return cancelledError("ablation");
     }
+    // The extrapolation split trains on whole batches and judges the warmest: one batch (a shift
+    // exported as one run) has nothing to train on, so that column is left empty and says why,
+    // rather than the whole table failing.
+    const bool regimeSplitPossible =
+        !regimeViews(batches, basePbm, false).empty() && !regimeViews(batches, basePbm, true).empty();
+    if (!regimeSplitPossible) {
+        result.regimeSplit = std::string(kRegimeSplitName) + " not run: it needs two batches or more";
+    }
     auto regimeCorrectionFit = std::async(std::launch::async, [&] {
-        return residual::ResidualModel::fitInputDriven(regimeViews(batches, basePbm, false), concreteBase);
+        return regimeSplitPossible
+                   ? residual::ResidualModel::fitInputDriven(regimeViews(batches, basePbm, false),
+                                                             concreteBase)
+                   : Expected<std::shared_ptr<const residual::InputDrivenCorrection>>(nullptr);
     });
     auto chronologicalCorrection =
         residual::ResidualModel::fitInputDriven(splitViews(batches, basePbm, false), concreteBase);
@@ -468,6 +479,11 @@ Expected<AblationResult> runAblation(const std::vector<data::SiBatch>& batches, 
         row.ljungBoxPMoisture = scored[0].moisture.ljungBoxP;
         row.maeMoistureMultiStep = scored[1].moisture.mae;
         // Extrapolation split: trained on the cooler seasons, tested on the warmest.
+        if (!regimeSplitPossible) {
+            row.regimeMaeMoisture = row.regimeR2Moisture = row.regimeMaeTemperature =
+                std::numeric_limits<double>::quiet_NaN();
+            return row;
+        }
         auto mr = fitOn(regimeViews(batches, pbm, false), *regimeCorrection);
         if (!mr) {
             return mr.error();

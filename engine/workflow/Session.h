@@ -18,6 +18,7 @@
 #include "plant/VirtualPlant.h"
 #include "training/TrainingScript.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -193,7 +194,14 @@ struct TrainingResult {
     Ending ending;
 };
 
+struct PipelineResult;
+
 /// @brief Everything in order into a folder, with a report (CONTRACT.md §2 `pipeline`).
+///
+/// Whole or not at all: every file is first written into a hidden staging folder inside
+/// outFolder and moved into outFolder only once every stage (and finishInFolder) succeeded; a
+/// failed or cancelled run leaves outFolder as it was (a previous report stays whole, not mixed
+/// with this run's first stages).
 struct PipelineOptions {
     std::string outFolder;
     CalibrateOptions calibrate;
@@ -201,6 +209,11 @@ struct PipelineOptions {
     EvaluateOptions evaluate;
     DiscoverOptions discover;
     MpcOptions mpc; ///< the bundled paper-like scenario with the trained model
+    /// Optional last stage writing more files into the staging folder it is given (the HTML/PDF
+    /// report, drawn by the GUI's code the engine does not link); they are moved with the rest.
+    /// Returns the files it wrote.
+    std::function<Expected<std::vector<std::string>>(const PipelineResult&, const std::string& folder)>
+        finishInFolder;
     Status validate() const;
 };
 

@@ -339,7 +339,9 @@ void ResidualPanel::showAblation() {
                     {QString::fromStdString(r.description.empty() ? r.variant : r.description),
                      QString::number(r.maeMoisture, 'f', 4), QString::number(r.r2Moisture, 'f', 3),
                      QString::number(r.maeTemperature, 'f', 4),
-                     QString::number(r.regimeMaeMoisture, 'f', 4)});
+                     // Not run on one batch (nothing to train on beside the warmest): a dash.
+                     std::isfinite(r.regimeMaeMoisture) ? QString::number(r.regimeMaeMoisture, 'f', 4)
+                                                        : QStringLiteral("–")});
     }
     for (std::size_t i = 0; i < a->rows.size(); ++i) {
         m_ablation->item(static_cast<int>(i), 0)->setToolTip(QString::fromStdString(a->rows[i].variant));

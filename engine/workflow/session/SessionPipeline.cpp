@@ -1,6 +1,7 @@
 // What pipeline() runs, in which order, and what it writes: inspect, calibrate, train, evaluate,
-// ablation, discover and mpc, each result written to the folder as its stage ends, then the
-// report. A failed stage leaves the session's model as it was before the pipeline.
+// ablation, discover and mpc, each result written to a staging folder as its stage ends, then the
+// report; the files are moved into the output folder when every stage is done. A failed stage
+// leaves the session's model and the output folder as they were before the pipeline.
 
 #include "workflow/Session.h"
 
@@ -25,11 +26,24 @@ Expected<PipelineResult> Session::pipeline(const PipelineOptions& options, const
     if (ec) {
         return Error{ErrorKind::BadInput, options.outFolder, "cannot create the folder: " + ec.message()};
     }
-    const auto in = [&](const char* name) { return (fs::path(options.outFolder) / name).string(); };
+    // Every file goes into a staging folder inside the output folder (the same file system, so
+    // that moving a file is a rename) and is moved out only when the whole run succeeded: a failed
+    // or interrupted run leaves the folder's earlier report whole, never half replaced. A staging
+    // folder an earlier run left behind (the process killed) is cleared first.
+    const fs::path staging = fs::path(options.outFolder) / ".drytwin-pipeline-partial";
+    fs::remove_all(staging, ec);
+    fs::create_directories(staging, ec);
+    if (ec) {
+        return Error{ErrorKind::BadInput, staging.string(),
+                     "cannot create the staging folder: " + ec.message()};
+    }
+    const auto in = [&](const char* name) { return (staging / name).string(); };
     // A failed stage leaves the session's model as it was before the pipeline.
     const hybrid::HybridModel modelBefore = m_model;
     const auto failWith = [&](Error e) {
         m_model = modelBefore;
+        std::error_code ignored;
+        fs::remove_all(staging, ignored);
         return e;
     };
     PipelineResult result;
@@ -135,12 +149,40 @@ Expected<PipelineResult> Session::pipeline(const PipelineOptions& options, const
     }
     finishStage("mpc", {in("mpc.json")});
 
-    auto report = io::writePipelineReport(options.outFolder);
+    auto report = io::writePipelineReport(staging.string());
     if (!report) {
         return failWith(report.error());
     }
     result.reportPath = *report;
-    finishStage("report", {*report});
+    std::vector<std::string> reportFiles{*report};
+    if (options.finishInFolder) {
+        auto more = options.finishInFolder(result, staging.string());
+        if (!more) {
+            return failWith(more.error());
+        }
+        reportFiles.insert(reportFiles.end(), more->begin(), more->end());
+    }
+    finishStage("report", std::move(reportFiles));
+
+    // The run is whole: its files replace the folder's, one rename each.
+    const auto finalPath = [&](const std::string& stagedPath) {
+        return (fs::path(options.outFolder) / fs::path(stagedPath).filename()).string();
+    };
+    for (const auto& entry : fs::directory_iterator(staging, ec)) {
+        fs::rename(entry.path(), fs::path(options.outFolder) / entry.path().filename(), ec);
+        if (ec) {
+            return failWith(Error{ErrorKind::BadInput,
+                                  (fs::path(options.outFolder) / entry.path().filename()).string(),
+                                  "cannot move the finished file into place: " + ec.message()});
+        }
+    }
+    fs::remove_all(staging, ec);
+    for (auto& stage : result.stages) {
+        for (auto& f : stage.files) {
+            f = finalPath(f);
+        }
+    }
+    result.reportPath = finalPath(result.reportPath);
     result.ending = {Termination::Completed, "every stage done", secondsSince(t0)};
     return result;
 }

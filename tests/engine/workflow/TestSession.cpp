@@ -698,7 +698,12 @@ private Q_SLOTS:
         QVERIFY(!foreign.ok() &&
                 foreign.error().reason.find("not a DryTwin results file") != std::string::npos);
 
-        // A cancelled pipeline keeps the model it started with.
+        // A cancelled pipeline keeps the model it started with, and the folder's finished report
+        // as it was: nothing of the cancelled run is moved in, its staging folder is gone.
+        const std::filesystem::path folder(p.outFolder);
+        QVERIFY(!std::filesystem::exists(folder / ".drytwin-pipeline-partial"));
+        const auto reportTime = std::filesystem::last_write_time(folder / "report.md");
+        const auto inspectTime = std::filesystem::last_write_time(folder / "inspect.json");
         workflow::Session c;
         QVERIFY(c.open(o).ok());
         int calls = 0;
@@ -706,6 +711,10 @@ private Q_SLOTS:
         QVERIFY(!cancelled.ok());
         QCOMPARE(cancelled.error().kind, ErrorKind::Cancelled);
         QVERIFY(!c.model().calibration.has_value());
+        QVERIFY(std::filesystem::last_write_time(folder / "report.md") == reportTime);
+        QVERIFY(std::filesystem::last_write_time(folder / "inspect.json") ==
+                inspectTime); // written before the stop
+        QVERIFY(!std::filesystem::exists(folder / ".drytwin-pipeline-partial"));
     }
 };
 
