@@ -398,6 +398,35 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
                             {file, std::to_string(batch.lineOfRow[r]), std::to_string(timeField)});
         }
     }
+    // time_s in other units: rows a few hundredths of a second apart or less would be a historian
+    // sampling a drying line faster than 20 Hz, which none does; the model would then integrate a
+    // whole batch over a fraction of a second without a word (a fresh user's test: Excel serial
+    // days under time_s calibrated with exit 0).
+    if (time->size() >= 3) {
+        std::vector<double> steps;
+        for (std::size_t r = 1; r < time->size(); ++r) {
+            steps.push_back((*time)[r] - (*time)[r - 1]);
+        }
+        std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2),
+                         steps.end());
+        const double medianStep = steps[steps.size() / 2];
+        if (medianStep < 0.05) {
+            const double first = time->front();
+            const bool excelDays = first >= 20000 && first < 80000;
+            char text[512];
+            std::snprintf(text, sizeof text,
+                          "time_s: rows are %.3g s apart (median), faster than any drying line's historian "
+                          "samples: the column is not in seconds. %s",
+                          medianStep,
+                          excelDays
+                              ? "Its values (near 45,000) are Excel serial days: name the column "
+                                "'Timestamp' so that the reader recognises them, or map it "
+                                "({\"time_s\": {\"header\": \"time_s\", \"format\": \"excel_days\"}})"
+                              : "Give its unit (a units row under the header: min or h) or its format in a "
+                                "column mapping");
+            return badInput(file, batch.lineOfRow[1], timeField, text);
+        }
+    }
     return batch;
 }
 

@@ -58,6 +58,55 @@ void emptyColumnNote(const Batch& b, const Batch::NumericColumn& col, DataSetSum
     }
 }
 
+/// Columns each possible alone but impossible together, which a wrong unit or two swapped headers
+/// give (a fresh user's test: °F under a °C header, a moisture fraction under % wb, X_out and T_out
+/// swapped, each calibrated with exit 0): said as notes, with what to check. Means over the data
+/// set in the contract's units; the thresholds leave room for any product a pneumatic drier dries.
+void plausibilityNotes(DataSetSummary& s) {
+    const auto mean = [&s](Column c) {
+        const auto& col = s.columns[static_cast<std::size_t>(c)];
+        return col.present ? col.mean : std::numeric_limits<double>::quiet_NaN();
+    };
+    const double xIn = mean(Column::XIn), xOut = mean(Column::XOut);
+    const double tHot = mean(Column::THot), tHotSp = mean(Column::THotSp), tOut = mean(Column::TOut);
+    char text[512];
+    if (xOut > xIn) {
+        std::snprintf(text, sizeof text,
+                      "X_out_pct (mean %.3g %% wb) is above X_in_pct (mean %.3g %% wb): a drier does not wet "
+                      "its product; check that the columns are not swapped and are in %% wet basis",
+                      xOut, xIn);
+        s.notes.push_back(text);
+    } else if (xOut > 0 && xIn > 100 * xOut) {
+        std::snprintf(text, sizeof text,
+                      "X_out_pct (mean %.3g %% wb) is below a hundredth of X_in_pct (mean %.3g %% wb): a "
+                      "fraction (0.12) given for a percentage (12 %%)? Check its unit",
+                      xOut, xIn);
+        s.notes.push_back(text);
+    }
+    if (std::abs(tHot - tHotSp) > 30) {
+        std::snprintf(text, sizeof text,
+                      "T_hot_C (mean %.4g °C) is %.0f K from its setpoint T_hot_sp_C (mean %.4g °C): one of "
+                      "them in another unit (°F, K) or another column? Check both",
+                      tHot, std::abs(tHot - tHotSp), tHotSp);
+        s.notes.push_back(text);
+    }
+    const double tHdt = mean(Column::THdt);
+    if (tOut > tHdt + 20) {
+        std::snprintf(text, sizeof text,
+                      "T_out_C (mean %.4g °C) is %.0f K above the tube outlet's T_hdt_C (mean %.4g °C): the "
+                      "product cools on its way from the tube, it does not heat up; another unit (°F) or "
+                      "swapped columns? Check both",
+                      tOut, tOut - tHdt, tHdt);
+        s.notes.push_back(text);
+    } else if (tOut > tHot) {
+        std::snprintf(text, sizeof text,
+                      "T_out_C (mean %.4g °C) is above the hot air T_hot_C (mean %.4g °C) that heats the "
+                      "product: another unit (°F) or swapped columns? Check both",
+                      tOut, tHot);
+        s.notes.push_back(text);
+    }
+}
+
 } // namespace
 
 DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOptions) {
@@ -172,6 +221,7 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
         }
     }
     s.extraColumns.assign(extras.begin(), extras.end());
+    plausibilityNotes(s);
     for (const auto& [key, files] : lookalikes) {
         const auto& [header, id] = key;
         const ColumnSpec& contract = spec(id);

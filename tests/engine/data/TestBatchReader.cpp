@@ -106,6 +106,48 @@ private Q_SLOTS:
                  refused.error().message().c_str());
     }
 
+    // Columns each possible alone but impossible together (a wrong unit, swapped headers) are
+    // noted; time_s in Excel serial days is refused, naming the remedy.
+    void aWrongUnitOrSwappedColumnsAreNoted() {
+        const auto notesOf = [](const std::string& text) {
+            QTemporaryDir dir;
+            writeText(dir.filePath("B07.csv"), text);
+            const auto loaded = loadDataSet(dir.path().toStdString());
+            return loaded.ok() ? summarize(loaded.dataSet).notes : std::vector<std::string>{"load failed"};
+        };
+        const auto has = [](const std::vector<std::string>& notes, const std::string& part) {
+            return std::any_of(notes.begin(), notes.end(),
+                               [&](const std::string& n) { return n.find(part) != std::string::npos; });
+        };
+        QVERIFY(notesOf(goodFile(3)).empty());
+        // X_out 0.128 (a fraction) against X_in 22 % wb.
+        std::string fraction = "# batch: B07\n" + std::string(kHeader) + "\n";
+        for (int i = 0; i < 3; ++i) {
+            fraction += row(i, 0.128) + "\n";
+        }
+        QVERIFY(has(notesOf(fraction), "X_out_pct (mean 0.128 % wb) is below a hundredth of X_in_pct"));
+        // The outlet temperature in °F (131 for 55.2 °C) against the tube outlet's 58 °C.
+        std::string fahrenheit = goodFile(3);
+        for (std::size_t at = fahrenheit.find(",55.2\n"); at != std::string::npos;
+             at = fahrenheit.find(",55.2\n")) {
+            fahrenheit.replace(at, 6, ",131.4\n");
+        }
+        QVERIFY(has(notesOf(fahrenheit), "T_out_C (mean 131.4 °C) is 73 K above the tube outlet's T_hdt_C"));
+
+        std::string excel = "# batch: B07\n" + std::string(kHeader) + "\n";
+        for (int i = 0; i < 3; ++i) {
+            std::string r = row(i);
+            char stamp[32];
+            std::snprintf(stamp, sizeof stamp, "%.10f", 45811.25 + i / 86400.0);
+            excel += stamp + r.substr(r.find(',')) + "\n";
+        }
+        const auto refused = parseBatchText(excel, "B07.csv");
+        QVERIFY(!refused.ok());
+        QVERIFY2(refused.error().message().find("Excel serial days") != std::string::npos &&
+                     refused.error().message().find("B07.csv:4:1") != std::string::npos,
+                 refused.error().message().c_str());
+    }
+
     void missingCellsReportedNotZeroFilled() {
         std::string s = std::string(kHeader) + "\n" + row(0) + "\n" +
                         "1,170,169.5,16,6200,22,25,24,55,14,58,,55.2\n" +
