@@ -91,7 +91,7 @@ bool parseBounds(const std::vector<std::string>& specs, calibration::Calibration
         }
         if (!p) {
             exitCode =
-                fail(Error{ErrorKind::BadInput, "--bound " + b, "no parameter '" + b.substr(0, eq) + "'"});
+                fail(Error{ErrorKind::Usage, "--bound " + b, "no parameter '" + b.substr(0, eq) + "'"});
             return false;
         }
         co.bounds[*p] = {lo, hi};
@@ -114,7 +114,7 @@ bool calibrateOptions(const CommandOptions& o, workflow::CalibrateOptions& optio
                     known += " " + std::string(i.symbol);
                 }
                 exitCode =
-                    fail(Error{ErrorKind::BadInput, "--free " + name, "no such parameter; known:" + known});
+                    fail(Error{ErrorKind::Usage, "--free " + name, "no such parameter; known:" + known});
                 return false;
             }
             co.freeParameters.push_back(*p);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <nlopt.hpp>
 #include <optional>
@@ -81,8 +82,8 @@ public:
     std::size_t rowCount() const { return m_rowCount; }
 
     /// Simulates the rows; false when the simulation failed.
-    bool residuals(const ParameterSet& p, bool withSensitivities, Residuals& out,
-                   std::string* why = nullptr) const {
+    bool residuals(const ParameterSet& p, bool withSensitivities, Residuals& out, std::string* why = nullptr,
+                   ErrorKind* kind = nullptr) const {
         physics::SimulationOptions so = m_o.simulation;
         if (withSensitivities) {
             so.sensitivities = m_o.freeParameters;
@@ -104,6 +105,9 @@ public:
             if (!sim) {
                 if (why) {
                     *why = sim.error().message();
+                }
+                if (kind) {
+                    *kind = sim.error().kind;
                 }
                 return false;
             }
@@ -226,6 +230,16 @@ Eigen::MatrixXd hacScoreCovariance(const Residuals& r, std::size_t np, int& band
 
 } // namespace
 
+namespace {
+std::string formatBound(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+} // namespace
+
+// What the user asked for (the command line's --free, --bound, the window's fields): wrong usage
+// (exit 2), not bad data.
 Status CalibrationOptions::validate() const {
     if (freeParameters.empty()) {
         return Error{ErrorKind::Usage, "free parameters", "name at least one parameter to calibrate"};
@@ -233,12 +247,12 @@ Status CalibrationOptions::validate() const {
     for (std::size_t i = 0; i < freeParameters.size(); ++i) {
         const auto& info = properties::info(freeParameters[i]);
         if (info.fixed) {
-            return Error{ErrorKind::BadInput, std::string(info.symbol),
+            return Error{ErrorKind::Usage, std::string(info.symbol),
                          "is a physical constant and cannot be freed"};
         }
         for (std::size_t j = 0; j < i; ++j) {
             if (freeParameters[j] == freeParameters[i]) {
-                return Error{ErrorKind::BadInput, std::string(info.symbol), "is named twice"};
+                return Error{ErrorKind::Usage, std::string(info.symbol), "is named twice"};
             }
         }
     }
@@ -246,19 +260,19 @@ Status CalibrationOptions::validate() const {
         const auto& info = properties::info(p);
         if (!(b.first < b.second) || b.first < info.lower || b.second > info.upper ||
             !std::isfinite(b.first) || !std::isfinite(b.second)) {
-            return Error{ErrorKind::BadInput, std::string(info.symbol),
-                         "bounds must satisfy " + std::to_string(info.lower) + " ≤ lower < upper ≤ " +
-                             std::to_string(info.upper) + " " + std::string(info.unit)};
+            return Error{ErrorKind::Usage, std::string(info.symbol),
+                         "bounds must satisfy " + formatBound(info.lower) + " ≤ lower < upper ≤ " +
+                             formatBound(info.upper) + " " + std::string(info.unit)};
         }
     }
     const double ws[] = {weights.xOut, weights.tOut, weights.xHdt, weights.tHdt};
     for (double w : ws) {
         if (!(w >= 0 && std::isfinite(w))) {
-            return Error{ErrorKind::BadInput, "loss weights", "must be finite and ≥ 0"};
+            return Error{ErrorKind::Usage, "loss weights", "must be finite and ≥ 0"};
         }
     }
     if (weights.xOut + weights.tOut + weights.xHdt + weights.tHdt <= 0) {
-        return Error{ErrorKind::BadInput, "loss weights", "at least one must be positive"};
+        return Error{ErrorKind::Usage, "loss weights", "at least one must be positive"};
     }
     if (maxEvaluations < 10) {
         return Error{ErrorKind::Usage, "max evaluations", "must be at least 10"};
@@ -307,9 +321,12 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
     result.algorithm = "NLopt GN_CRS2_LM then LN_BOBYQA";
     Residuals res;
     std::string why;
-    if (!problem.residuals(start, false, res, &why)) {
-        return Error{ErrorKind::Numerical, "calibration start",
-                     "the model fails at the starting parameters: " + why};
+    // An input the model cannot take (a cell out of range: bad data, exit 3 as `simulate` gives)
+    // is not a numerical failure of the starting parameters (exit 4).
+    ErrorKind failure = ErrorKind::Numerical;
+    if (!problem.residuals(start, false, res, &why, &failure)) {
+        return Error{failure == ErrorKind::BadInput ? ErrorKind::BadInput : ErrorKind::Numerical,
+                     "calibration start", "the model fails at the starting parameters: " + why};
     }
     result.before = {problem.loss(res), meanAbs(res.xOut), meanAbs(res.tOut)};
 
