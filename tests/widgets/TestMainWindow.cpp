@@ -408,6 +408,27 @@ private Q_SLOTS:
         }
     }
 
+    // The window fits a small laptop's screen (1024 x 768 less a task bar): no tab may ask for more.
+    // Tables full width and three check boxes or three buttons in a row once held it at 1,345 px.
+    void theWindowFitsASmallLaptopScreen() {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QString widest;
+        for (int i = 0; i < w.tabs()->count(); ++i) {
+            const QSize least = w.tabs()->widget(i)->minimumSizeHint();
+            if (least.width() > 980 || least.height() > 680) {
+                widest +=
+                    QString(" %1: %2 x %3").arg(w.tabs()->tabText(i)).arg(least.width()).arg(least.height());
+            }
+        }
+        QVERIFY2(widest.isEmpty(), qPrintable("tabs asking for more than 980 x 680 px:" + widest));
+        QVERIFY2(w.minimumSizeHint().width() <= 1000 && w.minimumSizeHint().height() <= 750,
+                 qPrintable(QString("the window asks for %1 x %2 px at the least")
+                                .arg(w.minimumSizeHint().width())
+                                .arg(w.minimumSizeHint().height())));
+    }
+
     void mainFlowsThroughTheWidgets() {
         MainWindow w;
         w.show();

@@ -66,9 +66,13 @@ QStringList cutHeaders(QWidget* root) {
             }
             const int need = headerTextWidth(header, item->text());
             // Cut by its own width, or by the table's edge (a table not at its widest shows all
-            // its columns; only one that asked for kMaxFittedTableWidth may scroll).
+            // its columns; only one that asked for kMaxFittedTableWidth may scroll). What a table
+            // asks for is its preferred width (a FittedTable's size hint; it may be squeezed on a
+            // small screen), or its least width (another table).
+            const int asked =
+                dynamic_cast<const FittedTable*>(table) ? table->sizeHint().width() : table->minimumWidth();
             const bool pastTheEdge =
-                table->minimumWidth() < kMaxFittedTableWidth &&
+                asked < kMaxFittedTableWidth &&
                 header->sectionViewportPosition(c) + header->sectionSize(c) > table->viewport()->width();
             if (header->sectionSize(c) < need || pastTheEdge) {
                 cut << QStringLiteral("%1/%2: %3 < %4")

@@ -26,7 +26,7 @@ namespace {} // namespace
 
 CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
     : QWidget(parent), m_workbench(workbench) {
-    m_free = new QTableWidget(0, 4);
+    m_free = new FittedTable(0, 4);
     m_free->setHorizontalHeaderLabels({tr("Free"), tr("Lower"), tr("Upper"), tr("Unit")});
     m_free->verticalHeader()->hide();
     int row = 0;
@@ -85,10 +85,13 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
 
     auto* left = new QWidget;
     auto* ll = new QVBoxLayout(left);
-    ll->addWidget(new QLabel(tr("Free parameters and their search bounds:")));
+    auto* freeLabel = new QLabel(tr("Free parameters and their search bounds:"));
+    freeLabel->setWordWrap(true);
+    ll->addWidget(freeLabel);
     ll->addWidget(m_free, 1);
+    // The budget above the buttons: the three in one row held the window 1,069 px wide at the least.
+    ll->addWidget(m_budget);
     auto* buttons = new QHBoxLayout;
-    buttons->addWidget(m_budget);
     buttons->addWidget(m_run);
     buttons->addWidget(m_stop);
     ll->addLayout(buttons);
@@ -96,16 +99,21 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
     auto* rl = new QVBoxLayout(right);
     m_fitPlot = new PlotStack;
     m_fitPlot->addPlot(tr("X_out [% wb]"));
-    rl->addWidget(m_loss, 2);
+    // The two plots side by side and the estimates below them the whole width: beside the
+    // before/after plot the estimates' columns did not fit a 1280-pixel window.
+    auto* plots = new QSplitter;
+    plots->addWidget(m_loss);
+    plots->addWidget(m_fitPlot);
+    plots->setSizes({520, 360});
+    rl->addWidget(plots, 3);
     rl->addWidget(m_fit);
-    auto* bottom = new QSplitter;
-    bottom->addWidget(m_estimates);
-    bottom->addWidget(m_fitPlot);
-    rl->addWidget(bottom, 2);
+    rl->addWidget(m_estimates, 1);
+    fitTableHeight(m_estimates, 3); // h_HDT, k_HDT and the inlet scatter share by default
     auto* split = new QSplitter;
     split->addWidget(left);
     split->addWidget(right);
     split->setStretchFactor(1, 1);
+    split->setSizes({450, 810}); // the free parameters' table whole; the rest for the results
     auto* layout = new QHBoxLayout(this);
     layout->addWidget(split);
 

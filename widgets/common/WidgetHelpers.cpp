@@ -81,7 +81,7 @@ QString fromView(std::string_view text) {
 }
 
 QTableWidget* makeResultTable(const QStringList& headers) {
-    auto* table = new QTableWidget(0, static_cast<int>(headers.size()));
+    auto* table = new FittedTable(0, static_cast<int>(headers.size()));
     table->setHorizontalHeaderLabels(headers);
     // Every column as wide as its header and cells: a header cut to "p (Holm" says nothing. Long
     // headers are written on two lines ("MAE X_out\n[% wb]") to keep the columns narrow.
@@ -103,15 +103,37 @@ void fitTableWidth(QTableWidget* table, int maxWidth) {
     const int width = header->length() + 2 * table->frameWidth() +
                       (table->verticalHeader()->isVisible() ? table->verticalHeader()->width() : 0) +
                       table->verticalScrollBar()->sizeHint().width();
-    table->setMinimumWidth(std::min(maxWidth, width));
+    if (auto* fitted = dynamic_cast<FittedTable*>(table)) {
+        fitted->setPreferredWidth(std::min(maxWidth, width));
+        table->setMinimumWidth(std::min(kLeastFittedTableWidth, width));
+    } else {
+        table->setMinimumWidth(std::min(maxWidth, width));
+    }
+}
+
+namespace {
+int heightForRows(const QTableWidget* table, int rows) {
+    return table->horizontalHeader()->sizeHint().height() +
+           rows * table->verticalHeader()->defaultSectionSize() +
+           table->horizontalScrollBar()->sizeHint().height() + 2 * table->frameWidth();
+}
+} // namespace
+
+QSize FittedTable::minimumSizeHint() const {
+    QSize least = QTableWidget::minimumSizeHint();
+    if (m_minimumRows > 0) {
+        least.setHeight(std::max(least.height(), heightForRows(this, m_minimumRows)));
+    }
+    return least;
 }
 
 void fitTableHeight(QTableWidget* table, int rows) {
     Q_ASSERT(table);
-    const int height = table->horizontalHeader()->sizeHint().height() +
-                       rows * table->verticalHeader()->defaultSectionSize() +
-                       table->horizontalScrollBar()->sizeHint().height() + 2 * table->frameWidth();
-    table->setMinimumHeight(height);
+    if (auto* fitted = dynamic_cast<FittedTable*>(table)) {
+        fitted->setMinimumRows(rows);
+    } else {
+        table->setMinimumHeight(heightForRows(table, rows));
+    }
 }
 
 void setHeaderToolTips(QTableWidget* table, const QStringList& tips) {

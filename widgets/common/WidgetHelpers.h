@@ -1,5 +1,7 @@
 #pragma once
 
+#include <QTableWidget>
+
 #include <QColor>
 #include <QString>
 #include <QStringList>
@@ -9,7 +11,6 @@
 class QWidget;
 
 class QLabel;
-class QTableWidget;
 class QWidget;
 
 namespace drytwin::widgets {
@@ -18,10 +19,47 @@ namespace drytwin::widgets {
 QString fromView(std::string_view text);
 /// @brief The widest a table asks to be to show all its columns (fitTableWidth()).
 inline constexpr int kMaxFittedTableWidth = 640;
+/// @brief The narrowest a fitted table may be squeezed to; below its full width it scrolls. 300 px
+/// keeps the window's least width within a 1024-pixel laptop screen (with the full width as the
+/// least, it was 1,345 px).
+inline constexpr int kLeastFittedTableWidth = 300;
+
+/// @brief A table whose preferred width fitTableWidth() sets (a QTableWidget's own size hint does
+/// not follow its columns), so that layouts give it its columns where there is room and may still
+/// squeeze it on a small screen.
+class FittedTable : public QTableWidget {
+public:
+    using QTableWidget::QTableWidget;
+    void setPreferredWidth(int width) {
+        m_preferredWidth = width;
+        updateGeometry();
+    }
+    QSize sizeHint() const override {
+        QSize hint = QTableWidget::sizeHint();
+        if (m_preferredWidth > 0) {
+            hint.setWidth(m_preferredWidth);
+        }
+        return hint;
+    }
+    /// The least height shows @p rows rows below the header (fitTableHeight()).
+    void setMinimumRows(int rows) {
+        m_minimumRows = rows;
+        updateGeometry();
+    }
+    /// Measured when the layout asks, after the style and fonts are applied: measured when the
+    /// table is made, the header was a few pixels short and a row of five was cut.
+    QSize minimumSizeHint() const override;
+
+private:
+    int m_preferredWidth = 0;
+    int m_minimumRows = 0;
+};
 /// @brief An empty table of results: these column headers, no row header, read-only cells.
 QTableWidget* makeResultTable(const QStringList& headers);
 /// @brief Sizes @p table's columns to their headers and cells and asks for the width that shows them
-/// all (up to @p maxWidth; a wider table scrolls), so that no header is cut at the table's edge.
+/// all (up to @p maxWidth; a wider table scrolls), so that no header is cut at the table's edge
+/// where there is room: as its preferred width for a FittedTable (makeResultTable()'s), which may
+/// be squeezed to kLeastFittedTableWidth on a small screen, as its least width for another table.
 /// Call after filling it.
 void fitTableWidth(QTableWidget* table, int maxWidth = kMaxFittedTableWidth);
 /// @brief Asks for the height that shows @p rows rows of @p table below its header (and a

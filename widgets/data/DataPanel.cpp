@@ -68,6 +68,7 @@ DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m
     split->addWidget(left);
     split->addWidget(scroll);
     split->setStretchFactor(1, 1);
+    split->setSizes({660, 620}); // the batch table's columns whole, the plots beside them
     auto* layout = new QHBoxLayout(this);
     layout->addWidget(split);
 

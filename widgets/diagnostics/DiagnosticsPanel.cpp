@@ -37,7 +37,9 @@ DiagnosticsPanel::DiagnosticsPanel(Workbench& workbench, QWidget* parent)
     auto* left = new QWidget;
     auto* ll = new QVBoxLayout(left);
     ll->addWidget(evaluate);
-    ll->addWidget(new QLabel(tr("Models shown (tick to overlay):")));
+    auto* shownLabel = new QLabel(tr("Models shown (tick to overlay):"));
+    shownLabel->setWordWrap(true); // lines that do not wrap set the window's least width
+    ll->addWidget(shownLabel);
     ll->addWidget(m_models, 1);
     ll->addWidget(m_tests);
     m_scatter = new PlotStack;
@@ -57,10 +59,10 @@ DiagnosticsPanel::DiagnosticsPanel(Workbench& workbench, QWidget* parent)
     m_psd->plot(0)->setAxisScale(QwtPlot::yLeft, 1e-4, 1.0);
     auto* scatterBox = new QWidget;
     auto* sb = new QVBoxLayout(scatterBox);
-    auto* pick = new QHBoxLayout;
-    pick->addWidget(new QLabel(tr("Physics model's error against")));
-    pick->addWidget(m_operating, 1);
-    sb->addLayout(pick);
+    // The words above the choice, not beside it: side by side they held the window 1,026 px wide
+    // at the least.
+    sb->addWidget(new QLabel(tr("Physics model's error against")));
+    sb->addWidget(m_operating);
     sb->addWidget(m_scatter, 1);
     m_ccf = new PlotStack;
     m_ccf->addPlot(tr("CCF [-]"));

@@ -131,7 +131,7 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
     auto* split = new QSplitter;
     split->addWidget(left);
     split->addWidget(right);
-    split->setSizes({470, 810}); // the ranking and gain tables whole, the evidence beside them
+    split->setSizes({660, 620}); // the ranking and gain tables wide, the evidence beside them
     split->setStretchFactor(1, 1);
     auto* layout = new QHBoxLayout(this);
     layout->addWidget(split);

@@ -46,7 +46,7 @@ private:
 
 ModelPanel::ModelPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
     m_undo = new QUndoStack(this);
-    m_table = new QTableWidget(0, 7);
+    m_table = new FittedTable(0, 7);
     m_table->setHorizontalHeaderLabels(
         {tr("Parameter"), tr("Value"), tr("Unit"), tr("Lower"), tr("Upper"), tr("Source"), tr("Meaning")});
     m_table->verticalHeader()->hide();
@@ -88,7 +88,9 @@ ModelPanel::ModelPanel(Workbench& workbench, QWidget* parent) : QWidget(parent),
     auto* left = new QWidget;
     auto* ll = new QVBoxLayout(left);
     auto* ub = new QHBoxLayout;
-    ub->addWidget(new QLabel(tr("Double-click a value to edit it; it is checked against its bounds.")), 1);
+    auto* editHint = new QLabel(tr("Double-click a value to edit it; it is checked against its bounds."));
+    editHint->setWordWrap(true); // on one line it held the window 1,034 px wide at the least
+    ub->addWidget(editHint, 1);
     ub->addWidget(undo);
     ub->addWidget(redo);
     ll->addLayout(ub);
