@@ -1136,7 +1136,7 @@
     </message>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="63"/>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="189"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="197"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
@@ -1225,82 +1225,86 @@
         <translation>自由参数及其搜索范围：</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="98"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="101"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="118"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="126"/>
         <source>best loss so far</source>
         <translation>迄今最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="137"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="145"/>
         <source>Run Calibrate to see the loss fall and the parameters settle</source>
         <translation>运行标定，可看到损失下降、参数收敛</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="142"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="150"/>
         <source>The parameters&apos; paths are drawn when the calibration ends</source>
         <translation>标定结束后绘出各参数的变化轨迹</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="143"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="151"/>
         <source>Run Calibrate to see the fit before and after</source>
         <translation>运行标定，可看到标定前后的拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="185"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="193"/>
         <source>Cannot calibrate: %1</source>
         <translation>无法标定：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="195"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="203"/>
         <source>Calibrating…</source>
         <translation>正在标定…</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="220"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="228"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="220"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="228"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="225"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="233"/>
         <source>On %1: </source>
         <translation>数据 %1：</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="226"/>
-        <source>%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. Intervals: %10.</source>
-        <translation>%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口 MAE %6 → %7 % 湿基，%8 → %9 °C。区间：%10。</translation>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="234"/>
+        <source>%1 after %2 evaluations (%3 s). Loss %4 → %5; MAE of the outlet moisture %6 → %7 % wb, of the outlet temperature %8 → %9 °C. Intervals: %10.</source>
+        <translation>%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口水分 MAE %6 → %7 % 湿基，出口温度 MAE %8 → %9 °C。区间：%10。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="251"/>
+        <source>%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. Intervals: %10.</source>
+        <translation type="vanished">%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口 MAE %6 → %7 % 湿基，%8 → %9 °C。区间：%10。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="260"/>
         <source>loss evaluations [-]</source>
         <translation>损失评估次数 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="252"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="261"/>
         <source>best loss</source>
         <translation>最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="286"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="295"/>
         <source>measured %1</source>
         <translation>实测 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="289"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="298"/>
         <source>before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="292"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="301"/>
         <source>after</source>
         <translation>之后</translation>
     </message>
@@ -1539,68 +1543,68 @@
         <translation>批次（多选可叠加；可将文件拖放到此处）：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="75"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="76"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="75"/>
-        <location filename="../widgets/data/DataPanel.cpp" line="88"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="76"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="89"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="81"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="82"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="88"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="89"/>
         <source>A batch file with your column names</source>
         <translation>一个使用您的列名的批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="97"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="98"/>
         <source>Open a data set: File ▸ Open data set folder…, or File ▸ Open the bundled demo</source>
         <translation>请打开数据集：文件 ▸ 打开数据集文件夹…，或 文件 ▸ 打开自带演示数据</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="118"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="119"/>
         <source>Save the column mapping</source>
         <translation>保存列映射</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="119"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="120"/>
         <source>Mappings (*.json)</source>
         <translation>映射 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="130"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="131"/>
         <source>The column mapping could not be saved (%1); the data were not loaded.</source>
         <translation>列映射无法保存（%1）；数据未载入。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="136"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="137"/>
         <source>The column mapping is kept at %1 and in the project when you save it; “Map its columns…” changes it.</source>
         <translation>列映射已保存在 %1，保存项目时也会一并保存；可用“映射其列…”修改。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="186"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="187"/>
         <source>%1, lines %2–%3, from %4, ended by %5</source>
         <translation>%1，第 %2–%3 行，始于 %4，结束原因：%5</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="214"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="215"/>
         <source>Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.</source>
         <translation>清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="229"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="230"/>
         <source>A transmitter hung (the same reading for a minute or more) on %1 rows: left out, an input bridged like a dropout.</source>
         <translation>有变送器卡死（同一读数持续一分钟以上），涉及 %1 行：这些行不参与拟合，输入按断线同样桥接。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="234"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="235"/>
         <source>Noted while reading (%1):</source>
         <translation>读取时的提示（%1）：</translation>
     </message>
@@ -1614,7 +1618,7 @@
     </message>
     <message>
         <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="28"/>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="114"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="116"/>
         <source>Evaluate a trained model to see its residuals.</source>
         <translation>评估已训练的模型以查看其残差。</translation>
     </message>
@@ -1644,72 +1648,72 @@
         <translation>显示的模型（勾选以叠加）：</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="44"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="46"/>
         <source>error [% wb]</source>
         <translation>误差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="61"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="64"/>
         <source>Physics model&apos;s error against</source>
         <translation>机理模型误差相对于</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="66"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="68"/>
         <source>CCF [-]</source>
         <translation>互相关 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="67"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="69"/>
         <source>lag of the input [s] (run Discover)</source>
         <translation>输入的滞后 [s]（请运行发现）</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="97"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="99"/>
         <source>Learn the correction models (Residual model tab) to see the residuals&apos; autocorrelation</source>
         <translation>学习修正模型（残差模型页）后可看到残差的自相关</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="98"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="100"/>
         <source>… and their spectrum</source>
         <translation>……及其频谱</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="99"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="101"/>
         <source>Open data to see where in the operating range the physics model errs</source>
         <translation>打开数据，可看到物理模型在工况范围内何处出错</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="100"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="102"/>
         <source>Run Discover to see what the error moves with</source>
         <translation>运行发现，可看到误差随什么变化</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="132"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="134"/>
         <source>%1: Ljung-Box p %2, residual mean %3 % wb</source>
         <translation>%1：Ljung-Box p = %2，残差均值 %3 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="138"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="140"/>
         <source>Ljung-Box p: the chance that errors this patterned come from pure noise; below 0.05 a pattern is left that a model could still learn.</source>
         <translation>Ljung-Box p：如此有规律的误差来自纯噪声的概率；低于 0.05 说明还剩有模型可以学习的规律。</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="171"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="173"/>
         <source>%1 (%2 % below 0.01 Hz)</source>
         <translation>%1（%2 % 低于 0.01 Hz）</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="177"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="179"/>
         <source>95 % band of white noise</source>
         <translation>白噪声 95 % 置信带</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="218"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="220"/>
         <source>every 10th kept row</source>
         <translation>保留行中每隔 10 行</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="246"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="248"/>
         <source>lag of the input [s]</source>
         <translation>输入的滞后 [s]</translation>
     </message>
@@ -3388,43 +3392,43 @@
         <translation>双击数值进行编辑；将按其上下限检查。</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="101"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="103"/>
         <source>Batch:</source>
         <translation>批次：</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="105"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="107"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="106"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="108"/>
         <source>T_out [°C]</source>
         <translation>T_out [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="107"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="109"/>
         <source>X_HDT [% wb]</source>
         <translation>X_HDT [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="108"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="110"/>
         <source>T_HDT [°C]</source>
         <translation>T_HDT [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="145"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="147"/>
         <source>%1 must lie in [%2, %3] %4; it stays %5.</source>
         <translation>%1 必须在 [%2, %3] %4 之内；保持为 %5。</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="206"/>
-        <location filename="../widgets/model/ModelPanel.cpp" line="214"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="208"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="216"/>
         <source>measured</source>
         <translation>实测</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ModelPanel.cpp" line="226"/>
+        <location filename="../widgets/model/ModelPanel.cpp" line="228"/>
         <source>physics model</source>
         <translation>机理模型</translation>
     </message>
@@ -3480,9 +3484,8 @@
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
         <source>IAE [%·s]</source>
-        <translation>IAE [%·s]</translation>
+        <translation type="vanished">IAE [%·s]</translation>
     </message>
     <message>
         <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
@@ -3493,6 +3496,11 @@
         <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
         <source>Violations [%]</source>
         <translation>越限 [%]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
+        <source>IAE [% wb·s]</source>
+        <translation>IAE [% 湿基·s]</translation>
     </message>
     <message>
         <location filename="../widgets/mpc/MpcPanel.cpp" line="68"/>
@@ -3810,7 +3818,7 @@ The results below are from the last complete run.</source>
 <context>
     <name>drytwin::widgets::ResidualPanel</name>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="30"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="31"/>
         <source>chosen by validation (16, 32, 60)</source>
         <translation>由验证选择（16、32、60）</translation>
     </message>
@@ -3835,22 +3843,22 @@ The results below are from the last complete run.</source>
         <translation>残差滞后阶数</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="51"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="52"/>
         <source>stability</source>
         <translation>稳定性</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="55"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="56"/>
         <source>Trains on the chronological 70 % and evaluates on the rest; settings are chosen inside the training part.</source>
         <translation>按时间顺序用前 70 % 训练，其余部分评估；设置在训练部分内选定。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="58"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="59"/>
         <source>Run a What-if MPC scenario to compare each model&apos;s steady gain of X_out to the hot air with the plant&apos;s.</source>
         <translation>运行一次假设 MPC 情景，即可将各模型 X_out 对热风的稳态增益与装置的增益比较。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="61"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="62"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
@@ -3875,12 +3883,12 @@ The results below are from the last complete run.</source>
         <translation>30 步预报技巧</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="73"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="74"/>
         <source>imaginary part</source>
         <translation>虚部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="74"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="75"/>
         <source>real part</source>
         <translation>实部</translation>
     </message>
@@ -3889,23 +3897,23 @@ The results below are from the last complete run.</source>
         <translation>预报技巧：MAE 与较优参考之比 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="79"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="80"/>
         <source>forecast horizon [steps of 1 s]</source>
         <translation>预测步长 [1 s 步]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="82"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="83"/>
         <location filename="../widgets/residual/ResidualPanel.cpp" line="115"/>
         <source>Ablation (paper Table 3)</source>
         <translation>消融实验（论文表 3）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="83"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="84"/>
         <source>Train and evaluate every variant of Table 3 on this model (a few minutes)</source>
         <translation>在此模型上训练并评估表 3 的每个变体（需几分钟）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="85"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="86"/>
         <source>Variant</source>
         <translation>变体</translation>
     </message>
@@ -3914,137 +3922,137 @@ The results below are from the last complete run.</source>
         <translation>MAE X_out（外推）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="33"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="34"/>
         <source>guaranteed stable (fit under a stability certificate)</source>
         <translation>保证稳定（在稳定性证书约束下拟合）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="34"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="35"/>
         <source>stabilised after the fit (eigenvalues pulled in)</source>
         <translation>拟合后再稳定化（特征值拉回）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="35"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="36"/>
         <source>Paper Eq. 30: the correction model&apos;s state matrix A is fitted under the constraint α²P − AᵀPA ≻ 0 with a certificate P; the alternative pulls A&apos;s eigenvalues inside the unit circle after an unconstrained fit.</source>
         <translation>论文公式 30：修正模型的状态矩阵 A 在约束 α²P − AᵀPA ≻ 0（证书 P）下拟合；另一种做法是先无约束拟合，再把 A 的特征值拉回单位圆内。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="38"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="39"/>
         <source>keep the correction out of the hot-air direction</source>
         <translation>修正不进入热风方向</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="39"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="40"/>
         <source>Paper Eq. 27: the orthogonal projection P⊥ removes from the correction what the manipulated input explains, so that the control gain stays the physics model&apos;s.</source>
         <translation>论文公式 27：正交投影 P⊥ 从修正中去掉操纵输入所能解释的部分，使控制增益保持为物理模型的增益。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="43"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="44"/>
         <source>Learn the correction models</source>
         <translation>学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="44"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
         <source>Trains PGRL-CC (paper Eqs. 20–30) on the chronological 70 % of the data, and the two models it is compared with: the input-only correction and an LSTM</source>
         <translation>在按时间顺序的前 70 % 数据上训练 PGRL-CC（论文公式 20–30）及两个对比模型：仅输入修正和 LSTM</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="48"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="49"/>
         <source>How many past seconds of the error the correction model sees (paper: residual lags)</source>
         <translation>修正模型能看到的过去误差秒数（论文：残差滞后阶数）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="50"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="51"/>
         <source>memory of the error [s]</source>
         <translation>误差记忆 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="61"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="85"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="62"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="86"/>
         <source>MAE X_out
 [% wb]</source>
         <translation>MAE X_out
 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="61"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="85"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="62"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="86"/>
         <source>R² X_out
 [-]</source>
         <translation>R² X_out
 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="62"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="86"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="63"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="87"/>
         <source>MAE T_out
 [°C]</source>
         <translation>MAE T_out
 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="62"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="63"/>
         <source>skill
 1 step</source>
         <translation>预报技巧
 1 步</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="62"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="63"/>
         <source>skill
 30 steps</source>
         <translation>预报技巧
 30 步</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="64"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="65"/>
         <source>Mean absolute error of the outlet moisture on the held-out part.</source>
         <translation>留出部分上出口含水率的平均绝对误差。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="65"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="66"/>
         <source>R²: the share of the outlet moisture&apos;s variation the model explains (1: all; below 0: worse than the mean).</source>
         <translation>R²：模型解释的出口含水率变化所占比例（1：全部；低于 0：不如均值）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="67"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="68"/>
         <source>Mean absolute error of the outlet temperature on the held-out part.</source>
         <translation>留出部分上出口温度的平均绝对误差。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="68"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="69"/>
         <source>Skill one second ahead: the model&apos;s error over the better of two simple forecasts; below 1 it beats both.</source>
         <translation>提前 1 秒的预报技巧：模型误差除以两个简单预测中较好者的误差；小于 1 即优于二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="70"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="71"/>
         <source>Skill 30 seconds ahead, alike.</source>
         <translation>提前 30 秒的预报技巧，含义相同。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="76"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="77"/>
         <source>skill [-]</source>
         <translation>预报技巧 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="77"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="78"/>
         <source>Skill: a model&apos;s MAE over the better of the two reference forecasts at that horizon; below 1 it beats both</source>
         <translation>预报技巧：模型在该步长上的 MAE 除以两个参考预测中较好者的 MAE；小于 1 即优于二者</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="86"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="87"/>
         <source>MAE X_out,
 extrapolation</source>
         <translation>MAE X_out，
 外推</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="87"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="88"/>
         <source>Learn the correction models to see the eigenvalues of their state matrix</source>
         <translation>学习修正模型后可看到其状态矩阵的特征值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="88"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="89"/>
         <source>Learn the correction models to see their skill by forecast horizon</source>
         <translation>学习修正模型后可看到其随预测步长的预报技巧</translation>
     </message>
@@ -5158,7 +5166,7 @@ extrapolation</source>
         <translation>已学习修正模型（PGRL-CC）和两个对比模型</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="154"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="162"/>
         <location filename="../widgets/common/Workbench.cpp" line="507"/>
         <source>Calibrate</source>
         <translation>标定</translation>

@@ -71,8 +71,8 @@ ZH = {
     " evaluations": " 次评估",
     "% wb": "% 湿基",
     "%1 (%2 % below 0.01 Hz)": "%1（%2 % 低于 0.01 Hz）",
-    "%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. Intervals: %10.":
-        "%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口 MAE %6 → %7 % 湿基，%8 → %9 °C。区间：%10。",
+    "%1 after %2 evaluations (%3 s). Loss %4 → %5; MAE of the outlet moisture %6 → %7 % wb, of the outlet temperature %8 → %9 °C. Intervals: %10.":
+        "%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口水分 MAE %6 → %7 % 湿基，出口温度 MAE %8 → %9 °C。区间：%10。",
     "%1 failed: %2": "%1 失败：%2",
     "%1 is not a DryTwin project (%2)": "%1 不是 DryTwin 项目（%2）",
     "%1 is queued behind the running job": "%1 已排队，等待当前任务完成",
@@ -164,7 +164,7 @@ ZH = {
     "Held-out": "留出数据",
     "Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).":
         "留出部分：%1 行。预报技巧低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。",
-    "IAE [%·s]": "IAE [%·s]",
+    "IAE [% wb·s]": "IAE [% 湿基·s]",
     "Kept": "保留",
     "Length [min]": "时长 [min]",
     "Load %1": "加载 %1",

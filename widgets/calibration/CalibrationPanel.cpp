@@ -231,7 +231,8 @@ void CalibrationPanel::showResult() {
     }
     fitTableWidth(m_estimates);
     m_fit->setText(tr("On %1: ").arg(m_workbench.dataSetLabel()) +
-                   tr("%1 after %2 evaluations (%3 s). Loss %4 → %5; outlet MAE %6 → %7 % wb, %8 → %9 °C. "
+                   tr("%1 after %2 evaluations (%3 s). Loss %4 → %5; MAE of the outlet moisture %6 → %7 % wb, of the "
+                      "outlet temperature %8 → %9 °C. "
                       "Intervals: %10.")
                        .arg(terminationText(r->ending.termination))
                        .arg(c.evaluations)

@@ -67,7 +67,7 @@ void fitTableWidth(QTableWidget* table, int maxWidth = kMaxFittedTableWidth);
 /// neighbours rather than the table: the What-if tab showed 3½ of its five controllers at 1280 × 800.
 void fitTableHeight(QTableWidget* table, int rows);
 /// @brief Plain-words tooltips on the column headers of @p table, in column order (an empty one:
-/// none), for headers that name a statistic or a method ("Score z", "IAE [%·s]").
+/// none), for headers that name a statistic or a method ("Score z", "IAE [% wb·s]").
 void setHeaderToolTips(QTableWidget* table, const QStringList& tips);
 /// @brief Fills row @p row of @p table with read-only text cells (the row must exist).
 void setTableRow(QTableWidget* table, int row, const QStringList& cells);

@@ -64,7 +64,7 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     m_prediction->setToolTip(tr("Show the horizon the controllers predicted at this decision"));
     m_note = new QLabel(tr("Runs the scenario against the virtual plant once per controller."));
     m_note->setWordWrap(true);
-    m_table = makeResultTable({tr("Controller"), tr("IAE [%·s]"), tr("Effort [K²]"), tr("Violations [%]"),
+    m_table = makeResultTable({tr("Controller"), tr("IAE [% wb·s]"), tr("Effort [K²]"), tr("Violations [%]"),
                                tr("Solve median [ms]"), tr("Fallbacks"), tr("Model gain [%/K]")});
     setHeaderToolTips(
         m_table,

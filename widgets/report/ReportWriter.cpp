@@ -370,7 +370,7 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
               "kept the previous plan (the model saw no effect of the hot air, or the solve failed).</p>"
               "") +
           tableHead({{QStringLiteral("controller"), 25},
-                     {QStringLiteral("IAE [%·s]"), 10},
+                     {QStringLiteral("IAE [% wb·s]"), 10},
                      {QStringLiteral("effort [K²]"), 11},
                      {QStringLiteral("violations [%]"), 16},
                      {QStringLiteral("solve median [ms]"), 12},
