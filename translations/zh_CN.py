@@ -8,6 +8,7 @@ import re
 import sys
 
 ZH = {
+    "Held-out accuracy: nothing was named, so nothing was extended (before = after):": "留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：",
     "Held-out accuracy": "留出集精度",
     "compensation": "相互补偿",
     "inconsistent": "各批次不一致",

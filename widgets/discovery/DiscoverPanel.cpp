@@ -122,7 +122,9 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
     ll->addWidget(m_verdict);
     ll->addWidget(new QLabel(tr("Candidate causes, first round:")));
     ll->addWidget(m_ranking, 1);
-    ll->addWidget(new QLabel(tr("Gain on the held-out part:")));
+    m_gainsLabel = new QLabel(tr("Gain on the held-out part:"));
+    m_gainsLabel->setWordWrap(true);
+    ll->addWidget(m_gainsLabel);
     ll->addWidget(m_gains, 1);
     auto* right = new QSplitter(Qt::Vertical);
     right->addWidget(m_evidence);
@@ -705,6 +707,7 @@ void DiscoverPanel::show() {
         m_extend->setEnabled(false);
         m_ranking->setRowCount(0);
         m_gains->setRowCount(0);
+        m_gainsLabel->setText(tr("Gain on the held-out part:"));
         m_evidence->clear();
         m_plots->clearCurves();
         m_plots->rescale();
@@ -892,6 +895,11 @@ void DiscoverPanel::show() {
     }
     m_evidence->setHtml(html.isEmpty() ? tr("<p>No structure that a mechanism explains.</p>") : html);
     m_gains->setRowCount(0);
+    // Before and after the same numbers with no word said why: nothing named, nothing extended.
+    m_gainsLabel->setText(
+        d.findings.empty()
+            ? tr("Held-out accuracy: nothing was named, so nothing was extended (before = after):")
+            : tr("Gain on the held-out part:"));
     const auto row = [&](const QString& what, double before, double after, const QString& unit) {
         const int r2 = m_gains->rowCount();
         m_gains->insertRow(r2);

@@ -54,6 +54,7 @@ private:
     QLabel* m_verdict = nullptr;
     QTableWidget* m_ranking = nullptr;
     QTableWidget* m_gains = nullptr;
+    QLabel* m_gainsLabel = nullptr; ///< says when nothing was extended (before = after)
     QTextBrowser* m_evidence = nullptr;
     QPushButton* m_extend = nullptr;
     PlotStack* m_plots = nullptr;
