@@ -182,7 +182,9 @@ int runDiscover(const CommandOptions& o) {
         }
     }
     if (!d.bounds.empty()) {
-        std::printf("\nNot named; what the data allow (one step from 0 at the final model, 95 %%):\n");
+        std::printf(
+            "\nNot named; what the data allow (one step from 0 at the final model, 95 %%, held within "
+            "each parameter's range):\n");
         for (const auto& b : d.bounds) {
             const auto& info = properties::info(b.parameter);
             std::printf("  %-24s %-15s %10.4g  [%.3g, %.3g] %s\n", b.cause.c_str(),

@@ -259,7 +259,10 @@ std::vector<Bound> boundsOf(const std::vector<Candidate>& tested) {
         Bound b;
         b.cause = c.cause;
         b.parameter = c.parameter;
-        b.estimate = c.linearEstimate;
+        // Held within the parameter's range like its interval: an estimate of -0.48 beside an
+        // interval [0, 0] (a re-absorption rate below 0, which no line has) read as a contradiction;
+        // at the bound it says the data point away from the cause.
+        b.estimate = std::clamp(c.linearEstimate, info.lower, info.upper);
         b.ci95Low = std::clamp(c.linearEstimate - 1.96 * c.linearSe, info.lower, info.upper);
         b.ci95High = std::clamp(c.linearEstimate + 1.96 * c.linearSe, info.lower, info.upper);
         out.push_back(b);

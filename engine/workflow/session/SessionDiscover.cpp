@@ -34,7 +34,9 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
         }
     }
     if (!found) {
-        return found.error();
+        // A stop inside discovery's own calibrations is the discovery's ("discover: cancelled"),
+        // not a calibration the user did not start.
+        return found.error().kind == ErrorKind::Cancelled ? cancelledError("discover") : found.error();
     }
     DiscoverResult result;
     result.extendedModel = m_model;
