@@ -4,6 +4,7 @@
 #include "data/BatchWriter.h"
 
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 namespace drytwin::io {
@@ -277,7 +278,19 @@ std::string simulationCsv(const std::vector<data::SiBatch>& batches,
     for (const auto& n : physics::proxyNames()) {
         out += ",proxy_" + n;
     }
-    out += "\n";
+    // The measured outputs last (CONTRACT.md §2 fixes the columns before them), so that the file
+    // compares prediction and measurement without the batch files beside it; empty where not measured.
+    out += ",X_out_pct,T_out_C,X_hdt_pct,T_hdt_C\n";
+    // Ten significant digits: the inputs come back from SI units, and the shortest round-trip form
+    // wrote 25.4 °C as 25.399999999999977; ten digits are far beyond any transmitter's.
+    const auto number = [](double x) {
+        if (std::isnan(x)) {
+            return std::string();
+        }
+        char text[32];
+        std::snprintf(text, sizeof text, "%.10g", x);
+        return std::string(text);
+    };
     for (std::size_t b = 0; b < batches.size() && b < simulations.size(); ++b) {
         const auto& s = batches[b];
         const auto& r = simulations[b];
@@ -300,11 +313,15 @@ std::string simulationCsv(const std::vector<data::SiBatch>& batches,
                                 r.proxyXConvDb[k],
                                 r.proxyTConvK[k],
                                 r.proxyXMixDb[k],
-                                r.proxyTMixK[k]};
+                                r.proxyTMixK[k],
+                                dryToWetPct(s.xOutDb[k]),
+                                kelvinToCelsius(s.tOutK[k]),
+                                dryToWetPct(s.xHdtDb[k]),
+                                kelvinToCelsius(s.tHdtK[k])};
             out += s.id;
             for (double x : v) {
                 out += ",";
-                out += data::formatNumber(x);
+                out += number(x);
             }
             out += "\n";
         }

@@ -330,6 +330,25 @@ private Q_SLOTS:
             QVERIFY(std::isfinite(f.maeXOutPct) && f.maeXOutPct > 0 && f.maeXOutPct < 5);
         }
         QVERIFY(s.latest().simulate.has_value());
+        // The CSV `simulate` writes: predictions beside the measured outputs (last columns), the
+        // inputs without the float noise of their round trip through SI units.
+        {
+            const std::string csv = io::simulationCsv(s.siBatches(), sim->simulations);
+            const std::string header = csv.substr(0, csv.find('\n'));
+            const std::string measured = ",X_out_pct,T_out_C,X_hdt_pct,T_hdt_C";
+            QVERIFY2(header.size() > measured.size() &&
+                         header.compare(header.size() - measured.size(), measured.size(), measured) == 0,
+                     header.c_str());
+            const std::string firstRow =
+                csv.substr(header.size() + 1, csv.find('\n', header.size() + 1) - header.size() - 1);
+            QVERIFY2(firstRow.find("99999") == std::string::npos &&
+                         firstRow.find("00000") == std::string::npos,
+                     firstRow.c_str());
+            const double measuredXOut = units::dryToWetPct(s.siBatches().front().xOutDb.front());
+            char expected[32];
+            std::snprintf(expected, sizeof expected, ",%.10g,", measuredXOut);
+            QVERIFY2(firstRow.find(expected) != std::string::npos, firstRow.c_str());
+        }
 
         const double hBefore = s.model().parameters[Param::h_HDT];
         auto cal = s.calibrate(quickCalibration());
