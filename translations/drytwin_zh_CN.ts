@@ -1612,108 +1612,112 @@
 <context>
     <name>drytwin::widgets::DiagnosticsPanel</name>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="27"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="28"/>
         <source>Evaluate</source>
         <translation>评估</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="28"/>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="116"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="29"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="117"/>
         <source>Evaluate a trained model to see its residuals.</source>
         <translation>评估已训练的模型以查看其残差。</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="31"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="32"/>
         <source>ACF [-]</source>
         <translation>自相关 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="32"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="33"/>
         <source>lag [s]</source>
         <translation>滞后 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="34"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="35"/>
         <source>PSD [(% wb)²/Hz]</source>
         <translation>功率谱密度 [(% 湿基)²/Hz]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="35"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="36"/>
         <source>frequency [Hz]</source>
         <translation>频率 [Hz]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="40"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="41"/>
         <source>Models shown (tick to overlay):</source>
         <translation>显示的模型（勾选以叠加）：</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="46"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="47"/>
         <source>error [% wb]</source>
         <translation>误差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="64"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="65"/>
         <source>Physics model&apos;s error against</source>
         <translation>机理模型误差相对于</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="68"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="69"/>
         <source>CCF [-]</source>
         <translation>互相关 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="69"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="70"/>
         <source>lag of the input [s] (run Discover)</source>
         <translation>输入的滞后 [s]（请运行发现）</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="99"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="100"/>
         <source>Learn the correction models (Residual model tab) to see the residuals&apos; autocorrelation</source>
         <translation>学习修正模型（残差模型页）后可看到残差的自相关</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="100"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="101"/>
         <source>… and their spectrum</source>
         <translation>……及其频谱</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="101"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="102"/>
         <source>Open data to see where in the operating range the physics model errs</source>
         <translation>打开数据，可看到物理模型在工况范围内何处出错</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="102"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="103"/>
         <source>Run Discover to see what the error moves with</source>
         <translation>运行发现，可看到误差随什么变化</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="134"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="135"/>
         <source>%1: Ljung-Box p %2, residual mean %3 % wb</source>
         <translation>%1：Ljung-Box p = %2，残差均值 %3 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="140"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="143"/>
         <source>Ljung-Box p: the chance that errors this patterned come from pure noise; below 0.05 a pattern is left that a model could still learn.</source>
         <translation>Ljung-Box p：如此有规律的误差来自纯噪声的概率；低于 0.05 说明还剩有模型可以学习的规律。</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="173"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="176"/>
         <source>%1 (%2 % below 0.01 Hz)</source>
         <translation>%1（%2 % 低于 0.01 Hz）</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="179"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="182"/>
         <source>95 % band of white noise</source>
         <translation>白噪声 95 % 置信带</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="220"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="223"/>
         <source>every 10th kept row</source>
         <translation>保留行中每隔 10 行</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="248"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="263"/>
+        <source>lag of the input [s]; the outlet-moisture error&apos;s correlation with each input</source>
+        <translation>输入的滞后 [s]；出口水分误差与各输入的相关系数</translation>
+    </message>
+    <message>
         <source>lag of the input [s]</source>
         <translation>输入的滞后 [s]</translation>
     </message>
@@ -1947,7 +1951,7 @@
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="125"/>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="710"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="901"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="902"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -2493,14 +2497,14 @@
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="910"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="911"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="638"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="911"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="937"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="912"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="938"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
@@ -2510,14 +2514,14 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="912"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="913"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="638"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="913"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="941"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="914"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="942"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2599,57 +2603,57 @@
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="900"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="901"/>
         <source>Held-out accuracy: nothing was named, so nothing was extended (before = after):</source>
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="914"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="915"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="923"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="924"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="936"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="937"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="936"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="937"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="937"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="938"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="940"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="941"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="940"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="941"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="941"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="942"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="965"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="966"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="966"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="967"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>

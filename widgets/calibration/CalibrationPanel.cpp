@@ -123,7 +123,8 @@ CalibrationPanel::CalibrationPanel(Workbench& workbench, QWidget* parent)
         m_lossX << fraction;
         m_lossY << loss;
         m_loss->clearCurves();
-        m_loss->addCurve(0, tr("best loss so far"), m_lossX, m_lossY, QColor(214, 39, 40));
+        // Black: the parameters' traces below take the series colours, red among them.
+        m_loss->addCurve(0, tr("best loss so far"), m_lossX, m_lossY, Qt::black);
         m_loss->rescale();
     });
     connect(&m_workbench, &Workbench::calibrated, this, [this] {
@@ -258,7 +259,7 @@ void CalibrationPanel::showResult() {
     if (!x.isEmpty()) {
         m_loss->clearCurves();
         m_loss->setXTitle(tr("loss evaluations [-]"));
-        m_loss->addCurve(0, tr("best loss"), x, y, QColor(214, 39, 40));
+        m_loss->addCurve(0, tr("best loss"), x, y, Qt::black);
         for (std::size_t i = 0; i < traces.size(); ++i) {
             if (traces[i].size() == x.size()) {
                 m_loss->addDots(1, fromView(properties::info(c.estimates[i].param).symbol), x, traces[i],

@@ -15,6 +15,7 @@
 #include <QSplitter>
 #include <QVBoxLayout>
 #include <cmath>
+#include <map>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
 
@@ -133,7 +134,9 @@ void DiagnosticsPanel::fill() {
         }
         lines << tr("%1: Ljung-Box p %2, residual mean %3 % wb")
                      .arg(modelDisplayName(m.name))
-                     .arg(m.moisture.ljungBoxP, 0, 'g', 3)
+                     // A p below what a double resolves prints as 0, which reads as "exactly zero".
+                     .arg(m.moisture.ljungBoxP < 1e-15 ? QStringLiteral("< 1e-15")
+                                                       : QString::number(m.moisture.ljungBoxP, 'g', 3))
                      .arg(mean, 0, 'f', 4);
     }
     // The test by name, with what its p says in plain words on the line beside it.
@@ -234,19 +237,6 @@ void DiagnosticsPanel::redrawCrossCorrelation() {
     if (!d) {
         return;
     }
-    int i = 0;
-    for (const auto& o : d->discovery.residuals) {
-        if (o.output != "X_out") {
-            continue;
-        }
-        for (const auto& c : o.correlates) {
-            auto* curve = m_ccf->addCurve(0, columnDisplayName(c.column), {c.lagS, c.lagS}, {0.0, c.ccf},
-                                          seriesColour(i++), Qt::SolidLine, 4.0);
-            curve->setStyle(QwtPlotCurve::Lines);
-        }
-    }
-    m_ccf->setXTitle(tr("lag of the input [s]"));
-    m_ccf->rescale();
     // Lags are 0–300 s: from 0, and wide enough to read when every correlate sits at one lag.
     double longest = 0;
     for (const auto& o : d->discovery.residuals) {
@@ -254,7 +244,25 @@ void DiagnosticsPanel::redrawCrossCorrelation() {
             longest = o.output == "X_out" ? std::max(longest, c.lagS) : longest;
         }
     }
-    m_ccf->setXRange(-5, std::max(60.0, 1.1 * longest));
+    const double xMax = std::max(60.0, 1.1 * longest);
+    // Bars at the same lag side by side, not one hidden behind the other (a model's tube-outlet
+    // moisture and its moisture on the conveyor both at 0 s): each nudged by a bar's width.
+    std::map<double, int> atLag;
+    int i = 0;
+    for (const auto& o : d->discovery.residuals) {
+        if (o.output != "X_out") {
+            continue;
+        }
+        for (const auto& c : o.correlates) {
+            const double x = c.lagS + 0.012 * (xMax + 5) * atLag[c.lagS]++;
+            auto* curve = m_ccf->addCurve(0, columnDisplayName(c.column), {x, x}, {0.0, c.ccf},
+                                          seriesColour(i++), Qt::SolidLine, 4.0);
+            curve->setStyle(QwtPlotCurve::Lines);
+        }
+    }
+    m_ccf->setXTitle(tr("lag of the input [s]; the outlet-moisture error's correlation with each input"));
+    m_ccf->rescale();
+    m_ccf->setXRange(-5, xMax);
 }
 
 } // namespace drytwin::widgets
