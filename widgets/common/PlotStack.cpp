@@ -17,6 +17,7 @@
 #include <QResizeEvent>
 #include <QSaveFile>
 #include <QSvgGenerator>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -188,6 +189,17 @@ int PlotStack::addPlot(const QString& yTitle) {
     panner->setMouseButton(Qt::MiddleButton);
     connect(plot->axisWidget(QwtPlot::xBottom), &QwtScaleWidget::scaleDivChanged, this,
             [this, plot] { linkXFrom(plot); });
+    // A y scale set by hand (the Training tab's live plots), not through rescale(): the axes are
+    // lined up again once the event loop is back, once however many scales changed.
+    connect(plot->axisWidget(QwtPlot::yLeft), &QwtScaleWidget::scaleDivChanged, this, [this] {
+        if (!m_alignQueued) {
+            m_alignQueued = true;
+            QTimer::singleShot(0, this, [this] {
+                m_alignQueued = false;
+                alignAxes();
+            });
+        }
+    });
     plot->canvas()->installEventFilter(this); // after the zoomer: modifier clicks come here first
     m_timeMarkers.push_back(verticalLine(plot, QColor(230, 120, 0), Qt::SolidLine));
     m_cursorMarkers[0].push_back(verticalLine(plot, QColor(40, 40, 40), Qt::DashLine));

@@ -111,6 +111,7 @@ private:
     double m_cursor[2];
     double m_timeCursor;
     bool m_linking = false;
+    bool m_alignQueued = false; ///< alignAxes() is due once the event loop is back
     bool m_hintVisible = true;
     QString m_emptyText;
     std::vector<QwtPlotTextLabel*> m_emptyLabels;
