@@ -169,8 +169,17 @@ void LineView3D::buildScene() {
     m_bar = vtkSmartPointer<vtkScalarBarActor>::New();
     m_bar->SetLookupTable(m_lut);
     m_bar->SetNumberOfLabels(4);
-    m_bar->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
-    m_bar->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+    // Plain text at the window's sizes: VTK's default is bold italic with a shadow, scaled with the
+    // bar, which made the values far larger than the title above them.
+    m_bar->UnconstrainedFontSizeOn();
+    for (vtkTextProperty* text : {m_bar->GetTitleTextProperty(), m_bar->GetLabelTextProperty()}) {
+        text->SetColor(0.1, 0.1, 0.1);
+        text->BoldOff();
+        text->ItalicOff();
+        text->ShadowOff();
+    }
+    m_bar->GetTitleTextProperty()->SetFontSize(14);
+    m_bar->GetLabelTextProperty()->SetFontSize(13);
     m_bar->SetWidth(0.08);
     m_bar->SetHeight(0.6);
     m_bar->SetPosition(0.02, 0.2); // left, clear of the line
