@@ -59,7 +59,26 @@ std::vector<CleaningReport::StuckSpan> frozenReadings(const DataSet& data, const
                 }
             }
         }
-        if (lengths.size() < 20) { // too few changes to say what is usual for this column
+        if (lengths.size() < 20) {
+            // Too few changes to say what is usual for this column. An outlet or tube-outlet
+            // transmitter of a running line is never that still: one that holds its value for ten
+            // minutes or more (a whole file of 12.0, a fresh user's test, calibrated with exit 0)
+            // is dead or filled in. Ambient and input columns may legitimately hold a coarse value.
+            if (cs.role != ColumnRole::Output) {
+                continue;
+            }
+            for (std::size_t bi = 0; bi < data.batches.size(); ++bi) {
+                const auto* v = data.batches[bi].values(cs.id);
+                const auto* t = data.batches[bi].values(Column::Time);
+                for (const auto& [from, to] : runs[bi]) {
+                    const double seconds = t && std::isfinite((*t)[to - 1]) && std::isfinite((*t)[from])
+                                               ? (*t)[to - 1] - (*t)[from]
+                                               : static_cast<double>(to - from) - 1;
+                    if (seconds >= std::max(600.0, o.stuckMinS)) {
+                        spans.push_back({bi, cs.id, from, to, (*v)[from], seconds});
+                    }
+                }
+            }
             continue;
         }
         const auto at = lengths.begin() + static_cast<std::ptrdiff_t>(0.99 * double(lengths.size() - 1));

@@ -148,6 +148,28 @@ private Q_SLOTS:
                  refused.error().message().c_str());
     }
 
+    // An outlet transmitter that never moves over ten minutes or more is frozen, even where the
+    // column has too few changes to say what is usual for it; five minutes of it are not.
+    void anOutletThatNeverMovesIsFrozen() {
+        for (const int rows : {700, 300}) {
+            QTemporaryDir dir;
+            writeText(dir.filePath("B07.csv"), goodFile(rows)); // every column constant
+            const auto loaded = loadDataSet(dir.path().toStdString());
+            QVERIFY(loaded.ok());
+            const auto report = clean(loaded.dataSet, CleaningOptions{});
+            const bool outletFrozen =
+                std::any_of(report.stuck.begin(), report.stuck.end(), [](const CleaningReport::StuckSpan& s) {
+                    return s.column == Column::XOut && s.seconds >= 600;
+                });
+            QCOMPARE(outletFrozen, rows == 700);
+            // Inputs and ambient columns may hold a coarse value: never flagged by this rule.
+            QVERIFY(std::none_of(report.stuck.begin(), report.stuck.end(),
+                                 [](const CleaningReport::StuckSpan& s) {
+                                     return spec(s.column).role != ColumnRole::Output;
+                                 }));
+        }
+    }
+
     void missingCellsReportedNotZeroFilled() {
         std::string s = std::string(kHeader) + "\n" + row(0) + "\n" +
                         "1,170,169.5,16,6200,22,25,24,55,14,58,,55.2\n" +
