@@ -4,6 +4,7 @@
 #include "data/Columns.h"
 #include "data/historian/PlaceInFile.h"
 #include "data/historian/TimeStamps.h"
+#include "data/historian/ValueColumns.h"
 
 #include <algorithm>
 #include <cctype>
@@ -361,7 +362,13 @@ Expected<ColumnMapping> readColumnMappingText(const std::string& text, const std
                         return Error{ErrorKind::BadInput, path,
                                      "the unit for '" + key + "' must be a string"};
                     }
-                    mapping.contractToUnit[key] = value["unit"].get<std::string>();
+                    // "°F" as a units row would say it is "degF": one spelling of a unit is
+                    // accepted wherever a unit is given.
+                    const std::string unit = value["unit"].get<std::string>();
+                    const auto column = columnByName(key);
+                    const std::string canonical =
+                        column ? historian::normalisedUnit(unit, *column) : std::string();
+                    mapping.contractToUnit[key] = canonical.empty() ? unit : canonical;
                 }
                 continue;
             }

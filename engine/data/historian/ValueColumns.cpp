@@ -13,7 +13,16 @@ namespace {
 
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
-/// A units-row cell in the unit names of ColumnMapping (unitsFor); empty when not recognised.
+std::string joined(const std::vector<std::string>& items) {
+    std::string list;
+    for (const auto& k : items) {
+        list += (list.empty() ? "" : ", ") + k;
+    }
+    return list;
+}
+
+} // namespace
+
 std::string normalisedUnit(std::string_view raw, Column column) {
     std::string u;
     for (char c : trimmed(raw)) {
@@ -51,16 +60,6 @@ std::string normalisedUnit(std::string_view raw, Column column) {
     }
     return {};
 }
-
-std::string joined(const std::vector<std::string>& items) {
-    std::string list;
-    for (const auto& k : items) {
-        list += (list.empty() ? "" : ", ") + k;
-    }
-    return list;
-}
-
-} // namespace
 
 std::string ValueColumn::label() const {
     return "'" + header + "'" + (contract ? " (" + std::string(spec(*contract).name) + ")" : "");

@@ -15,6 +15,11 @@
 
 namespace drytwin::data::historian {
 
+/// @brief A unit as people write it ("°F", "[kg/h]", "%RH") in the unit names of ColumnMapping
+/// (unitsFor: "degF", "kg/h", "%"); empty when not recognised. Read alike from a units row under
+/// the header and from a column mapping's "unit".
+std::string normalisedUnit(std::string_view raw, Column column);
+
 /// @brief A value column of a plant file: its contract column (if mapped), unit, and values as
 /// read, with what its cells said about the number format and the PI digital states found in it.
 struct ValueColumn {

@@ -331,6 +331,15 @@ private Q_SLOTS:
         wrong.contractToUnit["feed_kg_h"] = "degF";
         QVERIFY(!wrong.validate().ok());
         QVERIFY(wrong.validate().error().reason.find("kg/h") != std::string::npos);
+        // A mapping file takes a unit as a units row would say it ("°F", "[t/h]"), as its name.
+        const auto written = readColumnMappingText(
+            R"({"T_hot_C": {"header": "HotAir", "unit": "°F"}, "feed_kg_h": {"header": "Feed", "unit": "[t/h]"}})",
+            "tags.json");
+        QVERIFY2(written.ok(), written.ok() ? "" : written.error().message().c_str());
+        QCOMPARE(written->contractToUnit.at("T_hot_C"), std::string("degF"));
+        QCOMPARE(written->contractToUnit.at("feed_kg_h"), std::string("t/h"));
+        QVERIFY(
+            !readColumnMappingText(R"({"T_hot_C": {"header": "HotAir", "unit": "°R"}})", "tags.json").ok());
     }
 
     void roundTripIsLossless() {
