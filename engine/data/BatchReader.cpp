@@ -2,6 +2,7 @@
 
 #include "common/AtomicFile.h"
 #include "data/PlantFileReader.h"
+#include "data/historian/NumberFormat.h"
 #include "data/historian/TextDecoding.h"
 
 #include <algorithm>
@@ -57,13 +58,12 @@ std::string trim(std::string_view s) {
     return std::string(s.substr(b, e - b + 1));
 }
 
+/// Empty and NaN (CONTRACT.md §1), and the other spellings of "no value" a spreadsheet or a
+/// historian writes ("#N/A", "null", PI's "Bad" or "No Data"), as the plant-file reader reads them:
+/// the same cell is missing in a contract file and in a `;` export, not refused in one.
 bool isMissingToken(const std::string& s) {
-    if (s.empty()) {
-        return true;
-    }
-    std::string l = s;
-    std::transform(l.begin(), l.end(), l.begin(), [](unsigned char c) { return std::tolower(c); });
-    return l == "nan";
+    std::string_view state;
+    return historian::isMissingCell(s, state);
 }
 
 bool parseDouble(const std::string& s, double& v) {
@@ -262,7 +262,13 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
                             "no header row: the first row holds numbers, not column names");
         }
     }
-    const std::size_t nCols = header.fields.size();
+    // A separator after the last header (a spreadsheet's trailing empty column): that column is
+    // no column, as the plant-file reader takes it, provided no row puts a value under it.
+    std::size_t nCols = header.fields.size();
+    const bool trailingSeparator = nCols > 1 && trim(header.fields.back()).empty();
+    if (trailingSeparator) {
+        --nCols;
+    }
     std::vector<int> numericIndexOfField(nCols, -1);
     std::vector<int> textIndexOfField(nCols, -1);
     std::set<std::string> seenFile;
@@ -336,7 +342,13 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
     const double nan = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t r = 1; r < ctx.rows.size(); ++r) {
         const RawRow& row = ctx.rows[r];
-        if (row.fields.size() != nCols) {
+        if (trailingSeparator && row.fields.size() == nCols + 1) {
+            if (!trim(row.fields.back()).empty()) {
+                return badInput(file, row.line, static_cast<int>(nCols) + 1,
+                                "value '" + trim(row.fields.back()) +
+                                    "' under no header (the header ends with a separator)");
+            }
+        } else if (row.fields.size() != nCols) {
             std::string reason = "expected " + std::to_string(nCols) + " fields as in the header, found " +
                                  std::to_string(row.fields.size());
             if (row.fields.size() == 1 && (row.fields[0].find(';') != std::string::npos ||

@@ -170,6 +170,24 @@ private Q_SLOTS:
         }
     }
 
+    // What a spreadsheet writes is read as the plant-file reader reads it: a separator after the
+    // last header is no column, "#N/A" and a historian's "Bad" are missing cells.
+    void aSpreadsheetsTrailingSeparatorAndNoValueCellsAreRead() {
+        std::string text = std::string(kHeader) + ",\n";
+        for (int i = 0; i < 3; ++i) {
+            text += row(i) + ",\n";
+        }
+        text += row(3).substr(0, row(3).rfind(',')) + ",#N/A,\n";
+        text += row(4).substr(0, row(4).rfind(',')) + ",Bad,\n";
+        const auto b = parseBatchText(text, "f.csv");
+        QVERIFY2(b.ok(), b.ok() ? "" : b.error().message().c_str());
+        QCOMPARE(b->rows(), std::size_t(5));
+        QVERIFY(b->text.empty()); // no column made of the trailing separator
+        QVERIFY(std::isnan((*b->values(Column::TOut))[3]) && std::isnan((*b->values(Column::TOut))[4]));
+        QCOMPARE(b->missing.size(), std::size_t(2));
+        QCOMPARE(b->missing[0].line, 5);
+    }
+
     void missingCellsReportedNotZeroFilled() {
         std::string s = std::string(kHeader) + "\n" + row(0) + "\n" +
                         "1,170,169.5,16,6200,22,25,24,55,14,58,,55.2\n" +
@@ -211,9 +229,14 @@ private Q_SLOTS:
         QTest::newRow("duplicate column")
             << QString::fromStdString(std::string(kHeader) + ",X_out_pct\n") << "f.csv:1:14"
             << "duplicate column 'X_out_pct'";
+        // Empty inside the header: refused. A trailing separator is no column (a spreadsheet's),
+        // unless a row puts a value under it.
         QTest::newRow("empty column name")
-            << QString::fromStdString(std::string(kHeader) + ",\n") << "f.csv:1:14"
+            << QString::fromStdString("time_s,," + std::string(kHeader).substr(7) + "\n") << "f.csv:1:2"
             << "empty column name";
+        QTest::newRow("value under no header")
+            << QString::fromStdString(std::string(kHeader) + ",\n" + row(0) + ",7\n") << "f.csv:2:14"
+            << "value '7' under no header";
         QTest::newRow("header only") << QString::fromStdString(h) << "f.csv:1:1"
                                      << "no data rows";
         QTest::newRow("text in number")
