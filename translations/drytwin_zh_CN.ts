@@ -1136,7 +1136,7 @@
     </message>
     <message>
         <location filename="../widgets/calibration/CalibrationPanel.cpp" line="63"/>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="197"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="198"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
@@ -1230,52 +1230,52 @@
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="126"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="127"/>
         <source>best loss so far</source>
         <translation>迄今最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="145"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="146"/>
         <source>Run Calibrate to see the loss fall and the parameters settle</source>
         <translation>运行标定，可看到损失下降、参数收敛</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="150"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="151"/>
         <source>The parameters&apos; paths are drawn when the calibration ends</source>
         <translation>标定结束后绘出各参数的变化轨迹</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="151"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="152"/>
         <source>Run Calibrate to see the fit before and after</source>
         <translation>运行标定，可看到标定前后的拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="193"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="194"/>
         <source>Cannot calibrate: %1</source>
         <translation>无法标定：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="203"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="204"/>
         <source>Calibrating…</source>
         <translation>正在标定…</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="228"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="229"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="228"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="229"/>
         <source>no</source>
         <translation>否</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="233"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="234"/>
         <source>On %1: </source>
         <translation>数据 %1：</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="234"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="235"/>
         <source>%1 after %2 evaluations (%3 s). Loss %4 → %5; MAE of the outlet moisture %6 → %7 % wb, of the outlet temperature %8 → %9 °C. Intervals: %10.</source>
         <translation>%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口水分 MAE %6 → %7 % 湿基，出口温度 MAE %8 → %9 °C。区间：%10。</translation>
     </message>
@@ -1284,27 +1284,27 @@
         <translation type="vanished">%1，共 %2 次评估（%3 s）。损失 %4 → %5；出口 MAE %6 → %7 % 湿基，%8 → %9 °C。区间：%10。</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="260"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="261"/>
         <source>loss evaluations [-]</source>
         <translation>损失评估次数 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="261"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="262"/>
         <source>best loss</source>
         <translation>最优损失</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="295"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="296"/>
         <source>measured %1</source>
         <translation>实测 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="298"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="299"/>
         <source>before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="301"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="302"/>
         <source>after</source>
         <translation>之后</translation>
     </message>
@@ -2648,12 +2648,17 @@
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="966"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="969"/>
+        <source>model (nothing extended)</source>
+        <translation>模型（未扩展）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="971"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="967"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="972"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -2705,13 +2710,13 @@
     <name>drytwin::widgets::LineView3D</name>
     <message>
         <location filename="../widgets/view3d/LineView3D.cpp" line="73"/>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="333"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="342"/>
         <source>moisture [% wb]</source>
         <translation>含水率 [% 湿基]</translation>
     </message>
     <message>
         <location filename="../widgets/view3d/LineView3D.cpp" line="73"/>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="333"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="342"/>
         <source>temperature [°C]</source>
         <translation>温度 [°C]</translation>
     </message>
@@ -2723,7 +2728,7 @@
     </message>
     <message>
         <location filename="../widgets/view3d/LineView3D.cpp" line="80"/>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="316"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="325"/>
         <source>Simulate the model to see the parcels.</source>
         <translation>运行模型仿真以查看物料团。</translation>
     </message>
@@ -2738,22 +2743,22 @@
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="187"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="196"/>
         <source>drying tube</source>
         <translation>干燥管</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="188"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="197"/>
         <source>conveyor</source>
         <translation>输送机</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="189"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="198"/>
         <source>winnower</source>
         <translation>风选机</translation>
     </message>
     <message>
-        <location filename="../widgets/view3d/LineView3D.cpp" line="306"/>
+        <location filename="../widgets/view3d/LineView3D.cpp" line="315"/>
         <source>%1 s of %2</source>
         <translation>%1 s / %2</translation>
     </message>
@@ -3729,12 +3734,12 @@ The results below are from the last complete run.</source>
 <context>
     <name>drytwin::widgets::PlotStack</name>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="228"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="240"/>
         <source>Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click to zoom out, middle drag to pan</source>
         <translation>Ctrl+单击：游标 A，Shift+单击：游标 B，Alt+单击：时间游标；拖动放大，右键缩小，中键拖动平移</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="124"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="125"/>
         <source>Export…</source>
         <translation>导出…</translation>
     </message>
@@ -3743,62 +3748,62 @@ The results below are from the last complete run.</source>
         <translation>将这些图表保存为 PNG、SVG 或 PDF</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="125"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="126"/>
         <source>Save these plots as PNG, SVG or PDF, or their data as CSV</source>
         <translation>把这些曲线图保存为 PNG、SVG 或 PDF，或把数据保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="212"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="224"/>
         <source>time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="291"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="303"/>
         <source>No data yet</source>
         <translation>尚无数据</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="559"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="574"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="562"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="577"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="565"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="580"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="569"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="584"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="573"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="588"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="659"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="674"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="687"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="702"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
         <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="723"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="738"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="637"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="652"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
@@ -3807,7 +3812,7 @@ The results below are from the last complete run.</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="722"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="737"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
@@ -3816,12 +3821,12 @@ The results below are from the last complete run.</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="729"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="744"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="731"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="746"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
@@ -5177,7 +5182,7 @@ extrapolation</source>
         <translation>已学习修正模型（PGRL-CC）和两个对比模型</translation>
     </message>
     <message>
-        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="162"/>
+        <location filename="../widgets/calibration/CalibrationPanel.cpp" line="163"/>
         <location filename="../widgets/common/Workbench.cpp" line="507"/>
         <source>Calibrate</source>
         <translation>标定</translation>

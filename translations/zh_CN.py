@@ -8,6 +8,7 @@ import re
 import sys
 
 ZH = {
+    "model (nothing extended)": "模型（未扩展）",
     "lag of the input [s]; the outlet-moisture error's correlation with each input": "输入的滞后 [s]；出口水分误差与各输入的相关系数",
     "Held-out accuracy: nothing was named, so nothing was extended (before = after):": "留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：",
     "Held-out accuracy": "留出集精度",

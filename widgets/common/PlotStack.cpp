@@ -420,6 +420,9 @@ QwtPlotCurve* PlotStack::addDots(int index, const QString& name, const QVector<d
     auto* c = addCurve(index, name, x, y, colour);
     c->setStyle(QwtPlotCurve::Dots);
     c->setPen(colour, 3.0);
+    // Dots are keyed by a square of their colour (Qwt's default), not by a line they are not.
+    c->setLegendAttribute(QwtPlotCurve::LegendShowLine, false);
+    c->setLegendIconSize(QSize(8, 8));
     return c;
 }
 

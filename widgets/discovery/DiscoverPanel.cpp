@@ -963,8 +963,14 @@ void DiscoverPanel::show() {
             m_plots->addDots(plot, name, x, y, colour);
         }
     };
-    curve(d.residuals, QColor(214, 39, 40), tr("starting model"));
-    curve(d.residualsAfter, QColor(31, 119, 180), tr("extended model"));
+    // Nothing named, nothing extended: one model's error, not the same dots twice with the first
+    // hidden under the second.
+    if (d.findings.empty()) {
+        curve(d.residuals, QColor(31, 119, 180), tr("model (nothing extended)"));
+    } else {
+        curve(d.residuals, QColor(214, 39, 40), tr("starting model"));
+        curve(d.residualsAfter, QColor(31, 119, 180), tr("extended model"));
+    }
     m_plots->rescale();
 }
 
