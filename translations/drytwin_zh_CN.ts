@@ -1635,7 +1635,7 @@
     <message>
         <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="35"/>
         <source>PSD [(% wb)²/Hz]</source>
-        <translation>功率谱密度 [(% 湿基)²/Hz]</translation>
+        <translation>PSD [(% 湿基)²/Hz]</translation>
     </message>
     <message>
         <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="36"/>
@@ -1690,7 +1690,7 @@
     <message>
         <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="135"/>
         <source>%1: Ljung-Box p %2, residual mean %3 % wb</source>
-        <translation>%1：Ljung-Box p = %2，残差均值 %3 % 湿基</translation>
+        <translation>%1：Ljung-Box p %2，残差均值 %3 % 湿基</translation>
     </message>
     <message>
         <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="143"/>

@@ -91,7 +91,7 @@ ZH = {
         "%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。",
     "%1: %2 batches, %3 rows, %4 missing cells; the cleaning keeps %5 rows":
         "%1：%2 个批次，%3 行，%4 个缺失值；清洗后保留 %5 行",
-    "%1: Ljung-Box p %2, residual mean %3 % wb": "%1：Ljung-Box p = %2，残差均值 %3 % 湿基",
+    "%1: Ljung-Box p %2, residual mean %3 % wb": "%1：Ljung-Box p %2，残差均值 %3 % 湿基",
     "%1: no such file or folder": "%1：文件或文件夹不存在",
     "%1: the required column '%2' is missing": "%1：缺少必需的列“%2”",
     "%1: Δ %2": "%1：Δ %2",
@@ -210,7 +210,7 @@ ZH = {
     "Open scenario": "打开情景",
     "Open scenario…": "打开情景…",
     "PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf)": "PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)",
-    "PSD [(% wb)²/Hz]": "功率谱密度 [(% 湿基)²/Hz]",
+    "PSD [(% wb)²/Hz]": "PSD [(% 湿基)²/Hz]",  # the long words were cut on the short plot
     "Parameter": "参数",
     "Parameter %1 = %2 lies outside its range [%3, %4]": "参数 %1 = %2 超出其范围 [%3, %4]",
     "Pause": "暂停",
