@@ -166,6 +166,20 @@ void printCalibration(const workflow::CalibrateResult& result) {
     }
     std::printf("ended: %s (%s)\n", terminationName(result.ending.termination),
                 result.ending.message.c_str());
+    // Every parameter against its bounds, or a fit that leaves the outlet error at several % wb:
+    // the model cannot follow these data, which a wrong unit or two swapped columns cause far more
+    // often than the physics (a fresh user's test: X_out and T_out swapped calibrated with exit 0
+    // and every parameter AT BOUND). Said on stderr, where a script's log keeps it.
+    const bool allAtBound = !r.estimates.empty() && std::all_of(r.estimates.begin(), r.estimates.end(),
+                                                                [](const auto& e) { return e.atBound; });
+    if (allAtBound || r.after.maeXOutPct > 2.0) {
+        std::fprintf(
+            stderr,
+            "drytwin: warning: the calibrated model does not follow these data (%s; outlet moisture MAE "
+            "%.3g %% wb): check the columns' units and names (`drytwin inspect`) before using it\n",
+            allAtBound ? "every free parameter at a bound" : "the fit leaves a large error",
+            r.after.maeXOutPct);
+    }
 }
 
 void printEvaluation(const evaluation::EvaluationResult& ev) {
