@@ -102,13 +102,9 @@ int runInspect(const CommandOptions& o) {
         "\nCleaning rules (paper §IV.A) keep %zu of %zu rows (%.1f %%). Dropped by rule (a row can fail "
         "several):\n",
         c.kept, c.rows, c.rows ? 100.0 * static_cast<double>(c.kept) / static_cast<double>(c.rows) : 0.0);
-    std::printf(
-        "  X_hdt_pct < %g %% wb: %zu\n  T_hdt_C < %g °C: %zu\n  feed_kg_h < %g kg/h: %zu\n"
-        "  missing input or output: %zu\n  physically impossible value: %zu\n"
-        "  frozen reading (the same value for %g s or more, far longer than the column usually holds it): "
-        "%zu\n",
-        o.cleaning.minXhdtPct, c.droppedXhdt, o.cleaning.minThdtC, c.droppedThdt, o.cleaning.minFeedKgPerHour,
-        c.droppedFeed, c.droppedMissing, c.droppedImpossible, o.cleaning.stuckMinS, c.droppedStuck);
+    for (const auto& [rule, rows] : data::droppedByRule(c, o.cleaning)) {
+        std::printf("  %s: %zu\n", rule.c_str(), rows);
+    }
     for (const auto& f : c.stuck) { // where a transmitter hung: an input is bridged, the rows left out
         const char* batch = f.batch < s.batches.size() ? s.batches[f.batch].id.c_str() : "?";
         std::printf("    %s in %s: %g from row %zu for %.0f s\n",

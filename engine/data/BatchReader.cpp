@@ -4,6 +4,7 @@
 #include "data/PlantFileReader.h"
 #include "data/historian/NumberFormat.h"
 #include "data/historian/TextDecoding.h"
+#include "data/historian/TimeFormatDetection.h"
 
 #include <algorithm>
 #include <cctype>
@@ -415,13 +416,7 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
     // whole batch over a fraction of a second without a word (a fresh user's test: Excel serial
     // days under time_s calibrated with exit 0).
     if (time->size() >= 3) {
-        std::vector<double> steps;
-        for (std::size_t r = 1; r < time->size(); ++r) {
-            steps.push_back((*time)[r] - (*time)[r - 1]);
-        }
-        std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2),
-                         steps.end());
-        const double medianStep = steps[steps.size() / 2];
+        const double medianStep = historian::medianPositiveStep(*time); // time increases: every step
         if (medianStep < 0.05) {
             const double first = time->front();
             const bool excelDays = first >= 20000 && first < 80000;

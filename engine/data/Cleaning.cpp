@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace drytwin::data {
 
@@ -175,6 +176,22 @@ CleaningReport clean(const DataSet& data, const CleaningOptions& options) {
         report.skippedRules.push_back("T_hdt_C ≥ " + std::to_string(options.minThdtC) + " °C: not measured");
     }
     return report;
+}
+
+std::vector<DroppedByRule> droppedByRule(const CleaningReport& r, const CleaningOptions& o) {
+    const auto number = [](double v) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", v);
+        return std::string(text);
+    };
+    return {{"X_hdt_pct < " + number(o.minXhdtPct) + " % wb", r.droppedXhdt},
+            {"T_hdt_C < " + number(o.minThdtC) + " °C", r.droppedThdt},
+            {"feed_kg_h < " + number(o.minFeedKgPerHour) + " kg/h", r.droppedFeed},
+            {"missing input or output", r.droppedMissing},
+            {"physically impossible value", r.droppedImpossible},
+            {"frozen reading (the same value for " + number(o.stuckMinS) +
+                 " s or more, far longer than the column usually holds it)",
+             r.droppedStuck}};
 }
 
 } // namespace drytwin::data

@@ -55,4 +55,12 @@ struct CleaningReport {
 /// Rows are masked, not removed, so the time series stays continuous for simulation.
 CleaningReport clean(const DataSet& data, const CleaningOptions& options = {});
 
+/// @brief One cleaning rule in words with its thresholds ("X_hdt_pct < 11 % wb") and the rows it
+/// dropped, in the order `inspect` lists them; the last is the frozen-reading rule.
+struct DroppedByRule {
+    std::string rule;
+    std::size_t rows = 0;
+};
+std::vector<DroppedByRule> droppedByRule(const CleaningReport& report, const CleaningOptions& options);
+
 } // namespace drytwin::data

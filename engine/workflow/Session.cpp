@@ -44,18 +44,12 @@ Status Session::requireUsableRows(const std::string& action) const {
     }
     // Else the rule that dropped the most rows, by its name, and a frozen transmitter by its column.
     const auto& c = summary.cleaning;
-    const std::pair<std::size_t, std::string> rules[] = {
-        {c.droppedXhdt, "X_hdt_pct below " + data::formatNumber(m_cleaning.minXhdtPct) + " % wb"},
-        {c.droppedThdt, "T_hdt_C below " + data::formatNumber(m_cleaning.minThdtC) + " °C"},
-        {c.droppedFeed, "feed_kg_h below " + data::formatNumber(m_cleaning.minFeedKgPerHour) + " kg/h"},
-        {c.droppedMissing, "a missing input or output"},
-        {c.droppedImpossible, "a physically impossible value"},
-        {c.droppedStuck, "a frozen reading"}};
-    const auto most = std::max_element(std::begin(rules), std::end(rules),
-                                       [](const auto& a, const auto& b) { return a.first < b.first; });
-    if (why.empty() && most->first > 0) {
-        why = "most rows (" + std::to_string(most->first) + ") fail the rule " + most->second;
-        if (most == std::end(rules) - 1 && !c.stuck.empty()) {
+    const auto rules = data::droppedByRule(c, m_cleaning);
+    const auto most = std::max_element(rules.begin(), rules.end(),
+                                       [](const auto& x, const auto& y) { return x.rows < y.rows; });
+    if (why.empty() && most->rows > 0) {
+        why = "most rows (" + std::to_string(most->rows) + ") fail the rule " + most->rule;
+        if (most == rules.end() - 1 && !c.stuck.empty()) {
             why += " (" + std::string(data::spec(c.stuck.front().column).name) + " holds " +
                    data::formatNumber(c.stuck.front().value) + " for " +
                    std::to_string(static_cast<long>(c.stuck.front().seconds)) +

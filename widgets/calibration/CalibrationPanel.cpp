@@ -231,20 +231,21 @@ void CalibrationPanel::showResult() {
         m_estimates->item(static_cast<int>(i), 0)->setToolTip(parameterMeaning(info));
     }
     fitTableWidth(m_estimates);
-    m_fit->setText(tr("On %1: ").arg(m_workbench.dataSetLabel()) +
-                   tr("%1 after %2 evaluations (%3 s). Loss %4 → %5; MAE of the outlet moisture %6 → %7 % wb, of the "
-                      "outlet temperature %8 → %9 °C. "
-                      "Intervals: %10.")
-                       .arg(terminationText(r->ending.termination))
-                       .arg(c.evaluations)
-                       .arg(c.elapsedSeconds, 0, 'f', 1)
-                       .arg(c.before.loss, 0, 'g', 4)
-                       .arg(c.after.loss, 0, 'g', 4)
-                       .arg(c.before.maeXOutPct, 0, 'f', 3)
-                       .arg(c.after.maeXOutPct, 0, 'f', 3)
-                       .arg(c.before.maeTOutC, 0, 'f', 3)
-                       .arg(c.after.maeTOutC, 0, 'f', 3)
-                       .arg(intervalMethodText(c.intervalMethod)));
+    m_fit->setText(
+        tr("On %1: ").arg(m_workbench.dataSetLabel()) +
+        tr("%1 after %2 evaluations (%3 s). Loss %4 → %5; MAE of the outlet moisture %6 → %7 % wb, of the "
+           "outlet temperature %8 → %9 °C. "
+           "Intervals: %10.")
+            .arg(terminationText(r->ending.termination))
+            .arg(c.evaluations)
+            .arg(c.elapsedSeconds, 0, 'f', 1)
+            .arg(c.before.loss, 0, 'g', 4)
+            .arg(c.after.loss, 0, 'g', 4)
+            .arg(c.before.maeXOutPct, 0, 'f', 3)
+            .arg(c.after.maeXOutPct, 0, 'f', 3)
+            .arg(c.before.maeTOutC, 0, 'f', 3)
+            .arg(c.after.maeTOutC, 0, 'f', 3)
+            .arg(intervalMethodText(c.intervalMethod)));
     // The whole history as the final curves (every evaluation, not only the progress reports):
     // the best loss, and each free parameter's trace relative to where it ended.
     QVector<double> x, y;

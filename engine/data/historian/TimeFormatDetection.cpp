@@ -16,8 +16,6 @@ bool isDigit(char c) {
 
 } // namespace
 
-namespace {
-
 double medianPositiveStep(const std::vector<double>& v) {
     std::vector<double> steps;
     for (std::size_t i = 1; i < v.size(); ++i) {
@@ -32,6 +30,8 @@ double medianPositiveStep(const std::vector<double>& v) {
                      steps.end());
     return steps[steps.size() / 2];
 }
+
+namespace {
 
 std::string mappingHint(const std::string& header, const std::string& a, const std::string& b) {
     return "name the format in the column mapping (\"time_s\": {\"header\": \"" + header +

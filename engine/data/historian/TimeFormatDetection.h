@@ -42,4 +42,7 @@ private:
 /// @brief True for a header that names a time or date (Timestamp, Zeit, Datum, 时间 …).
 bool namedLikeTime(const std::string& header);
 
+/// @brief The median of a time column's positive steps; -1 when it has none.
+double medianPositiveStep(const std::vector<double>& times);
+
 } // namespace drytwin::data::historian

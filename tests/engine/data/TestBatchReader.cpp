@@ -39,6 +39,13 @@ void writeText(const QString& path, const std::string& text) {
     out << text;
 }
 
+/// A folder holding one batch file B07.csv with @p text, loaded as a user's folder is.
+LoadResult loadOneFile(const std::string& text) {
+    QTemporaryDir dir;
+    writeText(dir.filePath("B07.csv"), text);
+    return loadDataSet(dir.path().toStdString());
+}
+
 } // namespace
 
 class TestBatchReader : public QObject {
@@ -84,9 +91,7 @@ private Q_SLOTS:
 
         std::string text = goodFile(3);
         text.replace(text.find(",T_in_C,"), 8, ",T_inlet_C,");
-        QTemporaryDir dir;
-        writeText(dir.filePath("B07.csv"), text);
-        const auto loaded = loadDataSet(dir.path().toStdString());
+        const auto loaded = loadOneFile(text);
         QVERIFY(loaded.ok());
         const auto summary = summarize(loaded.dataSet);
         QVERIFY(!summary.columns[static_cast<std::size_t>(Column::TIn)].present);
@@ -110,9 +115,7 @@ private Q_SLOTS:
     // noted; time_s in Excel serial days is refused, naming the remedy.
     void aWrongUnitOrSwappedColumnsAreNoted() {
         const auto notesOf = [](const std::string& text) {
-            QTemporaryDir dir;
-            writeText(dir.filePath("B07.csv"), text);
-            const auto loaded = loadDataSet(dir.path().toStdString());
+            const auto loaded = loadOneFile(text);
             return loaded.ok() ? summarize(loaded.dataSet).notes : std::vector<std::string>{"load failed"};
         };
         const auto has = [](const std::vector<std::string>& notes, const std::string& part) {
@@ -152,9 +155,7 @@ private Q_SLOTS:
     // column has too few changes to say what is usual for it; five minutes of it are not.
     void anOutletThatNeverMovesIsFrozen() {
         for (const int rows : {700, 300}) {
-            QTemporaryDir dir;
-            writeText(dir.filePath("B07.csv"), goodFile(rows)); // every column constant
-            const auto loaded = loadDataSet(dir.path().toStdString());
+            const auto loaded = loadOneFile(goodFile(rows)); // every column constant
             QVERIFY(loaded.ok());
             const auto report = clean(loaded.dataSet, CleaningOptions{});
             const bool outletFrozen =
