@@ -12,6 +12,7 @@
 #include "workflow/session/SessionInternal.h"
 
 #include <filesystem>
+#include <vector>
 
 namespace drytwin::workflow {
 
@@ -168,11 +169,21 @@ Expected<PipelineResult> Session::pipeline(const PipelineOptions& options, const
     const auto finalPath = [&](const std::string& stagedPath) {
         return (fs::path(options.outFolder) / fs::path(stagedPath).filename()).string();
     };
-    for (const auto& entry : fs::directory_iterator(staging, ec)) {
-        fs::rename(entry.path(), fs::path(options.outFolder) / entry.path().filename(), ec);
+    // The staged files listed first, then moved: a folder is not changed while it is read, and a
+    // listing that fails is an error, not a run whose files silently stayed behind.
+    std::vector<fs::path> staged;
+    for (fs::directory_iterator it(staging, ec), end; !ec && it != end; it.increment(ec)) {
+        staged.push_back(it->path());
+    }
+    if (ec) {
+        return failWith(
+            Error{ErrorKind::BadInput, staging.string(), "cannot list the finished files: " + ec.message()});
+    }
+    for (const auto& file : staged) {
+        fs::rename(file, fs::path(options.outFolder) / file.filename(), ec);
         if (ec) {
             return failWith(Error{ErrorKind::BadInput,
-                                  (fs::path(options.outFolder) / entry.path().filename()).string(),
+                                  (fs::path(options.outFolder) / file.filename()).string(),
                                   "cannot move the finished file into place: " + ec.message()});
         }
     }
