@@ -155,13 +155,14 @@ void setTableRow(QTableWidget* table, int row, const QStringList& cells) {
 
 QColor modelColour(const std::string& key) {
     // The two reference predictors in muted tones, the learnt models in stronger ones, PGRL-CC red.
-    static const std::map<std::string, QColor> colours{{"pbm", QColor(127, 127, 127)},
-                                                       {"persistence", QColor(188, 189, 34)},
-                                                       {"pbm_residual_hold", QColor(140, 86, 75)},
-                                                       {"lstm", QColor(148, 103, 189)},
-                                                       {"ext_input_residual", QColor(44, 160, 44)},
-                                                       {"pgrl_cc", QColor(214, 39, 40)},
-                                                       {"pi", QColor(31, 119, 180)}};
+    static const std::map<std::string, QColor> colours{
+        {"pbm", QColor(127, 127, 127)},
+        {"persistence", QColor(128, 128, 0)}, // olive: a light yellow dash was hard to see
+        {"pbm_residual_hold", QColor(140, 86, 75)},
+        {"lstm", QColor(148, 103, 189)},
+        {"ext_input_residual", QColor(44, 160, 44)},
+        {"pgrl_cc", QColor(214, 39, 40)},
+        {"pi", QColor(31, 119, 180)}};
     const auto it = colours.find(key);
     return it == colours.end() ? QColor(23, 190, 207) : it->second;
 }

@@ -121,6 +121,7 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     split->addWidget(left);
     split->addWidget(right);
     split->setStretchFactor(1, 1);
+    split->setSizes({640, 640}); // the held-out table's columns whole, the plots beside them
     auto* layout = new QHBoxLayout(this);
     layout->addWidget(split);
     connect(train, &QPushButton::clicked, this, &ResidualPanel::train);
@@ -280,12 +281,14 @@ void ResidualPanel::showEvaluation() {
         before->setStyle(QwtPlotCurve::NoCurve);
         before->setSymbol(
             new QwtSymbol(QwtSymbol::Ellipse, Qt::NoBrush, QPen(QColor(255, 127, 14), 1.3), QSize(9, 9)));
+        before->setLegendAttribute(QwtPlotCurve::LegendShowSymbol, true); // the ring, as drawn
         auto* after =
             m_eigen->addDots(0, tr("A with Eq. 30 (ρ = %1)").arg(d.pgrlCcAfter.spectralRadius, 0, 'f', 4), ax,
                              ay, QColor(31, 119, 180));
         after->setStyle(QwtPlotCurve::NoCurve);
         after->setSymbol(
             new QwtSymbol(QwtSymbol::Ellipse, QBrush(QColor(31, 119, 180)), Qt::NoPen, QSize(4, 4)));
+        after->setLegendAttribute(QwtPlotCurve::LegendShowSymbol, true); // the dot, as drawn
     }
     m_eigen->rescale();
     // The rescaler keeps one unit the same length on both axes at any size of the plot, so the
@@ -297,9 +300,19 @@ void ResidualPanel::showEvaluation() {
         }
     }
     keepEqualAspect(m_eigen->plot(0), radius);
-    // The curves start at 1 step; the open-loop PBM's skill (about 10) would flatten the rest.
+    // The curves start at 1 step; the open-loop PBM's skill (about 10) would flatten the rest, so
+    // the axis reaches the highest of the other curves (the last measurement held climbs past 2.5
+    // at long horizons and left the plot), up to 5.
+    double highest = 2.0;
+    for (const auto& m : ev->evaluation.models) {
+        if (m.name != "pbm") {
+            for (double v : m.skillMoistureByHorizon) {
+                highest = std::isfinite(v) ? std::max(highest, v) : highest;
+            }
+        }
+    }
     m_skill->plot(0)->setAxisScale(QwtPlot::xBottom, 1, 200);
-    m_skill->plot(0)->setAxisScale(QwtPlot::yLeft, 0, 2.5);
+    m_skill->plot(0)->setAxisScale(QwtPlot::yLeft, 0, std::min(5.0, 1.05 * highest));
     m_skill->plot(0)->replot();
     QString rates;
     if (d.hasPgrlCcEigenvalues && !d.pgrlCcAfter.contractionRatePerStep.empty()) {
