@@ -1,13 +1,14 @@
 #include "calibration/Calibration.h"
+
 #include "diagnostics/LongRunVariance.h"
 
+#include "common/NumberText.h"
 #include "common/Parallel.h"
 #include "common/Units.h"
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <nlopt.hpp>
 #include <optional>
@@ -230,14 +231,6 @@ Eigen::MatrixXd hacScoreCovariance(const Residuals& r, std::size_t np, int& band
 
 } // namespace
 
-namespace {
-std::string formatBound(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
-} // namespace
-
 // What the user asked for (the command line's --free, --bound, the window's fields): wrong usage
 // (exit 2), not bad data.
 Status CalibrationOptions::validate() const {
@@ -261,8 +254,8 @@ Status CalibrationOptions::validate() const {
         if (!(b.first < b.second) || b.first < info.lower || b.second > info.upper ||
             !std::isfinite(b.first) || !std::isfinite(b.second)) {
             return Error{ErrorKind::Usage, std::string(info.symbol),
-                         "bounds must satisfy " + formatBound(info.lower) + " ≤ lower < upper ≤ " +
-                             formatBound(info.upper) + " " + std::string(info.unit)};
+                         "bounds must satisfy " + shortNumber(info.lower) + " ≤ lower < upper ≤ " +
+                             shortNumber(info.upper) + " " + std::string(info.unit)};
         }
     }
     const double ws[] = {weights.xOut, weights.tOut, weights.xHdt, weights.tHdt};

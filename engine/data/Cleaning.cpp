@@ -1,8 +1,9 @@
 #include "data/Cleaning.h"
 
+#include "common/NumberText.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace drytwin::data {
 
@@ -179,17 +180,12 @@ CleaningReport clean(const DataSet& data, const CleaningOptions& options) {
 }
 
 std::vector<DroppedByRule> droppedByRule(const CleaningReport& r, const CleaningOptions& o) {
-    const auto number = [](double v) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%g", v);
-        return std::string(text);
-    };
-    return {{"X_hdt_pct < " + number(o.minXhdtPct) + " % wb", r.droppedXhdt},
-            {"T_hdt_C < " + number(o.minThdtC) + " °C", r.droppedThdt},
-            {"feed_kg_h < " + number(o.minFeedKgPerHour) + " kg/h", r.droppedFeed},
+    return {{"X_hdt_pct < " + shortNumber(o.minXhdtPct) + " % wb", r.droppedXhdt},
+            {"T_hdt_C < " + shortNumber(o.minThdtC) + " °C", r.droppedThdt},
+            {"feed_kg_h < " + shortNumber(o.minFeedKgPerHour) + " kg/h", r.droppedFeed},
             {"missing input or output", r.droppedMissing},
             {"physically impossible value", r.droppedImpossible},
-            {"frozen reading (the same value for " + number(o.stuckMinS) +
+            {"frozen reading (the same value for " + shortNumber(o.stuckMinS) +
                  " s or more, far longer than the column usually holds it)",
              r.droppedStuck}};
 }

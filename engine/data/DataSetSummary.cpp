@@ -1,4 +1,7 @@
 #include "data/DataSetSummary.h"
+
+#include "common/NumberText.h"
+
 #include <cstdio>
 
 #include <algorithm>
@@ -10,11 +13,6 @@
 namespace drytwin::data {
 
 namespace {
-std::string formatNumber(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
 
 /// What a reader must know but no single cell shows, in the batch's file: a sampling step other than
 /// the contract's 1 s, and a gap in time (a stop, a lost connection) that the model runs across as
@@ -180,8 +178,8 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
                             s.impossible.push_back({b.sourcePath.empty() ? b.id : b.sourcePath,
                                                     r < b.lineOfRow.size() ? b.lineOfRow[r] : 0, fileColumn,
                                                     col.fileName, std::string(spec(col.id).name), v,
-                                                    "must lie in [" + formatNumber(low) + ", " +
-                                                        formatNumber(high) + "] " + cs.unit});
+                                                    "must lie in [" + shortNumber(low) + ", " +
+                                                        shortNumber(high) + "] " + cs.unit});
                         }
                     }
                 }

@@ -1,5 +1,6 @@
 #include "data/historian/ClockSteps.h"
 
+#include "common/NumberText.h"
 #include "data/historian/PlaceInFile.h"
 
 #include <cmath>
@@ -16,12 +17,6 @@ std::string zone(int offsetMinutes) {
     return buf;
 }
 
-std::string seconds(double s) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", s);
-    return buf;
-}
-
 } // namespace
 
 ClockWatch::ClockWatch(std::string file, int timeColumn, TimeFormat format, double sampleSlackS)
@@ -29,7 +24,7 @@ ClockWatch::ClockWatch(std::string file, int timeColumn, TimeFormat format, doub
 
 std::string ClockWatch::when(double t) const {
     if (m_format == TimeFormat::Seconds) {
-        return seconds(t) + " s";
+        return shortNumber(t) + " s";
     }
     return isoTimestamp(t) + (m_previous.hasOffset ? " UTC" : "");
 }
@@ -75,7 +70,7 @@ Expected<ClockStep> ClockWatch::step(const TimeStamp& stamp, int line, bool batc
     }
     Error e =
         fileError(m_file, line, m_column,
-                  "time goes back " + seconds(back) + " s (" + when(stamp.seconds) + " after " +
+                  "time goes back " + shortNumber(back) + " s (" + when(stamp.seconds) + " after " +
                       when(before.seconds) + " on line " + std::to_string(beforeLine) +
                       "): rows out of order or a clock reset. Only daylight saving's step back of one hour "
                       "is read (as a new run). Sort the export by time or remove the overlapping rows; if "
