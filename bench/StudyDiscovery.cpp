@@ -103,11 +103,12 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
             if (verbose) { // which half of each detector decided, and by how much
                 const auto& d = r->detection;
                 std::printf(
-                    "  detection: DryTwin monitor %s p %.4g (%s); cause test %s p %.4g (%s); PCA %s p %.4g "
+                    "  detection: DryTwin monitor %s p %.4g (%s); cause test %s p %.4g (%s%s); PCA %s p %.4g "
                     "(%s)\n",
                     d.drytwin.changed ? "CHANGED" : "normal", d.drytwin.pValue, d.drytwin.statistic.c_str(),
                     d.causeTest.changed ? "CHANGED" : "normal", d.causeTest.pValue, d.causeTest.cause.c_str(),
-                    d.pca.changed ? "CHANGED" : "normal", d.pca.pValue, d.pca.statistic.c_str());
+                    d.causeTest.secondLook ? ", second look" : "", d.pca.changed ? "CHANGED" : "normal",
+                    d.pca.pValue, d.pca.statistic.c_str());
             }
         }
     } else {
@@ -262,6 +263,8 @@ int main(int argc, char** argv) {
         } else if (a ==
                    "--structure-extrapolates") { // against a reference: the ridge beyond its range, as before
             discoveryOptions.lineStructureWithinReferenceRange = false;
+        } else if (a == "--cause-test-screen-only") { // against a reference: no second look at named fits
+            discoveryOptions.causeTestAtNamedFits = false;
         } else if (a == "--no-structure") { // against a reference: the causes' normal values alone
             discoveryOptions.learnLineStructure = false;
         } else if (a == "--reference-batches" && std::atoi(next.c_str()) >= 2) {
@@ -290,14 +293,15 @@ int main(int argc, char** argv) {
             ++i;
         } else {
             std::fprintf(
-                stderr, "usage: study_discovery [--quick] [--plant distributed|lumped] "
-                        "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
-                        "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
-                        "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
-                        "[--evaluations N] [--oracle] [--reference] [--reference-batches N] [--no-structure] "
-                        "[--structure-extrapolates] [--keep-taken-up] [--size-rule] "
-                        "[--spread-bound] [--undetected-at-5-percent] [--share-of-whole] "
-                        "[--no-constancy] [--look-alike-overall]\n");
+                stderr,
+                "usage: study_discovery [--quick] [--plant distributed|lumped] "
+                "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
+                "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
+                "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
+                "[--evaluations N] [--oracle] [--reference] [--reference-batches N] [--no-structure] "
+                "[--structure-extrapolates] [--cause-test-screen-only] [--keep-taken-up] [--size-rule] "
+                "[--spread-bound] [--undetected-at-5-percent] [--share-of-whole] "
+                "[--no-constancy] [--look-alike-overall]\n");
             return 2;
         }
     }

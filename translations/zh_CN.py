@@ -8,6 +8,8 @@ import re
 import sys
 
 ZH = {
+    "DryTwin (the causes' estimates): none moved beyond its normal spread (p = %1)": "DryTwin（各原因的估计）：均未超出其正常范围（p = %1）",
+    "DryTwin (the named causes' fitted values, the inlet gauge's scatter): <b>changed</b> (p = %1): %2 moved beyond its normal spread": "DryTwin（已命名原因的拟合值、进口水分仪的散布）：<b>已变化</b>（p = %1）：%2 超出其正常范围",
     "model (nothing extended)": "模型（未扩展）",
     "lag of the input [s]; the outlet-moisture error's correlation with each input": "输入的滞后 [s]；出口水分误差与各输入的相关系数",
     "Held-out accuracy: nothing was named, so nothing was extended (before = after):": "留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：",

@@ -68,9 +68,12 @@ void printDetection(const discovery::DiscoveryResult& d) {
         }
     };
     line("DryTwin, monitor of the model's errors:", det.drytwin);
-    std::printf("  %-38s %s, p %.3g (Bonferroni; smallest: %s)\n", "DryTwin, the causes' one-step estimates:",
+    std::printf("  %-38s %s, p %.3g (Bonferroni; smallest: %s%s)\n", "DryTwin, the causes' estimates:",
                 det.causeTest.changed ? "one moved beyond its normal spread" : "none moved",
-                det.causeTest.pValue, det.causeTest.cause.empty() ? "-" : det.causeTest.cause.c_str());
+                det.causeTest.pValue, det.causeTest.cause.empty() ? "-" : det.causeTest.cause.c_str(),
+                !det.causeTest.secondLook                              ? ""
+                : det.causeTest.cause == "inlet_moisture_sensor_noise" ? ", the gauge's scatter"
+                                                                       : ", at its fitted value");
     line("dynamic PCA (the measured columns):", det.pca);
     std::printf("\n");
 }

@@ -148,6 +148,12 @@ struct DiscoveryOptions {
     /// detector states (falseAlarmRate, Bonferroni over the round's candidates), not at the 5 %
     /// that names a cause once a change is seen. false: z 1.96 either way, as before 2026-11-27 (night).
     bool undetectedChangeAtDetectorRate = true;
+    /// DryTwin's cause test takes a second look at each named cause's fitted value (CauseTest):
+    /// a change DryTwin names at the detector's rate is one its detector flags. Issue #41's
+    /// study: on seed 323 the PCA monitor flagged runs whose causes DryTwin named right, while
+    /// DryTwin's detector, judging the one-step screen, stayed silent. false: the screen alone,
+    /// as before 2026-11-28.
+    bool causeTestAtNamedFits = true;
     Status validate() const;
 };
 
@@ -378,13 +384,17 @@ struct ChangeDetection {
     /// DryTwin's detector: its monitor of the model's error (drytwin) or its test of the causes'
     /// parameters against their normal values (causeTest), each at half the rate (Bonferroni).
     bool drytwinChanged = false;
-    /// The causes' change tests at the commissioned model: the smallest one-sided (two-sided for
-    /// an offset) p of a cause's one-step estimate against its normal value, Bonferroni over the
-    /// causes tested.
+    /// The causes' change tests: the smallest one-sided (two-sided for an offset) p of a cause's
+    /// parameter against its normal value (the spread at its upper bound), Bonferroni over the
+    /// causes tested. Two looks: each cause's one-step estimate at the commissioned model (the
+    /// screen), then each named cause's fitted value, which is better determined (a fouling the
+    /// screen leaves at p 0.02 is at z 9 once fitted), and the inlet gauge's own scatter against
+    /// the reference's (a noisier gauge is a change of the instrument, whatever the model's error).
     struct CauseTest {
         bool changed = false;
-        double pValue = 1; ///< Bonferroni-adjusted
-        std::string cause; ///< the one with the smallest p
+        double pValue = 1;       ///< Bonferroni-adjusted
+        std::string cause;       ///< the one with the smallest p
+        bool secondLook = false; ///< decided by the second look (a named fit or the gauge's scatter)
     } causeTest;
     /// A cause named against the reference (its fitted parameter beyond its normal spread, with a
     /// held-out gain): the line has changed even where the detectors, judging the data set as a

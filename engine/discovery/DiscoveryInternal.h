@@ -242,6 +242,10 @@ std::optional<Signature> dynamicsSignature(const Problem& pr,
                                            const std::vector<physics::SimulationResult>& sims, int channel);
 /// 1σ of the inlet moisture about its 30 s centred mean [% wb], over every kept row.
 double inletFastScatterPct(const Problem& pr);
+/// One-sided p that the inlet gauge's fast scatter (as inletFastScatterPct, per batch) rose
+/// against @p referencePr's: Welch's t on the batches' log scatter; 1 with fewer than two
+/// batches a side.
+double inletScatterRiseP(const Problem& pr, const Problem& referencePr);
 /// True when the cause's practical floor is on its own parameter (an offset, a time constant).
 bool hasOwnFloor(Param p);
 /// Why a fitted cause is below its practical floor, or "" when it is not. @p before is the fit
@@ -425,6 +429,11 @@ detectChange(const std::vector<data::SiBatch>& reference, const std::vector<data
 /// (@p ranking, at the commissioned model), Bonferroni over them at half the false-alarm rate;
 /// then the decision of both detectors again.
 void testCauses(const std::vector<Candidate>& ranking, ChangeDetection& d);
+/// The cause test's second look (ChangeDetection::CauseTest): each named cause's fitted value
+/// against its normal value with the spread's upper bound, and the inlet gauge's scatter rise
+/// (@p scatterRiseP, inletScatterRiseP; 1 when not asked), Bonferroni over the @p tested causes.
+Status testNamedCauses(const Problem& pr, const std::vector<Finding>& findings, std::size_t tested,
+                       double scatterRiseP, ChangeDetection& d);
 /// The detectors' decision from their parts: DryTwin's (monitor or causes), PCA's, either.
 void decide(ChangeDetection& d);
 /// The line's own structure learnt on a reference period (LineStructure.cpp): the commissioned

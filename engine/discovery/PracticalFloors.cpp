@@ -6,31 +6,94 @@
 #include "common/MovingAverage.h"
 #include "common/Units.h"
 
+#include <boost/math/distributions/students_t.hpp>
 #include <cmath>
+#include <utility>
 
 namespace drytwin::discovery::detail {
+
+namespace {
+
+/// Sum of squares of the inlet gauge's deviations from its centred 30 s mean, and their count,
+/// for one batch (nothing for a batch of fewer than 60 kept readings).
+std::pair<double, std::size_t> inletFastSquares(const data::SiBatch& b) {
+    std::vector<double> t, x;
+    for (std::size_t k = 0; k < b.rows(); ++k) {
+        if (b.keep[k] && std::isfinite(b.xInDb[k])) {
+            t.push_back(b.timeS[k]);
+            x.push_back(units::dryToWetPct(b.xInDb[k]));
+        }
+    }
+    if (x.size() < 60) {
+        return {0.0, 0};
+    }
+    const auto slow = centredMovingAverage(t, x, 30);
+    double sum = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        sum += (x[i] - slow[i]) * (x[i] - slow[i]);
+    }
+    return {sum, x.size()};
+}
+
+/// log of each batch's fast scatter (batches with too few readings left out).
+std::vector<double> logScatterPerBatch(const Problem& pr) {
+    std::vector<double> out;
+    for (const auto& b : *pr.batches) {
+        const auto [sum, n] = inletFastSquares(b);
+        if (n > 0 && sum > 0) {
+            out.push_back(0.5 * std::log(sum / static_cast<double>(n)));
+        }
+    }
+    return out;
+}
+
+} // namespace
 
 double inletFastScatterPct(const Problem& pr) {
     double sum = 0;
     std::size_t n = 0;
     for (const auto& b : *pr.batches) {
-        std::vector<double> t, x;
-        for (std::size_t k = 0; k < b.rows(); ++k) {
-            if (b.keep[k] && std::isfinite(b.xInDb[k])) {
-                t.push_back(b.timeS[k]);
-                x.push_back(units::dryToWetPct(b.xInDb[k]));
-            }
-        }
-        if (x.size() < 60) {
-            continue;
-        }
-        const auto slow = centredMovingAverage(t, x, 30);
-        for (std::size_t i = 0; i < x.size(); ++i) {
-            sum += (x[i] - slow[i]) * (x[i] - slow[i]);
-            ++n;
-        }
+        const auto [s, m] = inletFastSquares(b);
+        sum += s;
+        n += m;
     }
     return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+}
+
+double inletScatterRiseP(const Problem& pr, const Problem& referencePr) {
+    // Welch's t on the batches' log scatter: the batches, not the readings, are the independent
+    // units (a gauge's scatter differs from batch to batch with the product and the weather), so
+    // the test holds its rate with two to four batches a side where a variance-ratio F test on
+    // thousands of autocorrelated readings would flag any difference.
+    const auto here = logScatterPerBatch(pr);
+    const auto before = logScatterPerBatch(referencePr);
+    if (here.size() < 2 || before.size() < 2) {
+        return 1.0;
+    }
+    const auto meanVar = [](const std::vector<double>& v) {
+        double m = 0;
+        for (double x : v) {
+            m += x;
+        }
+        m /= static_cast<double>(v.size());
+        double q = 0;
+        for (double x : v) {
+            q += (x - m) * (x - m);
+        }
+        return std::pair{m, q / static_cast<double>(v.size() - 1)};
+    };
+    const auto [m1, v1] = meanVar(here);
+    const auto [m0, v0] = meanVar(before);
+    const double a = v1 / static_cast<double>(here.size()), b = v0 / static_cast<double>(before.size());
+    const double se = std::sqrt(a + b);
+    if (!(se > 0)) {
+        return m1 > m0 ? 0.0 : 1.0;
+    }
+    const double df =
+        (a + b) * (a + b) /
+        (a * a / static_cast<double>(here.size() - 1) + b * b / static_cast<double>(before.size() - 1));
+    const boost::math::students_t t(std::max(1.0, df));
+    return boost::math::cdf(boost::math::complement(t, (m1 - m0) / se));
 }
 
 bool hasOwnFloor(Param p) {

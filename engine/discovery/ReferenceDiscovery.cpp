@@ -164,6 +164,46 @@ Expected<std::string> judgeAgainstReference(const Problem& pr, Finding& f) {
         atDetectorRate ? " (no detector has flagged a change: the detectors' false-alarm rate)" : "");
 }
 
+Status testNamedCauses(const Problem& pr, const std::vector<Finding>& findings, std::size_t tested,
+                       double scatterRiseP, ChangeDetection& d) {
+    if (!pr.reference || !pr.reference->fitted) {
+        return {};
+    }
+    const auto consider = [&](double p, const std::string& cause) {
+        const double adjusted = std::min(1.0, p * static_cast<double>(std::max<std::size_t>(1, tested)));
+        if (adjusted < d.causeTest.pValue) {
+            d.causeTest.pValue = adjusted;
+            d.causeTest.cause = cause;
+            d.causeTest.secondLook = true;
+            d.causeTest.changed = adjusted <= d.falseAlarmRate / 2;
+        }
+    };
+    // The gauge's scatter is a change of the instrument, seen in its own readings whether or not
+    // the scatter explains the model's error: its rise is tested whenever the cause is asked.
+    consider(scatterRiseP, std::string(*properties::mechanismOf(Param::phi_X_in_scatter)));
+    for (const auto& f : findings) {
+        if (!f.hasReference || f.parameter == Param::phi_X_in_scatter) { // the scatter: its own rise
+            continue;
+        }
+        auto rv = pr.reference->fitted(f.parameter);
+        if (!rv) {
+            return rv.error();
+        }
+        // As judgeAgainstReference() before any detector has flagged: the spread at its upper
+        // bound, so that this look is held to the detector's stated rate whatever flagged before.
+        const double seHere = (f.ci95High - f.ci95Low) / (2 * 1.96);
+        const double seRef = std::max(rv->se, seHere);
+        const double sd = std::sqrt(seHere * seHere + seRef * seRef + rv->spread * rv->spread);
+        if (!(sd > 0)) {
+            continue;
+        }
+        const double z = (f.value - rv->value) / sd;
+        consider(twoSided(f.parameter) ? 2 * upperTail(std::abs(z)) : upperTail(z), f.cause);
+    }
+    decide(d);
+    return {};
+}
+
 Status withdrawTakenUp(const Problem& pr, DiscoveryResult& result) {
     // A cause named early and refitted with the causes named after it (restated at the final model)
     // may fall back within its normal spread: it had taken up, while it was alone, what a later
@@ -623,6 +663,15 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     // Every finding against a reference is a change (its parameter beyond its normal spread).
     for (const auto& f : result.findings) {
         result.detection.namedCauses.push_back(f.cause);
+    }
+    if (options.causeTestAtNamedFits) {
+        const bool scatterAsked = asked(Param::phi_X_in_scatter);
+        const double scatterRiseP = scatterAsked ? inletScatterRiseP(pr, normalPr) : 1.0;
+        if (auto st = testNamedCauses(pr, result.findings, result.ranking.size() + (scatterAsked ? 1 : 0),
+                                      scatterRiseP, result.detection);
+            !st) {
+            return st.error();
+        }
     }
     // The line's own structure is on the reference too: only a change the detectors see and no
     // cause explains is "unexplained structure" here.

@@ -522,7 +522,12 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
         ours["changed"] = d.drytwinChanged;
         ours["cause_test"] = {{"changed", d.causeTest.changed},
                               {"p_value", num(d.causeTest.pValue)},
-                              {"cause", d.causeTest.cause}};
+                              {"cause", d.causeTest.cause},
+                              // Which look decided: the one-step screen, a named cause's fitted
+                              // value, or the inlet gauge's scatter against the reference's.
+                              {"look", !d.causeTest.secondLook                              ? "screen"
+                                       : d.causeTest.cause == "inlet_moisture_sensor_noise" ? "gauge_scatter"
+                                                                                            : "named_fit"}};
         // The first alarm of the deciding detectors (the earlier where both alarm).
         const monitoring::Detection* first = nullptr;
         for (const auto* det : {&d.drytwin, &d.pca}) {

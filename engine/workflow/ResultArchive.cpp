@@ -153,7 +153,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(
     referenceCi95Low, referenceCi95High, responseJudged, responseScale)
 // A result judged against a reference comes back with its detection and reference values, so that
 // a reopened project shows the headline, the monitor chart and each finding's change as they were.
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(ChangeDetection::CauseTest, changed, pValue, cause)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(ChangeDetection::CauseTest, changed, pValue, cause,
+                                                secondLook)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(ChangeDetection, changed, falseAlarmRate, decidedBy,
                                                 drytwinChanged, causeTest, namedCauses, drytwin, pca,
                                                 drytwinColumns, pcaColumns)

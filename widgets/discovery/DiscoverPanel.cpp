@@ -202,13 +202,18 @@ void DiscoverPanel::showDetection() {
     };
     // DryTwin's detector: its monitor of the model's error, or a cause's parameter beyond its spread.
     const QString causes =
-        det.causeTest.changed
-            ? tr("DryTwin (the causes' one-step estimates): <b>changed</b> (p = %1): %2 moved beyond its "
-                 "normal spread")
+        !det.causeTest.changed
+            ? tr("DryTwin (the causes' estimates): none moved beyond its normal spread (p = %1)")
+                  .arg(det.causeTest.pValue, 0, 'g', 2)
+        : det.causeTest.secondLook
+            ? tr("DryTwin (the named causes' fitted values, the inlet gauge's scatter): <b>changed</b> "
+                 "(p = %1): %2 moved beyond its normal spread")
                   .arg(det.causeTest.pValue, 0, 'g', 2)
                   .arg(causeDisplayName(det.causeTest.cause).toHtmlEscaped())
-            : tr("DryTwin (the causes' one-step estimates): none moved beyond its normal spread (p = %1)")
-                  .arg(det.causeTest.pValue, 0, 'g', 2);
+            : tr("DryTwin (the causes' one-step estimates): <b>changed</b> (p = %1): %2 moved beyond its "
+                 "normal spread")
+                  .arg(det.causeTest.pValue, 0, 'g', 2)
+                  .arg(causeDisplayName(det.causeTest.cause).toHtmlEscaped());
     // Conditions the reference never saw, beside the verdict they may explain.
     QString unseenConditions;
     for (const auto& n : r->discovery.notes) {

@@ -240,6 +240,36 @@ private Q_SLOTS:
         QVERIFY2(saysWhy, qPrintable(story(*r)));
     }
 
+    /// DryTwin's detector takes a second look at what it names (study_discovery --reference,
+    /// seed 323 and its reference 7323): a fouling of 0.1 the monitor and the one-step screen
+    /// leave below their limits is far beyond its normal spread once fitted, and a gauge whose
+    /// scatter rose is a changed instrument whatever the model's error says. Both runs were
+    /// flagged by the PCA monitor alone before, though DryTwin named their causes.
+    void whatDryTwinNamesItsDetectorFlags() {
+        const auto ref = plantData(7323);
+        discovery::DiscoveryOptions screenOnly;
+        screenOnly.causeTestAtNamedFits = false;
+        const auto fouled = plantData(323, {{Mechanism::HeatTransferFouling, 0.1}});
+        auto before = discovery::discoverChange(ref, fouled, hybrid::HybridModel{}, screenOnly);
+        QVERIFY2(before.ok(), before ? "" : before.error().message().c_str());
+        QVERIFY2(!before->detection.drytwinChanged, qPrintable(story(*before))); // the case
+        QVERIFY2(namesFirst(*before, "heat_transfer_fouling"), qPrintable(story(*before)));
+        auto r = discovery::discoverChange(ref, fouled, hybrid::HybridModel{});
+        QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
+        QVERIFY2(r->detection.drytwinChanged, qPrintable(story(*r)));
+        QVERIFY(r->detection.causeTest.changed && r->detection.causeTest.secondLook);
+        QCOMPARE(r->detection.causeTest.cause, std::string("heat_transfer_fouling"));
+        QVERIFY(r->detection.causeTest.pValue <= r->detection.falseAlarmRate / 2);
+        QVERIFY(!r->detection.drytwin.changed);                // the monitor's verdict is its own
+        QCOMPARE(r->findings.size(), before->findings.size()); // naming is as before
+        const auto noisy = plantData(323, {{Mechanism::InletMoistureSensorNoise, 0.8}});
+        auto gauge = discovery::discoverChange(ref, noisy, hybrid::HybridModel{});
+        QVERIFY2(gauge.ok(), gauge ? "" : gauge.error().message().c_str());
+        QVERIFY2(gauge->detection.drytwinChanged, qPrintable(story(*gauge)));
+        QCOMPARE(gauge->detection.causeTest.cause, std::string("inlet_moisture_sensor_noise"));
+        QVERIFY(gauge->detection.causeTest.secondLook);
+    }
+
     void healthyPairNamesNothing() {
         const auto r = judge(plantData(44));
         QVERIFY2(!r.detection.changed, qPrintable(story(r)));
