@@ -52,8 +52,9 @@ void printDetection(const discovery::DiscoveryResult& d) {
             std::printf(", first alarm %s at %.1f min", m.firstAlarmRun.c_str(), m.firstAlarmTimeS / 60);
         }
         if (m.hasOnset) {
-            std::printf(", onset %s at %.1f min [%.1f, %.1f]", m.onsetRun.c_str(), m.onsetS / 60,
-                        m.onsetLowS / 60, m.onsetHighS / 60);
+            // The change-point estimate looks back from the alarm: it may lie in an earlier batch.
+            std::printf(", the change began (change-point estimate) in %s at %.1f min [95 %%: %.1f to %.1f]",
+                        m.onsetRun.c_str(), m.onsetS / 60, m.onsetLowS / 60, m.onsetHighS / 60);
         }
         std::printf("\n");
         if (m.changed && !m.contributions.empty()) {
@@ -69,7 +70,8 @@ void printDetection(const discovery::DiscoveryResult& d) {
     };
     line("DryTwin, monitor of the model's errors:", det.drytwin);
     std::printf("  %-38s %s, p %.3g (Bonferroni; smallest: %s%s)\n", "DryTwin, the causes' estimates:",
-                det.causeTest.changed ? "one moved beyond its normal spread" : "none moved",
+                det.causeTest.changed ? "one moved beyond its normal spread"
+                                      : "none moved at the detector's rate",
                 det.causeTest.pValue, det.causeTest.cause.empty() ? "-" : det.causeTest.cause.c_str(),
                 !det.causeTest.secondLook                              ? ""
                 : det.causeTest.cause == "inlet_moisture_sensor_noise" ? ", the gauge's scatter"
@@ -240,11 +242,15 @@ int runDiscover(const CommandOptions& o) {
                 "the PBM with its last error held X_out %.4f -> %.4f %% wb, T_out %.4f -> %.4f °C.\n",
                 ref.persistenceMoisture, ref.persistenceTemperature, ref.pbmHoldMoistureBefore,
                 ref.pbmHoldMoistureAfter, ref.pbmHoldTemperatureBefore, ref.pbmHoldTemperatureAfter);
+            // Within half a percent is a tie, not a win: "beats both (0.0345 against 0.0345)" read
+            // as a joke.
             const auto verdict = [](double mae, double best) {
-                return mae < best ? "beats both" : "does NOT beat the better of them";
+                return mae < 0.995 * best    ? "beats both"
+                       : mae <= 1.005 * best ? "is level with the better of them"
+                                             : "does NOT beat the better of them";
             };
-            std::printf("PGRL-CC on the model written: X_out %s (%.4f against %.4f), T_out %s (%.4f against "
-                        "%.4f).\n",
+            std::printf("PGRL-CC on the model written: X_out %s (%.5f against %.5f), T_out %s (%.5f against "
+                        "%.5f).\n",
                         verdict(maeX, ref.bestMoisture(kept)), maeX, ref.bestMoisture(kept),
                         verdict(maeT, ref.bestTemperature(kept)), maeT, ref.bestTemperature(kept));
         }

@@ -107,7 +107,10 @@ judgeWith(const std::vector<data::SiBatch>& reference, const std::vector<physics
     auto monitor = monitoring::Monitor::fit(refRuns, columns, mo);
     if (!monitor) {
         Error e = monitor.error();
-        e.reason = "the reference period: " + e.reason;
+        // The monitor's own name ("monitor.fit: reference run 'B01'") tells a user nothing; the run does.
+        const std::string internal = "monitor.fit";
+        e.place = "the reference period" +
+                  (e.place.rfind(internal, 0) == 0 ? e.place.substr(internal.size()) : ": " + e.place);
         return e;
     }
     return monitor->judge(newRuns);

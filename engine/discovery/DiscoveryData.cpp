@@ -103,11 +103,18 @@ Expected<Prepared> prepare(const std::vector<data::SiBatch>& batches, const hybr
         }
     }
     if (pr.subsetRefs.size() < 100 || (!allRowsTrain && out.keptTest < 100)) {
+        // Say which count is short and why: the tests read every stride-th kept row (neighbouring
+        // seconds say almost the same), so 300 clean rows give 60, which read as rows lost.
+        std::string why = "too few rows: the tests read every " + std::to_string(stride) + "th of the " +
+                          std::to_string(out.keptTrain) + " " + (allRowsTrain ? "" : "training ") +
+                          "rows that pass the cleaning rules, " + std::to_string(pr.subsetRefs.size()) +
+                          " in all (need 100, so at least " + std::to_string(100 * stride) + " rows)";
+        if (!allRowsTrain) {
+            why += ", and " + std::to_string(out.keptTest) + " held-out rows pass them (need 100)";
+        }
         return Error{ErrorKind::BadInput,
                      "discover",
-                     "too few rows: " + std::to_string(pr.subsetRefs.size()) +
-                         " training rows in the tests (need 100) and " + std::to_string(out.keptTest) +
-                         " held-out rows (need 100) pass the cleaning rules",
+                     why + ": give longer batches or more of them",
                      ErrorCode::NotEnoughData,
                      {"rows", std::to_string(out.keptTrain + out.keptTest)}};
     }

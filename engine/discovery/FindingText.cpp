@@ -168,9 +168,9 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
         }
         text +=
             l.ruledOut
-                ? format(" Not %s: fitted in its place it leaves %.2g times the held-out error (p = %.2g).",
+                ? format(" Not %s: fitted in its place it leaves %.3g times the held-out error (p = %.2g).",
                          l.cause.c_str(), l.heldOutLossRatio, l.pValue)
-                : format(" %s fits these data about as well (held-out error %.2g times, p = %.2g): the "
+                : format(" %s fits these data about as well (held-out error %.3g times, p = %.2g): the "
                          "data cannot tell them apart.",
                          l.cause.c_str(), l.heldOutLossRatio, l.pValue);
     }

@@ -153,15 +153,31 @@ Expected<std::string> judgeAgainstReference(const Problem& pr, Finding& f) {
     if (moved) {
         return std::string();
     }
+    // A fit that stopped at the model's limit for the parameter understates the change and
+    // overstates its uncertainty: say so, or a heavy fouling reads as a normal one.
+    std::string atLimit;
+    const double span = info.upper - info.lower;
+    if (std::isfinite(span) && span > 0) {
+        // A cause that grows from 0 (a loss, a lag) at 0 is simply absent: only an offset's lower
+        // limit is a limit of the model's form.
+        const bool upper = f.value >= info.upper - 1e-6 * span;
+        if (upper || (twoSided(f.parameter) && f.value <= info.lower + 1e-6 * span)) {
+            atLimit = format("; the fit stopped at the model's %s limit of %.4g %s, so the line may be "
+                             "further from its normal than the model's form can say",
+                             upper ? "upper" : "lower", upper ? info.upper : info.lower,
+                             std::string(info.unit).c_str());
+        }
+    }
     // The test weighs this estimate's own uncertainty with the normal spread: say both, so that a
     // value outside the normal range but too uncertain to tell reads as what it is.
     return format(
-        "within its normal spread: %.4g %s here (95 %% CI %.4g to %.4g) against %.4g on the "
-        "reference period (a period's normal range %.4g to %.4g); the change is %.2g times its "
-        "combined uncertainty, needs %s%.3g%s",
-        f.value, std::string(info.unit).c_str(), f.ci95Low, f.ci95High, rv->value, f.referenceCi95Low,
-        f.referenceCi95High, z, twoSided(f.parameter) ? "|z| > " : "> ", critical,
-        atDetectorRate ? " (no detector has flagged a change: the detectors' false-alarm rate)" : "");
+               "within its normal spread: %.4g %s here (95 %% CI %.4g to %.4g) against %.4g on the "
+               "reference period (a period's normal range %.4g to %.4g); the change is %.2g times its "
+               "combined uncertainty, needs %s%.3g%s",
+               f.value, std::string(info.unit).c_str(), f.ci95Low, f.ci95High, rv->value, f.referenceCi95Low,
+               f.referenceCi95High, z, twoSided(f.parameter) ? "|z| > " : "> ", critical,
+               atDetectorRate ? " (no detector has flagged a change: the detectors' false-alarm rate)" : "") +
+           atLimit;
 }
 
 Status testNamedCauses(const Problem& pr, const std::vector<Finding>& findings, std::size_t tested,

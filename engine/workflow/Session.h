@@ -315,9 +315,12 @@ public:
     const LatestResults& latest() const { return m_latest; }
 
 private:
-    /// A reference period read with the session's cleaning rules (a rejected file: its error).
-    Expected<std::vector<data::SiBatch>>
-    loadReference(const std::string& path, const std::string& mappingPath, const Progress& progress) const;
+    /// A reference period read with the session's cleaning rules (a rejected file: its error);
+    /// what reading and checking its files noticed (a unit that looks wrong, a gap) into @p notes.
+    Expected<std::vector<data::SiBatch>> loadReference(const std::string& path,
+                                                       const std::string& mappingPath,
+                                                       const Progress& progress,
+                                                       std::vector<std::string>& notes) const;
 
     Status requireData(const std::string& action) const;
     /// The loaded data keep at least one row after cleaning; else why not (BadInput).

@@ -107,7 +107,8 @@ Expected<OpenResult> Session::open(const OpenOptions& options, const Progress& p
 
 Expected<std::vector<data::SiBatch>> Session::loadReference(const std::string& path,
                                                             const std::string& mappingPath,
-                                                            const Progress& progress) const {
+                                                            const Progress& progress,
+                                                            std::vector<std::string>& notes) const {
     data::ReadOptions ro;
     if (!mappingPath.empty()) {
         auto mapping = data::readColumnMapping(mappingPath);
@@ -132,6 +133,11 @@ Expected<std::vector<data::SiBatch>> Session::loadReference(const std::string& p
                      "the reference period holds no batch file",
                      ErrorCode::NotEnoughData,
                      {"reference batches", "0"}};
+    }
+    // The same checks the data get (a hot air 74 K from its setpoint: °F under a °C header?):
+    // a reference read wrong commissions the model wrong, and every later verdict with it.
+    for (const auto& n : data::summarize(loaded.dataSet, m_cleaning).notes) {
+        notes.push_back("the reference period: " + n);
     }
     return data::toSi(loaded.dataSet, data::clean(loaded.dataSet, m_cleaning));
 }

@@ -9,9 +9,11 @@
 #include "hybrid/Evaluation.h"
 #include "workflow/session/SessionInternal.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
+#include <utility>
 
 namespace drytwin::workflow {
 
@@ -20,17 +22,47 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
     if (auto st = ready(options, "discover"); !st) {
         return st.error();
     }
+    // Discovery's own stages fill the bar to 95 % when PGRL-CC is retrained after it: the bar
+    // went from "100 % done" back to 97 % "retraining" before.
+    const double discoveryShare = options.retrainResidual ? 0.95 : 1.0;
+    const Progress discoveryProgress = !progress ? Progress{} : [&](const ProgressInfo& info) {
+        ProgressInfo scaled = info;
+        if (scaled.stage == "discover") {
+            scaled.fraction *= discoveryShare;
+        }
+        return progress(scaled);
+    };
     Expected<discovery::DiscoveryResult> found = Error{};
     if (options.referencePath.empty()) {
-        found = discovery::discover(m_si, m_model, options.discovery, progress);
+        found = discovery::discover(m_si, m_model, options.discovery, discoveryProgress);
     } else {
-        auto reference = loadReference(options.referencePath, options.referenceMappingPath, progress);
+        std::vector<std::string> referenceNotes;
+        auto reference =
+            loadReference(options.referencePath, options.referenceMappingPath, progress, referenceNotes);
         if (!reference) {
             return reference.error();
         }
-        found = discovery::discoverChange(*reference, m_si, m_model, options.discovery, progress);
+        // Outputs one period measures and the other does not are left out of the detectors, and
+        // the causes' normal values rest on what the reference measured: say so.
+        const auto measuredIn = [](const std::vector<data::SiBatch>& set, bool data::SiBatch::*has) {
+            return !set.empty() && std::all_of(set.begin(), set.end(), [&](const auto& b) { return b.*has; });
+        };
+        for (const auto& [has, name] : {std::pair{&data::SiBatch::hasXHdt, "X_hdt_pct"},
+                                        std::pair{&data::SiBatch::hasTHdt, "T_hdt_C"}}) {
+            const bool inReference = measuredIn(*reference, has), inData = measuredIn(m_si, has);
+            if (inReference != inData) {
+                referenceNotes.push_back(std::string(name) + " is measured in " +
+                                         (inData
+                                              ? "the data but not in every batch of the reference period"
+                                              : "the reference period but not in every batch of the data") +
+                                         ": the two periods are compared on the outputs both measure, and a "
+                                         "cause's normal value rests on what the reference measured");
+            }
+        }
+        found = discovery::discoverChange(*reference, m_si, m_model, options.discovery, discoveryProgress);
         if (found) {
             found->referencePath = options.referencePath;
+            found->notes.insert(found->notes.begin(), referenceNotes.begin(), referenceNotes.end());
         }
     }
     if (!found) {
@@ -128,6 +160,11 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
             if (!st) {
                 return st.error();
             }
+        }
+        // The trainings take no progress callback: a cancel asked for during them is honoured
+        // here, before anything is returned to be written (it was ignored, and the files written).
+        if (reportProgress(progress, "discover", 0.995, "comparing PGRL-CC on both models")) {
+            return cancelledError("discover");
         }
         result.hasHybrid = true;
         // Never make the hybrid worse (issue #23): where PGRL-CC on the extended physics model
