@@ -81,6 +81,23 @@ int runInspect(const CommandOptions& o) {
         }
         std::printf("\n");
     }
+    if (!s.missingCells.empty()) {
+        std::printf("\nMissing cells (the first %zu per column; the cleaning rules decide what to do with "
+                    "them):\n",
+                    data::DataSetSummary::kMaxListedMissing);
+        for (const auto& m : s.missingCells) {
+            const std::string column =
+                m.column == m.contractColumn ? m.column : m.column + " (" + m.contractColumn + ")";
+            std::printf("  %s:%d:%d: %s\n", m.file.c_str(), m.line, m.fileColumn, column.c_str());
+        }
+        std::size_t cells = 0;
+        for (const auto& c : s.columns) {
+            cells += c.missing;
+        }
+        if (s.missingCells.size() < cells) {
+            std::printf("  … and %zu more\n", cells - s.missingCells.size());
+        }
+    }
     if (s.impossibleTotal > 0) {
         std::printf(
             "\nWARNING: %zu physically impossible value(s); no model should see them (fix the file or "

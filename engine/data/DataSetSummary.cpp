@@ -9,6 +9,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace drytwin::data {
 
@@ -126,10 +127,11 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
     // the column taken as absent, which changes the model's result without an error; said once per
     // header, with the files it is in.
     std::map<std::pair<std::string, Column>, std::vector<std::string>> lookalikes;
-    std::vector<std::size_t> listed(kColumnCount, 0);
+    std::vector<std::size_t> listed(kColumnCount, 0), listedMissing(kColumnCount, 0);
     for (std::size_t bi = 0; bi < data.batches.size(); ++bi) {
         const Batch& b = data.batches[bi];
         BatchSummary bs;
+        const std::size_t missingBefore = s.missingCells.size();
         bs.id = b.id;
         bs.path = b.sourcePath;
         bs.run = b.run;
@@ -185,9 +187,16 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
                 }
             }
             emptyColumnNote(b, col, s);
-            for (double v : col.values) {
+            for (std::size_t r = 0; r < col.values.size(); ++r) {
+                const double v = col.values[r];
                 if (std::isnan(v)) {
                     ++cs.missing;
+                    if (listedMissing[i] < DataSetSummary::kMaxListedMissing) {
+                        ++listedMissing[i];
+                        s.missingCells.push_back({b.sourcePath.empty() ? b.id : b.sourcePath,
+                                                  r < b.lineOfRow.size() ? b.lineOfRow[r] : 0, fileColumn,
+                                                  col.fileName, std::string(spec(col.id).name)});
+                    }
                     continue;
                 }
                 cs.min = std::min(cs.min, v);
@@ -206,6 +215,11 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
                 }
             }
         }
+        // A file's missing cells in the order an editor shows them.
+        std::sort(s.missingCells.begin() + static_cast<std::ptrdiff_t>(missingBefore), s.missingCells.end(),
+                  [](const MissingCellPlace& a, const MissingCellPlace& c) {
+                      return std::tie(a.line, a.fileColumn) < std::tie(c.line, c.fileColumn);
+                  });
         s.rows += bs.rows;
         s.missing += bs.missing;
         s.batches.push_back(bs);

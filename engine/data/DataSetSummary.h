@@ -45,6 +45,15 @@ struct ImpossibleValue {
     std::string rule; ///< e.g. "must lie in [0, 100] %"
 };
 
+/// @brief A missing cell (empty, NaN, #N/A, a historian's bad-quality state) where it is in its file.
+struct MissingCellPlace {
+    std::string file;           ///< path of the batch file (or its id when read from memory)
+    int line = 0;               ///< 1-based line in the file (0: not known)
+    int fileColumn = 0;         ///< 1-based column in the file (0: not known)
+    std::string column;         ///< the file's header
+    std::string contractColumn; ///< the contract column it is read as
+};
+
 /// @brief What a user needs to trust a data set (drytwin inspect, the GUI's data panel).
 struct DataSetSummary {
     std::vector<BatchSummary> batches;
@@ -56,11 +65,15 @@ struct DataSetSummary {
     /// The first kMaxListedImpossible impossible values per column, in file order …
     std::vector<ImpossibleValue> impossible;
     std::size_t impossibleTotal = 0; ///< … and how many there are in all
-    std::vector<std::string> notes;  ///< what reading the files noticed (DataSet::notes)
+    /// The first kMaxListedMissing missing cells per column, in file order (the count per column
+    /// is in `columns`, per batch in `batches`): CONTRACT.md §1 reports them with file and line.
+    std::vector<MissingCellPlace> missingCells;
+    std::vector<std::string> notes; ///< what reading the files noticed (DataSet::notes)
     /// The notes (also in `notes`) on a required column without a single value: why no row can be
     /// used, kept apart so that an error can say so without matching the notes' wording.
     std::vector<std::string> emptyRequiredColumns;
     static constexpr std::size_t kMaxListedImpossible = 20;
+    static constexpr std::size_t kMaxListedMissing = 5;
 };
 
 /// @brief Summarises a loaded data set and what the cleaning rules would drop.

@@ -256,6 +256,15 @@ std::string inspectJson(const data::DataSetSummary& s) {
              {"seconds", f.seconds},
              {"value", f.value}});
     }
+    // Where the missing cells are (the first few per column; `missing` counts them all).
+    j["missing_cells"] = json::array();
+    for (const auto& m : s.missingCells) {
+        j["missing_cells"].push_back({{"file", m.file},
+                                      {"line", m.line},
+                                      {"file_column", m.fileColumn},
+                                      {"column", m.column},
+                                      {"contract_column", m.contractColumn}});
+    }
     j["impossible_values"] = {{"total", s.impossibleTotal}, {"listed", json::array()}};
     for (const auto& w : s.impossible) {
         j["impossible_values"]["listed"].push_back({{"file", w.file},

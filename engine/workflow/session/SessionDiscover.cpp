@@ -42,24 +42,28 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
         if (!reference) {
             return reference.error();
         }
-        // Outputs one period measures and the other does not are left out of the detectors, and
-        // the causes' normal values rest on what the reference measured: say so.
+        // Both periods are compared on the outputs both measure: an output only the data measure
+        // has no normal to be judged against (a reference without the tube-outlet readings once
+        // let a cause that doubled the outlet temperature's error be named on them).
         const auto measuredIn = [](const std::vector<data::SiBatch>& set, bool data::SiBatch::*has) {
             return !set.empty() && std::all_of(set.begin(), set.end(), [&](const auto& b) { return b.*has; });
         };
+        std::vector<data::SiBatch> judged = m_si;
         for (const auto& [has, name] : {std::pair{&data::SiBatch::hasXHdt, "X_hdt_pct"},
                                         std::pair{&data::SiBatch::hasTHdt, "T_hdt_C"}}) {
             const bool inReference = measuredIn(*reference, has), inData = measuredIn(m_si, has);
-            if (inReference != inData) {
-                referenceNotes.push_back(std::string(name) + " is measured in " +
-                                         (inData
-                                              ? "the data but not in every batch of the reference period"
-                                              : "the reference period but not in every batch of the data") +
-                                         ": the two periods are compared on the outputs both measure, and a "
-                                         "cause's normal value rests on what the reference measured");
+            if (inReference == inData) {
+                continue;
             }
+            for (auto& b : inData ? judged : *reference) {
+                b.*has = false;
+            }
+            referenceNotes.push_back(std::string(name) + " is measured in " +
+                                     (inData ? "the data but not in every batch of the reference period"
+                                             : "the reference period but not in every batch of the data") +
+                                     ": the periods are compared on the outputs both measure, without it");
         }
-        found = discovery::discoverChange(*reference, m_si, m_model, options.discovery, discoveryProgress);
+        found = discovery::discoverChange(*reference, judged, m_model, options.discovery, discoveryProgress);
         if (found) {
             found->referencePath = options.referencePath;
             found->notes.insert(found->notes.begin(), referenceNotes.begin(), referenceNotes.end());

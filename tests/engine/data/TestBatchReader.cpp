@@ -203,6 +203,22 @@ private Q_SLOTS:
         QCOMPARE(b->missing[1].columnName, std::string("T_hot_C"));
         QVERIFY(std::isnan((*b->values(Column::XOut))[1]));
         QVERIFY(std::isnan((*b->values(Column::THot))[2]));
+        // inspect lists where they are (CONTRACT.md §1: with file and line), the first few a column.
+        DataSet ds;
+        ds.batches.push_back(*b);
+        for (int i = 0; i < 8; ++i) { // more than are listed in one column
+            Batch more = *b;
+            more.id = more.sourcePath = "more" + std::to_string(i) + ".csv";
+            ds.batches.push_back(more);
+        }
+        const auto summary = summarize(ds);
+        QCOMPARE(summary.missingCells.size(), 2 * DataSetSummary::kMaxListedMissing);
+        QCOMPARE(summary.missingCells[0].file, b->sourcePath.empty() ? b->id : b->sourcePath);
+        QCOMPARE(summary.missingCells[0].line, 3);
+        QCOMPARE(summary.missingCells[0].fileColumn, 12);
+        QCOMPARE(summary.missingCells[0].contractColumn, std::string("X_out_pct"));
+        QCOMPARE(summary.missingCells[1].line, 4);
+        QCOMPARE(summary.missingCells[1].contractColumn, std::string("T_hot_C"));
     }
 
     void malformed_data() {
