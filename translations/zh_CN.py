@@ -8,6 +8,10 @@ import re
 import sys
 
 ZH = {
+    "DryTwin (the causes' estimates): none moved beyond its normal spread (p %1)": "DryTwin（各原因的估计）：均未超出其正常范围（p %1）",
+    "DryTwin (the causes' one-step estimates): <b>changed</b> (p %1): %2 moved beyond its normal spread": "DryTwin（各原因的一步估计）：<b>已变化</b>（p %1）：%2 超出其正常范围",
+    "DryTwin (the inlet gauge's own scatter): <b>changed</b> (p %1): %2 rose beyond the reference's": "DryTwin（进口水分仪自身的散布）：<b>已变化</b>（p %1）：%2 高于参考期",
+    "DryTwin (a named cause's fitted value): <b>changed</b> (p %1): %2 moved beyond its normal spread": "DryTwin（已命名原因的拟合值）：<b>已变化</b>（p %1）：%2 超出其正常范围",
     "DryTwin (the causes' estimates): none moved beyond its normal spread (p = %1)": "DryTwin（各原因的估计）：均未超出其正常范围（p = %1）",
     "DryTwin (the named causes' fitted values, the inlet gauge's scatter): <b>changed</b> (p = %1): %2 moved beyond its normal spread": "DryTwin（已命名原因的拟合值、进口水分仪的散布）：<b>已变化</b>（p = %1）：%2 超出其正常范围",
     "model (nothing extended)": "模型（未扩展）",

@@ -201,19 +201,26 @@ void DiscoverPanel::showDetection() {
         return line;
     };
     // DryTwin's detector: its monitor of the model's error, or a cause's parameter beyond its spread.
+    // A p below what a double tells from 0 reads "< 1e-15", not "p = 0".
+    const QString causeP = det.causeTest.pValue < 1e-15
+                               ? QStringLiteral("&lt; 1e-15") /* rich text: a bare "<" opens a tag */
+                               : QStringLiteral("= %1").arg(det.causeTest.pValue, 0, 'g', 2);
+    const QString movedCause = causeDisplayName(det.causeTest.cause).toHtmlEscaped();
+    const bool gaugeScatter = det.causeTest.cause == "inlet_moisture_sensor_noise";
     const QString causes =
         !det.causeTest.changed
-            ? tr("DryTwin (the causes' estimates): none moved beyond its normal spread (p = %1)")
-                  .arg(det.causeTest.pValue, 0, 'g', 2)
-        : det.causeTest.secondLook
-            ? tr("DryTwin (the named causes' fitted values, the inlet gauge's scatter): <b>changed</b> "
-                 "(p = %1): %2 moved beyond its normal spread")
-                  .arg(det.causeTest.pValue, 0, 'g', 2)
-                  .arg(causeDisplayName(det.causeTest.cause).toHtmlEscaped())
-            : tr("DryTwin (the causes' one-step estimates): <b>changed</b> (p = %1): %2 moved beyond its "
+            ? tr("DryTwin (the causes' estimates): none moved beyond its normal spread (p %1)").arg(causeP)
+        : !det.causeTest.secondLook
+            ? tr("DryTwin (the causes' one-step estimates): <b>changed</b> (p %1): %2 moved beyond its "
                  "normal spread")
-                  .arg(det.causeTest.pValue, 0, 'g', 2)
-                  .arg(causeDisplayName(det.causeTest.cause).toHtmlEscaped());
+                  .arg(causeP, movedCause)
+        : gaugeScatter
+            ? tr("DryTwin (the inlet gauge's own scatter): <b>changed</b> (p %1): %2 rose beyond the "
+                 "reference's")
+                  .arg(causeP, movedCause)
+            : tr("DryTwin (a named cause's fitted value): <b>changed</b> (p %1): %2 moved beyond its normal "
+                 "spread")
+                  .arg(causeP, movedCause);
     // Conditions the reference never saw, beside the verdict they may explain.
     QString unseenConditions;
     for (const auto& n : r->discovery.notes) {
