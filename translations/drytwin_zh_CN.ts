@@ -72,42 +72,42 @@
 <context>
     <name>DiscoverPanel</name>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="389"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="390"/>
         <source>compensation</source>
         <translation>相互补偿</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="390"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="391"/>
         <source>inconsistent</source>
         <translation>各批次不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="391"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="392"/>
         <source>not constant</source>
         <translation>批次内不恒定</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="392"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="393"/>
         <source>within normal range</source>
         <translation>在正常范围内</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="393"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="394"/>
         <source>below the floor</source>
         <translation>低于实用下限</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="394"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="395"/>
         <source>no held-out gain</source>
         <translation>留出集无增益</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="395"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="396"/>
         <source>its look-alike</source>
         <translation>是其相似原因</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="396"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="397"/>
         <source>line dynamics</source>
         <translation>产线自身动态</translation>
     </message>
@@ -1757,7 +1757,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="758"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="770"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
@@ -1778,7 +1778,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="46"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="764"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="776"/>
         <source>Score z: how strongly the model&apos;s error points at this cause, in standard deviations of chance; above about 3 is strong evidence.</source>
         <translation>得分 z：模型误差指向该原因的强度，以偶然波动的标准差计；约 3 以上为有力证据。</translation>
     </message>
@@ -1950,8 +1950,8 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="125"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="722"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="914"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="734"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="926"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -1960,7 +1960,7 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="752"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="764"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
@@ -2008,50 +2008,50 @@
         <translation>DryTwin（各原因的参数）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="239"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="240"/>
         <source>&lt;b&gt;The line has changed since the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;自参考期以来产线已发生变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="246"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="247"/>
         <source>&lt;b&gt;No change against the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;与参考期相比无变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="247"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="248"/>
         <source> Each detector&apos;s false-alarm rate: %1 % per data set.</source>
         <translation> 每个检测器的误报率：每个数据集 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="248"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="249"/>
         <source>DryTwin (the model&apos;s error)</source>
         <translation>DryTwin（模型误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="250"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="251"/>
         <source>Dynamic PCA (the measured columns)</source>
         <translation>动态 PCA（测量列）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="275"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="291"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="276"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="292"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="275"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="291"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="276"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="292"/>
         <source>dynamic PCA</source>
         <translation>动态 PCA</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="277"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="279"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="278"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="280"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="321"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="322"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
@@ -2064,67 +2064,67 @@
         <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="331"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="332"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="335"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="336"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="338"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="339"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="340"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="341"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="344"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="345"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="349"/>
         <source>a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less</source>
         <translation>干燥管出口与出口水分有相同的稳定偏差，干燥管干燥越少处越大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="351"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="352"/>
         <source>after each hot-air setpoint step the outlet temperature and moisture move before the simulation, which follows the slow reading</source>
         <translation>每次热风设定值阶跃后，出口温度和水分先于仿真变化，仿真跟随的是迟缓的读数</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="354"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="355"/>
         <source>the inlet-moisture reading scatters from second to second while the outlet does not follow it, and the simulated outlet does</source>
         <translation>入口水分读数逐秒跳动，出口并不跟随，而仿真的出口却跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="364"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="365"/>
         <source>a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet temperature&apos;s response as much as the moisture&apos;s, a meter lag delays the moisture reading alone; or grab samples timed against the meter</source>
         <translation>以 1 s 记录一次热风设定值阶跃：输送时间误差使出口温度与水分的响应同样延迟，水分仪滞后只延迟水分读数；或对照水分仪定时取样</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="371"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="372"/>
         <source>oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter offset does not</source>
         <translation>在出口对照水分仪、在入口对照入口水分计做烘箱法实验室取样；或增加干燥管出口水分通道（X_hdt）：入口水分计偏差会使其变化，出口水分仪偏差不会</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="378"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="379"/>
         <source>a gas-temperature reading at the tube&apos;s outlet end at two feed rates: wall loss does not change with the feed, gas-phase cooling grows with it</source>
         <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="404"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="405"/>
         <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
         <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="407"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="408"/>
         <source>its size is not consistent across batches or operating regions</source>
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
@@ -2133,62 +2133,62 @@
         <translation type="vanished">偏差在整个批次中读数不变；此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="415"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="416"/>
         <source>its value lies within the reference period&apos;s normal range: not a change</source>
         <translation>其值在参考期的正常范围内：不是变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="418"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="419"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="421"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="422"/>
         <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
         <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="425"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="426"/>
         <source>the outlet channels&apos; timing points to its look-alike (the moisture answers later than the temperature: a meter, not the transport)</source>
         <translation>出口两个通道的时序指向它的相似原因（水分比温度响应更晚：是水分仪，而非输送）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="430"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="431"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="433"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="434"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="450"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="451"/>
         <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
         <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="455"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="456"/>
         <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
         <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="458"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="459"/>
         <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
         <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="463"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="464"/>
         <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
         <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="469"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="470"/>
         <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="519"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="531"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
@@ -2197,62 +2197,62 @@
         <translation type="vanished">误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="534"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="546"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="539"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="551"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="551"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="563"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="558"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="570"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="573"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="585"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="578"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="590"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="578"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="590"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="581"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="593"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="585"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="597"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="603"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="615"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="609"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="621"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="592"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="604"/>
         <source>%1 was named on top of it (a further %2 % of the held-out error): alone it predicts worse (%3 times the held-out error), but the change needs both forms, so the data cannot say which of them it is.</source>
         <translation>在它之上又判定了 %1（再减少留出误差的 %2 %）：单独使用时预测更差（留出误差的 %3 倍），但这一变化需要两种形式共同解释，因此数据无法判断是其中哪一个。</translation>
     </message>
@@ -2265,77 +2265,82 @@
         <translation>DryTwin（各原因的一步估计）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="241"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="242"/>
         <source>&lt;b&gt;A cause has changed since the reference period: %1.&lt;/b&gt; The detectors, judging the data set as a whole, stayed below their limits; fitting the causes found it beyond its normal spread with a gain on held-out data (below). Check it on the plots.</source>
         <translation>&lt;b&gt;自参考期以来有一个原因发生了变化：%1。&lt;/b&gt;检测器对整个数据集的判断未超出其限值；拟合各原因发现它超出正常范围，且在留出数据上有改进（见下）。请在图上核对。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="327"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="328"/>
         <source>the error drifts over each batch, or over the recording from the fouling&apos;s onset, and starts afresh with each new batch</source>
         <translation>误差在每个批次内（或在记录中自结垢开始起）逐渐漂移，每个新批次重新开始</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="398"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="399"/>
         <source>not named</source>
         <translation>未指认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="479"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="480"/>
         <source>%1 was named first, then withdrawn: refitted together with the causes named after it, it is no change of the line (it had taken up what they explain). In detail: %2.</source>
         <translation>%1 先被识别，随后撤回：与之后识别的原因一起重新拟合后，它并非产线的变化（它曾吸收了那些原因所解释的部分）。详情：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="486"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="487"/>
         <source>The reference holds %1 batch(es): a period&apos;s normal spread comes from thirds of them, which share their day and weather; a change named here may be a difference of conditions the reference never showed. A reference of several batches over the conditions the line runs in (weeks, seasons) judges better.</source>
         <translation>参考期仅含 %1 个批次：一个时段的正常离散取自其三等分，它们同属一天、同样天气；此处识别出的变化可能只是参考期从未出现过的工况差异。覆盖产线运行工况（数周、不同季节）的多批次参考期判断得更好。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="622"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="500"/>
+        <source>The reference period itself drifts: the model&apos;s %1 error changes by %2 %3 within a mean batch. A reference should be a period when the line ran well; against this one a change since may read as none.</source>
+        <translation>参考期本身在漂移：模型的 %1 误差在一个平均批次内变化 %2 %3。参考期应是产线运行良好的时段；以此为参考，之后的变化可能显示为无变化。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="634"/>
         <source>%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts %4 better; which output a cause favours is the model&apos;s structure, so the data cannot tell them apart.</source>
         <translation>%1 同样拟合：总体上它留下 %2 倍的留出误差（p = %3），但它对%4的预测更好；原因偏向哪个输出取决于模型自身的结构，因此数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="628"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="640"/>
         <source>the outlet moisture</source>
         <translation>出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="629"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="641"/>
         <source>the outlet temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="630"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
         <source>the tube-outlet moisture</source>
         <translation>管出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="631"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="643"/>
         <source>the tube-outlet temperature</source>
         <translation>管出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="635"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="647"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="636"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="648"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="643"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="655"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="655"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="667"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="659"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="671"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -2344,27 +2349,27 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="676"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="688"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="676"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="688"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="717"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="729"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="718"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="730"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="736"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="748"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2381,12 +2386,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="793"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="805"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="793"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="805"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2395,23 +2400,23 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="842"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="854"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="845"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="857"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="853"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="865"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="548"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="773"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="560"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="785"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
@@ -2436,17 +2441,17 @@
         <translation>DryTwin（已命名原因的拟合值）：&lt;b&gt;已变化&lt;/b&gt;（p %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="660"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="672"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="661"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="673"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="665"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="677"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
@@ -2455,18 +2460,18 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="739"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="751"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="749"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="761"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="236"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="750"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="237"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="762"/>
         <source>, </source>
         <translation>、</translation>
     </message>
@@ -2475,71 +2480,71 @@
         <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="753"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="765"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="790"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="802"/>
         <source>not fitted (weaker)</source>
         <translation>未拟合（证据较弱）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="863"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="875"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="879"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="891"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="888"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="900"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="895"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="907"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="900"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="912"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="908"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="920"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="923"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="935"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="650"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="924"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="950"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="662"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="936"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="962"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="671"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="683"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out goes from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="925"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="937"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="650"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="926"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="954"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="662"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="938"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="966"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2552,27 +2557,27 @@
         <translation>DryTwin（已命名原因的拟合值、进口水分仪的散布）：&lt;b&gt;已变化&lt;/b&gt;（p = %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="324"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="325"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed rate and by inlet moisture)</source>
         <translation>误差随进料量和入口水分增大（按进料量和按入口水分分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="410"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="411"/>
         <source>it does not change within a batch (an offset, the tube&apos;s wall or gas phase), but this error grows or shrinks within the batch (fouling, a drifting reading)</source>
         <translation>它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="502"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="514"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="506"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="518"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the model&apos;s error there is judged beyond the reference&apos;s conditions, and an alarm there may be that condition rather than a change of the line.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="524"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="536"/>
         <source>the error follows %1 %2 s later (correlation %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（相关系数 %3）</translation>
     </message>
@@ -2581,17 +2586,17 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="703"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="758"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="770"/>
         <source>Change z</source>
         <translation>变化 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="761"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="773"/>
         <source>Change z: how far the cause&apos;s one-step estimate here lies from its normal value on the reference period, in units of both estimates&apos; errors and the spread between the reference&apos;s periods; above 2 it moved.</source>
         <translation>变化 z：该原因在此处的一步估计与其在参考期的正常值相差多远，以两次估计的误差及参考期各时段间的离散为单位；大于 2 即为发生了变化。</translation>
     </message>
@@ -2604,87 +2609,87 @@
         <translation>未拟合：证据弱于已拟合的候选</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="803"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="815"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="817"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="829"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="824"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="836"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="838"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="850"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="883"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="895"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="913"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="925"/>
         <source>Held-out accuracy: nothing was named, so nothing was extended (before = after):</source>
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="927"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="939"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="936"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="948"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="949"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="961"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="949"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="961"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="950"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="962"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="953"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="965"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="953"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="965"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="954"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="966"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="981"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="993"/>
         <source>model (nothing extended)</source>
         <translation>模型（未扩展）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="983"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="995"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="984"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="996"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>

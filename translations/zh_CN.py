@@ -8,6 +8,7 @@ import re
 import sys
 
 ZH = {
+    "The reference period itself drifts: the model's %1 error changes by %2 %3 within a mean batch. A reference should be a period when the line ran well; against this one a change since may read as none.": "参考期本身在漂移：模型的 %1 误差在一个平均批次内变化 %2 %3。参考期应是产线运行良好的时段；以此为参考，之后的变化可能显示为无变化。",
     "DryTwin (the causes' estimates): none moved beyond its normal spread (p %1)": "DryTwin（各原因的估计）：均未超出其正常范围（p %1）",
     "DryTwin (the causes' one-step estimates): <b>changed</b> (p %1): %2 moved beyond its normal spread": "DryTwin（各原因的一步估计）：<b>已变化</b>（p %1）：%2 超出其正常范围",
     "DryTwin (the inlet gauge's own scatter): <b>changed</b> (p %1): %2 rose beyond the reference's": "DryTwin（进口水分仪自身的散布）：<b>已变化</b>（p %1）：%2 高于参考期",

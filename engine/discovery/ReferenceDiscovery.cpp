@@ -590,6 +590,23 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     result.referenceRows = refPrepared->keptTrain;
     result.baseParameters = commissionedParameters;
     result.notes = dataNotes(batches);
+    // A reference is the line running well. One whose own error drifts within its batches (a
+    // fouling that grows from every cleaning, a meter that fogs) makes that drift the normal, and a
+    // line that runs well afterwards reads as "no change": say so (a newcomer's review swapped the
+    // periods and got "no change" beside a reference drifting 1.7 % wb a batch).
+    for (const auto& o : analyse(refPr, *refSims)) {
+        const bool moisture = o.unit == "% wb";
+        const double drift = std::abs(o.trendPerHour) * o.meanBatchHours;
+        if ((o.output == "X_out" || o.output == "T_out") && o.trendSe > 0 &&
+            std::abs(o.trendPerHour) > 3 * o.trendSe && drift > (moisture ? 0.5 : 3.0)) {
+            result.notes.push_back(
+                format("the reference period itself drifts: the model's %s error changes by %.2g %s within "
+                       "a mean batch (%.3g ± %.2g %s/h); a reference should be a period when the line ran "
+                       "well, or a change since may read as none",
+                       o.output.c_str(), o.trendPerHour * o.meanBatchHours, o.unit.c_str(), o.trendPerHour,
+                       o.trendSe, o.unit.c_str()));
+        }
+    }
     result.notes.push_back(
         format("commissioned on the reference period (%zu batch(es), %zu rows): h_HDT %.4g "
                "W/(m²·K), k_HDT %.4g m/s, held fixed on the data judged",

@@ -224,7 +224,8 @@ void DiscoverPanel::showDetection() {
     // Conditions the reference never saw, beside the verdict they may explain.
     QString unseenConditions;
     for (const auto& n : r->discovery.notes) {
-        if (n.find("outside what the reference saw") != std::string::npos) {
+        if (n.find("outside what the reference saw") != std::string::npos ||
+            n.find("the reference period itself drifts") != std::string::npos) {
             unseenConditions += QStringLiteral("<br><span style=\"color:#a05a00\">%1</span>")
                                     .arg(noteText(n).toHtmlEscaped());
         }
@@ -489,6 +490,17 @@ QString noteText(const std::string& note) {
                    "difference of conditions the reference never showed. A reference of several "
                    "batches over the conditions the line runs in (weeks, seasons) judges better.")
             .arg(numbers().first());
+    }
+    // ReferenceDiscovery.cpp: "the reference period itself drifts: the model's X_out error changes by
+    // 2.7 % wb within a mean batch (...)".
+    static const QRegularExpression drifts(
+        QStringLiteral("^the reference period itself drifts: the model's (\\S+) error changes by (\\S+) (.+) "
+                       "within a mean batch"));
+    if (const auto m = drifts.match(n); m.hasMatch()) {
+        return DiscoverPanel::tr("The reference period itself drifts: the model's %1 error changes by %2 %3 "
+                                 "within a mean batch. A reference should be a period when the line ran "
+                                 "well; against this one a change since may read as none.")
+            .arg(m.captured(1), m.captured(2), m.captured(3));
     }
     // ReferenceDiscovery.cpp's operatingRangeNotes: "B04: T_amb_C is typically 31.6 °C, outside what
     // the reference saw (11 to 23 °C): ..."

@@ -270,6 +270,22 @@ private Q_SLOTS:
         QVERIFY(gauge->detection.causeTest.secondLook);
     }
 
+    /// The periods swapped (a newcomer's review): a reference that fouls from every cleaning, judged
+    /// against a line that runs well. Whatever the verdict, the reference's own drift is said.
+    void aReferenceThatDriftsIsSaidToDrift() {
+        const auto fouledReference = plantData(46, {{Mechanism::HeatTransferFouling, 0.3}});
+        auto r = discovery::discoverChange(fouledReference, plantData(47), hybrid::HybridModel{});
+        QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
+        const auto drifts = [](const discovery::DiscoveryResult& x) {
+            return std::any_of(x.notes.begin(), x.notes.end(), [](const std::string& n) {
+                return n.find("the reference period itself drifts") != std::string::npos;
+            });
+        };
+        QVERIFY2(drifts(*r), qPrintable(QString::fromStdString(r->notes.empty() ? std::string("no notes")
+                                                                                : r->notes.front())));
+        QVERIFY(!drifts(judge(plantData(47)))); // the healthy reference of the other tests: no such note
+    }
+
     void healthyPairNamesNothing() {
         const auto r = judge(plantData(44));
         QVERIFY2(!r.detection.changed, qPrintable(story(r)));
