@@ -138,8 +138,7 @@ void SelectionRound::screenFromOnsets() {
         if (scoreTest(growing, m_nuisanceCols, col).reduction >= sc.reduction) {
             continue;
         }
-        const bool twoSided = properties::info(c.parameter).lower < 0;
-        const double p = twoSided ? 2 * upperTail(std::abs(sc.z)) : upperTail(sc.z);
+        const double p = changeP(c.parameter, sc.z);
         if (!(p < c.pValue)) {
             continue;
         }

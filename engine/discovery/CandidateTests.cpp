@@ -23,6 +23,10 @@ double upperTail(double z) {
     return boost::math::cdf(boost::math::complement(n, z));
 }
 
+double changeP(Param p, double z) {
+    return properties::info(p).lower < 0 ? 2 * upperTail(std::abs(z)) : upperTail(z);
+}
+
 bool channelAt(const data::SiBatch& b, const physics::SimulationResult& r, std::size_t j, std::size_t k,
                int c, double& obs, double& pred, double& toFile) {
     if (!b.keep[k]) {
@@ -443,8 +447,7 @@ std::vector<Candidate> scoreCandidates(const Stack& st, const std::vector<int>& 
         c.linearEstimate = sc.estimate;
         c.linearSe = sc.se;
         c.predictedReduction = st.r.squaredNorm() > 0 ? sc.reduction / st.r.squaredNorm() : 0;
-        const bool twoSided = properties::info(m).lower < 0;
-        c.pValue = twoSided ? 2 * upperTail(std::abs(sc.z)) : upperTail(sc.z);
+        c.pValue = changeP(m, sc.z);
         cands.push_back(c);
     }
     holm(cands);

@@ -169,10 +169,9 @@ void decide(ChangeDetection& d) {
 void testCauses(const std::vector<Candidate>& ranking, ChangeDetection& d) {
     double best = 1;
     for (const auto& c : ranking) {
-        const bool twoSided = properties::info(c.parameter).lower < 0;
         // score holds the change z (scoreAgainstReference), also for a timing cause whose screen
         // took its own score: the detector asks only whether the parameter moved.
-        const double p = twoSided ? 2 * upperTail(std::abs(c.score)) : upperTail(c.score);
+        const double p = changeP(c.parameter, c.score);
         if (p < best) {
             best = p;
             d.causeTest.cause = c.cause;

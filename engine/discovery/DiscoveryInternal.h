@@ -28,6 +28,9 @@ constexpr double kHacAcfThreshold = 0.05; ///< HAC bandwidth: first lag whose |A
 
 /// One-sided upper tail of the standard normal.
 double upperTail(double z);
+/// The p of a score or change z of cause parameter @p p: one-sided for a cause that grows from 0
+/// (a loss, a lag), two-sided for an offset.
+double changeP(Param p, double z);
 
 /// The measured channels: outlet moisture and temperature, tube-outlet ones where measured.
 enum Channel { kXOut = 0, kTOut = 1, kXHdt = 2, kTHdt = 3 };

@@ -32,6 +32,21 @@ bool twoSided(Param p) {
     return properties::info(p).lower < 0;
 }
 
+/// A fitted cause against its value on the reference, with the period-to-period @p spread.
+struct FitChange {
+    double normalSd = 0; ///< a period's normal scatter about the reference's value
+    double z = 0;        ///< the change in units of its combined uncertainty
+};
+FitChange fitChange(const Finding& f, const ReferenceValue& rv, double spread) {
+    const double seHere = (f.ci95High - f.ci95Low) / (2 * 1.96);
+    // The reference's fitted value is about as precise as this one (the one-step error of a lag
+    // far from 0 understates it): the larger of the two.
+    const double seRef = std::max(rv.se, seHere);
+    const double normalSd = std::sqrt(seRef * seRef + spread * spread);
+    const double sd = std::sqrt(seHere * seHere + normalSd * normalSd);
+    return {normalSd, sd > 0 ? (f.value - rv.value) / sd : 0.0};
+}
+
 /// A cause of timing (a lag, a transport time): its tangent at 0 says little of a lag of tens of
 /// seconds (a 30 s meter lag moves the one-step estimate from 0.8 s on the reference to 1.2 s), so
 /// its change cannot be screened by the tangent; its fitted value decides against the reference.
@@ -95,7 +110,7 @@ void scoreAgainstReference(const Problem& pr, std::vector<Candidate>& cands) {
         }
         const double ownP = c.pValue;
         c.score = (c.linearEstimate - rv.value) / se;
-        c.pValue = twoSided(c.parameter) ? 2 * upperTail(std::abs(c.score)) : upperTail(c.score);
+        c.pValue = changeP(c.parameter, c.score);
         if (isTiming(c.parameter)) {
             c.pFromOwnScreen =
                 ownP < c.pValue; // screened as alone; judged by its fit against the reference's
@@ -119,21 +134,15 @@ Expected<std::string> judgeAgainstReference(const Problem& pr, Finding& f) {
         return rv.error();
     }
     const auto& info = properties::info(f.parameter);
-    const double seHere = (f.ci95High - f.ci95Low) / (2 * 1.96);
-    // The reference's fitted value is about as precise as this one (the one-step error of a lag
-    // far from 0 understates it): the larger of the two.
-    const double seRef = std::max(rv->se, seHere);
     // Once a detector has flagged a change (at its stated false-alarm rate, with the spread's upper
     // bound), naming asks which cause moved: the spread at its point estimate, not its bound.
     const double spread =
         pr.reference->changeDetected && pr.options.pointSpreadOnceDetected ? rv->spreadPoint : rv->spread;
-    const double normalSd = std::sqrt(seRef * seRef + spread * spread);
+    const auto [normalSd, z] = fitChange(f, *rv, spread);
     f.hasReference = true;
     f.referenceValue = rv->value;
     f.referenceCi95Low = std::max(info.lower, rv->value - 1.96 * normalSd);
     f.referenceCi95High = std::min(info.upper, rv->value + 1.96 * normalSd);
-    const double sd = std::sqrt(seHere * seHere + normalSd * normalSd);
-    const double z = sd > 0 ? (f.value - rv->value) / sd : 0.0;
     f.changeZ = z;
     // A cause bounded at 0 (a loss, a lag, fouling) changes by growing; an offset either way.
     // Before any detector has flagged, naming is the only claim of a change: at the rate a
@@ -207,14 +216,7 @@ Status testNamedCauses(const Problem& pr, const std::vector<Finding>& findings, 
         }
         // As judgeAgainstReference() before any detector has flagged: the spread at its upper
         // bound, so that this look is held to the detector's stated rate whatever flagged before.
-        const double seHere = (f.ci95High - f.ci95Low) / (2 * 1.96);
-        const double seRef = std::max(rv->se, seHere);
-        const double sd = std::sqrt(seHere * seHere + seRef * seRef + rv->spread * rv->spread);
-        if (!(sd > 0)) {
-            continue;
-        }
-        const double z = (f.value - rv->value) / sd;
-        consider(twoSided(f.parameter) ? 2 * upperTail(std::abs(z)) : upperTail(z), f.cause);
+        consider(changeP(f.parameter, fitChange(f, *rv, rv->spread).z), f.cause);
     }
     decide(d);
     return {};
