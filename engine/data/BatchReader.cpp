@@ -334,7 +334,10 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
     // Data rows.
     const std::size_t nRows = ctx.rows.size() - 1;
     if (nRows == 0) {
-        return badInput(file, header.line, 1, "the file has a header but no data rows");
+        Error e = badInput(file, header.line, 1, "the file has a header but no data rows");
+        e.code = ErrorCode::NotEnoughData; // the plant-file reader's own guess must not replace it
+        e.args = {"rows", "0"};
+        return e;
     }
     for (auto& col : batch.numeric) {
         col.values.reserve(nRows);

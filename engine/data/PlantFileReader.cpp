@@ -225,8 +225,12 @@ Expected<PlantFileRuns> parsePlantText(const std::string& raw, const std::string
         // export needs.
         auto one = parseBatchText(text, file, options);
         if (!one) {
-            return !sniffed && sniffed.error().code != ErrorCode::MissingColumn ? sniffed.error()
-                                                                                : one.error();
+            // A contract header with no row under it is that, not a time column the historian
+            // reader could not read ("no time stamps in the first rows" said a review's file).
+            const bool contractWithoutRows = one.error().code == ErrorCode::NotEnoughData;
+            return !sniffed && sniffed.error().code != ErrorCode::MissingColumn && !contractWithoutRows
+                       ? sniffed.error()
+                       : one.error();
         }
         if (sniffed) {
             result.shape = *sniffed;

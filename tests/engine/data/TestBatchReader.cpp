@@ -221,6 +221,18 @@ private Q_SLOTS:
         QCOMPARE(summary.missingCells[1].contractColumn, std::string("T_hot_C"));
     }
 
+    /// A contract header over no rows (a spreadsheet saved empty): said as such, not as a time
+    /// column the plant-file reader could not read.
+    void headerWithoutRowsIsSaidToHaveNoRows() {
+        QTemporaryDir dir;
+        writeText(dir.filePath("B01.csv"), "# batch: B01\n" + std::string(kHeader) + "\n\n");
+        const auto loaded = loadDataSet(dir.filePath("B01.csv").toStdString());
+        QCOMPARE(loaded.errors.size(), std::size_t(1));
+        QVERIFY2(loaded.errors.front().reason.find("header but no data rows") != std::string::npos,
+                 loaded.errors.front().message().c_str());
+        QVERIFY(loaded.errors.front().place.find("B01.csv:2") != std::string::npos);
+    }
+
     void malformed_data() {
         QTest::addColumn<QString>("text");
         QTest::addColumn<QString>("expectedPlace");
