@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <utility>
 
 namespace drytwin::workflow {
@@ -48,14 +49,18 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
         const auto measuredIn = [](const std::vector<data::SiBatch>& set, bool data::SiBatch::*has) {
             return !set.empty() && std::all_of(set.begin(), set.end(), [&](const auto& b) { return b.*has; });
         };
-        std::vector<data::SiBatch> judged = m_si;
+        // A copy of the data only where an output must be left out (a month of data is large).
+        std::optional<std::vector<data::SiBatch>> narrowed;
         for (const auto& [has, name] : {std::pair{&data::SiBatch::hasXHdt, "X_hdt_pct"},
                                         std::pair{&data::SiBatch::hasTHdt, "T_hdt_C"}}) {
             const bool inReference = measuredIn(*reference, has), inData = measuredIn(m_si, has);
             if (inReference == inData) {
                 continue;
             }
-            for (auto& b : inData ? judged : *reference) {
+            if (inData && !narrowed) {
+                narrowed = m_si;
+            }
+            for (auto& b : inData ? *narrowed : *reference) {
                 b.*has = false;
             }
             referenceNotes.push_back(std::string(name) + " is measured in " +
@@ -63,7 +68,8 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
                                              : "the reference period but not in every batch of the data") +
                                      ": the periods are compared on the outputs both measure, without it");
         }
-        found = discovery::discoverChange(*reference, judged, m_model, options.discovery, discoveryProgress);
+        found = discovery::discoverChange(*reference, narrowed ? *narrowed : m_si, m_model, options.discovery,
+                                          discoveryProgress);
         if (found) {
             found->referencePath = options.referencePath;
             found->notes.insert(found->notes.begin(), referenceNotes.begin(), referenceNotes.end());
