@@ -172,18 +172,18 @@ int runDiscover(const CommandOptions& o) {
             std::abs(f.value - f.valueWhenNamed) > 0.25 * (f.ci95HighWhenNamed - f.ci95LowWhenNamed)) {
             const auto& info = properties::info(f.parameter);
             std::printf(
-                "  in the final model, fitted jointly with every other named cause: %s = %.4g %s, 95 %% CI "
+                "  in the final model, fitted jointly with every other named cause: %s = %.4g%s, 95 %% CI "
                 "[%.4g, %.4g] (the sentence above and the parts: the fit when it was named)\n",
-                std::string(info.symbol).c_str(), f.value, std::string(info.unit).c_str(), f.ci95Low,
-                f.ci95High);
+                std::string(info.symbol).c_str(), f.value, properties::spacedUnit(f.parameter).c_str(),
+                f.ci95Low, f.ci95High);
         }
         if (f.hasReference) {
             const auto& info = properties::info(f.parameter);
             std::printf(
-                "  changed from the reference: %s %.4g %s here, %.4g (normal range %.4g to %.4g) on the "
+                "  changed from the reference: %s %.4g%s here, %.4g (normal range %.4g to %.4g) on the "
                 "reference\n",
-                std::string(info.symbol).c_str(), f.value, std::string(info.unit).c_str(), f.referenceValue,
-                f.referenceCi95Low, f.referenceCi95High);
+                std::string(info.symbol).c_str(), f.value, properties::spacedUnit(f.parameter).c_str(),
+                f.referenceValue, f.referenceCi95Low, f.referenceCi95High);
         }
     }
     if (!d.bounds.empty()) {

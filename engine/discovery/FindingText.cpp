@@ -105,20 +105,20 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
                      "error about its %.0f-minute average, where slow drift does not hide it)",
                      100 * f.explainedFraction, 100 * f.explainedFractionFast, options.fastBandWindowS / 60);
     std::string text = format(
-        "%s error before: bias %+.3g %s, within-batch trend %+.3g %s/h. With %s (%s = %.4g %s, 95 %% CI "
+        "%s error before: bias %+.3g %s, within-batch trend %+.3g %s/h. With %s (%s = %.4g%s, 95 %% CI "
         "[%.3g, %.3g]) and %s, the held-out MAE of X_out goes from %.3f to %.3f %% "
         "wb and of T_out from %.2f to %.2f °C (Diebold-Mariano p = %.2g); %s. Check on the plots: %s.",
         moisture ? "Outlet-moisture" : "Outlet-temperature", f.biasBefore, moisture ? "% wb" : "°C",
         f.trendPerHourBefore, moisture ? "% wb" : "°C", f.cause.c_str(), std::string(info.symbol).c_str(),
-        f.value, std::string(info.unit).c_str(), f.ci95Low, f.ci95High,
+        f.value, properties::spacedUnit(f.parameter).c_str(), f.ci95Low, f.ci95High,
         f.hasReference ? "h_HDT, k_HDT as commissioned on the reference period" : "h_HDT, k_HDT refitted",
         gain.maeMoistureBefore, gain.maeMoistureAfter, gain.maeTemperatureBefore, gain.maeTemperatureAfter,
         gain.pValue, share.c_str(), lookFor(f.parameter));
     if (f.hasReference) {
-        text +=
-            format(" On the reference period it was %.4g %s (a period's normal range %.3g to %.3g): it "
-                   "changed.",
-                   f.referenceValue, std::string(info.unit).c_str(), f.referenceCi95Low, f.referenceCi95High);
+        text += format(" On the reference period it was %.4g%s (a period's normal range %.3g to %.3g): it "
+                       "changed.",
+                       f.referenceValue, properties::spacedUnit(f.parameter).c_str(), f.referenceCi95Low,
+                       f.referenceCi95High);
     }
     for (int c : outputsMovedOtherThanModelled(f)) {
         text += format(" %s moved %.2g times as much as this cause's model form says: the direction "
@@ -131,8 +131,8 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
             lo = std::min(lo, e.value);
             hi = std::max(hi, e.value);
         }
-        text += format(" Fitted part by part (%zu parts) it lies between %.3g and %.3g %s.", f.perPart.size(),
-                       lo, hi, std::string(info.unit).c_str());
+        text += format(" Fitted part by part (%zu parts) it lies between %.3g and %.3g%s.", f.perPart.size(),
+                       lo, hi, properties::spacedUnit(f.parameter).c_str());
     }
     if (f.transferChecked) {
         text +=

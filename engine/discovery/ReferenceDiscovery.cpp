@@ -171,20 +171,20 @@ Expected<std::string> judgeAgainstReference(const Problem& pr, Finding& f) {
         // limit is a limit of the model's form.
         const bool upper = f.value >= info.upper - 1e-6 * span;
         if (upper || (twoSided(f.parameter) && f.value <= info.lower + 1e-6 * span)) {
-            atLimit = format("; the fit stopped at the model's %s limit of %.4g %s, so the line may be "
+            atLimit = format("; the fit stopped at the model's %s limit of %.4g%s, so the line may be "
                              "further from its normal than the model's form can say",
                              upper ? "upper" : "lower", upper ? info.upper : info.lower,
-                             std::string(info.unit).c_str());
+                             properties::spacedUnit(f.parameter).c_str());
         }
     }
     // The test weighs this estimate's own uncertainty with the normal spread: say both, so that a
     // value outside the normal range but too uncertain to tell reads as what it is.
     return format(
-               "within its normal spread: %.4g %s here (95 %% CI %.4g to %.4g) against %.4g on the "
+               "within its normal spread: %.4g%s here (95 %% CI %.4g to %.4g) against %.4g on the "
                "reference period (a period's normal range %.4g to %.4g); the change is %.2g times its "
                "combined uncertainty, needs %s%.3g%s",
-               f.value, std::string(info.unit).c_str(), f.ci95Low, f.ci95High, rv->value, f.referenceCi95Low,
-               f.referenceCi95High, z, twoSided(f.parameter) ? "|z| > " : "> ", critical,
+               f.value, properties::spacedUnit(f.parameter).c_str(), f.ci95Low, f.ci95High, rv->value,
+               f.referenceCi95Low, f.referenceCi95High, z, twoSided(f.parameter) ? "|z| > " : "> ", critical,
                atDetectorRate ? " (no detector has flagged a change: the detectors' false-alarm rate)" : "") +
            atLimit;
 }
@@ -245,10 +245,9 @@ Status withdrawTakenUp(const Problem& pr, DiscoveryResult& result) {
                 const std::string floor = belowFloor(pr, f.parameter, f.value - atFinal.referenceValue, hours,
                                                      HeldOut{}, HeldOut{});
                 if (!floor.empty()) {
-                    *why =
-                        format("%.4g %s here against %.4g on the reference period: a change that small (%s)",
-                               f.value, std::string(properties::info(f.parameter).unit).c_str(),
-                               atFinal.referenceValue, floor.c_str());
+                    *why = format(
+                        "%.4g%s here against %.4g on the reference period: a change that small (%s)", f.value,
+                        properties::spacedUnit(f.parameter).c_str(), atFinal.referenceValue, floor.c_str());
                 }
             }
             if (!why->empty()) {

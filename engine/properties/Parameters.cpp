@@ -164,6 +164,11 @@ const ParameterInfo& info(Param p) {
     return parameterTable()[static_cast<std::size_t>(p)];
 }
 
+std::string spacedUnit(Param p) {
+    const std::string_view unit = info(p).unit;
+    return unit.empty() || unit == "-" ? std::string() : " " + std::string(unit);
+}
+
 std::optional<Param> paramBySymbol(std::string_view symbol) {
     for (const auto& i : parameterTable()) {
         if (i.symbol == symbol) {

@@ -89,6 +89,9 @@ struct ParameterInfo {
 /// @brief The whole table, in enum order.
 const std::array<ParameterInfo, kParamCount>& parameterTable();
 const ParameterInfo& info(Param p);
+/// @brief " unit" to follow a value of @p p in a sentence, or nothing for a dimensionless one
+/// ("0.164" rather than "0.164 -", which read as a dangling minus).
+std::string spacedUnit(Param p);
 std::optional<Param> paramBySymbol(std::string_view symbol);
 
 /// @brief The CONTRACT.md §4 mechanism a parameter extends the model by, if any.

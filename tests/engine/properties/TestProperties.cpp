@@ -1,3 +1,4 @@
+#include "properties/Parameters.h"
 #include "properties/Properties.h"
 
 #include <QtTest>
@@ -92,6 +93,13 @@ private Q_SLOTS:
         QVERIFY(!p.validate().ok());
         QCOMPARE(p.validate().error().place, std::string("k_HDT"));
         QVERIFY(!paramBySymbol("h_hdt"));
+    }
+
+    /// A value in a sentence carries its unit, and a dimensionless one none ("0.164", not "0.164 -").
+    void spacedUnitLeavesDimensionlessOut() {
+        QCOMPARE(spacedUnit(Param::theta_xe1), std::string());
+        QCOMPARE(spacedUnit(Param::X_meter_offset), std::string(" % wb"));
+        QCOMPARE(spacedUnit(Param::tau_meter), std::string(" s"));
     }
 };
 
