@@ -224,8 +224,11 @@ void DiscoverPanel::showDetection() {
     // Conditions the reference never saw, beside the verdict they may explain.
     QString unseenConditions;
     for (const auto& n : r->discovery.notes) {
+        // ... and what puts the reference itself in doubt: its own drift, a unit its files seem to
+        // have wrong, an output only one period measures (Session::discover's notes).
         if (n.find("outside what the reference saw") != std::string::npos ||
-            n.find("the reference period itself drifts") != std::string::npos) {
+            n.find("the reference period itself drifts") != std::string::npos ||
+            n.rfind("the reference period: ", 0) == 0 || n.find("is measured in ") != std::string::npos) {
             unseenConditions += QStringLiteral("<br><span style=\"color:#a05a00\">%1</span>")
                                     .arg(noteText(n).toHtmlEscaped());
         }
