@@ -73,9 +73,9 @@ void printDetection(const discovery::DiscoveryResult& d) {
                 det.causeTest.changed ? "one moved beyond its normal spread"
                                       : "none moved at the detector's rate",
                 det.causeTest.pValue, det.causeTest.cause.empty() ? "-" : det.causeTest.cause.c_str(),
-                !det.causeTest.secondLook                              ? ""
-                : det.causeTest.cause == "inlet_moisture_sensor_noise" ? ", the gauge's scatter"
-                                                                       : ", at its fitted value");
+                det.causeTest.look() == "gauge_scatter" ? ", the gauge's scatter"
+                : det.causeTest.look() == "named_fit"   ? ", at its fitted value"
+                                                        : "");
     line("dynamic PCA (the measured columns):", det.pca);
     std::printf("\n");
 }

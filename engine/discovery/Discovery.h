@@ -395,6 +395,12 @@ struct ChangeDetection {
         double pValue = 1;       ///< Bonferroni-adjusted
         std::string cause;       ///< the one with the smallest p
         bool secondLook = false; ///< decided by the second look (a named fit or the gauge's scatter)
+        /// Which look decided: "screen", "named_fit" or "gauge_scatter" (discover.json's `look`).
+        std::string look() const {
+            return !secondLook                              ? "screen"
+                   : cause == "inlet_moisture_sensor_noise" ? "gauge_scatter"
+                                                            : "named_fit";
+        }
     } causeTest;
     /// A cause named against the reference (its fitted parameter beyond its normal spread, with a
     /// held-out gain): the line has changed even where the detectors, judging the data set as a

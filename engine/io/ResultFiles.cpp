@@ -534,9 +534,7 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                               {"cause", d.causeTest.cause},
                               // Which look decided: the one-step screen, a named cause's fitted
                               // value, or the inlet gauge's scatter against the reference's.
-                              {"look", !d.causeTest.secondLook                              ? "screen"
-                                       : d.causeTest.cause == "inlet_moisture_sensor_noise" ? "gauge_scatter"
-                                                                                            : "named_fit"}};
+                              {"look", d.causeTest.look()}};
         // The first alarm of the deciding detectors (the earlier where both alarm).
         const monitoring::Detection* first = nullptr;
         for (const auto* det : {&d.drytwin, &d.pca}) {

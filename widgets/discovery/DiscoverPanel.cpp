@@ -206,15 +206,15 @@ void DiscoverPanel::showDetection() {
                                ? QStringLiteral("&lt; 1e-15") /* rich text: a bare "<" opens a tag */
                                : QStringLiteral("= %1").arg(det.causeTest.pValue, 0, 'g', 2);
     const QString movedCause = causeDisplayName(det.causeTest.cause).toHtmlEscaped();
-    const bool gaugeScatter = det.causeTest.cause == "inlet_moisture_sensor_noise";
+    const std::string look = det.causeTest.look();
     const QString causes =
         !det.causeTest.changed
             ? tr("DryTwin (the causes' estimates): none moved beyond its normal spread (p %1)").arg(causeP)
-        : !det.causeTest.secondLook
+        : look == "screen"
             ? tr("DryTwin (the causes' one-step estimates): <b>changed</b> (p %1): %2 moved beyond its "
                  "normal spread")
                   .arg(causeP, movedCause)
-        : gaugeScatter
+        : look == "gauge_scatter"
             ? tr("DryTwin (the inlet gauge's own scatter): <b>changed</b> (p %1): %2 rose beyond the "
                  "reference's")
                   .arg(causeP, movedCause)
