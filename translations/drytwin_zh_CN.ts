@@ -72,42 +72,42 @@
 <context>
     <name>DiscoverPanel</name>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="390"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="393"/>
         <source>compensation</source>
         <translation>相互补偿</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="391"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="394"/>
         <source>inconsistent</source>
         <translation>各批次不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="392"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="395"/>
         <source>not constant</source>
         <translation>批次内不恒定</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="393"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="396"/>
         <source>within normal range</source>
         <translation>在正常范围内</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="394"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="397"/>
         <source>below the floor</source>
         <translation>低于实用下限</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="395"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="398"/>
         <source>no held-out gain</source>
         <translation>留出集无增益</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="396"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="399"/>
         <source>its look-alike</source>
         <translation>是其相似原因</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="397"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="400"/>
         <source>line dynamics</source>
         <translation>产线自身动态</translation>
     </message>
@@ -723,242 +723,246 @@
         <translation>气相耦合：沿管 T_gas 降低 theta L_v (X_in - X) m_dry / (c_air m_air)，w 升高 theta (X_in - X) m_dry / m_air</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="55"/>
         <source>fouling: h = h_HDT (1 - theta t), t since the batch started</source>
-        <translation>结垢：h = h_HDT (1 - theta t)，t 为批次开始后的时间</translation>
+        <translation type="vanished">结垢：h = h_HDT (1 - theta t)，t 为批次开始后的时间</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="56"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="55"/>
+        <source>fouling: h = h_HDT / (1 + theta t), a deposit&apos;s resistance growing since the batch started</source>
+        <translation>结垢：h = h_HDT / (1 + theta t)，垢层热阻自批次开始起随时间增长</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="57"/>
         <source>first-order lag of the outlet moisture meter</source>
         <translation>出口水分仪的一阶滞后</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="57"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="58"/>
         <source>constant offset of the outlet moisture meter</source>
         <translation>出口水分仪的恒定偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="58"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="59"/>
         <source>conveyor transport time minus tau_conv</source>
         <translation>输送时间减去 tau_conv</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="59"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="60"/>
         <source>falling-rate drying: Eq. 10 times 1 - theta (X_cr - X)/X_cr below X_cr = 0.25 kg/kg</source>
         <translation>降速干燥：低于 X_cr = 0.25 kg/kg 时公式 10 乘以 1 - theta (X_cr - X)/X_cr</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="61"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="62"/>
         <source>re-absorption on the conveyor: dX/dt gains theta RH</source>
         <translation>输送机上的回潮：dX/dt 增加 theta RH</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="62"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="63"/>
         <source>offset of the inlet moisture gauge: the line sees X_in measured minus it</source>
         <translation>入口水分仪偏差：产线实际含水率为 X_in 测量值减去它</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="64"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="65"/>
         <source>time constant of the hot-air sensor: the line sees T_hot + tau dT_hot/dt (its inverse lag)</source>
         <translation>热风传感器时间常数：产线实际为 T_hot + tau dT_hot/dt（其逆滞后）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="67"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="68"/>
         <source>share of the inlet gauge&apos;s fast variation (about its 20 s zero-phase mean) that is scatter, not moisture: the line sees X_in with that share removed</source>
         <translation>入口水分仪快速变化（相对其 20 s 零相位均值）中属于仪表波动而非真实水分的比例：产线实际为去掉这一部分的 X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="70"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="71"/>
         <source>onset of the mechanism extensions since each batch&apos;s start (0: from the start; transport_delay_error always acts from the start)</source>
         <translation>机理扩展自各批次开始起的起始时间（0：从开始；transport_delay_error 总是从开始起作用）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="72"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="73"/>
         <source>paper App. A</source>
         <translation>论文附录 A</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="73"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="74"/>
         <source>paper App. A (bounds: sign kept, tenfold range)</source>
         <translation>论文附录 A（范围：保持符号，十倍区间）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="74"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="75"/>
         <source>gives D_eff ≈ 1.7e-10 m²/s at 57 °C, the order reported for tobacco lamina</source>
         <translation>在 57 °C 时 D_eff ≈ 1.7e-10 m²/s，与烟叶文献报道的量级一致</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="76"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="77"/>
         <source>typical of leaf materials (20–40 kJ/mol)</source>
         <translation>叶类物料的典型值（20–40 kJ/mol）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="77"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="78"/>
         <source>heat of sorption of tobacco adds up to about a third near dryness</source>
         <translation>接近干燥时烟草的吸附热可增加约三分之一</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="78"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="79"/>
         <source>humid air halves the surface gradient at saturation</source>
         <translation>饱和时湿空气使表面梯度减半</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="79"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="80"/>
         <source>cut tobacco strands (lamina with air spaces)</source>
         <translation>烟丝（含气隙的叶片）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="80"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="81"/>
         <source>cut width about 1 mm</source>
         <translation>切丝宽度约 1 mm</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="81"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="82"/>
         <source>cut tobacco strands of 1–3 cm</source>
         <translation>长 1–3 cm 的烟丝</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="82"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="83"/>
         <source>paper §IV.C calibrated value</source>
         <translation>论文 §IV.C 标定值</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="83"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="84"/>
         <source>recirculated hot air of a tobacco dryer is humid</source>
         <translation>烟草干燥机的循环热风较湿</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="84"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="85"/>
         <source>atmospheric</source>
         <translation>大气压</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="85"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="86"/>
         <source>0 °C, the reference of the 2501 kJ/kg in Eq. 4</source>
         <translation>0 °C，即公式 4 中 2501 kJ/kg 的参考温度</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="86"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="87"/>
         <source>loose single layer</source>
         <translation>松散单层</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="87"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="88"/>
         <source>gives about 1 % dry-basis loss of the top layer on a 60 s belt</source>
         <translation>在 60 s 的输送带上表层约损失 1 %（干基）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="88"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="89"/>
         <source>natural convection of a horizontal layer</source>
         <translation>水平料层的自然对流</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="89"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="90"/>
         <source>top layer of about 2 kg/m²</source>
         <translation>表层约 2 kg/m²</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="90"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="91"/>
         <source>top third of the layer exchanges with the air</source>
         <translation>料层上部三分之一与空气交换</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="91"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="92"/>
         <source>about 0.4 % wb flash loss at 35 K excess temperature</source>
         <translation>过热 35 K 时约 0.4 %（湿基）的闪蒸损失</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="92"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="93"/>
         <source>turbulent air, short contact</source>
         <translation>湍流空气，接触时间短</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="93"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="94"/>
         <source>a few seconds</source>
         <translation>几秒</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="94"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="95"/>
         <source>tube of about 70 m at 10 m/s particle speed</source>
         <translation>管长约 70 m，颗粒速度 10 m/s</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="95"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="96"/>
         <source>belt of 12 m at 0.2 m/s</source>
         <translation>输送带长 12 m，速度 0.2 m/s</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="96"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="97"/>
         <source>heat exchanger and duct lag; used when T_hot follows its setpoint (MPC)</source>
         <translation>换热器和风道的滞后；用于 T_hot 跟随设定值时（MPC）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="98"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="99"/>
         <source>distributed line: axial mixing on the belt, the winnower&apos;s stirred volume</source>
         <translation>分布式产线：输送带上的轴向混合、风选机的搅拌容积</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="100"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="101"/>
         <source>extension tube_wall_heat_loss</source>
         <translation>扩展 tube_wall_heat_loss</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="101"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="102"/>
         <source>extension gas_phase_coupling</source>
         <translation>扩展 gas_phase_coupling</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="102"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="103"/>
         <source>extension heat_transfer_fouling</source>
         <translation>扩展 heat_transfer_fouling</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="103"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="104"/>
         <source>extension moisture_meter_lag</source>
         <translation>扩展 moisture_meter_lag</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="104"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="105"/>
         <source>extension moisture_meter_offset</source>
         <translation>扩展 moisture_meter_offset</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="105"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="106"/>
         <source>extension transport_delay_error</source>
         <translation>扩展 transport_delay_error</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="106"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="107"/>
         <source>extension falling_rate_drying</source>
         <translation>扩展 falling_rate_drying</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="107"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="108"/>
         <source>extension ambient_reabsorption</source>
         <translation>扩展 ambient_reabsorption</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="108"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="109"/>
         <source>extension inlet_moisture_sensor_offset</source>
         <translation>扩展 inlet_moisture_sensor_offset</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="109"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="110"/>
         <source>extension hot_air_sensor_lag</source>
         <translation>扩展 hot_air_sensor_lag</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="110"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="111"/>
         <source>extension inlet_moisture_sensor_noise</source>
         <translation>扩展 inlet_moisture_sensor_noise</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="111"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="112"/>
         <source>set by discovery for a cause that starts mid-batch</source>
         <translation>由发现功能为批次中途出现的原因设定</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="130"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="131"/>
         <source>added for the cause: %1</source>
         <translation>为原因“%1”添加</translation>
     </message>
@@ -1757,7 +1761,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="770"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="773"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
@@ -1778,7 +1782,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="46"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="776"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="779"/>
         <source>Score z: how strongly the model&apos;s error points at this cause, in standard deviations of chance; above about 3 is strong evidence.</source>
         <translation>得分 z：模型误差指向该原因的强度，以偶然波动的标准差计；约 3 以上为有力证据。</translation>
     </message>
@@ -1950,8 +1954,8 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="125"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="734"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="926"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="737"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="929"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -1960,7 +1964,7 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="764"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="767"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
@@ -2008,50 +2012,50 @@
         <translation>DryTwin（各原因的参数）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="240"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="243"/>
         <source>&lt;b&gt;The line has changed since the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;自参考期以来产线已发生变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="247"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="250"/>
         <source>&lt;b&gt;No change against the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;与参考期相比无变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="248"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="251"/>
         <source> Each detector&apos;s false-alarm rate: %1 % per data set.</source>
         <translation> 每个检测器的误报率：每个数据集 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="249"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="252"/>
         <source>DryTwin (the model&apos;s error)</source>
         <translation>DryTwin（模型误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="251"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="254"/>
         <source>Dynamic PCA (the measured columns)</source>
         <translation>动态 PCA（测量列）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="276"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="292"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="279"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="295"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="276"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="292"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="279"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="295"/>
         <source>dynamic PCA</source>
         <translation>动态 PCA</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="278"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="280"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="281"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="283"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="322"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="325"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
@@ -2064,67 +2068,67 @@
         <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="332"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="335"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="336"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="339"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="339"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="342"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="341"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="344"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="345"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="349"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="352"/>
         <source>a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less</source>
         <translation>干燥管出口与出口水分有相同的稳定偏差，干燥管干燥越少处越大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="352"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="355"/>
         <source>after each hot-air setpoint step the outlet temperature and moisture move before the simulation, which follows the slow reading</source>
         <translation>每次热风设定值阶跃后，出口温度和水分先于仿真变化，仿真跟随的是迟缓的读数</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="355"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="358"/>
         <source>the inlet-moisture reading scatters from second to second while the outlet does not follow it, and the simulated outlet does</source>
         <translation>入口水分读数逐秒跳动，出口并不跟随，而仿真的出口却跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="365"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="368"/>
         <source>a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet temperature&apos;s response as much as the moisture&apos;s, a meter lag delays the moisture reading alone; or grab samples timed against the meter</source>
         <translation>以 1 s 记录一次热风设定值阶跃：输送时间误差使出口温度与水分的响应同样延迟，水分仪滞后只延迟水分读数；或对照水分仪定时取样</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="372"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="375"/>
         <source>oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter offset does not</source>
         <translation>在出口对照水分仪、在入口对照入口水分计做烘箱法实验室取样；或增加干燥管出口水分通道（X_hdt）：入口水分计偏差会使其变化，出口水分仪偏差不会</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="379"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="382"/>
         <source>a gas-temperature reading at the tube&apos;s outlet end at two feed rates: wall loss does not change with the feed, gas-phase cooling grows with it</source>
         <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="405"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="408"/>
         <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
         <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="408"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="411"/>
         <source>its size is not consistent across batches or operating regions</source>
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
@@ -2133,62 +2137,62 @@
         <translation type="vanished">偏差在整个批次中读数不变；此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="416"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="419"/>
         <source>its value lies within the reference period&apos;s normal range: not a change</source>
         <translation>其值在参考期的正常范围内：不是变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="419"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="422"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="422"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="425"/>
         <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
         <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="426"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="429"/>
         <source>the outlet channels&apos; timing points to its look-alike (the moisture answers later than the temperature: a meter, not the transport)</source>
         <translation>出口两个通道的时序指向它的相似原因（水分比温度响应更晚：是水分仪，而非输送）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="431"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="434"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="434"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="437"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="451"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="454"/>
         <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
         <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="456"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="459"/>
         <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
         <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="459"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="462"/>
         <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
         <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="464"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="467"/>
         <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
         <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="470"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="473"/>
         <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="531"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="534"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
@@ -2197,62 +2201,62 @@
         <translation type="vanished">误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="546"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="549"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="551"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="554"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="563"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="566"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="570"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="573"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="585"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="588"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="590"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="593"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="590"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="593"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="593"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="596"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="597"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="600"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="615"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="618"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="621"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="624"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="604"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="607"/>
         <source>%1 was named on top of it (a further %2 % of the held-out error): alone it predicts worse (%3 times the held-out error), but the change needs both forms, so the data cannot say which of them it is.</source>
         <translation>在它之上又判定了 %1（再减少留出误差的 %2 %）：单独使用时预测更差（留出误差的 %3 倍），但这一变化需要两种形式共同解释，因此数据无法判断是其中哪一个。</translation>
     </message>
@@ -2265,82 +2269,82 @@
         <translation>DryTwin（各原因的一步估计）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="242"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="245"/>
         <source>&lt;b&gt;A cause has changed since the reference period: %1.&lt;/b&gt; The detectors, judging the data set as a whole, stayed below their limits; fitting the causes found it beyond its normal spread with a gain on held-out data (below). Check it on the plots.</source>
         <translation>&lt;b&gt;自参考期以来有一个原因发生了变化：%1。&lt;/b&gt;检测器对整个数据集的判断未超出其限值；拟合各原因发现它超出正常范围，且在留出数据上有改进（见下）。请在图上核对。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="328"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="331"/>
         <source>the error drifts over each batch, or over the recording from the fouling&apos;s onset, and starts afresh with each new batch</source>
         <translation>误差在每个批次内（或在记录中自结垢开始起）逐渐漂移，每个新批次重新开始</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="399"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="402"/>
         <source>not named</source>
         <translation>未指认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="480"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="483"/>
         <source>%1 was named first, then withdrawn: refitted together with the causes named after it, it is no change of the line (it had taken up what they explain). In detail: %2.</source>
         <translation>%1 先被识别，随后撤回：与之后识别的原因一起重新拟合后，它并非产线的变化（它曾吸收了那些原因所解释的部分）。详情：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="487"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="490"/>
         <source>The reference holds %1 batch(es): a period&apos;s normal spread comes from thirds of them, which share their day and weather; a change named here may be a difference of conditions the reference never showed. A reference of several batches over the conditions the line runs in (weeks, seasons) judges better.</source>
         <translation>参考期仅含 %1 个批次：一个时段的正常离散取自其三等分，它们同属一天、同样天气；此处识别出的变化可能只是参考期从未出现过的工况差异。覆盖产线运行工况（数周、不同季节）的多批次参考期判断得更好。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="500"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="503"/>
         <source>The reference period itself drifts: the model&apos;s %1 error changes by %2 %3 within a mean batch. A reference should be a period when the line ran well; against this one a change since may read as none.</source>
         <translation>参考期本身在漂移：模型的 %1 误差在一个平均批次内变化 %2 %3。参考期应是产线运行良好的时段；以此为参考，之后的变化可能显示为无变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="634"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="637"/>
         <source>%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts %4 better; which output a cause favours is the model&apos;s structure, so the data cannot tell them apart.</source>
         <translation>%1 同样拟合：总体上它留下 %2 倍的留出误差（p = %3），但它对%4的预测更好；原因偏向哪个输出取决于模型自身的结构，因此数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="640"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="643"/>
         <source>the outlet moisture</source>
         <translation>出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="641"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="644"/>
         <source>the outlet temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="642"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="645"/>
         <source>the tube-outlet moisture</source>
         <translation>管出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="643"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="646"/>
         <source>the tube-outlet temperature</source>
         <translation>管出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="647"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="650"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="648"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="651"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="655"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="658"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="667"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="670"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="671"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="674"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -2349,27 +2353,27 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="688"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="691"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="688"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="691"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="729"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="732"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="730"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="733"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="748"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="751"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2386,12 +2390,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="805"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="808"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="805"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="808"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2400,23 +2404,23 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="854"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="857"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="857"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="860"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="865"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="868"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="560"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="785"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="563"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="788"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
@@ -2441,17 +2445,17 @@
         <translation>DryTwin（已命名原因的拟合值）：&lt;b&gt;已变化&lt;/b&gt;（p %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="672"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="675"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="673"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="676"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="677"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="680"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
@@ -2460,18 +2464,18 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="751"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="754"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="761"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="764"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="237"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="762"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="240"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="765"/>
         <source>, </source>
         <translation>、</translation>
     </message>
@@ -2480,71 +2484,71 @@
         <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="765"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="768"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="802"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="805"/>
         <source>not fitted (weaker)</source>
         <translation>未拟合（证据较弱）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="875"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="878"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="891"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="894"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="900"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="903"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="907"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="910"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="912"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="915"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="920"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="923"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="935"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="938"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="662"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="936"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="962"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="665"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="939"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="965"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="683"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="686"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out goes from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="937"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="940"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="662"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="938"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="966"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="665"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="941"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="969"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2557,27 +2561,27 @@
         <translation>DryTwin（已命名原因的拟合值、进口水分仪的散布）：&lt;b&gt;已变化&lt;/b&gt;（p = %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="325"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="328"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed rate and by inlet moisture)</source>
         <translation>误差随进料量和入口水分增大（按进料量和按入口水分分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="411"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="414"/>
         <source>it does not change within a batch (an offset, the tube&apos;s wall or gas phase), but this error grows or shrinks within the batch (fouling, a drifting reading)</source>
         <translation>它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="514"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="517"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="518"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="521"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the model&apos;s error there is judged beyond the reference&apos;s conditions, and an alarm there may be that condition rather than a change of the line.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="536"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="539"/>
         <source>the error follows %1 %2 s later (correlation %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（相关系数 %3）</translation>
     </message>
@@ -2586,17 +2590,17 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="718"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="770"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="773"/>
         <source>Change z</source>
         <translation>变化 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="773"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="776"/>
         <source>Change z: how far the cause&apos;s one-step estimate here lies from its normal value on the reference period, in units of both estimates&apos; errors and the spread between the reference&apos;s periods; above 2 it moved.</source>
         <translation>变化 z：该原因在此处的一步估计与其在参考期的正常值相差多远，以两次估计的误差及参考期各时段间的离散为单位；大于 2 即为发生了变化。</translation>
     </message>
@@ -2609,87 +2613,87 @@
         <translation>未拟合：证据弱于已拟合的候选</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="815"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="818"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="829"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="832"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="836"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="839"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="850"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="853"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="895"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="898"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="925"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="928"/>
         <source>Held-out accuracy: nothing was named, so nothing was extended (before = after):</source>
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="939"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="942"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="948"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="951"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="961"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="964"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="961"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="964"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="962"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="965"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="965"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="968"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="965"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="968"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="966"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="969"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="993"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="996"/>
         <source>model (nothing extended)</source>
         <translation>模型（未扩展）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="995"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="998"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="996"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="999"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
