@@ -8,6 +8,7 @@ import re
 import sys
 
 ZH = {
+    " %1 moved against this cause's effect (%2 times what its model form says), by less than that output's noise can tell from none: it counts neither for the cause nor against it.": " %1 的变化与该原因的作用方向相反（为其模型形式所预测的 %2 倍），但小于该输出的噪声所能分辨的程度：既不支持也不否定该原因。",
     "The reference period itself drifts: the model's %1 error changes by %2 %3 within a mean batch. A reference should be a period when the line ran well; against this one a change since may read as none.": "参考期本身在漂移：模型的 %1 误差在一个平均批次内变化 %2 %3。参考期应是产线运行良好的时段；以此为参考，之后的变化可能显示为无变化。",
     "DryTwin (the causes' estimates): none moved beyond its normal spread (p %1)": "DryTwin（各原因的估计）：均未超出其正常范围（p %1）",
     "DryTwin (the causes' one-step estimates): <b>changed</b> (p %1): %2 moved beyond its normal spread": "DryTwin（各原因的一步估计）：<b>已变化</b>（p %1）：%2 超出其正常范围",

@@ -121,9 +121,16 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
                        f.referenceCi95High);
     }
     for (int c : outputsMovedOtherThanModelled(f)) {
-        text += format(" %s moved %.2g times as much as this cause's model form says: the direction "
-                       "agrees, the size is the model's to answer.",
-                       kChannelName[c], f.responseScale[static_cast<std::size_t>(c)]);
+        const double scale = f.responseScale[static_cast<std::size_t>(c)];
+        text +=
+            scale < 0
+                ? format(" %s moved against this cause's effect (%.2g times what its model form says), by "
+                         "less than that output's noise can tell from none: it counts neither for the "
+                         "cause nor against it.",
+                         kChannelName[c], scale)
+                : format(" %s moved %.2g times as much as this cause's model form says: the direction "
+                         "agrees, the size is the model's to answer.",
+                         kChannelName[c], scale);
     }
     if (!f.perPart.empty()) {
         double lo = f.perPart.front().value, hi = lo;
@@ -200,8 +207,9 @@ std::string inconsistencyReason(const Consistency& c, Param p, double pooled) {
 namespace drytwin::discovery {
 
 std::vector<int> outputsMovedOtherThanModelled(const Finding& f) {
-    // Where the line's response differs in size from the model form's: the direction agreed (else
-    // the cause would not be named), the size is the model's (a lumped tube's) to answer.
+    // Where the line's response differs in size from the model form's: the size is the model's (a
+    // lumped tube's) to answer. Its direction agreed, or the output moved the other way by less than
+    // its noise can tell (a significant one would have turned the cause down: responseMismatch).
     std::vector<int> outputs;
     for (int c = 0; f.responseJudged && c < 4; ++c) {
         const double scale = f.responseScale[static_cast<std::size_t>(c)];

@@ -715,10 +715,15 @@ QString DiscoverPanel::responseSizeText(const discovery::Finding& f) {
     QString text;
     static const char* const kChannels[] = {"X_out", "T_out", "X_hdt", "T_hdt"};
     for (int c : discovery::outputsMovedOtherThanModelled(f)) {
-        text += tr(" %1 moved %2 times as much as this cause's model form says: the direction agrees, "
-                   "the size is the model's to answer.")
-                    .arg(QLatin1String(kChannels[c]))
-                    .arg(f.responseScale[static_cast<std::size_t>(c)], 0, 'g', 2);
+        const double scale = f.responseScale[static_cast<std::size_t>(c)];
+        text +=
+            (scale < 0 ? tr(" %1 moved against this cause's effect (%2 times what its model form says), by "
+                            "less than that output's noise can tell from none: it counts neither for the "
+                            "cause nor against it.")
+                       : tr(" %1 moved %2 times as much as this cause's model form says: the direction "
+                            "agrees, the size is the model's to answer."))
+                .arg(QLatin1String(kChannels[c]))
+                .arg(scale, 0, 'g', 2);
     }
     return text;
 }

@@ -40,6 +40,29 @@ private Q_SLOTS:
                  why.c_str());
         QVERIFY2(why.find("B02 -0.3±0.098 % wb") != std::string::npos, why.c_str());
     }
+
+    /// Against a reference an output's response is judged by its direction; one that moved the
+    /// other way by less than its noise can tell (a fouling's later compensation, seen on 2 x 1,500 s
+    /// of heavy fouling) must not be told "the direction agrees".
+    void anOutputMovedTheOtherWayIsNotSaidToAgree() {
+        drytwin::discovery::Finding f;
+        f.cause = "falling_rate_drying";
+        f.parameter = Param::theta_fall;
+        f.output = "T_out";
+        f.responseJudged = true;
+        f.actsOn = {true, true, false, false};
+        f.responseScale = {-2.3, 2.3, 1.0, 1.0};
+        const std::string text = findingEvidence(f, drytwin::discovery::DiscoveryOptions{});
+        qInfo("%s", text.c_str());
+        QVERIFY2(text.find("X_out moved against this cause's effect (-2.3 times what its model form says)") !=
+                     std::string::npos,
+                 text.c_str());
+        QVERIFY2(text.find(
+                     "T_out moved 2.3 times as much as this cause's model form says: the direction agrees") !=
+                     std::string::npos,
+                 text.c_str());
+        QVERIFY2(text.find("X_out moved -2.3") == std::string::npos, text.c_str());
+    }
 };
 
 QTEST_APPLESS_MAIN(TestFindingText)
