@@ -11,7 +11,9 @@
 // Run: build/bench/study_hybrid [--part unseen|free-run] [--quick (the first 3 sets / 1 pair)]
 //      [--seed-base N (unseen: seeds N+1 … N+10, default 900)] [--work DIR (default
 //      /tmp/drytwin-study-hybrid)]
-// Writes Markdown tables to stdout, progress to stderr.
+// Writes Markdown tables to stdout, progress to stderr. Free-run variants for studies, by environment:
+// STUDY_HYBRID_VARIANTS (other bases and grids), STUDY_HYBRID_ORACLE (the ridge fitted on the judged
+// rows), STUDY_HYBRID_EXTENDED=gas,wall[,fall] (the physics given the line's structure first).
 #include "common/Units.h"
 #include "hybrid/Evaluation.h"
 #include "hybrid/HybridTraining.h"
@@ -342,6 +344,58 @@ int partFreeRun(bool quick) {
                              "  oracle (lags fitted on the judged rows): X %.4f (%.4f) T %.3f (%.3f)\n",
                              m.first, mt.first, m.second, mt.second);
             }
+        }
+        // STUDY_HYBRID_EXTENDED: the physics given the line's structure first. A healthy distributed
+        // line has what the lumped model lacks (a gas phase, a wall): its extensions are calibrated
+        // with h_HDT and k_HDT on the training seed (every 10th row of all of it), and the lags'
+        // ridge learns what is left of that model's free-run error.
+        if (const char* extended = std::getenv("STUDY_HYBRID_EXTENDED")) {
+            using properties::Param;
+            workflow::Session ext = calibratedSession(a, false);
+            workflow::CalibrateOptions co;
+            co.subsetCount = 0;
+            const std::string which = extended;
+            if (which.find("gas") != std::string::npos) {
+                co.calibration.freeParameters.push_back(Param::theta_gas);
+            }
+            if (which.find("wall") != std::string::npos) {
+                co.calibration.freeParameters.push_back(Param::theta_wall);
+            }
+            if (which.find("fall") != std::string::npos) {
+                co.calibration.freeParameters.push_back(Param::theta_fall);
+            }
+            if (auto r = ext.calibrate(co); !r) {
+                fail(a.name + " extended calibration", r.error());
+            }
+            const auto& em = ext.model();
+            std::fprintf(stderr,
+                         "  extended physics (%s): h_HDT %.4g k_HDT %.4g theta_gas %.3g theta_wall %.3g "
+                         "theta_fall %.3g\n",
+                         extended, em.parameters[Param::h_HDT], em.parameters[Param::k_HDT],
+                         em.parameters[Param::theta_gas], em.parameters[Param::theta_wall],
+                         em.parameters[Param::theta_fall]);
+            auto extA = hybrid::simulatePbm(ext.siBatches(), em, em.switches);
+            auto extB = hybrid::simulatePbm(batches, em, em.switches);
+            if (!extA || !extB) {
+                fail(a.name + " extended PBM", extA ? extB.error() : extA.error());
+            }
+            auto extRidge = residual::InputDrivenCorrection::train(
+                hybrid::splitViews(ext.siBatches(), *extA, false), ridgeOptions);
+            if (!extRidge) {
+                fail(a.name + " extended ridge", extRidge.error());
+            }
+            std::vector<residual::BatchView> extViews;
+            for (std::size_t i = 0; i < batches.size(); ++i) {
+                extViews.push_back({&batches[i], &(*extB)[i], {0, batches[i].rows()}});
+            }
+            const auto extPbm = freeRunMae(extViews, evaluation::pbmPrediction);
+            const auto extCorrected = freeRunMae(extViews, corrected(*extRidge));
+            std::fprintf(stderr,
+                         "  extended PBM: X %.4f T %.3f; extended PBM + lags' ridge: X %.4f T %.3f "
+                         "(plain PBM X %.4f T %.3f)\n",
+                         extPbm.first, extPbm.second, extCorrected.first, extCorrected.second,
+                         freeRunMae(views, evaluation::pbmPrediction).first,
+                         freeRunMae(views, evaluation::pbmPrediction).second);
         }
         const auto ridgeMae = freeRunMae(views, corrected(*ridge));
         const auto bankMae = freeRunMae(views, corrected(*bank));
