@@ -723,246 +723,246 @@
         <translation>气相耦合：沿管 T_gas 降低 theta L_v (X_in - X) m_dry / (c_air m_air)，w 升高 theta (X_in - X) m_dry / m_air</translation>
     </message>
     <message>
-        <source>fouling: h = h_HDT (1 - theta t), t since the batch started</source>
-        <translation type="vanished">结垢：h = h_HDT (1 - theta t)，t 为批次开始后的时间</translation>
-    </message>
-    <message>
         <location filename="../widgets/model/ParameterTexts.cpp" line="55"/>
-        <source>fouling: h = h_HDT / (1 + theta t), a deposit&apos;s resistance growing since the batch started</source>
-        <translation>结垢：h = h_HDT / (1 + theta t)，垢层热阻自批次开始起随时间增长</translation>
+        <source>fouling: h = h_HDT (1 - theta t), t since the batch started</source>
+        <translation>结垢：h = h_HDT (1 - theta t)，t 为批次开始后的时间</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="58"/>
+        <source>fouling: h = h_HDT / (1 + theta t), a deposit&apos;s resistance growing since the batch started</source>
+        <translation type="vanished">结垢：h = h_HDT / (1 + theta t)，垢层热阻自批次开始起随时间增长</translation>
+    </message>
+    <message>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="56"/>
         <source>first-order lag of the outlet moisture meter</source>
         <translation>出口水分仪的一阶滞后</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="59"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="57"/>
         <source>constant offset of the outlet moisture meter</source>
         <translation>出口水分仪的恒定偏差</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="60"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="58"/>
         <source>conveyor transport time minus tau_conv</source>
         <translation>输送时间减去 tau_conv</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="61"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="59"/>
         <source>falling-rate drying: Eq. 10 times 1 - theta (X_cr - X)/X_cr below X_cr = 0.25 kg/kg</source>
         <translation>降速干燥：低于 X_cr = 0.25 kg/kg 时公式 10 乘以 1 - theta (X_cr - X)/X_cr</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="63"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="61"/>
         <source>re-absorption on the conveyor: dX/dt gains theta RH</source>
         <translation>输送机上的回潮：dX/dt 增加 theta RH</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="64"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="62"/>
         <source>offset of the inlet moisture gauge: the line sees X_in measured minus it</source>
         <translation>入口水分仪偏差：产线实际含水率为 X_in 测量值减去它</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="66"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="64"/>
         <source>time constant of the hot-air sensor: the line sees T_hot + tau dT_hot/dt (its inverse lag)</source>
         <translation>热风传感器时间常数：产线实际为 T_hot + tau dT_hot/dt（其逆滞后）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="69"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="67"/>
         <source>share of the inlet gauge&apos;s fast variation (about its 20 s zero-phase mean) that is scatter, not moisture: the line sees X_in with that share removed</source>
         <translation>入口水分仪快速变化（相对其 20 s 零相位均值）中属于仪表波动而非真实水分的比例：产线实际为去掉这一部分的 X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="72"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="70"/>
         <source>onset of the mechanism extensions since each batch&apos;s start (0: from the start; transport_delay_error always acts from the start)</source>
         <translation>机理扩展自各批次开始起的起始时间（0：从开始；transport_delay_error 总是从开始起作用）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="74"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="72"/>
         <source>paper App. A</source>
         <translation>论文附录 A</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="75"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="73"/>
         <source>paper App. A (bounds: sign kept, tenfold range)</source>
         <translation>论文附录 A（范围：保持符号，十倍区间）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="76"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="74"/>
         <source>gives D_eff ≈ 1.7e-10 m²/s at 57 °C, the order reported for tobacco lamina</source>
         <translation>在 57 °C 时 D_eff ≈ 1.7e-10 m²/s，与烟叶文献报道的量级一致</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="78"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="76"/>
         <source>typical of leaf materials (20–40 kJ/mol)</source>
         <translation>叶类物料的典型值（20–40 kJ/mol）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="79"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="77"/>
         <source>heat of sorption of tobacco adds up to about a third near dryness</source>
         <translation>接近干燥时烟草的吸附热可增加约三分之一</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="80"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="78"/>
         <source>humid air halves the surface gradient at saturation</source>
         <translation>饱和时湿空气使表面梯度减半</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="81"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="79"/>
         <source>cut tobacco strands (lamina with air spaces)</source>
         <translation>烟丝（含气隙的叶片）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="82"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="80"/>
         <source>cut width about 1 mm</source>
         <translation>切丝宽度约 1 mm</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="83"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="81"/>
         <source>cut tobacco strands of 1–3 cm</source>
         <translation>长 1–3 cm 的烟丝</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="84"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="82"/>
         <source>paper §IV.C calibrated value</source>
         <translation>论文 §IV.C 标定值</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="85"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="83"/>
         <source>recirculated hot air of a tobacco dryer is humid</source>
         <translation>烟草干燥机的循环热风较湿</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="86"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="84"/>
         <source>atmospheric</source>
         <translation>大气压</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="87"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="85"/>
         <source>0 °C, the reference of the 2501 kJ/kg in Eq. 4</source>
         <translation>0 °C，即公式 4 中 2501 kJ/kg 的参考温度</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="88"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="86"/>
         <source>loose single layer</source>
         <translation>松散单层</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="89"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="87"/>
         <source>gives about 1 % dry-basis loss of the top layer on a 60 s belt</source>
         <translation>在 60 s 的输送带上表层约损失 1 %（干基）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="90"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="88"/>
         <source>natural convection of a horizontal layer</source>
         <translation>水平料层的自然对流</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="91"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="89"/>
         <source>top layer of about 2 kg/m²</source>
         <translation>表层约 2 kg/m²</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="92"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="90"/>
         <source>top third of the layer exchanges with the air</source>
         <translation>料层上部三分之一与空气交换</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="93"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="91"/>
         <source>about 0.4 % wb flash loss at 35 K excess temperature</source>
         <translation>过热 35 K 时约 0.4 %（湿基）的闪蒸损失</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="94"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="92"/>
         <source>turbulent air, short contact</source>
         <translation>湍流空气，接触时间短</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="95"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="93"/>
         <source>a few seconds</source>
         <translation>几秒</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="96"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="94"/>
         <source>tube of about 70 m at 10 m/s particle speed</source>
         <translation>管长约 70 m，颗粒速度 10 m/s</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="97"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="95"/>
         <source>belt of 12 m at 0.2 m/s</source>
         <translation>输送带长 12 m，速度 0.2 m/s</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="98"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="96"/>
         <source>heat exchanger and duct lag; used when T_hot follows its setpoint (MPC)</source>
         <translation>换热器和风道的滞后；用于 T_hot 跟随设定值时（MPC）</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="100"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="98"/>
         <source>distributed line: axial mixing on the belt, the winnower&apos;s stirred volume</source>
         <translation>分布式产线：输送带上的轴向混合、风选机的搅拌容积</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="102"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="100"/>
         <source>extension tube_wall_heat_loss</source>
         <translation>扩展 tube_wall_heat_loss</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="103"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="101"/>
         <source>extension gas_phase_coupling</source>
         <translation>扩展 gas_phase_coupling</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="104"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="102"/>
         <source>extension heat_transfer_fouling</source>
         <translation>扩展 heat_transfer_fouling</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="105"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="103"/>
         <source>extension moisture_meter_lag</source>
         <translation>扩展 moisture_meter_lag</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="106"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="104"/>
         <source>extension moisture_meter_offset</source>
         <translation>扩展 moisture_meter_offset</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="107"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="105"/>
         <source>extension transport_delay_error</source>
         <translation>扩展 transport_delay_error</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="108"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="106"/>
         <source>extension falling_rate_drying</source>
         <translation>扩展 falling_rate_drying</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="109"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="107"/>
         <source>extension ambient_reabsorption</source>
         <translation>扩展 ambient_reabsorption</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="110"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="108"/>
         <source>extension inlet_moisture_sensor_offset</source>
         <translation>扩展 inlet_moisture_sensor_offset</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="111"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="109"/>
         <source>extension hot_air_sensor_lag</source>
         <translation>扩展 hot_air_sensor_lag</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="112"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="110"/>
         <source>extension inlet_moisture_sensor_noise</source>
         <translation>扩展 inlet_moisture_sensor_noise</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="113"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="111"/>
         <source>set by discovery for a cause that starts mid-batch</source>
         <translation>由发现功能为批次中途出现的原因设定</translation>
     </message>
     <message>
-        <location filename="../widgets/model/ParameterTexts.cpp" line="132"/>
+        <location filename="../widgets/model/ParameterTexts.cpp" line="130"/>
         <source>added for the cause: %1</source>
         <translation>为原因“%1”添加</translation>
     </message>
@@ -1761,7 +1761,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="41"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="777"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="778"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
@@ -1782,7 +1782,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="46"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="783"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="784"/>
         <source>Score z: how strongly the model&apos;s error points at this cause, in standard deviations of chance; above about 3 is strong evidence.</source>
         <translation>得分 z：模型误差指向该原因的强度，以偶然波动的标准差计；约 3 以上为有力证据。</translation>
     </message>
@@ -1954,8 +1954,8 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="125"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="741"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="933"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="742"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="934"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -1964,7 +1964,7 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="771"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="772"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
@@ -2363,22 +2363,22 @@
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="719"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="720"/>
         <source> %1 moved against this cause&apos;s effect (%2 times what its model form says), by less than that output&apos;s noise can tell from none: it counts neither for the cause nor against it.</source>
         <translation> %1 的变化与该原因的作用方向相反（为其模型形式所预测的 %2 倍），但小于该输出的噪声所能分辨的程度：既不支持也不否定该原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="736"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="737"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="737"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="738"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="755"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="756"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2395,12 +2395,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="812"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="813"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="812"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="813"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2409,23 +2409,23 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="861"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="862"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="864"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="865"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="872"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="873"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="563"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="792"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="793"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
@@ -2469,18 +2469,18 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="758"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="759"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="768"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="769"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="240"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="769"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="770"/>
         <source>, </source>
         <translation>、</translation>
     </message>
@@ -2489,54 +2489,54 @@
         <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="772"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="773"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="809"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="810"/>
         <source>not fitted (weaker)</source>
         <translation>未拟合（证据较弱）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="882"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="883"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="898"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="899"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="907"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="908"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="914"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="915"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="919"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="920"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="927"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="928"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="942"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="943"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="665"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="943"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="969"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="944"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="970"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
@@ -2546,14 +2546,14 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="944"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="945"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="665"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="945"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="973"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="946"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="974"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2595,17 +2595,17 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="722"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="723"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="777"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="778"/>
         <source>Change z</source>
         <translation>变化 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="780"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="781"/>
         <source>Change z: how far the cause&apos;s one-step estimate here lies from its normal value on the reference period, in units of both estimates&apos; errors and the spread between the reference&apos;s periods; above 2 it moved.</source>
         <translation>变化 z：该原因在此处的一步估计与其在参考期的正常值相差多远，以两次估计的误差及参考期各时段间的离散为单位；大于 2 即为发生了变化。</translation>
     </message>
@@ -2618,87 +2618,87 @@
         <translation>未拟合：证据弱于已拟合的候选</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="822"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="823"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="836"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="837"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="843"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="844"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="857"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="858"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="902"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="903"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="932"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="933"/>
         <source>Held-out accuracy: nothing was named, so nothing was extended (before = after):</source>
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="946"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="947"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="955"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="956"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="968"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="969"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="968"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="969"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="969"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="970"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="972"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="973"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="972"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="973"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="973"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="974"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1000"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1001"/>
         <source>model (nothing extended)</source>
         <translation>模型（未扩展）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1002"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1003"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1003"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1004"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>

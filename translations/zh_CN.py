@@ -817,7 +817,7 @@ ZH = {
     "outlet mixing: first-order lag of X_out and T_out (belt and winnower holdup)": "出口混合：X_out 和 T_out 的一阶滞后（输送带和风选机存料）",
     "tube wall heat loss, its transfer units over the tube: T_gas = T_amb + (T_hot - T_amb) exp(-theta s / tau_HDT)": "管壁散热，整根管的传热单元数：T_gas = T_amb + (T_hot - T_amb) exp(-theta s / tau_HDT)",
     "gas-phase coupling: T_gas falls by theta L_v (X_in - X) m_dry / (c_air m_air) along the tube, and w rises by theta (X_in - X) m_dry / m_air": "气相耦合：沿管 T_gas 降低 theta L_v (X_in - X) m_dry / (c_air m_air)，w 升高 theta (X_in - X) m_dry / m_air",
-    "fouling: h = h_HDT / (1 + theta t), a deposit's resistance growing since the batch started": "结垢：h = h_HDT / (1 + theta t)，垢层热阻自批次开始起随时间增长",
+    "fouling: h = h_HDT (1 - theta t), t since the batch started": "结垢：h = h_HDT (1 - theta t)，t 为批次开始后的时间",
     "first-order lag of the outlet moisture meter": "出口水分仪的一阶滞后",
     "constant offset of the outlet moisture meter": "出口水分仪的恒定偏差",
     "conveyor transport time minus tau_conv": "输送时间减去 tau_conv",

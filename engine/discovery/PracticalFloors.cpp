@@ -146,16 +146,12 @@ std::string belowFloor(const Problem& pr, Param p, double value, double meanBatc
                           std::max(twoSteps, f.transportTimeS));
         }
         break;
-    case Param::theta_foul: {
-        // The share of h_HDT lost by the end of a mean batch, h = h_HDT / (1 + θ t) (to first order
-        // θ t, the linear form's share).
-        const double lostShare = value * meanBatchHours / (1.0 + value * meanBatchHours);
-        if (lostShare < f.foulingShare) {
+    case Param::theta_foul:
+        if (value * meanBatchHours < f.foulingShare) {
             return format("fouling that costs %.2g %% of h_HDT over a batch is below %.2g %%",
-                          100 * lostShare, 100 * f.foulingShare);
+                          100 * value * meanBatchHours, 100 * f.foulingShare);
         }
         break;
-    }
     default:
         break;
     }

@@ -51,8 +51,7 @@ std::string formatModelFile(const HybridModel& m) {
     j["switches"] = {{"clamp_water_activity", m.switches.clampWaterActivity},
                      {"latent_heat_correction", m.switches.latentHeatCorrection},
                      {"moisture_dependent_cp", m.switches.moistureDependentCp},
-                     {"consistent_energy_balance", m.switches.consistentEnergyBalance},
-                     {"fouling_as_resistance", m.switches.foulingAsResistance}};
+                     {"consistent_energy_balance", m.switches.consistentEnergyBalance}};
     j["winnower_form"] = winnowerName(m.winnower);
     if (m.calibration) {
         json c;
@@ -226,9 +225,6 @@ Expected<HybridModel> parseModelJson(const json& j, const std::string& name) {
         m.switches.moistureDependentCp = s.value("moisture_dependent_cp", true);
         // Files from before the switch existed were made with the paper's printed form.
         m.switches.consistentEnergyBalance = s.value("consistent_energy_balance", false);
-        // ... and files from before 2026-11-28 with the linear fouling loss (their theta_foul, fitted
-        // in that form, at most 0.4/h).
-        m.switches.foulingAsResistance = s.value("fouling_as_resistance", false);
     }
     const std::string form = j.value("winnower_form", "transient");
     if (form != "transient" && form != "terminal") {

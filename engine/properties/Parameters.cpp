@@ -90,12 +90,12 @@ const std::array<ParameterInfo, kParamCount>& parameterTable() {
          "gas-phase coupling: T_gas falls by theta L_v (X_in - X) m_dry / (c_air m_air) along the tube, "
          "and w rises by theta (X_in - X) m_dry / m_air",
          "-", 0, 0, 2, "extension gas_phase_coupling", false, false},
-        // Up to 3/h: the plant's strongest fouling (80 % of h lost, 40-50 min to its asymptote)
-        // grows at 1.2-1.5/h at first and leaves 20 % of h_HDT, which the resistance form reaches
-        // at 2.3/h after 1.75 h (ModelSwitches::foulingAsResistance; the linear form's bound was 0.4).
-        {Param::theta_foul, "theta_foul",
-         "fouling: h = h_HDT / (1 + theta t), a deposit's resistance growing since the batch started", "1/h",
-         0, 0, 3.0, "extension heat_transfer_fouling", false, false},
+        // At most 0.4/h, below the plant's strongest fouling (1.2-1.5/h at first). A growing
+        // resistance, h = h_HDT / (1 + theta t) up to 3/h, was tried on 2026-11-28 and taken out:
+        // its fast early fall mimics a step, and gas coupling in the training recordings was named
+        // fouling (docs/mechanisms.md, "Fouling as a growing resistance").
+        {Param::theta_foul, "theta_foul", "fouling: h = h_HDT (1 - theta t), t since the batch started",
+         "1/h", 0, 0, 0.4, "extension heat_transfer_fouling", false, false},
         {Param::tau_meter, "tau_meter", "first-order lag of the outlet moisture meter", "s", 0, 0, 600,
          "extension moisture_meter_lag", false, true},
         {Param::X_meter_offset, "X_meter_offset", "constant offset of the outlet moisture meter", "% wb", 0,

@@ -21,13 +21,6 @@ struct ModelSwitches {
     /// C_p,w (T − T_ref) twice (about 10 % of the evaporative cooling at T_ref = 0 °C).
     /// true: L_v only (consistent, DryTwin's default); false: the paper's printed form.
     bool consistentEnergyBalance = true;
-    /// Fouling (the heat_transfer_fouling extension, DryTwin's own, not the paper's): a deposit's
-    /// thermal resistance growing in proportion to the time since the batch started,
-    /// 1/h = (1 + θ t)/h_HDT, the textbook linear fouling-resistance growth; h stays positive for
-    /// any θ, so a heavy fouling is fitted at its size. false: the form until 2026-11-28,
-    /// h = h_HDT (1 − θ t) floored at 5 %, equal to first order in θ t but bounded at θ ≤ 0.4/h
-    /// (a 6,300 s batch keeps 30 % of h_HDT) and so below the plant's strongest fouling.
-    bool foulingAsResistance = true;
 };
 /// Dry-basis moisture at which C_p is frozen when moistureDependentCp is off (≈ 15 % wb, the
 /// middle of the line's operating range).

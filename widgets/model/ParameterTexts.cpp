@@ -52,9 +52,7 @@ namespace {
         "ParameterTexts",
         "gas-phase coupling: T_gas falls by theta L_v (X_in - X) m_dry / (c_air m_air) along the tube, and w "
         "rises by theta (X_in - X) m_dry / m_air"),
-    QT_TRANSLATE_NOOP(
-        "ParameterTexts",
-        "fouling: h = h_HDT / (1 + theta t), a deposit's resistance growing since the batch started"),
+    QT_TRANSLATE_NOOP("ParameterTexts", "fouling: h = h_HDT (1 - theta t), t since the batch started"),
     QT_TRANSLATE_NOOP("ParameterTexts", "first-order lag of the outlet moisture meter"),
     QT_TRANSLATE_NOOP("ParameterTexts", "constant offset of the outlet moisture meter"),
     QT_TRANSLATE_NOOP("ParameterTexts", "conveyor transport time minus tau_conv"),

@@ -210,13 +210,8 @@ bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, con
                                           properties::math::maxOf(T(l.load(xEntry) - l.state(0)), 0.0);
             }
             env.h = properties::math::constant<T>(p[Param::h_HDT]);
-            if (fouling != 0) { // heat_transfer_fouling, simple form (ModelSwitches::foulingAsResistance)
-                if (sw.foulingAsResistance) {
-                    const T resistanceGrowth = 1.0 + fouling * l.load(hours);
-                    env.h = p[Param::h_HDT] / resistanceGrowth;
-                } else {
-                    env.h = p[Param::h_HDT] * properties::math::maxOf(T(1.0 - fouling * l.load(hours)), 0.05);
-                }
+            if (fouling != 0) { // heat_transfer_fouling, simple form
+                env.h = p[Param::h_HDT] * properties::math::maxOf(T(1.0 - fouling * l.load(hours)), 0.05);
             }
             env.k = p[Param::k_HDT];
             if (falling != 0) { // falling_rate_drying, simple form

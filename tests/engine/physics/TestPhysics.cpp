@@ -341,49 +341,6 @@ private Q_SLOTS:
                 1e-9 * rDry.evaporation);
     }
 
-    /// Fouling as a deposit's growing resistance, h = h_HDT / (1 + θ t): to first order in θ t the
-    /// linear loss of before (ModelSwitches::foulingAsResistance off), wetter and cooler out of the
-    /// tube the heavier it is, and a finite, still-heated line at the bound (3/h over two hours,
-    /// where the linear form had hit its 5 % floor after 19 minutes).
-    void foulingIsAGrowingResistance() {
-        const auto inputs = constantInputs(7200);
-        const auto run = [&](double theta, bool asResistance) {
-            ParameterSet p = m_p;
-            p[Param::theta_foul] = theta;
-            SimulationOptions o;
-            o.switches = m_sw;
-            o.switches.foulingAsResistance = asResistance;
-            auto r = simulateLine(inputs, p, o);
-            if (!r.ok()) {
-                qFatal("%s", r.error().message().c_str());
-            }
-            return *r;
-        };
-        const auto clean = run(0, true);
-        const auto lightResistance = run(0.02, true);
-        const auto lightLinear = run(0.02, false);
-        const std::size_t end = 7199;
-        const double lightEffect = lightResistance.xHdtDb[end] - clean.xHdtDb[end];
-        QVERIFY2(lightEffect > 0, qPrintable(QString::number(lightEffect)));
-        // h differs by (θ t)² / (1 + θ t) = 0.15 % of h_HDT after 2 h; the moisture by a few % of
-        // the fouling's own effect.
-        QVERIFY2(std::abs(lightLinear.xHdtDb[end] - lightResistance.xHdtDb[end]) < 0.05 * lightEffect,
-                 qPrintable(QString("linear %1 resistance %2 clean %3")
-                                .arg(lightLinear.xHdtDb[end])
-                                .arg(lightResistance.xHdtDb[end])
-                                .arg(clean.xHdtDb[end])));
-        const auto medium = run(0.8, true);
-        const auto heavy = run(3.0, true);
-        for (const std::size_t k : {std::size_t{1800}, std::size_t{3600}, end}) {
-            QVERIFY(medium.xHdtDb[k] > lightResistance.xHdtDb[k]);
-            QVERIFY(heavy.xHdtDb[k] > medium.xHdtDb[k]);
-            QVERIFY(heavy.tHdtK[k] < medium.tHdtK[k] && medium.tHdtK[k] < clean.tHdtK[k]);
-            QVERIFY(std::isfinite(heavy.xOutDb[k]) && std::isfinite(heavy.tOutK[k]));
-        }
-        // Still drying at the end (h_HDT / 7): the tube-outlet drier than the feed.
-        QVERIFY2(heavy.xHdtDb[end] < 0.282 - 0.01, qPrintable(QString::number(heavy.xHdtDb[end])));
-    }
-
     /// The inlet gauge's scatter share is the instrument's normal state, fitted before any cause:
     /// a later cause's onset must not switch it off before that onset (it did, and a meter lag
     /// from 11 min then predicted worse than none on the distributed plant).

@@ -537,18 +537,6 @@ private Q_SLOTS:
         QCOMPARE(rewritten["format_version"].get<int>(), io::kModelFormatVersion);
         QCOMPARE(rewritten["site_notes"]["line"].get<int>(), 2);
         QVERIFY(rewritten.contains("residual_models"));
-        // The fouling form: new files write it; a file from before it (its theta_foul fitted as
-        // the linear loss) keeps that form.
-        QVERIFY(back->switches.foulingAsResistance);
-        QVERIFY(v1->switches.foulingAsResistance);
-        auto beforeFoulingForm = j;
-        beforeFoulingForm["switches"].erase("fouling_as_resistance");
-        auto older = io::parseModelFile(beforeFoulingForm.dump(), "older.json");
-        QVERIFY2(older.ok(), older ? "" : older.error().message().c_str());
-        QVERIFY(!older->switches.foulingAsResistance);
-        QCOMPARE(nlohmann::json::parse(io::formatModelFile(*older))["switches"]["fouling_as_resistance"]
-                     .get<bool>(),
-                 false);
 
         // Unknown intervals (NaN, written as null) read back; a wrongly typed key is an error, not a crash.
         auto withNan = s.model();
