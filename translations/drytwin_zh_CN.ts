@@ -2806,17 +2806,17 @@
 <context>
     <name>drytwin::widgets::MainWindow</name>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="34"/>
+        <location filename="../widgets/MainWindow.cpp" line="36"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="48"/>
+        <location filename="../widgets/MainWindow.cpp" line="56"/>
         <source>Data</source>
         <translation>数据</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="49"/>
+        <location filename="../widgets/MainWindow.cpp" line="57"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
@@ -2827,7 +2827,7 @@
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="25"/>
-        <location filename="../widgets/MainWindow.cpp" line="50"/>
+        <location filename="../widgets/MainWindow.cpp" line="58"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
@@ -2889,33 +2889,33 @@
         <translation>报告已写入：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="51"/>
+        <location filename="../widgets/MainWindow.cpp" line="59"/>
         <source>Residual model</source>
         <translation>残差模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="52"/>
+        <location filename="../widgets/MainWindow.cpp" line="60"/>
         <source>Diagnostics</source>
         <translation>诊断</translation>
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="29"/>
-        <location filename="../widgets/MainWindow.cpp" line="53"/>
+        <location filename="../widgets/MainWindow.cpp" line="61"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="54"/>
+        <location filename="../widgets/MainWindow.cpp" line="62"/>
         <source>What-if MPC</source>
         <translation>假设分析 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="55"/>
+        <location filename="../widgets/MainWindow.cpp" line="63"/>
         <source>3D line</source>
         <translation>三维产线</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="57"/>
+        <location filename="../widgets/MainWindow.cpp" line="65"/>
         <source>Training</source>
         <translation>培训</translation>
     </message>
@@ -2924,47 +2924,47 @@
         <translation>未加载数据。文件 ▸ 打开数据集…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="61"/>
+        <location filename="../widgets/MainWindow.cpp" line="69"/>
         <source>&lt;b&gt;Data&lt;/b&gt;: the loaded batches, their rows kept by the cleaning, and every measured channel over time. Select several batches to overlay them; drop files here to open them. Files with other column names open through Column mapping…</source>
         <translation>&lt;b&gt;数据&lt;/b&gt;：已加载的批次、清洗后保留的行，以及每个测量通道随时间的变化。选择多个批次可叠加显示；把文件拖到这里即可打开。列名不同的文件通过“列映射…”打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="65"/>
+        <location filename="../widgets/MainWindow.cpp" line="73"/>
         <source>&lt;b&gt;Model&lt;/b&gt;: the physics model&apos;s parameters with units and bounds (paper Eqs. 1–19), and its simulation against the measurements. Edit a value to try it; Undo takes it back.</source>
         <translation>&lt;b&gt;模型&lt;/b&gt;：物理模型的参数及其单位和范围（论文公式 1–19），以及模拟与测量的对比。修改数值即可试验；“撤销”可恢复。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="69"/>
+        <location filename="../widgets/MainWindow.cpp" line="77"/>
         <source>&lt;b&gt;Calibrate&lt;/b&gt;: fits the ticked parameters to the data (a global search, then BOBYQA) and gives each its 95 % interval. Stop keeps the best so far.</source>
         <translation>&lt;b&gt;标定&lt;/b&gt;：把勾选的参数拟合到数据（先全局搜索，再 BOBYQA），并给出各自的 95 % 区间。停止时保留目前最优。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="72"/>
+        <location filename="../widgets/MainWindow.cpp" line="80"/>
         <source>&lt;b&gt;Residual model&lt;/b&gt;: learns a correction of the physics model from the data (PGRL-CC, paper Eqs. 20–30) and scores it on held-out data beside the comparison models and the two trivial forecasts. Skill below 1 beats both.</source>
         <translation>&lt;b&gt;残差模型&lt;/b&gt;：从数据学习物理模型的修正（PGRL-CC，论文公式 20–30），并在留出数据上与对比模型及两个平凡预测一起评分。预报技巧小于 1 即优于二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="76"/>
+        <location filename="../widgets/MainWindow.cpp" line="84"/>
         <source>&lt;b&gt;Diagnostics&lt;/b&gt;: the residuals&apos; autocorrelation and spectrum (white noise is what a complete model leaves), where in the operating range the physics model errs, and what its error moves with.</source>
         <translation>&lt;b&gt;诊断&lt;/b&gt;：残差的自相关和频谱（完整的模型只留下白噪声）、物理模型在工况范围内何处出错，以及其误差随什么变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="80"/>
+        <location filename="../widgets/MainWindow.cpp" line="88"/>
         <source>&lt;b&gt;Discover&lt;/b&gt;: what the simulation gets wrong, the physical cause when one is specific (better on every output it touches, consistent across batches, told apart from its look-alikes), and the gain of the extended model.</source>
         <translation>&lt;b&gt;发现&lt;/b&gt;：模拟哪里不准；当某个物理原因具有特异性时给出它（在其影响的每个输出上都更好、各批次间一致、能与相似原因区分），以及扩展模型的收益。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="84"/>
+        <location filename="../widgets/MainWindow.cpp" line="92"/>
         <source>&lt;b&gt;What-if MPC&lt;/b&gt;: a scenario run against the virtual plant once per controller, an MPC on each model that exists and the plant&apos;s own PI loop, with the paper&apos;s Table 2 metrics.</source>
         <translation>&lt;b&gt;假设分析 MPC&lt;/b&gt;：针对虚拟装置，为每个控制器运行一次情景：每个已有模型上的 MPC 以及装置自己的 PI 回路，并给出论文表 2 的指标。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="88"/>
+        <location filename="../widgets/MainWindow.cpp" line="96"/>
         <source>&lt;b&gt;3D line&lt;/b&gt;: the drying tube, conveyor and winnower with the material parcels coloured by moisture at the time cursor; the slider moves every plot&apos;s cursor.</source>
         <translation>&lt;b&gt;三维产线&lt;/b&gt;：干燥管、输送机和风选机，物料颗粒按时间光标处的含水率着色；滑块同时移动所有曲线图的光标。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="91"/>
+        <location filename="../widgets/MainWindow.cpp" line="99"/>
         <source>&lt;b&gt;Training&lt;/b&gt;: the line runs live for a trainee; the instructor&apos;s window injects faults, freezes the clock and scores the answers.</source>
         <translation>&lt;b&gt;培训&lt;/b&gt;：产线为学员实时运行；教员窗口可注入故障、冻结时钟并为回答评分。</translation>
     </message>
@@ -3047,12 +3047,12 @@
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="123"/>
+        <location filename="../widgets/MainWindow.cpp" line="131"/>
         <source>The line&apos;s commissioning runs are in %1: choose them under &quot;Compare with a reference period&quot; to ask what changed since commissioning.</source>
         <translation>产线的调试运行数据位于 %1：在“与参考期比较”中选择它们，即可查看自调试以来发生了什么变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="131"/>
+        <location filename="../widgets/MainWindow.cpp" line="139"/>
         <source>Opening the recording beside %1; the data-set list at the top right switches back.</source>
         <translation>正在 %1 之外另行打开该记录；用右上角的数据集列表可切换回去。</translation>
     </message>
@@ -3774,7 +3774,7 @@ The results below are from the last complete run.</source>
 <context>
     <name>drytwin::widgets::PlotStack</name>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="240"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="247"/>
         <source>Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click to zoom out, middle drag to pan</source>
         <translation>Ctrl+单击：游标 A，Shift+单击：游标 B，Alt+单击：时间游标；拖动放大，右键缩小，中键拖动平移</translation>
     </message>
@@ -3793,57 +3793,57 @@ The results below are from the last complete run.</source>
         <translation>把这些曲线图保存为 PNG、SVG 或 PDF，或把数据保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="224"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="231"/>
         <source>time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="303"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="310"/>
         <source>No data yet</source>
         <translation>尚无数据</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="574"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="581"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="577"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="584"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="580"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="587"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="584"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="591"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="588"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="595"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="674"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="681"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="702"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="709"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
         <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="738"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="745"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="652"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="659"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
@@ -3852,7 +3852,7 @@ The results below are from the last complete run.</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="737"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="744"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
@@ -3861,12 +3861,12 @@ The results below are from the last complete run.</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="744"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="751"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="746"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="753"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
@@ -4752,9 +4752,8 @@ extrapolation</source>
         <translation>X_out 真实值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="299"/>
         <source>Monitor T² [-]</source>
-        <translation>监控 T² [-]</translation>
+        <translation type="vanished">监控 T² [-]</translation>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="301"/>
@@ -4844,6 +4843,11 @@ extrapolation</source>
         <location filename="../widgets/training/TrainingPanel.cpp" line="298"/>
         <source>X_in</source>
         <translation>X_in</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="299"/>
+        <source>T² [-]</source>
+        <translation>T² [-]</translation>
     </message>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="320"/>

@@ -547,7 +547,6 @@ ZH = {
     "DryTwin (the causes' parameters): none moved beyond its normal spread (p = %1)": "DryTwin（各原因的参数）：均未超出其正常范围（p = %1）",
     "The line's commissioning runs are in %1: choose them under \"Compare with a reference period\" to ask what changed since commissioning.": "产线的调试运行数据位于 %1：在“与参考期比较”中选择它们，即可查看自调试以来发生了什么变化。",
     "Two detectors commissioned on healthy runs of this line: the physics model's error, and a dynamic PCA monitor of the screens' signals. Each alarms when the line leaves its normal (1 % chance of a false alarm over the session)": "两个检测器在本产线的健康运行数据上调试：物理模型误差，以及画面信号的动态 PCA 监控。产线偏离正常状态时各自报警（整个会话的误报概率为 1 %）",
-    "Monitor T² [-]": "监控 T² [-]",
     "T² of the model's error": "模型误差的 T²",
     "Line monitor unavailable: %1": "产线监控不可用：%1",
     "Line monitor: normal (as on its commissioning runs).": "产线监控：正常（与调试运行一致）。",

@@ -23,8 +23,10 @@
 
 #include <QCloseEvent>
 #include <QDir>
+#include <QGuiApplication>
 #include <QIcon>
 #include <QLabel>
+#include <QScreen>
 #include <QSettings>
 #include <QTabWidget>
 
@@ -34,7 +36,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowTitle(tr("DryTwin"));
     initDryTwinResources();
     setWindowIcon(QIcon(QStringLiteral(":/icons/drytwin.svg")));
-    resize(1280, 800);
+    // 1280 x 800, or the room a smaller screen leaves (a 1366 x 768 laptop: its window manager then
+    // fits the frame; the tabs ask for at most 690 px, theWindowFitsASmallLaptopScreen).
+    QSize opening(1280, 800);
+    if (const QScreen* screen = QGuiApplication::primaryScreen()) {
+        opening = opening.boundedTo(screen->availableGeometry().size());
+    }
+    resize(opening);
 
     m_tabs = new QTabWidget;
     m_data = new DataPanel(m_workbench);

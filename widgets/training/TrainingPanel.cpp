@@ -296,7 +296,7 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_hot = m_plots->addCurve(1, tr("T_hot"), none, none, seriesColour(2));
     m_feed = m_plots->addCurve(2, tr("feed"), none, none, seriesColour(5));
     m_xIn = m_plots->addCurve(3, tr("X_in"), none, none, seriesColour(3));
-    m_plots->addPlot(tr("Monitor T² [-]"));
+    m_plots->addPlot(tr("T² [-]")); // the legend says whose (the monitor's, of the model's error)
     m_plots->setLogScale(4, false, true);
     m_monitorLimit = m_plots->addCurve(4, tr("99 % limit"), none, none, Qt::black, Qt::DashLine, 1.0);
     m_monitorT2 = m_plots->addCurve(4, tr("T² of the model's error"), none, none, QColor(214, 39, 40),
