@@ -393,9 +393,8 @@ int partFreeRun(bool quick) {
             std::fprintf(stderr,
                          "  extended PBM: X %.4f T %.3f; extended PBM + lags' ridge: X %.4f T %.3f "
                          "(plain PBM X %.4f T %.3f)\n",
-                         extPbm.first, extPbm.second, extCorrected.first, extCorrected.second,
-                         freeRunMae(views, evaluation::pbmPrediction).first,
-                         freeRunMae(views, evaluation::pbmPrediction).second);
+                         extPbm.first, extPbm.second, extCorrected.first, extCorrected.second, pbm.first,
+                         pbm.second);
         }
         const auto ridgeMae = freeRunMae(views, corrected(*ridge));
         const auto bankMae = freeRunMae(views, corrected(*bank));

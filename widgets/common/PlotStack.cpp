@@ -209,24 +209,21 @@ int PlotStack::addPlot(const QString& yTitle) {
     m_emptyRanges.emplace_back(kNaN, kNaN);
     m_plotEmptyTexts.emplace_back();
     m_layout->insertWidget(static_cast<int>(m_plots.size()) - 1, plot, 4);
-    // Each plot at least 110 px tall; in a stack of five or more (Training's) less, so that the
-    // window fits the height a 1366 x 768 laptop leaves it (about 700 px below its title bar, above a
-    // taskbar: theWindowFitsASmallLaptopScreen): the top plot keeps room for the legend's two rows
-    // and the bottom one for the time axis, so that every canvas stays about as tall as its title.
+    // The top plot holds the legend, the bottom one the time axis: each a little more room, in its
+    // share of the height (stretch) and in its least height. Each plot at least 110 px tall; in a
+    // stack of five or more (Training's) less, so that the window fits the height a 1366 x 768
+    // laptop leaves it (about 700 px below its title bar, above a taskbar:
+    // theWindowFitsASmallLaptopScreen), every canvas still about as tall as its axis title. In a
+    // stack of four or more the legend may take two rows: the top plot gets more, so that its
+    // canvas keeps room for its title (at five, in a window of the 700 px a small laptop leaves,
+    // "X_out [% 湿基]" needed 7).
+    const bool many = m_plots.size() >= 5;
+    const int topStretch = many ? 7 : m_plots.size() > 3 || m_plots.size() == 2 ? 6 : 5;
     for (std::size_t i = 0; i < m_plots.size(); ++i) {
-        const bool many = m_plots.size() >= 5;
-        m_plots[i]->setMinimumHeight(!many ? 110 : i == 0 ? 136 : i + 1 == m_plots.size() ? 100 : 84);
-    }
-    // The bottom plot also holds the time axis: a little more room keeps its canvas as tall.
-    for (std::size_t i = 0; i < m_plots.size(); ++i) {
-        // The top plot holds the legend, the bottom one the time axis: each a little more room.
-        // In a stack of four or more (Training) the legend may take two rows: the top plot gets
-        // more, so that its canvas keeps room for its axis title (at five, in a window of the
-        // 700 px a small laptop leaves, "X_out [% 湿基]" needed 7).
-        const int top = m_plots.size() > 4 ? 7 : m_plots.size() > 3 || m_plots.size() == 2 ? 6 : 5;
-        m_layout->setStretch(static_cast<int>(i), i == 0 && m_plots.size() > 1 ? top
-                                                  : i + 1 == m_plots.size()    ? 5
-                                                                               : 4);
+        const bool top = i == 0 && m_plots.size() > 1;
+        const bool bottom = !top && i + 1 == m_plots.size();
+        m_layout->setStretch(static_cast<int>(i), top ? topStretch : bottom ? 5 : 4);
+        m_plots[i]->setMinimumHeight(!many ? 110 : top ? 136 : bottom ? 100 : 84);
     }
     // A plot added after setXTitle() keeps that title (Training's monitor plot, below the rest).
     setXTitle(m_xTitle.isEmpty() ? tr("time [s]") : m_xTitle);
