@@ -23,8 +23,12 @@ double upperTail(double z) {
     return boost::math::cdf(boost::math::complement(n, z));
 }
 
+bool twoSided(Param p) {
+    return properties::info(p).lower < 0;
+}
+
 double changeP(Param p, double z) {
-    return properties::info(p).lower < 0 ? 2 * upperTail(std::abs(z)) : upperTail(z);
+    return twoSided(p) ? 2 * upperTail(std::abs(z)) : upperTail(z);
 }
 
 bool channelAt(const data::SiBatch& b, const physics::SimulationResult& r, std::size_t j, std::size_t k,

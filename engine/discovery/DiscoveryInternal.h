@@ -28,6 +28,9 @@ constexpr double kHacAcfThreshold = 0.05; ///< HAC bandwidth: first lag whose |A
 
 /// One-sided upper tail of the standard normal.
 double upperTail(double z);
+/// Whether cause parameter @p p changes either way (an offset, whose range reaches below 0) rather
+/// than by growing from 0 (a loss, a lag).
+bool twoSided(Param p);
 /// The p of a score or change z of cause parameter @p p: one-sided for a cause that grows from 0
 /// (a loss, a lag), two-sided for an offset.
 double changeP(Param p, double z);

@@ -28,10 +28,6 @@ namespace detail {
 
 namespace {
 
-bool twoSided(Param p) {
-    return properties::info(p).lower < 0;
-}
-
 /// A fitted cause against its value on the reference, with the period-to-period @p spread.
 struct FitChange {
     double normalSd = 0; ///< a period's normal scatter about the reference's value
