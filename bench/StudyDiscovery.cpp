@@ -265,6 +265,8 @@ int main(int argc, char** argv) {
             discoveryOptions.lineStructureWithinReferenceRange = false;
         } else if (a == "--cause-test-screen-only") { // against a reference: no second look at named fits
             discoveryOptions.causeTestAtNamedFits = false;
+        } else if (a == "--lag-from-start") { // against a reference: no lag fitted from the change point
+            discoveryOptions.lagFromChangePoint = false;
         } else if (a == "--no-structure") { // against a reference: the causes' normal values alone
             discoveryOptions.learnLineStructure = false;
         } else if (a == "--reference-batches" && std::atoi(next.c_str()) >= 2) {
@@ -293,15 +295,15 @@ int main(int argc, char** argv) {
             ++i;
         } else {
             std::fprintf(
-                stderr,
-                "usage: study_discovery [--quick] [--plant distributed|lumped] "
-                "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
-                "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
-                "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
-                "[--evaluations N] [--oracle] [--reference] [--reference-batches N] [--no-structure] "
-                "[--structure-extrapolates] [--cause-test-screen-only] [--keep-taken-up] [--size-rule] "
-                "[--spread-bound] [--undetected-at-5-percent] [--share-of-whole] "
-                "[--no-constancy] [--look-alike-overall]\n");
+                stderr, "usage: study_discovery [--quick] [--plant distributed|lumped] "
+                        "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
+                        "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
+                        "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
+                        "[--evaluations N] [--oracle] [--reference] [--reference-batches N] [--no-structure] "
+                        "[--structure-extrapolates] [--cause-test-screen-only] [--keep-taken-up] "
+                        "[--lag-from-start] [--size-rule] "
+                        "[--spread-bound] [--undetected-at-5-percent] [--share-of-whole] "
+                        "[--no-constancy] [--look-alike-overall]\n");
             return 2;
         }
     }

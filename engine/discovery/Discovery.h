@@ -113,6 +113,14 @@ struct DiscoveryOptions {
     /// it, lies back within its normal spread is withdrawn with a note (it had taken up their
     /// effect while alone). false: every cause named stays, as before 2026-11-27 (late).
     bool withdrawCausesTakenUpLater = true;
+    /// Against a reference, once a detector has flagged a change: a lag (the meter's, the hot-air
+    /// transmitter's) that shows no onset of its own is also fitted from the detector's change
+    /// point (its time within its run, for every batch), and kept from there where it fits the
+    /// training part better than from the start. A step of the process before the fault began,
+    /// read without the lag, otherwise holds the lag fitted from the start down (a 60 s meter lag
+    /// from 5 min of a one-hour training recording: 5.7 s from the start, 39 s from the change
+    /// point at 11 min). false: from the start or its own onset only, as before 2026-11-28.
+    bool lagFromChangePoint = true;
     /// Against a reference period: a new batch whose typical value of an input lies outside what
     /// the reference saw (its 0.5-99.5 % range widened by a quarter of the span: a winter batch
     /// against summer runs) has no normal level to be compared with; both detectors judge only

@@ -57,6 +57,13 @@ struct Stack {
     std::vector<double> timeS; ///< per entry: time since its batch started [s]
 };
 
+/// An onset (time since each batch's start): where a cause starts to act, with its profile
+/// interval and, for a scan, its likelihood ratio over "from the start".
+struct Onset {
+    bool found = false;
+    double s = 0, lowS = 0, highS = 0, likelihoodRatio = 0;
+};
+
 /// A cause's parameter on a reference period (a time when the line ran as it should): its
 /// value, the standard error of that value and the normal spread of one period about it.
 struct ReferenceValue {
@@ -83,6 +90,9 @@ struct Reference {
     /// The screen's level before a detected change widened it (DiscoveryOptions::screenAlpha): a
     /// lag that passes it is fitted even outside the leading few (SelectionRound::scoreAndFit).
     double strictScreenAlpha = 0.05;
+    /// The change point of the detector that flagged the new data (its onset within the onset
+    /// run, seconds since that run's start, with its 95 % interval); not found when none did.
+    Onset changePoint;
 };
 
 /// The data of one discovery run: batches, their split, and the training rows the tests use.
@@ -226,13 +236,8 @@ struct ChannelLag {
 };
 ChannelLag lagOnChannel(const Problem& pr, const std::vector<physics::SimulationResult>& sims, int channel,
                         double atTauS = 0, double fromS = 0);
-/// An onset (time since each batch's start) from which the cause's column explains most: a scan
-/// of the score test's reduction, with its likelihood ratio over "from the start" and its
-/// profile interval.
-struct Onset {
-    bool found = false;
-    double s = 0, lowS = 0, highS = 0, likelihoodRatio = 0;
-};
+/// The onset from which the cause's column explains most: a scan of the score test's reduction,
+/// with its likelihood ratio over "from the start" and its profile interval.
 Onset findOnset(const Stack& st, const std::vector<int>& nuisance, int cand);
 /// findOnset on the cause's own effect at its fitted value @p fitted (the simulation with it
 /// against the same with the cause at 0, from the start) instead of its tangent at 0, with the

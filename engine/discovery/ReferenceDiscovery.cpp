@@ -662,6 +662,11 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     }
     result.detection = std::move(*detection);
     ref.changeDetected = result.detection.changed;
+    for (const auto* d : {&result.detection.drytwin, &result.detection.pca}) {
+        if (d->changed && d->hasOnset && !ref.changePoint.found) {
+            ref.changePoint = Onset{true, d->onsetS, d->onsetLowS, d->onsetHighS, 0};
+        }
+    }
     ref.strictScreenAlpha = options.screenAlpha;
     if (result.detection.changed && options.screenAlphaOnceDetected > 0) {
         auto& screen = prepared->pr.options.screenAlpha;
