@@ -8,6 +8,12 @@ import re
 import sys
 
 ZH = {
+    "Only the causes asked were tried: %1. That the others are not named says nothing about them.": "只试了所问的原因：%1。其他原因未被指认，并不说明它们不存在。",
+    "Commissioned on the reference period (%1 batch(es), %2 rows): h_HDT %3 W/(m²·K) and k_HDT %4 m/s, held fixed on the data judged.": "已在参考期上调试（%1 个批次，%2 行）：h_HDT %3 W/(m²·K)，k_HDT %4 m/s，在所判断的数据上保持不变。",
+    "The line's own structure (what the model always gets wrong: a ridge regression on the inputs and the model's outputs, penalty %1) was learnt on the reference and taken off the measurements; the residuals shown are what is left.": "产线自身的结构（模型总是出错的部分：基于输入和模型输出的岭回归，惩罚系数 %1）已在参考期上学习，并从测量值中扣除；所示残差为剩余部分。",
+    "%1 is measured in the data but not in every batch of the reference period: the periods are compared on the outputs both measure, without it.": "%1 在数据中有测量，但参考期并非每个批次都有：两个时期只在双方都测量的输出上比较，不含它。",
+    "%1 is measured in the reference period but not in every batch of the data: the periods are compared on the outputs both measure, without it.": "%1 在参考期中有测量，但数据并非每个批次都有：两个时期只在双方都测量的输出上比较，不含它。",
+    "The reference period's files: %1": "参考期的文件：%1",
     " %1 moved against this cause's effect (%2 times what its model form says), by less than that output's noise can tell from none: it counts neither for the cause nor against it.": " %1 的变化与该原因的作用方向相反（为其模型形式所预测的 %2 倍），但小于该输出的噪声所能分辨的程度：既不支持也不否定该原因。",
     "The reference period itself drifts: the model's %1 error changes by %2 %3 within a mean batch. A reference should be a period when the line ran well; against this one a change since may read as none.": "参考期本身在漂移：模型的 %1 误差在一个平均批次内变化 %2 %3。参考期应是产线运行良好的时段；以此为参考，之后的变化可能显示为无变化。",
     "DryTwin (the causes' estimates): none moved beyond its normal spread (p %1)": "DryTwin（各原因的估计）：均未超出其正常范围（p %1）",
@@ -155,7 +161,7 @@ ZH = {
     "DryTwin": "DryTwin",
     "DryTwin plots": "DryTwin 图表",
     "DryTwin projects (*.drytwin)": "DryTwin 项目 (*.drytwin)",
-    "Effort [K²]": "控制动作量 [K²]",
+    "Effort\n[K²]": "控制动作量\n[K²]",
     "Eq. 30: constrained fit with certificate": "式 30：带证书的约束拟合",
     "Estimate": "估计值",
     "Evaluate": "评估",
@@ -175,7 +181,7 @@ ZH = {
     "Held-out": "留出数据",
     "Held-out part: %1 rows. Skill below 1 beats both reference predictors (the last measurement held, and the PBM with its last error held).":
         "留出部分：%1 行。预报技巧低于 1 表示优于两个参考预测器（保持最后一次测量值，以及保持最后误差的 PBM）。",
-    "IAE [% wb·s]": "IAE [% 湿基·s]",
+    "IAE\n[% wb·s]": "IAE\n[% 湿基·s]",
     "Kept": "保留",
     "Length [min]": "时长 [min]",
     "Load %1": "加载 %1",
@@ -200,7 +206,7 @@ ZH = {
     "Model": "模型",
     "Model %1 opened": "已打开模型 %1",
     "Model files (*.json)": "模型文件 (*.json)",
-    "Model gain [%/K]": "模型增益 [%/K]",
+    "Model gain\n[%/K]": "模型增益\n[%/K]",
     "Model saved to %1": "模型已保存到 %1",
     "Models shown (tick to overlay):": "显示的模型（勾选以叠加）：",
     "No data loaded. File ▸ Open data set…": "未加载数据。文件 ▸ 打开数据集…",
@@ -251,7 +257,7 @@ ZH = {
     "Simulate": "仿真",
     "Simulate the model to see the parcels.": "运行模型仿真以查看物料团。",
     "Simulated %1 batches; mean outlet-moisture MAE %2 % wb": "已仿真 %1 个批次；出口含水率平均 MAE %2 % 湿基",
-    "Solve median [ms]": "求解时间中位数 [ms]",
+    "Solve median\n[ms]": "求解时间中位数\n[ms]",
     "Source": "来源",
     "Stop, keep best": "停止并保留最优",
     "T_HDT [°C]": "T_HDT [°C]",
@@ -275,7 +281,7 @@ ZH = {
     "Value": "数值",
     "Verdict: %1. Named: %2.": "结论：%1。已命名：%2。",
     "Verdict: %1. No mechanism is named.": "结论：%1。未命名任何机理。",
-    "Violations [%]": "越限 [%]",
+    "Violations\n[%]": "越限\n[%]",
     "What does the simulation get wrong, and why? (score tests, fits, held-out gain)":
         "仿真哪里出错，为什么？（得分检验、拟合、留出数据上的改进）",
     "What-if MPC": "假设分析 MPC",

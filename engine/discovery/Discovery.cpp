@@ -1,6 +1,7 @@
 // Question 3: which cause to name, and whether it is specific. Causes are chosen one at a time
 // on the training part, confirmed on the held-out part, and named only when they are specific.
 #include "discovery/DiscoveryInternal.h"
+#include "discovery/DiscoveryNotes.h"
 
 #include <algorithm>
 #include <chrono>
@@ -97,16 +98,10 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
     result.baseParameters = current;
     result.notes = dataNotes(batches);
     if (!options.causes.empty()) { // a finding's absence then says nothing about the causes not asked
-        std::string asked;
-        for (const auto& c : options.causes) {
-            asked += (asked.empty() ? "" : ", ") + c;
-        }
-        result.notes.push_back("only the causes asked were tried: " + asked);
+        result.notes.push_back(notes::onlyCausesAsked(options.causes));
     }
     if (options.freeOutletMixing) {
-        result.notes.push_back(format("the line's outlet mixing (belt and winnower, both outlet channels): a "
-                                      "first-order lag of %.1f s fitted with h_HDT and k_HDT (0: plug flow)",
-                                      mixingS));
+        result.notes.push_back(notes::outletMixing(mixingS));
     }
     result.trainingRows = prepared->keptTrain;
     result.heldOutRows = prepared->keptTest;
@@ -144,10 +139,7 @@ Expected<DiscoveryResult> discover(const std::vector<data::SiBatch>& batches,
         result.rounds.push_back(record);
     } else {
         result.notes.push_back(
-            format("the inlet gauge's normal scatter: %.0f %% of X_in's fast variation (%.2g %% wb, "
-                   "1σ about its 30 s mean) is taken as gauge scatter, not moisture, in the "
-                   "starting model",
-                   100 * current[Param::phi_X_in_scatter], inletFastScatterPct(pr)));
+            notes::inletGaugeScatter(100 * current[Param::phi_X_in_scatter], inletFastScatterPct(pr)));
     }
 
     std::vector<Param> remaining;

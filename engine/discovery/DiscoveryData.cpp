@@ -1,6 +1,7 @@
 // The data of a discovery run: its options checked, the chronological split, the training rows
 // the tests and fits use, and what the files cannot give.
 #include "discovery/DiscoveryInternal.h"
+#include "discovery/DiscoveryNotes.h"
 
 #include <algorithm>
 
@@ -132,15 +133,13 @@ std::vector<std::string> dataNotes(const std::vector<data::SiBatch>& batches) {
         }
     }
     if (!xHdt) {
-        notes.push_back("X_hdt_pct is not measured: the tube-outlet moisture cannot separate meter and "
-                        "conveyor causes from tube causes; outlet channels only");
+        notes.push_back(notes::tubeOutletMoistureNotMeasured());
     }
     if (!tHdt) {
-        notes.push_back("T_hdt_C is not measured: tube-outlet temperature not used");
+        notes.push_back(notes::tubeOutletTemperatureNotMeasured());
     }
     if (!airVaries) {
-        notes.push_back("air_speed_m_s is constant (not measured?): gas_phase_coupling works with that one "
-                        "value and cannot use the air speed's variation");
+        notes.push_back(notes::airSpeedConstant());
     }
     return notes;
 }

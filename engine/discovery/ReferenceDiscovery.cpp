@@ -9,6 +9,7 @@
 // reference (its "normal value", with the spread between the reference's parts), and a fitted
 // cause is named only when its value lies beyond that normal spread.
 #include "discovery/DiscoveryInternal.h"
+#include "discovery/DiscoveryNotes.h"
 
 #include "common/Units.h"
 #include "monitoring/Monitor.h"
@@ -250,10 +251,7 @@ Status withdrawTakenUp(const Problem& pr, DiscoveryResult& result) {
                 // The extended model leaves it out too, so that the model and its file agree with the
                 // causes named (a file keeps a mechanism only with its finding).
                 result.parameters[f.parameter] = result.baseParameters[f.parameter];
-                result.notes.push_back(f.cause +
-                                       ": named first, then withdrawn: refitted with the causes named "
-                                       "after it, it is " +
-                                       *why + "; it had taken up what they explain");
+                result.notes.push_back(notes::withdrawnAfterLaterCauses(f.cause, *why));
                 continue;
             }
         }
@@ -316,14 +314,8 @@ std::vector<std::string> operatingRangeNotes(const std::vector<data::SiBatch>& r
                                              const std::vector<data::SiBatch>& batches, bool levelNotJudged) {
     std::vector<std::string> notes;
     for (const auto& o : outsideReference(reference, batches)) {
-        notes.push_back(format(
-            "%s: %s is typically %.4g %s, outside what the reference saw (%.4g to %.4g %s): %s",
-            batches[o.batch].id.c_str(), o.input->name, o.typical, o.input->unit, o.low, o.high,
-            o.input->unit,
-            levelNotJudged ? "the reference has no normal level for these conditions, so the detectors "
-                             "judge only changes within this batch, not its level"
-                           : "the model's error there is judged beyond the reference's conditions, and an "
-                             "alarm there may be that condition rather than a change of the line"));
+        notes.push_back(notes::outsideReference(batches[o.batch].id, o.input->name, o.typical, o.input->unit,
+                                                o.low, o.high, levelNotJudged));
     }
     return notes;
 }
@@ -596,47 +588,27 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
         const double drift = std::abs(o.trendPerHour) * o.meanBatchHours;
         if ((o.output == "X_out" || o.output == "T_out") && o.trendSe > 0 &&
             std::abs(o.trendPerHour) > 3 * o.trendSe && drift > (moisture ? 0.5 : 3.0)) {
-            result.notes.push_back(
-                format("the reference period itself drifts: the model's %s error changes by %.2g %s within "
-                       "a mean batch (%.3g ± %.2g %s/h); a reference should be a period when the line ran "
-                       "well, or a change since may read as none",
-                       o.output.c_str(), o.trendPerHour * o.meanBatchHours, o.unit.c_str(), o.trendPerHour,
-                       o.trendSe, o.unit.c_str()));
+            result.notes.push_back(notes::referenceDrifts(o.output, o.trendPerHour * o.meanBatchHours, o.unit,
+                                                          o.trendPerHour, o.trendSe));
         }
     }
-    result.notes.push_back(
-        format("commissioned on the reference period (%zu batch(es), %zu rows): h_HDT %.4g "
-               "W/(m²·K), k_HDT %.4g m/s, held fixed on the data judged",
-               reference.size(), refPrepared->keptTrain, commissionedParameters[Param::h_HDT],
-               commissionedParameters[Param::k_HDT]));
+    result.notes.push_back(notes::commissionedOnReference(reference.size(), refPrepared->keptTrain,
+                                                          commissionedParameters[Param::h_HDT],
+                                                          commissionedParameters[Param::k_HDT]));
     if (options.learnLineStructure) {
-        result.notes.push_back(format(
-            "the line's own structure (what the model always gets wrong, a ridge regression on the inputs "
-            "and "
-            "the model's outputs, penalty %.0e) learnt on the reference and taken off the measurements: the "
-            "residuals below are what is left",
-            structure.lambda));
+        result.notes.push_back(notes::lineStructureLearnt(structure.lambda));
     }
     // Fewer than three batches: a period's normal spread comes from thirds of a recording, which
     // share its day and weather; what varies between weeks is not in it.
     if (reference.size() < 3) {
-        result.notes.push_back(format(
-            "the reference holds %zu batch(es): a period's normal spread comes from thirds of them, which "
-            "share their day and weather; a change named here may be a difference of conditions the "
-            "reference never showed. A reference of several batches over the conditions the line runs in "
-            "(weeks, seasons) judges better",
-            reference.size()));
+        result.notes.push_back(notes::shortReference(reference.size()));
     }
     for (auto& note :
          detail::operatingRangeNotes(reference, batches, options.judgeOnlyChangesBeyondReferenceConditions)) {
         result.notes.push_back(std::move(note));
     }
     if (!options.causes.empty()) {
-        std::string list;
-        for (const auto& c : options.causes) {
-            list += (list.empty() ? "" : ", ") + c;
-        }
-        result.notes.push_back("only the causes asked were tried: " + list);
+        result.notes.push_back(notes::onlyCausesAsked(options.causes));
     }
     result.trainingRows = prepared->keptTrain;
     result.heldOutRows = prepared->keptTest;

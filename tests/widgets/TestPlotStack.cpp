@@ -15,6 +15,7 @@
 #include <QHeaderView>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QStandardPaths>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -251,6 +252,66 @@ private Q_SLOTS:
         QVERIFY(f.open(QIODevice::ReadOnly));
         QVERIFY(f.readLine().startsWith("plot,curve,"));
         QVERIFY(s.readout().contains("foo.csv"));
+    }
+
+    // A results table narrower than its columns gives up the width of its first column (the
+    // names), down to that column's header, before it scrolls: the numbers beside the names show
+    // (at 1280 x 800 the What-if table's solve times lay beyond the edge). A name cut short keeps
+    // its whole text as a tooltip; with room again the column is as wide as its names.
+    void aNarrowTableShortensItsNamesBeforeItScrolls() {
+        QWidget host;
+        auto* table = makeResultTable(
+            {"Controller", "IAE [% wb·s]", "Effort [K²]", "Violations [%]", "Solve median [ms]"});
+        table->setParent(&host);
+        const QStringList names{"Physics model", "Physics + input-only correction", "LSTM (black box)",
+                                "Physics + learnt correction (PGRL-CC)", "PI loop (the plant's own)"};
+        table->setRowCount(static_cast<int>(names.size()));
+        for (int r = 0; r < names.size(); ++r) {
+            setTableRow(table, r, {names[r], "303.2", "1102.4", "14.9", "3.02"});
+        }
+        fitTableWidth(table);
+        host.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&host));
+        const QHeaderView* header = table->horizontalHeader();
+
+        // With room, the names are whole.
+        table->resize(1600, 260);
+        QCoreApplication::processEvents();
+        const int natural = header->sectionSize(0);
+        const int wide = header->length() + table->width() - table->viewport()->width(); // every column whole
+        QVERIFY2(natural >= table->fontMetrics().horizontalAdvance(names[3]),
+                 qPrintable(QString::number(natural)));
+        QVERIFY(natural > header->sectionSizeHint(0) + 40);
+
+        table->resize(wide - 120, 260); // 120 px short of showing every column at full width
+        QCoreApplication::processEvents();
+        const int last = table->columnCount() - 1;
+        QVERIFY2(header->sectionViewportPosition(last) + header->sectionSize(last) <=
+                     table->viewport()->width(),
+                 qPrintable(QStringLiteral("last column ends at %1 of %2 px")
+                                .arg(header->sectionViewportPosition(last) + header->sectionSize(last))
+                                .arg(table->viewport()->width())));
+        QCOMPARE(table->horizontalScrollBar()->maximum(), 0);
+        QVERIFY(header->sectionSize(0) < natural);
+        QVERIFY(header->sectionSize(0) >= header->sectionSizeHint(0)); // its header stays whole
+        QCOMPARE(table->item(3, 0)->toolTip(), names[3]);
+        for (int c = 1; c <= last; ++c) { // the numbers whole: each as wide as its header and cells
+            QVERIFY(header->sectionSize(c) >= header->sectionSizeHint(c));
+            QVERIFY(header->sectionSize(c) >=
+                    table->fontMetrics().horizontalAdvance(table->item(0, c)->text()));
+        }
+
+        table->resize(1600, 260); // and whole again with room
+        QCoreApplication::processEvents();
+        QCOMPARE(header->sectionSize(0), natural);
+
+        // So narrow that the numbers would not show even beside the names' header: the table
+        // scrolls and keeps its names whole (three controllers cut to "Physics …" could not be
+        // told apart).
+        table->resize(200, 260);
+        QCoreApplication::processEvents();
+        QCOMPARE(header->sectionSize(0), natural);
+        QVERIFY(table->horizontalScrollBar()->maximum() > 0);
     }
 
     // Item 17: every table's columns are as wide as their headers, in English and in Chinese, with

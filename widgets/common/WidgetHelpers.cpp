@@ -106,6 +106,7 @@ void fitTableWidth(QTableWidget* table, int maxWidth) {
     if (auto* fitted = dynamic_cast<FittedTable*>(table)) {
         fitted->setPreferredWidth(std::min(maxWidth, width));
         table->setMinimumWidth(std::min(kLeastFittedTableWidth, width));
+        fitted->fitFirstColumn();
     } else {
         table->setMinimumWidth(std::min(maxWidth, width));
     }
@@ -118,6 +119,40 @@ int heightForRows(const QTableWidget* table, int rows) {
            table->horizontalScrollBar()->sizeHint().height() + 2 * table->frameWidth();
 }
 } // namespace
+
+void FittedTable::fitFirstColumn() {
+    QHeaderView* header = horizontalHeader();
+    if (columnCount() < 2 || header->stretchLastSection()) {
+        return; // a stretched last column takes what room there is
+    }
+    const int natural = std::max(header->sectionSizeHint(0), sizeHintForColumn(0));
+    int others = 0;
+    for (int c = 1; c < columnCount(); ++c) {
+        others += header->isSectionHidden(c) ? 0 : header->sectionSize(c);
+    }
+    // Shortened only where that shows every column: a table that scrolls anyway keeps its names
+    // whole (three controllers cut to "Physics …" could not be told apart).
+    const int room = viewport()->width() - others;
+    const int width = room >= header->sectionSizeHint(0) ? std::min(natural, room) : natural;
+    if (header->sectionResizeMode(0) != QHeaderView::Interactive) {
+        header->setSectionResizeMode(0, QHeaderView::Interactive);
+    }
+    if (header->sectionSize(0) != width) {
+        header->resizeSection(0, width);
+    }
+    if (width < natural) {
+        for (int r = 0; r < rowCount(); ++r) {
+            if (QTableWidgetItem* cell = item(r, 0); cell && cell->toolTip().isEmpty()) {
+                cell->setToolTip(cell->text());
+            }
+        }
+    }
+}
+
+void FittedTable::resizeEvent(QResizeEvent* event) {
+    QTableWidget::resizeEvent(event);
+    fitFirstColumn();
+}
 
 QSize FittedTable::minimumSizeHint() const {
     QSize least = QTableWidget::minimumSizeHint();

@@ -49,6 +49,15 @@ public:
     /// Measured when the layout asks, after the style and fonts are applied: measured when the
     /// table is made, the header was a few pixels short and a row of five was cut.
     QSize minimumSizeHint() const override;
+    /// The first column (the names: a cause, a controller, a batch) as wide as its cells where
+    /// there is room, and narrower, down to its header, where that shows every other column
+    /// without scrolling (at 1280 × 800 the Discover ranking's losses lay beyond the edge); a name
+    /// cut short keeps its whole text in a tooltip. A table that would scroll anyway keeps its
+    /// names whole. fitTableWidth() and every resize call it.
+    void fitFirstColumn();
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     int m_preferredWidth = 0;

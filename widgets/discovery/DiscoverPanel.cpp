@@ -5,6 +5,7 @@
 #include "common/Series.h"
 #include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
+#include "discovery/DiscoveryNotes.h"
 
 #include <QCoreApplication>
 #include <QFileDialog>
@@ -22,6 +23,7 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 
 namespace drytwin::widgets {
@@ -167,10 +169,6 @@ void DiscoverPanel::showReference() {
                                              : tr("Reference period: %1").arg(QFileInfo(path).fileName()));
     m_referenceLabel->setToolTip(path);
 }
-
-namespace {
-QString noteText(const std::string& note); // below, with the other wordings of engine texts
-} // namespace
 
 void DiscoverPanel::showDetection() {
     const auto& r = m_workbench.latest().discover;
@@ -437,97 +435,6 @@ QString rejectionText(const std::string& code) {
     return DiscoverPanel::tr("no clear held-out gain");
 }
 
-/// Discovery's notes on the data (DiscoveryData.cpp, Discovery.cpp), worded in the GUI's language
-/// from their fixed forms; a note of a newer engine is shown as it is.
-QString noteText(const std::string& note) {
-    const QString n = QString::fromStdString(note);
-    const auto starts = [&](const char* prefix) { return n.startsWith(QLatin1String(prefix)); };
-    const auto numbers = [&] {
-        static const QRegularExpression number(QStringLiteral("[-+]?[0-9]*\\.?[0-9]+(?:[eE][-+]?[0-9]+)?"));
-        QStringList found;
-        for (auto it = number.globalMatch(n); it.hasNext();) {
-            found << it.next().captured(0);
-        }
-        return found;
-    };
-    if (starts("X_hdt_pct is not measured")) {
-        return DiscoverPanel::tr(
-            "X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor "
-            "causes cannot be told from tube causes; only the outlet channels are used.");
-    }
-    if (starts("T_hdt_C is not measured")) {
-        return DiscoverPanel::tr("T_hdt_C is not measured: the tube-outlet temperature is not used.");
-    }
-    if (starts("air_speed_m_s is constant")) {
-        return DiscoverPanel::tr(
-            "air_speed_m_s is constant (not measured?): the air cooling along the tube is "
-            "fitted with that one value.");
-    }
-    if (starts("the line's outlet mixing") && !numbers().isEmpty()) {
-        return DiscoverPanel::tr(
-                   "The line's outlet mixing (belt and winnower): a first-order lag of %1 s fitted "
-                   "with h_HDT and k_HDT (0: plug flow).")
-            .arg(numbers().first());
-    }
-    if (starts("the inlet gauge's normal scatter") && numbers().size() >= 2) {
-        return DiscoverPanel::tr(
-                   "The inlet gauge's normal scatter: %1 % of X_in's fast variation (%2 % wb) is taken "
-                   "as gauge scatter, not moisture, in the starting model.")
-            .arg(numbers().at(0), numbers().at(1));
-    }
-    // ReferenceDiscovery.cpp's withdrawTakenUp and its note on a short reference.
-    static const QRegularExpression withdrawn(QStringLiteral(
-        "^(\\S+): named first, then withdrawn: refitted with the causes named after it, it is (.*); it had "
-        "taken up what they explain$"));
-    if (const auto m = withdrawn.match(n); m.hasMatch()) {
-        return DiscoverPanel::tr(
-                   "%1 was named first, then withdrawn: refitted together with the causes named "
-                   "after it, it is no change of the line (it had taken up what they explain). "
-                   "In detail: %2.")
-            .arg(causeDisplayName(m.captured(1).toStdString()), m.captured(2));
-    }
-    if (starts("the reference holds ") && !numbers().isEmpty()) {
-        return DiscoverPanel::tr(
-                   "The reference holds %1 batch(es): a period's normal spread comes from thirds of "
-                   "them, which share their day and weather; a change named here may be a "
-                   "difference of conditions the reference never showed. A reference of several "
-                   "batches over the conditions the line runs in (weeks, seasons) judges better.")
-            .arg(numbers().first());
-    }
-    // ReferenceDiscovery.cpp: "the reference period itself drifts: the model's X_out error changes by
-    // 2.7 % wb within a mean batch (...)".
-    static const QRegularExpression drifts(
-        QStringLiteral("^the reference period itself drifts: the model's (\\S+) error changes by (\\S+) (.+) "
-                       "within a mean batch"));
-    if (const auto m = drifts.match(n); m.hasMatch()) {
-        return DiscoverPanel::tr("The reference period itself drifts: the model's %1 error changes by %2 %3 "
-                                 "within a mean batch. A reference should be a period when the line ran "
-                                 "well; against this one a change since may read as none.")
-            .arg(m.captured(1), m.captured(2), m.captured(3));
-    }
-    // ReferenceDiscovery.cpp's operatingRangeNotes: "B04: T_amb_C is typically 31.6 °C, outside what
-    // the reference saw (11 to 23 °C): ..."
-    static const QRegularExpression outside(QStringLiteral(
-        "^(.+): (\\S+) is typically (\\S+) (.+), outside what the reference saw \\((\\S+) to (\\S+) "));
-    if (const auto m = outside.match(n); m.hasMatch()) {
-        // Whether the detectors judged the batch's level
-        // (DiscoveryOptions::judgeOnlyChangesBeyondReferenceConditions).
-        const QString text =
-            n.contains(QStringLiteral("only changes within"))
-                ? DiscoverPanel::tr(
-                      "%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "
-                      "reference has no normal level for these conditions, so the detectors judge "
-                      "only changes within this batch, not its level.")
-                : DiscoverPanel::tr(
-                      "%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "
-                      "model's error there is judged beyond the reference's conditions, and an alarm "
-                      "there may be that condition rather than a change of the line.");
-        return text.arg(m.captured(1), columnDisplayName(m.captured(2).toStdString()), m.captured(3),
-                        m.captured(4), m.captured(5), m.captured(6));
-    }
-    return n;
-}
-
 /// A signature no cause explains (Signature::type), in the GUI's language.
 QString signatureText(const discovery::Signature& u) {
     if (u.type == "periodic") {
@@ -574,6 +481,139 @@ QString roundReasonText(const discovery::Round& rd) {
 }
 
 } // namespace
+
+/// Discovery's notes, worded in the GUI's language from their forms in
+/// engine/discovery/DiscoveryNotes.h (TestMainWindow's everyDiscoveryNoteIsWordedInChinese builds
+/// each form there and checks it is worded here).
+QString DiscoverPanel::noteText(const std::string& note) {
+    const QString n = QString::fromStdString(note);
+    const auto starts = [&](const char* prefix) { return n.startsWith(QLatin1String(prefix)); };
+    const auto numbers = [&] {
+        static const QRegularExpression number(QStringLiteral("[-+]?[0-9]*\\.?[0-9]+(?:[eE][-+]?[0-9]+)?"));
+        QStringList found;
+        for (auto it = number.globalMatch(n); it.hasNext();) {
+            found << it.next().captured(0);
+        }
+        return found;
+    };
+    if (starts("X_hdt_pct is not measured")) {
+        return tr("X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor "
+                  "causes cannot be told from tube causes; only the outlet channels are used.");
+    }
+    if (starts("T_hdt_C is not measured")) {
+        return tr("T_hdt_C is not measured: the tube-outlet temperature is not used.");
+    }
+    if (starts("air_speed_m_s is constant")) {
+        return tr("air_speed_m_s is constant (not measured?): the air cooling along the tube is "
+                  "fitted with that one value.");
+    }
+    if (starts("the line's outlet mixing") && !numbers().isEmpty()) {
+        return tr("The line's outlet mixing (belt and winnower): a first-order lag of %1 s fitted "
+                  "with h_HDT and k_HDT (0: plug flow).")
+            .arg(numbers().first());
+    }
+    if (starts("the inlet gauge's normal scatter") && numbers().size() >= 2) {
+        return tr("The inlet gauge's normal scatter: %1 % of X_in's fast variation (%2 % wb) is taken "
+                  "as gauge scatter, not moisture, in the starting model.")
+            .arg(numbers().at(0), numbers().at(1));
+    }
+    // ReferenceDiscovery.cpp's withdrawTakenUp and its note on a short reference.
+    static const QRegularExpression withdrawn(QStringLiteral(
+        "^(\\S+): named first, then withdrawn: refitted with the causes named after it, it is (.*); it had "
+        "taken up what they explain$"));
+    if (const auto m = withdrawn.match(n); m.hasMatch()) {
+        return tr("%1 was named first, then withdrawn: refitted together with the causes named "
+                  "after it, it is no change of the line (it had taken up what they explain). "
+                  "In detail: %2.")
+            .arg(causeDisplayName(m.captured(1).toStdString()), m.captured(2));
+    }
+    if (starts("the reference holds ") && !numbers().isEmpty()) {
+        return tr("The reference holds %1 batch(es): a period's normal spread comes from thirds of "
+                  "them, which share their day and weather; a change named here may be a "
+                  "difference of conditions the reference never showed. A reference of several "
+                  "batches over the conditions the line runs in (weeks, seasons) judges better.")
+            .arg(numbers().first());
+    }
+    // ReferenceDiscovery.cpp: "the reference period itself drifts: the model's X_out error changes by
+    // 2.7 % wb within a mean batch (...)".
+    static const QRegularExpression drifts(
+        QStringLiteral("^the reference period itself drifts: the model's (\\S+) error changes by (\\S+) (.+) "
+                       "within a mean batch"));
+    if (const auto m = drifts.match(n); m.hasMatch()) {
+        return tr("The reference period itself drifts: the model's %1 error changes by %2 %3 "
+                  "within a mean batch. A reference should be a period when the line ran "
+                  "well; against this one a change since may read as none.")
+            .arg(m.captured(1), m.captured(2), m.captured(3));
+    }
+    // ReferenceDiscovery.cpp's operatingRangeNotes: "B04: T_amb_C is typically 31.6 °C, outside what
+    // the reference saw (11 to 23 °C): ..."
+    static const QRegularExpression outside(QStringLiteral(
+        "^(.+): (\\S+) is typically (\\S+) (.+), outside what the reference saw \\((\\S+) to (\\S+) "));
+    if (const auto m = outside.match(n); m.hasMatch()) {
+        // Whether the detectors judged the batch's level
+        // (DiscoveryOptions::judgeOnlyChangesBeyondReferenceConditions).
+        const QString text =
+            n.contains(QStringLiteral("only changes within"))
+                ? tr("%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "
+                     "reference has no normal level for these conditions, so the detectors judge "
+                     "only changes within this batch, not its level.")
+                : tr("%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "
+                     "model's error there is judged beyond the reference's conditions, and an alarm "
+                     "there may be that condition rather than a change of the line.");
+        return text.arg(m.captured(1), columnDisplayName(m.captured(2).toStdString()), m.captured(3),
+                        m.captured(4), m.captured(5), m.captured(6));
+    }
+    if (n.startsWith(QLatin1String(discovery::notes::kOnlyCausesAsked))) {
+        QStringList causes;
+        for (const auto& c : n.mid(static_cast<int>(std::strlen(discovery::notes::kOnlyCausesAsked)))
+                                 .split(QStringLiteral(", "), Qt::SkipEmptyParts)) {
+            causes << causeDisplayName(c.toStdString());
+        }
+        return tr("Only the causes asked were tried: %1. That the others are not named says nothing about "
+                  "them.")
+            .arg(causes.join(tr(", ")));
+    }
+    // ReferenceDiscovery.cpp: "commissioned on the reference period (6 batch(es), 45000 rows): h_HDT
+    // 71.98 W/(m²·K), k_HDT 0.02392 m/s, held fixed on the data judged".
+    static const QRegularExpression commissioned(QStringLiteral(
+        "^commissioned on the reference period \\((\\d+) batch\\(es\\), (\\d+) rows\\): h_HDT (\\S+) "
+        "W/\\(m²·K\\), k_HDT (\\S+) m/s"));
+    if (const auto m = commissioned.match(n); m.hasMatch()) {
+        return tr("Commissioned on the reference period (%1 batch(es), %2 rows): h_HDT %3 W/(m²·K) and "
+                  "k_HDT %4 m/s, held fixed on the data judged.")
+            .arg(m.captured(1), m.captured(2), m.captured(3), m.captured(4));
+    }
+    static const QRegularExpression structure(QStringLiteral(
+        "^the line's own structure \\(what the model always gets wrong, a ridge regression on the inputs and "
+        "the model's outputs, penalty (\\S+)\\)"));
+    if (const auto m = structure.match(n); m.hasMatch()) {
+        return tr("The line's own structure (what the model always gets wrong: a ridge regression on the "
+                  "inputs and the model's outputs, penalty %1) was learnt on the reference and taken off "
+                  "the measurements; the residuals shown are what is left.")
+            .arg(m.captured(1));
+    }
+    // SessionDiscover.cpp: an output only one of the two periods measures.
+    static const QRegularExpression onePeriod(
+        QStringLiteral("^(\\S+) is measured in the (data|reference period) "
+                       "but not in every batch of the"));
+    if (const auto m = onePeriod.match(n); m.hasMatch()) {
+        const QString column = columnDisplayName(m.captured(1).toStdString());
+        return m.captured(2) == QLatin1String("data")
+                   ? tr("%1 is measured in the data but not in every batch of the reference period: the "
+                        "periods are compared on the outputs both measure, without it.")
+                         .arg(column)
+                   : tr("%1 is measured in the reference period but not in every batch of the data: the "
+                        "periods are compared on the outputs both measure, without it.")
+                         .arg(column);
+    }
+    // SessionData.cpp: the data checks' note on the reference's own files (the note itself is the
+    // Data tab's, shown as the checks word it).
+    if (n.startsWith(QLatin1String(discovery::notes::kAboutReferenceFiles))) {
+        return tr("The reference period's files: %1")
+            .arg(n.mid(static_cast<int>(std::strlen(discovery::notes::kAboutReferenceFiles))));
+    }
+    return n;
+}
 
 QString DiscoverPanel::specificityText(const discovery::Finding& f) {
     const auto& info = properties::info(f.parameter);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QWidget>
+#include <string>
 
 class QLabel;
 class QPushButton;
@@ -35,6 +36,9 @@ public:
     /// @brief Per-part consistency, transfer, onset and look-alikes of a finding, worded in the GUI's
     /// language.
     static QString specificityText(const discovery::Finding& f);
+    /// @brief One of discovery's notes (engine/discovery/DiscoveryNotes.h) in the GUI's language;
+    /// a note of another form (a newer engine's) is shown as it is.
+    static QString noteText(const std::string& note);
     PlotStack* plots() const { return m_plots; }
     /// @brief The reference period's controls and what detection found against it.
     QPushButton* referenceButton() const { return m_referenceButton; }

@@ -24,6 +24,7 @@
 #include <QScrollArea>
 #include <QSplitter>
 #include <QStandardPaths>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -64,8 +65,11 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     m_prediction->setToolTip(tr("Show the horizon the controllers predicted at this decision"));
     m_note = new QLabel(tr("Runs the scenario against the virtual plant once per controller."));
     m_note->setWordWrap(true);
-    m_table = makeResultTable({tr("Controller"), tr("IAE [% wb·s]"), tr("Effort [K²]"), tr("Violations [%]"),
-                               tr("Solve median [ms]"), tr("Fallbacks"), tr("Model gain [%/K]")});
+    // Quantity and unit on two lines, as the Residual tab's tables: seven columns beside the
+    // controllers' names fit the left half of a 1280-pixel window.
+    m_table =
+        makeResultTable({tr("Controller"), tr("IAE\n[% wb·s]"), tr("Effort\n[K²]"), tr("Violations\n[%]"),
+                         tr("Solve median\n[ms]"), tr("Fallbacks"), tr("Model gain\n[%/K]")});
     setHeaderToolTips(
         m_table,
         {QString(),
@@ -98,6 +102,10 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     m_scenarioTabs = new QTabWidget;
     m_scenarioTabs->addTab(formScroll, tr("Form"));
     m_scenarioTabs->addTab(m_editor, tr("JSON"));
+    // A row of the form (or the JSON) at least: on a small laptop screen the results table's five
+    // rows and its two-line header come first, and the form scrolls.
+    m_scenarioTabs->setMinimumHeight(m_scenarioTabs->tabBar()->sizeHint().height() +
+                                     2 * m_scenarioTabs->fontMetrics().height() + 16);
     ll->addWidget(m_scenarioTabs, 2);
     auto* controllerBox = new QWidget;
     controllerBox->setLayout(controllers);

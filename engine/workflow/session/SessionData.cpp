@@ -10,6 +10,7 @@
 #include "data/BatchWriter.h"
 #include "data/ColumnMapping.h"
 #include "data/PlantFileReader.h"
+#include "discovery/DiscoveryNotes.h"
 #include "io/ModelFile.h"
 #include "io/ResultFiles.h"
 #include "plant/PlantExport.h"
@@ -137,7 +138,7 @@ Expected<std::vector<data::SiBatch>> Session::loadReference(const std::string& p
     // The same checks the data get (a hot air 74 K from its setpoint: °F under a °C header?):
     // a reference read wrong commissions the model wrong, and every later verdict with it.
     for (const auto& n : data::summarize(loaded.dataSet, m_cleaning).notes) {
-        notes.push_back("the reference period: " + n);
+        notes.push_back(discovery::notes::aboutReferenceFiles(n));
     }
     return data::toSi(loaded.dataSet, data::clean(loaded.dataSet, m_cleaning));
 }

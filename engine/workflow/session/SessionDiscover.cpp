@@ -6,6 +6,7 @@
 #include "workflow/Session.h"
 
 #include "common/Parallel.h"
+#include "discovery/DiscoveryNotes.h"
 #include "hybrid/Evaluation.h"
 #include "workflow/session/SessionInternal.h"
 
@@ -63,10 +64,7 @@ Expected<DiscoverResult> Session::discover(const DiscoverOptions& options, const
             for (auto& b : inData ? *narrowed : *reference) {
                 b.*has = false;
             }
-            referenceNotes.push_back(std::string(name) + " is measured in " +
-                                     (inData ? "the data but not in every batch of the reference period"
-                                             : "the reference period but not in every batch of the data") +
-                                     ": the periods are compared on the outputs both measure, without it");
+            referenceNotes.push_back(discovery::notes::measuredInOnePeriodOnly(name, inData));
         }
         found = discovery::discoverChange(*reference, narrowed ? *narrowed : m_si, m_model, options.discovery,
                                           discoveryProgress);
