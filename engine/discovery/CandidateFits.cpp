@@ -239,8 +239,7 @@ Expected<SelectionRound::Fit> SelectionRound::fittedFromOnset(const Candidate& c
             if (*fromChange && (*fromChange)->loss < fit.loss) {
                 return **fromChange;
             }
-            m_fits[cand.parameter] = fit; // refitFromOnset replaced it
-            return fit;
+            m_fits[cand.parameter] = fit; // refitFromOnset replaced it; from the start it stays
         }
     }
     if (!fit.onset.found) {
