@@ -8,6 +8,7 @@ import re
 import sys
 
 ZH = {
+    "The causes are judged on the batches from %1 on, where the change began; %2 before it ran as the reference did.": "原因按从 %1 起的批次判断，变化从那里开始；此前的 %2 与参考期运行一致。",
     "Only the causes asked were tried: %1. That the others are not named says nothing about them.": "只试了所问的原因：%1。其他原因未被指认，并不说明它们不存在。",
     "Commissioned on the reference period (%1 batch(es), %2 rows): h_HDT %3 W/(m²·K) and k_HDT %4 m/s, held fixed on the data judged.": "已在参考期上调试（%1 个批次，%2 行）：h_HDT %3 W/(m²·K)，k_HDT %4 m/s，在所判断的数据上保持不变。",
     "The line's own structure (what the model always gets wrong: a ridge regression on the inputs and the model's outputs, penalty %1) was learnt on the reference and taken off the measurements; the residuals shown are what is left.": "产线自身的结构（模型总是出错的部分：基于输入和模型输出的岭回归，惩罚系数 %1）已在参考期上学习，并从测量值中扣除；所示残差为剩余部分。",

@@ -121,6 +121,14 @@ struct DiscoveryOptions {
     /// from 5 min of a one-hour training recording: 5.7 s from the start, 39 s from the change
     /// point at 11 min). false: from the start or its own onset only, as before 2026-11-28.
     bool lagFromChangePoint = true;
+    /// Against a reference, once DryTwin's monitor has flagged a change: the batches wholly before
+    /// its change point's 95 % interval ran as the reference did, and the causes are fitted and
+    /// tested on the batches from the change on. A change that began at a batch change (after a
+    /// cleaning, a maintenance) was otherwise fitted beside batches without it: a fouling of 0.2
+    /// in the last two of four batches named nothing, the first two called a batch shift. The
+    /// batches are taken in the order given (chronological: file names, a historian's times).
+    /// false: every batch judged, as before 2026-11-28 (afternoon).
+    bool judgeFromChangeOn = true;
     /// Against a reference period: a new batch whose typical value of an input lies outside what
     /// the reference saw (its 0.5-99.5 % range widened by a quarter of the span: a winter batch
     /// against summer runs) has no normal level to be compared with; both detectors judge only
@@ -441,6 +449,9 @@ struct DiscoveryResult {
     bool hasReference = false;
     std::string referencePath; ///< set by the caller that read it
     std::size_t referenceBatches = 0, referenceRows = 0;
+    /// Against a reference: the batches left out of the causes' judgement because they lie wholly
+    /// before the change point (DiscoveryOptions::judgeFromChangeOn), in their order.
+    std::vector<std::string> batchesBeforeChange;
     ChangeDetection detection;
     Ending ending;
 };

@@ -85,6 +85,15 @@ std::string shortReference(std::size_t batches) {
                   batches);
 }
 
+std::string judgedFromChangeOn(const std::vector<std::string>& before, const std::string& firstJudged) {
+    std::string list;
+    for (const auto& b : before) {
+        list += (list.empty() ? "" : ", ") + b;
+    }
+    return "the causes are judged on the batches from " + firstJudged + " on, where the change began; " +
+           list + " before it ran as the reference did";
+}
+
 std::string measuredInOnePeriodOnly(const std::string& column, bool inData) {
     return column + " is measured in " +
            (inData ? "the data but not in every batch of the reference period"

@@ -43,6 +43,9 @@ std::string shortReference(std::size_t batches);
 std::string measuredInOnePeriodOnly(const std::string& column, bool inData);
 /// A note on the reference period's own files (the data checks' @p note).
 std::string aboutReferenceFiles(const std::string& note);
+/// The causes judged on the batches from @p firstJudged on; @p before lie wholly before the change
+/// point of DryTwin's monitor (DiscoveryOptions::judgeFromChangeOn).
+std::string judgedFromChangeOn(const std::vector<std::string>& before, const std::string& firstJudged);
 
 /// The fixed starts of the forms above that carry a value after them.
 inline constexpr const char* kOnlyCausesAsked = "only the causes asked were tried: ";

@@ -19,6 +19,7 @@
 #include <boost/math/distributions/normal.hpp>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <string_view>
 
 namespace drytwin::discovery {
@@ -423,6 +424,17 @@ Status scatterChange(const Problem& pr, const Problem& referencePr, const CauseF
     return {};
 }
 
+/// The first batch DryTwin's monitor does not place wholly before its change point: the run that
+/// holds the 95 % interval's low end (0 when no change, or no onset, was found).
+std::size_t firstBatchOfChange(const monitoring::Detection& d) {
+    if (!d.changed || !d.hasOnset || d.onsetLowWindow < 0 ||
+        static_cast<std::size_t>(d.onsetLowWindow) >= d.series.size()) {
+        return 0;
+    }
+    return static_cast<std::size_t>(
+        std::max(0, d.series[static_cast<std::size_t>(d.onsetLowWindow)].runIndex));
+}
+
 } // namespace
 
 Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& reference,
@@ -565,13 +577,35 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
         return rv;
     };
 
-    auto prepared = prepare(newForModel, model, options);
+    // Detection first: does the new data differ from the reference at all, and from when?
+    if (stop(0.08, "detection against the reference period")) {
+        return cancelledError("discover");
+    }
+    auto detection = detectChange(reference, refForModel, *refSims, batches, newForModel, *newSims, options);
+    if (!detection) {
+        return detection.error();
+    }
+
+    // The causes are judged from the change on: the batches wholly before the change point's
+    // interval ran as the reference did (judgeFromChangeOn). Too little left after it to split
+    // into a training and a held-out part: every batch, as before.
+    std::size_t firstJudged = options.judgeFromChangeOn ? firstBatchOfChange(detection->drytwin) : 0;
+    std::vector<data::SiBatch> judged;
+    const auto prepareFrom = [&](std::size_t first) {
+        judged.assign(newForModel.begin() + static_cast<std::ptrdiff_t>(first), newForModel.end());
+        return prepare(judged, model, options);
+    };
+    auto prepared = prepareFrom(firstJudged);
+    if (!prepared && firstJudged > 0 && prepared.error().kind != ErrorKind::Cancelled) {
+        firstJudged = 0;
+        prepared = prepareFrom(0);
+    }
     if (!prepared) {
         return prepared.error();
     }
     prepared->pr.reference = &ref;
     const Problem& pr = prepared->pr;
-    const CauseFit refit = makeCauseFit(newForModel, pr, progress, fraction);
+    const CauseFit refit = makeCauseFit(judged, pr, progress, fraction);
 
     DiscoveryResult result;
     result.hasReference = true;
@@ -610,10 +644,19 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     if (!options.causes.empty()) {
         result.notes.push_back(notes::onlyCausesAsked(options.causes));
     }
+    if (firstJudged > 0) {
+        for (std::size_t b = 0; b < firstJudged; ++b) {
+            result.batchesBeforeChange.push_back(batches[b].id);
+        }
+        result.notes.push_back(
+            notes::judgedFromChangeOn(result.batchesBeforeChange, batches[firstJudged].id));
+    }
     result.trainingRows = prepared->keptTrain;
     result.heldOutRows = prepared->keptTest;
 
-    std::vector<physics::SimulationResult> sims = std::move(*newSims);
+    std::vector<physics::SimulationResult> sims(
+        std::make_move_iterator(newSims->begin() + static_cast<std::ptrdiff_t>(firstJudged)),
+        std::make_move_iterator(newSims->end()));
     result.residuals = analyse(pr, sims);
     auto held = heldOut(pr, commissionedParameters);
     if (!held) {
@@ -624,14 +667,6 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
         return lossStack.error();
     }
 
-    // Detection first: does the new data differ from the reference at all, and from when?
-    if (stop(0.08, "detection against the reference period")) {
-        return cancelledError("discover");
-    }
-    auto detection = detectChange(reference, refForModel, *refSims, batches, newForModel, sims, options);
-    if (!detection) {
-        return detection.error();
-    }
     result.detection = std::move(*detection);
     ref.changeDetected = result.detection.changed;
     for (const auto* d : {&result.detection.drytwin, &result.detection.pca}) {

@@ -511,6 +511,8 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
     if (r.hasReference) {
         j["reference"] = {
             {"path", r.referencePath}, {"batches", r.referenceBatches}, {"rows", r.referenceRows}};
+        // The judged data's batches left out of the causes' fits: wholly before the change point.
+        j["batches_before_change"] = r.batchesBeforeChange;
         const auto& d = r.detection;
         j["detection"] = {{"changed", d.changed},
                           {"statistic", "run-level GLR of a mean shift in the window means of log T² and log "

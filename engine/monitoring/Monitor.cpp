@@ -409,9 +409,23 @@ Expected<Detection> Monitor::judge(const std::vector<MonitorRun>& runs) const {
         const auto runEnd = static_cast<std::size_t>(at.runIndex + 1 < static_cast<int>(d.runStarts.size())
                                                          ? d.runStarts[at.runIndex + 1]
                                                          : d.series.size());
+        // A change at the first window judged after a stretch no window judges (the run's first
+        // minutes, the model's start-up; frozen or cleaned-out readings) may have come anywhere in
+        // that stretch, at the batch change (a cleaning, a maintenance) too: the interval reaches
+        // back to the end of the last window judged before it, or to the run's start. It read
+        // "15 to 16 min" for a fouling whose windows from 8 to 15 min were not judged.
+        const auto stretchStart = [&](int w) {
+            const int run = d.series[static_cast<std::size_t>(w)].runIndex;
+            for (int s = w - 1; s >= 0 && d.series[static_cast<std::size_t>(s)].runIndex == run; --s) {
+                if (std::isfinite(d.series[static_cast<std::size_t>(s)].zT2)) {
+                    return d.series[static_cast<std::size_t>(s)].timeS;
+                }
+            }
+            return 0.0;
+        };
         d.onsetRun = at.run;
         d.onsetS = at.timeS - windowLen;
-        d.onsetLowS = low.runIndex == at.runIndex ? low.timeS - windowLen : 0.0;
+        d.onsetLowS = low.runIndex == at.runIndex ? stretchStart(d.onsetLowWindow) : 0.0;
         d.onsetHighS = high.runIndex == at.runIndex ? high.timeS : d.series[runEnd - 1].timeS;
     }
     const int firstT2 = d.t2.firstAlarmWindow, firstSpe = d.spe.firstAlarmWindow;

@@ -167,8 +167,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Bound, cause, parameter, estimat
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(DiscoveryResult, verdict, residuals, residualsAfter, ranking,
                                                 rounds, findings, unexplained, bounds, baseParameters,
                                                 parameters, trainingRows, heldOutRows, notes, hasReference,
-                                                referencePath, referenceBatches, referenceRows, detection,
-                                                ending)
+                                                referencePath, referenceBatches, referenceRows,
+                                                batchesBeforeChange, detection, ending)
 } // namespace discovery
 
 namespace control {

@@ -527,6 +527,15 @@ QString DiscoverPanel::noteText(const std::string& note) {
                   "In detail: %2.")
             .arg(causeDisplayName(m.captured(1).toStdString()), m.captured(2));
     }
+    // ReferenceDiscovery.cpp: the batches wholly before the change point left out of the causes' judgement.
+    static const QRegularExpression fromChange(QStringLiteral(
+        "^the causes are judged on the batches from (.+) on, where the change began; (.+) before it ran as "
+        "the reference did$"));
+    if (const auto m = fromChange.match(n); m.hasMatch()) {
+        return tr("The causes are judged on the batches from %1 on, where the change began; %2 before it "
+                  "ran as the reference did.")
+            .arg(m.captured(1), m.captured(2));
+    }
     if (starts("the reference holds ") && !numbers().isEmpty()) {
         return tr("The reference holds %1 batch(es): a period's normal spread comes from thirds of "
                   "them, which share their day and weather; a change named here may be a "
