@@ -188,9 +188,11 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     addData(train);
     train->add_option("--model", o.modelPath, "calibrated model file")->required();
     train->add_option("--out", o.outPath, "model file to write")->required();
-    train->add_option("--lags", o.residualLags,
-                      "measured residual lags in the lifted state (default: chosen among 16, 32 and 60 by "
-                      "multi-step validation inside the training part)");
+    train
+        ->add_option("--lags", o.residualLags,
+                     "measured residual lags in the lifted state (default: chosen among 16, 32 and 60 by "
+                     "multi-step validation inside the training part)")
+        ->check(CLI::Range(1, 600));
     train->add_option("--degree", o.degree, "polynomial dictionary degree (1-3)")->capture_default_str();
     train->add_option("--base", o.baseFeatures,
                       "base features of the orthogonal projection (Eq. 27), e.g. 1 T_amb X_HDT^2; "
@@ -212,7 +214,9 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     evaluate->add_option("--json", o.jsonPath, "write the metrics as JSON (what they mean: docs/pgrl-cc.md)");
     evaluate->add_option("--diagnostics", o.diagnosticsPath,
                          "write residual ACF, PSD and the eigenvalues of A (before/after) as JSON");
-    evaluate->add_option("--horizon", o.horizonSteps, "multi-step horizon [steps]")->capture_default_str();
+    evaluate->add_option("--horizon", o.horizonSteps, "multi-step horizon [steps]")
+        ->check(CLI::Range(1, 3600))
+        ->capture_default_str();
     reg(evaluate, runEvaluate);
 
     auto* discover = app.add_subcommand("discover", "find what the simulation gets wrong and name the cause");
@@ -319,7 +323,8 @@ std::string unwritableReason(const std::string& path) {
         folder = ".";
     }
     if (!fs::is_directory(folder, ec)) {
-        return "the folder '" + folder.string() + "' does not exist";
+        return fs::exists(folder, ec) ? "'" + folder.string() + "' is a file, not a folder"
+                                      : "the folder '" + folder.string() + "' does not exist";
     }
     if (::access(folder.c_str(), W_OK) != 0) {
         return "the folder '" + folder.string() + "' is not writable";
@@ -354,7 +359,8 @@ ParsedCommandLine CommandLine::parse(int argc, char** argv) {
             name == "generate" || name == "training" || name == "pipeline" || name == "report";
         for (const auto& [flag, path] :
              {std::pair<const char*, const std::string*>{"--out", &m_impl->options.outPath},
-              {"--json", &m_impl->options.jsonPath}}) {
+              {"--json", &m_impl->options.jsonPath},
+              {"--diagnostics", &m_impl->options.diagnosticsPath}}) {
             if (path->empty() || (writesFolder && std::string(flag) == "--out")) {
                 continue;
             }

@@ -101,7 +101,17 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
         // job: idle again first), then the screenshots and quit; with no screenshot, the window
         // stays open after saving.
         auto projectToSave = std::make_shared<QString>(saveProjectPath);
-        auto finish = [&window, screenshot, projectToSave]() -> bool {
+        // A scripted run says what failed (loading the data, a model file, an action) on stderr and
+        // ends with exit 3, as the headless commands do, rather than 0 beside a screenshot of it.
+        auto failures = std::make_shared<int>(0);
+        QObject::connect(&window.workbench(), &drytwin::widgets::Workbench::failed, &window,
+                         [failures](const QString&, const QString& message, bool cancelled) {
+                             if (!cancelled) {
+                                 ++*failures;
+                                 std::fprintf(stderr, "drytwin: error: %s\n", qPrintable(message));
+                             }
+                         });
+        auto finish = [&window, screenshot, projectToSave, failures]() -> bool {
             if (!projectToSave->isEmpty()) {
                 QString error;
                 if (!window.saveProject(*projectToSave, &error)) {
@@ -114,7 +124,7 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
                 return false; // wait until the model file is written
             }
             if (screenshot.isEmpty()) {
-                return true;
+                return true; // the window stays open, its failures shown in it
             }
             int rc = 0;
             if (screenshot.endsWith(QLatin1String(".png"), Qt::CaseInsensitive)) {
@@ -129,7 +139,7 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
                 }
                 rc = files.size() > window.tabs()->count() ? 0 : 3; // every tab, the training tab twice
             }
-            QApplication::exit(rc);
+            QApplication::exit(*failures > 0 ? 3 : rc);
             return true;
         };
         // Once the work the window started is done (data loaded and simulated), or at once

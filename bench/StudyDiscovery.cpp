@@ -4,7 +4,10 @@
 // (or a look-alike group holding it) is named first, how often a cause is named that is not there,
 // and how close the onsets are, as Markdown tables.
 // Run: build/bench/study_discovery [--quick] [--plant distributed|lumped] [--sensors realistic|ideal|default]
-//      [--part mechanisms|nulls|onsets] [--mechanism NAME (e.g. moisture_meter_lag)] [--verbose]
+//      [--part mechanisms|nulls|onsets|batch-change (with --reference: each mechanism from the third of four
+//      batches, seeds FIRST+200; in "all" too)] [--judge-every-batch (with --reference: no batch left out
+//      before the change point, as before 2026-11-28)] [--mechanism NAME (e.g. moisture_meter_lag)]
+//      [--verbose]
 //      [--null-seeds FIRST (20 seeds from it; default 201)] [--min-explained SHARE (default 0.15)]
 //      [--candidates N (fitted per round; default 3)] [--evaluations N (per fit; default 120)]
 //      [--oracle (each mechanism run asks about its hidden cause alone)]
@@ -50,6 +53,7 @@ struct Outcome {
     bool hasOnset = false;
     double onsetS = 0;
     bool drytwinFlags = false, pcaFlags = false; ///< --reference: each detector's run-level decision
+    std::string leftOut; ///< --reference: the batches left out as wholly before the change
 };
 
 bool verbose = false; ///< --verbose: each turned-down candidate's reason, not only its code
@@ -62,18 +66,57 @@ discovery::DiscoveryOptions discoveryOptions; ///< --min-explained changes its s
 /// mechanism, no onset), as an engineer judges a line against the weeks when it ran well.
 bool againstReference = false;
 constexpr unsigned kReferenceSeedOffset = 7000;
+constexpr unsigned kChangedRunSeedOffset = 500; ///< --part batch-change: the changed batches' run
 /// --reference-batches N: the reference period's batches of 3,000 s (default 4, as the data judged).
 int referenceBatches = 4;
+
+/// Judges @p data (made with the plant options @p o) alone or against the seed's reference.
+Outcome judge(const std::vector<data::SiBatch>& data, const plant::PlantOptions& o,
+              const std::string& hidden);
 
 Outcome run(plant::PlantOptions o, const std::string& hidden) {
     o.batches = 4;
     o.samples = 3000;
     auto p = plant::runPlant(o);
-    Outcome out;
     if (!p) {
+        Outcome out;
         out.named = "plant failed: " + p.error().message();
         return out;
     }
+    return judge(plant::toSiBatches(*p, o.seed), o, hidden);
+}
+
+/// A change at a batch change: two healthy batches of the seed, then two batches of another run of
+/// the line with the mechanism (B03, B04), judged against the seed's reference.
+Outcome runFromThirdBatch(plant::PlantOptions o, const std::string& hidden) {
+    o.batches = 2;
+    o.samples = 3000;
+    plant::PlantOptions healthy = o;
+    healthy.effects.clear();
+    healthy.effectOnsetS.clear();
+    auto before = plant::runPlant(healthy);
+    plant::PlantOptions changed = o;
+    changed.seed = o.seed + kChangedRunSeedOffset;
+    auto after = plant::runPlant(changed);
+    if (!before || !after) {
+        Outcome out;
+        out.named = "plant failed: " + (!before ? before : after).error().message();
+        return out;
+    }
+    std::vector<data::SiBatch> week = plant::toSiBatches(*before, healthy.seed);
+    int number = static_cast<int>(week.size());
+    for (auto& b : plant::toSiBatches(*after, changed.seed)) {
+        char id[8];
+        std::snprintf(id, sizeof id, "B%02d", ++number);
+        b.id = id;
+        week.push_back(std::move(b));
+    }
+    return judge(week, o, hidden);
+}
+
+Outcome judge(const std::vector<data::SiBatch>& data, const plant::PlantOptions& o,
+              const std::string& hidden) {
+    Outcome out;
     const auto t0 = std::chrono::steady_clock::now();
     auto asked = discoveryOptions;
     if (oracle && !hidden.empty()) {
@@ -95,11 +138,14 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
             out.named = "reference plant failed: " + ref.error().message();
             return out;
         }
-        r = discovery::discoverChange(plant::toSiBatches(*ref, healthy.seed), plant::toSiBatches(*p, o.seed),
-                                      hybrid::HybridModel{}, asked);
+        r = discovery::discoverChange(plant::toSiBatches(*ref, healthy.seed), data, hybrid::HybridModel{},
+                                      asked);
         if (r) {
             out.drytwinFlags = r->detection.drytwinChanged;
             out.pcaFlags = r->detection.pca.changed;
+            for (const auto& b : r->batchesBeforeChange) {
+                out.leftOut += (out.leftOut.empty() ? "" : " ") + b;
+            }
             if (verbose) { // which half of each detector decided, and by how much
                 const auto& d = r->detection;
                 std::printf(
@@ -112,7 +158,7 @@ Outcome run(plant::PlantOptions o, const std::string& hidden) {
             }
         }
     } else {
-        r = discovery::discover(plant::toSiBatches(*p, o.seed), hybrid::HybridModel{}, asked);
+        r = discovery::discover(data, hybrid::HybridModel{}, asked);
     }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!r) {
@@ -239,7 +285,8 @@ int main(int argc, char** argv) {
                       : next == "ideal"   ? plant::SensorMode::Ideal
                                           : plant::SensorMode::Default;
             ++i;
-        } else if (a == "--part" && (next == "mechanisms" || next == "nulls" || next == "onsets")) {
+        } else if (a == "--part" &&
+                   (next == "mechanisms" || next == "nulls" || next == "onsets" || next == "batch-change")) {
             part = next;
             ++i;
         } else if (a == "--verbose") {
@@ -265,6 +312,8 @@ int main(int argc, char** argv) {
             discoveryOptions.lineStructureWithinReferenceRange = false;
         } else if (a == "--cause-test-screen-only") { // against a reference: no second look at named fits
             discoveryOptions.causeTestAtNamedFits = false;
+        } else if (a == "--judge-every-batch") { // against a reference: no batch left out before the change
+            discoveryOptions.judgeFromChangeOn = false;
         } else if (a == "--lag-from-start") { // against a reference: no lag fitted from the change point
             discoveryOptions.lagFromChangePoint = false;
         } else if (a == "--no-structure") { // against a reference: the causes' normal values alone
@@ -296,12 +345,12 @@ int main(int argc, char** argv) {
         } else {
             std::fprintf(
                 stderr, "usage: study_discovery [--quick] [--plant distributed|lumped] "
-                        "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets] "
+                        "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets|batch-change] "
                         "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
                         "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
                         "[--evaluations N] [--oracle] [--reference] [--reference-batches N] [--no-structure] "
                         "[--structure-extrapolates] [--cause-test-screen-only] [--keep-taken-up] "
-                        "[--lag-from-start] [--size-rule] "
+                        "[--lag-from-start] [--judge-every-batch] [--size-rule] "
                         "[--spread-bound] [--undetected-at-5-percent] [--share-of-whole] "
                         "[--no-constancy] [--look-alike-overall]\n");
             return 2;
@@ -454,6 +503,34 @@ int main(int argc, char** argv) {
             }
         }
     }
+    int changeRuns = 0, changeRight = 0, changeLeftOutRight = 0, changeFlagged = 0;
+    if (againstReference && (part == "all" || part == "batch-change")) {
+        // The change begins at a batch change: the third of four batches (a failed cleaning, a
+        // maintenance). Each mechanism at its realistic strength, three seeds.
+        std::printf(
+            "\n| mechanism (from the third batch) | strength | seed | named | right first | batches left out "
+            "| detected | s |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n");
+        for (const auto& [m, strength, other] : cases) {
+            if (!only.empty() && only != plant::info(m).name) {
+                continue;
+            }
+            for (int s = 0; s < nSeeds; ++s) {
+                plant::PlantOptions o = options();
+                o.seed = seeds[s] + 200;
+                o.effects[m] = strength;
+                const std::string hidden(plant::info(m).name);
+                const auto out = runFromThirdBatch(o, hidden);
+                ++changeRuns;
+                changeRight += out.rightFirst;
+                changeLeftOutRight += out.leftOut == "B01 B02";
+                changeFlagged += out.drytwinFlags || out.pcaFlags;
+                std::printf("| %s | %g | %u | %s | %s | %s | %s | %.1f |\n", hidden.c_str(), strength, o.seed,
+                            out.named.c_str(), out.rightFirst ? (out.asGroup ? "yes (group)" : "yes") : "no",
+                            out.leftOut.empty() ? "-" : out.leftOut.c_str(), flags(out).c_str(), out.seconds);
+                std::fflush(stdout);
+            }
+        }
+    }
     if (runs > 0) {
         std::printf("\nHidden cause named first: %d of %d (%.0f %%), %d of them as a look-alike group. Runs "
                     "naming a cause that is not there: %d of %d.\n",
@@ -478,6 +555,12 @@ int main(int argc, char** argv) {
         if (againstReference) {
             std::printf("Nulls with an alarm (either detector): %d of %d.\n", nullAlarms, nullRuns);
         }
+    }
+    if (changeRuns > 0) {
+        std::printf(
+            "From the third batch: hidden cause named first %d of %d (%.0f %%); the two healthy batches "
+            "left out (and no other) in %d; flagged by either detector %d.\n",
+            changeRight, changeRuns, 100.0 * changeRight / changeRuns, changeLeftOutRight, changeFlagged);
     }
     if (onsetRuns > 0) {
         std::printf("Onsets named with the onset within %d min: %d of %d (%.0f %%).\n",

@@ -1593,22 +1593,27 @@
         <translation>列映射已保存在 %1，保存项目时也会一并保存；可用“映射其列…”修改。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="187"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="194"/>
         <source>%1, lines %2–%3, from %4, ended by %5</source>
         <translation>%1，第 %2–%3 行，始于 %4，结束原因：%5</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="215"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="222"/>
         <source>Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.</source>
         <translation>清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="230"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="235"/>
+        <source>A row may fail more than one rule. The model uses %1 rows: those kept, less the rows where an input was bridged across a dropout.</source>
+        <translation>一行可能不满足多条规则。模型使用 %1 行：即保留的行，再去掉输入在掉线处被桥接的行。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/data/DataPanel.cpp" line="241"/>
         <source>A transmitter hung (the same reading for a minute or more) on %1 rows: left out, an input bridged like a dropout.</source>
         <translation>有变送器卡死（同一读数持续一分钟以上），涉及 %1 行：这些行不参与拟合，输入按断线同样桥接。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="235"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="246"/>
         <source>Noted while reading (%1):</source>
         <translation>读取时的提示（%1）：</translation>
     </message>
@@ -3053,7 +3058,7 @@
         <translation>项目的数据与保存时不同（%1）。显示的结果基于保存时的数据；请重新运行各步骤以更新结果。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="102"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="105"/>
         <source>The project&apos;s data could not be opened from %1: its model and saved results are shown. Open the data (File ▸ Open data set folder…) to run anything on them.</source>
         <translation>无法从 %1 打开项目的数据：已显示其模型和保存的结果。请打开数据（文件 ▸ 打开数据集文件夹…）后再运行任何步骤。</translation>
     </message>
@@ -3300,62 +3305,62 @@
         <translation>DryTwin 用户指南</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="122"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="127"/>
         <source>No data loaded. File ▸ Open data set folder… (or File ▸ Open the bundled demo)</source>
         <translation>未加载数据。文件 ▸ 打开数据集文件夹…（或 文件 ▸ 打开自带演示数据）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="128"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="133"/>
         <source>Loading</source>
         <translation>正在加载</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="129"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="134"/>
         <source>Simulating</source>
         <translation>正在模拟</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="130"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="135"/>
         <source>Calibrating</source>
         <translation>正在标定</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="131"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="136"/>
         <source>Learning the correction models</source>
         <translation>正在学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="132"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="137"/>
         <source>Training the LSTM</source>
         <translation>正在训练 LSTM</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="133"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="138"/>
         <source>Scoring on the held-out part</source>
         <translation>正在留出部分上评分</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="134"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="139"/>
         <source>Discovering</source>
         <translation>正在发现</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="135"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="140"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="136"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="141"/>
         <source>What-if scenario</source>
         <translation>假设情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="137"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="142"/>
         <source>Generating plant data</source>
         <translation>正在生成装置数据</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="138"/>
+        <location filename="../widgets/mainwindow/MainWindowStatus.cpp" line="143"/>
         <source>Training session</source>
         <translation>培训会话</translation>
     </message>
@@ -3365,7 +3370,7 @@
         <translation>&lt;h3&gt;DryTwin %1&lt;/h3&gt;&lt;p&gt;气流干燥生产线数字孪生工作台，实现 PGRL-CC 方法。&lt;/p&gt;&lt;table&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="140"/>
+        <location filename="../widgets/mainwindow/MainWindowData.cpp" line="143"/>
         <source>Writing the bundled demo (10 batches of the virtual plant) to %1…</source>
         <translation>正在把自带演示数据（虚拟装置的 10 个批次）写入 %1…</translation>
     </message>

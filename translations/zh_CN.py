@@ -8,6 +8,7 @@ import re
 import sys
 
 ZH = {
+    "A row may fail more than one rule. The model uses %1 rows: those kept, less the rows where an input was bridged across a dropout.": "一行可能不满足多条规则。模型使用 %1 行：即保留的行，再去掉输入在掉线处被桥接的行。",
     "The causes are judged on the batches from %1 on, where the change began; %2 before it ran as the reference did.": "原因按从 %1 起的批次判断，变化从那里开始；此前的 %2 与参考期运行一致。",
     "Only the causes asked were tried: %1. That the others are not named says nothing about them.": "只试了所问的原因：%1。其他原因未被指认，并不说明它们不存在。",
     "Commissioned on the reference period (%1 batch(es), %2 rows): h_HDT %3 W/(m²·K) and k_HDT %4 m/s, held fixed on the data judged.": "已在参考期上调试（%1 个批次，%2 行）：h_HDT %3 W/(m²·K)，k_HDT %4 m/s，在所判断的数据上保持不变。",

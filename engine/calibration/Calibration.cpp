@@ -484,8 +484,11 @@ Expected<CalibrationResult> calibrate(const std::vector<data::SiBatch>& batches,
         const double varFisher = fisherCov(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
         e.standardErrorFisher = varFisher > 0 ? std::sqrt(varFisher) : std::nan("");
         e.standardError = var > 0 ? std::sqrt(var) : std::nan("");
-        e.ci95Low = e.value - 1.96 * e.standardError;
-        e.ci95High = e.value + 1.96 * e.standardError;
+        // Held within the parameter's range: a value at its bound (the inlet gauge's scatter share
+        // at 1) had an interval reaching to 1.12, a share no gauge can have. At a bound the Wald
+        // interval is one-sided at best; atBound says so beside it.
+        e.ci95Low = std::max(coords[i].lo, e.value - 1.96 * e.standardError);
+        e.ci95High = std::min(coords[i].hi, e.value + 1.96 * e.standardError);
         const double u = state.bestUnit[i];
         e.atBound = u < 1e-3 || u > 1 - 1e-3;
         result.estimates.push_back(e);

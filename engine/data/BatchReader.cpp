@@ -436,6 +436,22 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
                                 "column mapping");
             return badInput(file, batch.lineOfRow[1], timeField, text);
         }
+        // The other end: rows 1,000 s apart are milliseconds read as seconds (a fresh user's test
+        // calibrated on them with exit 0 and intervals of NaN). Any step of 10 min or more leaves
+        // nothing of the line's dynamics (a particle dries in about a minute) to calibrate on.
+        if (medianStep >= 600) {
+            char text[512];
+            std::snprintf(text, sizeof text,
+                          "time_s: rows are %.4g s apart (median), longer than the line takes to dry a "
+                          "particle: %s",
+                          medianStep,
+                          std::abs(medianStep - 1000) < 50
+                              ? "the column looks like milliseconds. Give it in seconds, or name it "
+                                "'Timestamp' with its unit in a column mapping"
+                              : "a record this coarse cannot show the line's dynamics; export it at 1 to "
+                                "10 s");
+            return badInput(file, batch.lineOfRow[1], timeField, text);
+        }
     }
     return batch;
 }
@@ -448,6 +464,32 @@ Expected<Batch> readBatchFile(const std::string& path, const ReadOptions& option
     return parseBatchText(*text, path, options);
 }
 
+namespace {
+
+std::string lowerCase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+bool isSpreadsheet(const std::string& lowerExtension) {
+    return lowerExtension == ".xlsx" || lowerExtension == ".xls" || lowerExtension == ".xlsm" ||
+           lowerExtension == ".ods";
+}
+
+std::string joinNames(const std::vector<std::string>& names) {
+    std::string out;
+    for (const auto& n : names) {
+        out += (out.empty() ? "" : ", ") + n;
+    }
+    return out;
+}
+
+constexpr const char* kOnlyCsv = "DryTwin reads CSV text (a historian's export, or a workbook saved as "
+                                 "\"CSV UTF-8\" or \"CSV (semicolon)\"), not workbooks";
+
+} // namespace
+
 LoadResult loadDataSet(const std::string& path, const ReadOptions& options, const Progress& progress) {
     namespace fs = std::filesystem;
     const auto start = std::chrono::steady_clock::now();
@@ -455,16 +497,40 @@ LoadResult loadDataSet(const std::string& path, const ReadOptions& options, cons
     std::error_code ec;
     std::vector<std::string> files;
     if (fs::is_directory(path, ec)) {
+        std::vector<std::string> notRead; // data a user may have meant to load, said rather than skipped
         for (const auto& entry : fs::directory_iterator(path, ec)) {
-            if (entry.is_regular_file() && entry.path().extension() == ".csv") {
+            if (!entry.is_regular_file()) {
+                continue;
+            }
+            // B01.CSV from a Windows share is a batch file as much as b01.csv.
+            const std::string extension = lowerCase(entry.path().extension().string());
+            if (extension == ".csv") {
                 files.push_back(entry.path().string());
+            } else if (isSpreadsheet(extension) || extension == ".txt" || extension == ".tsv" ||
+                       extension == ".dat") {
+                notRead.push_back(entry.path().filename().string());
             }
         }
         std::sort(files.begin(), files.end());
+        std::sort(notRead.begin(), notRead.end());
         if (files.empty()) {
-            result.errors.push_back({ErrorKind::BadInput, path, "the folder holds no *.csv batch files"});
+            result.errors.push_back(
+                {ErrorKind::BadInput, path,
+                 "the folder holds no *.csv batch files" +
+                     (notRead.empty() ? std::string()
+                                      : " (not read: " + joinNames(notRead) + "; " + kOnlyCsv + ")")});
+        } else if (!notRead.empty()) {
+            const std::string note = path + ": not read: " + joinNames(notRead) + "; " + kOnlyCsv;
+            result.notes.push_back(note);
+            result.dataSet.notes.push_back(note);
         }
     } else if (fs::exists(path, ec)) {
+        if (isSpreadsheet(lowerCase(fs::path(path).extension().string()))) {
+            result.errors.push_back(
+                {ErrorKind::BadInput, path, std::string("a spreadsheet workbook; ") + kOnlyCsv});
+            reportProgress(progress, "load", 1.0);
+            return result;
+        }
         files.push_back(path);
     } else {
         result.errors.push_back(

@@ -27,8 +27,8 @@ OutputMetrics outputMetrics(const std::vector<double>& observed, const std::vect
 }
 
 Status EvaluationOptions::validate() const {
-    if (horizonSteps < 1) {
-        return invalidOption("horizon", "must be at least 1 step");
+    if (horizonSteps < 1 || horizonSteps > 3600) {
+        return invalidOption("horizon", "must lie in [1, 3600] steps");
     }
     if (!(trainFraction > 0 && trainFraction < 1)) {
         return invalidOption("train fraction", "must lie strictly between 0 and 1");
@@ -204,6 +204,24 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
     if (out.testRows < 30) {
         return Error{ErrorKind::BadInput, "held-out data",
                      "only " + std::to_string(out.testRows) + " held-out rows pass the cleaning rules"};
+    }
+    // The headline horizon: one no held-out batch is long enough to reach scores nothing (a fresh user's
+    // --horizon 100000 printed NaN for five models and a "perfect" 0.000 skill for the PBM, exit 0).
+    {
+        std::vector<std::size_t> rowsPerBatch;
+        for (const auto& b : batches) {
+            rowsPerBatch.push_back(b.rows());
+        }
+        std::size_t longest = 0;
+        for (const auto& r : data::chronologicalSplit(rowsPerBatch, options.trainFraction).test) {
+            longest = std::max(longest, r.size());
+        }
+        if (static_cast<std::size_t>(options.horizonSteps) >= longest) {
+            return invalidOption("horizon", "a horizon of " + std::to_string(options.horizonSteps) +
+                                                " steps is as long as the held-out part's longest batch (" +
+                                                std::to_string(longest) +
+                                                " rows) or longer: nothing to score");
+        }
     }
     // The two predictors every forecast must beat (CONTRACT.md §3).
     for (const char* name : {kPersistenceKey, kPbmResidualHoldKey}) {

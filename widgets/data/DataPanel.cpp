@@ -159,12 +159,20 @@ void DataPanel::fill() {
     const auto& summary = m_workbench.summary();
     m_table->blockSignals(true);
     m_table->setRowCount(static_cast<int>(si.size()));
+    std::size_t modelRows = 0;
     for (std::size_t i = 0; i < si.size(); ++i) {
         const auto& b = si[i];
+        // The cleaning rules' count, as the summary below and `drytwin inspect` give it; the rows
+        // the model uses besides (an input bridged across a dropout left out too) are said below.
         std::size_t kept = 0, nx = 0, nh = 0;
         double x = 0, h = 0;
+        const std::vector<std::uint8_t>* cleaningKeep =
+            i < summary.cleaning.keep.size() && summary.cleaning.keep[i].size() == b.rows()
+                ? &summary.cleaning.keep[i]
+                : nullptr;
         for (std::size_t k = 0; k < b.rows(); ++k) {
-            kept += b.keep[k];
+            kept += cleaningKeep ? (*cleaningKeep)[k] : b.keep[k];
+            modelRows += b.keep[k];
             // Means over the cells that hold a value: a transmitter's dropout is no reading.
             if (std::isfinite(b.xOutDb[k])) {
                 x += units::dryToWetPct(b.xOutDb[k]);
@@ -224,6 +232,10 @@ void DataPanel::fill() {
             .arg(c.droppedImpossible)
             .arg(train)
             .arg(test) +
+        QStringLiteral(" ") +
+        tr("A row may fail more than one rule. The model uses %1 rows: those kept, less the rows where "
+           "an input was bridged across a dropout.")
+            .arg(modelRows) +
         (c.droppedStuck == 0
              ? QString()
              : QStringLiteral(" ") +

@@ -98,6 +98,9 @@ void MainWindow::connectDataLoading() {
                 // A project whose data are gone (moved, renamed): its model and saved results still
                 // open, so that nothing saved is lost from view; the failure itself is shown.
                 m_pendingDataFingerprint.clear();
+                // Actions asked for once the data were loaded (--run) cannot run: a scripted run
+                // waited for them for ever.
+                m_pendingActions.clear();
                 if (!m_pendingModel.isEmpty() || m_pendingResults || m_pendingParts) {
                     const QString note = tr("The project's data could not be opened from %1: its model and "
                                             "saved results are shown. Open the data (File ▸ Open data set "

@@ -115,7 +115,12 @@ void MainWindow::showError(const QString& title, const QString& message) {
     if (qEnvironmentVariableIsSet("DRYTWIN_NO_MODAL")) {
         return;
     }
-    QMessageBox::warning(this, title, message);
+    // Window-modal but not blocking: the job that failed finishes its cleanup first (a blocking
+    // dialog held its progress bar at 100 % with Cancel enabled behind it), and a scripted run's
+    // idle check goes on.
+    auto* box = new QMessageBox(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
 }
 
 QString MainWindow::noDataHint() {

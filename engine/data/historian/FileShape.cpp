@@ -182,7 +182,12 @@ Expected<FileShape> sniffPlantText(const std::string& text, const std::string& f
     }
     // Relative seconds, commas and no units row is the contract's own form, whatever the time
     // column is called (the mapping renames it): one batch, read as before.
-    shape.historian = shape.delimiter != ',' || shape.decimalComma || shape.unitsRow ||
+    // Units in the header ("T_hot_C [°C]") are read as a units row's would be (ValueColumns.cpp).
+    const bool unitsInHeader =
+        std::any_of(shape.headers.begin(), shape.headers.end(), [](const std::string& h) {
+            return !h.empty() && h.back() == ']' && h.find('[') != std::string::npos;
+        });
+    shape.historian = shape.delimiter != ',' || shape.decimalComma || shape.unitsRow || unitsInHeader ||
                       shape.timeFormat != TimeFormat::Seconds || !mapping.batchIdHeader.empty();
     return shape;
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <utility>
 
 namespace drytwin::data::historian {
 
@@ -19,6 +20,19 @@ std::string joined(const std::vector<std::string>& items) {
         list += (list.empty() ? "" : ", ") + k;
     }
     return list;
+}
+
+/// "T_hot [°F]" -> ("T_hot", "°F"); a header without a bracketed unit at its end -> (header, "").
+std::pair<std::string, std::string> headerAndUnit(const std::string& header) {
+    const auto open = header.rfind('[');
+    if (header.empty() || header.back() != ']' || open == std::string::npos || open == 0) {
+        return {header, ""};
+    }
+    std::string name = header.substr(0, open);
+    while (!name.empty() && (name.back() == ' ' || name.back() == '\t' || name.back() == '_')) {
+        name.pop_back();
+    }
+    return {name, header.substr(open + 1, header.size() - open - 2)};
 }
 
 } // namespace
@@ -119,7 +133,14 @@ Expected<ColumnLayout> layOutColumns(const FileShape& shape, const ColumnMapping
         ValueColumn v;
         v.header = h;
         v.field = c;
-        const std::string contract = mapping.contractNameFor(h);
+        // A unit in the header ("T_hot [°F]", "T_hot_C [°C]"), as many exports write it: the name
+        // before it finds the column where the whole header does not, and the unit is read as a
+        // units row's would be (°F data were read as °C before, with exit 0).
+        const auto [bareHeader, headerUnit] = headerAndUnit(h);
+        std::string contract = mapping.contractNameFor(h);
+        if (contract.empty() && !headerUnit.empty()) {
+            contract = mapping.contractNameFor(bareHeader);
+        }
         if (!contract.empty() && contract != "time_s") {
             v.contract = columnByName(contract);
             if (!seen.insert(*v.contract).second) {
@@ -135,6 +156,16 @@ Expected<ColumnLayout> layOutColumns(const FileShape& shape, const ColumnMapping
                 if (v.unit.empty() || std::find(known.begin(), known.end(), v.unit) == known.end()) {
                     return fileError(file, shape.headerLine + 1, static_cast<int>(c) + 1,
                                      "unit '" + shape.units[c] + "' of column '" + h + "' (" + contract +
+                                         ") is not one of " + joined(known) +
+                                         "; give the unit in the column mapping ({\"header\": \"" + h +
+                                         "\", \"unit\": …})");
+                }
+            } else if (!headerUnit.empty()) {
+                v.unit = normalisedUnit(headerUnit, *v.contract);
+                const auto known = unitsFor(*v.contract);
+                if (v.unit.empty() || std::find(known.begin(), known.end(), v.unit) == known.end()) {
+                    return fileError(file, shape.headerLine, static_cast<int>(c) + 1,
+                                     "unit '" + headerUnit + "' in the header '" + h + "' (" + contract +
                                          ") is not one of " + joined(known) +
                                          "; give the unit in the column mapping ({\"header\": \"" + h +
                                          "\", \"unit\": …})");
@@ -161,7 +192,9 @@ Expected<ColumnLayout> layOutColumns(const FileShape& shape, const ColumnMapping
         const auto u = mapping.contractToUnit.find("time_s");
         if ((u != mapping.contractToUnit.end() && u->second == "min") ||
             (u == mapping.contractToUnit.end() && shape.unitsRow && layout.timeIndex < shape.units.size() &&
-             normalisedUnit(shape.units[layout.timeIndex], Column::Time) == "min")) {
+             normalisedUnit(shape.units[layout.timeIndex], Column::Time) == "min") ||
+            (u == mapping.contractToUnit.end() && !shape.unitsRow &&
+             normalisedUnit(headerAndUnit(shape.timeHeader).second, Column::Time) == "min")) {
             layout.timeScale = 60.0;
         }
     }

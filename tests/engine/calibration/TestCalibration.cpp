@@ -81,6 +81,30 @@ private Q_SLOTS:
         }
     }
 
+    void anIntervalAtABoundStaysWithinTheRange() {
+        // h_HDT held below its true value ends at its upper bound; its interval may not reach past
+        // it (the inlet gauge's scatter share at 1 had [0.88, 1.12] in the workbench).
+        const double truth = plant::PlantOptions::defaultTruth()[properties::Param::h_HDT];
+        calibration::CalibrationOptions o;
+        o.globalSearch = false;
+        o.maxEvaluations = 60;
+        o.bounds[properties::Param::h_HDT] = {0.5 * truth, 0.8 * truth};
+        auto r = calibration::calibrate(m_data, properties::ParameterSet{}, o);
+        QVERIFY2(r.ok(), r.ok() ? "" : r.error().message().c_str());
+        bool sawBound = false;
+        for (const auto& e : r->estimates) {
+            if (e.param != properties::Param::h_HDT) {
+                continue;
+            }
+            sawBound = e.atBound;
+            QVERIFY2(e.value > 0.79 * truth, qPrintable(QString::number(e.value)));
+            QVERIFY(std::isfinite(e.standardError) && e.standardError > 0);
+            QVERIFY2(e.ci95High <= 0.8 * truth + 1e-12 && e.ci95Low < e.ci95High,
+                     qPrintable(QStringLiteral("[%1, %2]").arg(e.ci95Low).arg(e.ci95High)));
+        }
+        QVERIFY(sawBound);
+    }
+
     void sameSeedSameResult() {
         calibration::CalibrationOptions o;
         o.maxEvaluations = 60;

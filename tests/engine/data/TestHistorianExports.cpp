@@ -11,10 +11,12 @@
 #include "data/MappingGuess.h"
 #include <QString>
 
+#include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <fstream>
 #include <functional>
 #include <sstream>
 
@@ -264,6 +266,45 @@ std::string notesOf(const PlantFileRuns& r) {
 
 #define VERIFY_OK(r) QVERIFY2((r).ok(), (r) ? "" : (r).error().message().c_str())
 #define VERIFY_MESSAGE(msg, text) QVERIFY2((msg).find(text) != std::string::npos, (msg).c_str())
+
+/// A plain export of @p rows rows @p step seconds apart, in the contract's column order; @p suffix
+/// per column (a unit in the header); @p fahrenheit writes the temperatures in °F, @p tonnes the
+/// feed in t/h. Time stamps under "Timestamp" unless @p relative (then time_s in seconds).
+std::string plainExport(int rows, int step, bool relative, const std::vector<std::string>& suffix = {},
+                        bool fahrenheit = false, bool tonnes = false) {
+    const char* names[] = {"T_hot_sp_C", "T_hot_C",    "air_speed_m_s", "feed_kg_h", "X_in_pct",  "T_in_C",
+                           "T_amb_C",    "RH_amb_pct", "X_hdt_pct",     "T_hdt_C",   "X_out_pct", "T_out_C"};
+    const double values[] = {170, 169.0, 16, 6200, 22, 25, 24, 55, 14.0, 58, 12.0, 55.2};
+    const bool temperature[] = {true, true, false, false, false, true, true, false, false, true, false, true};
+    std::ostringstream text;
+    text << (relative ? "time_s" : "Timestamp");
+    for (int c = 0; c < 12; ++c) {
+        text << ',' << names[c] << (c < static_cast<int>(suffix.size()) ? suffix[c] : "");
+    }
+    text << '\n';
+    for (int i = 0; i < rows; ++i) {
+        if (relative) {
+            text << i * step;
+        } else {
+            const int t = 8 * 3600 + i * step;
+            char stamp[32];
+            std::snprintf(stamp, sizeof stamp, "2026-11-28 %02d:%02d:%02d", t / 3600, t / 60 % 60, t % 60);
+            text << stamp;
+        }
+        for (int c = 0; c < 12; ++c) {
+            double v = values[c] + (c == 1 ? 3 * std::sin(i / 20.0) : 0);
+            if (fahrenheit && temperature[c]) {
+                v = v * 1.8 + 32;
+            }
+            if (tonnes && c == 3) {
+                v /= 1000;
+            }
+            text << ',' << v;
+        }
+        text << '\n';
+    }
+    return text.str();
+}
 
 } // namespace
 
@@ -808,6 +849,87 @@ private Q_SLOTS:
     }
 
     // 7. A broken mapping file: line, column and what was expected.
+    // What a fresh user's files did (2026-11-28): units in the header ignored (°F read as °C with
+    // exit 0), a cut-off last line loaded, 15 s sampling refused as "no production run", time in
+    // milliseconds calibrated on, a folder's B01.CSV skipped.
+    void unitsInTheHeaderAreReadAsAUnitsRowsAre() {
+        std::vector<std::string> units{" [°F]", " [°F]", " [m/s]", " [t/h]", " [%]", " [°F]",
+                                       " [°F]", " [%]",  " [%]",   " [°F]",  " [%]", " [°F]"};
+        for (bool relative : {false, true}) {
+            auto r = parsePlantText(plainExport(600, 1, relative, units, true, true), "units.csv", {});
+            VERIFY_OK(r);
+            QCOMPARE(r->runs.size(), std::size_t(1));
+            const auto& b = r->runs[0];
+            QVERIFY2(std::abs((*b.values(Column::THot))[0] - 169.0) < 1e-6,
+                     qPrintable(QString::number((*b.values(Column::THot))[0])));
+            QVERIFY(std::abs((*b.values(Column::TOut))[0] - 55.2) < 1e-6);
+            QVERIFY(std::abs((*b.values(Column::Feed))[0] - 6200) < 1e-6);
+        }
+        // A unit the column cannot have is an error naming the header.
+        std::vector<std::string> wrong{"", " [kg/h]"};
+        auto bad = parsePlantText(plainExport(600, 1, false, wrong), "wrong.csv", {});
+        QVERIFY(!bad.ok());
+        VERIFY_MESSAGE(bad.error().message(), "T_hot_C [kg/h]");
+    }
+
+    void aLastLineWithoutLineEndIsLeftOutWithANote() {
+        std::string text = plainExport(400, 1, true);
+        text.erase(text.size() - 6); // "…,55.2\n" cut to "…,5"
+        auto r = parsePlantText(text, "cut.csv", {});
+        VERIFY_OK(r);
+        QCOMPARE(r->runs.size(), std::size_t(1));
+        QCOMPARE(r->runs[0].rows(), std::size_t(399));
+        QVERIFY(std::abs(r->runs[0].values(Column::TOut)->back() - 55.2) < 1e-9);
+        bool said = false;
+        for (const auto& n : r->notes) {
+            said = said || n.find("cut.csv:401:1: the last line has no line end") != std::string::npos;
+        }
+        QVERIFY(said);
+        // A file whose only data line lacks its line end is read as it is.
+        auto one = parsePlantText(plainExport(1, 1, true).substr(0, plainExport(1, 1, true).size() - 1),
+                                  "one.csv", {});
+        QVERIFY(!one.ok() || one->runs.empty() || one->runs[0].rows() == 1);
+    }
+
+    void anExportSampledEvery15sIsNotAllGaps() {
+        auto r = parsePlantText(plainExport(240, 15, false), "every15s.csv", {});
+        VERIFY_OK(r);
+        QCOMPARE(r->runs.size(), std::size_t(1));
+        QVERIFY2(r->runs[0].rows() > 3000, qPrintable(QString::number(r->runs[0].rows())));
+        bool said = false;
+        for (const auto& n : r->notes) {
+            said = said || n.find("rows are 15 s apart (median)") != std::string::npos;
+        }
+        QVERIFY(said);
+    }
+
+    void timeInMillisecondsIsRefused() {
+        std::string text = plainExport(400, 1000, true);
+        auto r = parsePlantText(text, "ms.csv", {});
+        QVERIFY(!r.ok());
+        VERIFY_MESSAGE(r.error().message(), "milliseconds");
+    }
+
+    void aFolderReadsUpperCaseCsvAndSaysWhatItSkips() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        for (const char* name : {"B01.CSV", "B02.csv"}) {
+            std::ofstream(dir.filePath(name).toStdString()) << plainExport(400, 1, true);
+        }
+        std::ofstream(dir.filePath("B03.xlsx").toStdString()) << "PK";
+        const auto loaded = loadDataSet(dir.path().toStdString());
+        QVERIFY(loaded.ok());
+        QCOMPARE(loaded.dataSet.batches.size(), std::size_t(2));
+        bool said = false;
+        for (const auto& n : loaded.notes) {
+            said = said || n.find("not read: B03.xlsx") != std::string::npos;
+        }
+        QVERIFY(said);
+        const auto workbook = loadDataSet(dir.filePath("B03.xlsx").toStdString());
+        QVERIFY(!workbook.ok());
+        VERIFY_MESSAGE(workbook.errors.front().message(), "not workbooks");
+    }
+
     void brokenMappingNamesLineColumnAndExpectation_data() {
         QTest::addColumn<QString>("json");
         QTest::addColumn<QString>("expected");
