@@ -1593,27 +1593,27 @@
         <translation>列映射已保存在 %1，保存项目时也会一并保存；可用“映射其列…”修改。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="194"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="195"/>
         <source>%1, lines %2–%3, from %4, ended by %5</source>
         <translation>%1，第 %2–%3 行，始于 %4，结束原因：%5</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="222"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="223"/>
         <source>Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.</source>
         <translation>清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="235"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="236"/>
         <source>A row may fail more than one rule. The model uses %1 rows: those kept, less the rows where an input was bridged across a dropout.</source>
         <translation>一行可能不满足多条规则。模型使用 %1 行：即保留的行，再去掉输入在掉线处被桥接的行。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="241"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="242"/>
         <source>A transmitter hung (the same reading for a minute or more) on %1 rows: left out, an input bridged like a dropout.</source>
         <translation>有变送器卡死（同一读数持续一分钟以上），涉及 %1 行：这些行不参与拟合，输入按断线同样桥接。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="246"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="247"/>
         <source>Noted while reading (%1):</source>
         <translation>读取时的提示（%1）：</translation>
     </message>
@@ -1960,7 +1960,7 @@
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="127"/>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="791"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="983"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="996"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -2435,12 +2435,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="862"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="875"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="862"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="875"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2449,23 +2449,23 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="911"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="924"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="914"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="927"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="922"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="935"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="470"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="842"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="844"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
@@ -2535,49 +2535,64 @@
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="859"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="845"/>
+        <source>Named on its fit: it lowers the held-out error (p = %1) and passes the checks that it is this cause; the screen&apos;s p only ranks the candidates for fitting.</source>
+        <translation>按其拟合指认：它降低了留出部分的误差（p = %1），并通过了确认是此原因的各项检查；筛选的 p 只用于为拟合排列候选。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="860"/>
+        <source>fitted, not the best</source>
+        <translation>已拟合，非最佳</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="861"/>
+        <source>Fitted in a round in which another cause explained more of the error; the causes named after it were fitted on the model extended by it.</source>
+        <translation>在某一轮中已拟合，但另一原因解释了更多误差；其后指认的原因是在由它扩展的模型上拟合的。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="872"/>
         <source>not fitted (weaker)</source>
         <translation>未拟合（证据较弱）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="932"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="945"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="948"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="961"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="957"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="970"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="964"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="977"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="969"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="982"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="977"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="990"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="992"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1005"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="714"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="993"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1019"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1006"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1032"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
@@ -2587,14 +2602,14 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="994"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1007"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="714"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="995"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1023"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1008"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1036"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2659,87 +2674,87 @@
         <translation>未拟合：证据弱于已拟合的候选</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="872"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="885"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="886"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="899"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="893"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="906"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="907"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="920"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="952"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="965"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="982"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="995"/>
         <source>Held-out accuracy: nothing was named, so nothing was extended (before = after):</source>
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="996"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1009"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1005"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1018"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1018"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1031"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1018"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1031"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1019"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1032"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1022"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1035"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1022"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1035"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1023"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1036"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1050"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1063"/>
         <source>model (nothing extended)</source>
         <translation>模型（未扩展）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1052"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1065"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1053"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1066"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -3845,12 +3860,12 @@ The results below are from the last complete run.</source>
 <context>
     <name>drytwin::widgets::PlotStack</name>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="245"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="250"/>
         <source>Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click to zoom out, middle drag to pan</source>
         <translation>Ctrl+单击：游标 A，Shift+单击：游标 B，Alt+单击：时间游标；拖动放大，右键缩小，中键拖动平移</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="125"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="126"/>
         <source>Export…</source>
         <translation>导出…</translation>
     </message>
@@ -3859,62 +3874,62 @@ The results below are from the last complete run.</source>
         <translation>将这些图表保存为 PNG、SVG 或 PDF</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="126"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="127"/>
         <source>Save these plots as PNG, SVG or PDF, or their data as CSV</source>
         <translation>把这些曲线图保存为 PNG、SVG 或 PDF，或把数据保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="229"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="234"/>
         <source>time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="308"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="313"/>
         <source>No data yet</source>
         <translation>尚无数据</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="579"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="584"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="582"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="587"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="585"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="590"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="589"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="594"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="593"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="598"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="679"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="718"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="707"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="746"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
         <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="743"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="782"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="657"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="696"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
@@ -3923,7 +3938,7 @@ The results below are from the last complete run.</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="742"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="781"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
@@ -3932,12 +3947,12 @@ The results below are from the last complete run.</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="749"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="788"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="751"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="790"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>

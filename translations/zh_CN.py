@@ -8,6 +8,9 @@ import re
 import sys
 
 ZH = {
+    "Fitted in a round in which another cause explained more of the error; the causes named after it were fitted on the model extended by it.": "在某一轮中已拟合，但另一原因解释了更多误差；其后指认的原因是在由它扩展的模型上拟合的。",
+    "fitted, not the best": "已拟合，非最佳",
+    "Named on its fit: it lowers the held-out error (p = %1) and passes the checks that it is this cause; the screen's p only ranks the candidates for fitting.": "按其拟合指认：它降低了留出部分的误差（p = %1），并通过了确认是此原因的各项检查；筛选的 p 只用于为拟合排列候选。",
     "A row may fail more than one rule. The model uses %1 rows: those kept, less the rows where an input was bridged across a dropout.": "一行可能不满足多条规则。模型使用 %1 行：即保留的行，再去掉输入在掉线处被桥接的行。",
     "The causes are judged on the batches from %1 on, where the change began; %2 before it ran as the reference did.": "原因按从 %1 起的批次判断，变化从那里开始；此前的 %2 与参考期运行一致。",
     "Only the causes asked were tried: %1. That the others are not named says nothing about them.": "只试了所问的原因：%1。其他原因未被指认，并不说明它们不存在。",

@@ -185,7 +185,7 @@ private Q_SLOTS:
         QCOMPARE(batchSeriesTitleFeed(), QString::fromUtf8("进料 [kg/h]"));
         Workbench wb;
         DataPanel data(wb);
-        QCOMPARE(data.plots()->plot(1)->axisTitle(QwtPlot::yLeft).text(), QString::fromUtf8("进料 [kg/h]"));
+        QCOMPARE(data.plots()->yTitle(1), QString::fromUtf8("进料 [kg/h]"));
 
         // The stale-model reason: a key, worded when shown (a project saved in English reads back).
         LearntPart part;

@@ -13,6 +13,7 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPdfWriter>
+#include <QPointer>
 #include <QPushButton>
 #include <QResizeEvent>
 #include <QSaveFile>
@@ -145,6 +146,10 @@ int PlotStack::addPlot(const QString& yTitle) {
     title.setFont(titleFont);
     plot->setAxisTitle(QwtPlot::yLeft, title);
     plot->setAxisMaxMajor(QwtPlot::yLeft, 4);
+    // Its title on one line where the plot is tall enough, else its unit on a second line
+    // (fitYTitle): "PSD [(% wb)²/Hz]" was cut to "3D [(% wb)²/H" on a small laptop's screen.
+    plot->setProperty("drytwinYTitle", yTitle);
+    plot->installEventFilter(this);
     // The time axis ends where the data end, not at the next round tick (a 6,300 s batch on a
     // 0–10,000 s axis when the plot is narrow and the ticks are 5,000 s apart).
     plot->axisScaleEngine(QwtPlot::xBottom)->setAttribute(QwtScaleEngine::Floating, true);
@@ -586,7 +591,7 @@ void PlotStack::updateReadout() {
         for (auto* plot : m_plots) {
             const double a = valueAt(plot, m_cursor[0]);
             const double b = valueAt(plot, m_cursor[1]);
-            parts << tr("%1: Δ %2").arg(plot->axisTitle(QwtPlot::yLeft).text(), fmt(b - a));
+            parts << tr("%1: Δ %2").arg(plot->property("drytwinYTitle").toString(), fmt(b - a));
         }
     }
     if (std::isfinite(m_timeCursor)) {
@@ -594,6 +599,28 @@ void PlotStack::updateReadout() {
     }
     if (!parts.isEmpty()) {
         m_readout->setText(parts.join(QStringLiteral("   ")));
+    }
+}
+
+QString PlotStack::yTitle(int index) const {
+    return plot(index)->property("drytwinYTitle").toString();
+}
+
+void PlotStack::fitYTitle(QwtPlot* plot) {
+    const QString oneLine = plot->property("drytwinYTitle").toString();
+    const int unitAt = oneLine.lastIndexOf(QStringLiteral(" ["));
+    if (oneLine.isEmpty() || unitAt <= 0) {
+        return;
+    }
+    QwtText title = plot->axisTitle(QwtPlot::yLeft);
+    // The axis runs along the plot's height less the bottom axis and the legend: about the canvas.
+    const int room = plot->canvas()->height() > 0 ? plot->canvas()->height() : plot->height();
+    const bool fits = QFontMetrics(title.font()).horizontalAdvance(oneLine) <= room - 6;
+    const QString wanted =
+        fits ? oneLine : oneLine.left(unitAt) + QLatin1Char('\n') + oneLine.mid(unitAt + 1);
+    if (title.text() != wanted) {
+        title.setText(wanted);
+        plot->setAxisTitle(QwtPlot::yLeft, title);
     }
 }
 
@@ -610,6 +637,19 @@ void PlotStack::resizeEvent(QResizeEvent* event) {
 }
 
 bool PlotStack::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::Resize) {
+        if (auto* plot = qobject_cast<QwtPlot*>(watched)) {
+            // Once the plot has laid out its canvas for the new size (the filter sees the event first).
+            QMetaObject::invokeMethod(
+                this,
+                [this, guarded = QPointer<QwtPlot>(plot)] {
+                    if (guarded) {
+                        fitYTitle(guarded);
+                    }
+                },
+                Qt::QueuedConnection);
+        }
+    }
     if (event->type() == QEvent::MouseButtonPress) {
         auto* me = static_cast<QMouseEvent*>(event);
         const auto mods = me->modifiers();
@@ -720,7 +760,7 @@ QString PlotStack::csvText() const {
         QStringLiteral("plot,curve,%1,y\n")
             .arg(quoted(m_plots.empty() ? QString() : m_plots.back()->axisTitle(QwtPlot::xBottom).text()));
     for (auto* plot : m_plots) {
-        const QString plotName = quoted(plot->axisTitle(QwtPlot::yLeft).text());
+        const QString plotName = quoted(plot->property("drytwinYTitle").toString());
         for (const auto* item : plot->itemList(QwtPlotItem::Rtti_PlotCurve)) {
             const auto* c = static_cast<const QwtPlotCurve*>(item);
             const QString curveName = quoted(c->title().text());

@@ -33,6 +33,9 @@ public:
     int addPlot(const QString& yTitle);
     int plotCount() const { return static_cast<int>(m_plots.size()); }
     QwtPlot* plot(int index) const { return m_plots.at(static_cast<std::size_t>(index)); }
+    /// @brief The y-axis title of plot @p index as given to addPlot (on screen its unit may be on a
+    /// second line where the plot is short).
+    QString yTitle(int index) const;
     /// @brief The x-axis title of the bottom plot (default "time [s]").
     void setXTitle(const QString& title);
     /// @brief Adds a curve to plot @p index; returns it (owned by the plot).
@@ -91,6 +94,8 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
     /// A narrow plot gets fewer time ticks, so that their labels ("6,000") never run together.
     void resizeEvent(QResizeEvent* event) override;
+    /// The y-axis title on one line where the plot is tall enough, else its unit on a second line.
+    void fitYTitle(QwtPlot* plot);
 
 private:
     void linkXFrom(QwtPlot* source);

@@ -839,7 +839,12 @@ void DiscoverPanel::show() {
     const auto outcome = [&d](const std::string& cause) -> std::pair<QString, QString> {
         for (const auto& f : d.findings) {
             if (f.cause == cause) {
-                return {tr("named"), QString()};
+                // Named on its fit, whatever the screen's p (a newcomer read "named" beside p 0.08 as
+                // a contradiction).
+                return {tr("named"),
+                        tr("Named on its fit: it lowers the held-out error (p = %1) and passes the checks "
+                           "that it is this cause; the screen's p only ranks the candidates for fitting.")
+                            .arg(f.gain.pValue, 0, 'g', 3)};
             }
         }
         for (auto r = d.rounds.rbegin(); r != d.rounds.rend(); ++r) {
@@ -847,6 +852,14 @@ void DiscoverPanel::show() {
                 if (x.cause == cause) {
                     return {rejectionShortText(x.code), QString::fromStdString(x.reason)};
                 }
+            }
+        }
+        for (const auto& r : d.rounds) {
+            if (std::any_of(r.candidates.begin(), r.candidates.end(),
+                            [&](const discovery::Candidate& c) { return c.cause == cause && c.fitted; })) {
+                return {tr("fitted, not the best"),
+                        tr("Fitted in a round in which another cause explained more of the error; the "
+                           "causes named after it were fitted on the model extended by it.")};
             }
         }
         return {QString(), QString()};
@@ -880,8 +893,9 @@ void DiscoverPanel::show() {
         // The heading gives the final model's value (every named cause fitted jointly); the
         // sentence, the gain and the parts describe the fit when the cause was named. Where the
         // two differ, the heading says which is which.
-        const bool moved = f.restated && std::abs(f.value - f.valueWhenNamed) >
-                                             0.25 * (f.ci95HighWhenNamed - f.ci95LowWhenNamed);
+        // Said wherever the two differ as shown (0.04521 above 0.04468 below read as a mistake).
+        const bool moved =
+            f.restated && QString::number(f.value, 'g', 4) != QString::number(f.valueWhenNamed, 'g', 4);
         const QString heading =
             tr("%1 = %2%3, 95 % CI [%4, %5]")
                 .arg(causeDisplayName(f.cause))
