@@ -437,8 +437,9 @@ int main(int argc, char** argv) {
                     pcaFlaggedHealthySeed += out.pcaFlags && healthyPcaFlags[s];
                     pcaMissedOnHealthyFlaggedSeed += out.pcaFlags && !out.drytwinFlags && healthyPcaFlags[s];
                     drytwinFlaggedHealthySeed += out.drytwinFlags && healthyDrytwinFlags[s];
-                    std::printf("| %s | %g | %u | %s | %s | %s | %.1f |\n", hidden.c_str(), strength * scale,
-                                o.seed, out.named.c_str(),
+                    std::printf("| %s | %g | %u | %s%s | %s | %s | %.1f |\n", hidden.c_str(),
+                                strength * scale, o.seed, out.named.c_str(),
+                                out.leftOut.empty() ? "" : (" (judged without " + out.leftOut + ")").c_str(),
                                 out.rightFirst ? (out.asGroup ? "yes (group)" : "yes") : "no",
                                 flags(out).c_str(), out.seconds);
                     std::fflush(stdout);

@@ -424,15 +424,55 @@ Status scatterChange(const Problem& pr, const Problem& referencePr, const CauseF
     return {};
 }
 
-/// The first batch DryTwin's monitor does not place wholly before its change point: the run that
-/// holds the 95 % interval's low end (0 when no change, or no onset, was found).
+/// The first batch from which DryTwin's monitor sees the change: the run that holds its change
+/// point's 95 % interval's low end, where every run before it also reads as the reference did
+/// (0 when no change, or no onset, was found). The interval alone is not enough: a wall loss
+/// present in all four batches had its change point in the second (its first batch shifted a
+/// little less), and the causes were judged without the first. So each earlier run's mean of the
+/// deciding statistic must lie nearer the reference's (0) than the later runs' mean, and its
+/// level must have been judged at all.
 std::size_t firstBatchOfChange(const monitoring::Detection& d) {
     if (!d.changed || !d.hasOnset || d.onsetLowWindow < 0 ||
         static_cast<std::size_t>(d.onsetLowWindow) >= d.series.size()) {
         return 0;
     }
-    return static_cast<std::size_t>(
-        std::max(0, d.series[static_cast<std::size_t>(d.onsetLowWindow)].runIndex));
+    const int first = std::max(0, d.series[static_cast<std::size_t>(d.onsetLowWindow)].runIndex);
+    if (first == 0) {
+        return 0;
+    }
+    const bool bySpe = d.statistic == "SPE";
+    std::map<int, std::pair<double, int>> sums; // run -> (sum of z, windows)
+    for (const auto& pt : d.series) {
+        const double z = bySpe ? pt.zSpe : pt.zT2;
+        if (std::isfinite(z)) {
+            sums[pt.runIndex].first += z;
+            ++sums[pt.runIndex].second;
+        }
+    }
+    double laterSum = 0;
+    int laterCount = 0;
+    for (const auto& [run, sc] : sums) {
+        if (run >= first) {
+            laterSum += sc.first;
+            laterCount += sc.second;
+        }
+    }
+    const double later = laterCount > 0 ? laterSum / laterCount : 0.0;
+    for (int run = 0; run < first; ++run) {
+        const auto it = sums.find(run);
+        if (it == sums.end() || it->second.second == 0) {
+            return 0; // a run no window judges: nothing says it ran as the reference did
+        }
+        const std::string& id =
+            d.series[static_cast<std::size_t>(d.runStarts[static_cast<std::size_t>(run)])].run;
+        if (std::find(d.levelNotJudged.begin(), d.levelNotJudged.end(), id) != d.levelNotJudged.end()) {
+            return 0;
+        }
+        if (it->second.first / it->second.second > 0.5 * later) {
+            return 0;
+        }
+    }
+    return static_cast<std::size_t>(first);
 }
 
 } // namespace
