@@ -1960,7 +1960,7 @@
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="127"/>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="791"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="996"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="997"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -2449,17 +2449,17 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="924"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="925"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="927"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="928"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="935"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="936"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
@@ -2555,44 +2555,44 @@
         <translation>未拟合（证据较弱）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="945"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="946"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="961"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="962"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="970"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="971"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="977"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="978"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="982"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="983"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="990"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="991"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1005"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1006"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="714"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1006"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1032"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1007"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1033"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
@@ -2602,14 +2602,14 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1007"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1008"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="714"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1008"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1036"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1009"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1037"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2679,82 +2679,82 @@
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="899"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="900"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="906"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="907"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="920"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="921"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="965"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="966"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="995"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="996"/>
         <source>Held-out accuracy: nothing was named, so nothing was extended (before = after):</source>
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1009"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1010"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1018"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1019"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1031"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1032"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1031"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1032"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1032"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1033"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1035"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1036"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1035"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1036"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1036"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1037"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1063"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1064"/>
         <source>model (nothing extended)</source>
         <translation>模型（未扩展）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1065"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1066"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1066"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1067"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -2762,42 +2762,67 @@
 <context>
     <name>drytwin::widgets::ErrorText</name>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="16"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="22"/>
+        <source>expected %1 fields as in the header, found %2</source>
+        <translation>表头有 %1 个字段，此行有 %2 个</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/ErrorText.cpp" line="23"/>
+        <source>expected %1 fields as in the header, found %2 (wrong delimiter?)</source>
+        <translation>表头有 %1 个字段，此行有 %2 个（分隔符不对？）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/ErrorText.cpp" line="28"/>
+        <source>the folder holds no *.csv batch files</source>
+        <translation>文件夹中没有 *.csv 批次文件</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/ErrorText.cpp" line="32"/>
+        <source>the file has a header but no data rows</source>
+        <translation>文件有表头，但没有数据行</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/ErrorText.cpp" line="35"/>
+        <source>missing time; the time index must be complete</source>
+        <translation>缺少时间；时间列必须完整</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/ErrorText.cpp" line="51"/>
         <source>%1: no such file or folder</source>
         <translation>%1：文件或文件夹不存在</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="22"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="57"/>
         <source>%1: the required column &apos;%2&apos; is missing</source>
         <translation>%1：缺少必需的列“%2”</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="29"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="64"/>
         <source>%1, line %2, column %3: text &apos;%4&apos; in the numeric column &apos;%5&apos;</source>
         <translation>%1，第 %2 行，第 %3 列：数值列“%5”中出现文本“%4”</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="36"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="71"/>
         <source>%1, line %2, column %3: time does not increase</source>
         <translation>%1，第 %2 行，第 %3 列：时间未递增</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="43"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="78"/>
         <source>%1, line %2, column %3: %4</source>
         <translation>%1，第 %2 行，第 %3 列：%4</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="49"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="84"/>
         <source>Parameter %1 = %2 lies outside its range [%3, %4]</source>
         <translation>参数 %1 = %2 超出其范围 [%3, %4]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="55"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="90"/>
         <source>No data loaded; open a batch file or folder first.</source>
         <translation>未加载数据；请先打开批次文件或文件夹。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="58"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="93"/>
         <source>Cancelled by the user.</source>
         <translation>已被用户取消。</translation>
     </message>
@@ -3914,22 +3939,22 @@ The results below are from the last complete run.</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="718"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="719"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="746"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="747"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
         <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="782"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="783"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="696"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="697"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
@@ -3938,7 +3963,7 @@ The results below are from the last complete run.</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="781"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="782"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
@@ -3947,12 +3972,12 @@ The results below are from the last complete run.</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="788"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="789"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="790"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="791"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>

@@ -8,6 +8,11 @@ import re
 import sys
 
 ZH = {
+    "missing time; the time index must be complete": "缺少时间；时间列必须完整",
+    "the file has a header but no data rows": "文件有表头，但没有数据行",
+    "the folder holds no *.csv batch files": "文件夹中没有 *.csv 批次文件",
+    "expected %1 fields as in the header, found %2 (wrong delimiter?)": "表头有 %1 个字段，此行有 %2 个（分隔符不对？）",
+    "expected %1 fields as in the header, found %2": "表头有 %1 个字段，此行有 %2 个",
     "Fitted in a round in which another cause explained more of the error; the causes named after it were fitted on the model extended by it.": "在某一轮中已拟合，但另一原因解释了更多误差；其后指认的原因是在由它扩展的模型上拟合的。",
     "fitted, not the best": "已拟合，非最佳",
     "Named on its fit: it lowers the held-out error (p = %1) and passes the checks that it is this cause; the screen's p only ranks the candidates for fitting.": "按其拟合指认：它降低了留出部分的误差（p = %1），并通过了确认是此原因的各项检查；筛选的 p 只用于为拟合排列候选。",

@@ -4,6 +4,7 @@
 #include "MainWindow.h"
 #include "calibration/CalibrationPanel.h"
 #include "common/DisplayNames.h"
+#include "common/ErrorText.h"
 #include "common/PlotStack.h"
 #include "common/Series.h"
 #include "common/Translations.h"
@@ -186,6 +187,23 @@ private Q_SLOTS:
         Workbench wb;
         DataPanel data(wb);
         QCOMPARE(data.plots()->yTitle(1), QString::fromUtf8("进料 [kg/h]"));
+
+        // An engine reason with no code of its own, as a data file's shape or an empty folder gives
+        // it, in Chinese with its numbers (the review's window showed them in English).
+        const QString fields =
+            errorText(Error{ErrorKind::BadInput,
+                            "B02.csv:7:9",
+                            "expected 13 fields as in the header, found 8",
+                            ErrorCode::DataFileFormat,
+                            {"B02.csv", "7", "9", "expected 13 fields as in the header, found 8"}});
+        QVERIFY2(!fields.contains(QLatin1String("expected")) && fields.contains(QLatin1String("13")) &&
+                     fields.contains(QLatin1String("8")),
+                 qPrintable(fields));
+        const QString empty =
+            errorText(Error{ErrorKind::BadInput, "/data/empty", "the folder holds no *.csv batch files"});
+        QVERIFY2(!empty.contains(QLatin1String("holds no")) &&
+                     empty.startsWith(QLatin1String("/data/empty: ")),
+                 qPrintable(empty));
 
         // The stale-model reason: a key, worded when shown (a project saved in English reads back).
         LearntPart part;
