@@ -2585,14 +2585,14 @@
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1006"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1011"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="714"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1007"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1033"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1012"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1038"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
@@ -2602,14 +2602,14 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1008"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1013"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="714"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1009"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1037"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1014"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1042"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2704,57 +2704,62 @@
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1010"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1001"/>
+        <source>Gain on the held-out part, with every named cause (each finding&apos;s own gain is in its evidence):</source>
+        <translation>留出部分的改进（含所有已指认的原因；每项发现各自的改进见其证据）：</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1015"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1019"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1024"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1032"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1037"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1032"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1037"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1033"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1038"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1036"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1041"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1036"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1041"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1037"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1042"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1064"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1069"/>
         <source>model (nothing extended)</source>
         <translation>模型（未扩展）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1066"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1071"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1067"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1072"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -2767,62 +2772,62 @@
         <translation>表头有 %1 个字段，此行有 %2 个</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="23"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="24"/>
         <source>expected %1 fields as in the header, found %2 (wrong delimiter?)</source>
         <translation>表头有 %1 个字段，此行有 %2 个（分隔符不对？）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="28"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="31"/>
         <source>the folder holds no *.csv batch files</source>
         <translation>文件夹中没有 *.csv 批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="32"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="37"/>
         <source>the file has a header but no data rows</source>
         <translation>文件有表头，但没有数据行</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="35"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="40"/>
         <source>missing time; the time index must be complete</source>
         <translation>缺少时间；时间列必须完整</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="51"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="57"/>
         <source>%1: no such file or folder</source>
         <translation>%1：文件或文件夹不存在</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="57"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="63"/>
         <source>%1: the required column &apos;%2&apos; is missing</source>
         <translation>%1：缺少必需的列“%2”</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="64"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="70"/>
         <source>%1, line %2, column %3: text &apos;%4&apos; in the numeric column &apos;%5&apos;</source>
         <translation>%1，第 %2 行，第 %3 列：数值列“%5”中出现文本“%4”</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="71"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="77"/>
         <source>%1, line %2, column %3: time does not increase</source>
         <translation>%1，第 %2 行，第 %3 列：时间未递增</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="78"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="84"/>
         <source>%1, line %2, column %3: %4</source>
         <translation>%1，第 %2 行，第 %3 列：%4</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="84"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="90"/>
         <source>Parameter %1 = %2 lies outside its range [%3, %4]</source>
         <translation>参数 %1 = %2 超出其范围 [%3, %4]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="90"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="96"/>
         <source>No data loaded; open a batch file or folder first.</source>
         <translation>未加载数据；请先打开批次文件或文件夹。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/ErrorText.cpp" line="93"/>
+        <location filename="../widgets/common/ErrorText.cpp" line="99"/>
         <source>Cancelled by the user.</source>
         <translation>已被用户取消。</translation>
     </message>

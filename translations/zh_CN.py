@@ -8,6 +8,7 @@ import re
 import sys
 
 ZH = {
+    "Gain on the held-out part, with every named cause (each finding's own gain is in its evidence):": "留出部分的改进（含所有已指认的原因；每项发现各自的改进见其证据）：",
     "missing time; the time index must be complete": "缺少时间；时间列必须完整",
     "the file has a header but no data rows": "文件有表头，但没有数据行",
     "the folder holds no *.csv batch files": "文件夹中没有 *.csv 批次文件",
