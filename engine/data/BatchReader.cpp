@@ -1,6 +1,7 @@
 #include "data/BatchReader.h"
 
 #include "common/AtomicFile.h"
+#include "common/TextList.h"
 #include "data/PlantFileReader.h"
 #include "data/historian/NumberFormat.h"
 #include "data/historian/TextDecoding.h"
@@ -477,14 +478,6 @@ bool isSpreadsheet(const std::string& lowerExtension) {
            lowerExtension == ".ods";
 }
 
-std::string joinNames(const std::vector<std::string>& names) {
-    std::string out;
-    for (const auto& n : names) {
-        out += (out.empty() ? "" : ", ") + n;
-    }
-    return out;
-}
-
 constexpr const char* kOnlyCsv = "DryTwin reads CSV text (a historian's export, or a workbook saved as "
                                  "\"CSV UTF-8\" or \"CSV (semicolon)\"), not workbooks";
 
@@ -518,9 +511,9 @@ LoadResult loadDataSet(const std::string& path, const ReadOptions& options, cons
                 {ErrorKind::BadInput, path,
                  "the folder holds no *.csv batch files" +
                      (notRead.empty() ? std::string()
-                                      : " (not read: " + joinNames(notRead) + "; " + kOnlyCsv + ")")});
+                                      : " (not read: " + commaList(notRead) + "; " + kOnlyCsv + ")")});
         } else if (!notRead.empty()) {
-            const std::string note = path + ": not read: " + joinNames(notRead) + "; " + kOnlyCsv;
+            const std::string note = path + ": not read: " + commaList(notRead) + "; " + kOnlyCsv;
             result.notes.push_back(note);
             result.dataSet.notes.push_back(note);
         }

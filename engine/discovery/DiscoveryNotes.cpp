@@ -1,6 +1,7 @@
 // The notes of discovery, one function per form (DiscoveryNotes.h says why in one place).
 #include "discovery/DiscoveryNotes.h"
 
+#include "common/TextList.h"
 #include "discovery/DiscoveryInternal.h"
 
 namespace drytwin::discovery::notes {
@@ -22,11 +23,7 @@ std::string airSpeedConstant() {
 }
 
 std::string onlyCausesAsked(const std::vector<std::string>& causes) {
-    std::string list;
-    for (const auto& c : causes) {
-        list += (list.empty() ? "" : ", ") + c;
-    }
-    return kOnlyCausesAsked + list;
+    return kOnlyCausesAsked + commaList(causes);
 }
 
 std::string outletMixing(double lagS) {
@@ -86,12 +83,8 @@ std::string shortReference(std::size_t batches) {
 }
 
 std::string judgedFromChangeOn(const std::vector<std::string>& before, const std::string& firstJudged) {
-    std::string list;
-    for (const auto& b : before) {
-        list += (list.empty() ? "" : ", ") + b;
-    }
     return "the causes are judged on the batches from " + firstJudged + " on, where the change began; " +
-           list + " before it ran as the reference did";
+           commaList(before) + " before it ran as the reference did";
 }
 
 std::string measuredInOnePeriodOnly(const std::string& column, bool inData) {

@@ -1,5 +1,6 @@
 #include "data/historian/ValueColumns.h"
 
+#include "common/TextList.h"
 #include "data/historian/PlaceInFile.h"
 
 #include <algorithm>
@@ -13,14 +14,6 @@ namespace drytwin::data::historian {
 namespace {
 
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-
-std::string joined(const std::vector<std::string>& items) {
-    std::string list;
-    for (const auto& k : items) {
-        list += (list.empty() ? "" : ", ") + k;
-    }
-    return list;
-}
 
 /// "T_hot [°F]" -> ("T_hot", "°F"); a header without a bracketed unit at its end -> (header, "").
 std::pair<std::string, std::string> headerAndUnit(const std::string& header) {
@@ -156,7 +149,7 @@ Expected<ColumnLayout> layOutColumns(const FileShape& shape, const ColumnMapping
                 if (v.unit.empty() || std::find(known.begin(), known.end(), v.unit) == known.end()) {
                     return fileError(file, shape.headerLine + 1, static_cast<int>(c) + 1,
                                      "unit '" + shape.units[c] + "' of column '" + h + "' (" + contract +
-                                         ") is not one of " + joined(known) +
+                                         ") is not one of " + commaList(known) +
                                          "; give the unit in the column mapping ({\"header\": \"" + h +
                                          "\", \"unit\": …})");
                 }
@@ -166,7 +159,7 @@ Expected<ColumnLayout> layOutColumns(const FileShape& shape, const ColumnMapping
                 if (v.unit.empty() || std::find(known.begin(), known.end(), v.unit) == known.end()) {
                     return fileError(file, shape.headerLine, static_cast<int>(c) + 1,
                                      "unit '" + headerUnit + "' in the header '" + h + "' (" + contract +
-                                         ") is not one of " + joined(known) +
+                                         ") is not one of " + commaList(known) +
                                          "; give the unit in the column mapping ({\"header\": \"" + h +
                                          "\", \"unit\": …})");
                 }
