@@ -90,6 +90,8 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     };
     auto reg = [&](CLI::App* sub, std::function<int(const CommandOptions&)> handler) {
         sub->allow_extras(false);
+        // Also after the subcommand, where a script writes it (`drytwin calibrate -q …` was refused).
+        sub->add_flag("-q,--quiet", m_impl->quiet, "no progress on stderr");
         m_impl->handlers[sub] = std::move(handler);
     };
 

@@ -32,6 +32,20 @@ bool namedLikeValue(const std::string& header) {
     return names.count(lowerAscii(trimmed(header))) > 0;
 }
 
+/// A column a tag/value export writes beside its time, tag and value: the sample's quality or
+/// status, the tag's unit or description, the time zone (Wonderware's History writes
+/// `DateTime,TagName,Value,Quality,QualityDetail,OPCQuality,wwTimeZone`).
+bool namedLikeSampleMetadata(const std::string& header) {
+    const std::string h = lowerAscii(trimmed(header));
+    for (const char* word : {"quality", "status", "unit", "zone", "flag", "annotation", "description",
+                             "comment", "version", "state"}) {
+        if (h.find(word) != std::string::npos) {
+            return true;
+        }
+    }
+    return false;
+}
+
 /// A cell for the wide text: quoted when it holds the delimiter or a quote.
 std::string csvCell(std::string_view cell, char delimiter) {
     if (cell.find(delimiter) == std::string_view::npos && cell.find('"') == std::string_view::npos) {
@@ -97,7 +111,19 @@ Expected<std::optional<NarrowPivot>> pivotNarrowExport(const std::string& text, 
             valueAt = i;
         }
     }
-    if (headers.size() < 3 || headers.size() > 6 || timeAt == kNone || tagAt == kNone || valueAt == kNone) {
+    // More than six columns only where every other one describes the sample (a wide file with a
+    // "Value" column among its tags is not one): Wonderware's seven were refused as a wide file
+    // whose tags needed mapping.
+    const auto othersDescribeTheSample = [&] {
+        for (std::size_t i = 0; i < headers.size(); ++i) {
+            if (i != timeAt && i != tagAt && i != valueAt && !namedLikeSampleMetadata(headers[i])) {
+                return false;
+            }
+        }
+        return true;
+    };
+    if (headers.size() < 3 || timeAt == kNone || tagAt == kNone || valueAt == kNone ||
+        (headers.size() > 6 && (headers.size() > 12 || !othersDescribeTheSample()))) {
         return std::optional<NarrowPivot>();
     }
 

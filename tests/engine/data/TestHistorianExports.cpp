@@ -779,6 +779,17 @@ private Q_SLOTS:
         for (const auto c : {Column::THot, Column::Feed, Column::XOut}) {
             QCOMPARE(*n->runs[0].values(c), *w->runs[0].values(c));
         }
+        // Wonderware's History query writes seven columns, four of them about the sample.
+        std::string wonderware = narrowText(false);
+        wonderware.replace(wonderware.find("Tag,Timestamp,Value,Quality\n"), 28,
+                           "Tag,Timestamp,Value,Quality,QualityDetail,OPCQuality,wwTimeZone\n");
+        for (auto at = wonderware.find(",Good\n"); at != std::string::npos;
+             at = wonderware.find(",Good\n", at + 1)) {
+            wonderware.replace(at, 6, ",Good,192,192,W. Europe Standard Time\n");
+        }
+        auto ww = parsePlantText(wonderware, "wonderware.csv", sevenTags());
+        VERIFY_OK(ww);
+        QCOMPARE(*ww->runs[0].values(Column::THot), *w->runs[0].values(Column::THot));
         auto sparse = parsePlantText(narrowText(true), "sparse.csv", sevenTags());
         VERIFY_OK(sparse);
         QVERIFY2(hasNote(*sparse, "200 cells where a tag has no sample at a stamp hold its last sample"),
