@@ -253,6 +253,44 @@ Expected<PlantFileRuns> parsePlantText(const std::string& raw, const std::string
             body = &withoutCutLine;
         }
     }
+    // Title lines above the header (PI DataLink's "PI DataLink export", "Server: …", "Start: …"):
+    // lines without two separators before the first line that has them are read as comments, with
+    // a note. Taken for the header, the first one made the file "missing required column 'time_s'".
+    std::string withTitlesAsComments;
+    {
+        std::vector<std::size_t> titleStarts;
+        int firstTitleLine = 0, lastTitleLine = 0, lineNo = 0;
+        bool headerFound = false;
+        for (std::size_t pos = 0; pos < body->size() && titleStarts.size() <= 20;) {
+            std::size_t end = body->find('\n', pos);
+            end = end == std::string::npos ? body->size() : end;
+            const auto t = trimmed(std::string_view(body->data() + pos, end - pos));
+            ++lineNo;
+            if (!t.empty() && t.front() != '#') {
+                const auto separators = std::count_if(
+                    t.begin(), t.end(), [](char c) { return c == ',' || c == ';' || c == '\t'; });
+                if (separators >= 2) {
+                    headerFound = true;
+                    break;
+                }
+                titleStarts.push_back(pos);
+                firstTitleLine = firstTitleLine == 0 ? lineNo : firstTitleLine;
+                lastTitleLine = lineNo;
+            }
+            pos = end + 1;
+        }
+        if (headerFound && !titleStarts.empty() && titleStarts.size() <= 20) {
+            withTitlesAsComments = *body;
+            for (auto it = titleStarts.rbegin(); it != titleStarts.rend(); ++it) {
+                withTitlesAsComments.insert(*it, "# ");
+            }
+            result.notes.push_back(
+                file + ":" + std::to_string(firstTitleLine) +
+                (lastTitleLine > firstTitleLine ? "-" + std::to_string(lastTitleLine) : "") +
+                ": title lines above the header (no separators), read as comments");
+            body = &withTitlesAsComments;
+        }
+    }
     // A tag/value export (one row per tag and stamp) is read as the wide table it stands for.
     auto narrow = pivotNarrowExport(*body, file, options.mapping.runs.maxInterpolatedGapS);
     if (!narrow) {

@@ -914,6 +914,20 @@ private Q_SLOTS:
         QVERIFY(said);
     }
 
+    void titleLinesAboveTheHeaderAreComments() {
+        const std::string text = "PI DataLink export\nServer: PIPROD01\nStart: 28-Nov-2026 08:00:00\n\n" +
+                                 plainExport(400, 1, false);
+        auto r = parsePlantText(text, "titled.csv", {});
+        VERIFY_OK(r);
+        QCOMPARE(r->runs.size(), std::size_t(1));
+        QCOMPARE(r->runs[0].rows(), std::size_t(400));
+        bool said = false;
+        for (const auto& n : r->notes) {
+            said = said || n.find("titled.csv:1-3: title lines above the header") != std::string::npos;
+        }
+        QVERIFY(said);
+    }
+
     void timeInMillisecondsIsRefused() {
         std::string text = plainExport(400, 1000, true);
         auto r = parsePlantText(text, "ms.csv", {});
