@@ -12,12 +12,15 @@
 #include "data/historian/PlaceInFile.h"
 #include "data/historian/RunSegmentation.h"
 #include "data/historian/TextDecoding.h"
+#include "data/historian/TimeFormatDetection.h"
 #include "data/historian/ValueColumns.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 
 namespace drytwin::data {
 
@@ -224,6 +227,113 @@ Expected<PlantFileRuns> readHistorianRows(const std::string& text, const std::st
     return result;
 }
 
+/// A date-only cell ("28.11.2026", "2026-11-28", "11/28/2026").
+bool isDateOnly(std::string_view cell) {
+    const auto t = trimmed(cell);
+    if (t.size() < 8 || t.size() > 10) {
+        return false;
+    }
+    int digits = 0, marks = 0;
+    for (char c : t) {
+        digits += std::isdigit(static_cast<unsigned char>(c)) ? 1 : 0;
+        marks += (c == '.' || c == '-' || c == '/') ? 1 : 0;
+    }
+    return marks == 2 && digits + marks == static_cast<int>(t.size());
+}
+
+/// A time of day ("13:05:01", "8:00", "13:05:01.250").
+bool isTimeOfDay(std::string_view cell) {
+    const auto t = trimmed(cell);
+    int colons = 0;
+    for (char c : t) {
+        if (c == ':') {
+            ++colons;
+        } else if (!std::isdigit(static_cast<unsigned char>(c)) && c != '.') {
+            return false;
+        }
+    }
+    return (colons == 1 || colons == 2) && t.size() >= 4 && t.size() <= 15;
+}
+
+/// @p text with a date column and the time-of-day column after it joined into one stamp column
+/// (the delimiter between them a space on every line), and the note; nothing where the file's
+/// first stamp is not so written, or where a quote could hide a delimiter.
+std::optional<std::pair<std::string, std::string>> joinDateAndTimeColumns(const std::string& text,
+                                                                          const std::string& file) {
+    LineCursor lines(text);
+    std::string_view line, header, first;
+    while (lines.next(line)) {
+        const auto t = trimmed(line);
+        if (t.empty() || t.front() == '#') {
+            continue;
+        }
+        if (header.empty()) {
+            header = line;
+        } else {
+            first = line;
+            break;
+        }
+    }
+    if (header.empty() || first.empty()) {
+        return std::nullopt;
+    }
+    const char delimiter = detectDelimiter(header);
+    const auto fieldsOf = [delimiter](std::string_view l) {
+        std::vector<std::string_view> out;
+        std::size_t start = 0;
+        for (std::size_t i = 0; i <= l.size(); ++i) {
+            if (i == l.size() || l[i] == delimiter) {
+                out.push_back(l.substr(start, i - start));
+                start = i + 1;
+            }
+        }
+        return out;
+    };
+    const auto names = fieldsOf(header);
+    const auto cells = fieldsOf(first);
+    std::size_t at = names.size();
+    for (std::size_t c = 0; c + 1 < names.size() && c + 1 < cells.size(); ++c) {
+        if (namedLikeTime(std::string(trimmed(names[c]))) &&
+            namedLikeTime(std::string(trimmed(names[c + 1]))) && isDateOnly(cells[c]) &&
+            isTimeOfDay(cells[c + 1])) {
+            at = c;
+            break;
+        }
+    }
+    // Only now the whole text (a month at 1 s is half a gigabyte): a quote could hide a delimiter.
+    if (at == names.size() || text.find('"') != std::string::npos) {
+        return std::nullopt;
+    }
+    // Every line's delimiter after field `at` becomes a space (comment lines stay as they are).
+    std::string out;
+    out.reserve(text.size());
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        std::size_t end = text.find('\n', pos);
+        end = end == std::string::npos ? text.size() : end + 1;
+        std::string_view l(text.data() + pos, end - pos);
+        const auto t = trimmed(l);
+        if (!t.empty() && t.front() != '#') {
+            std::size_t seen = 0;
+            for (std::size_t i = 0; i < l.size(); ++i) {
+                if (l[i] == delimiter && seen++ == at) {
+                    out.append(l.substr(0, i));
+                    out.push_back(' ');
+                    out.append(l.substr(i + 1));
+                    l = {};
+                    break;
+                }
+            }
+        }
+        out.append(l);
+        pos = end;
+    }
+    return std::make_pair(std::move(out), file + ": the date and the time of day in two columns ('" +
+                                              std::string(trimmed(names[at])) + "', '" +
+                                              std::string(trimmed(names[at + 1])) +
+                                              "'), read as one time stamp");
+}
+
 } // namespace
 
 Expected<PlantFileRuns> parsePlantText(const std::string& raw, const std::string& file,
@@ -290,6 +400,15 @@ Expected<PlantFileRuns> parsePlantText(const std::string& raw, const std::string
                 ": title lines above the header (no separators), read as comments");
             body = &withTitlesAsComments;
         }
+    }
+    // The date and the time of day in two columns (`Datum;Uhrzeit`, `Date,Time`), as Excel and
+    // some SCADA exports write them: read as one stamp, "28.11.2026 13:05:01", with a note.
+    // "'28.11.2026' is not a time stamp" said nothing of the column beside it.
+    std::string withDateAndTimeJoined;
+    if (auto joined = joinDateAndTimeColumns(*body, file)) {
+        withDateAndTimeJoined = std::move(joined->first);
+        result.notes.push_back(std::move(joined->second));
+        body = &withDateAndTimeJoined;
     }
     // A tag/value export (one row per tag and stamp) is read as the wide table it stands for.
     auto narrow = pivotNarrowExport(*body, file, options.mapping.runs.maxInterpolatedGapS);

@@ -928,6 +928,26 @@ private Q_SLOTS:
         QVERIFY(said);
     }
 
+    void aDateAndATimeColumnAreOneStamp() {
+        // "Date,Time": the stamp "2026-11-28 08:00:00" written as two cells.
+        std::string text = plainExport(400, 1, false);
+        text.replace(0, 9, "Date,Time");
+        for (auto at = text.find("2026-11-28 "); at != std::string::npos; at = text.find("2026-11-28 ", at)) {
+            text[at + 10] = ',';
+        }
+        auto r = parsePlantText(text, "split.csv", {});
+        VERIFY_OK(r);
+        QCOMPARE(r->runs.size(), std::size_t(1));
+        QCOMPARE(r->runs[0].rows(), std::size_t(400));
+        QCOMPARE(r->runs[0].run->startTimestamp, std::string("2026-11-28T08:00:00"));
+        bool said = false;
+        for (const auto& n : r->notes) {
+            said = said || n.find("the date and the time of day in two columns ('Date', 'Time')") !=
+                               std::string::npos;
+        }
+        QVERIFY(said);
+    }
+
     void timeInMillisecondsIsRefused() {
         std::string text = plainExport(400, 1000, true);
         auto r = parsePlantText(text, "ms.csv", {});
