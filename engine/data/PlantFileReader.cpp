@@ -371,6 +371,7 @@ Expected<PlantFileRuns> parsePlantText(const std::string& raw, const std::string
         std::vector<std::size_t> titleStarts;
         int firstTitleLine = 0, lastTitleLine = 0, lineNo = 0;
         bool headerFound = false;
+        std::size_t headerAt = 0;
         for (std::size_t pos = 0; pos < body->size() && titleStarts.size() <= 20;) {
             std::size_t end = body->find('\n', pos);
             end = end == std::string::npos ? body->size() : end;
@@ -381,6 +382,7 @@ Expected<PlantFileRuns> parsePlantText(const std::string& raw, const std::string
                     t.begin(), t.end(), [](char c) { return c == ',' || c == ';' || c == '\t'; });
                 if (separators >= 2) {
                     headerFound = true;
+                    headerAt = pos;
                     break;
                 }
                 titleStarts.push_back(pos);
@@ -390,10 +392,16 @@ Expected<PlantFileRuns> parsePlantText(const std::string& raw, const std::string
             pos = end + 1;
         }
         if (headerFound && !titleStarts.empty() && titleStarts.size() <= 20) {
-            withTitlesAsComments = *body;
-            for (auto it = titleStarts.rbegin(); it != titleStarts.rend(); ++it) {
-                withTitlesAsComments.insert(*it, "# ");
+            // The lines above the header rebuilt, the rest copied once (a month's export is large).
+            withTitlesAsComments.reserve(body->size() + 2 * titleStarts.size());
+            std::size_t copied = 0;
+            for (const std::size_t start : titleStarts) {
+                withTitlesAsComments.append(*body, copied, start - copied);
+                withTitlesAsComments.append("# ");
+                copied = start;
             }
+            withTitlesAsComments.append(*body, copied, headerAt - copied);
+            withTitlesAsComments.append(*body, headerAt, std::string::npos);
             result.notes.push_back(
                 file + ":" + std::to_string(firstTitleLine) +
                 (lastTitleLine > firstTitleLine ? "-" + std::to_string(lastTitleLine) : "") +
