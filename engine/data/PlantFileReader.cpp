@@ -188,26 +188,21 @@ Expected<PlantFileRuns> readHistorianRows(const std::string& text, const std::st
     // onto the grid as any other, with a note.
     RunSplitOptions bySampling = runs;
     {
-        std::vector<double> steps;
-        steps.reserve(rows.size());
-        for (std::size_t k = 1; k < rows.size(); ++k) {
-            if (rows[k].t > rows[k - 1].t) {
-                steps.push_back(rows[k].t - rows[k - 1].t);
-            }
+        std::vector<double> times;
+        times.reserve(rows.size());
+        for (const auto& r : rows) {
+            times.push_back(r.t);
         }
-        if (!steps.empty()) {
-            const auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
-            std::nth_element(steps.begin(), middle, steps.end());
-            if (*middle > runs.maxInterpolatedGapS) {
-                bySampling.maxInterpolatedGapS = 2.5 * *middle;
-                char text[320];
-                std::snprintf(text, sizeof text,
-                              ": rows are %.4g s apart (median), more than the %.4g s bridged across a gap "
-                              "(\"runs\": {\"max_interpolated_gap_s\"}): a gap counts from %.4g s here, "
-                              "and each run is interpolated onto the %.4g s grid",
-                              *middle, runs.maxInterpolatedGapS, bySampling.maxInterpolatedGapS, runs.stepS);
-                result.notes.push_back(file + text);
-            }
+        const double step = medianPositiveStep(times); // -1 when time never moves on
+        if (step > runs.maxInterpolatedGapS) {
+            bySampling.maxInterpolatedGapS = 2.5 * step;
+            char text[320];
+            std::snprintf(text, sizeof text,
+                          ": rows are %.4g s apart (median), more than the %.4g s bridged across a gap "
+                          "(\"runs\": {\"max_interpolated_gap_s\"}): a gap counts from %.4g s here, "
+                          "and each run is interpolated onto the %.4g s grid",
+                          step, runs.maxInterpolatedGapS, bySampling.maxInterpolatedGapS, runs.stepS);
+            result.notes.push_back(file + text);
         }
     }
     const std::vector<RowSpan> spans = cutIntoRuns(rows, feed, clockJumpBefore, bySampling);
