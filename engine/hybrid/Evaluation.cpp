@@ -156,13 +156,14 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
     }
     const auto test = hybrid::splitViews(batches, *sims, true, options.trainFraction);
     EvaluationResult out;
-    {
+    const data::ChronologicalSplit split = [&] {
         std::vector<std::size_t> rowsPerBatch;
         for (const auto& b : batches) {
             rowsPerBatch.push_back(b.rows());
         }
-        out.split = data::chronologicalSplit(rowsPerBatch, options.trainFraction).name;
-    }
+        return data::chronologicalSplit(rowsPerBatch, options.trainFraction);
+    }();
+    out.split = split.name;
     out.multiStepHorizon = options.horizonSteps;
     out.horizons = options.horizons;
     out.horizons.push_back(1);
@@ -208,12 +209,8 @@ Expected<EvaluationResult> evaluate(const std::vector<data::SiBatch>& batches,
     // The headline horizon: one no held-out batch is long enough to reach scores nothing (a fresh user's
     // --horizon 100000 printed NaN for five models and a "perfect" 0.000 skill for the PBM, exit 0).
     {
-        std::vector<std::size_t> rowsPerBatch;
-        for (const auto& b : batches) {
-            rowsPerBatch.push_back(b.rows());
-        }
         std::size_t longest = 0;
-        for (const auto& r : data::chronologicalSplit(rowsPerBatch, options.trainFraction).test) {
+        for (const auto& r : split.test) {
             longest = std::max(longest, r.size());
         }
         if (static_cast<std::size_t>(options.horizonSteps) >= longest) {
