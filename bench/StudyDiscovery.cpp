@@ -5,7 +5,10 @@
 // and how close the onsets are, as Markdown tables.
 // Run: build/bench/study_discovery [--quick] [--plant distributed|lumped] [--sensors realistic|ideal|default]
 //      [--part mechanisms|nulls|onsets|batch-change (with --reference: each mechanism from the third of four
-//      batches, seeds FIRST+200; in "all" too)] [--judge-every-batch (with --reference: no batch left out
+//      batches, seeds FIRST+200; in "all" too)|mid-batch-change (with --reference: from 8-28 min into the
+//      third of four batches and the whole fourth; only when asked)] [--onset-in-every-batch (with --reference:
+//      t_onset from every batch's start, no batch taken as changed from its start; before 2026-11-29)]
+//      [--judge-every-batch (with --reference: no batch left out
 //      before the change point, as before 2026-11-28)] [--mechanism NAME (e.g. moisture_meter_lag)]
 //      [--verbose]
 //      [--null-seeds FIRST (20 seeds from it; default 201)] [--min-explained SHARE (default 0.15)]
@@ -52,6 +55,7 @@ struct Outcome {
     double seconds = 0;
     bool hasOnset = false;
     double onsetS = 0;
+    double value = 0; ///< the first finding's fitted value
     bool drytwinFlags = false, pcaFlags = false; ///< --reference: each detector's run-level decision
     std::string leftOut; ///< --reference: the batches left out as wholly before the change
 };
@@ -106,10 +110,48 @@ Outcome runFromThirdBatch(plant::PlantOptions o, const std::string& hidden) {
     std::vector<data::SiBatch> week = plant::toSiBatches(*before, healthy.seed);
     int number = static_cast<int>(week.size());
     for (auto& b : plant::toSiBatches(*after, changed.seed)) {
-        char id[8];
+        char id[16];
         std::snprintf(id, sizeof id, "B%02d", ++number);
         b.id = id;
         week.push_back(std::move(b));
+    }
+    return judge(week, o, hidden);
+}
+
+/// --part mid-batch-change: two healthy batches, the change from @p onsetS into the third, and a
+/// fourth changed from its start: a fault that began during a batch and was not repaired.
+Outcome runFromMidThirdBatch(plant::PlantOptions o, const std::string& hidden, plant::Mechanism m,
+                             double onsetS) {
+    o.batches = 2;
+    o.samples = 3000;
+    plant::PlantOptions healthy = o;
+    healthy.effects.clear();
+    healthy.effectOnsetS.clear();
+    auto before = plant::runPlant(healthy);
+    plant::PlantOptions third = o;
+    third.batches = 1;
+    third.seed = o.seed + kChangedRunSeedOffset;
+    third.effectOnsetS[m] = onsetS;
+    auto during = plant::runPlant(third);
+    plant::PlantOptions fourth = o;
+    fourth.batches = 1;
+    fourth.seed = o.seed + kChangedRunSeedOffset + 1;
+    fourth.effectOnsetS.clear();
+    auto after = plant::runPlant(fourth);
+    if (!before || !during || !after) {
+        Outcome out;
+        out.named = "plant failed: " + (!before ? before : !during ? during : after).error().message();
+        return out;
+    }
+    std::vector<data::SiBatch> week = plant::toSiBatches(*before, healthy.seed);
+    int number = static_cast<int>(week.size());
+    for (const auto* run : {&*during, &*after}) {
+        for (auto& b : plant::toSiBatches(*run, run == &*during ? third.seed : fourth.seed)) {
+            char id[16];
+            std::snprintf(id, sizeof id, "B%02d", ++number);
+            b.id = id;
+            week.push_back(std::move(b));
+        }
     }
     return judge(week, o, hidden);
 }
@@ -186,6 +228,7 @@ Outcome judge(const std::vector<data::SiBatch>& data, const plant::PlantOptions&
         }
         out.hasOnset = f.hasOnset;
         out.onsetS = f.onsetS;
+        out.value = f.value;
     }
     if (verbose && !out.named.empty()) { // the look-alikes' numbers and what was turned down
         char text[256];
@@ -286,7 +329,8 @@ int main(int argc, char** argv) {
                                           : plant::SensorMode::Default;
             ++i;
         } else if (a == "--part" &&
-                   (next == "mechanisms" || next == "nulls" || next == "onsets" || next == "batch-change")) {
+                   (next == "mechanisms" || next == "nulls" || next == "onsets" || next == "batch-change" ||
+                    next == "mid-batch-change")) {
             part = next;
             ++i;
         } else if (a == "--verbose") {
@@ -314,6 +358,8 @@ int main(int argc, char** argv) {
             discoveryOptions.causeTestAtNamedFits = false;
         } else if (a == "--judge-every-batch") { // against a reference: no batch left out before the change
             discoveryOptions.judgeFromChangeOn = false;
+        } else if (a == "--onset-in-every-batch") { // t_onset from every batch's start, as before 2026-11-29
+            discoveryOptions.changeGoesOnIntoLaterBatches = false;
         } else if (a == "--lag-from-start") { // against a reference: no lag fitted from the change point
             discoveryOptions.lagFromChangePoint = false;
         } else if (a == "--no-structure") { // against a reference: the causes' normal values alone
@@ -345,12 +391,12 @@ int main(int argc, char** argv) {
         } else {
             std::fprintf(
                 stderr, "usage: study_discovery [--quick] [--plant distributed|lumped] "
-                        "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets|batch-change] "
+                        "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets|batch-change|mid-batch-change] "
                         "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
                         "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
                         "[--evaluations N] [--oracle] [--reference] [--reference-batches N] [--no-structure] "
                         "[--structure-extrapolates] [--cause-test-screen-only] [--keep-taken-up] "
-                        "[--lag-from-start] [--judge-every-batch] [--size-rule] "
+                        "[--lag-from-start] [--judge-every-batch] [--onset-in-every-batch] [--size-rule] "
                         "[--spread-bound] [--undetected-at-5-percent] [--share-of-whole] "
                         "[--no-constancy] [--look-alike-overall]\n");
             return 2;
@@ -532,6 +578,44 @@ int main(int argc, char** argv) {
             }
         }
     }
+    int midRuns = 0, midRight = 0, midOnsetClose = 0;
+    double midValueError = 0;
+    if (againstReference && part == "mid-batch-change") {
+        // The change begins during the third of four batches and goes on in the fourth from its
+        // start (not repaired). Each mechanism at its realistic strength, three seeds; the onset
+        // between 8 and 28 min into the third batch.
+        std::printf("\n| mechanism (from mid-B03 on) | strength | seed | onset true [min] | named | right first | "
+                    "onset found [min] | value / true | batches left out | detected | s |\n"
+                    "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+        for (const auto& [m, strength, other] : cases) {
+            if (!only.empty() && only != plant::info(m).name) {
+                continue;
+            }
+            for (int s = 0; s < nSeeds; ++s) {
+                plant::PlantOptions o = options();
+                o.seed = seeds[s] + 200;
+                o.effects[m] = strength;
+                const double onset = 60.0 * (8 + (o.seed * 7919 % 21));
+                const std::string hidden(plant::info(m).name);
+                const auto out = runFromMidThirdBatch(o, hidden, m, onset);
+                ++midRuns;
+                midRight += out.rightFirst;
+                const bool close = out.rightFirst && out.hasOnset && std::abs(out.onsetS - onset) <= 300;
+                midOnsetClose += close;
+                const double ratio = out.rightFirst && strength != 0 ? out.value / strength : 0;
+                if (out.rightFirst) {
+                    midValueError += std::abs(std::log(std::max(ratio, 1e-3)));
+                }
+                std::printf("| %s | %g | %u | %.0f | %s | %s | %s | %s | %s | %s | %.1f |\n", hidden.c_str(), strength,
+                            o.seed, onset / 60, out.named.c_str(),
+                            out.rightFirst ? (out.asGroup ? "yes (group)" : "yes") : "no",
+                            out.hasOnset ? std::to_string(out.onsetS / 60).substr(0, 5).c_str() : "-",
+                            out.rightFirst ? std::to_string(ratio).substr(0, 5).c_str() : "-",
+                            out.leftOut.empty() ? "-" : out.leftOut.c_str(), flags(out).c_str(), out.seconds);
+                std::fflush(stdout);
+            }
+        }
+    }
     if (runs > 0) {
         std::printf("\nHidden cause named first: %d of %d (%.0f %%), %d of them as a look-alike group. Runs "
                     "naming a cause that is not there: %d of %d.\n",
@@ -562,6 +646,12 @@ int main(int argc, char** argv) {
             "From the third batch: hidden cause named first %d of %d (%.0f %%); the two healthy batches "
             "left out (and no other) in %d; flagged by either detector %d.\n",
             changeRight, changeRuns, 100.0 * changeRight / changeRuns, changeLeftOutRight, changeFlagged);
+    }
+    if (midRuns > 0) {
+        std::printf("From mid-B03 on: hidden cause named first %d of %d (%.0f %%), with the onset within 5 min "
+                    "%d; mean |log(value / true)| of the right ones %.3f.\n",
+                    midRight, midRuns, 100.0 * midRight / midRuns, midOnsetClose,
+                    midRight > 0 ? midValueError / midRight : 0.0);
     }
     if (onsetRuns > 0) {
         std::printf("Onsets named with the onset within %d min: %d of %d (%.0f %%).\n",

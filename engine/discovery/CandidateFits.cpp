@@ -123,7 +123,7 @@ void SelectionRound::screenFromOnsets() {
         }
         Stack from = m_stack;
         for (Eigen::Index i = 0; i < from.s.rows(); ++i) {
-            if (from.timeS[static_cast<std::size_t>(i)] < onset.s) {
+            if (from.sinceOnsetS(static_cast<std::size_t>(i), onset.s) < 0) {
                 from.s(i, col) = 0;
             }
         }
@@ -133,7 +133,7 @@ void SelectionRound::screenFromOnsets() {
         // wrong cause. The same tangent growing linearly from the onset must explain less.
         Stack growing = from;
         for (Eigen::Index i = 0; i < growing.s.rows(); ++i) {
-            growing.s(i, col) *= std::max(0.0, growing.timeS[static_cast<std::size_t>(i)] - onset.s);
+            growing.s(i, col) *= std::max(0.0, growing.sinceOnsetS(static_cast<std::size_t>(i), onset.s));
         }
         if (scoreTest(growing, m_nuisanceCols, col).reduction >= sc.reduction) {
             continue;
@@ -241,6 +241,26 @@ Expected<SelectionRound::Fit> SelectionRound::fittedFromOnset(const Candidate& c
             }
             m_fits[cand.parameter] = fit; // refitFromOnset replaced it; from the start it stays
         }
+    }
+    // A change the detector places mid-batch that goes on into the batches after it (taken as
+    // changed from their start: LineInputs::mechanismsFromStart): any cause is also fitted from the
+    // change point, where the batch it began in held none of it for its first minutes, and kept
+    // where that fits the training part better; the held-out part judges it as any other fit.
+    // Fitted from the start, those healthy minutes dilute it (a wall loss from 22 min into B03:
+    // fitted at half its size). Only where a later batch goes on from its start: with every batch
+    // from the same minute, the tangent's own onset scan above decides.
+    const bool goesOn = std::any_of(m_pr.inputs.begin(), m_pr.inputs.end(),
+                                    [](const physics::LineInputs& in) { return in.mechanismsFromStart; });
+    if (!fit.onset.found && !isLag(cand.parameter) && goesOn && m_pr.reference &&
+        m_pr.reference->changePoint.found && m_pr.reference->changePoint.s > 0) {
+        auto fromChange = refitFromOnset(cand, m_pr.reference->changePoint);
+        if (!fromChange) {
+            return fromChange.error();
+        }
+        if (*fromChange && (*fromChange)->loss < fit.loss) {
+            return **fromChange;
+        }
+        m_fits[cand.parameter] = fit;
     }
     if (!fit.onset.found) {
         return fit;

@@ -106,6 +106,9 @@ Expected<Stack> stackAt(const Problem& pr, const ParameterSet& p, const std::vec
     std::vector<double> r;
     std::vector<std::vector<double>> s(sens.size());
     Stack st;
+    for (const auto& in : pr.inputs) {
+        st.batchFromStart.push_back(in.mechanismsFromStart ? 1 : 0);
+    }
     for (std::size_t b = 0; b < batches.size(); ++b) {
         if (!sims[b]) {
             continue;

@@ -129,6 +129,12 @@ struct DiscoveryOptions {
     /// batches are taken in the order given (chronological: file names, a historian's times).
     /// false: every batch judged, as before 2026-11-28 (afternoon).
     bool judgeFromChangeOn = true;
+    /// Against a reference, once a detector has found a change point: a batch after the one it
+    /// lies in whose first minutes (before the onset time) already read changed is taken as
+    /// changed from its start (physics::LineInputs::mechanismsFromStart): a fault that began
+    /// 20 min into B03 and was not repaired is in B04 from its first minute. false: t_onset from
+    /// every batch's start, as before 2026-11-29.
+    bool changeGoesOnIntoLaterBatches = true;
     /// Against a reference period: a new batch whose typical value of an input lies outside what
     /// the reference saw (its 0.5-99.5 % range widened by a quarter of the span: a winter batch
     /// against summer runs) has no normal level to be compared with; both detectors judge only
@@ -452,6 +458,9 @@ struct DiscoveryResult {
     /// Against a reference: the batches left out of the causes' judgement because they lie wholly
     /// before the change point (DiscoveryOptions::judgeFromChangeOn), in their order.
     std::vector<std::string> batchesBeforeChange;
+    /// Against a reference: the batches after the one the change began in, taken as changed from
+    /// their start (DiscoveryOptions::changeGoesOnIntoLaterBatches), in their order.
+    std::vector<std::string> batchesChangedFromStart;
     ChangeDetection detection;
     Ending ending;
 };

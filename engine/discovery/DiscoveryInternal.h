@@ -55,6 +55,13 @@ struct Stack {
     std::vector<int> row;      ///< per entry: position of its row in the batch's subset
     std::vector<int> channel;  ///< per entry
     std::vector<double> timeS; ///< per entry: time since its batch started [s]
+    /// Per batch: its mechanisms act from its start whatever the onset (LineInputs::mechanismsFromStart).
+    std::vector<char> batchFromStart;
+    /// @brief Time since a cause acting from @p onsetS began at entry @p i [s]; < 0 before it.
+    double sinceOnsetS(std::size_t i, double onsetS) const {
+        const auto b = static_cast<std::size_t>(batch[i]);
+        return timeS[i] - (b < batchFromStart.size() && batchFromStart[b] ? 0.0 : onsetS);
+    }
 };
 
 /// An onset (time since each batch's start): where a cause starts to act, with its profile

@@ -87,6 +87,12 @@ std::string judgedFromChangeOn(const std::vector<std::string>& before, const std
            commaList(before) + " before it ran as the reference did";
 }
 
+std::string changeGoesOnFromStart(const std::vector<std::string>& batches) {
+    return "the change goes on from the start of " + commaList(batches) +
+           " (the monitor reads them changed before the onset time too): the causes act there from the "
+           "batch's start";
+}
+
 std::string measuredInOnePeriodOnly(const std::string& column, bool inData) {
     return column + " is measured in " +
            (inData ? "the data but not in every batch of the reference period"

@@ -46,6 +46,9 @@ std::string aboutReferenceFiles(const std::string& note);
 /// The causes judged on the batches from @p firstJudged on; @p before lie wholly before the change
 /// point of DryTwin's monitor (DiscoveryOptions::judgeFromChangeOn).
 std::string judgedFromChangeOn(const std::vector<std::string>& before, const std::string& firstJudged);
+/// The batches after the one a change began in, taken as changed from their start
+/// (DiscoveryOptions::changeGoesOnIntoLaterBatches).
+std::string changeGoesOnFromStart(const std::vector<std::string>& batches);
 
 /// The fixed starts of the forms above that carry a value after them.
 inline constexpr const char* kOnlyCausesAsked = "only the causes asked were tried: ";

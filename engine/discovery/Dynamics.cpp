@@ -46,7 +46,7 @@ Onset findOnset(const Stack& st, const std::vector<int>& nuisance, int cand) {
     const auto reductionFrom = [&](double onset) {
         Eigen::VectorXd c = st.s.col(cand);
         for (Eigen::Index i = 0; i < n; ++i) {
-            if (st.timeS[static_cast<std::size_t>(i)] < onset) {
+            if (st.sinceOnsetS(static_cast<std::size_t>(i), onset) < 0) {
                 c(i) = 0;
             }
         }
@@ -138,10 +138,11 @@ ChannelLag lagOnChannel(const Problem& pr, const std::vector<physics::Simulation
     std::vector<std::size_t> batchOf;
     for (std::size_t b = 0; b < batches.size(); ++b) {
         const auto& bt = batches[b];
+        const double batchFromS = pr.inputs[b].onsetS(fromS); // 0 where the change goes on from the start
         std::vector<double> t, obs, pred;
         for (std::size_t k = pr.train[b].begin; k < pr.train[b].end; ++k) {
             double o = 0, p = 0, f = 1;
-            if (bt.timeS[k] - bt.timeS.front() >= fromS && channelAt(bt, sims[b], k, k, channel, o, p, f)) {
+            if (bt.timeS[k] - bt.timeS.front() >= batchFromS && channelAt(bt, sims[b], k, k, channel, o, p, f)) {
                 t.push_back(bt.timeS[k]);
                 obs.push_back(o);
                 pred.push_back(p);

@@ -475,6 +475,53 @@ std::size_t firstBatchOfChange(const monitoring::Detection& d) {
     return static_cast<std::size_t>(first);
 }
 
+/// The batches after the one a change began in that read changed from their start: a fault that
+/// began 20 min into B03 and was not repaired is in B04 from its first minute, while t_onset
+/// counts from each batch's start. A batch reads so when the deciding statistic's mean over its
+/// windows that end before the onset time is above the reference's (0) and at least half its mean
+/// after that time: the rule firstBatchOfChange uses for a batch that ran as the reference did,
+/// turned round. A change that recurs at the same minute of every batch (a shift's routine, the
+/// study's onsets) leaves those first minutes at the reference's level and keeps its onset there.
+/// Indices are the runs' in the judged order (the new data's batches).
+std::vector<std::size_t> batchesChangedFromStart(const monitoring::Detection& d) {
+    std::vector<std::size_t> out;
+    if (!d.changed || !d.hasOnset || d.onsetWindow < 0 ||
+        static_cast<std::size_t>(d.onsetWindow) >= d.series.size() || d.onsetS <= 0) {
+        return out;
+    }
+    const int onsetRun = d.series[static_cast<std::size_t>(d.onsetWindow)].runIndex;
+    const bool bySpe = d.statistic == "SPE";
+    struct Means {
+        double before = 0, after = 0;
+        int nBefore = 0, nAfter = 0;
+    };
+    std::map<int, Means> runs;
+    for (const auto& pt : d.series) {
+        const double z = bySpe ? pt.zSpe : pt.zT2;
+        if (pt.runIndex <= onsetRun || !std::isfinite(z)) {
+            continue;
+        }
+        auto& m = runs[pt.runIndex];
+        if (pt.timeS <= d.onsetS) {
+            m.before += z;
+            ++m.nBefore;
+        } else {
+            m.after += z;
+            ++m.nAfter;
+        }
+    }
+    for (const auto& [run, m] : runs) {
+        if (m.nBefore == 0 || m.nAfter == 0) {
+            continue; // nothing before the onset time to tell by, or nothing after
+        }
+        const double before = m.before / m.nBefore, after = m.after / m.nAfter;
+        if (before > 0 && before >= 0.5 * after) {
+            out.push_back(static_cast<std::size_t>(run));
+        }
+    }
+    return out;
+}
+
 } // namespace
 
 Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& reference,
@@ -643,6 +690,22 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     if (!prepared) {
         return prepared.error();
     }
+    // A change that began during a batch and went on acts from the start of the batches after it.
+    std::vector<std::string> changedFromStart;
+    if (options.changeGoesOnIntoLaterBatches) {
+        for (const auto* d : {&detection->drytwin, &detection->pca}) {
+            if (!d->changed || !d->hasOnset) {
+                continue;
+            }
+            for (const std::size_t run : batchesChangedFromStart(*d)) {
+                if (run >= firstJudged && run < batches.size() && run - firstJudged < prepared->pr.inputs.size()) {
+                    prepared->pr.inputs[run - firstJudged].mechanismsFromStart = true;
+                    changedFromStart.push_back(batches[run].id);
+                }
+            }
+            break; // the detector whose change point the causes' onset is taken from
+        }
+    }
     prepared->pr.reference = &ref;
     const Problem& pr = prepared->pr;
     const CauseFit refit = makeCauseFit(judged, pr, progress, fraction);
@@ -690,6 +753,10 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
         }
         result.notes.push_back(
             notes::judgedFromChangeOn(result.batchesBeforeChange, batches[firstJudged].id));
+    }
+    if (!changedFromStart.empty()) {
+        result.batchesChangedFromStart = changedFromStart;
+        result.notes.push_back(notes::changeGoesOnFromStart(changedFromStart));
     }
     result.trainingRows = prepared->keptTrain;
     result.heldOutRows = prepared->keptTest;

@@ -146,8 +146,10 @@ Constancy constancyWithinBatch(const Stack& atFit, const std::vector<int>& nuisa
     std::vector<int> half(atFit.batch.size(), -1); // -1: before the onset, where the cause is 0
     for (std::size_t i = 0; i < half.size(); ++i) {
         const double end = span[atFit.batch[i]];
-        if (atFit.timeS[i] >= from && end > from) {
-            half[i] = atFit.timeS[i] < 0.5 * (from + end) ? 0 : 1;
+        // A batch the change goes on into acts from its start (Stack::batchFromStart).
+        const double batchFrom = atFit.timeS[i] - atFit.sinceOnsetS(i, from);
+        if (atFit.timeS[i] >= batchFrom && end > batchFrom) {
+            half[i] = atFit.timeS[i] < 0.5 * (batchFrom + end) ? 0 : 1;
         }
     }
     const Eigen::VectorXd sc = projectedColumn(atFit, nuisance, cand);

@@ -513,6 +513,8 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
             {"path", r.referencePath}, {"batches", r.referenceBatches}, {"rows", r.referenceRows}};
         // The judged data's batches left out of the causes' fits: wholly before the change point.
         j["batches_before_change"] = r.batchesBeforeChange;
+        // ... and the batches after the one the change began in, where it acts from their start.
+        j["batches_changed_from_start"] = r.batchesChangedFromStart;
         const auto& d = r.detection;
         j["detection"] = {{"changed", d.changed},
                           {"statistic", "run-level GLR of a mean shift in the window means of log T² and log "

@@ -24,6 +24,14 @@ struct LineInputs {
     std::string batchId;        ///< for messages: the batch the series come from ("" when made in code)
     std::string sourcePath;     ///< its file
     std::vector<int> lineOfRow; ///< the file line of each sample (empty when not known)
+    /// The model's mechanisms act from this batch's start whatever t_onset says: a later batch of
+    /// a change that began during an earlier one and went on (discovery against a reference sets
+    /// it where the monitor sees the batch changed from its start). t_onset is counted from each
+    /// batch's start, so without it a fault that began 20 min into B03 would be taken to start
+    /// 20 min into B04 as well.
+    bool mechanismsFromStart = false;
+    /// @brief t_onset as this batch's mechanisms see it [s since its start]: 0 when they act from its start.
+    double onsetS(double tOnsetS) const { return mechanismsFromStart ? 0.0 : tOnsetS; }
 
     std::size_t size() const { return timeS.size(); }
     /// @brief Equal lengths, ≥ 2 samples, strictly increasing time, finite physical values. An

@@ -168,7 +168,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(DiscoveryResult, verdict, residu
                                                 rounds, findings, unexplained, bounds, baseParameters,
                                                 parameters, trainingRows, heldOutRows, notes, hasReference,
                                                 referencePath, referenceBatches, referenceRows,
-                                                batchesBeforeChange, detection, ending)
+                                                batchesBeforeChange, batchesChangedFromStart, detection,
+                                                ending)
 } // namespace discovery
 
 namespace control {

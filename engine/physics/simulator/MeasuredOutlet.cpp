@@ -112,7 +112,7 @@ Expected<SimulationResult> simulateMeasured(const LineInputs& measured, const Pa
     const double tauMeter = params[Param::tau_meter];
     const double tauMix = params[Param::tau_mix];
     const double offsetPct = params[Param::X_meter_offset];
-    const double onsetS = in.timeS.front() + params[Param::t_onset];
+    const double onsetS = in.timeS.front() + in.onsetS(params[Param::t_onset]);
     const auto wants = [&](Param q) {
         return std::find(outputSens.begin(), outputSens.end(), q) != outputSens.end();
     };

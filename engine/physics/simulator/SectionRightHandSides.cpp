@@ -152,7 +152,7 @@ bool tubeEval(const void* c, double s, std::size_t first, std::size_t count, con
             double xEntry[kMaxLanes] = {};
             double tEntry[kMaxLanes] = {};
             double fallingLane[kMaxLanes] = {};
-            const double onset = p[Param::t_onset];
+            const double onset = x.in->onsetS(p[Param::t_onset]);
             for (int lane = 0; lane < l.width; ++lane) {
                 const std::size_t parcel = l.parcel + static_cast<std::size_t>(lane);
                 const SamplePoint where = x.locate(parcel, s);
@@ -235,7 +235,7 @@ bool conveyorEval(const void* c, double s, std::size_t first, std::size_t count,
                                  // ambient_reabsorption, from its onset on (with none, also for the
                                  // parcels that entered before the batch started, as the tube's
                                  // mechanisms)
-                                 const double onset = p[Param::t_onset];
+                                 const double onset = x.in->onsetS(p[Param::t_onset]);
                                  double active[kMaxLanes] = {};
                                  for (int lane = 0; lane < l.width; ++lane) {
                                      const std::size_t parcel = l.parcel + static_cast<std::size_t>(lane);

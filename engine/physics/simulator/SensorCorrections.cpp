@@ -51,7 +51,7 @@ std::optional<LineInputs> correctedInputs(const LineInputs& in, const ParameterS
     if (offsetPct == 0 && hotLagS == 0 && scatterShare == 0) {
         return std::nullopt;
     }
-    const double onset = in.timeS.front() + p[Param::t_onset];
+    const double onset = in.timeS.front() + in.onsetS(p[Param::t_onset]);
     LineInputs out = in;
     if (scatterShare > 0) { // inlet_moisture_sensor_noise: remove that share of the fast variation
         // Throughout, not from the onset: the share is the gauge's normal scatter, fitted with h_HDT
