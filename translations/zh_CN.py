@@ -8,6 +8,8 @@ import re
 import sys
 
 ZH = {
+    "It goes on from the start of %1.": "它从 %1 的开始起持续存在。",
+    "The change goes on from the start of %1 (the monitor reads them changed before the onset time too): the causes act there from the batch's start.": "变化从 %1 的开始起持续（监测器在起始时间之前也判定这些批次已变化）：原因在这些批次中从批次开始起作用。",
     "Gain on the held-out part, with every named cause (each finding's own gain is in its evidence):": "留出部分的改进（含所有已指认的原因；每项发现各自的改进见其证据）：",
     "missing time; the time index must be complete": "缺少时间；时间列必须完整",
     "the file has a header but no data rows": "文件有表头，但没有数据行",

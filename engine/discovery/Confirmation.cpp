@@ -87,6 +87,13 @@ Expected<Confirmation> confirmCandidate(const ConfirmationInput& in) {
     f.onsetS = in.onset.s;
     f.onsetLowS = in.onset.lowS;
     f.onsetHighS = in.onset.highS;
+    if (f.hasOnset) {
+        for (std::size_t b = 0; b < in.pr.inputs.size(); ++b) {
+            if (in.pr.inputs[b].mechanismsFromStart) {
+                f.actsFromStartOf.push_back((*in.pr.batches)[b].id);
+            }
+        }
+    }
     out.finding = std::move(f);
     out.held = std::move(*afterHeld);
     return out;

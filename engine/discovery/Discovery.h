@@ -326,6 +326,9 @@ struct Finding {
     /// profile interval (hasOnset false: from the start).
     bool hasOnset = false;
     double onsetS = 0, onsetLowS = 0, onsetHighS = 0;
+    /// With an onset, the batches it acts in from their start instead: a change that began in an
+    /// earlier batch and went on (DiscoveryOptions::changeGoesOnIntoLaterBatches).
+    std::vector<std::string> actsFromStartOf;
     /// Look-alikes: where one is not ruled out, the finding names the group, not one member.
     std::string group; ///< "" when the cause stands alone; else the group's name
     std::vector<LookAlike> lookAlikes;

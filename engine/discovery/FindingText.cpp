@@ -1,5 +1,6 @@
 // Question 4's wording: the findings' sentences, in the engine's English (the GUI words them
 // in its own language from the numbers).
+#include "common/TextList.h"
 #include "discovery/DiscoveryInternal.h"
 
 #include <algorithm>
@@ -149,6 +150,9 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
     if (f.hasOnset) {
         text += format(" It starts %.0f min into the batch (95 %% interval %.0f-%.0f min).", f.onsetS / 60,
                        f.onsetLowS / 60, f.onsetHighS / 60);
+        if (!f.actsFromStartOf.empty()) {
+            text += " It goes on from the start of " + commaList(f.actsFromStartOf) + ".";
+        }
     }
     for (const auto& l : f.lookAlikes) {
         if (l.namedAfter) {

@@ -492,6 +492,9 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
         if (f.hasOnset) {
             out["onset_s"] = num(f.onsetS);
             out["onset_ci95"] = {num(f.onsetLowS), num(f.onsetHighS)};
+            if (!f.actsFromStartOf.empty()) { // a change that went on: from these batches' start
+                out["acts_from_start_of"] = f.actsFromStartOf;
+            }
         }
         if (f.hasReference) { // CONTRACT.md §3: the finding is a change from the reference's value
             out["parameter"]["reference_value"] = num(f.referenceValue);

@@ -148,7 +148,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(LookAlike, cause, parameter, val
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(
     Finding, cause, parameter, value, ci95Low, ci95High, explainedFraction, explainedFractionFast,
     fastPartCounted, output, biasBefore, trendPerHourBefore, evidence, gain, perPart, consistent,
-    transferChecked, transferReduction, hasOnset, onsetS, onsetLowS, onsetHighS, group, lookAlikes, tellApart,
+    transferChecked, transferReduction, hasOnset, onsetS, onsetLowS, onsetHighS, actsFromStartOf, group, lookAlikes, tellApart,
     restated, valueWhenNamed, ci95LowWhenNamed, ci95HighWhenNamed, hasReference, referenceValue,
     referenceCi95Low, referenceCi95High, responseJudged, responseScale)
 // A result judged against a reference comes back with its detection and reference values, so that

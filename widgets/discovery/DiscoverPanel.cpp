@@ -536,6 +536,15 @@ QString DiscoverPanel::noteText(const std::string& note) {
                   "ran as the reference did.")
             .arg(m.captured(1), m.captured(2));
     }
+    // ReferenceDiscovery.cpp: the batches a change that began mid-batch goes on into.
+    static const QRegularExpression goesOn(QStringLiteral(
+        "^the change goes on from the start of (.+) \\(the monitor reads them changed before the onset time "
+        "too\\): the causes act there from the batch's start$"));
+    if (const auto m = goesOn.match(n); m.hasMatch()) {
+        return tr("The change goes on from the start of %1 (the monitor reads them changed before the "
+                  "onset time too): the causes act there from the batch's start.")
+            .arg(m.captured(1));
+    }
     if (starts("the reference holds ") && !numbers().isEmpty()) {
         return tr("The reference holds %1 batch(es): a period's normal spread comes from thirds of "
                   "them, which share their day and weather; a change named here may be a "
@@ -650,6 +659,13 @@ QString DiscoverPanel::specificityText(const discovery::Finding& f) {
                      .arg(f.onsetS / 60, 0, 'f', 0)
                      .arg(f.onsetLowS / 60, 0, 'f', 0)
                      .arg(f.onsetHighS / 60, 0, 'f', 0);
+        if (!f.actsFromStartOf.empty()) {
+            QStringList batches;
+            for (const auto& b : f.actsFromStartOf) {
+                batches << QString::fromStdString(b);
+            }
+            parts << tr("It goes on from the start of %1.").arg(batches.join(QStringLiteral(", ")));
+        }
     }
     for (const auto& l : f.lookAlikes) {
         if (l.namedAfter) {
