@@ -186,7 +186,7 @@ private Q_SLOTS:
         QCOMPARE(batchSeriesTitleFeed(), QString::fromUtf8("进料 [kg/h]"));
         Workbench wb;
         DataPanel data(wb);
-        QCOMPARE(data.plots()->yTitle(1), QString::fromUtf8("进料 [kg/h]"));
+        QCOMPARE(data.plots()->yTitle(4), QString::fromUtf8("进料 [kg/h]"));
 
         // An engine reason with no code of its own, as a data file's shape or an empty folder gives
         // it, in Chinese with its numbers (the review's window showed them in English).

@@ -504,8 +504,11 @@ private Q_SLOTS:
         for (int i = 0; i < dataPlots->plotCount(); ++i) {
             QCOMPARE(dataPlots->curveCount(i), 1);
         }
+        // The product's outlet on top, where a newcomer looks first (it was seventh of eight).
+        QVERIFY(dataPlots->yTitle(0).startsWith(QStringLiteral("X_out")));
+        QVERIFY(dataPlots->yTitle(1).startsWith(QStringLiteral("T_out")));
         w.dataPanel()->selectBatches({0, 1});
-        QCOMPARE(dataPlots->curveCount(6), 2); // overlaid
+        QCOMPARE(dataPlots->curveCount(0), 2); // overlaid
         // Measuring cursors: the readout gives the difference between them.
         dataPlots->setMeasuringCursor(0, 100);
         dataPlots->setMeasuringCursor(1, 400);

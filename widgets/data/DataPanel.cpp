@@ -9,6 +9,7 @@
 #include "data/ColumnMappingDialog.h"
 
 #include <QComboBox>
+#include <iterator>
 #include <QDateTime>
 #include <QDir>
 #include <QDragEnterEvent>
@@ -30,6 +31,15 @@
 
 namespace drytwin::widgets {
 
+namespace {
+
+/// The plots top to bottom: the product's outlet first, what an engineer opens the file to see
+/// (a newcomer's review found X_out and T_out below the fold at 1280 × 800, under six inputs),
+/// then the tube outlet, then the inputs in batchSeries()'s order.
+constexpr std::size_t kPlotOrder[] = {kSeriesXOut, kSeriesTOut, kSeriesXHdt, 0, 1, 2, 3, 4};
+
+} // namespace
+
 DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_workbench(workbench) {
     setAcceptDrops(true);
     auto* openFile = new QPushButton(tr("Open file…"));
@@ -45,8 +55,10 @@ DataPanel::DataPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_plots = new PlotStack;
-    for (const auto& s : batchSeries()) {
-        m_plots->addPlot(s.title);
+    const auto series = batchSeries();
+    static_assert(std::size(kPlotOrder) == 8, "one plot per batch series");
+    for (const std::size_t s : kPlotOrder) {
+        m_plots->addPlot(series[s].title);
     }
     auto* left = new QWidget;
     auto* leftLayout = new QVBoxLayout(left);
@@ -279,6 +291,7 @@ void DataPanel::redraw() {
     std::sort(rows.begin(), rows.end());
     m_plots->clearCurves();
     const bool sequential = m_arrangement->currentIndex() == 1;
+    const auto series = batchSeries();
     double offset = 0;
     for (int n = 0; n < rows.size(); ++n) {
         if (rows[n] < 0 || static_cast<std::size_t>(rows[n]) >= si.size()) {
@@ -293,9 +306,9 @@ void DataPanel::redraw() {
             offset = t.isEmpty() ? offset : t.back() + 1;
         }
         const QColor colour = seriesColour(n);
-        for (std::size_t s = 0; s < batchSeries().size(); ++s) {
-            m_plots->addCurve(static_cast<int>(s), QString::fromStdString(b.id), t,
-                              valuesOf(b, batchSeries()[s]), colour);
+        for (std::size_t plot = 0; plot < std::size(kPlotOrder); ++plot) {
+            m_plots->addCurve(static_cast<int>(plot), QString::fromStdString(b.id), t,
+                              valuesOf(b, series[kPlotOrder[plot]]), colour);
         }
     }
     m_plots->rescale();
