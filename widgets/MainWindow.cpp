@@ -21,6 +21,7 @@
 #include "training/TrainingPanel.h"
 #include "view3d/LineView3D.h"
 
+#include <QFile>
 #include <QCloseEvent>
 #include <QDir>
 #include <QGuiApplication>
@@ -159,7 +160,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 }
 
 // The job runner's destructor cancels every job and waits for the engine thread.
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    if (!m_languageTempProject.isEmpty()) {
+        for (const char* suffix : {"", ".model.json", ".results.json"}) {
+            QFile::remove(m_languageTempProject + QLatin1String(suffix));
+        }
+    }
+}
 
 void MainWindow::closeEvent(QCloseEvent* event) {
     // Closing mid-run cancels cleanly: the running job is told to stop, queued ones never start.

@@ -151,6 +151,9 @@ private:
     QPushButton* m_mapButton = nullptr;
     QString m_mapFile;
     QString m_projectPath;
+    /// The temporary project this window was opened from when the language changed (its model
+    /// and results beside it): removed with the window, which reads them until it is closed.
+    QString m_languageTempProject;
     JobId m_progressJob = 0;
     QString m_lastStatus;            ///< the Workbench's last status line
     bool m_statusIsProgress = false; ///< the status line shows a job's progress

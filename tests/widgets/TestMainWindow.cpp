@@ -1077,7 +1077,14 @@ private Q_SLOTS:
         QCOMPARE(en->dataPanel()->batchTable()->rowCount(), 2);
         delete en;
         delete w;
-        QCoreApplication::processEvents(); // the Chinese window was deleted later
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete); // the Chinese window
+        // Each change went through a temporary project in the temp folder: gone with its window
+        // (they were left behind, three files a change, before 2026-11-28).
+        const QString pid = QString::number(QCoreApplication::applicationPid());
+        const QStringList left = QDir(QStandardPaths::writableLocation(QStandardPaths::TempLocation))
+                                     .entryList({QStringLiteral("drytwin-language-%1.*").arg(pid),
+                                                 QStringLiteral("drytwin-language-%1-*").arg(pid)});
+        QVERIFY2(left.isEmpty(), qPrintable(left.join(QStringLiteral(", "))));
     }
 
     // Story 6: a running action's button is disabled (a second click queues nothing), the panel

@@ -59,7 +59,11 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
     const QString savedMessage = tr("Project saved to %1 (model, results and view)").arg(path);
     QString modelPath = m_workbench.modelPath();
     bool modelQueued = false;
-    if (modelPath.isEmpty() || m_workbench.model().calibration || m_workbench.model().hasResidualModels()) {
+    // A model read from the language change's temporary project goes with that project: copied too.
+    const bool fromLanguageTemp =
+        !m_languageTempProject.isEmpty() && modelPath == m_languageTempProject + QStringLiteral(".model.json");
+    if (modelPath.isEmpty() || fromLanguageTemp || m_workbench.model().calibration ||
+        m_workbench.model().hasResidualModels()) {
         // The session's model as it is now, beside the project.
         // The session writes it (atomically) on the engine thread, queued before anything else the
         // user starts; a project whose model file is missing opens with the data alone.
@@ -261,9 +265,13 @@ MainWindow* MainWindow::reopenInLanguage(const QString& language, QString* error
         }
         return nullptr;
     }
-    const QString temp =
-        QDir(QStandardPaths::writableLocation(QStandardPaths::TempLocation))
-            .filePath(QStringLiteral("drytwin-language-%1.drytwin").arg(QCoreApplication::applicationPid()));
+    // One name per change: the window opened from it removes it when it closes (each window
+    // its own, so that a second change cannot remove what the window before still reads).
+    static int changes = 0;
+    const QString temp = QDir(QStandardPaths::writableLocation(QStandardPaths::TempLocation))
+                             .filePath(QStringLiteral("drytwin-language-%1-%2.drytwin")
+                                           .arg(QCoreApplication::applicationPid())
+                                           .arg(++changes));
     if (!saveProject(temp, error, false)) {
         return nullptr;
     }
@@ -279,6 +287,7 @@ MainWindow* MainWindow::reopenInLanguage(const QString& language, QString* error
     next->setAttribute(Qt::WA_DeleteOnClose);
     next->restoreGeometry(saveGeometry());
     next->m_projectPath = m_projectPath;
+    next->m_languageTempProject = temp;
     if (!next->openProject(temp, error, false)) {
         delete next;
         return nullptr;
