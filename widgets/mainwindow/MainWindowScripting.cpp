@@ -13,6 +13,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QTabWidget>
+#include <QTimer>
 #include <utility>
 
 namespace drytwin::widgets {
@@ -26,7 +27,22 @@ void MainWindow::runAfterLoad(const QStringList& actions) {
 
 void MainWindow::startActions() {
     // Each is queued on the engine thread behind the one before; the panels show the results.
-    for (const auto& a : std::exchange(m_pendingActions, {})) {
+    // The what-if run takes its controllers from what the panel offers when it starts: with a
+    // model still being opened (--model, a project) or learnt, it waits until the engine is idle,
+    // and the actions after it with it (`--model M --run mpc` ran the physics model and the PI
+    // loop alone: the learnt ones were not in yet).
+    const QStringList actions = std::exchange(m_pendingActions, {});
+    for (int i = 0; i < actions.size(); ++i) {
+        const QString& a = actions[i];
+        if (a == QLatin1String("mpc") && m_workbench.jobs().busy()) {
+            m_pendingActions = actions.mid(i);
+            QTimer::singleShot(100, this, [this] {
+                if (m_workbench.hasData()) {
+                    startActions();
+                }
+            });
+            return;
+        }
         if (a == QLatin1String("calibrate")) {
             m_calibration->run(); // the panel simulates with the new parameters when it ends
         } else if (a == QLatin1String("train")) {

@@ -18,6 +18,7 @@
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <algorithm>
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -119,6 +120,8 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     ll->addWidget(m_note);
     ll->addWidget(m_table, 1);
     fitTableHeight(m_table, 5); // a row per controller; the form above scrolls instead
+    m_table->setWordWrap(true);
+    m_table->setTextElideMode(Qt::ElideNone);
     auto* split = new QSplitter;
     split->addWidget(left);
     split->addWidget(m_plots);
@@ -338,6 +341,7 @@ void MpcPanel::show() {
                            : QStringLiteral("–"),
             run.ran && !pi ? QString::number(m.gainPctPerKMedian, 'f', 4) : QStringLiteral("–")};
         setTableRow(m_table, row, cells);
+        m_table->item(row, 0)->setToolTip(cells.front());
         if (!run.ran) {
             continue;
         }
@@ -378,6 +382,19 @@ void MpcPanel::show() {
         }
     }
     fitTableWidth(m_table);
+    // The controllers' names are long ("Physics + learnt correction (PGRL-CC)"): wrapped on two
+    // lines in a column half their width, not cut to "Physics + learnt …" beside six numbers in
+    // the left half of a 1280-pixel window (a newcomer's review).
+    int widest = 0;
+    for (int r = 0; r < m_table->rowCount(); ++r) {
+        widest = std::max(widest, m_table->fontMetrics().horizontalAdvance(m_table->item(r, 0)->text()));
+    }
+    const int nameWidth = widest / 2 + 3 * m_table->fontMetrics().averageCharWidth();
+    if (widest > 0 && nameWidth < m_table->columnWidth(0)) {
+        m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Interactive);
+        m_table->setColumnWidth(0, nameWidth);
+        m_table->resizeRowsToContents();
+    }
     m_plots->rescale();
     m_plots->setTimeCursor(at > 0 ? at : NAN);
     m_note->setText(
