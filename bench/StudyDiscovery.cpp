@@ -6,8 +6,9 @@
 // Run: build/bench/study_discovery [--quick] [--plant distributed|lumped] [--sensors realistic|ideal|default]
 //      [--part mechanisms|nulls|onsets|batch-change (with --reference: each mechanism from the third of four
 //      batches, seeds FIRST+200; in "all" too)|mid-batch-change (with --reference: from 8-28 min into the
-//      third of four batches and the whole fourth; only when asked)] [--onset-in-every-batch (with --reference:
-//      t_onset from every batch's start, no batch taken as changed from its start; before 2026-11-29)]
+//      third of four batches and the whole fourth; only when asked)] [--onset-in-every-batch (with
+//      --reference: t_onset from every batch's start, no batch taken as changed from its start; before
+//      2026-11-29)]
 //      [--judge-every-batch (with --reference: no batch left out
 //      before the change point, as before 2026-11-28)] [--mechanism NAME (e.g. moisture_meter_lag)]
 //      [--verbose]
@@ -55,7 +56,7 @@ struct Outcome {
     double seconds = 0;
     bool hasOnset = false;
     double onsetS = 0;
-    double value = 0; ///< the first finding's fitted value
+    double value = 0;                            ///< the first finding's fitted value
     bool drytwinFlags = false, pcaFlags = false; ///< --reference: each detector's run-level decision
     std::string leftOut; ///< --reference: the batches left out as wholly before the change
 };
@@ -328,9 +329,8 @@ int main(int argc, char** argv) {
                       : next == "ideal"   ? plant::SensorMode::Ideal
                                           : plant::SensorMode::Default;
             ++i;
-        } else if (a == "--part" &&
-                   (next == "mechanisms" || next == "nulls" || next == "onsets" || next == "batch-change" ||
-                    next == "mid-batch-change")) {
+        } else if (a == "--part" && (next == "mechanisms" || next == "nulls" || next == "onsets" ||
+                                     next == "batch-change" || next == "mid-batch-change")) {
             part = next;
             ++i;
         } else if (a == "--verbose") {
@@ -391,7 +391,8 @@ int main(int argc, char** argv) {
         } else {
             std::fprintf(
                 stderr, "usage: study_discovery [--quick] [--plant distributed|lumped] "
-                        "[--sensors realistic|ideal|default] [--part mechanisms|nulls|onsets|batch-change|mid-batch-change] "
+                        "[--sensors realistic|ideal|default] [--part "
+                        "mechanisms|nulls|onsets|batch-change|mid-batch-change] "
                         "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
                         "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
                         "[--evaluations N] [--oracle] [--reference] [--reference-batches N] [--no-structure] "
@@ -584,9 +585,10 @@ int main(int argc, char** argv) {
         // The change begins during the third of four batches and goes on in the fourth from its
         // start (not repaired). Each mechanism at its realistic strength, three seeds; the onset
         // between 8 and 28 min into the third batch.
-        std::printf("\n| mechanism (from mid-B03 on) | strength | seed | onset true [min] | named | right first | "
-                    "onset found [min] | value / true | batches left out | detected | s |\n"
-                    "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+        std::printf(
+            "\n| mechanism (from mid-B03 on) | strength | seed | onset true [min] | named | right first | "
+            "onset found [min] | value / true | batches left out | detected | s |\n"
+            "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
         for (const auto& [m, strength, other] : cases) {
             if (!only.empty() && only != plant::info(m).name) {
                 continue;
@@ -606,8 +608,8 @@ int main(int argc, char** argv) {
                 if (out.rightFirst) {
                     midValueError += std::abs(std::log(std::max(ratio, 1e-3)));
                 }
-                std::printf("| %s | %g | %u | %.0f | %s | %s | %s | %s | %s | %s | %.1f |\n", hidden.c_str(), strength,
-                            o.seed, onset / 60, out.named.c_str(),
+                std::printf("| %s | %g | %u | %.0f | %s | %s | %s | %s | %s | %s | %.1f |\n", hidden.c_str(),
+                            strength, o.seed, onset / 60, out.named.c_str(),
                             out.rightFirst ? (out.asGroup ? "yes (group)" : "yes") : "no",
                             out.hasOnset ? std::to_string(out.onsetS / 60).substr(0, 5).c_str() : "-",
                             out.rightFirst ? std::to_string(ratio).substr(0, 5).c_str() : "-",
@@ -648,10 +650,11 @@ int main(int argc, char** argv) {
             changeRight, changeRuns, 100.0 * changeRight / changeRuns, changeLeftOutRight, changeFlagged);
     }
     if (midRuns > 0) {
-        std::printf("From mid-B03 on: hidden cause named first %d of %d (%.0f %%), with the onset within 5 min "
-                    "%d; mean |log(value / true)| of the right ones %.3f.\n",
-                    midRight, midRuns, 100.0 * midRight / midRuns, midOnsetClose,
-                    midRight > 0 ? midValueError / midRight : 0.0);
+        std::printf(
+            "From mid-B03 on: hidden cause named first %d of %d (%.0f %%), with the onset within 5 min "
+            "%d; mean |log(value / true)| of the right ones %.3f.\n",
+            midRight, midRuns, 100.0 * midRight / midRuns, midOnsetClose,
+            midRight > 0 ? midValueError / midRight : 0.0);
     }
     if (onsetRuns > 0) {
         std::printf("Onsets named with the onset within %d min: %d of %d (%.0f %%).\n",

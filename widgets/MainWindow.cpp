@@ -21,9 +21,9 @@
 #include "training/TrainingPanel.h"
 #include "view3d/LineView3D.h"
 
-#include <QFile>
 #include <QCloseEvent>
 #include <QDir>
+#include <QFile>
 #include <QGuiApplication>
 #include <QIcon>
 #include <QLabel>

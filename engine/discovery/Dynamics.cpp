@@ -142,7 +142,8 @@ ChannelLag lagOnChannel(const Problem& pr, const std::vector<physics::Simulation
         std::vector<double> t, obs, pred;
         for (std::size_t k = pr.train[b].begin; k < pr.train[b].end; ++k) {
             double o = 0, p = 0, f = 1;
-            if (bt.timeS[k] - bt.timeS.front() >= batchFromS && channelAt(bt, sims[b], k, k, channel, o, p, f)) {
+            if (bt.timeS[k] - bt.timeS.front() >= batchFromS &&
+                channelAt(bt, sims[b], k, k, channel, o, p, f)) {
                 t.push_back(bt.timeS[k]);
                 obs.push_back(o);
                 pred.push_back(p);

@@ -708,7 +708,8 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
                 continue;
             }
             for (const std::size_t run : batchesChangedFromStart(*d, firstJudged)) {
-                if (run >= firstJudged && run < batches.size() && run - firstJudged < prepared->pr.inputs.size()) {
+                if (run >= firstJudged && run < batches.size() &&
+                    run - firstJudged < prepared->pr.inputs.size()) {
                     prepared->pr.inputs[run - firstJudged].mechanismsFromStart = true;
                     changedFromStart.push_back(batches[run].id);
                 }

@@ -9,7 +9,6 @@
 #include "data/ColumnMappingDialog.h"
 
 #include <QComboBox>
-#include <iterator>
 #include <QDateTime>
 #include <QDir>
 #include <QDragEnterEvent>
@@ -28,6 +27,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <cmath>
+#include <iterator>
 
 namespace drytwin::widgets {
 

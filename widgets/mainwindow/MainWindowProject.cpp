@@ -60,8 +60,8 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
     QString modelPath = m_workbench.modelPath();
     bool modelQueued = false;
     // A model read from the language change's temporary project goes with that project: copied too.
-    const bool fromLanguageTemp =
-        !m_languageTempProject.isEmpty() && modelPath == m_languageTempProject + QStringLiteral(".model.json");
+    const bool fromLanguageTemp = !m_languageTempProject.isEmpty() &&
+                                  modelPath == m_languageTempProject + QStringLiteral(".model.json");
     if (modelPath.isEmpty() || fromLanguageTemp || m_workbench.model().calibration ||
         m_workbench.model().hasResidualModels()) {
         // The session's model as it is now, beside the project.
