@@ -72,42 +72,42 @@
 <context>
     <name>DiscoverPanel</name>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="391"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="397"/>
         <source>compensation</source>
         <translation>相互补偿</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="392"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="398"/>
         <source>inconsistent</source>
         <translation>各批次不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="393"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="399"/>
         <source>not constant</source>
         <translation>批次内不恒定</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="394"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="400"/>
         <source>within normal range</source>
         <translation>在正常范围内</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="395"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="401"/>
         <source>below the floor</source>
         <translation>低于实用下限</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="396"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="402"/>
         <source>no held-out gain</source>
         <translation>留出集无增益</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="397"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="403"/>
         <source>its look-alike</source>
         <translation>是其相似原因</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="398"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="404"/>
         <source>line dynamics</source>
         <translation>产线自身动态</translation>
     </message>
@@ -1477,143 +1477,143 @@
 <context>
     <name>drytwin::widgets::DataPanel</name>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="35"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="45"/>
         <source>Open file…</source>
         <translation>打开文件…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="36"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="46"/>
         <source>Open folder…</source>
         <translation>打开文件夹…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="37"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="47"/>
         <source>Column mapping…</source>
         <translation>列映射…</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="38"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="48"/>
         <source>Files with other column names: map them onto DryTwin&apos;s columns, then load</source>
         <translation>列名不同的文件：先映射到 DryTwin 的列，再加载</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="42"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="52"/>
         <source>Batches overlaid</source>
         <translation>批次叠加</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="42"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="52"/>
         <source>Batches one after another</source>
         <translation>批次首尾相接</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="43"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="53"/>
         <source>Batch</source>
         <translation>批次</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="43"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="53"/>
         <source>Rows</source>
         <translation>行数</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="43"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="53"/>
         <source>Kept</source>
         <translation>保留</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="43"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="53"/>
         <source>Length [min]</source>
         <translation>时长 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="44"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="54"/>
         <source>Mean X_out [% wb]</source>
         <translation>平均 X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="44"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="54"/>
         <source>Mean T_hot [°C]</source>
         <translation>平均 T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="44"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="54"/>
         <source>Source</source>
         <translation>来源</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="57"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="69"/>
         <source>Batches (select several to overlay; drop files here):</source>
         <translation>批次（多选可叠加；可将文件拖放到此处）：</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="76"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="88"/>
         <source>Open batch file</source>
         <translation>打开批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="76"/>
-        <location filename="../widgets/data/DataPanel.cpp" line="89"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="88"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="101"/>
         <source>Batch files (*.csv)</source>
         <translation>批次文件 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="82"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="94"/>
         <source>Open data set folder</source>
         <translation>打开数据集文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="89"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="101"/>
         <source>A batch file with your column names</source>
         <translation>一个使用您的列名的批次文件</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="98"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="110"/>
         <source>Open a data set: File ▸ Open data set folder…, or File ▸ Open the bundled demo</source>
         <translation>请打开数据集：文件 ▸ 打开数据集文件夹…，或 文件 ▸ 打开自带演示数据</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="119"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="131"/>
         <source>Save the column mapping</source>
         <translation>保存列映射</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="120"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="132"/>
         <source>Mappings (*.json)</source>
         <translation>映射 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="131"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="143"/>
         <source>The column mapping could not be saved (%1); the data were not loaded.</source>
         <translation>列映射无法保存（%1）；数据未载入。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="137"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="149"/>
         <source>The column mapping is kept at %1 and in the project when you save it; “Map its columns…” changes it.</source>
         <translation>列映射已保存在 %1，保存项目时也会一并保存；可用“映射其列…”修改。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="195"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="207"/>
         <source>%1, lines %2–%3, from %4, ended by %5</source>
         <translation>%1，第 %2–%3 行，始于 %4，结束原因：%5</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="223"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="235"/>
         <source>Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.</source>
         <translation>清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="236"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="248"/>
         <source>A row may fail more than one rule. The model uses %1 rows: those kept, less the rows where an input was bridged across a dropout.</source>
         <translation>一行可能不满足多条规则。模型使用 %1 行：即保留的行，再去掉输入在掉线处被桥接的行。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="242"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="254"/>
         <source>A transmitter hung (the same reading for a minute or more) on %1 rows: left out, an input bridged like a dropout.</source>
         <translation>有变送器卡死（同一读数持续一分钟以上），涉及 %1 行：这些行不参与拟合，输入按断线同样桥接。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="247"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="259"/>
         <source>Noted while reading (%1):</source>
         <translation>读取时的提示（%1）：</translation>
     </message>
@@ -1745,7 +1745,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="146"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="152"/>
         <source>Extend the model</source>
         <translation>扩展模型</translation>
     </message>
@@ -1766,7 +1766,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="43"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="843"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="849"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
@@ -1787,7 +1787,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="849"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="855"/>
         <source>Score z: how strongly the model&apos;s error points at this cause, in standard deviations of chance; above about 3 is strong evidence.</source>
         <translation>得分 z：模型误差指向该原因的强度，以偶然波动的标准差计；约 3 以上为有力证据。</translation>
     </message>
@@ -1807,7 +1807,6 @@
         <translation>损失：模型加入该原因后拟合的误差；越低拟合越好。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="56"/>
         <source>The held-out part: batches the fit did not see.</source>
         <translation>留出部分：拟合时未使用的批次。</translation>
     </message>
@@ -1842,125 +1841,124 @@
         <translation>单位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="57"/>
         <source>Before: the starting model (as commissioned, or calibrated).</source>
         <translation>之前：起始模型（调试所得或标定后的模型）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="58"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="64"/>
         <source>After: the extended model, every named cause fitted together (a finding&apos;s own sentence gives the gain when that cause was named).</source>
         <translation>之后：扩展后的模型，所有已识别原因一起拟合（各项发现的文字给出识别该原因时的改进）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="62"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="68"/>
         <source>X_out residual [% wb]</source>
         <translation>X_out 残差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="63"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="69"/>
         <source>T_out residual [°C]</source>
         <translation>T_out 残差 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="64"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="98"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="70"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="104"/>
         <source>time, batches one after another [h]</source>
         <translation>时间，批次首尾相接 [h]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="67"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="73"/>
         <source>Compare with a reference period…</source>
         <translation>与参考期比较…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="69"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="75"/>
         <source>Choose batches from a time when the line ran as it should (the weeks after a cleaning, commissioning runs): Discover then says whether, from when and why the loaded data differ</source>
         <translation>选择产线正常运行时期的批次（清洗后的几周、调试运行）：发现功能将说明已加载的数据是否、从何时起以及为何与之不同</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="72"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="78"/>
         <source>A folder of batch files…</source>
         <translation>批次文件所在的文件夹…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="74"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="80"/>
         <source>Reference period: a folder of batch files</source>
         <translation>参考期：批次文件所在的文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="79"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="85"/>
         <source>One batch or historian file…</source>
         <translation>单个批次或历史库文件…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="81"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="87"/>
         <source>Reference period: a batch or historian file</source>
         <translation>参考期：批次或历史库文件</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="82"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="88"/>
         <source>CSV files (*.csv *.txt)</source>
         <translation>CSV 文件 (*.csv *.txt)</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="87"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="93"/>
         <source>No reference: judge the data alone</source>
         <translation>不用参考期：单独判断数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="102"/>
         <source>T² [-]</source>
         <translation>T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="97"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="103"/>
         <source>SPE [-]</source>
         <translation>SPE [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="101"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="107"/>
         <source>Choose a reference period and run Discover to see the monitor</source>
         <translation>选择参考期并运行“发现”以查看监控图</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="103"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="109"/>
         <source>Column</source>
         <translation>列</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="103"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="109"/>
         <source>Share of the change</source>
         <translation>在变化中的占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="103"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="109"/>
         <source>Detector</source>
         <translation>检测器</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="105"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="111"/>
         <source>How much each column contributes to the monitor&apos;s statistic after the onset (reconstruction-based contributions: the column that, put back to normal, removes most of it)</source>
         <translation>起始点之后各列对监控统计量的贡献（基于重构的贡献：将该列恢复正常后消除的部分最多者）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="112"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="118"/>
         <source>Model error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="113"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="119"/>
         <source>Monitor against the reference</source>
         <translation>相对参考期的监控</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="125"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="131"/>
         <source>Candidate causes, first round:</source>
         <translation>候选原因（第一轮）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="127"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="807"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1013"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="133"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="813"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1019"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -1969,42 +1967,42 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="837"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="843"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="161"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="167"/>
         <source>Run Discover to see the physics model&apos;s error over the batches</source>
         <translation>运行发现，可看到物理模型在各批次上的误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="168"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="174"/>
         <source>No reference period: the data are judged alone.</source>
         <translation>无参考期：单独判断数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="169"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="175"/>
         <source>Reference period: %1</source>
         <translation>参考期：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="185"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="191"/>
         <source>%1: &lt;b&gt;changed&lt;/b&gt; (p = %2)</source>
         <translation>%1：&lt;b&gt;已变化&lt;/b&gt;（p = %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="186"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="192"/>
         <source>%1: no change (p = %2)</source>
         <translation>%1：无变化（p = %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="188"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="194"/>
         <source>, first alarm in %1 at %2 min</source>
         <translation>，首次报警于 %1 第 %2 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="193"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="199"/>
         <source>, from %1 at %2 min (95 %: %3 to %4 min)</source>
         <translation>，自 %1 第 %2 分钟起（95 %：%3 至 %4 分钟）</translation>
     </message>
@@ -2017,50 +2015,50 @@
         <translation>DryTwin（各原因的参数）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="241"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="247"/>
         <source>&lt;b&gt;The line has changed since the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;自参考期以来产线已发生变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="248"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="254"/>
         <source>&lt;b&gt;No change against the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;与参考期相比无变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="249"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="255"/>
         <source> Each detector&apos;s false-alarm rate: %1 % per data set.</source>
         <translation> 每个检测器的误报率：每个数据集 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="250"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="256"/>
         <source>DryTwin (the model&apos;s error)</source>
         <translation>DryTwin（模型误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="252"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="258"/>
         <source>Dynamic PCA (the measured columns)</source>
         <translation>动态 PCA（测量列）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="277"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="293"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="283"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="299"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="277"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="293"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="283"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="299"/>
         <source>dynamic PCA</source>
         <translation>动态 PCA</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="279"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="281"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="285"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="287"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="323"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="329"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
@@ -2073,67 +2071,67 @@
         <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="333"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="339"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="337"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="343"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="340"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="346"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="342"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="348"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="346"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="352"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="350"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="356"/>
         <source>a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less</source>
         <translation>干燥管出口与出口水分有相同的稳定偏差，干燥管干燥越少处越大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="353"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="359"/>
         <source>after each hot-air setpoint step the outlet temperature and moisture move before the simulation, which follows the slow reading</source>
         <translation>每次热风设定值阶跃后，出口温度和水分先于仿真变化，仿真跟随的是迟缓的读数</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="356"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="362"/>
         <source>the inlet-moisture reading scatters from second to second while the outlet does not follow it, and the simulated outlet does</source>
         <translation>入口水分读数逐秒跳动，出口并不跟随，而仿真的出口却跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="366"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="372"/>
         <source>a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet temperature&apos;s response as much as the moisture&apos;s, a meter lag delays the moisture reading alone; or grab samples timed against the meter</source>
         <translation>以 1 s 记录一次热风设定值阶跃：输送时间误差使出口温度与水分的响应同样延迟，水分仪滞后只延迟水分读数；或对照水分仪定时取样</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="379"/>
         <source>oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter offset does not</source>
         <translation>在出口对照水分仪、在入口对照入口水分计做烘箱法实验室取样；或增加干燥管出口水分通道（X_hdt）：入口水分计偏差会使其变化，出口水分仪偏差不会</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="380"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="386"/>
         <source>a gas-temperature reading at the tube&apos;s outlet end at two feed rates: wall loss does not change with the feed, gas-phase cooling grows with it</source>
         <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="406"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="412"/>
         <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
         <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="409"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="415"/>
         <source>its size is not consistent across batches or operating regions</source>
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
@@ -2142,62 +2140,62 @@
         <translation type="vanished">偏差在整个批次中读数不变；此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="417"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="423"/>
         <source>its value lies within the reference period&apos;s normal range: not a change</source>
         <translation>其值在参考期的正常范围内：不是变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="420"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="426"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="423"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="429"/>
         <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
         <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="427"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="433"/>
         <source>the outlet channels&apos; timing points to its look-alike (the moisture answers later than the temperature: a meter, not the transport)</source>
         <translation>出口两个通道的时序指向它的相似原因（水分比温度响应更晚：是水分仪，而非输送）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="432"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="438"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="435"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="441"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="500"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="506"/>
         <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
         <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="504"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="510"/>
         <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
         <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="507"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="513"/>
         <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
         <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="511"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="517"/>
         <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
         <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="516"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="522"/>
         <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="441"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="447"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
@@ -2206,62 +2204,62 @@
         <translation type="vanished">误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="456"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="462"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="461"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="467"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="473"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="479"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="480"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="486"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="646"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="652"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="651"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="657"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="651"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="657"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="654"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="660"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="658"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="664"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="683"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="689"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="689"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="695"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="672"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="678"/>
         <source>%1 was named on top of it (a further %2 % of the held-out error): alone it predicts worse (%3 times the held-out error), but the change needs both forms, so the data cannot say which of them it is.</source>
         <translation>在它之上又判定了 %1（再减少留出误差的 %2 %）：单独使用时预测更差（留出误差的 %3 倍），但这一变化需要两种形式共同解释，因此数据无法判断是其中哪一个。</translation>
     </message>
@@ -2274,127 +2272,127 @@
         <translation>DryTwin（各原因的一步估计）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="243"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="249"/>
         <source>&lt;b&gt;A cause has changed since the reference period: %1.&lt;/b&gt; The detectors, judging the data set as a whole, stayed below their limits; fitting the causes found it beyond its normal spread with a gain on held-out data (below). Check it on the plots.</source>
         <translation>&lt;b&gt;自参考期以来有一个原因发生了变化：%1。&lt;/b&gt;检测器对整个数据集的判断未超出其限值；拟合各原因发现它超出正常范围，且在留出数据上有改进（见下）。请在图上核对。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="329"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="335"/>
         <source>the error drifts over each batch, or over the recording from the fouling&apos;s onset, and starts afresh with each new batch</source>
         <translation>误差在每个批次内（或在记录中自结垢开始起）逐渐漂移，每个新批次重新开始</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="400"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="406"/>
         <source>not named</source>
         <translation>未指认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="525"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="531"/>
         <source>%1 was named first, then withdrawn: refitted together with the causes named after it, it is no change of the line (it had taken up what they explain). In detail: %2.</source>
         <translation>%1 先被识别，随后撤回：与之后识别的原因一起重新拟合后，它并非产线的变化（它曾吸收了那些原因所解释的部分）。详情：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="535"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="541"/>
         <source>The causes are judged on the batches from %1 on, where the change began; %2 before it ran as the reference did.</source>
         <translation>原因按从 %1 起的批次判断，变化从那里开始；此前的 %2 与参考期运行一致。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="544"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="550"/>
         <source>The change goes on from the start of %1 (the monitor reads them changed before the onset time too): the causes act there from the batch&apos;s start.</source>
         <translation>变化从 %1 的开始起持续（监测器在起始时间之前也判定这些批次已变化）：原因在这些批次中从批次开始起作用。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="549"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="555"/>
         <source>The reference holds %1 batch(es): a period&apos;s normal spread comes from thirds of them, which share their day and weather; a change named here may be a difference of conditions the reference never showed. A reference of several batches over the conditions the line runs in (weeks, seasons) judges better.</source>
         <translation>参考期仅含 %1 个批次：一个时段的正常离散取自其三等分，它们同属一天、同样天气；此处识别出的变化可能只是参考期从未出现过的工况差异。覆盖产线运行工况（数周、不同季节）的多批次参考期判断得更好。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="561"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="567"/>
         <source>The reference period itself drifts: the model&apos;s %1 error changes by %2 %3 within a mean batch. A reference should be a period when the line ran well; against this one a change since may read as none.</source>
         <translation>参考期本身在漂移：模型的 %1 误差在一个平均批次内变化 %2 %3。参考期应是产线运行良好的时段；以此为参考，之后的变化可能显示为无变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="590"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="596"/>
         <source>Only the causes asked were tried: %1. That the others are not named says nothing about them.</source>
         <translation>只试了所问的原因：%1。其他原因未被指认，并不说明它们不存在。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="600"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="606"/>
         <source>Commissioned on the reference period (%1 batch(es), %2 rows): h_HDT %3 W/(m²·K) and k_HDT %4 m/s, held fixed on the data judged.</source>
         <translation>已在参考期上调试（%1 个批次，%2 行）：h_HDT %3 W/(m²·K)，k_HDT %4 m/s，在所判断的数据上保持不变。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="608"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="614"/>
         <source>The line&apos;s own structure (what the model always gets wrong: a ridge regression on the inputs and the model&apos;s outputs, penalty %1) was learnt on the reference and taken off the measurements; the residuals shown are what is left.</source>
         <translation>产线自身的结构（模型总是出错的部分：基于输入和模型输出的岭回归，惩罚系数 %1）已在参考期上学习，并从测量值中扣除；所示残差为剩余部分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="620"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="626"/>
         <source>%1 is measured in the data but not in every batch of the reference period: the periods are compared on the outputs both measure, without it.</source>
         <translation>%1 在数据中有测量，但参考期并非每个批次都有：两个时期只在双方都测量的输出上比较，不含它。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="623"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="629"/>
         <source>%1 is measured in the reference period but not in every batch of the data: the periods are compared on the outputs both measure, without it.</source>
         <translation>%1 在参考期中有测量，但数据并非每个批次都有：两个时期只在双方都测量的输出上比较，不含它。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="630"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="636"/>
         <source>The reference period&apos;s files: %1</source>
         <translation>参考期的文件：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="667"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="673"/>
         <source>It goes on from the start of %1.</source>
         <translation>它从 %1 的开始起持续存在。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="702"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="708"/>
         <source>%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts %4 better; which output a cause favours is the model&apos;s structure, so the data cannot tell them apart.</source>
         <translation>%1 同样拟合：总体上它留下 %2 倍的留出误差（p = %3），但它对%4的预测更好；原因偏向哪个输出取决于模型自身的结构，因此数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="708"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="714"/>
         <source>the outlet moisture</source>
         <translation>出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="709"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
         <source>the outlet temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="710"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="716"/>
         <source>the tube-outlet moisture</source>
         <translation>管出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="711"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="717"/>
         <source>the tube-outlet temperature</source>
         <translation>管出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="721"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="716"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="722"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="723"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="729"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="735"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="741"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="739"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="745"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -2403,32 +2401,32 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="756"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="762"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="756"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="762"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="785"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="791"/>
         <source> %1 moved against this cause&apos;s effect (%2 times what its model form says), by less than that output&apos;s noise can tell from none: it counts neither for the cause nor against it.</source>
         <translation> %1 的变化与该原因的作用方向相反（为其模型形式所预测的 %2 倍），但小于该输出的噪声所能分辨的程度：既不支持也不否定该原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="802"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="808"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="803"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="809"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="821"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="827"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2445,12 +2443,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="891"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="897"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="891"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="897"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2459,58 +2457,68 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="941"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="947"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="944"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="950"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="952"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="958"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="470"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="860"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="476"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="866"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="210"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="56"/>
+        <source>The held-out part: the last 30 % of the rows, batches in time order (the Residual model tab&apos;s split); every fit saw only the rows before it.</source>
+        <translation>留出部分：按时间顺序排列批次后最后 30 % 的行（与“残差模型”标签页的划分相同）；每次拟合只看到它之前的行。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="60"/>
+        <source>Before: discovery&apos;s starting model, with h_HDT, k_HDT and the inlet gauge&apos;s scatter fitted to these data&apos;s training rows (or as commissioned on the reference period). It can differ from the Calibrate tab&apos;s model, and so from the physics model&apos;s error on the Residual model tab.</source>
+        <translation>之前：发现功能的起始模型，其 h_HDT、k_HDT 和入口测量仪散布按这些数据的训练行拟合（或按参考期调试所得）。它可能与“标定”标签页的模型不同，因此也可能与“残差模型”标签页上物理模型的误差不同。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="216"/>
         <source>DryTwin (the causes&apos; estimates): none moved beyond its normal spread (p %1)</source>
         <translation>DryTwin（各原因的估计）：均未超出其正常范围（p %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="212"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="218"/>
         <source>DryTwin (the causes&apos; one-step estimates): &lt;b&gt;changed&lt;/b&gt; (p %1): %2 moved beyond its normal spread</source>
         <translation>DryTwin（各原因的一步估计）：&lt;b&gt;已变化&lt;/b&gt;（p %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="216"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="222"/>
         <source>DryTwin (the inlet gauge&apos;s own scatter): &lt;b&gt;changed&lt;/b&gt; (p %1): %2 rose beyond the reference&apos;s</source>
         <translation>DryTwin（进口水分仪自身的散布）：&lt;b&gt;已变化&lt;/b&gt;（p %1）：%2 高于参考期</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="219"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="225"/>
         <source>DryTwin (a named cause&apos;s fitted value): &lt;b&gt;changed&lt;/b&gt; (p %1): %2 moved beyond its normal spread</source>
         <translation>DryTwin（已命名原因的拟合值）：&lt;b&gt;已变化&lt;/b&gt;（p %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="740"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="746"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="741"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="747"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="745"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="751"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
@@ -2519,19 +2527,19 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="824"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="830"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="834"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="840"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="238"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="592"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="835"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="244"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="598"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="841"/>
         <source>, </source>
         <translation>、</translation>
     </message>
@@ -2540,86 +2548,86 @@
         <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="838"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="844"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="861"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="867"/>
         <source>Named on its fit: it lowers the held-out error (p = %1) and passes the checks that it is this cause; the screen&apos;s p only ranks the candidates for fitting.</source>
         <translation>按其拟合指认：它降低了留出部分的误差（p = %1），并通过了确认是此原因的各项检查；筛选的 p 只用于为拟合排列候选。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="876"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="882"/>
         <source>fitted, not the best</source>
         <translation>已拟合，非最佳</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="877"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="883"/>
         <source>Fitted in a round in which another cause explained more of the error; the causes named after it were fitted on the model extended by it.</source>
         <translation>在某一轮中已拟合，但另一原因解释了更多误差；其后指认的原因是在由它扩展的模型上拟合的。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="888"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="894"/>
         <source>not fitted (weaker)</source>
         <translation>未拟合（证据较弱）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="962"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="968"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="978"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="984"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="987"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="993"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="994"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1000"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="999"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1005"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1007"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1013"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1027"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1033"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="730"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1028"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1054"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="736"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1034"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1060"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="751"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="757"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out goes from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1029"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1035"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="730"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1030"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1058"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="736"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1036"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1064"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2632,27 +2640,27 @@
         <translation>DryTwin（已命名原因的拟合值、进口水分仪的散布）：&lt;b&gt;已变化&lt;/b&gt;（p = %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="326"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="332"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed rate and by inlet moisture)</source>
         <translation>误差随进料量和入口水分增大（按进料量和按入口水分分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="412"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="418"/>
         <source>it does not change within a batch (an offset, the tube&apos;s wall or gas phase), but this error grows or shrinks within the batch (fouling, a drifting reading)</source>
         <translation>它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="575"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="581"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="578"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="584"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the model&apos;s error there is judged beyond the reference&apos;s conditions, and an alarm there may be that condition rather than a change of the line.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="446"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="452"/>
         <source>the error follows %1 %2 s later (correlation %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（相关系数 %3）</translation>
     </message>
@@ -2661,17 +2669,17 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="788"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="794"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="843"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="849"/>
         <source>Change z</source>
         <translation>变化 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="846"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="852"/>
         <source>Change z: how far the cause&apos;s one-step estimate here lies from its normal value on the reference period, in units of both estimates&apos; errors and the spread between the reference&apos;s periods; above 2 it moved.</source>
         <translation>变化 z：该原因在此处的一步估计与其在参考期的正常值相差多远，以两次估计的误差及参考期各时段间的离散为单位；大于 2 即为发生了变化。</translation>
     </message>
@@ -2684,92 +2692,92 @@
         <translation>未拟合：证据弱于已拟合的候选</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="901"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="907"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="916"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="922"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="923"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="929"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="937"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="943"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="982"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="988"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1012"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1018"/>
         <source>Held-out accuracy: nothing was named, so nothing was extended (before = after):</source>
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1017"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1023"/>
         <source>Gain on the held-out part, with every named cause (each finding&apos;s own gain is in its evidence):</source>
         <translation>留出部分的改进（含所有已指认的原因；每项发现各自的改进见其证据）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1031"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1037"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1040"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1046"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1053"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1059"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1053"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1059"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1054"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1060"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1057"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1063"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1057"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1063"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1058"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1064"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1085"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1091"/>
         <source>model (nothing extended)</source>
         <translation>模型（未扩展）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1087"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1093"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1088"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1094"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -2902,17 +2910,17 @@
 <context>
     <name>drytwin::widgets::MainWindow</name>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="36"/>
+        <location filename="../widgets/MainWindow.cpp" line="37"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="56"/>
+        <location filename="../widgets/MainWindow.cpp" line="57"/>
         <source>Data</source>
         <translation>数据</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="57"/>
+        <location filename="../widgets/MainWindow.cpp" line="58"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
@@ -2923,7 +2931,7 @@
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="25"/>
-        <location filename="../widgets/MainWindow.cpp" line="58"/>
+        <location filename="../widgets/MainWindow.cpp" line="59"/>
         <source>Calibrate</source>
         <translation>标定</translation>
     </message>
@@ -2985,33 +2993,33 @@
         <translation>报告已写入：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="59"/>
+        <location filename="../widgets/MainWindow.cpp" line="60"/>
         <source>Residual model</source>
         <translation>残差模型</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="60"/>
+        <location filename="../widgets/MainWindow.cpp" line="61"/>
         <source>Diagnostics</source>
         <translation>诊断</translation>
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowReport.cpp" line="29"/>
-        <location filename="../widgets/MainWindow.cpp" line="61"/>
+        <location filename="../widgets/MainWindow.cpp" line="62"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="62"/>
+        <location filename="../widgets/MainWindow.cpp" line="63"/>
         <source>What-if MPC</source>
         <translation>假设分析 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="63"/>
+        <location filename="../widgets/MainWindow.cpp" line="64"/>
         <source>3D line</source>
         <translation>三维产线</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="65"/>
+        <location filename="../widgets/MainWindow.cpp" line="66"/>
         <source>Training</source>
         <translation>培训</translation>
     </message>
@@ -3020,47 +3028,47 @@
         <translation>未加载数据。文件 ▸ 打开数据集…</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="69"/>
+        <location filename="../widgets/MainWindow.cpp" line="70"/>
         <source>&lt;b&gt;Data&lt;/b&gt;: the loaded batches, their rows kept by the cleaning, and every measured channel over time. Select several batches to overlay them; drop files here to open them. Files with other column names open through Column mapping…</source>
         <translation>&lt;b&gt;数据&lt;/b&gt;：已加载的批次、清洗后保留的行，以及每个测量通道随时间的变化。选择多个批次可叠加显示；把文件拖到这里即可打开。列名不同的文件通过“列映射…”打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="73"/>
+        <location filename="../widgets/MainWindow.cpp" line="74"/>
         <source>&lt;b&gt;Model&lt;/b&gt;: the physics model&apos;s parameters with units and bounds (paper Eqs. 1–19), and its simulation against the measurements. Edit a value to try it; Undo takes it back.</source>
         <translation>&lt;b&gt;模型&lt;/b&gt;：物理模型的参数及其单位和范围（论文公式 1–19），以及模拟与测量的对比。修改数值即可试验；“撤销”可恢复。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="77"/>
+        <location filename="../widgets/MainWindow.cpp" line="78"/>
         <source>&lt;b&gt;Calibrate&lt;/b&gt;: fits the ticked parameters to the data (a global search, then BOBYQA) and gives each its 95 % interval. Stop keeps the best so far.</source>
         <translation>&lt;b&gt;标定&lt;/b&gt;：把勾选的参数拟合到数据（先全局搜索，再 BOBYQA），并给出各自的 95 % 区间。停止时保留目前最优。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="80"/>
+        <location filename="../widgets/MainWindow.cpp" line="81"/>
         <source>&lt;b&gt;Residual model&lt;/b&gt;: learns a correction of the physics model from the data (PGRL-CC, paper Eqs. 20–30) and scores it on held-out data beside the comparison models and the two trivial forecasts. Skill below 1 beats both.</source>
         <translation>&lt;b&gt;残差模型&lt;/b&gt;：从数据学习物理模型的修正（PGRL-CC，论文公式 20–30），并在留出数据上与对比模型及两个平凡预测一起评分。预报技巧小于 1 即优于二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="84"/>
+        <location filename="../widgets/MainWindow.cpp" line="85"/>
         <source>&lt;b&gt;Diagnostics&lt;/b&gt;: the residuals&apos; autocorrelation and spectrum (white noise is what a complete model leaves), where in the operating range the physics model errs, and what its error moves with.</source>
         <translation>&lt;b&gt;诊断&lt;/b&gt;：残差的自相关和频谱（完整的模型只留下白噪声）、物理模型在工况范围内何处出错，以及其误差随什么变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="88"/>
+        <location filename="../widgets/MainWindow.cpp" line="89"/>
         <source>&lt;b&gt;Discover&lt;/b&gt;: what the simulation gets wrong, the physical cause when one is specific (better on every output it touches, consistent across batches, told apart from its look-alikes), and the gain of the extended model.</source>
         <translation>&lt;b&gt;发现&lt;/b&gt;：模拟哪里不准；当某个物理原因具有特异性时给出它（在其影响的每个输出上都更好、各批次间一致、能与相似原因区分），以及扩展模型的收益。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="92"/>
+        <location filename="../widgets/MainWindow.cpp" line="93"/>
         <source>&lt;b&gt;What-if MPC&lt;/b&gt;: a scenario run against the virtual plant once per controller, an MPC on each model that exists and the plant&apos;s own PI loop, with the paper&apos;s Table 2 metrics.</source>
         <translation>&lt;b&gt;假设分析 MPC&lt;/b&gt;：针对虚拟装置，为每个控制器运行一次情景：每个已有模型上的 MPC 以及装置自己的 PI 回路，并给出论文表 2 的指标。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="96"/>
+        <location filename="../widgets/MainWindow.cpp" line="97"/>
         <source>&lt;b&gt;3D line&lt;/b&gt;: the drying tube, conveyor and winnower with the material parcels coloured by moisture at the time cursor; the slider moves every plot&apos;s cursor.</source>
         <translation>&lt;b&gt;三维产线&lt;/b&gt;：干燥管、输送机和风选机，物料颗粒按时间光标处的含水率着色；滑块同时移动所有曲线图的光标。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="99"/>
+        <location filename="../widgets/MainWindow.cpp" line="100"/>
         <source>&lt;b&gt;Training&lt;/b&gt;: the line runs live for a trainee; the instructor&apos;s window injects faults, freezes the clock and scores the answers.</source>
         <translation>&lt;b&gt;培训&lt;/b&gt;：产线为学员实时运行；教员窗口可注入故障、冻结时钟并为回答评分。</translation>
     </message>
@@ -3143,12 +3151,12 @@
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="131"/>
+        <location filename="../widgets/MainWindow.cpp" line="132"/>
         <source>The line&apos;s commissioning runs are in %1: choose them under &quot;Compare with a reference period&quot; to ask what changed since commissioning.</source>
         <translation>产线的调试运行数据位于 %1：在“与参考期比较”中选择它们，即可查看自调试以来发生了什么变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/MainWindow.cpp" line="139"/>
+        <location filename="../widgets/MainWindow.cpp" line="140"/>
         <source>Opening the recording beside %1; the data-set list at the top right switches back.</source>
         <translation>正在 %1 之外另行打开该记录；用右上角的数据集列表可切换回去。</translation>
     </message>
@@ -3306,22 +3314,22 @@
         <translation>项目已保存到 %1（模型、结果和视图）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="139"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="143"/>
         <source>Saving the project to %1…</source>
         <translation>正在保存项目到 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="196"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="200"/>
         <source>The project&apos;s results could not be read (%1); it opens without them.</source>
         <translation>无法读取项目的结果（%1）；项目将不带结果打开。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="260"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="264"/>
         <source>Wait until the running job has finished (or cancel it), then switch the language.</source>
         <translation>请等待当前任务完成（或取消它），然后再切换语言。</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="293"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="302"/>
         <source>The training session under way was saved in %1 when the language changed: the instructor window&apos;s Session file ▸ Open session… continues it.</source>
         <translation>切换语言时，进行中的培训会话已保存到 %1：在教员窗口的 会话文件 ▸ 打开会话… 可继续。</translation>
     </message>
@@ -3431,8 +3439,8 @@
     </message>
     <message>
         <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="54"/>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="123"/>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="130"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="127"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="134"/>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
@@ -3441,17 +3449,17 @@
         <translation>项目已保存到 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="147"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="151"/>
         <source>cannot open %1: %2</source>
         <translation>无法打开 %1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="156"/>
+        <location filename="../widgets/mainwindow/MainWindowProject.cpp" line="160"/>
         <source>%1 is not a DryTwin project (%2)</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="53"/>
+        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="69"/>
         <source>Training session %1 (its recording is on the Training tab; no data set is loaded for the other tabs)</source>
         <translation>培训会话 %1（其记录显示在“培训”选项卡上；其他选项卡未加载数据集）</translation>
     </message>
@@ -3606,32 +3614,32 @@
 <context>
     <name>drytwin::widgets::MpcPanel</name>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="46"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="47"/>
         <source>Open scenario…</source>
         <translation>打开情景…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="50"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="51"/>
         <source>The scenario as JSON (schema in docs/mpc.md): setpoint steps, input steps and ramps, hidden mechanisms switched on mid-run, noise. Edits are checked when you run.</source>
         <translation>以 JSON 表示的情景（格式见 docs/mpc.md）：设定值阶跃、输入阶跃与斜坡、运行中途开启的隐藏机理、噪声。运行时检查修改。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="62"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="63"/>
         <source>Run scenario</source>
         <translation>运行情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="65"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="66"/>
         <source>Show the horizon the controllers predicted at this decision</source>
         <translation>显示控制器在此决策时刻预测的时域</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="66"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="67"/>
         <source>Runs the scenario against the virtual plant once per controller.</source>
         <translation>对虚拟装置逐个控制器运行该情景。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="71"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="72"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
@@ -3656,7 +3664,7 @@
         <translation type="vanished">求解时间中位数 [ms]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="72"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="73"/>
         <source>Fallbacks</source>
         <translation>回退次数</translation>
     </message>
@@ -3665,225 +3673,225 @@
         <translation type="vanished">模型增益 [%/K]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="71"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="72"/>
         <source>IAE
 [% wb·s]</source>
         <translation>IAE
 [% 湿基·s]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="71"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="72"/>
         <source>Effort
 [K²]</source>
         <translation>控制动作量
 [K²]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="71"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="72"/>
         <source>Violations
 [%]</source>
         <translation>越限
 [%]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="72"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="73"/>
         <source>Solve median
 [ms]</source>
         <translation>求解时间中位数
 [ms]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="72"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="73"/>
         <source>Model gain
 [%/K]</source>
         <translation>模型增益
 [%/K]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="76"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="77"/>
         <source>IAE: the outlet moisture&apos;s distance from its setpoint, summed over every second of the run (% wb × s); smaller is tighter control.</source>
         <translation>IAE：出口含水率与设定值之差，按运行的每一秒累加（% 湿基 × s）；越小控制越紧。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="78"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="79"/>
         <source>Effort: the squared moves of the hot-air setpoint, summed (K²); smaller is gentler on the burner.</source>
         <translation>控制动作量：热风设定值各次调整的平方和（K²）；越小对燃烧器越温和。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="80"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="81"/>
         <source>Share of the run with the product outside its specification band.</source>
         <translation>产品超出规格带的运行时间占比。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="81"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="82"/>
         <source>Median time the controller took to decide, per decision.</source>
         <translation>控制器每次决策所用时间的中位数。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="82"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="83"/>
         <source>Decisions where the optimiser failed and the controller kept its last move, of all decisions.</source>
         <translation>优化器求解失败、控制器沿用上一步动作的决策次数 / 全部决策次数。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="84"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="85"/>
         <source>How much X_out changes per kelvin of hot air in the controller&apos;s model (median); compare with the plant&apos;s own gain below.</source>
         <translation>控制器模型中热风每变化 1 K 时 X_out 的变化量（中位数）；可与下方装置自身的增益比较。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="87"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="88"/>
         <source>X_out, true [% wb]</source>
         <translation>X_out 真实值 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="88"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="89"/>
         <source>T_hot setpoint [°C]</source>
         <translation>T_hot 设定值 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="103"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="104"/>
         <source>Form</source>
         <translation>表单</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="104"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="105"/>
         <source>JSON</source>
         <translation>JSON</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="115"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="116"/>
         <source>prediction at</source>
         <translation>预测时刻</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="159"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="162"/>
         <source>Open scenario</source>
         <translation>打开情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="159"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="162"/>
         <source>Scenarios (*.json)</source>
         <translation>情景 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="169"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="172"/>
         <source>Run a scenario to see each controller&apos;s outlet moisture and hot-air setpoint</source>
         <translation>运行一个情景，可看到各控制器的出口含水率和热风设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="186"/>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="187"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="189"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="190"/>
         <source>the scenario</source>
         <translation>该情景</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="192"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="195"/>
         <source>The run was cancelled; the results below are from the last complete run.</source>
         <translation>运行已取消；下方结果来自上一次完整运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="193"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="196"/>
         <source>The run was cancelled.</source>
         <translation>运行已取消。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="197"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="200"/>
         <source>%1
 The results below are from the last complete run.</source>
         <translation>%1
 下方结果来自上一次完整运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="208"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="211"/>
         <source>%1 (problems in the form: %2)</source>
         <translation>%1（表单中的问题：%2 个）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="219"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="222"/>
         <source>The scenario&apos;s JSON: %1</source>
         <translation>情景 JSON：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="220"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="223"/>
         <source>The scenario&apos;s JSON, line %1: %2</source>
         <translation>情景 JSON 第 %1 行：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="226"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="229"/>
         <source>Run is off until this is fixed: %1</source>
         <translation>修正以下问题前无法运行：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="239"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="242"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="252"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="255"/>
         <source>Not run: %1</source>
         <translation>未运行：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="262"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="265"/>
         <source>Cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="280"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="283"/>
         <source>Choose at least one controller.</source>
         <translation>请至少选择一个控制器。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="284"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="287"/>
         <source>Running…</source>
         <translation>正在运行…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="296"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="299"/>
         <source>Contract key: %1</source>
         <translation>接口代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="298"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="301"/>
         <source>%1 (stale)</source>
         <translation>%1（过期）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="299"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="302"/>
         <source>Learnt before %1: retrain it to run it.</source>
         <translation>学习于以下变化之前：%1；需重新训练才能运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="301"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="304"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="302"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="305"/>
         <source>Learn the correction models on the Residual model tab to run it.</source>
         <translation>在残差模型页学习修正模型后才能运行它。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="324"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="327"/>
         <source>predicted at %1 s</source>
         <translation>在 %1 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="333"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="336"/>
         <source>skipped</source>
         <translation>已跳过</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="334"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="337"/>
         <source>the model holds no such prediction model</source>
         <translation>模型中没有这种预测模型</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="347"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="351"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="356"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="360"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
@@ -3892,7 +3900,7 @@ The results below are from the last complete run.</source>
         <translation>%1 在 %2 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="384"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="401"/>
         <source>%1. IAE and violations on the product&apos;s true outlet moisture; the plant&apos;s own gain is %2 % wb/K.</source>
         <translation>%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。</translation>
     </message>

@@ -8,6 +8,8 @@ import re
 import sys
 
 ZH = {
+    "The held-out part: the last 30 % of the rows, batches in time order (the Residual model tab's split); every fit saw only the rows before it.": "留出部分：按时间顺序排列批次后最后 30 % 的行（与“残差模型”标签页的划分相同）；每次拟合只看到它之前的行。",
+    "Before: discovery's starting model, with h_HDT, k_HDT and the inlet gauge's scatter fitted to these data's training rows (or as commissioned on the reference period). It can differ from the Calibrate tab's model, and so from the physics model's error on the Residual model tab.": "之前：发现功能的起始模型，其 h_HDT、k_HDT 和入口测量仪散布按这些数据的训练行拟合（或按参考期调试所得）。它可能与“标定”标签页的模型不同，因此也可能与“残差模型”标签页上物理模型的误差不同。",
     "It goes on from the start of %1.": "它从 %1 的开始起持续存在。",
     "The change goes on from the start of %1 (the monitor reads them changed before the onset time too): the causes act there from the batch's start.": "变化从 %1 的开始起持续（监测器在起始时间之前也判定这些批次已变化）：原因在这些批次中从批次开始起作用。",
     "Gain on the held-out part, with every named cause (each finding's own gain is in its evidence):": "留出部分的改进（含所有已指认的原因；每项发现各自的改进见其证据）：",

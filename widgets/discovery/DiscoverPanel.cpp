@@ -53,8 +53,14 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
          tr("Loss: the fit's error with the cause in the model; lower is a better fit.")});
     m_gains = makeResultTable({tr("Held-out"), tr("Before"), tr("After"), tr("Unit")});
     setHeaderToolTips(m_gains,
-                      {tr("The held-out part: batches the fit did not see."),
-                       tr("Before: the starting model (as commissioned, or calibrated)."),
+                      {tr("The held-out part: the last 30 % of the rows, batches in time order (the "
+                          "Residual model tab's split); every fit saw only the rows before it."),
+                       // A review compared "Before" with the Residual tab's physics error and found
+                       // them different: discovery refits its own start.
+                       tr("Before: discovery's starting model, with h_HDT, k_HDT and the inlet gauge's "
+                          "scatter fitted to these data's training rows (or as commissioned on the "
+                          "reference period). It can differ from the Calibrate tab's model, and so "
+                          "from the physics model's error on the Residual model tab."),
                        tr("After: the extended model, every named cause fitted together (a finding's "
                           "own sentence gives the gain when that cause was named).")});
     m_evidence = new QTextBrowser;
