@@ -234,6 +234,7 @@ private Q_SLOTS:
             {notes::lineStructureLearnt(1e-4), {"1e-04"}},
             {notes::shortReference(2), {"2"}},
             {notes::judgedFromChangeOn({"B01", "B02"}, "B03"), {"B01, B02", "B03"}},
+            {notes::changeGoesOnFromStart({"B04"}), {"B04"}},
             {notes::measuredInOnePeriodOnly("X_hdt_pct", true), {}},
             {notes::measuredInOnePeriodOnly("X_hdt_pct", false), {}},
             {notes::aboutReferenceFiles("C1.csv: 3 rows repeat their time"), {"C1.csv"}},
