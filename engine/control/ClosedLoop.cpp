@@ -149,7 +149,7 @@ plant::PlantDisturbances scenarioDisturbances(const Scenario& s, std::mt19937_64
 
 std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybrid::HybridModel& m,
                                                 std::string& missing, bool controlThroughPhysics,
-                                                bool holdCorrection) {
+                                                bool holdCorrection, bool residualAlongHeldHotAir) {
     switch (kind) {
     case ControllerKind::Pbm:
         return pbmForecaster(m.parameters, m.simulationOptions());
@@ -159,14 +159,14 @@ std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybri
             return nullptr;
         }
         return residualForecaster(m.parameters, m.simulationOptions(), m.pgrlCc, controlThroughPhysics,
-                                  holdCorrection);
+                                  holdCorrection, residualAlongHeldHotAir);
     case ControllerKind::ExtInputResidual:
         if (!m.extInput) {
             missing = "the model file holds no external-input residual model (run train)";
             return nullptr;
         }
         return residualForecaster(m.parameters, m.simulationOptions(), m.extInput, controlThroughPhysics,
-                                  holdCorrection);
+                                  holdCorrection, residualAlongHeldHotAir);
     case ControllerKind::Lstm:
         if (!m.lstm) {
             missing = "the model file holds no LSTM (run train; needs libtorch)";
@@ -372,7 +372,7 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
             continue;
         }
         auto f = forecasterFor(kind, model, skipped[c], options.mpc.controlThroughPhysics,
-                               options.mpc.holdCorrectionOverHorizon);
+                               options.mpc.holdCorrectionOverHorizon, options.mpc.residualAlongHeldHotAir);
         if (!f) {
             continue;
         }
@@ -534,8 +534,9 @@ Expected<ClosedLoopResult> runScenario(const Scenario& scenario, const hybrid::H
             continue;
         }
         std::string missing;
-        if (auto f = forecasterFor(run.kind, model, missing, options.mpc.controlThroughPhysics,
-                                   options.mpc.holdCorrectionOverHorizon)) {
+        if (auto f =
+                forecasterFor(run.kind, model, missing, options.mpc.controlThroughPhysics,
+                              options.mpc.holdCorrectionOverHorizon, options.mpc.residualAlongHeldHotAir)) {
             run.forecastCheck = checkForecasts(*f, *piRecord, warm, options.mpc.horizonS, 20);
         }
         if (reportProgress(progress, "mpc", 1.0, std::string("forecast check ") + controllerName(run.kind))) {

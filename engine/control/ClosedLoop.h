@@ -158,6 +158,7 @@ private:
 /// (the model holds no such part; PI has none).
 std::unique_ptr<OutletForecaster> forecasterFor(ControllerKind kind, const hybrid::HybridModel& model,
                                                 std::string& missing, bool controlThroughPhysics = true,
-                                                bool holdCorrection = true);
+                                                bool holdCorrection = true,
+                                                bool residualAlongHeldHotAir = true);
 
 } // namespace drytwin::control

@@ -80,9 +80,10 @@ class ResidualForecaster : public OutletForecaster {
 public:
     ResidualForecaster(properties::ParameterSet p, physics::SimulationOptions o,
                        std::shared_ptr<const residual::ResidualModel> m, bool controlThroughPhysics,
-                       bool holdCorrection)
+                       bool holdCorrection, bool residualAlongHeldHotAir)
         : m_p(std::move(p)), m_o(std::move(o)), m_model(std::move(m)),
-          m_controlThroughPhysics(controlThroughPhysics), m_holdCorrection(holdCorrection) {}
+          m_controlThroughPhysics(controlThroughPhysics), m_holdCorrection(holdCorrection),
+          m_residualAlongHeldHotAir(residualAlongHeldHotAir) {}
 
     std::size_t historyNeeded() const override { return pbmLead(m_p) + lags(); }
 
@@ -126,12 +127,24 @@ public:
             }
             return physics::simulateLine(physics::toLineInputs(w), m_p, m_o, rows);
         };
-        for (std::size_t c = 0; c < plans.size(); ++c) {
+        // The learnt residual is forecast along a plan that holds the hot air at its last measured
+        // value from now on (MpcSettings::residualAlongHeldHotAir), not along the previous plan
+        // shifted: it was learnt under the plant's PI loop, and its answer to planned moves (the
+        // loop's answers to the moisture error, taken for the line's response) fed each decision's
+        // moves back into the next one's disturbance forecast. The plans differ by the physics.
+        const bool flat = m_controlThroughPhysics && m_residualAlongHeldHotAir;
+        std::vector<std::vector<double>> planList = plans;
+        if (flat) {
+            planList.insert(planList.begin(),
+                            std::vector<double>(plans.front().size(), at.record->tHotK[at.now - 1]));
+        }
+        const auto& plansUsed = planList;
+        for (std::size_t c = 0; c < plansUsed.size(); ++c) {
             // Only the plans the residual model forecasts need the long window: under
             // controlThroughPhysics the others contribute their PBM run after `now` alone.
             const std::size_t start = (c == 0 || !m_controlThroughPhysics) ? longFrom : viewFrom;
             data::SiBatch view;
-            auto sim = simulateFrom(start, plans[c], std::nullopt, view);
+            auto sim = simulateFrom(start, plansUsed[c], std::nullopt, view);
             if (!sim) {
                 return sim.error();
             }
@@ -147,7 +160,7 @@ public:
         // carries what the disturbances do; the hot air acts through the physics alone.
         std::vector<physics::SimulationResult> correctedBases;
         std::vector<residual::BatchView> views;
-        const std::size_t viewCount = m_controlThroughPhysics ? 1 : plans.size();
+        const std::size_t viewCount = m_controlThroughPhysics ? 1 : plansUsed.size();
         if (const auto* correction = usedCorrection()) {
             correctedBases.reserve(viewCount);
             data::SiBatch heldView;
@@ -180,7 +193,7 @@ public:
             // The residual along the first (base) plan, added to every plan's own PBM run: the
             // plans differ by the physics' response only.
             const auto& base = p.front();
-            for (std::size_t c = 0; c < plans.size(); ++c) {
+            for (std::size_t c = flat ? 1 : 0; c < plansUsed.size(); ++c) {
                 std::vector<double> x(base.xOutPct.size(), kNaN);
                 for (std::size_t i = 0; i < x.size(); ++i) {
                     const std::size_t row = at.now + i - starts[c]; // row now + i of the record
@@ -211,6 +224,7 @@ private:
     std::shared_ptr<const residual::ResidualModel> m_model;
     bool m_controlThroughPhysics = true;
     bool m_holdCorrection = true;
+    bool m_residualAlongHeldHotAir = true;
 };
 
 class LstmForecaster : public OutletForecaster {
@@ -302,9 +316,11 @@ std::unique_ptr<OutletForecaster> pbmForecaster(properties::ParameterSet params,
 std::unique_ptr<OutletForecaster> residualForecaster(properties::ParameterSet params,
                                                      physics::SimulationOptions options,
                                                      std::shared_ptr<const residual::ResidualModel> model,
-                                                     bool controlThroughPhysics, bool holdCorrection) {
+                                                     bool controlThroughPhysics, bool holdCorrection,
+                                                     bool residualAlongHeldHotAir) {
     return std::make_unique<ResidualForecaster>(std::move(params), std::move(options), std::move(model),
-                                                controlThroughPhysics, holdCorrection);
+                                                controlThroughPhysics, holdCorrection,
+                                                residualAlongHeldHotAir);
 }
 
 std::unique_ptr<OutletForecaster> lstmForecaster(std::shared_ptr<const baselines::LstmBaseline> model) {

@@ -43,12 +43,13 @@ std::unique_ptr<OutletForecaster> pbmForecaster(properties::ParameterSet params,
 /// @p controlThroughPhysics the residual is forecast along the first plan only and every plan
 /// gets it added to its own PBM run (MpcSettings::controlThroughPhysics). With
 /// @p holdCorrection the input-driven correction is held at its value at the decision
-/// (MpcSettings::holdCorrectionOverHorizon).
-std::unique_ptr<OutletForecaster> residualForecaster(properties::ParameterSet params,
-                                                     physics::SimulationOptions options,
-                                                     std::shared_ptr<const residual::ResidualModel> model,
-                                                     bool controlThroughPhysics = true,
-                                                     bool holdCorrection = true);
+/// (MpcSettings::holdCorrectionOverHorizon). With @p residualAlongHeldHotAir (and
+/// @p controlThroughPhysics) the residual is forecast along a plan holding the hot air at its last
+/// measured value (MpcSettings::residualAlongHeldHotAir).
+std::unique_ptr<OutletForecaster>
+residualForecaster(properties::ParameterSet params, physics::SimulationOptions options,
+                   std::shared_ptr<const residual::ResidualModel> model, bool controlThroughPhysics = true,
+                   bool holdCorrection = true, bool residualAlongHeldHotAir = true);
 /// @brief Holds the correction of @p corrected over @p pbm (outlet moisture in % wb, temperature
 /// in K) at its value at row @p origin for every later row: after a decision the corrected run
 /// changes as the physics does (MpcSettings::holdCorrectionOverHorizon). Rows up to @p origin,
