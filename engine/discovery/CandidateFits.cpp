@@ -212,6 +212,22 @@ Expected<SelectionRound::Fit> SelectionRound::fittedFromOnset(const Candidate& c
         return fit;
     }
     fit.onset = findOnset(m_stack, m_nuisanceCols, columnOf(cand.parameter));
+    // The cause also fitted from the detector's change point (against a reference), kept where
+    // that fits the training part better; the held-out part judges it as any other fit. None
+    // when from the start stays (refitFromOnset replaced the fit: it is put back).
+    const bool changePointKnown =
+        m_pr.reference && m_pr.reference->changePoint.found && m_pr.reference->changePoint.s > 0;
+    const auto betterFromChangePoint = [&]() -> Expected<std::optional<Fit>> {
+        auto fromChange = refitFromOnset(cand, m_pr.reference->changePoint);
+        if (!fromChange) {
+            return fromChange.error();
+        }
+        if (*fromChange && (*fromChange)->loss < fit.loss) {
+            return *fromChange;
+        }
+        m_fits[cand.parameter] = fit;
+        return std::optional<Fit>{};
+    };
     if (!fit.onset.found && isLag(cand.parameter)) {
         // A lag's onset is scanned on its own effect at the fit from the start, on the training
         // part like the tangent's, so that the held-out part judges one fit: the lag from its
@@ -229,38 +245,33 @@ Expected<SelectionRound::Fit> SelectionRound::fittedFromOnset(const Candidate& c
         // 60 s meter lag from 5 min of a training recording whose moisture rose 1.7 % wb in its
         // first 3 min: 5.7 s from the start). The detector's change point says where the data
         // left the reference; the lag is also fitted from there, kept where it fits better
-        // (DiscoveryOptions::lagFromChangePoint); the held-out part judges it as any other fit.
-        if (!fit.onset.found && m_options.lagFromChangePoint && m_pr.reference &&
-            m_pr.reference->changePoint.found && m_pr.reference->changePoint.s > 0) {
-            auto fromChange = refitFromOnset(cand, m_pr.reference->changePoint);
-            if (!fromChange) {
-                return fromChange.error();
+        // (DiscoveryOptions::lagFromChangePoint).
+        if (!fit.onset.found && m_options.lagFromChangePoint && changePointKnown) {
+            auto better = betterFromChangePoint();
+            if (!better) {
+                return better.error();
             }
-            if (*fromChange && (*fromChange)->loss < fit.loss) {
-                return **fromChange;
+            if (*better) {
+                return **better;
             }
-            m_fits[cand.parameter] = fit; // refitFromOnset replaced it; from the start it stays
         }
     }
     // A change the detector places mid-batch that goes on into the batches after it (taken as
     // changed from their start: LineInputs::mechanismsFromStart): any cause is also fitted from the
-    // change point, where the batch it began in held none of it for its first minutes, and kept
-    // where that fits the training part better; the held-out part judges it as any other fit.
-    // Fitted from the start, those healthy minutes dilute it (a wall loss from 22 min into B03:
-    // fitted at half its size). Only where a later batch goes on from its start: with every batch
+    // change point, where the batch it began in held none of it for its first minutes. Fitted
+    // from the start, those healthy minutes dilute it (a wall loss from 22 min into B03: fitted
+    // at 0.37 of its size). Only where a later batch goes on from its start: with every batch
     // from the same minute, the tangent's own onset scan above decides.
     const bool goesOn = std::any_of(m_pr.inputs.begin(), m_pr.inputs.end(),
                                     [](const physics::LineInputs& in) { return in.mechanismsFromStart; });
-    if (!fit.onset.found && !isLag(cand.parameter) && goesOn && m_pr.reference &&
-        m_pr.reference->changePoint.found && m_pr.reference->changePoint.s > 0) {
-        auto fromChange = refitFromOnset(cand, m_pr.reference->changePoint);
-        if (!fromChange) {
-            return fromChange.error();
+    if (!fit.onset.found && !isLag(cand.parameter) && goesOn && changePointKnown) {
+        auto better = betterFromChangePoint();
+        if (!better) {
+            return better.error();
         }
-        if (*fromChange && (*fromChange)->loss < fit.loss) {
-            return **fromChange;
+        if (*better) {
+            return **better;
         }
-        m_fits[cand.parameter] = fit;
     }
     if (!fit.onset.found) {
         return fit;

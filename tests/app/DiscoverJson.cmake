@@ -32,3 +32,18 @@ macro(drytwin_expect_change_and_first_cause FILE CAUSE WHAT)
     message(FATAL_ERROR "no change detected ${WHAT}:\n${out}")
   endif()
 endmacro()
+
+# Writes a week of batches into WEEK from runs of the plant: each further argument is
+# "FOLDER:FROM:TO", the file FROM.csv of FOLDER written as batch TO (its header renamed).
+function(drytwin_compose_week WEEK)
+  file(MAKE_DIRECTORY ${WEEK})
+  foreach(spec ${ARGN})
+    string(REPLACE ":" ";" parts "${spec}")
+    list(GET parts 0 folder)
+    list(GET parts 1 from)
+    list(GET parts 2 to)
+    file(READ ${folder}/${from}.csv text)
+    string(REPLACE "# batch: ${from}" "# batch: ${to}" text "${text}")
+    file(WRITE ${WEEK}/${to}.csv "${text}")
+  endforeach()
+endfunction()

@@ -11,15 +11,8 @@ drytwin_run("generate healthy" generate --out ${WORK}/healthy --seed 2031 --batc
 drytwin_run("generate fouled" generate --out ${WORK}/fouled --seed 2032 --batches 2 --samples 3000
             --effect heat_transfer_fouling=0.2)
 # The week judged: two healthy batches, then the two fouled ones as B03 and B04.
-file(MAKE_DIRECTORY ${WORK}/week)
-foreach(pair "healthy;B01;B01" "healthy;B02;B02" "fouled;B01;B03" "fouled;B02;B04")
-  list(GET pair 0 folder)
-  list(GET pair 1 from)
-  list(GET pair 2 to)
-  file(READ ${WORK}/${folder}/${from}.csv text)
-  string(REPLACE "# batch: ${from}" "# batch: ${to}" text "${text}")
-  file(WRITE ${WORK}/week/${to}.csv "${text}")
-endforeach()
+drytwin_compose_week(${WORK}/week ${WORK}/healthy:B01:B01 ${WORK}/healthy:B02:B02 ${WORK}/fouled:B01:B03
+                     ${WORK}/fouled:B02:B04)
 drytwin_run("discover --reference" discover --reference ${WORK}/reference --data ${WORK}/week
             --json ${WORK}/discover.json)
 drytwin_expect_change_and_first_cause(${WORK}/discover.json heat_transfer_fouling "from the third batch on")

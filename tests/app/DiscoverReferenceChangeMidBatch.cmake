@@ -16,15 +16,8 @@ drytwin_run("generate knocked" generate --out ${WORK}/knocked --seed 2032 --batc
             --effect moisture_meter_offset=0.2 --onset moisture_meter_offset=${onset})
 drytwin_run("generate after" generate --out ${WORK}/after --seed 2033 --batches 1 --samples 3000
             --effect moisture_meter_offset=0.2)
-file(MAKE_DIRECTORY ${WORK}/week)
-foreach(pair "healthy;B01;B01" "healthy;B02;B02" "knocked;B01;B03" "after;B01;B04")
-  list(GET pair 0 folder)
-  list(GET pair 1 from)
-  list(GET pair 2 to)
-  file(READ ${WORK}/${folder}/${from}.csv text)
-  string(REPLACE "# batch: ${from}" "# batch: ${to}" text "${text}")
-  file(WRITE ${WORK}/week/${to}.csv "${text}")
-endforeach()
+drytwin_compose_week(${WORK}/week ${WORK}/healthy:B01:B01 ${WORK}/healthy:B02:B02 ${WORK}/knocked:B01:B03
+                     ${WORK}/after:B01:B04)
 drytwin_run("discover --reference" discover --reference ${WORK}/reference --data ${WORK}/week
             --json ${WORK}/discover.json)
 drytwin_expect_change_and_first_cause(${WORK}/discover.json moisture_meter_offset "from 22 min into B03 on")

@@ -96,6 +96,16 @@ data::SiBatch recordFarFromSetpoint(int rows) {
     return record;
 }
 
+/// Training that takes seconds: a one-epoch LSTM of 4 cells, 16 lags, no settings' search.
+workflow::TrainOptions quickTraining() {
+    workflow::TrainOptions t;
+    t.lstm.epochs = 1;
+    t.lstm.hidden = 4;
+    t.selection.enabled = false;
+    t.residual.residualLags = 16;
+    return t;
+}
+
 /// A session opened on virtual-plant batches written into @p dir (false on any failure).
 bool openPlantData(const QTemporaryDir& dir, const plant::PlantOptions& plantOptions, workflow::Session& s) {
     workflow::GenerateOptions g;
@@ -349,12 +359,7 @@ private Q_SLOTS:
             c.calibration.maxEvaluations = 300;
             const auto cal = s.calibrate(c);
             QVERIFY2(cal.ok(), cal ? "" : cal.error().message().c_str());
-            workflow::TrainOptions t;
-            t.lstm.epochs = 1;
-            t.lstm.hidden = 4;
-            t.selection.enabled = false;
-            t.residual.residualLags = 16;
-            QVERIFY(s.train(t).ok());
+            QVERIFY(s.train(quickTraining()).ok());
             const std::string path = dir.filePath("gain.json").toStdString();
             std::ofstream(path) << scenarioText("");
             workflow::MpcOptions mo;
@@ -394,12 +399,7 @@ private Q_SLOTS:
         po.samples = 1500;
         workflow::Session s;
         QVERIFY(openPlantData(dir, po, s));
-        workflow::TrainOptions t;
-        t.lstm.epochs = 1;
-        t.lstm.hidden = 4;
-        t.selection.enabled = false;
-        t.residual.residualLags = 16;
-        QVERIFY(s.train(t).ok());
+        QVERIFY(s.train(quickTraining()).ok());
         const auto& record = s.siBatches().front();
         const control::DecisionPoint at{&record, 900};
         const int horizon = 120;
