@@ -8,7 +8,7 @@
 //      batches, seeds FIRST+200; in "all" too)|mid-batch-change (with --reference: from 8-28 min into the
 //      third of four batches and the whole fourth; only when asked)] [--onset-in-every-batch (with
 //      --reference: t_onset from every batch's start, no batch taken as changed from its start; before
-//      2026-11-29)]
+//      2026-11-28, evening)]
 //      [--judge-every-batch (with --reference: no batch left out
 //      before the change point, as before 2026-11-28)] [--mechanism NAME (e.g. moisture_meter_lag)]
 //      [--verbose]
@@ -358,7 +358,8 @@ int main(int argc, char** argv) {
             discoveryOptions.causeTestAtNamedFits = false;
         } else if (a == "--judge-every-batch") { // against a reference: no batch left out before the change
             discoveryOptions.judgeFromChangeOn = false;
-        } else if (a == "--onset-in-every-batch") { // t_onset from every batch's start, as before 2026-11-29
+        } else if (a == "--onset-in-every-batch") { // t_onset from every batch's start, as before 2026-11-28
+                                                    // (evening)
             discoveryOptions.changeGoesOnIntoLaterBatches = false;
         } else if (a == "--lag-from-start") { // against a reference: no lag fitted from the change point
             discoveryOptions.lagFromChangePoint = false;

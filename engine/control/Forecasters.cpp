@@ -133,12 +133,11 @@ public:
         // loop's answers to the moisture error, taken for the line's response) fed each decision's
         // moves back into the next one's disturbance forecast. The plans differ by the physics.
         const bool flat = m_controlThroughPhysics && m_residualAlongHeldHotAir;
-        std::vector<std::vector<double>> planList = plans;
+        std::vector<std::vector<double>> plansUsed = plans;
         if (flat) {
-            planList.insert(planList.begin(),
-                            std::vector<double>(plans.front().size(), at.record->tHotK[at.now - 1]));
+            plansUsed.insert(plansUsed.begin(),
+                             std::vector<double>(plans.front().size(), at.record->tHotK[at.now - 1]));
         }
-        const auto& plansUsed = planList;
         for (std::size_t c = 0; c < plansUsed.size(); ++c) {
             // Only the plans the residual model forecasts need the long window: under
             // controlThroughPhysics the others contribute their PBM run after `now` alone.

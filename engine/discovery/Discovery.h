@@ -133,7 +133,7 @@ struct DiscoveryOptions {
     /// lies in whose first minutes (before the onset time) already read changed is taken as
     /// changed from its start (physics::LineInputs::mechanismsFromStart): a fault that began
     /// 20 min into B03 and was not repaired is in B04 from its first minute. false: t_onset from
-    /// every batch's start, as before 2026-11-29.
+    /// every batch's start, as before 2026-11-28 (evening).
     bool changeGoesOnIntoLaterBatches = true;
     /// Against a reference period: a new batch whose typical value of an input lies outside what
     /// the reference saw (its 0.5-99.5 % range widened by a quarter of the span: a winter batch

@@ -475,6 +475,17 @@ std::size_t firstBatchOfChange(const monitoring::Detection& d) {
     return static_cast<std::size_t>(first);
 }
 
+/// The detector whose change point the causes' onset is taken from: DryTwin's monitor where it
+/// found one, else the PCA monitor's; none where neither did.
+const monitoring::Detection* changePointDetector(const ChangeDetection& detection) {
+    for (const auto* d : {&detection.drytwin, &detection.pca}) {
+        if (d->changed && d->hasOnset) {
+            return d;
+        }
+    }
+    return nullptr;
+}
+
 /// The batches after the one a change began in that read changed from their start: a fault that
 /// began 20 min into B03 and was not repaired is in B04 from its first minute, while t_onset
 /// counts from each batch's start. A batch reads so when the deciding statistic's mean over its
@@ -701,20 +712,15 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
         return prepared.error();
     }
     // A change that began during a batch and went on acts from the start of the batches after it.
+    // (batchesChangedFromStart returns only runs after a judged one.)
     std::vector<std::string> changedFromStart;
-    if (options.changeGoesOnIntoLaterBatches) {
-        for (const auto* d : {&detection->drytwin, &detection->pca}) {
-            if (!d->changed || !d->hasOnset) {
-                continue;
+    const monitoring::Detection* changeDetector = changePointDetector(*detection);
+    if (options.changeGoesOnIntoLaterBatches && changeDetector) {
+        for (const std::size_t run : batchesChangedFromStart(*changeDetector, firstJudged)) {
+            if (run - firstJudged < prepared->pr.inputs.size()) {
+                prepared->pr.inputs[run - firstJudged].mechanismsFromStart = true;
+                changedFromStart.push_back(batches[run].id);
             }
-            for (const std::size_t run : batchesChangedFromStart(*d, firstJudged)) {
-                if (run >= firstJudged && run < batches.size() &&
-                    run - firstJudged < prepared->pr.inputs.size()) {
-                    prepared->pr.inputs[run - firstJudged].mechanismsFromStart = true;
-                    changedFromStart.push_back(batches[run].id);
-                }
-            }
-            break; // the detector whose change point the causes' onset is taken from
         }
     }
     prepared->pr.reference = &ref;
@@ -766,8 +772,8 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
             notes::judgedFromChangeOn(result.batchesBeforeChange, batches[firstJudged].id));
     }
     if (!changedFromStart.empty()) {
-        result.batchesChangedFromStart = changedFromStart;
         result.notes.push_back(notes::changeGoesOnFromStart(changedFromStart));
+        result.batchesChangedFromStart = std::move(changedFromStart);
     }
     result.trainingRows = prepared->keptTrain;
     result.heldOutRows = prepared->keptTest;
@@ -787,10 +793,8 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
 
     result.detection = std::move(*detection);
     ref.changeDetected = result.detection.changed;
-    for (const auto* d : {&result.detection.drytwin, &result.detection.pca}) {
-        if (d->changed && d->hasOnset && !ref.changePoint.found) {
-            ref.changePoint = Onset{true, d->onsetS, d->onsetLowS, d->onsetHighS, 0};
-        }
+    if (const auto* d = changePointDetector(result.detection)) {
+        ref.changePoint = Onset{true, d->onsetS, d->onsetLowS, d->onsetHighS, 0};
     }
     ref.strictScreenAlpha = options.screenAlpha;
     if (result.detection.changed && options.screenAlphaOnceDetected > 0) {
