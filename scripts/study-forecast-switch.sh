@@ -8,15 +8,17 @@
 #                     held error alone)
 #   learnt-bound      the bound on the learnt correction of 2026-11-27, late (off: taken out of
 #                     the model file, the learnt part unbounded)
+#   held-error-decay  the third realised weight alone (off: the error held at the origin is never
+#                     let go; the reference blend and the learnt part's weight as on)
 # Usage: scripts/study-forecast-switch.sh SWITCH [BASE (default 960)] [WORK (default /tmp/drytwin-SWITCH)]
 # Prints, per data set and switch setting, PGRL-CC's moisture skill at each horizon 1-180.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-SWITCH="${1:?usage: $0 realised-weights|learnt-bound [BASE] [WORK]}"
-case "$SWITCH" in realised-weights|learnt-bound) ;; *) echo "$0: unknown switch '$SWITCH'" >&2; exit 2;; esac
+SWITCH="${1:?usage: $0 realised-weights|learnt-bound|held-error-decay [BASE] [WORK]}"
+case "$SWITCH" in realised-weights|learnt-bound|held-error-decay) ;; *) echo "$0: unknown switch '$SWITCH'" >&2; exit 2;; esac
 BASE="${2:-960}"
 WORK="${3:-/tmp/drytwin-$SWITCH}"
-DRYTWIN=build/app/drytwin
+DRYTWIN="${DRYTWIN:-build/app/drytwin}" # a copy lets a study run beside a rebuild
 mkdir -p "$WORK"
 sets=()
 while read -r kind offset batches samples plant mix faults; do
@@ -58,6 +60,9 @@ for m in model["residual_models"].values():
     if sys.argv[4] == "learnt-bound":
         if not on:
             m.pop("learnt_bound_by_horizon", None)
+    elif sys.argv[4] == "held-error-decay":
+        if "options" in m:
+            m["options"]["realised_held_error_decay"] = on
     elif "options" in m:
         for key in ("realised_reference_blend", "realised_weight_by_absolute_error", "realised_held_error_decay"):
             m["options"][key] = on

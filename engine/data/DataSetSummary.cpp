@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -14,6 +15,13 @@
 namespace drytwin::data {
 
 namespace {
+
+/// The plausibility notes' limits (°C, K, factor): generous, so that a note means a unit or a
+/// column is wrong, not that the line is unusual.
+constexpr double kHottestPlausibleHotAirC = 260; // 500 °F; tobacco and grain lines run 120–250 °C
+constexpr double kHottestPlausibleAmbientC = 55; // the hottest air ever measured outdoors is 57 °C
+constexpr double kLargestPlausibleBatchShiftK = 50;
+constexpr double kLargestPlausibleBatchFactor = 5;
 
 /// What a reader must know but no single cell shows, in the batch's file: a sampling step other than
 /// the contract's 1 s, and a gap in time (a stop, a lost connection) that the model runs across as
@@ -57,52 +65,155 @@ void emptyColumnNote(const Batch& b, const Batch::NumericColumn& col, DataSetSum
     }
 }
 
+/// Column means in the contract's units (NaN where a column is absent or empty).
+using ColumnMeans = std::array<double, kColumnCount>;
+
 /// Columns each possible alone but impossible together, which a wrong unit or two swapped headers
 /// give (a fresh user's test: °F under a °C header, a moisture fraction under % wb, X_out and T_out
-/// swapped, each calibrated with exit 0): said as notes, with what to check. Means over the data
-/// set in the contract's units; the thresholds leave room for any product a pneumatic drier dries.
-void plausibilityNotes(DataSetSummary& s) {
-    const auto mean = [&s](Column c) {
-        const auto& col = s.columns[static_cast<std::size_t>(c)];
-        return col.present ? col.mean : std::numeric_limits<double>::quiet_NaN();
-    };
-    const double xIn = mean(Column::XIn), xOut = mean(Column::XOut);
-    const double tHot = mean(Column::THot), tHotSp = mean(Column::THotSp), tOut = mean(Column::TOut);
+/// swapped, each calibrated with exit 0). Each returns the note's text for @p m (a data set's or a
+/// batch's means), or nothing. The thresholds leave room for any product a pneumatic drier dries.
+std::vector<std::string> pairNotes(const ColumnMeans& m) {
+    const auto at = [&m](Column c) { return m[static_cast<std::size_t>(c)]; };
+    const double xIn = at(Column::XIn), xOut = at(Column::XOut);
+    const double tHot = at(Column::THot), tHotSp = at(Column::THotSp), tOut = at(Column::TOut);
+    const double tHdt = at(Column::THdt), tAmb = at(Column::TAmb);
+    std::vector<std::string> out;
     char text[512];
     if (xOut > xIn) {
         std::snprintf(text, sizeof text,
                       "X_out_pct (mean %.3g %% wb) is above X_in_pct (mean %.3g %% wb): a drier does not wet "
                       "its product; check that the columns are not swapped and are in %% wet basis",
                       xOut, xIn);
-        s.notes.push_back(text);
+        out.push_back(text);
     } else if (xOut > 0 && xIn > 100 * xOut) {
         std::snprintf(text, sizeof text,
                       "X_out_pct (mean %.3g %% wb) is below a hundredth of X_in_pct (mean %.3g %% wb): a "
                       "fraction (0.12) given for a percentage (12 %%)? Check its unit",
                       xOut, xIn);
-        s.notes.push_back(text);
+        out.push_back(text);
     }
     if (std::abs(tHot - tHotSp) > 30) {
         std::snprintf(text, sizeof text,
                       "T_hot_C (mean %.4g °C) is %.0f K from its setpoint T_hot_sp_C (mean %.4g °C): one of "
                       "them in another unit (°F, K) or another column? Check both",
                       tHot, std::abs(tHot - tHotSp), tHotSp);
-        s.notes.push_back(text);
+        out.push_back(text);
+    } else if (std::max(tHot, tHotSp) > kHottestPlausibleHotAirC) {
+        // Both in °F agree with each other: 160 °C of hot air reads 320.
+        std::snprintf(text, sizeof text,
+                      "T_hot_C (mean %.4g °C) is hotter than the hot air of the lines this model was built "
+                      "for (tobacco, grain: up to about 250 °C); °F (%.0f °F is %.0f °C) or K? Check its "
+                      "unit and T_hot_sp_C's",
+                      tHot, tHot, (tHot - 32) / 1.8);
+        out.push_back(text);
     }
-    const double tHdt = mean(Column::THdt);
     if (tOut > tHdt + 20) {
         std::snprintf(text, sizeof text,
                       "T_out_C (mean %.4g °C) is %.0f K above the tube outlet's T_hdt_C (mean %.4g °C): the "
                       "product cools on its way from the tube, it does not heat up; another unit (°F) or "
                       "swapped columns? Check both",
                       tOut, tOut - tHdt, tHdt);
-        s.notes.push_back(text);
+        out.push_back(text);
     } else if (tOut > tHot) {
         std::snprintf(text, sizeof text,
                       "T_out_C (mean %.4g °C) is above the hot air T_hot_C (mean %.4g °C) that heats the "
                       "product: another unit (°F) or swapped columns? Check both",
                       tOut, tHot);
-        s.notes.push_back(text);
+        out.push_back(text);
+    }
+    if (tAmb > kHottestPlausibleAmbientC) {
+        std::snprintf(text, sizeof text,
+                      "T_amb_C (mean %.3g °C) is hotter than any air a plant hall breathes (above %.0f °C); "
+                      "°F (%.0f °F is %.0f °C)? Check its unit",
+                      tAmb, kHottestPlausibleAmbientC, tAmb, (tAmb - 32) / 1.8);
+        out.push_back(text);
+    }
+    return out;
+}
+
+/// The data set's plausibility notes: each check on every batch's own means, so that one batch in
+/// another unit (a folder of files from two exports) is named rather than averaged away; a check
+/// every batch fails is said once, for the data set.
+void plausibilityNotes(const std::vector<ColumnMeans>& perBatch, const std::vector<std::string>& where,
+                       std::vector<std::string>& notes) {
+    std::map<std::string, std::vector<std::size_t>> failing; // note text → batches
+    std::vector<std::string> order;
+    for (std::size_t b = 0; b < perBatch.size(); ++b) {
+        for (const auto& text : pairNotes(perBatch[b])) {
+            // A note's numbers differ per batch: group by its first words (the check it is).
+            const std::string check = text.substr(0, text.find('('));
+            if (failing[check].empty()) {
+                order.push_back(check);
+            }
+            failing[check].push_back(b);
+        }
+    }
+    for (const auto& check : order) {
+        const auto& batches = failing[check];
+        if (batches.size() == perBatch.size() && perBatch.size() > 1) {
+            // Every batch: once, with the first batch's numbers.
+            for (const auto& text : pairNotes(perBatch[batches.front()])) {
+                if (text.rfind(check, 0) == 0) {
+                    notes.push_back("every batch: " + text);
+                }
+            }
+            continue;
+        }
+        for (std::size_t b : batches) {
+            for (const auto& text : pairNotes(perBatch[b])) {
+                if (text.rfind(check, 0) == 0) {
+                    notes.push_back(where[b] + ": " + text);
+                }
+            }
+        }
+    }
+}
+
+/// A batch whose column reads in another unit than the other batches' (°F among °C, a fraction
+/// among percentages, t/h among kg/h): its mean far from the median of the others' means, by more
+/// than any season or product change moves it. Needs two other batches to say which one is odd.
+void batchAgainstOthersNotes(const std::vector<ColumnMeans>& perBatch, const std::vector<std::string>& where,
+                             std::vector<std::string>& notes) {
+    if (perBatch.size() < 3) {
+        return;
+    }
+    for (const auto& c : columnSpecs()) {
+        if (c.id == Column::Time) {
+            continue;
+        }
+        const auto i = static_cast<std::size_t>(c.id);
+        const std::string_view unit = c.unit;
+        const bool temperature = unit == "°C";
+        for (std::size_t b = 0; b < perBatch.size(); ++b) {
+            std::vector<double> others;
+            for (std::size_t o = 0; o < perBatch.size(); ++o) {
+                if (o != b && std::isfinite(perBatch[o][i])) {
+                    others.push_back(perBatch[o][i]);
+                }
+            }
+            const double v = perBatch[b][i];
+            if (others.size() < 2 || !std::isfinite(v)) {
+                continue;
+            }
+            std::nth_element(others.begin(), others.begin() + static_cast<std::ptrdiff_t>(others.size() / 2),
+                             others.end());
+            const double median = others[others.size() / 2];
+            // Temperatures: further than a summer from a winter and any product's setpoint change
+            // (°F of 60 °C reads 140). The rest are positive amounts: a factor of five is a unit.
+            const bool odd = temperature ? std::abs(v - median) > kLargestPlausibleBatchShiftK
+                                         : median > 0 && v >= 0 &&
+                                               (v > kLargestPlausibleBatchFactor * median ||
+                                                v * kLargestPlausibleBatchFactor < median);
+            if (!odd) {
+                continue;
+            }
+            char text[512];
+            std::snprintf(text, sizeof text,
+                          ": %s reads %.4g %s on average, the other batches about %.4g (their median): "
+                          "this file in another unit (°F, K, a fraction, t/h) or another column? Check it",
+                          std::string(c.name).c_str(), v, std::string(unit).c_str(), median);
+            notes.push_back(where[b] + text);
+        }
     }
 }
 
@@ -128,8 +239,13 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
     // header, with the files it is in.
     std::map<std::pair<std::string, Column>, std::vector<std::string>> lookalikes;
     std::vector<std::size_t> listed(kColumnCount, 0), listedMissing(kColumnCount, 0);
+    std::vector<ColumnMeans> batchMeans;
+    std::vector<std::string> batchPlaces;
     for (std::size_t bi = 0; bi < data.batches.size(); ++bi) {
         const Batch& b = data.batches[bi];
+        ColumnMeans& means = batchMeans.emplace_back();
+        means.fill(std::numeric_limits<double>::quiet_NaN());
+        batchPlaces.push_back(b.sourcePath.empty() ? b.id : b.sourcePath);
         BatchSummary bs;
         const std::size_t missingBefore = s.missingCells.size();
         bs.id = b.id;
@@ -187,6 +303,8 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
                 }
             }
             emptyColumnNote(b, col, s);
+            double batchSum = 0;
+            std::size_t batchCount = 0;
             for (std::size_t r = 0; r < col.values.size(); ++r) {
                 const double v = col.values[r];
                 if (std::isnan(v)) {
@@ -203,6 +321,11 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
                 cs.max = std::max(cs.max, v);
                 sum[i] += v;
                 ++count[i];
+                batchSum += v;
+                ++batchCount;
+            }
+            if (batchCount > 0) {
+                means[i] = batchSum / static_cast<double>(batchCount);
             }
         }
         for (const auto& t : b.text) {
@@ -233,7 +356,8 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
         }
     }
     s.extraColumns.assign(extras.begin(), extras.end());
-    plausibilityNotes(s);
+    plausibilityNotes(batchMeans, batchPlaces, s.notes);
+    batchAgainstOthersNotes(batchMeans, batchPlaces, s.notes);
     for (const auto& [key, files] : lookalikes) {
         const auto& [header, id] = key;
         const ColumnSpec& contract = spec(id);

@@ -322,6 +322,32 @@ private Q_SLOTS:
         QVERIFY(w.statusBar()->findChild<QLabel*>()->text().contains("bad.csv"));
     }
 
+    // A folder with one batch in °F: the Data tab names it, every note in the summary's tooltip.
+    void aBatchInAnotherUnitIsNamedOnTheDataTab() {
+        QTemporaryDir dir;
+        const auto batch = [&](const QString& id, double hotAirC) {
+            QString text = "# batch: " + id +
+                           "\ntime_s,T_hot_C,feed_kg_h,X_in_pct,T_amb_C,RH_amb_pct,X_out_pct,T_out_C\n";
+            for (int i = 0; i < 3; ++i) {
+                text += QString("%1,%2,6000,22,20,50,12.5,55\n").arg(i).arg(hotAirC + 0.1 * i);
+            }
+            writeText(dir.filePath(id + ".csv"), text.toStdString());
+        };
+        batch("B01", 170);
+        batch("B02", 171);
+        batch("B03", 169);
+        batch("B04", 338); // °F under a °C header
+        MainWindow w;
+        QSignalSpy loaded(&w, &MainWindow::loadFinished);
+        w.workbench().openData(dir.path());
+        QVERIFY(loaded.wait(10000));
+        QCOMPARE(loaded.takeFirst().at(0).toBool(), true);
+        const QString tip = w.dataPanel()->cleaningSummary()->toolTip();
+        QVERIFY2(tip.contains("B04.csv: T_hot_C reads 338.1 °C on average, the other batches about 170"),
+                 qPrintable(tip));
+        QVERIFY2(!tip.contains("B01.csv"), qPrintable(tip));
+    }
+
     void foreignColumnNamesAreMappedAndLoaded() {
         QTemporaryDir dir;
         writeText(dir.filePath("plant.csv"),

@@ -262,6 +262,16 @@ void DataPanel::fill() {
         (!m_keptMappingPath.isEmpty() && m_workbench.mappingPath() == m_keptMappingPath
              ? QStringLiteral("\n") + m_keptMappingNote
              : QString()));
+    // Every note in full where the line above has room for the first: a folder with a batch in
+    // another unit can carry several, each naming its file.
+    QStringList allNotes;
+    for (const auto& note : summary.notes) {
+        allNotes << QString::fromStdString(note);
+    }
+    m_cleaning->setToolTip(allNotes.isEmpty()
+                               ? QString()
+                               : tr("Noted while reading (%1):").arg(allNotes.size()) +
+                                     QStringLiteral("\n• ") + allNotes.join(QStringLiteral("\n• ")));
     if (!si.empty()) {
         selectBatches({0});
     }

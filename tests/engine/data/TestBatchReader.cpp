@@ -151,6 +151,70 @@ private Q_SLOTS:
                  refused.error().message().c_str());
     }
 
+    // One batch of a folder in another unit (a folder of files from two exports: X_out as a
+    // fraction, the hot air in °F) is named, not averaged away with the rest (a newcomer's folder
+    // loaded with exit 0 and a calibration on garbage); a data set wholly in °F is noted too.
+    void aBatchInAnotherUnitThanTheOthersIsNamed() {
+        const auto batchText = [](const std::string& id, double xOut, double hotAirC, double ambientC) {
+            std::string s = "# batch: " + id + "\n" + std::string(kHeader) + "\n";
+            for (int i = 0; i < 3; ++i) {
+                char buf[256];
+                std::snprintf(buf, sizeof buf, "%d,%g,%g,16,6200,22,25,%g,55,14,58,%g,55.2", i, hotAirC + 0.5,
+                              hotAirC, ambientC, xOut);
+                s += std::string(buf) + "\n";
+            }
+            return s;
+        };
+        const auto has = [](const std::vector<std::string>& notes, const std::string& a,
+                            const std::string& b) {
+            return std::any_of(notes.begin(), notes.end(), [&](const std::string& n) {
+                return n.find(a) != std::string::npos && n.find(b) != std::string::npos;
+            });
+        };
+        const auto joined = [](const std::vector<std::string>& notes) {
+            std::string all;
+            for (const auto& n : notes) {
+                all += n + "\n";
+            }
+            return all;
+        };
+        QTemporaryDir dir;
+        writeText(dir.filePath("B01.csv"), batchText("B01", 12.8, 169.5, 24));
+        writeText(dir.filePath("B02.csv"), batchText("B02", 12.9, 170.0, 25));
+        writeText(dir.filePath("B03.csv"), batchText("B03", 13.0, 168.0, 23));
+        writeText(dir.filePath("B04.csv"), batchText("B04", 12.8, 337.1, 24));  // hot air in °F
+        writeText(dir.filePath("B05.csv"), batchText("B05", 0.128, 169.0, 24)); // X_out a fraction
+        const auto loaded = loadDataSet(dir.path().toStdString());
+        QVERIFY(loaded.ok());
+        const auto notes = summarize(loaded.dataSet).notes;
+        QVERIFY2(has(notes, "B04.csv", "T_hot_C reads 337.1 °C on average, the other batches about 169.5"),
+                 joined(notes).c_str());
+        QVERIFY2(has(notes, "B04.csv", "T_hot_C (mean 337.1 °C) is hotter than the hot air"),
+                 joined(notes).c_str());
+        QVERIFY2(has(notes, "B05.csv", "X_out_pct reads 0.128 % wb on average"), joined(notes).c_str());
+        QVERIFY2(has(notes, "B05.csv", "below a hundredth of X_in_pct"), joined(notes).c_str());
+        // Only the odd batches are named.
+        for (const char* fine : {"B01.csv", "B02.csv", "B03.csv"}) {
+            QVERIFY2(!has(notes, fine, ""), joined(notes).c_str());
+        }
+        // Every batch in °F, ambient too: said once, for the data set.
+        QTemporaryDir allF;
+        for (const char* id : {"B01", "B02", "B03"}) {
+            writeText(allF.filePath(QString(id) + ".csv"), batchText(id, 12.8, 337.1, 75.2));
+        }
+        const auto fahrenheit = loadDataSet(allF.path().toStdString());
+        QVERIFY(fahrenheit.ok());
+        const auto allNotes = summarize(fahrenheit.dataSet).notes;
+        QVERIFY2(has(allNotes, "every batch: ", "T_hot_C (mean 337.1 °C) is hotter than the hot air"),
+                 joined(allNotes).c_str());
+        QVERIFY2(has(allNotes, "every batch: ", "T_amb_C (mean 75.2 °C) is hotter than any air"),
+                 joined(allNotes).c_str());
+        QCOMPARE(
+            std::count_if(allNotes.begin(), allNotes.end(),
+                          [](const std::string& n) { return n.find("T_hot_C (mean") != std::string::npos; }),
+            std::ptrdiff_t(1));
+    }
+
     // An outlet transmitter that never moves over ten minutes or more is frozen, even where the
     // column has too few changes to say what is usual for it; five minutes of it are not.
     void anOutletThatNeverMovesIsFrozen() {
