@@ -21,7 +21,7 @@ namespace {
 constexpr double kHottestPlausibleHotAirC = 260; // 500 °F; tobacco and grain lines run 120–250 °C
 constexpr double kHottestPlausibleAmbientC = 55; // the hottest air ever measured outdoors is 57 °C
 constexpr double kLargestPlausibleBatchShiftK = 50;
-constexpr double kLargestPlausibleBatchFactor = 5;
+constexpr double kLargestPlausibleBatchFactor = 10; // RH may go from 12 to 90 %; a unit moves ×100
 
 /// What a reader must know but no single cell shows, in the batch's file: a sampling step other than
 /// the contract's 1 s, and a gap in time (a stop, a lost connection) that the model runs across as
@@ -199,7 +199,7 @@ void batchAgainstOthersNotes(const std::vector<ColumnMeans>& perBatch, const std
                              others.end());
             const double median = others[others.size() / 2];
             // Temperatures: further than a summer from a winter and any product's setpoint change
-            // (°F of 60 °C reads 140). The rest are positive amounts: a factor of five is a unit.
+            // (°F of 60 °C reads 140). The rest are positive amounts: a factor of ten is a unit.
             const bool odd = temperature ? std::abs(v - median) > kLargestPlausibleBatchShiftK
                                          : median > 0 && v >= 0 &&
                                                (v > kLargestPlausibleBatchFactor * median ||
