@@ -151,6 +151,21 @@ private Q_SLOTS:
                  refused.error().message().c_str());
     }
 
+    // A UTF-8 byte-order mark (Excel's "CSV UTF-8") before the "# batch:" line: the batch keeps
+    // its name and nothing is taken for a title line.
+    void aByteOrderMarkKeepsTheBatchMetadata() {
+        const auto loaded = loadOneFile("\xEF\xBB\xBF" + goodFile(3));
+        QVERIFY(loaded.ok());
+        QCOMPARE(loaded.dataSet.batches.size(), std::size_t(1));
+        QCOMPARE(loaded.dataSet.batches[0].id, std::string("B07"));
+        QCOMPARE(loaded.dataSet.batches[0].metadata("line"), std::string("2"));
+        const auto notes = summarize(loaded.dataSet).notes;
+        QVERIFY2(
+            std::none_of(notes.begin(), notes.end(),
+                         [](const std::string& n) { return n.find("title lines") != std::string::npos; }),
+            notes.empty() ? "" : notes.front().c_str());
+    }
+
     // One batch of a folder in another unit (a folder of files from two exports: X_out as a
     // fraction, the hot air in °F) is named, not averaged away with the rest (a newcomer's folder
     // loaded with exit 0 and a calibration on garbage); a data set wholly in °F is noted too.
