@@ -145,7 +145,9 @@ Status SelectionRound::tryFitted() {
         }
         m_record.best = cand.cause;
         // The round reports the cause it named, not the first one tried (which the finding's own
-        // numbers would then contradict).
+        // numbers would then contradict); its reason is for a round that names nothing, and the
+        // first candidate's rejection stays in `rejected`.
+        m_record.reason.clear();
         m_record.heldOutPValue = conf.pValue;
         m_record.explainedFraction = conf.explained;
         m_record.explainedFractionFast = conf.explainedFast;

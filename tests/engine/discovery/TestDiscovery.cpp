@@ -25,6 +25,13 @@ discovery::DiscoveryResult discoverIn(const plant::PlantOptions& o) {
     if (!r) {
         qFatal("%s", r.error().message().c_str());
     }
+    // A round that names its cause carries no reason to stop (a newcomer found a named round
+    // with the first-tried candidate's rejection as its reason in discover.json).
+    for (const auto& rd : r->rounds) {
+        if (rd.named && !rd.reason.empty()) {
+            qFatal("round naming %s carries a reason: %s", rd.best.c_str(), rd.reason.c_str());
+        }
+    }
     return *r;
 }
 
