@@ -337,6 +337,31 @@ std::string unwritableReason(const std::string& path) {
     return {};
 }
 
+/// Why a folder a command writes into cannot be made or written at @p path (a file there, the
+/// folder or the nearest folder above it that exists not writable), or "" when it can.
+std::string unwritableFolderReason(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::path folder = fs::absolute(fs::path(path), ec);
+    if (ec) {
+        return {};
+    }
+    if (fs::exists(folder, ec) && !fs::is_directory(folder, ec)) {
+        return "is a file, not a folder";
+    }
+    // The folder itself, or the nearest one above it that exists (where it would be made).
+    while (!fs::exists(folder, ec) && folder.has_parent_path() && folder.parent_path() != folder) {
+        folder = folder.parent_path();
+    }
+    if (!fs::is_directory(folder, ec)) {
+        return "'" + folder.string() + "' is a file, not a folder";
+    }
+    if (::access(folder.c_str(), W_OK) != 0) {
+        return "the folder '" + folder.string() + "' is not writable";
+    }
+    return {};
+}
+
 } // namespace
 
 ParsedCommandLine CommandLine::parse(int argc, char** argv) {
@@ -363,10 +388,13 @@ ParsedCommandLine CommandLine::parse(int argc, char** argv) {
              {std::pair<const char*, const std::string*>{"--out", &m_impl->options.outPath},
               {"--json", &m_impl->options.jsonPath},
               {"--diagnostics", &m_impl->options.diagnosticsPath}}) {
-            if (path->empty() || (writesFolder && std::string(flag) == "--out")) {
+            if (path->empty()) {
                 continue;
             }
-            const std::string why = unwritableReason(*path);
+            // The same for a folder the command makes: wrong usage (2), as for a file, not bad
+            // input data (3), which a newcomer got from generate and pipeline.
+            const bool folder = writesFolder && std::string(flag) == "--out";
+            const std::string why = folder ? unwritableFolderReason(*path) : unwritableReason(*path);
             if (!why.empty()) {
                 std::fprintf(stderr, "drytwin: error: %s %s: %s\n",
                              name == "discover" && std::string(flag) == "--out" ? "--out-model" : flag,
