@@ -228,7 +228,10 @@ CommandLine::CommandLine() : m_impl(new Impl) {
         "model file to start from (default: the paper's parameters, h_HDT and k_HDT fitted first)");
     discover->add_option("--json", o.jsonPath,
                          "write the findings as JSON (what they mean: docs/discovery.md)");
-    discover->add_option("--out-model", o.outPath, "write the extended model file here");
+    discover->add_option(
+        "--out-model", o.outPath,
+        "write the model for forecasting here: the physics extended by the named causes with "
+        "PGRL-CC retrained on it, or the starting model where that forecasts worse (said)");
     discover->add_option("--max-causes", o.maxCauses, "causes added one at a time, at most")
         ->capture_default_str();
     discover

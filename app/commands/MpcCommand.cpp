@@ -76,8 +76,9 @@ int runMpc(const CommandOptions& o) {
         r.scenario.name.c_str(), std::string(plant::plantKindName(r.scenario.plant)).c_str(),
         std::string(r.scenario.instrumentsName()).c_str(), r.scenario.lengthS, r.scenario.warmupS,
         r.scenario.controlIntervalS, r.scenario.bandPct);
-    std::printf("\n%-20s %12s %12s %10s %11s %11s %11s %9s %12s\n", "controller", "IAE [%*s]", "effort [K^2]",
-                "viol. [%]", "solve med", "solve max", "model med", "fallback", "gain [%/K]");
+    std::printf("\n%-20s %12s %12s %10s %11s %11s %11s %9s %12s\n", "controller", "IAE [% wb*s]",
+                "effort [K^2]", "viol. [%]", "solve med", "solve max", "model med", "fallback",
+                "gain [%wb/K]");
     for (const auto& run : r.runs) {
         if (!run.ran) {
             std::printf("%-20s skipped: %s\n", control::controllerName(run.kind), run.skippedReason.c_str());

@@ -77,7 +77,7 @@ int runPipeline(const CommandOptions& o) {
     std::printf("\n== mpc (%s) ==\n", r.mpc.closedLoop.scenario.name.c_str());
     for (const auto& run : r.mpc.closedLoop.runs) {
         if (run.ran) {
-            std::printf("%-20s IAE %8.1f %%*s, effort %8.1f K^2, violations %5.1f %%\n",
+            std::printf("%-20s IAE %8.1f %% wb*s, effort %8.1f K^2, violations %5.1f %%\n",
                         control::controllerName(run.kind), run.metrics.iaePctS, run.metrics.effortK2,
                         run.metrics.violationPct);
         }

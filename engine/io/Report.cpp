@@ -45,9 +45,9 @@ std::string mpcSection(const json& m) {
          std::to_string(sc.value("control_interval_s", 0)) + " s. " + sc.value("description", std::string()) +
          " IAE and violations (outside the setpoint ± " + num(sc["band_pct"], "%.2g") +
          " % wb) are scored on the product's true outlet moisture; one MPC tuning for every model.\n\n";
-    r += "| controller | IAE [%·s] | effort Σ Δu² [K²] | violations [%] | solve median / max [ms] | "
+    r += "| controller | IAE [% wb·s] | effort Σ Δu² [K²] | violations [%] | solve median / max [ms] | "
          "fallbacks | "
-         "model gain [%/K] |\n| --- | --- | --- | --- | --- | --- | --- |\n";
+         "model gain [% wb/K] |\n| --- | --- | --- | --- | --- | --- | --- |\n";
     std::string best;
     double bestIae = 1e300;
     for (const auto& [name, c] : m["controllers"].items()) {
@@ -370,8 +370,14 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
             const auto& h = d["hybrid"];
             const auto& persistence = h["references"]["persistence"];
             const auto& held = h["references"]["pbm_residual_hold"];
-            r += "\nOne step ahead on the held-out part, starting → extended physics model (model written: " +
-                 h.value("model_kept", std::string()) +
+            // Which model was written, in words: "extended" read as a claim where nothing was named.
+            const bool named = d.contains("findings") && !d["findings"].empty();
+            const std::string written =
+                !named ? "nothing was named, so the model written is the starting one"
+                : h.value("model_kept", std::string()) == "starting"
+                    ? "the model written is the starting one: PGRL-CC forecasts worse on the extended one"
+                    : "the model written is the extended one";
+            r += "\nOne step ahead on the held-out part, starting → extended physics model (" + written +
                  "):\n\n| forecast | MAE X_out [% wb] | MAE T_out [°C] |\n| --- | --- | --- |\n"
                  "| PGRL-CC retrained on each | " +
                  num(h["mae_moisture_before"]) + " → " + num(h["mae_moisture_after"]) + " | " +

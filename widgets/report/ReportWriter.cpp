@@ -143,9 +143,9 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
 
     // Calibration.
     const auto& c = r.calibrate.calibration;
-    both((QStringLiteral(
-              "<h2>Calibration</h2><p>%1, %2 evaluations; loss %3 → %4; outlet MAE %5 → %6 % wb and %8 → %9 "
-              "°C. Intervals: %7.</p>") +
+    both((QStringLiteral("<h2>Calibration</h2><p>%1, %2 evaluations; loss %3 → %4; MAE of the outlet "
+                         "moisture %5 → %6 % wb, "
+                         "of the outlet temperature %8 → %9 °C. Intervals: %7.</p>") +
           tableHead({{QStringLiteral("parameter"), 30},
                      {QStringLiteral("estimate"), 20},
                      {QStringLiteral("95 % interval"), 35},
