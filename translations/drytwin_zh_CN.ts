@@ -976,6 +976,74 @@
     </message>
 </context>
 <context>
+    <name>ResidualPanel</name>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="351"/>
+        <source>PGRL-CC, all components</source>
+        <translation>PGRL-CC，全部组成部分</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="352"/>
+        <source>1. no a_w clamping</source>
+        <translation>1. 不截断 a_w</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="353"/>
+        <source>2. no L_v correction</source>
+        <translation>2. 不修正 L_v</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="354"/>
+        <source>3. no C_p(X) dependency</source>
+        <translation>3. C_p 不随 X 变化</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="356"/>
+        <source>E. energy balance as printed (Eqs. 12, 14, 19 count C_p,w (T - T_ref) twice)</source>
+        <translation>E. 按论文原式的能量平衡（式 12、14、19 将 C_p,w (T - T_ref) 计了两次）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="359"/>
+        <source>E. consistent energy balance (L_v only)</source>
+        <translation>E. 自洽的能量平衡（仅 L_v）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="361"/>
+        <source>4. no orthogonal learning (P_perp)</source>
+        <translation>4. 不做正交学习（P_perp）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="363"/>
+        <source>4. with orthogonal learning (P_perp, Eq. 27; the trained model has none)</source>
+        <translation>4. 加正交学习（P_perp，式 27；已训练的模型未使用）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="366"/>
+        <source>4b. Eq. 27 read literally (base part of e dropped from the prediction)</source>
+        <translation>4b. 按字面理解式 27（预测中去掉 e 的基础部分）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="368"/>
+        <source>5. no control-consistent weights</source>
+        <translation>5. 不用控制一致权重</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="370"/>
+        <source>6. no stability constraint (EDMDc-S)</source>
+        <translation>6. 无稳定性约束（EDMDc-S）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="372"/>
+        <source>6b. eigenvalues pulled in after an unconstrained fit instead of Eq. 30</source>
+        <translation>6b. 无约束拟合后收缩特征值，代替式 30</translation>
+    </message>
+    <message>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="375"/>
+        <source>7. the paper&apos;s lifted model of e itself (the trivial predictors not nested)</source>
+        <translation>7. 论文对 e 本身的提升模型（不嵌套平凡预测）</translation>
+    </message>
+</context>
+<context>
     <name>ScenarioForm</name>
     <message>
         <location filename="../widgets/mpc/ScenarioForm.cpp" line="40"/>
@@ -1614,6 +1682,7 @@
     </message>
     <message>
         <location filename="../widgets/data/DataPanel.cpp" line="259"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="273"/>
         <source>Noted while reading (%1):</source>
         <translation>读取时的提示（%1）：</translation>
     </message>
@@ -4008,7 +4077,7 @@ The results below are from the last complete run.</source>
 <context>
     <name>drytwin::widgets::ResidualPanel</name>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="31"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="35"/>
         <source>chosen by validation (16, 32, 60)</source>
         <translation>由验证选择（16、32、60）</translation>
     </message>
@@ -4033,22 +4102,22 @@ The results below are from the last complete run.</source>
         <translation>残差滞后阶数</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="52"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="56"/>
         <source>stability</source>
         <translation>稳定性</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="56"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="60"/>
         <source>Trains on the chronological 70 % and evaluates on the rest; settings are chosen inside the training part.</source>
         <translation>按时间顺序用前 70 % 训练，其余部分评估；设置在训练部分内选定。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="59"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="63"/>
         <source>Run a What-if MPC scenario to compare each model&apos;s steady gain of X_out to the hot air with the plant&apos;s.</source>
         <translation>运行一次假设 MPC 情景，即可将各模型 X_out 对热风的稳态增益与装置的增益比较。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="62"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="66"/>
         <source>Model</source>
         <translation>模型</translation>
     </message>
@@ -4073,12 +4142,12 @@ The results below are from the last complete run.</source>
         <translation>30 步预报技巧</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="74"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="78"/>
         <source>imaginary part</source>
         <translation>虚部</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="75"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="79"/>
         <source>real part</source>
         <translation>实部</translation>
     </message>
@@ -4087,23 +4156,23 @@ The results below are from the last complete run.</source>
         <translation>预报技巧：MAE 与较优参考之比 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="80"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="84"/>
         <source>forecast horizon [steps of 1 s]</source>
         <translation>预测步长 [1 s 步]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="83"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="115"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="87"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="119"/>
         <source>Ablation (paper Table 3)</source>
         <translation>消融实验（论文表 3）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="84"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="88"/>
         <source>Train and evaluate every variant of Table 3 on this model (a few minutes)</source>
         <translation>在此模型上训练并评估表 3 的每个变体（需几分钟）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="86"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="90"/>
         <source>Variant</source>
         <translation>变体</translation>
     </message>
@@ -4112,207 +4181,208 @@ The results below are from the last complete run.</source>
         <translation>MAE X_out（外推）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="34"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="38"/>
         <source>guaranteed stable (fit under a stability certificate)</source>
         <translation>保证稳定（在稳定性证书约束下拟合）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="35"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="39"/>
         <source>stabilised after the fit (eigenvalues pulled in)</source>
         <translation>拟合后再稳定化（特征值拉回）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="36"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="40"/>
         <source>Paper Eq. 30: the correction model&apos;s state matrix A is fitted under the constraint α²P − AᵀPA ≻ 0 with a certificate P; the alternative pulls A&apos;s eigenvalues inside the unit circle after an unconstrained fit.</source>
         <translation>论文公式 30：修正模型的状态矩阵 A 在约束 α²P − AᵀPA ≻ 0（证书 P）下拟合；另一种做法是先无约束拟合，再把 A 的特征值拉回单位圆内。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="39"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="43"/>
         <source>keep the correction out of the hot-air direction</source>
         <translation>修正不进入热风方向</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="40"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="44"/>
         <source>Paper Eq. 27: the orthogonal projection P⊥ removes from the correction what the manipulated input explains, so that the control gain stays the physics model&apos;s.</source>
         <translation>论文公式 27：正交投影 P⊥ 从修正中去掉操纵输入所能解释的部分，使控制增益保持为物理模型的增益。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="44"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="48"/>
         <source>Learn the correction models</source>
         <translation>学习修正模型</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="45"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="49"/>
         <source>Trains PGRL-CC (paper Eqs. 20–30) on the chronological 70 % of the data, and the two models it is compared with: the input-only correction and an LSTM</source>
         <translation>在按时间顺序的前 70 % 数据上训练 PGRL-CC（论文公式 20–30）及两个对比模型：仅输入修正和 LSTM</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="49"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="53"/>
         <source>How many past seconds of the error the correction model sees (paper: residual lags)</source>
         <translation>修正模型能看到的过去误差秒数（论文：残差滞后阶数）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="51"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="55"/>
         <source>memory of the error [s]</source>
         <translation>误差记忆 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="62"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="86"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="66"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="90"/>
         <source>MAE X_out
 [% wb]</source>
         <translation>MAE X_out
 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="62"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="86"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="66"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="90"/>
         <source>R² X_out
 [-]</source>
         <translation>R² X_out
 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="63"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="87"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="67"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="91"/>
         <source>MAE T_out
 [°C]</source>
         <translation>MAE T_out
 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="63"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="67"/>
         <source>skill
 1 step</source>
         <translation>预报技巧
 1 步</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="63"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="67"/>
         <source>skill
 30 steps</source>
         <translation>预报技巧
 30 步</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="65"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="69"/>
         <source>Mean absolute error of the outlet moisture on the held-out part.</source>
         <translation>留出部分上出口含水率的平均绝对误差。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="66"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="70"/>
         <source>R²: the share of the outlet moisture&apos;s variation the model explains (1: all; below 0: worse than the mean).</source>
         <translation>R²：模型解释的出口含水率变化所占比例（1：全部；低于 0：不如均值）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="68"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="72"/>
         <source>Mean absolute error of the outlet temperature on the held-out part.</source>
         <translation>留出部分上出口温度的平均绝对误差。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="69"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="73"/>
         <source>Skill one second ahead: the model&apos;s error over the better of two simple forecasts; below 1 it beats both.</source>
         <translation>提前 1 秒的预报技巧：模型误差除以两个简单预测中较好者的误差；小于 1 即优于二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="71"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="75"/>
         <source>Skill 30 seconds ahead, alike.</source>
         <translation>提前 30 秒的预报技巧，含义相同。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="77"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="81"/>
         <source>skill [-]</source>
         <translation>预报技巧 [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="78"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="82"/>
         <source>Skill: a model&apos;s MAE over the better of the two reference forecasts at that horizon; below 1 it beats both</source>
         <translation>预报技巧：模型在该步长上的 MAE 除以两个参考预测中较好者的 MAE；小于 1 即优于二者</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="87"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="91"/>
         <source>MAE X_out,
 extrapolation</source>
         <translation>MAE X_out，
 外推</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="88"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="92"/>
         <source>Learn the correction models to see the eigenvalues of their state matrix</source>
         <translation>学习修正模型后可看到其状态矩阵的特征值</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="89"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="93"/>
         <source>Learn the correction models to see their skill by forecast horizon</source>
         <translation>学习修正模型后可看到其随预测步长的预报技巧</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="114"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="118"/>
         <source>Held-out accuracy</source>
         <translation>留出集精度</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="130"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="134"/>
         <source>Learnt. Scoring the models on the held-out part…</source>
         <translation>已学习。正在留出部分上评估模型…</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="167"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="171"/>
         <source>%1 %2 (%3 %)</source>
         <translation>%1 %2（%3 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="174"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="178"/>
         <source>Steady gain of X_out to the hot-air setpoint [% wb per K] at the scenario&apos;s start: the plant (open-loop step test) %1; each model as its MPC saw it, and how far from the plant&apos;s: %2. A learnt residual&apos;s response to the setpoint plan comes from the physics model, since data under the plant&apos;s own loop cannot tell it from the disturbances the loop answered.</source>
         <translation>情景起点处 X_out 对热风设定值的稳态增益 [% 湿基/K]：装置（开环阶跃试验）%1；各模型在其 MPC 中的增益及与装置的偏差：%2。学习得到的残差对设定值计划的响应取自物理模型，因为装置自身闭环下的数据无法将其与闭环所应对的扰动区分开。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="203"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="207"/>
         <source>Training…</source>
         <translation>正在训练…</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="217"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="221"/>
         <source>Learn the correction models on %1: they train on the chronological 70 % and are scored on the rest.</source>
         <translation>在 %1 上学习修正模型：用按时间顺序的前 70 % 训练，其余部分评分。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="220"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="224"/>
         <source>Open a data set first (File ▸ Open data set folder…, or the bundled demo).</source>
         <translation>请先打开数据集（文件 ▸ 打开数据集文件夹…，或自带演示数据）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="243"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="247"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="408"/>
         <source>Key: %1</source>
         <translation>代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="255"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="259"/>
         <source>skill 1 (ties the better reference)</source>
         <translation>预报技巧 1（与较优参考持平）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="265"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="269"/>
         <source>unit circle</source>
         <translation>单位圆</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="279"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="283"/>
         <source>A unconstrained (ρ = %1)</source>
         <translation>无约束 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="286"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="290"/>
         <source>A with Eq. 30 (ρ = %1)</source>
         <translation>式 30 约束后的 A（ρ = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="324"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="328"/>
         <source> Slowest contraction of A: %1 per step (half-life %2 s).</source>
         <translation> A 的最慢收缩：每步 %1（半衰期 %2 s）。</translation>
     </message>
     <message>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="329"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="333"/>
         <source>On %1, held-out part: %2 rows. Skill below 1 beats both reference predictors (the last measurement held, and the physics model with its last error held). R² below 0 means a model predicts worse than the batch&apos;s mean (hover an R² for what it says).</source>
         <translation>数据 %1，留出部分：%2 行。预报技巧小于 1 表示优于两个参考预测（保持最后测量值；物理模型保持最后误差）。R² 小于 0 表示模型预测比批次均值还差（鼠标悬停在 R² 上可看说明）。</translation>
     </message>
@@ -5350,7 +5420,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/common/Workbench.cpp" line="538"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="144"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="148"/>
         <source>Learn the correction models</source>
         <translation>学习修正模型</translation>
     </message>
@@ -5404,7 +5474,7 @@ extrapolation</source>
     </message>
     <message>
         <location filename="../widgets/common/Workbench.cpp" line="614"/>
-        <location filename="../widgets/residual/ResidualPanel.cpp" line="145"/>
+        <location filename="../widgets/residual/ResidualPanel.cpp" line="149"/>
         <source>Ablation</source>
         <translation>消融实验</translation>
     </message>

@@ -8,6 +8,19 @@ import re
 import sys
 
 ZH = {
+    "PGRL-CC, all components": "PGRL-CC，全部组成部分",
+    "1. no a_w clamping": "1. 不截断 a_w",
+    "2. no L_v correction": "2. 不修正 L_v",
+    "3. no C_p(X) dependency": "3. C_p 不随 X 变化",
+    "E. energy balance as printed (Eqs. 12, 14, 19 count C_p,w (T - T_ref) twice)": "E. 按论文原式的能量平衡（式 12、14、19 将 C_p,w (T - T_ref) 计了两次）",
+    "E. consistent energy balance (L_v only)": "E. 自洽的能量平衡（仅 L_v）",
+    "4. no orthogonal learning (P_perp)": "4. 不做正交学习（P_perp）",
+    "4. with orthogonal learning (P_perp, Eq. 27; the trained model has none)": "4. 加正交学习（P_perp，式 27；已训练的模型未使用）",
+    "4b. Eq. 27 read literally (base part of e dropped from the prediction)": "4b. 按字面理解式 27（预测中去掉 e 的基础部分）",
+    "5. no control-consistent weights": "5. 不用控制一致权重",
+    "6. no stability constraint (EDMDc-S)": "6. 无稳定性约束（EDMDc-S）",
+    "6b. eigenvalues pulled in after an unconstrained fit instead of Eq. 30": "6b. 无约束拟合后收缩特征值，代替式 30",
+    "7. the paper's lifted model of e itself (the trivial predictors not nested)": "7. 论文对 e 本身的提升模型（不嵌套平凡预测）",
     "The held-out part: the last 30 % of the rows, batches in time order (the Residual model tab's split); every fit saw only the rows before it.": "留出部分：按时间顺序排列批次后最后 30 % 的行（与“残差模型”标签页的划分相同）；每次拟合只看到它之前的行。",
     "Before: discovery's starting model, with h_HDT, k_HDT and the inlet gauge's scatter fitted to these data's training rows (or as commissioned on the reference period). It can differ from the Calibrate tab's model, and so from the physics model's error on the Residual model tab.": "之前：发现功能的起始模型，其 h_HDT、k_HDT 和入口测量仪散布按这些数据的训练行拟合（或按参考期调试所得）。它可能与“标定”标签页的模型不同，因此也可能与“残差模型”标签页上物理模型的误差不同。",
     "It goes on from the start of %1.": "它从 %1 的开始起持续存在。",

@@ -1,5 +1,7 @@
 #include "residual/ResidualPanel.h"
 
+#include <map>
+
 #include "common/DisplayNames.h"
 #include "common/EqualAspect.h"
 #include "common/ModelStateBar.h"
@@ -9,6 +11,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -19,6 +22,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <cmath>
+#include <map>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
 #include <qwt_symbol.h>
@@ -338,6 +342,47 @@ void ResidualPanel::showEvaluation() {
 
 namespace drytwin::widgets {
 
+namespace {
+
+/// An ablation variant in the window's language (the engine's description is English, for the
+/// report and the CLI); a variant this list does not know keeps the engine's words.
+QString ablationVariantLabel(const std::string& key, const std::string& engineDescription) {
+    static const std::map<std::string, const char*> labels = {
+        {"full", QT_TRANSLATE_NOOP("ResidualPanel", "PGRL-CC, all components")},
+        {"no_aw_clamp", QT_TRANSLATE_NOOP("ResidualPanel", "1. no a_w clamping")},
+        {"no_lv_correction", QT_TRANSLATE_NOOP("ResidualPanel", "2. no L_v correction")},
+        {"no_cp_moisture", QT_TRANSLATE_NOOP("ResidualPanel", "3. no C_p(X) dependency")},
+        {"paper_energy_balance",
+         QT_TRANSLATE_NOOP("ResidualPanel",
+                           "E. energy balance as printed (Eqs. 12, 14, 19 count C_p,w (T - T_ref) twice)")},
+        {"consistent_energy_balance",
+         QT_TRANSLATE_NOOP("ResidualPanel", "E. consistent energy balance (L_v only)")},
+        {"no_orthogonal_projection",
+         QT_TRANSLATE_NOOP("ResidualPanel", "4. no orthogonal learning (P_perp)")},
+        {"orthogonal_projection",
+         QT_TRANSLATE_NOOP("ResidualPanel",
+                           "4. with orthogonal learning (P_perp, Eq. 27; the trained model has none)")},
+        {"literal_eq27",
+         QT_TRANSLATE_NOOP("ResidualPanel",
+                           "4b. Eq. 27 read literally (base part of e dropped from the prediction)")},
+        {"no_cc_weights", QT_TRANSLATE_NOOP("ResidualPanel", "5. no control-consistent weights")},
+        {"no_stability_constraint",
+         QT_TRANSLATE_NOOP("ResidualPanel", "6. no stability constraint (EDMDc-S)")},
+        {"eigenvalue_pull",
+         QT_TRANSLATE_NOOP("ResidualPanel",
+                           "6b. eigenvalues pulled in after an unconstrained fit instead of Eq. 30")},
+        {"level_form",
+         QT_TRANSLATE_NOOP("ResidualPanel",
+                           "7. the paper's lifted model of e itself (the trivial predictors not nested)")},
+    };
+    if (const auto it = labels.find(key); it != labels.end()) {
+        return QCoreApplication::translate("ResidualPanel", it->second);
+    }
+    return QString::fromStdString(engineDescription.empty() ? key : engineDescription);
+}
+
+} // namespace
+
 void ResidualPanel::showAblation() {
     const auto& a = m_workbench.latest().ablation;
     if (!a) {
@@ -347,17 +392,20 @@ void ResidualPanel::showAblation() {
     m_ablation->setRowCount(static_cast<int>(a->rows.size()));
     for (std::size_t i = 0; i < a->rows.size(); ++i) {
         const auto& r = a->rows[i];
-        // The paper's words for the variant (English: they name equations), its key as tooltip.
+        // The paper's words for the variant in the window's language; in full and with its key
+        // (what the CLI and ablation.json call it) as tooltip, for a column too narrow to show it.
         setTableRow(m_ablation, static_cast<int>(i),
-                    {QString::fromStdString(r.description.empty() ? r.variant : r.description),
-                     QString::number(r.maeMoisture, 'f', 4), QString::number(r.r2Moisture, 'f', 3),
-                     QString::number(r.maeTemperature, 'f', 4),
+                    {ablationVariantLabel(r.variant, r.description), QString::number(r.maeMoisture, 'f', 4),
+                     QString::number(r.r2Moisture, 'f', 3), QString::number(r.maeTemperature, 'f', 4),
                      // Not run on one batch (nothing to train on beside the warmest): a dash.
                      std::isfinite(r.regimeMaeMoisture) ? QString::number(r.regimeMaeMoisture, 'f', 4)
                                                         : QStringLiteral("–")});
     }
     for (std::size_t i = 0; i < a->rows.size(); ++i) {
-        m_ablation->item(static_cast<int>(i), 0)->setToolTip(QString::fromStdString(a->rows[i].variant));
+        const auto& r = a->rows[i];
+        m_ablation->item(static_cast<int>(i), 0)
+            ->setToolTip(ablationVariantLabel(r.variant, r.description) + QStringLiteral("\n") +
+                         tr("Key: %1").arg(QString::fromStdString(r.variant)));
     }
     fitTableWidth(m_ablation);
 }
