@@ -473,52 +473,57 @@
         <translation>下一步：检查产线的这一部分（证据说明了位置和起始时间），然后点击“扩展模型”加入该原因，看仿真改善了多少。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="248"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="250"/>
+        <source>Next: a cause fits these data and predicts better but failed a check (the table says which and why); one data set alone cannot tell it from the line&apos;s own structure. Compare with data from a time when the line ran well (“Compare with a reference period”), or record longer or more batches.</source>
+        <translation>下一步：有一个原因能拟合这些数据并预测得更好，但未通过某项检查（表中说明是哪一项及原因）；仅凭一个数据集无法把它与产线自身的结构区分开。请与产线运行良好时的数据比较（“与参考时段比较”），或记录更长、更多的批次。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/common/DisplayNames.cpp" line="258"/>
         <source>Next: nothing in the model needs changing for these data. To see smaller effects, record longer or more batches.</source>
         <translation>下一步：对这些数据，模型无需修改。若要看出更小的影响，请记录更长时间或更多批次。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="253"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="263"/>
         <source>Next: compare with data from a time when the line ran well (“Compare with a reference period”): what changed since then is named more surely than from one data set alone. The evidence says which measurement the error follows; check that transmitter and the maintenance log around the time it starts.</source>
         <translation>下一步：与产线运行良好时的数据比较（“与参考时段比较”）：与单个数据集相比，能更可靠地指出此后发生的变化。证据说明了误差跟随哪个测量值；请检查该变送器以及误差开始前后的维护记录。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="266"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="276"/>
         <source>Completed</source>
         <translation>已完成</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="268"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="278"/>
         <source>Converged</source>
         <translation>已收敛</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="270"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="280"/>
         <source>Evaluation budget used up</source>
         <translation>评估次数已用完</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="272"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="282"/>
         <source>Stopped by you, best so far kept</source>
         <translation>已由您停止，保留目前最优</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="279"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="289"/>
         <source>Stopped by you; the runs so far are kept, the last one is partial</source>
         <translation>已由您停止；保留已完成的运行，最后一次不完整</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="286"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="296"/>
         <source>Scenario %1: %2 of %3 controllers run over %4 scored seconds</source>
         <translation>情景 %1：%3 个控制器中运行了 %2 个，评分时长 %4 秒</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="296"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="306"/>
         <source>none (the sensitivities could not be computed)</source>
         <translation>无（无法计算灵敏度）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="299"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="309"/>
         <source>widened because neighbouring rows are alike and not independent evidence (sandwich covariance with a Newey-West middle term)</source>
         <translation>已加宽：相邻样本彼此相似，不是独立的证据（夹心协方差，中间项为 Newey-West）</translation>
     </message>
@@ -527,17 +532,17 @@
         <translation>对相关样本稳健（夹心协方差，中间项为 Newey-West）</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="309"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="319"/>
         <source>R² could not be computed (too few rows).</source>
         <translation>无法计算 R²（行数太少）。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="312"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="322"/>
         <source>R² below 0: the model predicts worse than the batch&apos;s mean would. Usual for the physics model alone on a short held-out part with little movement; compare MAE instead.</source>
         <translation>R² 小于 0：模型的预测比批次均值还差。对于变化很小的短留出段，单独的物理模型常出现这种情况；请改为比较 MAE。</translation>
     </message>
     <message>
-        <location filename="../widgets/common/DisplayNames.cpp" line="317"/>
+        <location filename="../widgets/common/DisplayNames.cpp" line="327"/>
         <source>R² %1: the model explains %2 % of the variation of the measured values about their mean.</source>
         <translation>R² %1：模型解释了测量值围绕其均值变化的 %2 %。</translation>
     </message>
@@ -1835,7 +1840,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="43"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="849"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="857"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
@@ -1856,7 +1861,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="855"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="863"/>
         <source>Score z: how strongly the model&apos;s error points at this cause, in standard deviations of chance; above about 3 is strong evidence.</source>
         <translation>得分 z：模型误差指向该原因的强度，以偶然波动的标准差计；约 3 以上为有力证据。</translation>
     </message>
@@ -2027,7 +2032,7 @@
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="133"/>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="813"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1019"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1027"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -2036,7 +2041,7 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="843"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="851"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
@@ -2512,12 +2517,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="897"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="905"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="897"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="905"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2526,23 +2531,23 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="947"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="955"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="950"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="958"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="958"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="966"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="476"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="866"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="874"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
@@ -2601,14 +2606,14 @@
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="840"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="848"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="244"/>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="598"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="841"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="849"/>
         <source>, </source>
         <translation>、</translation>
     </message>
@@ -2617,69 +2622,69 @@
         <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="844"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="852"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="867"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="875"/>
         <source>Named on its fit: it lowers the held-out error (p = %1) and passes the checks that it is this cause; the screen&apos;s p only ranks the candidates for fitting.</source>
         <translation>按其拟合指认：它降低了留出部分的误差（p = %1），并通过了确认是此原因的各项检查；筛选的 p 只用于为拟合排列候选。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="882"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="890"/>
         <source>fitted, not the best</source>
         <translation>已拟合，非最佳</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="883"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="891"/>
         <source>Fitted in a round in which another cause explained more of the error; the causes named after it were fitted on the model extended by it.</source>
         <translation>在某一轮中已拟合，但另一原因解释了更多误差；其后指认的原因是在由它扩展的模型上拟合的。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="894"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="902"/>
         <source>not fitted (weaker)</source>
         <translation>未拟合（证据较弱）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="968"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="976"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="984"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="992"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="993"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1001"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1000"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1008"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1005"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1013"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1013"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1021"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1033"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1041"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="736"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1034"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1060"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1042"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1068"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
@@ -2689,14 +2694,14 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1035"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1043"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="736"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1036"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1064"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1044"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1072"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2743,12 +2748,12 @@
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="849"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="857"/>
         <source>Change z</source>
         <translation>变化 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="852"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="860"/>
         <source>Change z: how far the cause&apos;s one-step estimate here lies from its normal value on the reference period, in units of both estimates&apos; errors and the spread between the reference&apos;s periods; above 2 it moved.</source>
         <translation>变化 z：该原因在此处的一步估计与其在参考期的正常值相差多远，以两次估计的误差及参考期各时段间的离散为单位；大于 2 即为发生了变化。</translation>
     </message>
@@ -2761,92 +2766,92 @@
         <translation>未拟合：证据弱于已拟合的候选</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="907"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="915"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="922"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="930"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="929"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="937"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="943"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="951"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="988"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="996"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1018"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1026"/>
         <source>Held-out accuracy: nothing was named, so nothing was extended (before = after):</source>
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1023"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1031"/>
         <source>Gain on the held-out part, with every named cause (each finding&apos;s own gain is in its evidence):</source>
         <translation>留出部分的改进（含所有已指认的原因；每项发现各自的改进见其证据）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1037"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1045"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1046"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1054"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1059"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1067"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1059"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1067"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1060"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1068"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1063"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1071"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1063"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1071"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1064"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1072"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1091"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1099"/>
         <source>model (nothing extended)</source>
         <translation>模型（未扩展）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1093"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1101"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1094"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1102"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>

@@ -90,7 +90,15 @@ private Q_SLOTS:
             english << next;
         }
         QVERIFY(verdictNextStep("no_such_verdict").isEmpty());
+        // A cause that fits but failed a check: the reference period is the way on, not "nothing".
+        const QString failedACheck = verdictNextStep("no_structural_cause", true);
+        QVERIFY2(failedACheck.startsWith(QStringLiteral("Next: ")) &&
+                     failedACheck.contains("reference period") && !english.contains(failedACheck),
+                 qPrintable(failedACheck));
         setLanguage("zh_CN");
+        QVERIFY(verdictNextStep("no_structural_cause", true) != failedACheck);
+        QVERIFY2(englishWords(verdictNextStep("no_structural_cause", true)).isEmpty(),
+                 qPrintable(verdictNextStep("no_structural_cause", true)));
         for (std::size_t i = 0; i < verdicts.size(); ++i) {
             const QString next = verdictNextStep(verdicts[i]);
             QVERIFY(next != english[static_cast<int>(i)]);

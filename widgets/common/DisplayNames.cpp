@@ -238,11 +238,21 @@ QString verdictDisplayText(const std::string& verdict, const QString& firstCause
     return QString::fromStdString(verdict);
 }
 
-QString verdictNextStep(const std::string& verdict) {
+QString verdictNextStep(const std::string& verdict, bool aCauseFitsButFailedACheck) {
     if (verdict == "cause_found") {
         return QCoreApplication::translate(
             "DisplayNames", "Next: check that part of the line (the evidence says where and from when), then "
                             "“Extend the model” to add the cause and see how much the simulation improves.");
+    }
+    if (verdict == "no_structural_cause" && aCauseFitsButFailedACheck) {
+        // Not "nothing needs changing" over a residual that plainly drifts (a newcomer's fouled
+        // line): a cause fitted and predicted better, and one data set could not say it is a change.
+        return QCoreApplication::translate(
+            "DisplayNames",
+            "Next: a cause fits these data and predicts better but failed a check (the table says which "
+            "and why); one data set alone cannot tell it from the line's own structure. Compare with data "
+            "from a time when the line ran well (“Compare with a reference period”), or record longer or "
+            "more batches.");
     }
     if (verdict == "no_structural_cause") {
         return QCoreApplication::translate(

@@ -46,7 +46,7 @@ QString groupDisplayName(const std::string& group);
 QString verdictDisplayText(const std::string& verdict, const QString& firstCause = {});
 /// @brief What to do next after a discovery verdict, in plant words (issue #43 item 15); empty
 /// for a verdict key it does not know.
-QString verdictNextStep(const std::string& verdict);
+QString verdictNextStep(const std::string& verdict, bool aCauseFitsButFailedACheck = false);
 /// @brief How an iterative action ended, as the first words of a sentence ("Converged").
 QString terminationText(Termination termination);
 /// @brief A what-if run's ending in words ("Scenario x: 5 controllers, 1000 scored seconds").

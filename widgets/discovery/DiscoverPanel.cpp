@@ -835,7 +835,15 @@ void DiscoverPanel::show() {
     const bool extended =
         !d.findings.empty() && std::all_of(d.findings.begin(), d.findings.end(),
                                            [&](const auto& f) { return mechanisms.count(f.cause) > 0; });
-    const QString nextStep = extended ? QString() : verdictNextStep(d.verdict);
+    // A candidate turned down by a specificity check (not for lack of a held-out gain, nor for
+    // lying within the reference's normal spread) fitted and predicted better.
+    const bool aCauseFitsButFailedACheck =
+        !d.hasReference && std::any_of(d.rounds.begin(), d.rounds.end(), [](const auto& round) {
+            return std::any_of(round.rejected.begin(), round.rejected.end(), [](const auto& x) {
+                return x.code != "no_held_out_gain" && x.code != "within_normal_spread";
+            });
+        });
+    const QString nextStep = extended ? QString() : verdictNextStep(d.verdict, aCauseFitsButFailedACheck);
     m_verdict->setText(
         tr("%1. On %2.")
             .arg(verdictDisplayText(d.verdict, named.join(tr(", "))), m_workbench.dataSetLabel()) +
