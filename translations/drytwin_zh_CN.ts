@@ -475,7 +475,7 @@
     <message>
         <location filename="../widgets/common/DisplayNames.cpp" line="250"/>
         <source>Next: a cause fits these data and predicts better but failed a check (the table says which and why); one data set alone cannot tell it from the line&apos;s own structure. Compare with data from a time when the line ran well (“Compare with a reference period”), or record longer or more batches.</source>
-        <translation>下一步：有一个原因能拟合这些数据并预测得更好，但未通过某项检查（表中说明是哪一项及原因）；仅凭一个数据集无法把它与产线自身的结构区分开。请与产线运行良好时的数据比较（“与参考时段比较”），或记录更长、更多的批次。</translation>
+        <translation>下一步：有一个原因能拟合这些数据并预测得更好，但未通过某项检查（表中说明是哪一项及原因）；仅凭一个数据集无法把它与产线自身的结构区分开。请与产线运行良好时的数据比较（“与参考期比较”），或记录更长、更多的批次。</translation>
     </message>
     <message>
         <location filename="../widgets/common/DisplayNames.cpp" line="258"/>
@@ -485,7 +485,7 @@
     <message>
         <location filename="../widgets/common/DisplayNames.cpp" line="263"/>
         <source>Next: compare with data from a time when the line ran well (“Compare with a reference period”): what changed since then is named more surely than from one data set alone. The evidence says which measurement the error follows; check that transmitter and the maintenance log around the time it starts.</source>
-        <translation>下一步：与产线运行良好时的数据比较（“与参考时段比较”）：与单个数据集相比，能更可靠地指出此后发生的变化。证据说明了误差跟随哪个测量值；请检查该变送器以及误差开始前后的维护记录。</translation>
+        <translation>下一步：与产线运行良好时的数据比较（“与参考期比较”）：与单个数据集相比，能更可靠地指出此后发生的变化。证据说明了误差跟随哪个测量值；请检查该变送器以及误差开始前后的维护记录。</translation>
     </message>
     <message>
         <location filename="../widgets/common/DisplayNames.cpp" line="276"/>

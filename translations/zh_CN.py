@@ -8,7 +8,7 @@ import re
 import sys
 
 ZH = {
-    "Next: a cause fits these data and predicts better but failed a check (the table says which and why); one data set alone cannot tell it from the line's own structure. Compare with data from a time when the line ran well (“Compare with a reference period”), or record longer or more batches.": "下一步：有一个原因能拟合这些数据并预测得更好，但未通过某项检查（表中说明是哪一项及原因）；仅凭一个数据集无法把它与产线自身的结构区分开。请与产线运行良好时的数据比较（“与参考时段比较”），或记录更长、更多的批次。",
+    "Next: a cause fits these data and predicts better but failed a check (the table says which and why); one data set alone cannot tell it from the line's own structure. Compare with data from a time when the line ran well (“Compare with a reference period”), or record longer or more batches.": "下一步：有一个原因能拟合这些数据并预测得更好，但未通过某项检查（表中说明是哪一项及原因）；仅凭一个数据集无法把它与产线自身的结构区分开。请与产线运行良好时的数据比较（“与参考期比较”），或记录更长、更多的批次。",
     "PGRL-CC, all components": "PGRL-CC，全部组成部分",
     "1. no a_w clamping": "1. 不截断 a_w",
     "2. no L_v correction": "2. 不修正 L_v",
@@ -680,7 +680,7 @@ ZH = {
     "Learnt. Scoring the models on the held-out part…": "已学习。正在留出部分上评估模型…",
     "Next: check that part of the line (the evidence says where and from when), then “Extend the model” to add the cause and see how much the simulation improves.": "下一步：检查产线的这一部分（证据说明了位置和起始时间），然后点击“扩展模型”加入该原因，看仿真改善了多少。",
     "Next: nothing in the model needs changing for these data. To see smaller effects, record longer or more batches.": "下一步：对这些数据，模型无需修改。若要看出更小的影响，请记录更长时间或更多批次。",
-    "Next: compare with data from a time when the line ran well (“Compare with a reference period”): what changed since then is named more surely than from one data set alone. The evidence says which measurement the error follows; check that transmitter and the maintenance log around the time it starts.": "下一步：与产线运行良好时的数据比较（“与参考时段比较”）：与单个数据集相比，能更可靠地指出此后发生的变化。证据说明了误差跟随哪个测量值；请检查该变送器以及误差开始前后的维护记录。",
+    "Next: compare with data from a time when the line ran well (“Compare with a reference period”): what changed since then is named more surely than from one data set alone. The evidence says which measurement the error follows; check that transmitter and the maintenance log around the time it starts.": "下一步：与产线运行良好时的数据比较（“与参考期比较”）：与单个数据集相比，能更可靠地指出此后发生的变化。证据说明了误差跟随哪个测量值；请检查该变送器以及误差开始前后的维护记录。",
     "Completed": "已完成",
     "Converged": "已收敛",
     "Evaluation budget used up": "评估次数已用完",
