@@ -134,13 +134,21 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
                          kChannelName[c], scale);
     }
     if (!f.perPart.empty()) {
-        double lo = f.perPart.front().value, hi = lo;
+        // Each part's one-step estimate held within the parameter's range: a part that hardly
+        // informs it can step far outside (a meter lag of -1,130 ± 650 s in one batch), which is
+        // its uncertainty, not a value the line can have.
+        const auto& info = properties::info(f.parameter);
+        double lo = std::clamp(f.perPart.front().value, info.lower, info.upper), hi = lo;
+        bool held = false;
         for (const auto& e : f.perPart) {
-            lo = std::min(lo, e.value);
-            hi = std::max(hi, e.value);
+            const double v = std::clamp(e.value, info.lower, info.upper);
+            held = held || v != e.value;
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
         }
-        text += format(" Fitted part by part (%zu parts) it lies between %.3g and %.3g%s.", f.perPart.size(),
-                       lo, hi, properties::spacedUnit(f.parameter).c_str());
+        text += format(" Fitted part by part (%zu parts) it lies between %.3g and %.3g%s%s.",
+                       f.perPart.size(), lo, hi, properties::spacedUnit(f.parameter).c_str(),
+                       held ? " (a part whose estimate left the parameter's range held at its bound)" : "");
     }
     if (f.transferChecked) {
         text +=

@@ -644,17 +644,25 @@ QString DiscoverPanel::specificityText(const discovery::Finding& f) {
     const QString unit = QString::fromUtf8(info.unit.data(), static_cast<int>(info.unit.size()));
     QStringList parts;
     if (!f.perPart.empty()) {
-        double lo = f.perPart.front().value, hi = lo;
+        // Held within the parameter's range, as the CLI's text: a part that hardly informs the
+        // estimate can step outside it (its uncertainty, not a value the line can have).
+        double lo = std::clamp(f.perPart.front().value, info.lower, info.upper), hi = lo;
+        bool held = false;
         for (const auto& e : f.perPart) {
-            lo = std::min(lo, e.value);
-            hi = std::max(hi, e.value);
+            const double v = std::clamp(e.value, info.lower, info.upper);
+            held = held || v != e.value;
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
         }
         parts << tr("Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.")
-                     .arg(f.perPart.size())
-                     .arg(lo, 0, 'g', 3)
-                     .arg(hi, 0, 'g', 3)
-                     .arg(unit)
-                     .arg(f.consistent ? tr("consistent") : tr("not consistent"));
+                         .arg(f.perPart.size())
+                         .arg(lo, 0, 'g', 3)
+                         .arg(hi, 0, 'g', 3)
+                         .arg(unit)
+                         .arg(f.consistent ? tr("consistent") : tr("not consistent")) +
+                     (held ? QStringLiteral(" ") +
+                                 tr("A part whose estimate left the parameter's range is held at its bound.")
+                           : QString());
     }
     if (f.transferChecked) {
         parts << tr("Fitted on the cooler half of the data it removes %1 % of the warmer half's error.")

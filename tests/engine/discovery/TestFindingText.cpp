@@ -63,6 +63,25 @@ private Q_SLOTS:
                  text.c_str());
         QVERIFY2(text.find("X_out moved -2.3") == std::string::npos, text.c_str());
     }
+
+    /// A part that hardly informs the estimate can step outside the parameter's range (a meter lag
+    /// of -1,130 ± 650 s in one batch of a newcomer's data): the range said is held within it.
+    void thePartsRangeIsHeldWithinTheParametersRange() {
+        drytwin::discovery::Finding f;
+        f.cause = "moisture_meter_lag";
+        f.parameter = Param::tau_meter;
+        f.output = "X_out";
+        f.perPart = {PartEstimate{"B01", 172.0, 41.0}, PartEstimate{"B02", 169.0, 83.0},
+                     PartEstimate{"B03", -1128.0, 649.0}};
+        const std::string text = findingEvidence(f, drytwin::discovery::DiscoveryOptions{});
+        QVERIFY2(
+            text.find("Fitted part by part (3 parts) it lies between 0 and 172 s (a part whose estimate left "
+                      "the parameter's range held at its bound).") != std::string::npos,
+            text.c_str());
+        f.perPart.pop_back();
+        const std::string within = findingEvidence(f, drytwin::discovery::DiscoveryOptions{});
+        QVERIFY2(within.find("it lies between 169 and 172 s.") != std::string::npos, within.c_str());
+    }
 };
 
 QTEST_APPLESS_MAIN(TestFindingText)
