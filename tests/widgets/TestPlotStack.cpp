@@ -254,6 +254,30 @@ private Q_SLOTS:
         QVERIFY(s.readout().contains("foo.csv"));
     }
 
+    // Bars drawn beside their lag (two correlates at one lag, side by side) are exported at the
+    // lag itself: the CSV holds the data, not the drawing's nudge.
+    void aCurveDrawnBesideItsDataIsExportedAtItsData() {
+        QTemporaryDir dir;
+        PlotStack s;
+        s.addPlot("ccf [-]");
+        auto* bar = s.addCurve(0, "inlet moisture", {10.6, 10.6}, {0.0, 0.3}, Qt::red);
+        s.setDrawnXOffset(bar, 0.6);
+        s.addCurve(0, "hot air", {9.4, 9.4}, {0.0, -0.2}, Qt::blue);
+        QVERIFY(s.exportTo(dir.filePath("ccf.csv")));
+        QFile f(dir.filePath("ccf.csv"));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(f.readAll());
+        QVERIFY2(text.contains("\"inlet moisture\",10,0.3"), qPrintable(text));
+        QVERIFY2(text.contains("\"hot air\",9.4,-0.2"), qPrintable(text));
+        s.clearCurves(); // the nudge goes with its curve
+        auto* again = s.addCurve(0, "inlet moisture", {10.6, 10.6}, {0.0, 0.3}, Qt::red);
+        Q_UNUSED(again);
+        QVERIFY(s.exportTo(dir.filePath("again.csv")));
+        QFile g(dir.filePath("again.csv"));
+        QVERIFY(g.open(QIODevice::ReadOnly));
+        QVERIFY(QString::fromUtf8(g.readAll()).contains("\"inlet moisture\",10.6,0.3"));
+    }
+
     // A results table narrower than its columns gives up the width of its first column (the
     // names), down to that column's header, before it scrolls: the numbers beside the names show
     // (at 1280 x 800 the What-if table's solve times lay beyond the edge). A name cut short keeps

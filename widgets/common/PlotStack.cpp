@@ -437,6 +437,7 @@ QwtPlotCurve* PlotStack::addDots(int index, const QString& name, const QVector<d
 }
 
 void PlotStack::clearCurves() {
+    m_drawnXOffset.clear();
     for (auto* plot : m_plots) {
         plot->detachItems(QwtPlotItem::Rtti_PlotCurve, true);
         plot->updateLegend();
@@ -764,10 +765,12 @@ QString PlotStack::csvText() const {
         for (const auto* item : plot->itemList(QwtPlotItem::Rtti_PlotCurve)) {
             const auto* c = static_cast<const QwtPlotCurve*>(item);
             const QString curveName = quoted(c->title().text());
+            const auto offset = m_drawnXOffset.find(c);
+            const double dx = offset == m_drawnXOffset.end() ? 0.0 : offset->second;
             for (std::size_t i = 0; i < c->dataSize(); ++i) {
                 const QPointF p = c->sample(i);
                 out += QStringLiteral("%1,%2,%3,%4\n")
-                           .arg(plotName, curveName, QString::number(p.x(), 'g', 10),
+                           .arg(plotName, curveName, QString::number(p.x() - dx, 'g', 10),
                                 QString::number(p.y(), 'g', 10));
             }
         }

@@ -4,6 +4,7 @@
 #include <QString>
 #include <QVector>
 #include <QWidget>
+#include <map>
 #include <vector>
 
 class QLabel;
@@ -64,6 +65,9 @@ public:
     /// @brief Writes the whole stack to @p path; the format follows the suffix (png, svg, pdf; csv:
     /// the plotted data, one row per point: plot, curve, x, y).
     bool exportTo(const QString& path, QString* error = nullptr) const;
+    /// @brief @p curve is drawn @p dx to the right of its data (bars at one lag set side by side);
+    /// the CSV export writes its data's own x. Forgotten with clearCurves().
+    void setDrawnXOffset(const QwtPlotCurve* curve, double dx) { m_drawnXOffset[curve] = dx; }
     /// @brief Shows the x range [lo, hi] in every plot.
     void setXRange(double lo, double hi);
     /// @brief Log scale on the x and/or y axis of plot @p index (PSD plots).
@@ -110,6 +114,7 @@ private:
     QVBoxLayout* m_layout = nullptr;
     QLabel* m_readout = nullptr;
     std::vector<QwtPlot*> m_plots;
+    std::map<const QwtPlotCurve*, double> m_drawnXOffset; ///< see setDrawnXOffset()
     std::vector<QwtPlotZoomer*> m_zoomers;
     std::vector<QwtPlotMarker*> m_timeMarkers;
     std::vector<QwtPlotMarker*> m_cursorMarkers[2];

@@ -246,18 +246,27 @@ void DiagnosticsPanel::redrawCrossCorrelation() {
     }
     const double xMax = std::max(60.0, 1.1 * longest);
     // Bars at the same lag side by side, not one hidden behind the other (a model's tube-outlet
-    // moisture and its moisture on the conveyor both at 0 s): each nudged by a bar's width.
-    std::map<double, int> atLag;
+    // moisture and its moisture on the conveyor both at 0 s): the group centred on its lag, each
+    // a bar's width apart; the CSV export writes the lag itself.
+    std::map<double, int> countAtLag, drawnAtLag;
+    for (const auto& o : d->discovery.residuals) {
+        for (const auto& c : o.correlates) {
+            countAtLag[c.lagS] += o.output == "X_out" ? 1 : 0;
+        }
+    }
+    const double barWidth = 0.012 * (xMax + 5);
     int i = 0;
     for (const auto& o : d->discovery.residuals) {
         if (o.output != "X_out") {
             continue;
         }
         for (const auto& c : o.correlates) {
-            const double x = c.lagS + 0.012 * (xMax + 5) * atLag[c.lagS]++;
+            const double dx = barWidth * (drawnAtLag[c.lagS]++ - 0.5 * (countAtLag[c.lagS] - 1));
+            const double x = c.lagS + dx;
             auto* curve = m_ccf->addCurve(0, columnDisplayName(c.column), {x, x}, {0.0, c.ccf},
                                           seriesColour(i++), Qt::SolidLine, 4.0);
             curve->setStyle(QwtPlotCurve::Lines);
+            m_ccf->setDrawnXOffset(curve, dx);
         }
     }
     m_ccf->setXTitle(tr("lag of the input [s]; the outlet-moisture error's correlation with each input"));
