@@ -309,11 +309,15 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
                 const double v = col.values[r];
                 if (std::isnan(v)) {
                     ++cs.missing;
-                    if (listedMissing[i] < DataSetSummary::kMaxListedMissing) {
+                    // One place once: a historian run put on a 1 s grid gives several rows one
+                    // line of the file (a tag sampled every 5 s), listed four times before.
+                    const int line = r < b.lineOfRow.size() ? b.lineOfRow[r] : 0;
+                    const bool sameAsBefore = r > 0 && line != 0 && std::isnan(col.values[r - 1]) &&
+                                              r - 1 < b.lineOfRow.size() && b.lineOfRow[r - 1] == line;
+                    if (!sameAsBefore && listedMissing[i] < DataSetSummary::kMaxListedMissing) {
                         ++listedMissing[i];
-                        s.missingCells.push_back({b.sourcePath.empty() ? b.id : b.sourcePath,
-                                                  r < b.lineOfRow.size() ? b.lineOfRow[r] : 0, fileColumn,
-                                                  col.fileName, std::string(spec(col.id).name)});
+                        s.missingCells.push_back({b.sourcePath.empty() ? b.id : b.sourcePath, line,
+                                                  fileColumn, col.fileName, std::string(spec(col.id).name)});
                     }
                     continue;
                 }

@@ -298,6 +298,21 @@ private Q_SLOTS:
         QCOMPARE(summary.missingCells[0].contractColumn, std::string("X_out_pct"));
         QCOMPARE(summary.missingCells[1].line, 4);
         QCOMPARE(summary.missingCells[1].contractColumn, std::string("T_hot_C"));
+        // Several rows from one line of the file (a historian's 5 s samples put on a 1 s grid):
+        // the place is listed once.
+        Batch grid = *b;
+        grid.lineOfRow = {2, 3, 3};
+        auto& xOut = grid.numeric[static_cast<std::size_t>(
+            std::find_if(grid.numeric.begin(), grid.numeric.end(),
+                         [](const Batch::NumericColumn& c) { return c.id == Column::XOut; }) -
+            grid.numeric.begin())];
+        xOut.values[2] = std::numeric_limits<double>::quiet_NaN(); // rows 1 and 2 both line 3
+        DataSet gridded;
+        gridded.batches.push_back(grid);
+        const auto once = summarize(gridded);
+        QCOMPARE(std::count_if(once.missingCells.begin(), once.missingCells.end(),
+                               [](const MissingCellPlace& m) { return m.contractColumn == "X_out_pct"; }),
+                 std::ptrdiff_t(1));
     }
 
     /// A contract header over no rows (a spreadsheet saved empty): said as such, not as a time
