@@ -181,6 +181,14 @@ private Q_SLOTS:
         s.rescale();
         QVERIFY(s.noteShown(1).isEmpty());
         QVERIFY(yUpper(s.plot(1)) >= 6);
+        // The stack's own text, while no plot has data, is said once, on the first plot.
+        PlotStack none;
+        none.addPlot("a [-]");
+        none.addPlot("b [-]");
+        none.setEmptyText("Open a data set");
+        none.show();
+        QCOMPARE(none.noteShown(0), QString("Open a data set"));
+        QVERIFY(none.noteShown(1).isEmpty());
     }
 
     void filterSuffix_data() {

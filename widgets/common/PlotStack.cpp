@@ -305,10 +305,12 @@ void PlotStack::updateEmptyText() {
         auto* label = m_emptyLabels[i];
         const bool empty = curveCount(static_cast<int>(i)) == 0;
         const bool ranged = std::isfinite(m_emptyRanges[i].first);
-        // An empty plot says why in words: the stack's text while nothing has data, else its own.
+        // An empty plot says why in words: the stack's text while nothing has data (once, on the
+        // first plot: six copies of "Open a data set" down the Data tab read as six problems),
+        // else its own.
         QString note;
         if (m_showingEmptyText) {
-            note = m_emptyText;
+            note = i == 0 ? m_emptyText : QString();
         } else if (empty) {
             note = m_plotEmptyTexts[i].isEmpty() ? tr("No data yet") : m_plotEmptyTexts[i];
         }
