@@ -112,7 +112,8 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     generate->add_option("--out", o.outPath, "output folder")->required();
     generate->add_option("--seed", o.seed, "random seed")->capture_default_str();
     generate->add_option("--batches", o.batches, "number of batches")->capture_default_str();
-    generate->add_option("--samples", o.samples, "samples per batch (1 s apart)")->capture_default_str();
+    generate->add_option("--samples", o.samples, "samples per batch (1 s apart, at least 200)")
+        ->capture_default_str();
     auto* demo = generate->add_flag("--demo", o.demo, "the bundled demo mix of mechanisms and drift");
     generate
         ->add_option("--effect", o.effects,

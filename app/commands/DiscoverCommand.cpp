@@ -135,10 +135,10 @@ int runDiscover(const CommandOptions& o) {
               "both errors and the reference's spread; p: its test, or * a timing cause's own score test "
               "where that is smaller (a lag's one-step estimate understates its change); Bonferroni):\n"
             : "\nCandidate causes (score test on the training part, HAC variance, Holm-corrected):\n");
-    std::printf("%-24s %8s %10s %10s %12s %14s\n", "cause", "z", "p ", "p (Holm)", "fitted", "train loss");
+    std::printf("%-28s %8s %10s %10s %12s %14s\n", "cause", "z", "p ", "p (Holm)", "fitted", "train loss");
     for (const auto& c : d.ranking) {
         std::printf(
-            "%-24s %8.2f %9.3g%s %10.3g %12s %14s%s\n", c.cause.c_str(), c.score, c.pValue,
+            "%-28s %8.2f %9.3g%s %10.3g %12s %14s%s\n", c.cause.c_str(), c.score, c.pValue,
             c.pFromOwnScreen ? "*" : " ", c.pHolm, c.fitted ? "yes" : "no",
             c.fitted ? (fmt(c.fitLossBefore, 4) + " -> " + fmt(c.fitLossAfter, 4)).c_str() : "-",
             c.screenedFromS >= 0 ? ("  (tested from " + fmt(c.screenedFromS / 60, 0) + " min)").c_str() : "");
@@ -192,7 +192,7 @@ int runDiscover(const CommandOptions& o) {
             "each parameter's range):\n");
         for (const auto& b : d.bounds) {
             const auto& info = properties::info(b.parameter);
-            std::printf("  %-24s %-15s %10.4g  [%.3g, %.3g] %s\n", b.cause.c_str(),
+            std::printf("  %-28s %-15s %10.4g  [%.3g, %.3g] %s\n", b.cause.c_str(),
                         std::string(info.symbol).c_str(), b.estimate, b.ci95Low, b.ci95High,
                         std::string(info.unit).c_str());
         }

@@ -32,6 +32,12 @@ int runEvaluate(const CommandOptions& o) {
         return fail(result.error());
     }
     printEvaluation(result->evaluation);
+    if (!session.model().hasResidualModels()) {
+        // A calibrated-only model file gives the physics and the trivial forecasts alone; said,
+        // so that the missing PGRL-CC rows do not read as a failure.
+        std::printf("\nThe model file holds no learnt models (physics only): `drytwin train --data D --model "
+                    "M --out M2` adds PGRL-CC, the input-only correction and the LSTM to compare.\n");
+    }
     if (const auto& lstm = session.model().lstm) {
         printLstmValidation(*lstm); // the held-out table above, beside what its training part said
     }

@@ -21,6 +21,7 @@ namespace {
 constexpr double kHottestPlausibleHotAirC = 260; // 500 °F; tobacco and grain lines run 120–250 °C
 constexpr double kHottestPlausibleAmbientC = 55; // the hottest air ever measured outdoors is 57 °C
 constexpr double kLargestPlausibleBatchShiftK = 50;
+constexpr double kLightestPlausibleFeedKgH = 50;    // a pneumatic drier's smallest feed: hundreds of kg/h
 constexpr double kLargestPlausibleBatchFactor = 10; // RH may go from 12 to 90 %; a unit moves ×100
 
 /// What a reader must know but no single cell shows, in the batch's file: a sampling step other than
@@ -119,6 +120,14 @@ std::vector<std::string> pairNotes(const ColumnMeans& m) {
                       "T_out_C (mean %.4g °C) is above the hot air T_hot_C (mean %.4g °C) that heats the "
                       "product: another unit (°F) or swapped columns? Check both",
                       tOut, tHot);
+        out.push_back(text);
+    }
+    if (const double feed = at(Column::Feed); feed > 0 && feed < kLightestPlausibleFeedKgH) {
+        // Every row then fails the cleaning's feed rule (paper §IV.A) and nothing says why.
+        std::snprintf(text, sizeof text,
+                      "feed_kg_h (mean %.3g kg/h) is less than a pneumatic line carries (hundreds to "
+                      "thousands of kg/h); t/h (%.3g t/h is %.0f kg/h)? Check its unit",
+                      feed, feed, 1000 * feed);
         out.push_back(text);
     }
     if (tAmb > kHottestPlausibleAmbientC) {

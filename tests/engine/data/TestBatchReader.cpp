@@ -228,6 +228,17 @@ private Q_SLOTS:
             std::count_if(allNotes.begin(), allNotes.end(),
                           [](const std::string& n) { return n.find("T_hot_C (mean") != std::string::npos; }),
             std::ptrdiff_t(1));
+        // Feed in t/h under a kg/h header.
+        std::string tonnes = "# batch: B07\n" + std::string(kHeader) + "\n";
+        for (int i = 0; i < 3; ++i) {
+            tonnes += row(i, 12.8, 6.2) + "\n";
+        }
+        QTemporaryDir one;
+        writeText(one.filePath("B07.csv"), tonnes);
+        const auto tonnesLoaded = loadDataSet(one.path().toStdString());
+        QVERIFY(tonnesLoaded.ok());
+        const auto tonnesNotes = summarize(tonnesLoaded.dataSet).notes;
+        QVERIFY2(has(tonnesNotes, "B07.csv", "6.2 t/h is 6200 kg/h"), joined(tonnesNotes).c_str());
     }
 
     // An outlet transmitter that never moves over ten minutes or more is frozen, even where the
