@@ -53,6 +53,7 @@ Expected<PlantFileRuns> readHistorianRows(const std::string& text, const std::st
         return laidOut.error();
     }
     ColumnLayout& layout = *laidOut;
+    result.notes.insert(result.notes.end(), layout.notes.begin(), layout.notes.end());
     std::vector<ValueColumn>& columns = layout.values;
     const std::size_t nCols = shape.headers.size();
     const std::size_t timeIndex = layout.timeIndex;

@@ -143,6 +143,18 @@ Expected<ColumnLayout> layOutColumns(const FileShape& shape, const ColumnMapping
             }
             if (const auto u = mapping.contractToUnit.find(contract); u != mapping.contractToUnit.end()) {
                 v.unit = u->second;
+                // The mapping's unit wins over the file's own units row; where they differ, said
+                // (one of them is wrong, and a silent choice converts 150 °C as 150 K).
+                if (shape.unitsRow && c < shape.units.size() && !shape.units[c].empty()) {
+                    const std::string fileUnit = normalisedUnit(shape.units[c], *v.contract);
+                    if (!fileUnit.empty() && fileUnit != normalisedUnit(v.unit, *v.contract)) {
+                        layout.notes.push_back(
+                            placeInFile(file, shape.headerLine + 1, static_cast<int>(c) + 1) + ": column '" +
+                            h + "' (" + contract + ") is read in '" + v.unit +
+                            "', the column mapping's unit, while the file's units row says '" +
+                            shape.units[c] + "'; check which is right");
+                    }
+                }
             } else if (shape.unitsRow && c < shape.units.size() && !shape.units[c].empty()) {
                 v.unit = normalisedUnit(shape.units[c], *v.contract);
                 const auto known = unitsFor(*v.contract);

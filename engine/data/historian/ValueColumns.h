@@ -47,7 +47,8 @@ struct ColumnLayout {
     std::size_t timeIndex = 0;
     std::size_t batchIndex = 0; ///< == number of fields when there is no batch column
     std::vector<ValueColumn> values;
-    double timeScale = 1; ///< 60 when relative time is in minutes
+    double timeScale = 1;           ///< 60 when relative time is in minutes
+    std::vector<std::string> notes; ///< what the layout decided that a reader must know (file:line:column)
 };
 
 /// @brief Lays out the columns of a file of shape @p shape: the time and batch columns, the

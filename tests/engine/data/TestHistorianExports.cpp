@@ -448,6 +448,47 @@ private Q_SLOTS:
     }
 
     // 1. Excel serial days from 00:00: the first stamp is a whole number, and still days.
+    // The column mapping's unit wins over the file's units row; where they differ, said with the
+    // place (a newcomer's mapping said K for a column the file logs in °C: -122 °C of hot air).
+    void aMappingUnitTheUnitsRowContradictsIsNoted() {
+        std::string text = "Time;HotAir;Feed;Xin;Tamb;RH;Xout;Tout\n;°C;kg/h;%;°C;%;%;°C\n";
+        for (int i = 0; i < 400; ++i) { // a run longer than the 300 s a production run needs
+            char stamp[64];
+            std::snprintf(stamp, sizeof stamp, "2025-06-03 08:%02d:%02d", i / 60, i % 60);
+            text += std::string(stamp) + ";165;6200;22;25;55;12,8;55\n";
+        }
+        const auto read = [&](const std::string& hotAirUnit) {
+            auto m = readColumnMappingText(
+                R"({"time_s": {"header": "Time"}, "T_hot_C": {"header": "HotAir", "unit": ")" + hotAirUnit +
+                    R"("}, "feed_kg_h": "Feed", "X_in_pct": "Xin", "T_amb_C": "Tamb", "RH_amb_pct": "RH",
+                    "X_out_pct": "Xout", "T_out_C": "Tout"})",
+                "m.json");
+            if (!m) {
+                qFatal("%s", m.error().message().c_str());
+            }
+            ReadOptions o;
+            o.mapping = *m;
+            auto runs = parsePlantText(text, "w.csv", o);
+            if (!runs) {
+                qFatal("%s", runs.error().message().c_str());
+            }
+            return runs->notes;
+        };
+        const auto contradicted = read("K");
+        QVERIFY2(std::any_of(contradicted.begin(), contradicted.end(),
+                             [](const std::string& n) {
+                                 return n.find(
+                                            "w.csv:2:2: column 'HotAir' (T_hot_C) is read in 'K', the column "
+                                            "mapping's unit, while the file's units row says '°C'") !=
+                                        std::string::npos;
+                             }),
+                 contradicted.empty() ? "no note" : contradicted.front().c_str());
+        const auto agreed = read("°C");
+        QVERIFY(std::none_of(agreed.begin(), agreed.end(), [](const std::string& n) {
+            return n.find("units row says") != std::string::npos;
+        }));
+    }
+
     void excelDaysFromMidnightAreDays() {
         const auto excel = [](int i) {
             char buf[32];
