@@ -90,12 +90,8 @@ int runInspect(const CommandOptions& o) {
                 m.column == m.contractColumn ? m.column : m.column + " (" + m.contractColumn + ")";
             std::printf("  %s:%d:%d: %s\n", m.file.c_str(), m.line, m.fileColumn, column.c_str());
         }
-        std::size_t cells = 0;
-        for (const auto& c : s.columns) {
-            cells += c.missing;
-        }
-        if (s.missingCells.size() < cells) {
-            std::printf("  … and %zu more\n", cells - s.missingCells.size());
+        if (s.missingCells.size() < s.missingPlaces) {
+            std::printf("  … and %zu more\n", s.missingPlaces - s.missingCells.size());
         }
     }
     if (s.impossibleTotal > 0) {

@@ -18,9 +18,9 @@ namespace {
 
 /// The plausibility notes' limits (°C, K, factor): generous, so that a note means a unit or a
 /// column is wrong, not that the line is unusual.
-constexpr double kHottestPlausibleHotAirC = 260; // 500 °F; tobacco and grain lines run 120–250 °C
-constexpr double kHottestPlausibleAmbientC = 55; // the hottest air ever measured outdoors is 57 °C
-constexpr double kLargestPlausibleBatchShiftK = 50;
+constexpr double kHottestPlausibleHotAirC = 260;    // 500 °F; tobacco and grain lines run 120–250 °C
+constexpr double kHottestPlausibleAmbientC = 55;    // the hottest air ever measured outdoors is 57 °C
+constexpr double kLargestPlausibleBatchShiftK = 75; // process temperatures; two products' hot air 55 K apart
 constexpr double kLightestPlausibleFeedKgH = 50;    // a pneumatic drier's smallest feed: hundreds of kg/h
 constexpr double kLargestPlausibleBatchFactor = 10; // RH may go from 12 to 90 %; a unit moves ×100
 
@@ -69,44 +69,56 @@ void emptyColumnNote(const Batch& b, const Batch::NumericColumn& col, DataSetSum
 /// Column means in the contract's units (NaN where a column is absent or empty).
 using ColumnMeans = std::array<double, kColumnCount>;
 
+/// One plausibility check that failed: which check (to group batches by), and what to say.
+struct PlausibilityNote {
+    std::string check;
+    std::string text;
+};
+
 /// Columns each possible alone but impossible together, which a wrong unit or two swapped headers
 /// give (a fresh user's test: °F under a °C header, a moisture fraction under % wb, X_out and T_out
-/// swapped, each calibrated with exit 0). Each returns the note's text for @p m (a data set's or a
-/// batch's means), or nothing. The thresholds leave room for any product a pneumatic drier dries.
-std::vector<std::string> pairNotes(const ColumnMeans& m) {
+/// swapped, each calibrated with exit 0), and values no line of this kind has. For @p m, a data
+/// set's or a batch's means. The thresholds leave room for any product a pneumatic drier dries.
+std::vector<PlausibilityNote> pairNotes(const ColumnMeans& m) {
     const auto at = [&m](Column c) { return m[static_cast<std::size_t>(c)]; };
     const double xIn = at(Column::XIn), xOut = at(Column::XOut);
     const double tHot = at(Column::THot), tHotSp = at(Column::THotSp), tOut = at(Column::TOut);
     const double tHdt = at(Column::THdt), tAmb = at(Column::TAmb);
-    std::vector<std::string> out;
+    std::vector<PlausibilityNote> out;
     char text[512];
     if (xOut > xIn) {
         std::snprintf(text, sizeof text,
                       "X_out_pct (mean %.3g %% wb) is above X_in_pct (mean %.3g %% wb): a drier does not wet "
                       "its product; check that the columns are not swapped and are in %% wet basis",
                       xOut, xIn);
-        out.push_back(text);
+        out.push_back({"outlet wetter than inlet", text});
     } else if (xOut > 0 && xIn > 100 * xOut) {
         std::snprintf(text, sizeof text,
                       "X_out_pct (mean %.3g %% wb) is below a hundredth of X_in_pct (mean %.3g %% wb): a "
                       "fraction (0.12) given for a percentage (12 %%)? Check its unit",
                       xOut, xIn);
-        out.push_back(text);
+        out.push_back({"outlet a fraction", text});
     }
     if (std::abs(tHot - tHotSp) > 30) {
         std::snprintf(text, sizeof text,
                       "T_hot_C (mean %.4g °C) is %.0f K from its setpoint T_hot_sp_C (mean %.4g °C): one of "
                       "them in another unit (°F, K) or another column? Check both",
                       tHot, std::abs(tHot - tHotSp), tHotSp);
-        out.push_back(text);
-    } else if (std::max(tHot, tHotSp) > kHottestPlausibleHotAirC) {
-        // Both in °F agree with each other: 160 °C of hot air reads 320.
-        std::snprintf(text, sizeof text,
-                      "T_hot_C (mean %.4g °C) is hotter than the hot air of the lines this model was built "
-                      "for (tobacco, grain: up to about 250 °C); °F (%.0f °F is %.0f °C) or K? Check its "
-                      "unit and T_hot_sp_C's",
-                      tHot, tHot, (tHot - 32) / 1.8);
-        out.push_back(text);
+        out.push_back({"hot air off its setpoint", text});
+    } else {
+        // Both in °F agree with each other: 160 °C of hot air reads 320. The column said is the
+        // one above the limit (the setpoint is optional).
+        const bool setpoint = !(tHot > kHottestPlausibleHotAirC) && tHotSp > kHottestPlausibleHotAirC;
+        const double hot = setpoint ? tHotSp : tHot;
+        if (hot > kHottestPlausibleHotAirC) {
+            std::snprintf(text, sizeof text,
+                          "%s (mean %.4g °C) is hotter than the hot air of the lines this model was built "
+                          "for (tobacco, grain: up to about 250 °C); °F (%.0f °F is %.0f °C) or K? Check its "
+                          "unit and %s's",
+                          setpoint ? "T_hot_sp_C" : "T_hot_C", hot, hot, (hot - 32) / 1.8,
+                          setpoint ? "T_hot_C" : "T_hot_sp_C");
+            out.push_back({"hot air too hot", text});
+        }
     }
     if (tOut > tHdt + 20) {
         std::snprintf(text, sizeof text,
@@ -114,13 +126,13 @@ std::vector<std::string> pairNotes(const ColumnMeans& m) {
                       "product cools on its way from the tube, it does not heat up; another unit (°F) or "
                       "swapped columns? Check both",
                       tOut, tOut - tHdt, tHdt);
-        out.push_back(text);
+        out.push_back({"outlet hotter than tube", text});
     } else if (tOut > tHot) {
         std::snprintf(text, sizeof text,
                       "T_out_C (mean %.4g °C) is above the hot air T_hot_C (mean %.4g °C) that heats the "
                       "product: another unit (°F) or swapped columns? Check both",
                       tOut, tHot);
-        out.push_back(text);
+        out.push_back({"outlet hotter than hot air", text});
     }
     if (const double feed = at(Column::Feed); feed > 0 && feed < kLightestPlausibleFeedKgH) {
         // Every row then fails the cleaning's feed rule (paper §IV.A) and nothing says why.
@@ -128,14 +140,14 @@ std::vector<std::string> pairNotes(const ColumnMeans& m) {
                       "feed_kg_h (mean %.3g kg/h) is less than a pneumatic line carries (hundreds to "
                       "thousands of kg/h); t/h (%.3g t/h is %.0f kg/h)? Check its unit",
                       feed, feed, 1000 * feed);
-        out.push_back(text);
+        out.push_back({"feed too small", text});
     }
     if (tAmb > kHottestPlausibleAmbientC) {
         std::snprintf(text, sizeof text,
                       "T_amb_C (mean %.3g °C) is hotter than any air a plant hall breathes (above %.0f °C); "
                       "°F (%.0f °F is %.0f °C)? Check its unit",
                       tAmb, kHottestPlausibleAmbientC, tAmb, (tAmb - 32) / 1.8);
-        out.push_back(text);
+        out.push_back({"ambient too hot", text});
     }
     return out;
 }
@@ -145,37 +157,53 @@ std::vector<std::string> pairNotes(const ColumnMeans& m) {
 /// every batch fails is said once, for the data set.
 void plausibilityNotes(const std::vector<ColumnMeans>& perBatch, const std::vector<std::string>& where,
                        std::vector<std::string>& notes) {
-    std::map<std::string, std::vector<std::size_t>> failing; // note text → batches
+    std::map<std::string, std::vector<std::pair<std::size_t, std::string>>> failing; // check → batches
     std::vector<std::string> order;
     for (std::size_t b = 0; b < perBatch.size(); ++b) {
-        for (const auto& text : pairNotes(perBatch[b])) {
-            // A note's numbers differ per batch: group by its first words (the check it is).
-            const std::string check = text.substr(0, text.find('('));
-            if (failing[check].empty()) {
-                order.push_back(check);
+        for (auto& note : pairNotes(perBatch[b])) {
+            if (failing[note.check].empty()) {
+                order.push_back(note.check);
             }
-            failing[check].push_back(b);
+            failing[note.check].emplace_back(b, std::move(note.text));
         }
     }
     for (const auto& check : order) {
         const auto& batches = failing[check];
         if (batches.size() == perBatch.size() && perBatch.size() > 1) {
-            // Every batch: once, with the first batch's numbers.
-            for (const auto& text : pairNotes(perBatch[batches.front()])) {
-                if (text.rfind(check, 0) == 0) {
-                    notes.push_back("every batch: " + text);
-                }
-            }
+            notes.push_back("every batch: " + batches.front().second); // with the first batch's numbers
             continue;
         }
-        for (std::size_t b : batches) {
-            for (const auto& text : pairNotes(perBatch[b])) {
-                if (text.rfind(check, 0) == 0) {
-                    notes.push_back(where[b] + ": " + text);
-                }
-            }
+        for (const auto& [b, text] : batches) {
+            notes.push_back(where[b] + ": " + text);
         }
     }
+}
+
+/// The median of @p v (the mean of the middle two for an even count); @p v is reordered.
+double medianOf(std::vector<double>& v) {
+    const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+    std::nth_element(v.begin(), mid, v.end());
+    if (v.size() % 2 == 1) {
+        return *mid;
+    }
+    return 0.5 * (*mid + *std::max_element(v.begin(), mid));
+}
+
+/// Does a temperature batch mean @p v read as the others' @p median would in another unit (°F or
+/// K), or lie further from it than any product change moves a process temperature? Ambient and
+/// the inlet product's temperature swing over seasons by as much as °F differs from °C at 20 °C
+/// (48 K), so for them only the unit's own signature counts; and never where the other batches
+/// themselves lie as far apart (@p othersRange: a winter batch among summer ones).
+bool temperatureInAnotherUnit(Column c, double v, double median, double othersRange) {
+    const double apart = std::abs(v - median);
+    if (apart <= std::max(15.0, 2 * othersRange)) {
+        return false;
+    }
+    const double tolerance = std::max(5.0, 0.1 * std::abs(median));
+    const bool fahrenheit = std::abs((v - 32) / 1.8 - median) < tolerance;
+    const bool kelvin = std::abs(v - 273.15 - median) < tolerance;
+    const bool seasonal = c == Column::TAmb || c == Column::TIn;
+    return fahrenheit || kelvin || (!seasonal && apart > kLargestPlausibleBatchShiftK);
 }
 
 /// A batch whose column reads in another unit than the other batches' (°F among °C, a fraction
@@ -204,13 +232,13 @@ void batchAgainstOthersNotes(const std::vector<ColumnMeans>& perBatch, const std
             if (others.size() < 2 || !std::isfinite(v)) {
                 continue;
             }
-            std::nth_element(others.begin(), others.begin() + static_cast<std::ptrdiff_t>(others.size() / 2),
-                             others.end());
-            const double median = others[others.size() / 2];
-            // Temperatures: further than a summer from a winter and any product's setpoint change
-            // (°F of 60 °C reads 140). The rest are positive amounts: a factor of ten is a unit.
-            const bool odd = temperature ? std::abs(v - median) > kLargestPlausibleBatchShiftK
-                                         : median > 0 && v >= 0 &&
+            const auto [lowest, highest] = std::minmax_element(others.begin(), others.end());
+            const double othersRange = *highest - *lowest;
+            const double median = medianOf(others);
+            // The rest are positive amounts: a factor of ten is a unit (a batch at 0, a line stop,
+            // is no unit).
+            const bool odd = temperature ? temperatureInAnotherUnit(c.id, v, median, othersRange)
+                                         : median > 0 && v > 0 &&
                                                (v > kLargestPlausibleBatchFactor * median ||
                                                 v * kLargestPlausibleBatchFactor < median);
             if (!odd) {
@@ -219,7 +247,7 @@ void batchAgainstOthersNotes(const std::vector<ColumnMeans>& perBatch, const std
             char text[512];
             std::snprintf(text, sizeof text,
                           ": %s reads %.4g %s on average, the other batches about %.4g (their median): "
-                          "this file in another unit (°F, K, a fraction, t/h) or another column? Check it",
+                          "this batch in another unit (°F, K, a fraction, t/h) or another column? Check it",
                           std::string(c.name).c_str(), v, std::string(unit).c_str(), median);
             notes.push_back(where[b] + text);
         }
@@ -254,7 +282,10 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
         const Batch& b = data.batches[bi];
         ColumnMeans& means = batchMeans.emplace_back();
         means.fill(std::numeric_limits<double>::quiet_NaN());
-        batchPlaces.push_back(b.sourcePath.empty() ? b.id : b.sourcePath);
+        // A run cut from a long plant file shares the file with the others: named by its id too.
+        batchPlaces.push_back(b.sourcePath.empty() ? b.id
+                              : b.run              ? b.sourcePath + " (" + b.id + ")"
+                                                   : b.sourcePath);
         BatchSummary bs;
         const std::size_t missingBefore = s.missingCells.size();
         bs.id = b.id;
@@ -318,16 +349,6 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
                 const double v = col.values[r];
                 if (std::isnan(v)) {
                     ++cs.missing;
-                    // One place once: a historian run put on a 1 s grid gives several rows one
-                    // line of the file (a tag sampled every 5 s), listed four times before.
-                    const int line = r < b.lineOfRow.size() ? b.lineOfRow[r] : 0;
-                    const bool sameAsBefore = r > 0 && line != 0 && std::isnan(col.values[r - 1]) &&
-                                              r - 1 < b.lineOfRow.size() && b.lineOfRow[r - 1] == line;
-                    if (!sameAsBefore && listedMissing[i] < DataSetSummary::kMaxListedMissing) {
-                        ++listedMissing[i];
-                        s.missingCells.push_back({b.sourcePath.empty() ? b.id : b.sourcePath, line,
-                                                  fileColumn, col.fileName, std::string(spec(col.id).name)});
-                    }
                     continue;
                 }
                 cs.min = std::min(cs.min, v);
@@ -339,6 +360,34 @@ DataSetSummary summarize(const DataSet& data, const CleaningOptions& cleaningOpt
             }
             if (batchCount > 0) {
                 means[i] = batchSum / static_cast<double>(batchCount);
+            }
+            // Where the missing cells are, each place of the file once: a historian run is put
+            // on a 1 s grid, so one missing 5 s sample empties several rows (listed four times
+            // before) and a row between two samples belongs to the line after as much as before;
+            // its reader records the file's own cells (b.missing).
+            std::set<int> lines;
+            if (b.run) {
+                const std::string contractName(spec(col.id).name);
+                for (const auto& m : b.missing) {
+                    if (m.column == fileColumn && m.columnName == contractName) {
+                        lines.insert(m.line);
+                    }
+                }
+            } else {
+                for (std::size_t r = 0; r < col.values.size(); ++r) {
+                    if (std::isnan(col.values[r])) {
+                        lines.insert(r < b.lineOfRow.size() ? b.lineOfRow[r] : 0);
+                    }
+                }
+            }
+            s.missingPlaces += lines.size();
+            for (const int line : lines) {
+                if (listedMissing[i] >= DataSetSummary::kMaxListedMissing) {
+                    break;
+                }
+                ++listedMissing[i];
+                s.missingCells.push_back({b.sourcePath.empty() ? b.id : b.sourcePath, line, fileColumn,
+                                          col.fileName, std::string(spec(col.id).name)});
             }
         }
         for (const auto& t : b.text) {

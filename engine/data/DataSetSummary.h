@@ -68,6 +68,9 @@ struct DataSetSummary {
     /// The first kMaxListedMissing missing cells per column, in file order (the count per column
     /// is in `columns`, per batch in `batches`): CONTRACT.md §1 reports them with file and line.
     std::vector<MissingCellPlace> missingCells;
+    /// Distinct places (file, line, column) of all missing cells: fewer than the cells where a
+    /// historian run's 1 s grid fills several rows from one sample.
+    std::size_t missingPlaces = 0;
     std::vector<std::string> notes; ///< what reading the files noticed (DataSet::notes)
     /// The notes (also in `notes`) on a required column without a single value: why no row can be
     /// used, kept apart so that an error can say so without matching the notes' wording.

@@ -346,14 +346,7 @@ Expected<PlantFileRuns> parsePlantText(const std::string& raw, const std::string
     // A last line without a line end may be a line cut off while the file was written or copied
     // ("…,12.888,5" for 58.4 loaded as 5 °C with exit 0 in a fresh user's test): it is left out,
     // with a note, where complete lines come before it.
-    const std::string* body = &decoded->text(raw);
-    // A UTF-8 byte-order mark (Excel's "CSV UTF-8") taken off before anything looks at the first
-    // line: left on, it made the "# batch:" line a title line and lost the batch's name.
-    std::string withoutByteOrderMark;
-    if (body->compare(0, 3, "\xEF\xBB\xBF") == 0) {
-        withoutByteOrderMark = body->substr(3);
-        body = &withoutByteOrderMark;
-    }
+    const std::string* body = &decoded->text(raw); // without a byte-order mark (decodeText)
     std::string withoutCutLine;
     if (!body->empty() && body->back() != '\n' && body->back() != '\r') {
         const char lineEnd = body->find('\n') != std::string::npos ? '\n' : '\r';

@@ -189,6 +189,9 @@ private Q_SLOTS:
         none.show();
         QCOMPARE(none.noteShown(0), QString("Open a data set"));
         QVERIFY(none.noteShown(1).isEmpty());
+        // Data on the second plot alone takes the stack's text away from the first.
+        none.addCurve(1, "b", {0, 1}, {1, 2}, Qt::blue);
+        QVERIFY2(none.noteShown(0) != QString("Open a data set"), qPrintable(none.noteShown(0)));
     }
 
     void filterSuffix_data() {

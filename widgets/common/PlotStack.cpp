@@ -397,7 +397,8 @@ QwtPlotCurve* PlotStack::addCurve(int index, const QString& name, const QVector<
         }
     }
     c->setItemAttribute(QwtPlotItem::Legend, !named && !name.isEmpty());
-    if (!x.isEmpty() && !noteShown(index).isEmpty()) {
+    // The stack's own empty text sits on the first plot only: data on any plot takes it away.
+    if (!x.isEmpty() && (m_showingEmptyText || !noteShown(index).isEmpty())) {
         updateEmptyText();
     }
     if (plot != m_plots.front() && !named && !name.isEmpty()) {

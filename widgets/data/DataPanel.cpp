@@ -141,6 +141,7 @@ void DataPanel::mapAndOpen(const QString& file) {
         if (!dialog.save(saveTo, &error)) {
             m_cleaning->setText(
                 tr("The column mapping could not be saved (%1); the data were not loaded.").arg(error));
+            m_cleaning->setToolTip({}); // the notes of the data shown before do not describe this
             return;
         }
         m_keptMappingPath = chosenByUser ? QString() : saveTo;

@@ -843,12 +843,14 @@ void DiscoverPanel::show() {
     const bool extended =
         !d.findings.empty() && std::all_of(d.findings.begin(), d.findings.end(),
                                            [&](const auto& f) { return mechanisms.count(f.cause) > 0; });
-    // A candidate turned down by a specificity check (not for lack of a held-out gain, nor for
-    // lying within the reference's normal spread) fitted and predicted better.
+    // A candidate turned down by a specificity check that a reference period can settle (it
+    // fitted and predicted better, but may be the line's own structure): not one below its
+    // practical floor (real but too small to act on), nor one without a held-out gain.
     const bool aCauseFitsButFailedACheck =
         !d.hasReference && std::any_of(d.rounds.begin(), d.rounds.end(), [](const auto& round) {
             return std::any_of(round.rejected.begin(), round.rejected.end(), [](const auto& x) {
-                return x.code != "no_held_out_gain" && x.code != "within_normal_spread";
+                return x.code == "compensation" || x.code == "inconsistent" || x.code == "not_constant" ||
+                       x.code == "line_dynamics";
             });
         });
     const QString nextStep = extended ? QString() : verdictNextStep(d.verdict, aCauseFitsButFailedACheck);

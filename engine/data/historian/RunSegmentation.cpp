@@ -190,7 +190,9 @@ void resampleRuns(const std::vector<RowSpan>& spans, const std::vector<RowStamp>
                     ++src.interpolatedCells;
                 } else {
                     ++src.gapCells;
-                    b.missing.push_back({rows[i].line, fileColumn, name});
+                    // The sample that is missing: the one after where the one before has a value.
+                    b.missing.push_back(
+                        {std::isfinite(a) ? rows[i + 1].line : rows[i].line, fileColumn, name});
                 }
             }
             b.fileOrder.push_back(static_cast<int>(b.numeric.size()));

@@ -246,6 +246,22 @@ Expected<DecodedText> decodeText(const std::string& raw, const std::string& file
     if (raw.empty()) {
         return fileError(file, 1, 1, "empty file");
     }
+    // A UTF-8 byte-order mark (Excel's "CSV UTF-8") is taken off before anything reads the text:
+    // left on, a reader's first look at line 1 took "# batch:" for a title line, and a file that
+    // is otherwise Windows-1252 turned it into "ï»¿". The text is then a copy without it.
+    if (raw.size() >= 3 && raw.compare(0, 3, "\xEF\xBB\xBF") == 0) {
+        std::string rest = raw.substr(3);
+        auto decoded = decodeText(rest, file, maxLineBytes);
+        if (!decoded) {
+            return decoded;
+        }
+        if (!decoded->isConverted) {
+            decoded->converted = std::move(rest);
+            decoded->isConverted = true;
+        }
+        decoded->byteOrderMark = true;
+        return decoded;
+    }
     const auto u = [&](std::size_t i) { return static_cast<unsigned char>(raw[i]); };
     Expected<DecodedText> decoded = DecodedText{};
     bool littleEndian = true;
@@ -257,8 +273,6 @@ Expected<DecodedText> decodeText(const std::string& raw, const std::string& file
         decoded = fromUtf16(raw, file, littleEndian, false);
     } else if (const auto bad = firstInvalidUtf8(raw); bad != std::string::npos) {
         decoded = fromWindows1252(raw, file, bad);
-    } else {
-        decoded->byteOrderMark = raw.size() >= 3 && raw.compare(0, 3, "\xEF\xBB\xBF") == 0;
     }
     if (!decoded) {
         return decoded;

@@ -33,8 +33,8 @@ struct DecodedText {
     const std::string& text(const std::string& raw) const { return isConverted ? converted : raw; }
 };
 
-/// @brief Decodes a plant file's bytes to UTF-8: a UTF-8 byte-order mark is left for the readers
-/// to skip; UTF-16 LE or BE with or without a byte-order mark, and text that is not UTF-8
+/// @brief Decodes a plant file's bytes to UTF-8: a UTF-8 byte-order mark is taken off (the text is
+/// then a copy); UTF-16 LE or BE with or without a byte-order mark, and text that is not UTF-8
 /// (read as Windows-1252), are converted; lines that end in a carriage return only are split.
 /// Fails with file:line:column on bytes no encoding explains (NUL bytes in 8-bit text, a lone
 /// UTF-16 surrogate, bytes Windows-1252 leaves undefined) and on a line longer than @p maxLineBytes.

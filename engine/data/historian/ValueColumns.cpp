@@ -145,7 +145,9 @@ Expected<ColumnLayout> layOutColumns(const FileShape& shape, const ColumnMapping
                 v.unit = u->second;
                 // The mapping's unit wins over the file's own units row; where they differ, said
                 // (one of them is wrong, and a silent choice converts 150 °C as 150 K).
-                if (shape.unitsRow && c < shape.units.size() && !shape.units[c].empty()) {
+                // A bare "%" does not say wet or dry basis: no contradiction to note.
+                if (shape.unitsRow && c < shape.units.size() && !shape.units[c].empty() &&
+                    shape.units[c] != "%") {
                     const std::string fileUnit = normalisedUnit(shape.units[c], *v.contract);
                     if (!fileUnit.empty() && fileUnit != normalisedUnit(v.unit, *v.contract)) {
                         layout.notes.push_back(

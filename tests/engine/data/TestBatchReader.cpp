@@ -202,7 +202,7 @@ private Q_SLOTS:
         const auto loaded = loadDataSet(dir.path().toStdString());
         QVERIFY(loaded.ok());
         const auto notes = summarize(loaded.dataSet).notes;
-        QVERIFY2(has(notes, "B04.csv", "T_hot_C reads 337.1 °C on average, the other batches about 169.5"),
+        QVERIFY2(has(notes, "B04.csv", "T_hot_C reads 337.1 °C on average, the other batches about 169.2"),
                  joined(notes).c_str());
         QVERIFY2(has(notes, "B04.csv", "T_hot_C (mean 337.1 °C) is hotter than the hot air"),
                  joined(notes).c_str());
@@ -239,6 +239,40 @@ private Q_SLOTS:
         QVERIFY(tonnesLoaded.ok());
         const auto tonnesNotes = summarize(tonnesLoaded.dataSet).notes;
         QVERIFY2(has(tonnesNotes, "B07.csv", "6.2 t/h is 6200 kg/h"), joined(tonnesNotes).c_str());
+
+        // Two batches failing two different checks of one column are each named with their own
+        // check, not one "every batch" note with the first's words.
+        QTemporaryDir two;
+        writeText(two.filePath("B01.csv"), batchText("B01", 30.0, 169.5, 24));  // X_out above X_in (22)
+        writeText(two.filePath("B02.csv"), batchText("B02", 0.128, 169.5, 24)); // X_out a fraction
+        const auto twoLoaded = loadDataSet(two.path().toStdString());
+        QVERIFY(twoLoaded.ok());
+        const auto twoNotes = summarize(twoLoaded.dataSet).notes;
+        QVERIFY2(has(twoNotes, "B01.csv", "is above X_in_pct"), joined(twoNotes).c_str());
+        QVERIFY2(has(twoNotes, "B02.csv", "below a hundredth of X_in_pct"), joined(twoNotes).c_str());
+        QVERIFY2(!has(twoNotes, "every batch", ""), joined(twoNotes).c_str());
+
+        // What a real line does between batches is no unit: a winter batch among summer ones
+        // (ambient -25 against 27 and 28 °C), two products' hot air 55 K apart, a batch at a line
+        // stop (air speed 0 is read as 0 by the factor test of a positive amount).
+        QTemporaryDir seasons;
+        writeText(seasons.filePath("B01.csv"), batchText("B01", 12.8, 130.0, -25));
+        writeText(seasons.filePath("B02.csv"), batchText("B02", 12.8, 185.0, 27));
+        writeText(seasons.filePath("B03.csv"), batchText("B03", 12.8, 130.0, 28));
+        const auto seasonsLoaded = loadDataSet(seasons.path().toStdString());
+        QVERIFY(seasonsLoaded.ok());
+        const auto seasonNotes = summarize(seasonsLoaded.dataSet).notes;
+        QVERIFY2(!has(seasonNotes, "reads", "on average"), joined(seasonNotes).c_str());
+        // ... while the same ambient in °F in one batch is named (68 °F is 20 °C).
+        QTemporaryDir ambientF;
+        writeText(ambientF.filePath("B01.csv"), batchText("B01", 12.8, 169.5, 20));
+        writeText(ambientF.filePath("B02.csv"), batchText("B02", 12.8, 169.5, 21));
+        writeText(ambientF.filePath("B03.csv"), batchText("B03", 12.8, 169.5, 68));
+        const auto ambientLoaded = loadDataSet(ambientF.path().toStdString());
+        QVERIFY(ambientLoaded.ok());
+        const auto ambientNotes = summarize(ambientLoaded.dataSet).notes;
+        QVERIFY2(has(ambientNotes, "B03.csv", "T_amb_C reads 68 °C on average, the other batches about 20.5"),
+                 joined(ambientNotes).c_str());
     }
 
     // An outlet transmitter that never moves over ten minutes or more is frozen, even where the
