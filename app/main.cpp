@@ -111,6 +111,11 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
                                  std::fprintf(stderr, "drytwin: error: %s\n", qPrintable(message));
                              }
                          });
+        QObject::connect(&window, &drytwin::widgets::MainWindow::trainingSessionFailed, &window,
+                         [failures](const QString& message) {
+                             ++*failures;
+                             std::fprintf(stderr, "drytwin: error: %s\n", qPrintable(message));
+                         });
         auto finish = [&window, screenshot, projectToSave, failures]() -> bool {
             if (!projectToSave->isEmpty()) {
                 QString error;
@@ -188,11 +193,15 @@ int runGui(int argc, char** argv, const drytwin::app::ParsedCommandLine& parsed)
             std::fprintf(stderr, "drytwin: error: %s\n", qPrintable(error));
             return 3;
         }
-    } else if (!dataPath.isEmpty()) {
+    } else {
+        // --model alone (a training session's learnt controllers) is opened too; it was ignored
+        // without --data.
         if (!parsed.modelPath.empty()) {
             window.workbench().openModel(QString::fromStdString(parsed.modelPath));
         }
-        window.openDataSet(dataPath, QString::fromStdString(parsed.mappingPath));
+        if (!dataPath.isEmpty()) {
+            window.openDataSet(dataPath, QString::fromStdString(parsed.mappingPath));
+        }
     }
     if (!parsed.trainingSession.empty()) {
         window.openTrainingSession(QString::fromStdString(parsed.trainingSession));

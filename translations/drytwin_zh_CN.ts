@@ -1107,7 +1107,7 @@
         <translation>基于 LSTM 的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="59"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="60"/>
         <source>MPC on: %1</source>
         <translation>MPC，基于：%1</translation>
     </message>
@@ -1661,33 +1661,33 @@
         <translation>列映射无法保存（%1）；数据未载入。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="149"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="150"/>
         <source>The column mapping is kept at %1 and in the project when you save it; “Map its columns…” changes it.</source>
         <translation>列映射已保存在 %1，保存项目时也会一并保存；可用“映射其列…”修改。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="207"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="208"/>
         <source>%1, lines %2–%3, from %4, ended by %5</source>
         <translation>%1，第 %2–%3 行，始于 %4，结束原因：%5</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="235"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="236"/>
         <source>Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.</source>
         <translation>清洗（论文 §IV.A）：%2 行中保留 %1 行；剔除原因：X_HDT %3，T_HDT %4，进料 %5，缺失值 %6，不可能的值 %7。划分：前 %8 行用于训练，后 %9 行用于测试。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="248"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="249"/>
         <source>A row may fail more than one rule. The model uses %1 rows: those kept, less the rows where an input was bridged across a dropout.</source>
         <translation>一行可能不满足多条规则。模型使用 %1 行：即保留的行，再去掉输入在掉线处被桥接的行。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="254"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="255"/>
         <source>A transmitter hung (the same reading for a minute or more) on %1 rows: left out, an input bridged like a dropout.</source>
         <translation>有变送器卡死（同一读数持续一分钟以上），涉及 %1 行：这些行不参与拟合，输入按断线同样桥接。</translation>
     </message>
     <message>
-        <location filename="../widgets/data/DataPanel.cpp" line="259"/>
-        <location filename="../widgets/data/DataPanel.cpp" line="273"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="260"/>
+        <location filename="../widgets/data/DataPanel.cpp" line="274"/>
         <source>Noted while reading (%1):</source>
         <translation>读取时的提示（%1）：</translation>
     </message>
@@ -1796,7 +1796,7 @@
         <translation>保留行中每隔 10 行</translation>
     </message>
     <message>
-        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="263"/>
+        <location filename="../widgets/diagnostics/DiagnosticsPanel.cpp" line="272"/>
         <source>lag of the input [s]; the outlet-moisture error&apos;s correlation with each input</source>
         <translation>输入的滞后 [s]；出口水分误差与各输入的相关系数</translation>
     </message>
@@ -1840,7 +1840,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="43"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="865"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="867"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
@@ -1861,7 +1861,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="871"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="873"/>
         <source>Score z: how strongly the model&apos;s error points at this cause, in standard deviations of chance; above about 3 is strong evidence.</source>
         <translation>得分 z：模型误差指向该原因的强度，以偶然波动的标准差计；约 3 以上为有力证据。</translation>
     </message>
@@ -2032,7 +2032,7 @@
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="133"/>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="821"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1035"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1037"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -2041,7 +2041,7 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="859"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="861"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
@@ -2522,12 +2522,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="913"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="915"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="913"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="915"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2536,23 +2536,23 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="963"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="965"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="966"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="968"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="974"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="976"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="476"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="882"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="884"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
@@ -2611,14 +2611,14 @@
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="856"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="858"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="244"/>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="598"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="857"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="859"/>
         <source>, </source>
         <translation>、</translation>
     </message>
@@ -2627,69 +2627,69 @@
         <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="860"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="862"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="883"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="885"/>
         <source>Named on its fit: it lowers the held-out error (p = %1) and passes the checks that it is this cause; the screen&apos;s p only ranks the candidates for fitting.</source>
         <translation>按其拟合指认：它降低了留出部分的误差（p = %1），并通过了确认是此原因的各项检查；筛选的 p 只用于为拟合排列候选。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="898"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="900"/>
         <source>fitted, not the best</source>
         <translation>已拟合，非最佳</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="899"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="901"/>
         <source>Fitted in a round in which another cause explained more of the error; the causes named after it were fitted on the model extended by it.</source>
         <translation>在某一轮中已拟合，但另一原因解释了更多误差；其后指认的原因是在由它扩展的模型上拟合的。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="910"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="912"/>
         <source>not fitted (weaker)</source>
         <translation>未拟合（证据较弱）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="984"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="986"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1000"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1002"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1009"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1011"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1016"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1018"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1021"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1023"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1029"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1031"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1049"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1051"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="744"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1050"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1076"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1052"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1078"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
@@ -2699,14 +2699,14 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1051"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1053"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="744"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1052"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1080"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1054"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1082"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2753,12 +2753,12 @@
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="865"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="867"/>
         <source>Change z</source>
         <translation>变化 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="868"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="870"/>
         <source>Change z: how far the cause&apos;s one-step estimate here lies from its normal value on the reference period, in units of both estimates&apos; errors and the spread between the reference&apos;s periods; above 2 it moved.</source>
         <translation>变化 z：该原因在此处的一步估计与其在参考期的正常值相差多远，以两次估计的误差及参考期各时段间的离散为单位；大于 2 即为发生了变化。</translation>
     </message>
@@ -2771,92 +2771,92 @@
         <translation>未拟合：证据弱于已拟合的候选</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="923"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="925"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="938"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="940"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="945"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="947"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="959"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="961"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1004"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1006"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1034"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1036"/>
         <source>Held-out accuracy: nothing was named, so nothing was extended (before = after):</source>
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1039"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1041"/>
         <source>Gain on the held-out part, with every named cause (each finding&apos;s own gain is in its evidence):</source>
         <translation>留出部分的改进（含所有已指认的原因；每项发现各自的改进见其证据）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1053"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1055"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1062"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1064"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1075"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1077"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1075"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1077"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1076"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1078"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1079"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1081"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1079"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1081"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1080"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1082"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1107"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1109"/>
         <source>model (nothing extended)</source>
         <translation>模型（未扩展）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1109"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1111"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1110"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1112"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -3538,9 +3538,19 @@
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="69"/>
+        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="75"/>
+        <source>Opening the training session %1…</source>
+        <translation>正在打开培训会话 %1…</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="86"/>
         <source>Training session %1 (its recording is on the Training tab; no data set is loaded for the other tabs)</source>
         <translation>培训会话 %1（其记录显示在“培训”选项卡上；其他选项卡未加载数据集）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="90"/>
+        <source>The training session %1 could not be opened: %2</source>
+        <translation>无法打开培训会话 %1：%2</translation>
     </message>
 </context>
 <context>
@@ -4011,52 +4021,52 @@ The results below are from the last complete run.</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="313"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="315"/>
         <source>No data yet</source>
         <translation>尚无数据</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="584"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="588"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="587"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="591"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="590"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="594"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="594"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="598"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="598"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="602"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="719"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="723"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="747"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="751"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
         <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="783"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="789"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="697"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="701"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
@@ -4065,7 +4075,7 @@ The results below are from the last complete run.</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="782"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="788"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
@@ -4074,12 +4084,12 @@ The results below are from the last complete run.</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="789"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="795"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="791"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="797"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
@@ -4668,12 +4678,12 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::TrainingPanel</name>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="86"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="87"/>
         <source>The line&apos;s conditions: initial levels, load changes, seed (docs/mpc.md)</source>
         <translation>产线条件：初始水平、负荷变化、随机种子（docs/mpc.md）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="87"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="88"/>
         <source>Start session</source>
         <translation>开始会话</translation>
     </message>
@@ -4686,241 +4696,241 @@ extrapolation</source>
         <translation>显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="90"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="91"/>
         <source>Instructor window…</source>
         <translation>教员窗口…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="91"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="92"/>
         <source>Opens the instructor&apos;s window: clock, snapshots, faults, the true moisture and the score. Not on the trainee&apos;s screen.</source>
         <translation>打开教员窗口：时钟、快照、故障、真实水分和得分。不显示在学员屏幕上。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="93"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="94"/>
         <source>No session</source>
         <translation>无会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="102"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="103"/>
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="109"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="110"/>
         <source> % wb</source>
         <translation> % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="111"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="112"/>
         <source>Apply</source>
         <translation>应用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="120"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="121"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="122"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="123"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="126"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="127"/>
         <source>X_out setpoint</source>
         <translation>X_out 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="127"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="128"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="131"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="132"/>
         <source>Diagnose the recording…</source>
         <translation>诊断记录…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="132"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="133"/>
         <source>Saves what the line recorded so far as a batch file and opens it, so that the Discover tab can show what the model gets wrong</source>
         <translation>将产线至今的记录保存为批次文件并打开，以便“发现”页显示模型哪里出错</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="135"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="620"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="136"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="626"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="139"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="140"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="605"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="143"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="611"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="143"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="144"/>
         <source>Stops the line&apos;s clock while you think; press again to continue</source>
         <translation>思考时暂停产线时钟；再按一次继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="144"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="145"/>
         <source>Trainee</source>
         <translation>学员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="154"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="155"/>
         <source>Causes named (session time):</source>
         <translation>已给出的原因（会话时间）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="158"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="604"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="159"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="610"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="162"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="163"/>
         <source> min</source>
         <translation> 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="163"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="164"/>
         <source>Run ahead</source>
         <translation>快进</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="164"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="165"/>
         <source>Runs the line this much further at full speed</source>
         <translation>以最快速度让产线再运行这么久</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="166"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="167"/>
         <source>label (default: the time)</source>
         <translation>标签（默认：时间）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="167"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="168"/>
         <source>Take snapshot</source>
         <translation>拍摄快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="170"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="171"/>
         <source>Restore selected</source>
         <translation>恢复所选快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="180"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
         <source> s from now</source>
         <translation> 秒后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="182"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="182"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="205"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="183"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="206"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="182"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="207"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="183"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="208"/>
         <source>Strength</source>
         <translation>强度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="182"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="209"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="183"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="210"/>
         <source>Acts from</source>
         <translation>起作用时间</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="182"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="183"/>
         <source>Found after</source>
         <translation>发现用时</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="186"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="187"/>
         <source>Save session…</source>
         <translation>保存会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="187"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="188"/>
         <source>Open session…</source>
         <translation>打开会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="188"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="231"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="345"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="189"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="232"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="346"/>
         <source>Instructor</source>
         <translation>教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="201"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="202"/>
         <source>Clock and snapshots</source>
         <translation>时钟与快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="213"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="214"/>
         <source>Faults</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="217"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="218"/>
         <source>A session file holds the scenario, every event (faults, snapshots, answers) and the recording as a batch file; reopening replays it to the same data.</source>
         <translation>会话文件包含工况、每个事件（故障、快照、回答）以及作为批次文件的记录；重新打开时会回放得到相同的数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="225"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="226"/>
         <source>Set instructor password…</source>
         <translation>设置教员密码…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="226"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="227"/>
         <source>Asked before the instructor window opens (empty: no password)</source>
         <translation>打开教员窗口前询问（留空：不设密码）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="232"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="233"/>
         <source>New instructor password (empty: none):</source>
         <translation>新的教员密码（留空：无）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="239"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="240"/>
         <source>Session file</source>
         <translation>会话文件</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="242"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="243"/>
         <source>Start a session: the line runs live under its PI loop.</source>
         <translation>开始会话：产线在其 PI 回路下实时运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="247"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="248"/>
         <source>Two detectors commissioned on healthy runs of this line: the physics model&apos;s error, and a dynamic PCA monitor of the screens&apos; signals. Each alarms when the line leaves its normal (1 % chance of a false alarm over the session)</source>
         <translation>两个检测器在本产线的健康运行数据上调试：物理模型误差，以及画面信号的动态 PCA 监控。产线偏离正常状态时各自报警（整个会话的误报概率为 1 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="266"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="281"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="267"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="282"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="267"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="268"/>
         <source>T_hot [°C]</source>
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="268"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
         <source>Feed [kg/h]</source>
         <translation>进料 [kg/h]</translation>
     </message>
@@ -4929,39 +4939,39 @@ extrapolation</source>
         <translation>进料 [t/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="270"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="270"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="282"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="271"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="283"/>
         <source>session time [min]</source>
         <translation>会话时间 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="272"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="273"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="274"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="275"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="275"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="285"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="276"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="286"/>
         <source>X_out measured</source>
         <translation>X_out 测量值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="278"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="279"/>
         <source>DryTwin — instructor</source>
         <translation>DryTwin — 教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="287"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="288"/>
         <source>X_out true</source>
         <translation>X_out 真实值</translation>
     </message>
@@ -4970,67 +4980,67 @@ extrapolation</source>
         <translation type="vanished">监控 T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="301"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="302"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="302"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="303"/>
         <source>T² of the model&apos;s error</source>
         <translation>模型误差的 T²</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="311"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
         <source>Start a session to see the line run</source>
         <translation>开始会话即可看到产线运行</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="313"/>
         <source>The monitor&apos;s T² shows once it has a minute of the model&apos;s error</source>
         <translation>监测器积累一分钟的模型误差后显示 T²</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="315"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="316"/>
         <source>Start a session to see the true outlet moisture beside the measured</source>
         <translation>开始会话即可看到真实出口含水率与测量值的对比</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="417"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="418"/>
         <source>Save the session as a folder</source>
         <translation>把会话保存为文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="420"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="421"/>
         <source>Session folder (*)</source>
         <translation>会话文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="662"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="668"/>
         <source>Line monitor unavailable: %1</source>
         <translation>产线监控不可用：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="664"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="670"/>
         <source>Line monitor: normal (as on its commissioning runs).</source>
         <translation>产线监控：正常（与调试运行一致）。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="669"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="675"/>
         <source>the model&apos;s error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="669"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="675"/>
         <source>the screens&apos; signals (PCA)</source>
         <translation>画面信号（PCA）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="672"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="678"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal; the change began at about %3. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态；变化约始于 %3。请诊断记录以确定原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="675"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="681"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态。请诊断记录以确定原因。</translation>
     </message>
@@ -5039,57 +5049,57 @@ extrapolation</source>
         <translation>X_out 真实值（教员）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="295"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="296"/>
         <source>T_hot setpoint</source>
         <translation>T_hot 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="296"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="297"/>
         <source>T_hot</source>
         <translation>T_hot</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="297"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="298"/>
         <source>feed</source>
         <translation>进料</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="298"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="299"/>
         <source>X_in</source>
         <translation>X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="299"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="300"/>
         <source>T² [-]</source>
         <translation>T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="320"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="321"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="321"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="322"/>
         <source>Stops the replay or the run ahead; the line stays where it got to</source>
         <translation>停止回放或快进；产线停留在已运行到的位置</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="323"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="324"/>
         <source>Scenario</source>
         <translation>工况</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="345"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="346"/>
         <source>Instructor password:</source>
         <translation>教员密码：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="348"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="349"/>
         <source>Wrong password: the instructor window stays closed.</source>
         <translation>密码错误：教员窗口保持关闭。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="405"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="406"/>
         <source>Select a snapshot to restore.</source>
         <translation>请选择要恢复的快照。</translation>
     </message>
@@ -5098,132 +5108,132 @@ extrapolation</source>
         <translation>将会话保存到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="426"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="427"/>
         <source>Open a training session</source>
         <translation>打开培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="426"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="427"/>
         <source>Sessions (*.json)</source>
         <translation>会话 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="435"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="436"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="442"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="446"/>
         <source>Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录以供诊断：%1。请在其上运行“发现”，然后在此给出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="445"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="449"/>
         <source>Recording opened for diagnosis: %1; the line&apos;s commissioning runs are in %2. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录用于诊断：%1；产线的调试运行数据位于 %2。对其运行“发现”，然后在此处指出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="452"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="456"/>
         <source>Session saved: %1</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="508"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="512"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="512"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="516"/>
         <source>The previous session was saved in %1.</source>
         <translation>上一个会话已保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="525"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="530"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="550"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="555"/>
         <source>%1 (stale: retrain)</source>
         <translation>%1（过期：需重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="551"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="556"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="599"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="604"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="601"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="607"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="601"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="607"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="601"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="607"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="603"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="609"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="604"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="610"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="605"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="611"/>
         <source>Continue</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="615"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="621"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="616"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="622"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="620"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="626"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="627"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="633"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="637"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="643"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="637"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="643"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="640"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="646"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="650"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="656"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>

@@ -8,6 +8,8 @@ import re
 import sys
 
 ZH = {
+    "Opening the training session %1…": "正在打开培训会话 %1…",
+    "The training session %1 could not be opened: %2": "无法打开培训会话 %1：%2",
     "A part whose estimate left the parameter's range is held at its bound.": "某一部分的估计值超出了参数范围，已按其边界处理。",
     "Next: a cause fits these data and predicts better but failed a check (the table says which and why); one data set alone cannot tell it from the line's own structure. Compare with data from a time when the line ran well (“Compare with a reference period”), or record longer or more batches.": "下一步：有一个原因能拟合这些数据并预测得更好，但未通过某项检查（表中说明是哪一项及原因）；仅凭一个数据集无法把它与产线自身的结构区分开。请与产线运行良好时的数据比较（“与参考期比较”），或记录更长、更多的批次。",
     "PGRL-CC, all components": "PGRL-CC，全部组成部分",

@@ -106,6 +106,8 @@ Q_SIGNALS:
     void loadFinished(bool ok);
     /// @brief A project finished opening (data loaded and simulated, model opened).
     void projectReady(bool ok);
+    /// @brief A training session asked for by openTrainingSession() could not be opened.
+    void trainingSessionFailed(const QString& message);
 
 protected:
     void closeEvent(QCloseEvent* event) override;

@@ -9,6 +9,7 @@
 #include "plant/Mechanisms.h"
 #include "workflow/Session.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -51,7 +52,11 @@ int runMpc(const CommandOptions& o) {
                     Error{ErrorKind::Usage, "--controllers",
                           "\"" + name + "\" is not one of pbm, ext_input_residual, lstm, pgrl_cc, pi"});
             }
-            options.closedLoop.controllers.push_back(*k);
+            // Named twice is one run (pi,pi ran and printed the PI loop twice).
+            if (std::find(options.closedLoop.controllers.begin(), options.closedLoop.controllers.end(), *k) ==
+                options.closedLoop.controllers.end()) {
+                options.closedLoop.controllers.push_back(*k);
+            }
         }
     }
     workflow::Session session;
@@ -68,6 +73,14 @@ int runMpc(const CommandOptions& o) {
     auto result = session.mpc(options, o.progress);
     if (!result) {
         return fail(result.error());
+    }
+    // Cancelled (Ctrl+C): the runs so far stopped at different points and their scores are not
+    // comparable with each other or with a whole run (a PGRL-CC IAE of 20 after 51 of 500
+    // decisions read as a result, with exit 0 and the JSON written). Said, nothing written, 130.
+    if (result->ending.termination == Termination::StoppedKeptBest) {
+        std::fprintf(stderr, "drytwin mpc: stopped before every controller had run the whole scenario; "
+                             "nothing written (the scores of part-runs are not comparable)\n");
+        return fail(cancelledError("mpc"));
     }
     const auto& r = result->closedLoop;
     std::printf(
@@ -102,10 +115,15 @@ int runMpc(const CommandOptions& o) {
         "\nIAE and violations on the product's true outlet moisture; solve = Ipopt per decision, model = "
         "forecasts and linearisation; gain = the model's steady dX_out/dT_hot (the plant's: %.4f %%/K).\n",
         r.plantGainPctPerK);
-    std::printf(
-        "\nWhy the ranking: each model forecasting the PI run as its MPC would (disturbances held, same "
-        "update), MAE of X_out [%% wb]\n%-20s",
-        "model");
+    // Only where some model's forecasts were checked (the PI loop alone has none).
+    const bool anyChecked = std::any_of(r.runs.begin(), r.runs.end(),
+                                        [](const auto& run) { return run.forecastCheck.has_value(); });
+    if (anyChecked) {
+        std::printf(
+            "\nWhy the ranking: each model forecasting the PI run as its MPC would (disturbances held, "
+            "same update), MAE of X_out [%% wb]\n%-20s",
+            "model");
+    }
     bool header = false;
     bool tooShort = false;
     for (const auto& run : r.runs) {
@@ -134,9 +152,6 @@ int runMpc(const CommandOptions& o) {
         std::printf("n/a: the scenario's PI run is too short to score a forecast that far ahead.\n");
     }
     std::printf("\n%.1f s\n", result->ending.elapsedSeconds);
-    if (result->ending.termination == Termination::StoppedKeptBest) {
-        std::printf("%s\n", result->ending.message.c_str());
-    }
     if (!o.jsonPath.empty()) {
         if (auto st = writeFileAtomically(o.jsonPath, io::mpcJson(r)); !st) {
             return fail(st.error());

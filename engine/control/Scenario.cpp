@@ -132,6 +132,10 @@ Expected<Scenario> parseScenario(const std::string& text, const std::string& pla
         return Error{ErrorKind::BadInput,
                      place + ":" + std::to_string(lineAt(text, e.byte > 0 ? e.byte - 1 : 0)),
                      "not valid JSON (" + std::string(e.what()) + ")"};
+    } catch (const json::exception& e) {
+        // A number no double holds (1e400) is the parser's out_of_range, not a parse_error: it
+        // ended the program (a trainer's session file closed the whole window).
+        return Error{ErrorKind::BadInput, place, "not valid JSON (" + std::string(e.what()) + ")"};
     }
     if (!j.is_object()) {
         return Error{ErrorKind::BadInput, place + ":1", "a scenario is a JSON object"};

@@ -118,6 +118,10 @@ Expected<HybridModel> parseModelFile(const std::string& text, const std::string&
     } catch (const json::parse_error& e) {
         return Error{ErrorKind::BadInput, name + ":byte " + std::to_string(e.byte),
                      std::string("invalid JSON: ") + e.what()};
+    } catch (const json::exception& e) {
+        // A number no double holds (1e400) is the parser's out_of_range, not a parse_error: it
+        // ended the program (a trainer's session file closed the whole window).
+        return Error{ErrorKind::BadInput, name, std::string("invalid JSON: ") + e.what()};
     }
     // A key of the wrong type (null where a number belongs ...) is an error naming the file, never
     // an exception across the engine's boundary.

@@ -23,6 +23,10 @@ Expected<json> readJson(const std::filesystem::path& p) {
         return json::parse(*text);
     } catch (const json::parse_error& e) {
         return Error{ErrorKind::BadInput, p.string(), std::string("invalid JSON: ") + e.what()};
+    } catch (const json::exception& e) {
+        // A number no double holds (1e400) is the parser's out_of_range, not a parse_error: it
+        // ended the program (a trainer's session file closed the whole window).
+        return Error{ErrorKind::BadInput, p.string(), std::string("invalid JSON: ") + e.what()};
     }
 }
 

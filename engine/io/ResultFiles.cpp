@@ -126,6 +126,7 @@ std::string mpcJson(const control::ClosedLoopResult& result) {
                      {"description", sc.description},
                      {"seed", sc.seed},
                      {"warmup_s", sc.warmupS},
+                     {"length_s", sc.lengthS},
                      {"control_interval_s", sc.controlIntervalS},
                      {"band_pct", sc.bandPct},
                      // Which line it ran against: a file without "plant" runs on the lumped one.
@@ -135,6 +136,7 @@ std::string mpcJson(const control::ClosedLoopResult& result) {
                   {"effort", "K^2"},
                   {"violation_pct", "% of steps"},
                   {"solve_ms", "ms"},
+                  {"gain", "% wb/K"},
                   {"x_out", "% wb"},
                   {"t_hot", "°C"},
                   {"time", "s from the start of the scored part"}};
@@ -156,13 +158,17 @@ std::string mpcJson(const control::ClosedLoopResult& result) {
             continue;
         }
         const auto& m = r.metrics;
+        // The PI loop decides nothing by a model: its solve times and believed gain are null, not
+        // 0 (a script read the PI loop's gain as 0 % wb/K).
+        const bool byModel = r.kind != control::ControllerKind::Pi;
+        const auto modelValue = [byModel](double v) { return byModel ? json(v) : json(nullptr); };
         j["controllers"][name] = {{"iae", m.iaePctS},
                                   {"effort", m.effortK2},
                                   {"violation_pct", m.violationPct},
-                                  {"solve_ms_median", m.solveMsMedian},
-                                  {"solve_ms_max", m.solveMsMax},
-                                  {"model_ms_median", m.modelMsMedian},
-                                  {"gain_pct_per_k_median", m.gainPctPerKMedian},
+                                  {"solve_ms_median", modelValue(m.solveMsMedian)},
+                                  {"solve_ms_max", modelValue(m.solveMsMax)},
+                                  {"model_ms_median", modelValue(m.modelMsMedian)},
+                                  {"gain_pct_per_k_median", modelValue(m.gainPctPerKMedian)},
                                   {"decisions", m.decisions},
                                   {"fallbacks", m.fallbacks},
                                   {"last_fallback_reason", m.lastFallbackReason},

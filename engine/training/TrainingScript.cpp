@@ -4,10 +4,13 @@
 #include "control/BundledScenarios.h"
 #include "data/BatchWriter.h"
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 namespace drytwin::training {
@@ -74,11 +77,16 @@ Expected<TrainingScript> parseTrainingScript(const std::string& text, const std:
         j = json::parse(text);
     } catch (const json::parse_error& e) {
         return Error{ErrorKind::BadInput, place, "not valid JSON (" + std::string(e.what()) + ")"};
+    } catch (const json::exception& e) {
+        // A number no double holds (1e400) is the parser's out_of_range, not a parse_error: it
+        // ended the program (a trainer's session file closed the whole window).
+        return Error{ErrorKind::BadInput, place, "not valid JSON (" + std::string(e.what()) + ")"};
     }
     if (!j.is_object() || !j.contains("scenario")) {
         return Error{ErrorKind::BadInput, place, "a session file is a JSON object with a \"scenario\""};
     }
     TrainingScript script;
+    script.place = place;
     const json& sc = j["scenario"];
     if (sc.is_string()) {
         const auto& bundled = control::bundledScenarios();
@@ -118,6 +126,32 @@ Expected<TrainingScript> parseTrainingScript(const std::string& text, const std:
                 return eventError(place, i, "", "must be an object");
             }
             SessionEvent ev;
+            // A key the event's type does not take is refused, as a scenario file's is: a
+            // misspelt "onset" was ignored and the fault acted from its injection on.
+            static const std::map<std::string, std::set<std::string>> keysOf = {
+                {"setpoint", {"value_pct"}},
+                {"controller", {"controller"}},
+                {"fault", {"cause", "strength", "onset_s"}},
+                {"snapshot", {"label"}},
+                {"restore", {"label"}},
+                {"answer", {"cause"}},
+                {"freeze", {}},
+                {"resume", {}}};
+            if (e.contains("type") && e["type"].is_string()) {
+                if (const auto known = keysOf.find(e["type"].get<std::string>()); known != keysOf.end()) {
+                    for (const auto& [key, value] : e.items()) {
+                        if (key != "at_s" && key != "type" && !known->second.count(key)) {
+                            std::string allowed = "at_s, type";
+                            for (const auto& k : known->second) {
+                                allowed += ", " + k;
+                            }
+                            return eventError(place, i, key,
+                                              "unknown key for a " + known->first + " event (it takes " +
+                                                  allowed + "; docs/training.md lists them)");
+                        }
+                    }
+                }
+            }
             auto at = eventNumber(e, "at_s", place, i);
             if (!at) {
                 return at.error();
@@ -217,12 +251,16 @@ Expected<TrainingSession> replay(const TrainingScript& script,
         return session.error();
     }
     const double end = script.endS >= 0 ? script.endS : session->endS();
-    const auto runTo = [&](double t) -> Status {
+    const auto runTo = [&](double t, const std::string& what) -> Status {
         const double gap = std::round(t - session->timeS());
         if (gap < 0) {
-            return Error{ErrorKind::BadInput, "replay",
-                         "an event at " + std::to_string(t) + " s lies before the session's time " +
-                             std::to_string(session->timeS()) + " s"};
+            // Named in the file: which entry, at what time, and why that is before (the events
+            // run in time order; a restore takes the session back to its snapshot's time).
+            return Error{ErrorKind::BadInput, script.place.empty() ? "replay" : script.place,
+                         what + " at " + std::to_string(static_cast<long>(t)) +
+                             " s lies before the session's time " +
+                             std::to_string(static_cast<long>(session->timeS())) +
+                             " s there: the events must be in time order"};
         }
         const auto wanted = static_cast<std::size_t>(gap);
         if (wanted > 0 && session->frozen()) {
@@ -243,7 +281,8 @@ Expected<TrainingSession> replay(const TrainingScript& script,
     };
     for (std::size_t i = 0; i < script.events.size(); ++i) {
         const SessionEvent& e = script.events[i];
-        if (auto st = runTo(e.atS); !st) {
+        if (auto st = runTo(e.atS, "events[" + std::to_string(i) + "] (" + eventTypeName(e.type) + ")");
+            !st) {
             return st.error();
         }
         Status st;
@@ -281,7 +320,7 @@ Expected<TrainingSession> replay(const TrainingScript& script,
         }
     }
     session->resume(); // a session saved while frozen runs on to its end when replayed
-    if (auto st = runTo(end); !st) {
+    if (auto st = runTo(end, script.endS >= 0 ? "end_s" : "the scenario's end"); !st) {
         return st.error();
     }
     return std::move(*session);
@@ -337,6 +376,26 @@ std::string sessionJson(const std::string& scenarioJson, const TrainingSession& 
 
 namespace drytwin::training {
 
+namespace {
+
+/// The scenario's name as a file name: letters, digits, '-', '_' and '.' kept, anything else
+/// (a '/', "..", a space) as '_'. The name came straight from the session file: "../../evil"
+/// wrote the recording outside the output folder, "line 3/shift A" failed after the folder was
+/// made.
+std::string fileNameOf(const std::string& name) {
+    std::string out;
+    for (const char c : name) {
+        const auto u = static_cast<unsigned char>(c);
+        out += std::isalnum(u) || c == '-' || c == '_' || (c == '.' && !out.empty()) ? c : '_';
+    }
+    while (!out.empty() && out.back() == '.') {
+        out.pop_back();
+    }
+    return out.empty() ? "training" : out;
+}
+
+} // namespace
+
 Expected<SavedSession> saveSession(const std::string& folder, const std::string& scenarioJson,
                                    const TrainingSession& session) {
     namespace fs = std::filesystem;
@@ -347,7 +406,7 @@ Expected<SavedSession> saveSession(const std::string& folder, const std::string&
     }
     SavedSession saved;
     const std::string id = session.scenario().name.empty() ? "training" : session.scenario().name;
-    const std::string relative = "recording/" + id + ".csv";
+    const std::string relative = "recording/" + fileNameOf(id) + ".csv";
     const std::string csv = (fs::path(folder) / relative).string();
     if (auto st = data::writeBatchFile(session.recording(id), csv); !st) {
         return st.error();

@@ -18,7 +18,8 @@ struct TrainingScript {
     std::string scenarioJson; ///< the scenario as JSON text (a bundled one's, or the file's)
     control::Scenario scenario;
     std::vector<SessionEvent> events;
-    double endS = -1; ///< session time to run to after the last event; negative: the scenario's end
+    double endS = -1;  ///< session time to run to after the last event; negative: the scenario's end
+    std::string place; ///< the session file (or what parsed it), for the replay's messages
 };
 
 /// @brief Parses a session file; errors name @p place and the event ("place: events[3].at_s: …").

@@ -38,6 +38,11 @@ Expected<ProjectPaths> readProjectPaths(const std::string& projectPath) {
                      cutShort ? "the project file is damaged or cut short (not valid JSON at byte " +
                                     std::to_string(e.byte) + ")"
                               : "not a DryTwin project (not JSON)"};
+    } catch (const json::exception& e) {
+        // A number no double holds (1e400) is the parser's out_of_range, not a parse_error: it
+        // ended the program (a trainer's session file closed the whole window).
+        return Error{ErrorKind::BadInput, projectPath,
+                     "the project file is damaged (" + std::string(e.what()) + ")"};
     }
     if (!o.is_object() || text(o, "format") != "drytwin-project") {
         return Error{ErrorKind::BadInput, projectPath,

@@ -267,6 +267,10 @@ Expected<LatestResults> parseLatestResults(const std::string& text, const std::s
     } catch (const json::parse_error& e) {
         return bad("not valid JSON at byte " + std::to_string(e.byte) +
                    " (the file is damaged or cut short)");
+    } catch (const json::exception& e) {
+        // A number no double holds (1e400) is the parser's out_of_range, not a parse_error: it
+        // ended the program (a trainer's session file closed the whole window).
+        return bad("not valid JSON (" + std::string(e.what()) + "; the file is damaged)");
     }
     if (!j.is_object()) {
         return bad("not a DryTwin results file (not a JSON object)");

@@ -64,11 +64,34 @@ bool MainWindow::hasPendingActions() const {
 }
 
 void MainWindow::openTrainingSession(const QString& sessionFile) {
+    // A model or project opened beside it (--model, --project) is read by a job: the session is
+    // replayed with the learnt controllers once they are in (its pgrl_cc was "not in the model
+    // file" when replayed at once).
+    if (m_workbench.jobs().busy()) {
+        QTimer::singleShot(100, this, [this, sessionFile] { openTrainingSession(sessionFile); });
+        return;
+    }
     m_tabs->setCurrentWidget(m_training);
-    // The recording is the training session's own: the status line says so rather than "no data".
-    m_statusLabel->setText(tr("Training session %1 (its recording is on the Training tab; no data set is "
-                              "loaded for the other tabs)")
-                               .arg(QDir::toNativeSeparators(sessionFile)));
+    m_statusLabel->setText(tr("Opening the training session %1…").arg(QDir::toNativeSeparators(sessionFile)));
+    auto* once = new QObject(this);
+    connect(m_training, &TrainingPanel::sessionOpenFinished, once,
+            [this, once, sessionFile](const QString& file, bool ok, const QString& message) {
+                if (file != sessionFile) {
+                    return;
+                }
+                once->deleteLater();
+                // The recording is the training session's own: the status line says so rather
+                // than "no data"; a session that could not be opened says that instead.
+                if (ok) {
+                    m_statusLabel->setText(tr("Training session %1 (its recording is on the Training tab; "
+                                              "no data set is loaded for the other tabs)")
+                                               .arg(QDir::toNativeSeparators(sessionFile)));
+                } else {
+                    m_statusLabel->setText(tr("The training session %1 could not be opened: %2")
+                                               .arg(QDir::toNativeSeparators(sessionFile), message));
+                    Q_EMIT trainingSessionFailed(m_statusLabel->text());
+                }
+            });
     m_training->openSession(sessionFile);
 }
 

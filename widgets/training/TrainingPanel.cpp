@@ -39,6 +39,7 @@
 #include <cmath>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
+#include <utility>
 
 namespace drytwin::widgets {
 
@@ -430,9 +431,12 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     });
     connect(m_runner, &TrainingRunner::frameReady, this, &TrainingPanel::showFrame);
     connect(m_runner, &TrainingRunner::failed, this, [this](const QString& action, const QString& message) {
-        m_opening = false;
+        const bool wasOpening = std::exchange(m_opening, false);
         setLongWork(false);
         m_note->setText(tr("%1: %2").arg(action, message));
+        if (wasOpening) {
+            Q_EMIT sessionOpenFinished(m_openingFile, false, m_note->text());
+        }
     });
     connect(m_runner, &TrainingRunner::saved, this,
             [this](const QString& sessionFile, const QStringList& csv, const QString& referenceFolder) {
@@ -521,6 +525,7 @@ void TrainingPanel::saveSession(const QString& folder) {
 void TrainingPanel::openSession(const QString& sessionFile) {
     keepCurrentSession();
     m_opening = true;
+    m_openingFile = sessionFile;
     setLongWork(true);
     m_note->setText(tr("Replaying %1…").arg(QDir::toNativeSeparators(sessionFile)));
     m_runner->open(sessionFile, m_workbench.model());
@@ -597,6 +602,7 @@ void TrainingPanel::showFrame() {
         m_opening = false;
         m_note->setText(
             tr("Session reopened at %1, frozen: the instructor resumes it.").arg(clockText(f.timeS)));
+        Q_EMIT sessionOpenFinished(m_openingFile, true, {});
     }
     QString state = f.finished ? tr("finished") : f.frozen ? tr("FROZEN") : tr("running %1×").arg(f.speed);
     m_clock->setText(

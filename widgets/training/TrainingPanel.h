@@ -86,6 +86,9 @@ Q_SIGNALS:
     /// @p referenceFolder: the line's commissioning runs, the reference period to compare with
     /// (empty: none; the recording is then judged alone).
     void recordingReady(const QString& csv, const QString& referenceFolder);
+    /// @brief A session file asked for with openSession() is open (@p ok) or could not be
+    /// (@p message says why, as the panel does).
+    void sessionOpenFinished(const QString& sessionFile, bool ok, const QString& message);
 
 protected:
     /// The instructor window: its plot is redrawn when it comes back from minimised or hidden
@@ -152,6 +155,7 @@ private:
     QString m_diagnoseFolder;
     bool m_diagnosePending = false;
     bool m_opening = false;
+    QString m_openingFile; ///< the session file openSession() is replaying
     std::size_t m_drawnSamples = 0;
 };
 

@@ -6,6 +6,9 @@
 #include "training/TrainingScript.h"
 #include "training/TrainingSession.h"
 
+#include <QDir>
+#include <QFileInfo>
+#include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
 
@@ -271,6 +274,23 @@ private Q_SLOTS:
             "events[0].cause");
         expectError(R"({"scenario": "training_shift", "events": [{"type": "answer", "cause": "no_fault"}]})",
                     "events[0].at_s: missing");
+        // A number no double holds was the parser's out_of_range, which ended the program.
+        expectError(R"({"scenario": "training_shift", "end_s": 1e400})", "s.json: not valid JSON");
+        // A key the event does not take (a misspelt onset) is refused, not ignored.
+        expectError(
+            R"({"scenario": "training_shift", "events": [{"at_s": 5, "type": "fault", "cause": "heat_transfer_fouling", "strength": 0.2, "onset": 600}]})",
+            "events[0].onset: unknown key for a fault event");
+        // Events out of time order: the replay names the event and the file.
+        auto order = training::parseTrainingScript(
+            R"({"scenario": {"length_s": 100, "warmup_s": 300}, "events": [{"at_s": 50, "type": "freeze"}, {"at_s": 20, "type": "resume"}]})",
+            "order.json");
+        QVERIFY(order.ok());
+        auto late = training::replay(*order, std::make_shared<hybrid::HybridModel>());
+        QVERIFY(!late.ok());
+        QVERIFY2(
+            late.error().message().find("order.json: events[1] (resume) at 20 s lies before the session's "
+                                        "time 50 s") != std::string::npos,
+            late.error().message().c_str());
         // Valid JSON, impossible order: a restore of a snapshot never taken.
         auto script = training::parseTrainingScript(
             R"({"scenario": {"length_s": 100, "warmup_s": 300}, "events": [{"at_s": 5, "type": "restore", "label": "x"}]})",
@@ -287,6 +307,25 @@ private Q_SLOTS:
                                           [](const ProgressInfo&) { return ProgressAction::Stop; });
         QVERIFY(!cancelled.ok());
         QCOMPARE(int(cancelled.error().kind), int(ErrorKind::Cancelled));
+    }
+
+    // The scenario's name is the recording's file name: a '/' or ".." in it stays inside the
+    // session's folder (it wrote outside it, or failed after making the folder).
+    void aScenarioNameIsMadeAFileName() {
+        auto script = training::parseTrainingScript(
+            R"({"scenario": {"name": "../../line 3/shift A", "length_s": 60, "warmup_s": 300}})", "s.json");
+        QVERIFY2(script.ok(), script.ok() ? "" : script.error().message().c_str());
+        auto session = training::replay(*script, std::make_shared<hybrid::HybridModel>());
+        QVERIFY(session.ok());
+        QTemporaryDir dir;
+        auto saved = training::saveSession(dir.filePath("out").toStdString(), script->scenarioJson, *session);
+        QVERIFY2(saved.ok(), saved.ok() ? "" : saved.error().message().c_str());
+        QCOMPARE(saved->recordingFiles.size(), std::size_t(1));
+        const QString recording = QString::fromStdString(saved->recordingFiles.front());
+        QVERIFY2(QFileInfo(recording).absolutePath() == QDir(dir.filePath("out/recording")).absolutePath(),
+                 qPrintable(recording));
+        QVERIFY2(!QFileInfo(recording).fileName().contains('/') && QFileInfo::exists(recording),
+                 qPrintable(recording));
     }
 };
 
