@@ -180,6 +180,15 @@ private Q_SLOTS:
             }
             return s;
         };
+        // The notes of a folder holding these files (name without ".csv", text).
+        const auto notesOfFolder = [](const std::vector<std::pair<std::string, std::string>>& files) {
+            QTemporaryDir dir;
+            for (const auto& [name, text] : files) {
+                writeText(dir.filePath(QString::fromStdString(name) + ".csv"), text);
+            }
+            const auto loaded = loadDataSet(dir.path().toStdString());
+            return loaded.ok() ? summarize(loaded.dataSet).notes : std::vector<std::string>{"load failed"};
+        };
         const auto has = [](const std::vector<std::string>& notes, const std::string& a,
                             const std::string& b) {
             return std::any_of(notes.begin(), notes.end(), [&](const std::string& n) {
@@ -193,15 +202,11 @@ private Q_SLOTS:
             }
             return all;
         };
-        QTemporaryDir dir;
-        writeText(dir.filePath("B01.csv"), batchText("B01", 12.8, 169.5, 24));
-        writeText(dir.filePath("B02.csv"), batchText("B02", 12.9, 170.0, 25));
-        writeText(dir.filePath("B03.csv"), batchText("B03", 13.0, 168.0, 23));
-        writeText(dir.filePath("B04.csv"), batchText("B04", 12.8, 337.1, 24));  // hot air in °F
-        writeText(dir.filePath("B05.csv"), batchText("B05", 0.128, 169.0, 24)); // X_out a fraction
-        const auto loaded = loadDataSet(dir.path().toStdString());
-        QVERIFY(loaded.ok());
-        const auto notes = summarize(loaded.dataSet).notes;
+        const auto notes = notesOfFolder({{"B01", batchText("B01", 12.8, 169.5, 24)},
+                                          {"B02", batchText("B02", 12.9, 170.0, 25)},
+                                          {"B03", batchText("B03", 13.0, 168.0, 23)},
+                                          {"B04", batchText("B04", 12.8, 337.1, 24)},    // hot air in °F
+                                          {"B05", batchText("B05", 0.128, 169.0, 24)}}); // X_out a fraction
         QVERIFY2(has(notes, "B04.csv", "T_hot_C reads 337.1 °C on average, the other batches about 169.2"),
                  joined(notes).c_str());
         QVERIFY2(has(notes, "B04.csv", "T_hot_C (mean 337.1 °C) is hotter than the hot air"),
@@ -213,13 +218,9 @@ private Q_SLOTS:
             QVERIFY2(!has(notes, fine, ""), joined(notes).c_str());
         }
         // Every batch in °F, ambient too: said once, for the data set.
-        QTemporaryDir allF;
-        for (const char* id : {"B01", "B02", "B03"}) {
-            writeText(allF.filePath(QString(id) + ".csv"), batchText(id, 12.8, 337.1, 75.2));
-        }
-        const auto fahrenheit = loadDataSet(allF.path().toStdString());
-        QVERIFY(fahrenheit.ok());
-        const auto allNotes = summarize(fahrenheit.dataSet).notes;
+        const auto allNotes = notesOfFolder({{"B01", batchText("B01", 12.8, 337.1, 75.2)},
+                                             {"B02", batchText("B02", 12.8, 337.1, 75.2)},
+                                             {"B03", batchText("B03", 12.8, 337.1, 75.2)}});
         QVERIFY2(has(allNotes, "every batch: ", "T_hot_C (mean 337.1 °C) is hotter than the hot air"),
                  joined(allNotes).c_str());
         QVERIFY2(has(allNotes, "every batch: ", "T_amb_C (mean 75.2 °C) is hotter than any air"),
@@ -233,44 +234,28 @@ private Q_SLOTS:
         for (int i = 0; i < 3; ++i) {
             tonnes += row(i, 12.8, 6.2) + "\n";
         }
-        QTemporaryDir one;
-        writeText(one.filePath("B07.csv"), tonnes);
-        const auto tonnesLoaded = loadDataSet(one.path().toStdString());
-        QVERIFY(tonnesLoaded.ok());
-        const auto tonnesNotes = summarize(tonnesLoaded.dataSet).notes;
+        const auto tonnesNotes = notesOfFolder({{"B07", tonnes}});
         QVERIFY2(has(tonnesNotes, "B07.csv", "6.2 t/h is 6200 kg/h"), joined(tonnesNotes).c_str());
 
         // Two batches failing two different checks of one column are each named with their own
         // check, not one "every batch" note with the first's words.
-        QTemporaryDir two;
-        writeText(two.filePath("B01.csv"), batchText("B01", 30.0, 169.5, 24));  // X_out above X_in (22)
-        writeText(two.filePath("B02.csv"), batchText("B02", 0.128, 169.5, 24)); // X_out a fraction
-        const auto twoLoaded = loadDataSet(two.path().toStdString());
-        QVERIFY(twoLoaded.ok());
-        const auto twoNotes = summarize(twoLoaded.dataSet).notes;
+        const auto twoNotes =
+            notesOfFolder({{"B01", batchText("B01", 30.0, 169.5, 24)},    // X_out above X_in
+                           {"B02", batchText("B02", 0.128, 169.5, 24)}}); // X_out a fraction
         QVERIFY2(has(twoNotes, "B01.csv", "is above X_in_pct"), joined(twoNotes).c_str());
         QVERIFY2(has(twoNotes, "B02.csv", "below a hundredth of X_in_pct"), joined(twoNotes).c_str());
         QVERIFY2(!has(twoNotes, "every batch", ""), joined(twoNotes).c_str());
 
         // What a real line does between batches is no unit: a winter batch among summer ones
-        // (ambient -25 against 27 and 28 °C), two products' hot air 55 K apart, a batch at a line
-        // stop (air speed 0 is read as 0 by the factor test of a positive amount).
-        QTemporaryDir seasons;
-        writeText(seasons.filePath("B01.csv"), batchText("B01", 12.8, 130.0, -25));
-        writeText(seasons.filePath("B02.csv"), batchText("B02", 12.8, 185.0, 27));
-        writeText(seasons.filePath("B03.csv"), batchText("B03", 12.8, 130.0, 28));
-        const auto seasonsLoaded = loadDataSet(seasons.path().toStdString());
-        QVERIFY(seasonsLoaded.ok());
-        const auto seasonNotes = summarize(seasonsLoaded.dataSet).notes;
+        // (ambient -25 against 27 and 28 °C), two products' hot air 55 K apart.
+        const auto seasonNotes = notesOfFolder({{"B01", batchText("B01", 12.8, 130.0, -25)},
+                                                {"B02", batchText("B02", 12.8, 185.0, 27)},
+                                                {"B03", batchText("B03", 12.8, 130.0, 28)}});
         QVERIFY2(!has(seasonNotes, "reads", "on average"), joined(seasonNotes).c_str());
         // ... while the same ambient in °F in one batch is named (68 °F is 20 °C).
-        QTemporaryDir ambientF;
-        writeText(ambientF.filePath("B01.csv"), batchText("B01", 12.8, 169.5, 20));
-        writeText(ambientF.filePath("B02.csv"), batchText("B02", 12.8, 169.5, 21));
-        writeText(ambientF.filePath("B03.csv"), batchText("B03", 12.8, 169.5, 68));
-        const auto ambientLoaded = loadDataSet(ambientF.path().toStdString());
-        QVERIFY(ambientLoaded.ok());
-        const auto ambientNotes = summarize(ambientLoaded.dataSet).notes;
+        const auto ambientNotes = notesOfFolder({{"B01", batchText("B01", 12.8, 169.5, 20)},
+                                                 {"B02", batchText("B02", 12.8, 169.5, 21)},
+                                                 {"B03", batchText("B03", 12.8, 169.5, 68)}});
         QVERIFY2(has(ambientNotes, "B03.csv", "T_amb_C reads 68 °C on average, the other batches about 20.5"),
                  joined(ambientNotes).c_str());
     }
