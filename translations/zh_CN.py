@@ -8,6 +8,8 @@ import re
 import sys
 
 ZH = {
+    "alarm": "报警",
+    "change began": "变化开始",
     "Opening the training session %1…": "正在打开培训会话 %1…",
     "The training session %1 could not be opened: %2": "无法打开培训会话 %1：%2",
     "A part whose estimate left the parameter's range is held at its bound.": "某一部分的估计值超出了参数范围，已按其边界处理。",

@@ -23,6 +23,7 @@
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
 #include <qwt_plot_item.h>
+#include <qwt_plot_marker.h>
 #include <qwt_scale_div.h>
 
 using namespace drytwin;
@@ -137,6 +138,18 @@ private Q_SLOTS:
         QVERIFY2(panel->monitorLabel()->text().contains("ALARM"), qPrintable(panel->monitorLabel()->text()));
         QVERIFY(runner.frame().monitor.drytwin.alarmed);
         QVERIFY(runner.frame().monitor.drytwin.alarmAtS > frozenAt - 60);
+        // ... and the T² plot marks where, in view.
+        QVERIFY(panel->alarmMarker()->isVisible());
+        const auto& monitor = runner.frame().monitor;
+        const double alarmAtS = monitor.drytwin.alarmed && (!monitor.pca.alarmed ||
+                                                            monitor.drytwin.alarmAtS <= monitor.pca.alarmAtS)
+                                    ? monitor.drytwin.alarmAtS
+                                    : monitor.pca.alarmAtS;
+        QCOMPARE(panel->alarmMarker()->xValue(), alarmAtS / 60.0);
+        const auto* t2Plot = panel->alarmMarker()->plot();
+        QVERIFY(t2Plot);
+        QVERIFY2(t2Plot->axisScaleDiv(QwtPlot::xBottom).lowerBound() <= alarmAtS / 60.0,
+                 qPrintable(QString::number(t2Plot->axisScaleDiv(QwtPlot::xBottom).lowerBound())));
 
         // The trainee diagnoses the recording on the Discover tab and names what it found.
         panel->setInstructorView(false);

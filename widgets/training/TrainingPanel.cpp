@@ -39,6 +39,8 @@
 #include <cmath>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
+#include <qwt_plot_marker.h>
+#include <qwt_text.h>
 #include <utility>
 
 namespace drytwin::widgets {
@@ -286,6 +288,10 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
         m_truthPlots->addCurve(0, tr("X_out measured"), none, none, seriesColour(0), Qt::SolidLine, 1.3);
     m_xTrue =
         m_truthPlots->addCurve(0, tr("X_out true"), none, none, QColor(200, 40, 40), Qt::SolidLine, 1.3);
+    // The band the score counts out-of-band time against, as on the trainee's plot.
+    m_truthBandHigh = m_truthPlots->addCurve(0, tr("band"), none, none, Qt::gray, Qt::DotLine, 1.0);
+    m_truthBandLow = m_truthPlots->addCurve(0, QString(), none, none, Qt::gray, Qt::DotLine, 1.0);
+    m_truthSetpoint = m_truthPlots->addCurve(0, tr("setpoint"), none, none, Qt::black, Qt::DashLine, 1.4);
     m_instructorWindow->restoreGeometry(
         QSettings().value(QStringLiteral("training/instructorGeometry")).toByteArray());
     m_instructorWindow->installEventFilter(this);
@@ -302,6 +308,23 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_monitorLimit = m_plots->addCurve(4, tr("99 % limit"), none, none, Qt::black, Qt::DashLine, 1.0);
     m_monitorT2 = m_plots->addCurve(4, tr("T² of the model's error"), none, none, QColor(214, 39, 40),
                                     Qt::SolidLine, 1.3);
+    // The alarm and the change's start where the monitor's sentence says them: on the plot,
+    // where a trainee looks (the alarm at 13 min was a sentence beside a plot of minutes 15–30).
+    const auto verticalMarker = [this](const QString& label, const QColor& colour) {
+        auto* m = new QwtPlotMarker(label);
+        m->setLineStyle(QwtPlotMarker::VLine);
+        m->setLinePen(colour, 1.5, Qt::DashDotLine);
+        QwtText text(label);
+        text.setColor(colour);
+        m->setLabel(text);
+        // Beside the line, low in the plot: a vertical label was longer than the plot is tall.
+        m->setLabelAlignment(Qt::AlignRight | Qt::AlignBottom);
+        m->setVisible(false);
+        m->attach(m_plots->plot(4));
+        return m;
+    };
+    m_alarmMarker = verticalMarker(tr("alarm"), QColor(214, 39, 40));
+    m_onsetMarker = verticalMarker(tr("change began"), QColor(120, 60, 160));
     // Before a session runs, each plot shows its quantity's usual range on the line, not 0–1000.
     m_plots->setEmptyRange(0, 10, 16);     // X_out [% wb]
     m_plots->setEmptyRange(1, 140, 200);   // T_hot [°C]
@@ -688,8 +711,15 @@ void TrainingPanel::showFrame() {
 void TrainingPanel::redrawPlots() {
     const auto& trace = m_runner->trace();
     const TrainingFrame& f = m_runner->frame();
-    // The plots scroll: the last kWindowS seconds, time in minutes.
-    const double from = f.timeS - kWindowS;
+    // The plots scroll: the last kWindowS seconds, time in minutes; once the monitor has alarmed,
+    // from two minutes before the change began, so that its start and the alarm stay in view.
+    const auto& m = f.monitor;
+    const bool ours = m.drytwin.alarmed && (!m.pca.alarmed || m.drytwin.alarmAtS <= m.pca.alarmAtS);
+    const auto& alarmed = ours ? m.drytwin : m.pca;
+    const bool showAlarm = m.ready && m.alarmed();
+    const double changeStartS =
+        alarmed.hasOnset ? std::min(alarmed.onsetS, alarmed.alarmAtS) : alarmed.alarmAtS;
+    const double from = showAlarm ? std::min(f.timeS - kWindowS, changeStartS - 120.0) : f.timeS - kWindowS;
     QVector<double> t, xm, xt, sp, hi, lo, hsp, h, feed, xin;
     for (const auto& s : trace) {
         if (s.timeS < from) {
@@ -712,6 +742,14 @@ void TrainingPanel::redrawPlots() {
     m_xSetpoint->setSamples(t, sp);
     m_bandHigh->setSamples(t, hi);
     m_bandLow->setSamples(t, lo);
+    m_truthSetpoint->setSamples(t, sp);
+    m_truthBandHigh->setSamples(t, hi);
+    m_truthBandLow->setSamples(t, lo);
+    // The earlier detector's alarm and change start, as the monitor's sentence says them.
+    m_alarmMarker->setVisible(showAlarm);
+    m_alarmMarker->setXValue(alarmed.alarmAtS / 60.0);
+    m_onsetMarker->setVisible(showAlarm && alarmed.hasOnset);
+    m_onsetMarker->setXValue(alarmed.onsetS / 60.0);
     m_hotSetpoint->setSamples(t, hsp);
     m_hot->setSamples(t, h);
     m_feed->setSamples(t, feed);

@@ -16,6 +16,7 @@ class QPushButton;
 class QSpinBox;
 class QTableWidget;
 class QwtPlotCurve;
+class QwtPlotMarker;
 
 namespace drytwin::widgets {
 
@@ -63,6 +64,8 @@ public:
     QLabel* noteLabel() const { return m_note; }
     /// @brief The live line's monitor in words: normal, or the alarm with its time and onset.
     QLabel* monitorLabel() const { return m_monitorLabel; }
+    /// The T² plot's marker at the monitor's alarm (hidden while the line is normal).
+    QwtPlotMarker* alarmMarker() const { return m_alarmMarker; }
     /// @brief The trainee's pause (the clock stops; the same button continues).
     QPushButton* pauseButton() const { return m_pause; }
     /// @brief The instructor's own window (faults, score, the true moisture).
@@ -147,6 +150,10 @@ private:
     QwtPlotCurve* m_xTrue = nullptr;
     QwtPlotCurve* m_xSetpoint = nullptr;
     QwtPlotCurve* m_bandHigh = nullptr;
+    /// The instructor's plot: the band and setpoint the score counts the time out of.
+    QwtPlotCurve *m_truthBandHigh = nullptr, *m_truthBandLow = nullptr, *m_truthSetpoint = nullptr;
+    /// On the T² plot: where the monitor alarmed and where it puts the change's start.
+    QwtPlotMarker *m_alarmMarker = nullptr, *m_onsetMarker = nullptr;
     QwtPlotCurve* m_bandLow = nullptr;
     QwtPlotCurve* m_hotSetpoint = nullptr;
     QwtPlotCurve* m_hot = nullptr;
