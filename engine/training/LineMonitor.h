@@ -32,6 +32,12 @@ struct LineMonitorState {
     bool ready = false; ///< commissioned and fed
     LineDetectorState drytwin, pca;
     bool alarmed() const { return drytwin.alarmed || pca.alarmed; }
+    /// DryTwin's detector if it alarmed no later than the PCA monitor, else the PCA monitor:
+    /// the alarm the trainee is told of and shown (meaningful once alarmed()).
+    bool drytwinFirst() const {
+        return drytwin.alarmed && (!pca.alarmed || drytwin.alarmAtS <= pca.alarmAtS);
+    }
+    const LineDetectorState& firstAlarm() const { return drytwinFirst() ? drytwin : pca; }
 };
 
 /// @brief The live line watched against its commissioning (issue #41). Two detectors, each at

@@ -141,10 +141,7 @@ private Q_SLOTS:
         // ... and the T² plot marks where, in view.
         QVERIFY(panel->alarmMarker()->isVisible());
         const auto& monitor = runner.frame().monitor;
-        const double alarmAtS = monitor.drytwin.alarmed && (!monitor.pca.alarmed ||
-                                                            monitor.drytwin.alarmAtS <= monitor.pca.alarmAtS)
-                                    ? monitor.drytwin.alarmAtS
-                                    : monitor.pca.alarmAtS;
+        const double alarmAtS = monitor.firstAlarm().alarmAtS;
         QCOMPARE(panel->alarmMarker()->xValue(), alarmAtS / 60.0);
         const auto* t2Plot = panel->alarmMarker()->plot();
         QVERIFY(t2Plot);

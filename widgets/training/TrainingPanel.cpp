@@ -693,9 +693,8 @@ void TrainingPanel::showFrame() {
         m_monitorLabel->setText(tr("Line monitor: normal (as on its commissioning runs)."));
     } else {
         // The earlier of the two detectors' alarms, and who raised it.
-        const bool ours = m.drytwin.alarmed && (!m.pca.alarmed || m.drytwin.alarmAtS <= m.pca.alarmAtS);
-        const auto& d = ours ? m.drytwin : m.pca;
-        const QString who = ours ? tr("the model's error") : tr("the screens' signals (PCA)");
+        const auto& d = m.firstAlarm();
+        const QString who = m.drytwinFirst() ? tr("the model's error") : tr("the screens' signals (PCA)");
         m_monitorLabel->setText(
             d.hasOnset
                 ? tr("<b>Line monitor: ALARM</b> at %1 (%2) — the line has left its normal; the change "
@@ -714,8 +713,7 @@ void TrainingPanel::redrawPlots() {
     // The plots scroll: the last kWindowS seconds, time in minutes; once the monitor has alarmed,
     // from two minutes before the change began, so that its start and the alarm stay in view.
     const auto& m = f.monitor;
-    const bool ours = m.drytwin.alarmed && (!m.pca.alarmed || m.drytwin.alarmAtS <= m.pca.alarmAtS);
-    const auto& alarmed = ours ? m.drytwin : m.pca;
+    const auto& alarmed = m.firstAlarm();
     const bool showAlarm = m.ready && m.alarmed();
     const double changeStartS =
         alarmed.hasOnset ? std::min(alarmed.onsetS, alarmed.alarmAtS) : alarmed.alarmAtS;
