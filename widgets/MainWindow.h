@@ -6,6 +6,7 @@
 #include <QMainWindow>
 #include <QStringList>
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -124,6 +125,10 @@ private:
     /// What follows a load, successful or not (mainwindow/MainWindowData.cpp).
     void connectDataLoading();
     void startActions();
+    /// Runs `then` once the engine thread has no job queued or running: at once when it is idle,
+    /// else when JobRunner says it has become idle (checked again on the next turn of the event
+    /// loop, since a finished job's result may queue the next job).
+    void whenEngineIdle(std::function<void()> then);
     void setBusy(bool busy);
     void rememberRecent(const QString& path);
     void fillRecent();

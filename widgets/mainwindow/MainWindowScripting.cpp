@@ -36,7 +36,7 @@ void MainWindow::startActions() {
         const QString& a = actions[i];
         if (a == QLatin1String("mpc") && m_workbench.jobs().busy()) {
             m_pendingActions = actions.mid(i);
-            QTimer::singleShot(100, this, [this] {
+            whenEngineIdle([this] {
                 if (m_workbench.hasData()) {
                     startActions();
                 }
@@ -59,6 +59,23 @@ void MainWindow::startActions() {
     }
 }
 
+void MainWindow::whenEngineIdle(std::function<void()> then) {
+    JobRunner& jobs = m_workbench.jobs();
+    if (!jobs.busy()) {
+        then();
+        return;
+    }
+    auto* once = new QObject(this);
+    connect(&jobs, &JobRunner::busyChanged, once, [this, &jobs, once, then = std::move(then)](bool busy) {
+        if (busy) {
+            return;
+        }
+        QObject::disconnect(&jobs, nullptr, once, nullptr);
+        once->deleteLater();
+        QTimer::singleShot(0, this, [this, then] { whenEngineIdle(then); });
+    });
+}
+
 bool MainWindow::hasPendingActions() const {
     return !m_pendingActions.isEmpty() || m_training->isOpening();
 }
@@ -68,7 +85,7 @@ void MainWindow::openTrainingSession(const QString& sessionFile) {
     // replayed with the learnt controllers once they are in (its pgrl_cc was "not in the model
     // file" when replayed at once).
     if (m_workbench.jobs().busy()) {
-        QTimer::singleShot(100, this, [this, sessionFile] { openTrainingSession(sessionFile); });
+        whenEngineIdle([this, sessionFile] { openTrainingSession(sessionFile); });
         return;
     }
     m_tabs->setCurrentWidget(m_training);
