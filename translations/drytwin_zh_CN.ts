@@ -3538,17 +3538,17 @@
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="75"/>
+        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="92"/>
         <source>Opening the training session %1…</source>
         <translation>正在打开培训会话 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="86"/>
+        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="103"/>
         <source>Training session %1 (its recording is on the Training tab; no data set is loaded for the other tabs)</source>
         <translation>培训会话 %1（其记录显示在“培训”选项卡上；其他选项卡未加载数据集）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="90"/>
+        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="107"/>
         <source>The training session %1 could not be opened: %2</source>
         <translation>无法打开培训会话 %1：%2</translation>
     </message>
@@ -3890,97 +3890,117 @@ The results below are from the last complete run.</source>
 下方结果来自上一次完整运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="211"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="208"/>
+        <source>%1: its model&apos;s gain has the other sign than the plant&apos;s, so it steers the hot air the wrong way.</source>
+        <translation>%1：其模型的增益与装置的符号相反，因此它把热风往错误的方向调。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="213"/>
+        <source>%1: its model&apos;s gain is %2 times the plant&apos;s; it underrates the hot air&apos;s effect, so it over-acts (the setpoint swings towards its limits).</source>
+        <translation>%1：其模型的增益是装置的 %2 倍；它低估了热风的作用，因此调节过度（设定值摆向其上下限）。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="218"/>
+        <source>%1: its model&apos;s gain is %2 times the plant&apos;s; it overrates the hot air&apos;s effect, so it acts too little.</source>
+        <translation>%1：其模型的增益是装置的 %2 倍；它高估了热风的作用，因此调节不足。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="229"/>
         <source>%1 (problems in the form: %2)</source>
         <translation>%1（表单中的问题：%2 个）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="222"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="240"/>
         <source>The scenario&apos;s JSON: %1</source>
         <translation>情景 JSON：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="223"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="241"/>
         <source>The scenario&apos;s JSON, line %1: %2</source>
         <translation>情景 JSON 第 %1 行：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="229"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="247"/>
         <source>Run is off until this is fixed: %1</source>
         <translation>修正以下问题前无法运行：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="242"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="260"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="255"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="273"/>
         <source>Not run: %1</source>
         <translation>未运行：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="265"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="283"/>
         <source>Cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="283"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="301"/>
         <source>Choose at least one controller.</source>
         <translation>请至少选择一个控制器。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="287"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="305"/>
         <source>Running…</source>
         <translation>正在运行…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="299"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="317"/>
         <source>Contract key: %1</source>
         <translation>接口代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="301"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="319"/>
         <source>%1 (stale)</source>
         <translation>%1（过期）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="302"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="320"/>
         <source>Learnt before %1: retrain it to run it.</source>
         <translation>学习于以下变化之前：%1；需重新训练才能运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="304"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="322"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="305"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="323"/>
         <source>Learn the correction models on the Residual model tab to run it.</source>
         <translation>在残差模型页学习修正模型后才能运行它。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="327"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="345"/>
         <source>predicted at %1 s</source>
         <translation>在 %1 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="336"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="355"/>
         <source>skipped</source>
         <translation>已跳过</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="337"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="356"/>
         <source>the model holds no such prediction model</source>
         <translation>模型中没有这种预测模型</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="351"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="369"/>
+        <source>Decisions that kept the previous plan (the model saw no effect of the hot air, or the solve failed); the last reason: %1</source>
+        <translation>沿用上一计划的决策次数（模型看不到热风的作用，或求解失败）；最近一次的原因：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="383"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="360"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="392"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
@@ -3989,7 +4009,7 @@ The results below are from the last complete run.</source>
         <translation>%1 在 %2 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="401"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="433"/>
         <source>%1. IAE and violations on the product&apos;s true outlet moisture; the plant&apos;s own gain is %2 % wb/K.</source>
         <translation>%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。</translation>
     </message>
@@ -5037,22 +5057,22 @@ extrapolation</source>
         <translation>产线监控：正常（与调试运行一致）。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="698"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="697"/>
         <source>the model&apos;s error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="698"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="697"/>
         <source>the screens&apos; signals (PCA)</source>
         <translation>画面信号（PCA）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="701"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="700"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal; the change began at about %3. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态；变化约始于 %3。请诊断记录以确定原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="704"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="703"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态。请诊断记录以确定原因。</translation>
     </message>

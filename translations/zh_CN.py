@@ -8,6 +8,10 @@ import re
 import sys
 
 ZH = {
+    "%1: its model's gain has the other sign than the plant's, so it steers the hot air the wrong way.": "%1：其模型的增益与装置的符号相反，因此它把热风往错误的方向调。",
+    "%1: its model's gain is %2 times the plant's; it underrates the hot air's effect, so it over-acts (the setpoint swings towards its limits).": "%1：其模型的增益是装置的 %2 倍；它低估了热风的作用，因此调节过度（设定值摆向其上下限）。",
+    "%1: its model's gain is %2 times the plant's; it overrates the hot air's effect, so it acts too little.": "%1：其模型的增益是装置的 %2 倍；它高估了热风的作用，因此调节不足。",
+    "Decisions that kept the previous plan (the model saw no effect of the hot air, or the solve failed); the last reason: %1": "沿用上一计划的决策次数（模型看不到热风的作用，或求解失败）；最近一次的原因：%1",
     "alarm": "报警",
     "change began": "变化开始",
     "Opening the training session %1…": "正在打开培训会话 %1…",

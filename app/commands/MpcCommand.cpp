@@ -110,6 +110,15 @@ int runMpc(const CommandOptions& o) {
         if (m.fallbacks > 0) {
             std::printf("%-20s last fallback: %s\n", "", m.lastFallbackReason.c_str());
         }
+        if (const auto ratio = run.kind == control::ControllerKind::Pi
+                                   ? std::nullopt
+                                   : control::mismatchedGainRatio(m.gainPctPerKMedian, r.plantGainPctPerK)) {
+            std::printf("%-20s its model's gain is %.2f times the plant's: %s\n", "", *ratio,
+                        *ratio < 0   ? "the other sign, so it steers the hot air the wrong way"
+                        : *ratio < 1 ? "it underrates the hot air's effect, so it over-acts (the setpoint "
+                                       "swings towards its limits)"
+                                     : "it overrates the hot air's effect, so it acts too little");
+        }
     }
     std::printf(
         "\nIAE and violations on the product's true outlet moisture; solve = Ipopt per decision, model = "

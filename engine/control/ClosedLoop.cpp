@@ -37,6 +37,21 @@ double levelAt(const Scenario& s, ScenarioInput input, double initial, double t)
     return level;
 }
 
+} // namespace
+
+std::optional<double> mismatchedGainRatio(double modelGainPctPerK, double plantGainPctPerK) {
+    if (!std::isfinite(modelGainPctPerK) || !std::isfinite(plantGainPctPerK) || plantGainPctPerK == 0) {
+        return std::nullopt;
+    }
+    const double ratio = modelGainPctPerK / plantGainPctPerK;
+    if (ratio >= 0.5 && ratio <= 2.0) {
+        return std::nullopt;
+    }
+    return ratio;
+}
+
+namespace {
+
 /// The plant's steady gain: two runs at fixed setpoints 2 K apart, without noise or
 /// fluctuation, compared after the line has settled.
 double plantGain(const Scenario& scenario, const plant::PlantOptions& plantOptions, double setpointK) {

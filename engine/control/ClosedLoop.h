@@ -107,6 +107,13 @@ plant::PlantOptions scenarioPlantOptions(const Scenario& scenario);
 /// scenario's seed, the same for every controller).
 plant::PlantDisturbances scenarioDisturbances(const Scenario& scenario, std::mt19937_64& rng);
 
+/// @brief A model's steady gain against the plant's, where it is off enough to explain a poor
+/// controller: the ratio model / plant when it is below 0.5, above 2 or of the other sign, else
+/// nothing (also when either gain is not known). An MPC whose model underrates the hot air's effect
+/// on the moisture over-acts, one that overrates it acts too little, one of the other sign
+/// steers the wrong way: what a process engineer reads first when a learnt controller loses.
+std::optional<double> mismatchedGainRatio(double modelGainPctPerK, double plantGainPctPerK);
+
 /// @brief The hot-air setpoint the line starts at: the PI loop's steady value for the
 /// scenario's inlet moisture [K].
 double initialSetpointK(const Scenario& scenario);

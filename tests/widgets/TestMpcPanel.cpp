@@ -54,6 +54,20 @@ private Q_SLOTS:
         QVERIFY2(rowsShown >= 5, qPrintable(QString("%1 rows in %2 px").arg(rowsShown).arg(table->height())));
     }
 
+    // Under the table, a controller whose model believes a third of the plant's gain is said to
+    // over-act, one with three times to act too little, one of the other sign to steer wrong.
+    void aMismatchedGainIsExplained() {
+        const QString under = MpcPanel::gainMismatchText(QStringLiteral("LSTM"), 0.32);
+        const QString over = MpcPanel::gainMismatchText(QStringLiteral("LSTM"), 3.0);
+        const QString sign = MpcPanel::gainMismatchText(QStringLiteral("LSTM"), -0.5);
+        QVERIFY2(under.startsWith(QLatin1String("LSTM")) && under.contains(QLatin1String("0.32")) &&
+                     under.contains(QLatin1String("over-acts")),
+                 qPrintable(under));
+        QVERIFY2(over.contains(QLatin1String("3.00")) && over.contains(QLatin1String("too little")),
+                 qPrintable(over));
+        QVERIFY2(sign.contains(QLatin1String("wrong way")), qPrintable(sign));
+    }
+
     // Scored length 600 s, a setpoint step at 780 s: the form says so under the steps and under
     // the length, the cell is marked, Run is off and run() starts nothing.
     void stepAfterTheScoredLengthIsRefusedInTheForm() {

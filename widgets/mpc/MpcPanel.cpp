@@ -203,6 +203,24 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     updateRunState();
 }
 
+QString MpcPanel::gainMismatchText(const QString& controller, double ratio) {
+    if (ratio < 0) {
+        return tr("%1: its model's gain has the other sign than the plant's, so it steers the hot air the "
+                  "wrong way.")
+            .arg(controller);
+    }
+    if (ratio < 1) {
+        return tr("%1: its model's gain is %2 times the plant's; it underrates the hot air's effect, so it "
+                  "over-acts (the setpoint swings towards its limits).")
+            .arg(controller)
+            .arg(ratio, 0, 'f', 2);
+    }
+    return tr("%1: its model's gain is %2 times the plant's; it overrates the hot air's effect, so it acts "
+              "too little.")
+        .arg(controller)
+        .arg(ratio, 0, 'f', 2);
+}
+
 QString MpcPanel::scenarioProblem() const {
     if (!m_form->isValid()) {
         const QStringList problems = m_form->problems();
@@ -326,6 +344,7 @@ void MpcPanel::show() {
     // and the plot's room. The entry's key is black; its check box shows or hides them all.
     const QString predictedName = tr("predicted at %1 s").arg(at);
     bool predictedKeyDrawn = false;
+    QStringList gainWarnings;
     for (const auto& run : cl.runs) {
         const int row = m_table->rowCount();
         m_table->insertRow(row);
@@ -344,6 +363,19 @@ void MpcPanel::show() {
         m_table->item(row, 0)->setToolTip(cells.front());
         if (!run.ran) {
             continue;
+        }
+        if (run.metrics.fallbacks > 0 && !run.metrics.lastFallbackReason.empty()) {
+            m_table->item(row, 5)->setToolTip(
+                tr("Decisions that kept the previous plan (the model saw no effect of the hot air, or the "
+                   "solve failed); the last reason: %1")
+                    .arg(QString::fromStdString(run.metrics.lastFallbackReason)));
+        }
+        if (const auto ratio =
+                pi ? std::nullopt : control::mismatchedGainRatio(m.gainPctPerKMedian, cl.plantGainPctPerK)) {
+            const QString why = gainMismatchText(controllerDisplayName(run.kind), *ratio);
+            gainWarnings << why;
+            m_table->item(row, 6)->setForeground(QColor(170, 20, 20));
+            m_table->item(row, 6)->setToolTip(why);
         }
         const QColor colour = modelColour(control::controllerName(run.kind));
         const QVector<double> t(run.timeS.begin(), run.timeS.end());
@@ -401,7 +433,8 @@ void MpcPanel::show() {
         tr("%1. IAE and violations on the product's true outlet moisture; the plant's own gain is %2 % "
            "wb/K.")
             .arg(mpcEndingText(cl))
-            .arg(cl.plantGainPctPerK, 0, 'f', 4));
+            .arg(cl.plantGainPctPerK, 0, 'f', 4) +
+        (gainWarnings.isEmpty() ? QString() : QLatin1Char(' ') + gainWarnings.join(QLatin1Char(' '))));
 }
 
 } // namespace drytwin::widgets

@@ -45,6 +45,9 @@ public:
     /// @brief The controller tick boxes, one per controller, enabled where its model exists.
     QCheckBox* controllerBox(int i) const { return m_controllers[i]; }
     ModelStateBar* modelState() const { return m_state; }
+    /// @brief Why a controller whose model's steady gain is @p ratio times the plant's
+    /// (control::mismatchedGainRatio) controls as it does, in a sentence.
+    static QString gainMismatchText(const QString& controller, double ratio);
 
 private:
     void show();

@@ -405,6 +405,23 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
                          : QStringLiteral("%1 of %2").arg(run.metrics.fallbacks).arg(run.metrics.decisions)));
     }
     both(QStringLiteral("</table>"));
+    // A learnt controller that loses usually believes the wrong gain: say which, and what it does.
+    for (const auto& run : cl.runs) {
+        const auto ratio =
+            !run.ran || run.kind == control::ControllerKind::Pi
+                ? std::nullopt
+                : control::mismatchedGainRatio(run.metrics.gainPctPerKMedian, cl.plantGainPctPerK);
+        if (ratio) {
+            both(QStringLiteral("<p><b>Gain:</b> %1: its model's gain is %2 times the plant's; %3.</p>")
+                     .arg(controllerDisplayName(run.kind, false).toHtmlEscaped(), num(*ratio, 2),
+                          *ratio < 0 ? QStringLiteral(
+                                           "the sign is the other, so it steers the hot air the wrong way")
+                          : *ratio < 1
+                              ? QStringLiteral("it underrates the hot air's effect, so it over-acts "
+                                               "(the setpoint swings towards its limits)")
+                              : QStringLiteral("it overrates the hot air's effect, so it acts too little")));
+        }
+    }
     // The ranking is on IAE, as the paper's Table 2; a controller that gets there by moving the
     // burner every decision must not read as the better one without a word (docs/mpc.md, Limits).
     if (piEffort > 0 && mpcEffort > 10 * piEffort) {

@@ -163,6 +163,22 @@ private Q_SLOTS:
         QVERIFY(std::abs(m.effortK2 - 13.0) < 1e-12);
     }
 
+    // The sentence under the what-if table: a model within a factor of 2 of the plant's gain is
+    // not flagged; a third of it (the LSTM on closed-loop data), triple it, or the other sign is.
+    void aGainFarFromThePlantsIsFlagged() {
+        const double plant = -0.0935;
+        QVERIFY(!control::mismatchedGainRatio(-0.0891, plant));
+        QVERIFY(!control::mismatchedGainRatio(0.5 * plant, plant));
+        QVERIFY(!control::mismatchedGainRatio(2.0 * plant, plant));
+        const auto third = control::mismatchedGainRatio(-0.0298, plant);
+        QVERIFY(third.has_value());
+        QVERIFY(std::abs(*third - 0.0298 / 0.0935) < 1e-12);
+        QCOMPARE(*control::mismatchedGainRatio(3 * plant, plant), 3.0);
+        QVERIFY(*control::mismatchedGainRatio(0.02, plant) < 0);
+        QVERIFY(!control::mismatchedGainRatio(-0.05, 0.0));          // the plant's gain unknown
+        QVERIFY(!control::mismatchedGainRatio(std::nan(""), plant)); // no decision made
+    }
+
     void scenarioSchemaErrors() {
         for (const auto& [name, text] : control::bundledScenarios()) {
             const auto s = control::parseScenario(text, name);
