@@ -114,10 +114,7 @@ int runMpc(const CommandOptions& o) {
                                    ? std::nullopt
                                    : control::mismatchedGainRatio(m.gainPctPerKMedian, r.plantGainPctPerK)) {
             std::printf("%-20s its model's gain is %.2f times the plant's: %s\n", "", *ratio,
-                        *ratio < 0   ? "the other sign, so it steers the hot air the wrong way"
-                        : *ratio < 1 ? "it underrates the hot air's effect, so it over-acts (the setpoint "
-                                       "swings towards its limits)"
-                                     : "it overrates the hot air's effect, so it acts too little");
+                        control::gainMismatchEffect(*ratio).c_str());
         }
     }
     std::printf(

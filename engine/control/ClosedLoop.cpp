@@ -50,6 +50,15 @@ std::optional<double> mismatchedGainRatio(double modelGainPctPerK, double plantG
     return ratio;
 }
 
+std::string gainMismatchEffect(double ratio) {
+    if (ratio < 0) {
+        return "its sign is the other, so it steers the hot air the wrong way";
+    }
+    return ratio < 1 ? "it underrates the hot air's effect, so it over-acts (the setpoint swings towards its "
+                       "limits)"
+                     : "it overrates the hot air's effect, so it acts too little";
+}
+
 namespace {
 
 /// The plant's steady gain: two runs at fixed setpoints 2 K apart, without noise or

@@ -113,6 +113,10 @@ plant::PlantDisturbances scenarioDisturbances(const Scenario& scenario, std::mt1
 /// on the moisture over-acts, one that overrates it acts too little, one of the other sign
 /// steers the wrong way: what a process engineer reads first when a learnt controller loses.
 std::optional<double> mismatchedGainRatio(double modelGainPctPerK, double plantGainPctPerK);
+/// @brief What a controller whose model's gain is @p ratio times the plant's does, in English
+/// (the CLI and the report; the What-if tab words it itself, translated): "it underrates the hot
+/// air's effect, so it over-acts (the setpoint swings towards its limits)".
+std::string gainMismatchEffect(double ratio);
 
 /// @brief The hot-air setpoint the line starts at: the PI loop's steady value for the
 /// scenario's inlet moisture [K].

@@ -414,12 +414,7 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
         if (ratio) {
             both(QStringLiteral("<p><b>Gain:</b> %1: its model's gain is %2 times the plant's; %3.</p>")
                      .arg(controllerDisplayName(run.kind, false).toHtmlEscaped(), num(*ratio, 2),
-                          *ratio < 0 ? QStringLiteral(
-                                           "the sign is the other, so it steers the hot air the wrong way")
-                          : *ratio < 1
-                              ? QStringLiteral("it underrates the hot air's effect, so it over-acts "
-                                               "(the setpoint swings towards its limits)")
-                              : QStringLiteral("it overrates the hot air's effect, so it acts too little")));
+                          QString::fromStdString(control::gainMismatchEffect(*ratio)).toHtmlEscaped()));
         }
     }
     // The ranking is on IAE, as the paper's Table 2; a controller that gets there by moving the
