@@ -1840,7 +1840,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="43"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="867"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="879"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
@@ -1861,7 +1861,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="873"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="885"/>
         <source>Score z: how strongly the model&apos;s error points at this cause, in standard deviations of chance; above about 3 is strong evidence.</source>
         <translation>得分 z：模型误差指向该原因的强度，以偶然波动的标准差计；约 3 以上为有力证据。</translation>
     </message>
@@ -2031,8 +2031,8 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="133"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="821"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1037"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="833"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1049"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -2041,7 +2041,7 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="861"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="873"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
@@ -2298,42 +2298,42 @@
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="657"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="669"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="662"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="674"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="662"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="674"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="668"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="680"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="672"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="684"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="697"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="709"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="703"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="686"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="698"/>
         <source>%1 was named on top of it (a further %2 % of the held-out error): alone it predicts worse (%3 times the held-out error), but the change needs both forms, so the data cannot say which of them it is.</source>
         <translation>在它之上又判定了 %1（再减少留出误差的 %2 %）：单独使用时预测更差（留出误差的 %3 倍），但这一变化需要两种形式共同解释，因此数据无法判断是其中哪一个。</translation>
     </message>
@@ -2386,92 +2386,97 @@
         <translation>参考期本身在漂移：模型的 %1 误差在一个平均批次内变化 %2 %3。参考期应是产线运行良好的时段；以此为参考，之后的变化可能显示为无变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="596"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="578"/>
+        <source>Reference batch %1: %2 is typically %3 %4, outside what the other reference batches saw (%5 to %6 %4): the line&apos;s structure there is the map&apos;s extrapolation, so the batch is left out of the causes&apos; normal spread.</source>
+        <translation>参考批次 %1：%2 通常为 %3 %4，超出其他参考批次所见范围（%5 至 %6 %4）：该批次上产线结构的修正是映射的外推，因此该批次不计入各原因的正常离散度。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="608"/>
         <source>Only the causes asked were tried: %1. That the others are not named says nothing about them.</source>
         <translation>只试了所问的原因：%1。其他原因未被指认，并不说明它们不存在。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="606"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="618"/>
         <source>Commissioned on the reference period (%1 batch(es), %2 rows): h_HDT %3 W/(m²·K) and k_HDT %4 m/s, held fixed on the data judged.</source>
         <translation>已在参考期上调试（%1 个批次，%2 行）：h_HDT %3 W/(m²·K)，k_HDT %4 m/s，在所判断的数据上保持不变。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="614"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="626"/>
         <source>The line&apos;s own structure (what the model always gets wrong: a ridge regression on the inputs and the model&apos;s outputs, penalty %1) was learnt on the reference and taken off the measurements; the residuals shown are what is left.</source>
         <translation>产线自身的结构（模型总是出错的部分：基于输入和模型输出的岭回归，惩罚系数 %1）已在参考期上学习，并从测量值中扣除；所示残差为剩余部分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="626"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="638"/>
         <source>%1 is measured in the data but not in every batch of the reference period: the periods are compared on the outputs both measure, without it.</source>
         <translation>%1 在数据中有测量，但参考期并非每个批次都有：两个时期只在双方都测量的输出上比较，不含它。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="629"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="641"/>
         <source>%1 is measured in the reference period but not in every batch of the data: the periods are compared on the outputs both measure, without it.</source>
         <translation>%1 在参考期中有测量，但数据并非每个批次都有：两个时期只在双方都测量的输出上比较，不含它。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="636"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="648"/>
         <source>The reference period&apos;s files: %1</source>
         <translation>参考期的文件：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="664"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="676"/>
         <source>A part whose estimate left the parameter&apos;s range is held at its bound.</source>
         <translation>某一部分的估计值超出了参数范围，已按其边界处理。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="681"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="693"/>
         <source>It goes on from the start of %1.</source>
         <translation>它从 %1 的开始起持续存在。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="716"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="728"/>
         <source>%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts %4 better; which output a cause favours is the model&apos;s structure, so the data cannot tell them apart.</source>
         <translation>%1 同样拟合：总体上它留下 %2 倍的留出误差（p = %3），但它对%4的预测更好；原因偏向哪个输出取决于模型自身的结构，因此数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="722"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="734"/>
         <source>the outlet moisture</source>
         <translation>出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="723"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="735"/>
         <source>the outlet temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="724"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="736"/>
         <source>the tube-outlet moisture</source>
         <translation>管出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="725"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="737"/>
         <source>the tube-outlet temperature</source>
         <translation>管出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="729"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="741"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="730"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="742"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="737"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="749"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="749"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="761"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="753"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="765"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -2480,32 +2485,32 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="770"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="782"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="770"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="782"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="799"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="811"/>
         <source> %1 moved against this cause&apos;s effect (%2 times what its model form says), by less than that output&apos;s noise can tell from none: it counts neither for the cause nor against it.</source>
         <translation> %1 的变化与该原因的作用方向相反（为其模型形式所预测的 %2 倍），但小于该输出的噪声所能分辨的程度：既不支持也不否定该原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="816"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="828"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="817"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="829"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="835"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="847"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2522,12 +2527,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="915"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="927"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="915"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="927"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2536,23 +2541,23 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="965"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="977"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="968"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="980"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="976"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="988"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="476"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="884"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="896"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
@@ -2587,17 +2592,17 @@
         <translation>DryTwin（已命名原因的拟合值）：&lt;b&gt;已变化&lt;/b&gt;（p %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="754"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="766"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="755"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="767"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="759"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="771"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
@@ -2606,19 +2611,19 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="838"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="850"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="858"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="870"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="244"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="598"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="859"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="610"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="871"/>
         <source>, </source>
         <translation>、</translation>
     </message>
@@ -2627,86 +2632,86 @@
         <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="862"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="874"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="885"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="897"/>
         <source>Named on its fit: it lowers the held-out error (p = %1) and passes the checks that it is this cause; the screen&apos;s p only ranks the candidates for fitting.</source>
         <translation>按其拟合指认：它降低了留出部分的误差（p = %1），并通过了确认是此原因的各项检查；筛选的 p 只用于为拟合排列候选。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="900"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="912"/>
         <source>fitted, not the best</source>
         <translation>已拟合，非最佳</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="901"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="913"/>
         <source>Fitted in a round in which another cause explained more of the error; the causes named after it were fitted on the model extended by it.</source>
         <translation>在某一轮中已拟合，但另一原因解释了更多误差；其后指认的原因是在由它扩展的模型上拟合的。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="912"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="924"/>
         <source>not fitted (weaker)</source>
         <translation>未拟合（证据较弱）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="986"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="998"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1002"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1014"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1011"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1023"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1018"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1030"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1023"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1035"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1031"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1043"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1051"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1063"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="744"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1052"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1078"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="756"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1064"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1090"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="765"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="777"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out goes from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1053"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1065"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="744"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1054"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1082"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="756"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1066"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1094"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2729,12 +2734,12 @@
         <translation>它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="581"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="593"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="584"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="596"/>
         <source>%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the model&apos;s error there is judged beyond the reference&apos;s conditions, and an alarm there may be that condition rather than a change of the line.</source>
         <translation>%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。</translation>
     </message>
@@ -2748,17 +2753,17 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="802"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="814"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="867"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="879"/>
         <source>Change z</source>
         <translation>变化 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="870"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="882"/>
         <source>Change z: how far the cause&apos;s one-step estimate here lies from its normal value on the reference period, in units of both estimates&apos; errors and the spread between the reference&apos;s periods; above 2 it moved.</source>
         <translation>变化 z：该原因在此处的一步估计与其在参考期的正常值相差多远，以两次估计的误差及参考期各时段间的离散为单位；大于 2 即为发生了变化。</translation>
     </message>
@@ -2771,92 +2776,92 @@
         <translation>未拟合：证据弱于已拟合的候选</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="925"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="937"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="940"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="952"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="947"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="959"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="961"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="973"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1006"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1018"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1036"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1048"/>
         <source>Held-out accuracy: nothing was named, so nothing was extended (before = after):</source>
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1041"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1053"/>
         <source>Gain on the held-out part, with every named cause (each finding&apos;s own gain is in its evidence):</source>
         <translation>留出部分的改进（含所有已指认的原因；每项发现各自的改进见其证据）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1055"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1067"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1064"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1076"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1077"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1089"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1077"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1089"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1078"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1090"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1081"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1093"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1081"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1093"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1082"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1094"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1109"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1121"/>
         <source>model (nothing extended)</source>
         <translation>模型（未扩展）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1111"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1123"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1112"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1124"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>

@@ -109,6 +109,16 @@ struct DiscoveryOptions {
     /// healthy pairs alarming 3 → 0 of 20 on the fresh seeds 741–743, naming level. false: applied
     /// as fitted everywhere, as before 2026-11-27 (late).
     bool lineStructureWithinReferenceRange = true;
+    /// Against a reference of three or more batches, with the line's structure learnt: a
+    /// reference batch whose typical value of an input lies outside what the other batches saw
+    /// (a winter batch among summer ones) is left out of the causes' normal spread, as long as
+    /// three batches remain. Each batch's structure is taken off by a map fitted on the others, so
+    /// there the map extrapolated and the causes' values carry its error (a re-absorption of
+    /// 4.1 ± 0.75 on a healthy winter batch beside 0.02, −0.70 and −0.01: a normal range of 0 to
+    /// 4.3, within which a re-absorption of 1.6 was turned down); new data inside the reference's
+    /// conditions are corrected by the map fitted on all of it. The notes name each batch left
+    /// out. false: every batch's value in the spread, as before 2026-11-29.
+    bool normalSpreadWithinReferenceConditions = true;
     /// Against a reference: a cause named early whose value, refitted with the causes named after
     /// it, lies back within its normal spread is withdrawn with a note (it had taken up their
     /// effect while alone). false: every cause named stays, as before 2026-11-27 (late).

@@ -15,6 +15,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -465,6 +466,10 @@ struct LineStructure {
     std::function<data::SiBatch(const data::SiBatch&, const physics::SimulationResult&)> apply;
     /// The reference so corrected, each part by a fit on the other parts (an honest null).
     std::vector<data::SiBatch> referenceCorrected;
+    /// Reference batches whose conditions the other batches never saw: their correction is the
+    /// map's extrapolation, so they stay out of the causes' normal spread
+    /// (DiscoveryOptions::normalSpreadWithinReferenceConditions; filled by discoverAgainstReference).
+    std::set<std::string> extrapolatedBatches;
 };
 /// @brief A measured input column of a batch: its file name, unit, and value at row k (file
 /// units), NaN when missing.

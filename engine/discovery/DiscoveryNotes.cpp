@@ -74,6 +74,14 @@ std::string lineStructureLearnt(double lambda) {
                   lambda);
 }
 
+std::string referenceBatchBeyondOthers(const std::string& batch, const std::string& input, double typical,
+                                       const std::string& unit, double low, double high) {
+    return format("reference batch %s: %s is typically %.4g %s, outside what the other reference batches saw "
+                  "(%.4g to %.4g %s): the line's structure there is the map's extrapolation, so the batch is "
+                  "left out of the causes' normal spread",
+                  batch.c_str(), input.c_str(), typical, unit.c_str(), low, high, unit.c_str());
+}
+
 std::string shortReference(std::size_t batches) {
     return format("the reference holds %zu batch(es): a period's normal spread comes from thirds of them, "
                   "which share their day and weather; a change named here may be a difference of conditions "

@@ -39,6 +39,11 @@ std::string commissionedOnReference(std::size_t batches, std::size_t rows, doubl
 std::string lineStructureLearnt(double lambda);
 /// A reference of fewer than three batches.
 std::string shortReference(std::size_t batches);
+/// A reference batch whose typical value of an input lies outside what the other reference
+/// batches saw: left out of the causes' normal spread
+/// (DiscoveryOptions::normalSpreadWithinReferenceConditions).
+std::string referenceBatchBeyondOthers(const std::string& batch, const std::string& input, double typical,
+                                       const std::string& unit, double low, double high);
 /// An output measured in one period and not in every batch of the other: compared without it.
 std::string measuredInOnePeriodOnly(const std::string& column, bool inData);
 /// A note on the reference period's own files (the data checks' @p note).

@@ -20,6 +20,7 @@
 #include <chrono>
 #include <cmath>
 #include <iterator>
+#include <set>
 #include <string_view>
 
 namespace drytwin::discovery {
@@ -55,24 +56,36 @@ bool isTiming(Param p) {
 /// The normal value of column @p col of @p st (at the commissioned model, nothing else free):
 /// the pooled one-step estimate, its HAC error, and the spread between the parts beyond what
 /// their own errors explain (a period's value varies with its operating point and weather).
-ReferenceValue normalValue(const Problem& pr, const Stack& st, int col, double tolerance) {
+/// @p leftOutOfSpread: reference batches whose values do not enter the spread (their conditions
+/// lie outside the other batches': see discoverAgainstReference), as long as three parts remain.
+ReferenceValue normalValue(const Problem& pr, const Stack& st, int col, double tolerance,
+                           const std::set<std::string>& leftOutOfSpread) {
     ReferenceValue rv;
     const auto sc = scoreTest(st, {}, col);
     rv.value = sc.estimate;
     rv.se = sc.se;
     const auto parts = consistencyAt(pr, st, {}, col, 0.0, tolerance);
     rv.parts = parts.parts;
-    if (parts.parts.size() >= 2) {
+    std::vector<PartEstimate> spreadParts;
+    for (const auto& e : parts.parts) {
+        if (leftOutOfSpread.count(e.part) == 0) {
+            spreadParts.push_back(e);
+        }
+    }
+    if (spreadParts.size() < 3) {
+        spreadParts = parts.parts;
+    }
+    if (spreadParts.size() >= 2) {
         double mean = 0, ownVariance = 0;
-        for (const auto& e : parts.parts) {
+        for (const auto& e : spreadParts) {
             mean += e.value;
             ownVariance += e.se * e.se;
         }
-        const double n = static_cast<double>(parts.parts.size());
+        const double n = static_cast<double>(spreadParts.size());
         mean /= n;
         ownVariance /= n;
         double between = 0;
-        for (const auto& e : parts.parts) {
+        for (const auto& e : spreadParts) {
             between += (e.value - mean) * (e.value - mean);
         }
         between /= n - 1;
@@ -630,8 +643,29 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     std::vector<data::SiBatch> refForModel = reference;
     std::vector<data::SiBatch> newForModel = batches;
     LineStructure structure;
+    std::vector<std::string> spreadNotes;
     if (options.learnLineStructure) {
         structure = learnLineStructure(reference, *refSims, options.lineStructureWithinReferenceRange);
+        // A reference batch whose conditions the other batches never saw (a winter batch among
+        // summer ones) was corrected by a map fitted on those others (each part's is), so its
+        // causes' values carry the map's extrapolation, not the line's normal variation; new data
+        // inside the reference's conditions are corrected by the map fitted on all of it. Such a
+        // batch is left out of the causes' normal spread (its value stays in the pooled one).
+        if (options.normalSpreadWithinReferenceConditions && reference.size() >= 3) {
+            for (std::size_t p = 0; p < reference.size(); ++p) {
+                std::vector<data::SiBatch> others;
+                for (std::size_t q = 0; q < reference.size(); ++q) {
+                    if (q != p) {
+                        others.push_back(reference[q]);
+                    }
+                }
+                for (const auto& o : outsideReference(others, {reference[p]})) {
+                    structure.extrapolatedBatches.insert(reference[p].id);
+                    spreadNotes.push_back(notes::referenceBatchBeyondOthers(
+                        reference[p].id, o.input->name, o.typical, o.input->unit, o.low, o.high));
+                }
+            }
+        }
         refForModel = structure.referenceCorrected;
         for (std::size_t b = 0; b < batches.size(); ++b) {
             newForModel[b] = structure.apply(batches[b], (*newSims)[b]);
@@ -657,7 +691,8 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
         }
         for (std::size_t i = 0; i < remaining.size(); ++i) {
             ref.linear[remaining[i]] =
-                normalValue(normalPr, *refStack, static_cast<int>(i), options.consistencyTolerance);
+                normalValue(normalPr, *refStack, static_cast<int>(i), options.consistencyTolerance,
+                            structure.extrapolatedBatches);
         }
         // The reference's own error level, every kept row (the commissioning leaves no held-out
         // part): what a period has without a change.
@@ -752,6 +787,7 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
     if (options.learnLineStructure) {
         result.notes.push_back(notes::lineStructureLearnt(structure.lambda));
     }
+    result.notes.insert(result.notes.end(), spreadNotes.begin(), spreadNotes.end());
     // Fewer than three batches: a period's normal spread comes from thirds of a recording, which
     // share its day and weather; what varies between weeks is not in it.
     if (reference.size() < 3) {

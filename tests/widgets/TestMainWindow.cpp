@@ -233,6 +233,8 @@ private Q_SLOTS:
             {notes::commissionedOnReference(6, 45000, 71.98, 0.02392), {"45000", "71.98", "0.02392"}},
             {notes::lineStructureLearnt(1e-4), {"1e-04"}},
             {notes::shortReference(2), {"2"}},
+            {notes::referenceBatchBeyondOthers("R03", "T_amb_C", 30.4, "°C", 12.1, 19.4),
+             {"R03", "30.4", "12.1", "19.4"}},
             {notes::judgedFromChangeOn({"B01", "B02"}, "B03"), {"B01, B02", "B03"}},
             {notes::changeGoesOnFromStart({"B04"}), {"B04"}},
             {notes::measuredInOnePeriodOnly("X_hdt_pct", true), {}},

@@ -569,6 +569,18 @@ QString DiscoverPanel::noteText(const std::string& note) {
                   "well; against this one a change since may read as none.")
             .arg(m.captured(1), m.captured(2), m.captured(3));
     }
+    // ReferenceDiscovery.cpp: "reference batch R03: T_amb_C is typically 30.4 °C, outside what the
+    // other reference batches saw (12.1 to 19.4 °C): ..."
+    static const QRegularExpression beyondOthers(
+        QStringLiteral("^reference batch (.+): (\\S+) is typically (\\S+) (.+), outside what the other "
+                       "reference batches saw \\((\\S+) to (\\S+) "));
+    if (const auto m = beyondOthers.match(n); m.hasMatch()) {
+        return tr("Reference batch %1: %2 is typically %3 %4, outside what the other reference batches saw "
+                  "(%5 to %6 %4): the line's structure there is the map's extrapolation, so the batch is "
+                  "left out of the causes' normal spread.")
+            .arg(m.captured(1), columnDisplayName(m.captured(2).toStdString()), m.captured(3), m.captured(4),
+                 m.captured(5), m.captured(6));
+    }
     // ReferenceDiscovery.cpp's operatingRangeNotes: "B04: T_amb_C is typically 31.6 °C, outside what
     // the reference saw (11 to 23 °C): ..."
     static const QRegularExpression outside(QStringLiteral(

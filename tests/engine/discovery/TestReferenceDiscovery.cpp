@@ -315,6 +315,33 @@ private Q_SLOTS:
                                 .arg(onsetS)));
     }
 
+    /// A winter batch (10 °C, 21 % RH) among three summer ones in the reference (seed 7322, issue
+    /// #41's study): the structure map fitted on the summer batches extrapolates there, and its re-absorption value
+    /// (4.1 beside about 0) made every re-absorption up to 4.3 "normal". Left out of the spread, with
+    /// a note naming it, a re-absorption of 3 (seed 322) is named; with every batch in, it is not.
+    void aReferenceBatchBeyondTheOthersIsLeftOutOfTheSpread() {
+        const auto reference = plantData(7322);
+        const auto data = plantData(322, {{Mechanism::AmbientReabsorption, 3.0}});
+        auto withOut = discovery::discoverChange(reference, data, hybrid::HybridModel{});
+        QVERIFY2(withOut, withOut ? "" : withOut.error().message().c_str());
+        QVERIFY2(namesFirst(*withOut, "ambient_reabsorption"), qPrintable(story(*withOut)));
+        const auto note =
+            std::find_if(withOut->notes.begin(), withOut->notes.end(), [](const std::string& n) {
+                return n.rfind("reference batch ", 0) == 0 && n.find("T_amb_C") != std::string::npos;
+            });
+        QVERIFY2(note != withOut->notes.end(), qPrintable(story(*withOut)));
+        QVERIFY(note->find(reference[2].id) != std::string::npos ||
+                note->find(reference[3].id) != std::string::npos);
+
+        discovery::DiscoveryOptions everyBatch;
+        everyBatch.normalSpreadWithinReferenceConditions = false;
+        auto withAll = discovery::discoverChange(reference, data, hybrid::HybridModel{}, everyBatch);
+        QVERIFY(withAll);
+        QVERIFY2(!namesFirst(*withAll, "ambient_reabsorption"), qPrintable(story(*withAll)));
+        QVERIFY(std::none_of(withAll->notes.begin(), withAll->notes.end(),
+                             [](const std::string& n) { return n.rfind("reference batch ", 0) == 0; }));
+    }
+
     void emptyReferenceIsAClearError() {
         auto r = discovery::discoverChange({}, plantData(46), hybrid::HybridModel{});
         QVERIFY(!r);
