@@ -316,8 +316,8 @@ private Q_SLOTS:
     }
 
     /// A winter batch (10 °C, 21 % RH) among three summer ones in the reference (seed 7322, issue
-    /// #41's study): the structure map fitted on the summer batches extrapolates there, and its re-absorption value
-    /// (4.1 beside about 0) made every re-absorption up to 4.3 "normal". Left out of the spread, with
+    /// #41's study): the structure map fitted on the summer batches extrapolates there, and its re-absorption
+    /// value (4.1 beside about 0) made every re-absorption up to 4.3 "normal". Left out of the spread, with
     /// a note naming it, a re-absorption of 3 (seed 322) is named; with every batch in, it is not.
     void aReferenceBatchBeyondTheOthersIsLeftOutOfTheSpread() {
         const auto reference = plantData(7322);
