@@ -4703,12 +4703,12 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::TrainingPanel</name>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="89"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="93"/>
         <source>The line&apos;s conditions: initial levels, load changes, seed (docs/mpc.md)</source>
         <translation>产线条件：初始水平、负荷变化、随机种子（docs/mpc.md）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="90"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="94"/>
         <source>Start session</source>
         <translation>开始会话</translation>
     </message>
@@ -4721,284 +4721,303 @@ extrapolation</source>
         <translation>显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="93"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="97"/>
         <source>Instructor window…</source>
         <translation>教员窗口…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="94"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="98"/>
         <source>Opens the instructor&apos;s window: clock, snapshots, faults, the true moisture and the score. Not on the trainee&apos;s screen.</source>
         <translation>打开教员窗口：时钟、快照、故障、真实水分和得分。不显示在学员屏幕上。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="96"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="100"/>
         <source>No session</source>
         <translation>无会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="105"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="109"/>
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="112"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="116"/>
         <source> % wb</source>
         <translation> % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="114"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="118"/>
         <source>Apply</source>
         <translation>应用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="123"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="127"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="125"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="129"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="129"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="133"/>
         <source>X_out setpoint</source>
         <translation>X_out 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="130"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="134"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="134"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="138"/>
         <source>Diagnose the recording…</source>
         <translation>诊断记录…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="135"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="139"/>
         <source>Saves what the line recorded so far as a batch file and opens it, so that the Discover tab can show what the model gets wrong</source>
         <translation>将产线至今的记录保存为批次文件并打开，以便“发现”页显示模型哪里出错</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="138"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="649"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="656"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="756"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="146"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="145"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="634"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="149"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="641"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="146"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="150"/>
         <source>Stops the line&apos;s clock while you think; press again to continue</source>
         <translation>思考时暂停产线时钟；再按一次继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="147"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="151"/>
         <source>Trainee</source>
         <translation>学员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="157"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="161"/>
         <source>Causes named (session time):</source>
         <translation>已给出的原因（会话时间）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="161"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="633"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="165"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="640"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="165"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="169"/>
         <source> min</source>
         <translation> 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="166"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="170"/>
         <source>Run ahead</source>
         <translation>快进</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="167"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="171"/>
         <source>Runs the line this much further at full speed</source>
         <translation>以最快速度让产线再运行这么久</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="169"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="173"/>
         <source>label (default: the time)</source>
         <translation>标签（默认：时间）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="170"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="174"/>
         <source>Take snapshot</source>
         <translation>拍摄快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="173"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="177"/>
         <source>Restore selected</source>
         <translation>恢复所选快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="183"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="187"/>
         <source> s from now</source>
         <translation> 秒后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="184"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="188"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="185"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="208"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="189"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="212"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="185"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="210"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="189"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="214"/>
         <source>Strength</source>
         <translation>强度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="185"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="212"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="189"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="216"/>
         <source>Acts from</source>
         <translation>起作用时间</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="185"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="189"/>
         <source>Found after</source>
         <translation>发现用时</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="189"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="193"/>
         <source>Save session…</source>
         <translation>保存会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="190"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="194"/>
         <source>Open session…</source>
         <translation>打开会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="191"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="234"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="369"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="195"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="238"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="376"/>
         <source>Instructor</source>
         <translation>教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="204"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="208"/>
         <source>Clock and snapshots</source>
         <translation>时钟与快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="216"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="220"/>
         <source>Faults</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="220"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="224"/>
         <source>A session file holds the scenario, every event (faults, snapshots, answers) and the recording as a batch file; reopening replays it to the same data.</source>
         <translation>会话文件包含工况、每个事件（故障、快照、回答）以及作为批次文件的记录；重新打开时会回放得到相同的数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="228"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="232"/>
         <source>Set instructor password…</source>
         <translation>设置教员密码…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="229"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="233"/>
         <source>Asked before the instructor window opens (empty: no password)</source>
         <translation>打开教员窗口前询问（留空：不设密码）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="235"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="239"/>
         <source>New instructor password (empty: none):</source>
         <translation>新的教员密码（留空：无）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="242"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="246"/>
         <source>Session file</source>
         <translation>会话文件</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="245"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="249"/>
         <source>Start a session: the line runs live under its PI loop.</source>
         <translation>开始会话：产线在其 PI 回路下实时运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="250"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="254"/>
         <source>Two detectors commissioned on healthy runs of this line: the physics model&apos;s error, and a dynamic PCA monitor of the screens&apos; signals. Each alarms when the line leaves its normal (1 % chance of a false alarm over the session)</source>
         <translation>两个检测器在本产线的健康运行数据上调试：物理模型误差，以及画面信号的动态 PCA 监控。产线偏离正常状态时各自报警（整个会话的误报概率为 1 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="284"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="273"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="288"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="270"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="274"/>
         <source>T_hot [°C]</source>
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="271"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="275"/>
         <source>Feed [kg/h]</source>
         <translation>进料 [kg/h]</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="300"/>
+        <source>fault began</source>
+        <translation>故障开始</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="301"/>
+        <source>trainee&apos;s answer</source>
+        <translation>学员的回答</translation>
+    </message>
+    <message>
+        <source>fault: %1</source>
+        <translation type="vanished">故障：%1</translation>
+    </message>
+    <message>
+        <source>answer: %1</source>
+        <translation type="vanished">回答：%1</translation>
     </message>
     <message>
         <source>Feed [t/h]</source>
         <translation>进料 [t/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="272"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="276"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="273"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="285"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="277"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="289"/>
         <source>session time [min]</source>
         <translation>会话时间 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="275"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="292"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="279"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="296"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="277"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="294"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="281"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="298"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="278"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="288"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="282"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="292"/>
         <source>X_out measured</source>
         <translation>X_out 测量值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="281"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="285"/>
         <source>DryTwin — instructor</source>
         <translation>DryTwin — 教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="290"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="294"/>
         <source>X_out true</source>
         <translation>X_out 真实值</translation>
     </message>
@@ -5007,77 +5026,77 @@ extrapolation</source>
         <translation type="vanished">监控 T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="308"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="315"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="309"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="316"/>
         <source>T² of the model&apos;s error</source>
         <translation>模型误差的 T²</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="326"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="333"/>
         <source>alarm</source>
         <translation>报警</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="327"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="334"/>
         <source>change began</source>
         <translation>变化开始</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="335"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="342"/>
         <source>Start a session to see the line run</source>
         <translation>开始会话即可看到产线运行</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="336"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="343"/>
         <source>The monitor&apos;s T² shows once it has a minute of the model&apos;s error</source>
         <translation>监测器积累一分钟的模型误差后显示 T²</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="339"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="346"/>
         <source>Start a session to see the true outlet moisture beside the measured</source>
         <translation>开始会话即可看到真实出口含水率与测量值的对比</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="441"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="448"/>
         <source>Save the session as a folder</source>
         <translation>把会话保存为文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="444"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="451"/>
         <source>Session folder (*)</source>
         <translation>会话文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="691"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="698"/>
         <source>Line monitor unavailable: %1</source>
         <translation>产线监控不可用：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="693"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="700"/>
         <source>Line monitor: normal (as on its commissioning runs).</source>
         <translation>产线监控：正常（与调试运行一致）。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="697"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="704"/>
         <source>the model&apos;s error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="697"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="704"/>
         <source>the screens&apos; signals (PCA)</source>
         <translation>画面信号（PCA）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="700"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="707"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal; the change began at about %3. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态；变化约始于 %3。请诊断记录以确定原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="703"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="710"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态。请诊断记录以确定原因。</translation>
     </message>
@@ -5086,57 +5105,57 @@ extrapolation</source>
         <translation>X_out 真实值（教员）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="302"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="309"/>
         <source>T_hot setpoint</source>
         <translation>T_hot 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="303"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="310"/>
         <source>T_hot</source>
         <translation>T_hot</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="304"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="311"/>
         <source>feed</source>
         <translation>进料</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="305"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
         <source>X_in</source>
         <translation>X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="306"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="313"/>
         <source>T² [-]</source>
         <translation>T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="344"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="351"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="345"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="352"/>
         <source>Stops the replay or the run ahead; the line stays where it got to</source>
         <translation>停止回放或快进；产线停留在已运行到的位置</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="347"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="354"/>
         <source>Scenario</source>
         <translation>工况</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="369"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="376"/>
         <source>Instructor password:</source>
         <translation>教员密码：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="372"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="379"/>
         <source>Wrong password: the instructor window stays closed.</source>
         <translation>密码错误：教员窗口保持关闭。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="429"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="436"/>
         <source>Select a snapshot to restore.</source>
         <translation>请选择要恢复的快照。</translation>
     </message>
@@ -5145,132 +5164,132 @@ extrapolation</source>
         <translation>将会话保存到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="450"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="457"/>
         <source>Open a training session</source>
         <translation>打开培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="450"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="457"/>
         <source>Sessions (*.json)</source>
         <translation>会话 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="459"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="466"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="469"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="476"/>
         <source>Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录以供诊断：%1。请在其上运行“发现”，然后在此给出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="472"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="479"/>
         <source>Recording opened for diagnosis: %1; the line&apos;s commissioning runs are in %2. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录用于诊断：%1；产线的调试运行数据位于 %2。对其运行“发现”，然后在此处指出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="479"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="486"/>
         <source>Session saved: %1</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="535"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="542"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="539"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="546"/>
         <source>The previous session was saved in %1.</source>
         <translation>上一个会话已保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="553"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="560"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="578"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="585"/>
         <source>%1 (stale: retrain)</source>
         <translation>%1（过期：需重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="579"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="586"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="627"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="634"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="630"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="637"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="630"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="637"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="630"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="637"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="632"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="639"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="633"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="640"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="634"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="641"/>
         <source>Continue</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="644"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="651"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="645"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="652"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="649"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="656"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="656"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="663"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="666"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="673"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="666"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="673"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="669"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="676"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="679"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="686"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>

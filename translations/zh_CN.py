@@ -8,6 +8,8 @@ import re
 import sys
 
 ZH = {
+    "fault began": "故障开始",
+    "trainee's answer": "学员的回答",
     "Reference batch %1: %2 is typically %3 %4, outside what the other reference batches saw (%5 to %6 %4): the line's structure there is the map's extrapolation, so the batch is left out of the causes' normal spread.": "参考批次 %1：%2 通常为 %3 %4，超出其他参考批次所见范围（%5 至 %6 %4）：该批次上产线结构的修正是映射的外推，因此该批次不计入各原因的正常离散度。",
     "%1: its model's gain has the other sign than the plant's, so it steers the hot air the wrong way.": "%1：其模型的增益与装置的符号相反，因此它把热风往错误的方向调。",
     "%1: its model's gain is %2 times the plant's; it underrates the hot air's effect, so it over-acts (the setpoint swings towards its limits).": "%1：其模型的增益是装置的 %2 倍；它低估了热风的作用，因此调节过度（设定值摆向其上下限）。",

@@ -186,6 +186,18 @@ private Q_SLOTS:
         QVERIFY2(score.points > 70 && score.points < 80, qPrintable(QString::number(score.points)));
         panel->setInstructorView(true);
         QVERIFY(panel->scoreLabel()->text().contains(QStringLiteral("faults found 1 of 1")));
+        // The instructor's plot marks when the fault began and when the trainee answered, both in
+        // view (the fault began 29.5 min before the answer, earlier than the plot's usual window).
+        QTRY_COMPARE(panel->truthMarkers().size(), std::size_t(2));
+        const double faultAtMin = runner.frame().faults.at(0).onsetS / 60.0;
+        QCOMPARE(panel->truthMarkers()[0]->xValue(), faultAtMin);
+        QCOMPARE(panel->truthMarkers()[1]->xValue(), runner.frame().answers.at(0).atS / 60.0);
+        const QwtScaleDiv& shown = panel->truthPlots()->plot(0)->axisScaleDiv(QwtPlot::xBottom);
+        QVERIFY2(shown.lowerBound() <= faultAtMin && faultAtMin <= shown.upperBound(),
+                 qPrintable(QStringLiteral("fault at %1 min, plot %2 to %3")
+                                .arg(faultAtMin)
+                                .arg(shown.lowerBound())
+                                .arg(shown.upperBound())));
 
         // The session saved as files and reopened: replayed to the same line, frozen.
         QTemporaryDir dir;

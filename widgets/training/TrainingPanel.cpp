@@ -36,6 +36,7 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
@@ -61,6 +62,10 @@ QString controllerLabel(control::ControllerKind k) {
                ? controllerDisplayName(k)
                : QCoreApplication::translate("TrainingPanel", "MPC on: %1").arg(controllerDisplayName(k));
 }
+
+/// The instructor's plot: when a fault began, when the trainee answered.
+const QColor kFaultColour(230, 120, 0);
+const QColor kAnswerColour(40, 140, 40);
 
 /// A mechanism by the one name every tab gives its cause (DisplayNames): the trainee names on
 /// Training the cause Discover found under the same words.
@@ -292,6 +297,9 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_truthBandHigh = m_truthPlots->addCurve(0, tr("band"), none, none, Qt::gray, Qt::DotLine, 1.0);
     m_truthBandLow = m_truthPlots->addCurve(0, QString(), none, none, Qt::gray, Qt::DotLine, 1.0);
     m_truthSetpoint = m_truthPlots->addCurve(0, tr("setpoint"), none, none, Qt::black, Qt::DashLine, 1.4);
+    // The legend says what the vertical lines are; each line's label names its cause.
+    m_truthPlots->addCurve(0, tr("fault began"), none, none, kFaultColour, Qt::DashLine, 1.5);
+    m_truthPlots->addCurve(0, tr("trainee's answer"), none, none, kAnswerColour, Qt::DashLine, 1.5);
     m_instructorWindow->restoreGeometry(
         QSettings().value(QStringLiteral("training/instructorGeometry")).toByteArray());
     m_instructorWindow->installEventFilter(this);
@@ -707,6 +715,60 @@ void TrainingPanel::showFrame() {
     redrawPlots();
 }
 
+void TrainingPanel::markFaultsAndAnswers(const TrainingFrame& f, double fromS, double toS) {
+    // What the trainee's screen cannot show: when each fault began to act and when the trainee
+    // answered, so that the instructor reads the time to find it, and the moisture lost meanwhile,
+    // off the plot. Few of them (a session's faults and answers): redrawn whole.
+    for (auto* m : m_truthMarkers) {
+        m->detach();
+        delete m;
+    }
+    m_truthMarkers.clear();
+    // Each label runs into the plot from its line, at the plot's foot or head: the first row and
+    // side (rightwards first) where it stays inside the plot and clear of the labels placed before
+    // it, else where there is more room (a label at 35 of 40 min was cut at the plot's edge, two
+    // answers' labels ran into each other).
+    const QwtPlot* plot = m_truthPlots->plot(0);
+    const double secondsPerPixel = (toS - fromS) / std::max(1, plot->canvas()->width());
+    std::vector<std::pair<double, double>> taken[2]; // per row: the spans its labels cover [s]
+    const Qt::Alignment rowAlignment[2] = {Qt::AlignBottom, Qt::AlignTop};
+    const auto add = [&](double atS, const QString& label, const QColor& colour, int firstRow) {
+        auto* m = new QwtPlotMarker(label);
+        m->setLineStyle(QwtPlotMarker::VLine);
+        m->setLinePen(colour, 1.5, Qt::DashLine);
+        QwtText text(label);
+        text.setColor(colour);
+        m->setLabel(text);
+        const double widthS = (text.textSize(plot->font()).width() + 12) * secondsPerPixel;
+        const auto clear = [&](int row, double a, double b) {
+            return a >= fromS && b <= toS &&
+                   std::none_of(taken[row].begin(), taken[row].end(),
+                                [&](const auto& t) { return a < t.second && t.first < b; });
+        };
+        int row = firstRow;
+        bool right = toS - atS >= atS - fromS;
+        for (int r : {firstRow, 1 - firstRow}) {
+            if (clear(r, atS, atS + widthS) || clear(r, atS - widthS, atS)) {
+                row = r;
+                right = clear(r, atS, atS + widthS);
+                break;
+            }
+        }
+        taken[row].emplace_back(right ? atS : atS - widthS, right ? atS + widthS : atS);
+        m->setLabelAlignment((right ? Qt::AlignRight : Qt::AlignLeft) | rowAlignment[row]);
+        m->setXValue(atS / 60.0);
+        m->attach(m_truthPlots->plot(0));
+        m_truthMarkers.push_back(m);
+    };
+    for (const auto& fault : f.faults) {
+        add(fault.onsetS, mechanismLabel(fault.mechanism), kFaultColour, 0);
+    }
+    for (const auto& a : f.answers) {
+        const auto m = plant::mechanismByName(a.cause);
+        add(a.atS, m ? mechanismLabel(*m) : tr("No fault"), kAnswerColour, 1);
+    }
+}
+
 void TrainingPanel::redrawPlots() {
     const auto& trace = m_runner->trace();
     const TrainingFrame& f = m_runner->frame();
@@ -718,8 +780,25 @@ void TrainingPanel::redrawPlots() {
     const double changeStartS =
         alarmed.hasOnset ? std::min(alarmed.onsetS, alarmed.alarmAtS) : alarmed.alarmAtS;
     const double from = showAlarm ? std::min(f.timeS - kWindowS, changeStartS - 120.0) : f.timeS - kWindowS;
+    // The instructor's plot reaches back to two minutes before the earliest fault that acts, so
+    // that its start, the trainee's answers and the moisture between stay in one view.
+    double truthFrom = from;
+    for (const auto& fault : f.faults) {
+        if (fault.onsetS <= f.timeS) {
+            truthFrom = std::min(truthFrom, fault.onsetS - 120.0);
+        }
+    }
     QVector<double> t, xm, xt, sp, hi, lo, hsp, h, feed, xin;
+    QVector<double> tt, txm, txt, tsp, thi, tlo;
     for (const auto& s : trace) {
+        if (s.timeS >= truthFrom) {
+            tt << s.timeS / 60.0;
+            txm << s.xOutPct;
+            txt << s.xOutTruePct;
+            tsp << s.setpointPct;
+            thi << s.setpointPct + f.bandPct;
+            tlo << s.setpointPct - f.bandPct;
+        }
         if (s.timeS < from) {
             continue;
         }
@@ -735,14 +814,14 @@ void TrainingPanel::redrawPlots() {
         xin << s.xInPct;
     }
     m_xMeasured->setSamples(t, xm);
-    m_truthMeasured->setSamples(t, xm);
-    m_xTrue->setSamples(t, xt);
+    m_truthMeasured->setSamples(tt, txm);
+    m_xTrue->setSamples(tt, txt);
     m_xSetpoint->setSamples(t, sp);
     m_bandHigh->setSamples(t, hi);
     m_bandLow->setSamples(t, lo);
-    m_truthSetpoint->setSamples(t, sp);
-    m_truthBandHigh->setSamples(t, hi);
-    m_truthBandLow->setSamples(t, lo);
+    m_truthSetpoint->setSamples(tt, tsp);
+    m_truthBandHigh->setSamples(tt, thi);
+    m_truthBandLow->setSamples(tt, tlo);
     // The earlier detector's alarm and change start, as the monitor's sentence says them.
     m_alarmMarker->setVisible(showAlarm);
     m_alarmMarker->setXValue(alarmed.alarmAtS / 60.0);
@@ -767,8 +846,10 @@ void TrainingPanel::redrawPlots() {
     m_plots->rescale();
     m_plots->setXRange(std::max(0.0, from) / 60.0, std::max(kWindowS, f.timeS) / 60.0);
     if (m_instructorWindow->isVisible() && !m_instructorWindow->isMinimized()) {
+        const double truthTo = std::max(kWindowS, f.timeS);
+        markFaultsAndAnswers(f, std::max(0.0, truthFrom), truthTo);
         m_truthPlots->rescale();
-        m_truthPlots->setXRange(std::max(0.0, from) / 60.0, std::max(kWindowS, f.timeS) / 60.0);
+        m_truthPlots->setXRange(std::max(0.0, truthFrom) / 60.0, truthTo / 60.0);
     }
 }
 

@@ -3,6 +3,7 @@
 #include "plant/Mechanisms.h"
 
 #include <QWidget>
+#include <vector>
 
 class QCheckBox;
 class QComboBox;
@@ -22,6 +23,7 @@ namespace drytwin::widgets {
 
 class PlotStack;
 class TrainingRunner;
+struct TrainingFrame;
 class Workbench;
 
 /// @brief Training mode: the virtual plant live (1×–50×) under its PI loop or an MPC, scrolling
@@ -66,6 +68,8 @@ public:
     QLabel* monitorLabel() const { return m_monitorLabel; }
     /// The T² plot's marker at the monitor's alarm (hidden while the line is normal).
     QwtPlotMarker* alarmMarker() const { return m_alarmMarker; }
+    /// @brief The instructor plot's lines: each fault's start, then each answer, in that order.
+    const std::vector<QwtPlotMarker*>& truthMarkers() const { return m_truthMarkers; }
     /// @brief The trainee's pause (the clock stops; the same button continues).
     QPushButton* pauseButton() const { return m_pause; }
     /// @brief The instructor's own window (faults, score, the true moisture).
@@ -154,6 +158,11 @@ private:
     QwtPlotCurve *m_truthBandHigh = nullptr, *m_truthBandLow = nullptr, *m_truthSetpoint = nullptr;
     /// On the T² plot: where the monitor alarmed and where it puts the change's start.
     QwtPlotMarker *m_alarmMarker = nullptr, *m_onsetMarker = nullptr;
+    /// On the instructor's plot: when each fault began acting and when the trainee answered.
+    std::vector<QwtPlotMarker*> m_truthMarkers;
+    /// Redraws m_truthMarkers from the frame's faults and answers on the plot's time range
+    /// [@p fromS, @p toS] (labels run into the plot from their line).
+    void markFaultsAndAnswers(const TrainingFrame& f, double fromS, double toS);
     QwtPlotCurve* m_bandLow = nullptr;
     QwtPlotCurve* m_hotSetpoint = nullptr;
     QwtPlotCurve* m_hot = nullptr;
