@@ -665,6 +665,12 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
                         reference[p].id, o.input->name, o.typical, o.input->unit, o.low, o.high));
                 }
             }
+            // Fewer than three batches would be left: the spread is taken over every batch
+            // (normalValue), and no note says otherwise.
+            if (reference.size() - structure.extrapolatedBatches.size() < 3) {
+                structure.extrapolatedBatches.clear();
+                spreadNotes.clear();
+            }
         }
         refForModel = structure.referenceCorrected;
         for (std::size_t b = 0; b < batches.size(); ++b) {
