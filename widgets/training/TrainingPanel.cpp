@@ -63,6 +63,20 @@ QString controllerLabel(control::ControllerKind k) {
                : QCoreApplication::translate("TrainingPanel", "MPC on: %1").arg(controllerDisplayName(k));
 }
 
+/// The outlet moisture's curves of one plot over the samples given to add(): time [min], the
+/// measured and the true moisture, the setpoint and its band [% wb].
+struct MoistureSeries {
+    QVector<double> minutes, measured, truth, setpoint, bandHigh, bandLow;
+    void add(const training::LiveSample& s, double bandPct) {
+        minutes << s.timeS / 60.0;
+        measured << s.xOutPct;
+        truth << s.xOutTruePct;
+        setpoint << s.setpointPct;
+        bandHigh << s.setpointPct + bandPct;
+        bandLow << s.setpointPct - bandPct;
+    }
+};
+
 /// The instructor's plot: when a fault began, when the trainee answered.
 const QColor kFaultColour(230, 120, 0);
 const QColor kAnswerColour(40, 140, 40);
@@ -788,40 +802,31 @@ void TrainingPanel::redrawPlots() {
             truthFrom = std::min(truthFrom, fault.onsetS - 120.0);
         }
     }
-    QVector<double> t, xm, xt, sp, hi, lo, hsp, h, feed, xin;
-    QVector<double> tt, txm, txt, tsp, thi, tlo;
+    MoistureSeries trainee, truth; // the trainee's plot from `from`, the instructor's from `truthFrom`
+    QVector<double> hsp, h, feed, xin;
     for (const auto& s : trace) {
         if (s.timeS >= truthFrom) {
-            tt << s.timeS / 60.0;
-            txm << s.xOutPct;
-            txt << s.xOutTruePct;
-            tsp << s.setpointPct;
-            thi << s.setpointPct + f.bandPct;
-            tlo << s.setpointPct - f.bandPct;
+            truth.add(s, f.bandPct);
         }
         if (s.timeS < from) {
             continue;
         }
-        t << s.timeS / 60.0;
-        xm << s.xOutPct;
-        xt << s.xOutTruePct;
-        sp << s.setpointPct;
-        hi << s.setpointPct + f.bandPct;
-        lo << s.setpointPct - f.bandPct;
+        trainee.add(s, f.bandPct);
         hsp << s.hotAirSetpointC;
         h << s.hotAirC;
         feed << s.feedKgH;
         xin << s.xInPct;
     }
-    m_xMeasured->setSamples(t, xm);
-    m_truthMeasured->setSamples(tt, txm);
-    m_xTrue->setSamples(tt, txt);
-    m_xSetpoint->setSamples(t, sp);
-    m_bandHigh->setSamples(t, hi);
-    m_bandLow->setSamples(t, lo);
-    m_truthSetpoint->setSamples(tt, tsp);
-    m_truthBandHigh->setSamples(tt, thi);
-    m_truthBandLow->setSamples(tt, tlo);
+    const QVector<double>& t = trainee.minutes;
+    m_xMeasured->setSamples(t, trainee.measured);
+    m_xSetpoint->setSamples(t, trainee.setpoint);
+    m_bandHigh->setSamples(t, trainee.bandHigh);
+    m_bandLow->setSamples(t, trainee.bandLow);
+    m_truthMeasured->setSamples(truth.minutes, truth.measured);
+    m_xTrue->setSamples(truth.minutes, truth.truth);
+    m_truthSetpoint->setSamples(truth.minutes, truth.setpoint);
+    m_truthBandHigh->setSamples(truth.minutes, truth.bandHigh);
+    m_truthBandLow->setSamples(truth.minutes, truth.bandLow);
     // The earlier detector's alarm and change start, as the monitor's sentence says them.
     m_alarmMarker->setVisible(showAlarm);
     m_alarmMarker->setXValue(alarmed.alarmAtS / 60.0);
