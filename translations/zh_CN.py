@@ -8,9 +8,21 @@ import re
 import sys
 
 ZH = {
+    "%1 is typically %2 %3, outside what the other reference batches saw (%4 to %5 %3)": "%1 通常为 %2 %3，超出其他参考批次所见范围（%4 至 %5 %3）",
+    "%1 is typically %2 %3, outside what the reference saw (%4 to %5 %3)": "%1通常为 %2 %3，超出参考期见过的范围（%4 至 %5 %3）",
+    "; ": "；",
+    "Reference batch %1: %2: the line's structure there is the map's extrapolation, so the batch is left out of the causes' normal spread.":
+        "参考批次 %1：%2：该批次上产线结构的修正是映射的外推，因此该批次不计入各原因的正常离散度。",
+    "%1: %2: the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.":
+        "%1：%2：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。",
+    "%1: %2: the model's error there is judged beyond the reference's conditions, and an alarm there may be that condition rather than a change of the line.":
+        "%1：%2：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。",
+    "it removes %1 % of the held-out squared error and %2 % of the outlet moisture's, the only measured output it acts on":
+        "它消除了留出数据平方误差的 %1 %，以及出口水分误差的 %2 %（出口水分是它唯一作用的测量输出）",
+    "it removes %1 % of the held-out squared error and %2 % of the outlet moisture's and temperature's, the only measured outputs it acts on":
+        "它消除了留出数据平方误差的 %1 %，以及出口水分和温度误差的 %2 %（二者是它唯一作用的测量输出）",
     "fault began": "故障开始",
     "trainee's answer": "学员的回答",
-    "Reference batch %1: %2 is typically %3 %4, outside what the other reference batches saw (%5 to %6 %4): the line's structure there is the map's extrapolation, so the batch is left out of the causes' normal spread.": "参考批次 %1：%2 通常为 %3 %4，超出其他参考批次所见范围（%5 至 %6 %4）：该批次上产线结构的修正是映射的外推，因此该批次不计入各原因的正常离散度。",
     "%1: its model's gain has the other sign than the plant's, so it steers the hot air the wrong way.": "%1：其模型的增益与装置的符号相反，因此它把热风往错误的方向调。",
     "%1: its model's gain is %2 times the plant's; it underrates the hot air's effect, so it over-acts (the setpoint swings towards its limits).": "%1：其模型的增益是装置的 %2 倍；它低估了热风的作用，因此调节过度（设定值摆向其上下限）。",
     "%1: its model's gain is %2 times the plant's; it overrates the hot air's effect, so it acts too little.": "%1：其模型的增益是装置的 %2 倍；它高估了热风的作用，因此调节不足。",
@@ -423,10 +435,6 @@ ZH = {
     "A batch file with your column names": "一个使用您的列名的批次文件",
     "Save the column mapping": "保存列映射",
     "Mappings (*.json)": "映射 (*.json)",
-    "%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.":
-        "%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。",
-    "%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the model's error there is judged beyond the reference's conditions, and an alarm there may be that condition rather than a change of the line.":
-        "%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。",
     "A transmitter hung (the same reading for a minute or more) on %1 rows: left out, an input bridged like a dropout.":
         "有变送器卡死（同一读数持续一分钟以上），涉及 %1 行：这些行不参与拟合，输入按断线同样桥接。",
     "Cleaning (paper §IV.A): %1 of %2 rows kept; dropped for X_HDT %3, T_HDT %4, feed %5, missing cells %6, impossible values %7. Split: the first %8 rows train, the last %9 test.":

@@ -278,12 +278,23 @@ Expected<HeldOut> heldOut(const Problem& pr, const ParameterSet& p) {
     return h;
 }
 
-/// Sum of the squared fast part of the held-out error: each channel's weighted error minus its
-/// centred moving average over `windowS`, per batch (no window across batches).
-double fastBandSquaredError(const HeldOut& h, double windowS) {
+namespace {
+/// The squared error of some channels (nullptr: of all): whole, or its fast part when windowS > 0
+/// (the error minus its centred moving average over that window).
+double channelSquaredError(const HeldOut& h, const std::array<bool, 4>* channels, double windowS) {
     double sum = 0;
     for (const auto& batch : h.channels) {
-        for (const auto& series : batch) {
+        for (std::size_t c = 0; c < batch.size(); ++c) {
+            if (channels && !(*channels)[c]) {
+                continue;
+            }
+            const auto& series = batch[c];
+            if (windowS <= 0) {
+                for (double e : series.weightedError) {
+                    sum += e * e;
+                }
+                continue;
+            }
             const auto slow = centredMovingAverage(series.timeS, series.weightedError, windowS);
             for (std::size_t i = 0; i < slow.size(); ++i) {
                 const double fast = series.weightedError[i] - slow[i];
@@ -292,6 +303,17 @@ double fastBandSquaredError(const HeldOut& h, double windowS) {
         }
     }
     return sum;
+}
+
+double shareRemoved(double before, double after) {
+    return before > 0 ? 1.0 - after / before : 0;
+}
+} // namespace
+
+/// Sum of the squared fast part of the held-out error: each channel's weighted error minus its
+/// centred moving average over `windowS`, per batch (no window across batches).
+double fastBandSquaredError(const HeldOut& h, double windowS) {
+    return channelSquaredError(h, nullptr, windowS);
 }
 
 double meanOf(const std::vector<std::vector<double>>& series) {
@@ -339,6 +361,18 @@ std::pair<double, double> explainedShares(const HeldOut& before, const HeldOut& 
         const double fastAfter = fastBandSquaredError(after, options.fastBandWindowS);
         fast = fastBefore > 0 ? 1.0 - fastAfter / fastBefore : 0;
     }
+    return {whole, fast};
+}
+
+std::pair<double, double> explainedSharesOnChannels(const HeldOut& before, const HeldOut& after,
+                                                    const std::array<bool, 4>& channels,
+                                                    const DiscoveryOptions& options) {
+    const double whole =
+        shareRemoved(channelSquaredError(before, &channels, 0), channelSquaredError(after, &channels, 0));
+    const double fast = options.fastBandWindowS > 0
+                            ? shareRemoved(channelSquaredError(before, &channels, options.fastBandWindowS),
+                                           channelSquaredError(after, &channels, options.fastBandWindowS))
+                            : 0;
     return {whole, fast};
 }
 

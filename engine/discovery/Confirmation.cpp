@@ -2,12 +2,29 @@
 // it predicts clearly better on the held-out part and is specific; and where a meter lag and a
 // transport-time error compete, the outlet channels tell them apart; its look-alikes; and the end
 // of selection (the findings restated at the extended model, bounds, what is left).
+#include "common/TextList.h"
 #include "discovery/DiscoveryInternal.h"
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace drytwin::discovery::detail {
+
+std::optional<std::array<bool, 4>> outletChannelsActedOn(Param p) {
+    switch (p) {
+    case Param::tau_meter:
+        return std::array<bool, 4>{true, false, false, false};
+    case Param::dtau_conv:
+        return std::array<bool, 4>{true, true, false, false};
+    default:
+        return std::nullopt;
+    }
+}
+
+std::string outletChannelsName(const std::array<bool, 4>& channels) {
+    return channels[kTOut] ? "the outlet channels'" : "the outlet moisture's";
+}
 
 Expected<Confirmation> confirmCandidate(const ConfirmationInput& in) {
     const auto& options = in.pr.options;
@@ -22,21 +39,39 @@ Expected<Confirmation> confirmCandidate(const ConfirmationInput& in) {
     out.explained = explained;
     out.explainedFast = explainedFast;
     const double ofChange = shareOfChange(in.pr, in.currentHeld, *afterHeld);
-    if (!(gain.pValue < in.level &&
-          std::max({explained, explainedFast, ofChange}) >= options.minExplainedFraction)) {
+    // A cause downstream of the tube's outlet moves the outlet channels alone (the meter's lag
+    // X_out, the transport time X_out and T_out); there its share is not diluted by the error of
+    // channels it cannot touch (DiscoveryOptions::shareOnTheChannelsItActsOn).
+    const auto itsChannels = outletChannelsActedOn(in.cand.parameter);
+    const bool judgedOnItsChannels = options.shareOnTheChannelsItActsOn && itsChannels.has_value();
+    double onChannels = 0, onChannelsFast = 0;
+    if (judgedOnItsChannels) {
+        std::tie(onChannels, onChannelsFast) =
+            explainedSharesOnChannels(in.currentHeld, *afterHeld, *itsChannels, options);
+    }
+    if (!(gain.pValue < in.level && std::max({explained, explainedFast, ofChange, onChannels,
+                                              onChannelsFast}) >= options.minExplainedFraction)) {
         // It fits the training part but does not predict clearly better: not a cause.
         out.code = "no_held_out_gain";
-        out.why =
-            gain.pValue >= in.level
-                ? format("held-out gain not significant (p = %.2g, needs < %.2g)", gain.pValue, in.level)
-            : ofChange > 0
-                ? format("removes only %.0f %% of the held-out error left, %.0f %% of its fast part and "
-                         "%.0f %% of its change against the reference (needs %.0f %% of one)",
-                         100 * explained, 100 * explainedFast, 100 * ofChange,
-                         100 * options.minExplainedFraction)
-                : format("removes only %.0f %% of the held-out error left and %.0f %% of its fast "
-                         "part (needs %.0f %% of either)",
-                         100 * explained, 100 * explainedFast, 100 * options.minExplainedFraction);
+        if (gain.pValue >= in.level) {
+            out.why = format("held-out gain not significant (p = %.2g, needs < %.2g)", gain.pValue, in.level);
+        } else {
+            std::vector<std::string> shares{format("%.0f %% of the held-out error left", 100 * explained),
+                                            format("%.0f %% of its fast part", 100 * explainedFast)};
+            if (ofChange > 0) {
+                shares.push_back(format("%.0f %% of its change against the reference", 100 * ofChange));
+            }
+            if (judgedOnItsChannels) {
+                shares.push_back(format("%.0f %% of %s error alone", 100 * onChannels,
+                                        outletChannelsName(*itsChannels).c_str()));
+                shares.push_back(format("%.0f %% of that error's fast part", 100 * onChannelsFast));
+            }
+            const std::string last = shares.back();
+            shares.pop_back();
+            out.why = "removes only " + commaList(shares) + " and " + last +
+                      format(" (needs %.0f %% of %s)", 100 * options.minExplainedFraction,
+                             shares.size() == 1 ? "either" : "one");
+        }
         out.held = std::move(*afterHeld);
         return out;
     }
@@ -75,6 +110,11 @@ Expected<Confirmation> confirmCandidate(const ConfirmationInput& in) {
     f.explainedFraction = explained;
     f.explainedFractionFast = explainedFast;
     f.fastPartCounted = explained < options.minExplainedFraction;
+    if (judgedOnItsChannels) {
+        f.explainedFractionOnItsChannels = std::max(onChannels, onChannelsFast);
+        f.onItsChannelsCounted =
+            std::max({explained, explainedFast, ofChange}) < options.minExplainedFraction;
+    }
     f.gain = gain;
     f.perPart = judged->consistency.parts;
     f.actsOn = judged->actsOn;

@@ -175,6 +175,16 @@ double meanOf(const std::vector<std::vector<double>>& series);
 /// (DiscoveryOptions::fastBandWindowS; 0 when off), that @p after removes from @p before.
 std::pair<double, double> explainedShares(const HeldOut& before, const HeldOut& after,
                                           const DiscoveryOptions& options);
+/// The outlet channels a cause downstream of the tube's outlet acts on alone (the meter's lag:
+/// X_out; the conveyor's transport time: X_out and T_out); none for any other cause
+/// (DiscoveryOptions::shareOnTheChannelsItActsOn).
+std::optional<std::array<bool, 4>> outletChannelsActedOn(Param p);
+/// "the outlet moisture's" or "the outlet channels'", for the messages.
+std::string outletChannelsName(const std::array<bool, 4>& channels);
+/// The same shares on some measured channels' error alone (by Channel), whole and fast part.
+std::pair<double, double> explainedSharesOnChannels(const HeldOut& before, const HeldOut& after,
+                                                    const std::array<bool, 4>& channels,
+                                                    const DiscoveryOptions& options);
 /// Against a reference, once a change is detected: the share of the change (the held-out error
 /// beyond the reference's own level) that @p after removes; 0 where that does not apply or the
 /// excess is under a tenth of the normal level.

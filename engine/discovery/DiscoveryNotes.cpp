@@ -43,10 +43,23 @@ std::string withdrawnAfterLaterCauses(const std::string& cause, const std::strin
            "; it had taken up what they explain";
 }
 
-std::string outsideReference(const std::string& batch, const std::string& input, double typical,
-                             const std::string& unit, double low, double high, bool levelNotJudged) {
-    return format("%s: %s is typically %.4g %s, outside what the reference saw (%.4g to %.4g %s): %s",
-                  batch.c_str(), input.c_str(), typical, unit.c_str(), low, high, unit.c_str(),
+namespace {
+/// "T_amb_C is typically 31.6 °C, outside what the reference saw (11 to 23 °C); RH_pct is …": a
+/// batch's inputs in one list, so that a winter batch (cold and dry) is one note, not two.
+std::string inputsOutside(const std::vector<InputOutsideRange>& inputs, const char* seenBy) {
+    std::string list;
+    for (const auto& in : inputs) {
+        list += (list.empty() ? "" : "; ") +
+                format("%s is typically %.4g %s, outside what %s saw (%.4g to %.4g %s)", in.input.c_str(),
+                       in.typical, in.unit.c_str(), seenBy, in.low, in.high, in.unit.c_str());
+    }
+    return list;
+}
+} // namespace
+
+std::string outsideReference(const std::string& batch, const std::vector<InputOutsideRange>& inputs,
+                             bool levelNotJudged) {
+    return format("%s: %s: %s", batch.c_str(), inputsOutside(inputs, "the reference").c_str(),
                   levelNotJudged ? "the reference has no normal level for these conditions, so the detectors "
                                    "judge only changes within this batch, not its level"
                                  : "the model's error there is judged beyond the reference's conditions, and "
@@ -74,12 +87,12 @@ std::string lineStructureLearnt(double lambda) {
                   lambda);
 }
 
-std::string referenceBatchBeyondOthers(const std::string& batch, const std::string& input, double typical,
-                                       const std::string& unit, double low, double high) {
-    return format("reference batch %s: %s is typically %.4g %s, outside what the other reference batches saw "
-                  "(%.4g to %.4g %s): the line's structure there is the map's extrapolation, so the batch is "
-                  "left out of the causes' normal spread",
-                  batch.c_str(), input.c_str(), typical, unit.c_str(), low, high, unit.c_str());
+std::string referenceBatchBeyondOthers(const std::string& batch,
+                                       const std::vector<InputOutsideRange>& inputs) {
+    return format(
+        "reference batch %s: %s: the line's structure there is the map's extrapolation, so the batch is "
+        "left out of the causes' normal spread",
+        batch.c_str(), inputsOutside(inputs, "the other reference batches").c_str());
 }
 
 std::string shortReference(std::size_t batches) {

@@ -27,9 +27,15 @@ std::string outletMixing(double lagS);
 std::string inletGaugeScatter(double sharePercent, double scatterPct);
 /// @p cause named first, then withdrawn: refitted with the causes after it, it is @p why.
 std::string withdrawnAfterLaterCauses(const std::string& cause, const std::string& why);
-/// A batch whose typical value of an input lies outside what the reference saw.
-std::string outsideReference(const std::string& batch, const std::string& input, double typical,
-                             const std::string& unit, double low, double high, bool levelNotJudged);
+/// An input whose typical value in a batch lies outside a range seen elsewhere.
+struct InputOutsideRange {
+    std::string input, unit;
+    double typical = 0, low = 0, high = 0;
+};
+/// A batch whose typical value of one or more inputs lies outside what the reference saw: one
+/// note for the batch, its inputs listed.
+std::string outsideReference(const std::string& batch, const std::vector<InputOutsideRange>& inputs,
+                             bool levelNotJudged);
 /// The reference's own error drifts within its batches.
 std::string referenceDrifts(const std::string& output, double changePerBatch, const std::string& unit,
                             double perHour, double perHourSe);
@@ -42,8 +48,8 @@ std::string shortReference(std::size_t batches);
 /// A reference batch whose typical value of an input lies outside what the other reference
 /// batches saw: left out of the causes' normal spread
 /// (DiscoveryOptions::normalSpreadWithinReferenceConditions).
-std::string referenceBatchBeyondOthers(const std::string& batch, const std::string& input, double typical,
-                                       const std::string& unit, double low, double high);
+std::string referenceBatchBeyondOthers(const std::string& batch,
+                                       const std::vector<InputOutsideRange>& inputs);
 /// An output measured in one period and not in every batch of the other: compared without it.
 std::string measuredInOnePeriodOnly(const std::string& column, bool inData);
 /// A note on the reference period's own files (the data checks' @p note).

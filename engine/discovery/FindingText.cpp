@@ -100,7 +100,13 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
     const bool moisture = f.output == "X_out";
     // The fast part is quoted when it is what made the cause count.
     const std::string share =
-        !f.fastPartCounted
+        f.onItsChannelsCounted
+            ? format("it removes %.0f %% of the held-out squared error and %.0f %% of %s",
+                     100 * f.explainedFraction, 100 * f.explainedFractionOnItsChannels,
+                     f.parameter == properties::Param::tau_meter
+                         ? "the outlet moisture's, the only measured output it acts on"
+                         : "the outlet moisture's and temperature's, the only measured outputs it acts on")
+        : !f.fastPartCounted
             ? format("it removes %.0f %% of the held-out squared error", 100 * f.explainedFraction)
             : format("it removes %.0f %% of the held-out squared error and %.0f %% of its fast part (the "
                      "error about its %.0f-minute average, where slow drift does not hide it)",

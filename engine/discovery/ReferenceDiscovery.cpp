@@ -326,10 +326,16 @@ std::vector<OutsideReference> outsideReference(const std::vector<data::SiBatch>&
 
 std::vector<std::string> operatingRangeNotes(const std::vector<data::SiBatch>& reference,
                                              const std::vector<data::SiBatch>& batches, bool levelNotJudged) {
-    std::vector<std::string> notes;
+    // One note a batch, its inputs listed (a winter batch is cold and dry: one note, not two).
+    std::vector<std::vector<notes::InputOutsideRange>> byBatch(batches.size());
     for (const auto& o : outsideReference(reference, batches)) {
-        notes.push_back(notes::outsideReference(batches[o.batch].id, o.input->name, o.typical, o.input->unit,
-                                                o.low, o.high, levelNotJudged));
+        byBatch[o.batch].push_back({o.input->name, o.input->unit, o.typical, o.low, o.high});
+    }
+    std::vector<std::string> notes;
+    for (std::size_t b = 0; b < batches.size(); ++b) {
+        if (!byBatch[b].empty()) {
+            notes.push_back(notes::outsideReference(batches[b].id, byBatch[b], levelNotJudged));
+        }
     }
     return notes;
 }
@@ -659,10 +665,13 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
                         others.push_back(reference[q]);
                     }
                 }
+                std::vector<notes::InputOutsideRange> beyond;
                 for (const auto& o : outsideReference(others, {reference[p]})) {
+                    beyond.push_back({o.input->name, o.input->unit, o.typical, o.low, o.high});
+                }
+                if (!beyond.empty()) {
                     structure.extrapolatedBatches.insert(reference[p].id);
-                    spreadNotes.push_back(notes::referenceBatchBeyondOthers(
-                        reference[p].id, o.input->name, o.typical, o.input->unit, o.low, o.high));
+                    spreadNotes.push_back(notes::referenceBatchBeyondOthers(reference[p].id, beyond));
                 }
             }
             // Fewer than three batches would be left: the spread is taken over every batch

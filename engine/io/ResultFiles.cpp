@@ -427,37 +427,42 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
     j["findings"] = json::array();
     for (const auto& f : r.findings) {
         const auto& g = f.gain;
-        j["findings"].push_back({{"cause", f.cause},
-                                 {"parameter",
-                                  {{"name", std::string(properties::info(f.parameter).symbol)},
-                                   {"value", num(f.value)},
-                                   {"unit", std::string(properties::info(f.parameter).unit)},
-                                   {"ci95", {num(f.ci95Low), num(f.ci95High)}},
-                                   // The fit when it was named, which its evidence, gain and parts
-                                   // describe; "value" is at the final model (every cause jointly).
-                                   {"when_named",
-                                    {{"value", num(f.restated ? f.valueWhenNamed : f.value)},
-                                     {"ci95",
-                                      {num(f.restated ? f.ci95LowWhenNamed : f.ci95Low),
-                                       num(f.restated ? f.ci95HighWhenNamed : f.ci95High)}}}}}},
-                                 {"explained_fraction", num(f.explainedFraction)},
-                                 {"explained_fraction_fast", num(f.explainedFractionFast)},
-                                 {"evidence", f.evidence},
-                                 {"gain",
-                                  {{"split", g.split},
-                                   {"mae_moisture_before", num(g.maeMoistureBefore)},
-                                   {"mae_moisture_after", num(g.maeMoistureAfter)},
-                                   {"mae_temperature_before", num(g.maeTemperatureBefore)},
-                                   {"mae_temperature_after", num(g.maeTemperatureAfter)},
-                                   {"r2_moisture_before", num(g.r2MoistureBefore)},
-                                   {"r2_moisture_after", num(g.r2MoistureAfter)},
-                                   {"r2_temperature_before", num(g.r2TemperatureBefore)},
-                                   {"r2_temperature_after", num(g.r2TemperatureAfter)},
-                                   {"ljung_box_p_moisture_before", num(g.ljungBoxPMoistureBefore)},
-                                   {"ljung_box_p_moisture_after", num(g.ljungBoxPMoistureAfter)},
-                                   {"low_frequency_share_before", num(g.lowFrequencyShareBefore)},
-                                   {"low_frequency_share_after", num(g.lowFrequencyShareAfter)},
-                                   {"p_value", num(g.pValue)}}}});
+        j["findings"].push_back(
+            {{"cause", f.cause},
+             {"parameter",
+              {{"name", std::string(properties::info(f.parameter).symbol)},
+               {"value", num(f.value)},
+               {"unit", std::string(properties::info(f.parameter).unit)},
+               {"ci95", {num(f.ci95Low), num(f.ci95High)}},
+               // The fit when it was named, which its evidence, gain and parts
+               // describe; "value" is at the final model (every cause jointly).
+               {"when_named",
+                {{"value", num(f.restated ? f.valueWhenNamed : f.value)},
+                 {"ci95",
+                  {num(f.restated ? f.ci95LowWhenNamed : f.ci95Low),
+                   num(f.restated ? f.ci95HighWhenNamed : f.ci95High)}}}}}},
+             {"explained_fraction", num(f.explainedFraction)},
+             {"explained_fraction_fast", num(f.explainedFractionFast)},
+             // A meter's lag: of the outlet moisture's error alone (null: not
+             // judged on its channel).
+             {"explained_fraction_on_its_channels",
+              f.explainedFractionOnItsChannels >= 0 ? num(f.explainedFractionOnItsChannels) : json(nullptr)},
+             {"evidence", f.evidence},
+             {"gain",
+              {{"split", g.split},
+               {"mae_moisture_before", num(g.maeMoistureBefore)},
+               {"mae_moisture_after", num(g.maeMoistureAfter)},
+               {"mae_temperature_before", num(g.maeTemperatureBefore)},
+               {"mae_temperature_after", num(g.maeTemperatureAfter)},
+               {"r2_moisture_before", num(g.r2MoistureBefore)},
+               {"r2_moisture_after", num(g.r2MoistureAfter)},
+               {"r2_temperature_before", num(g.r2TemperatureBefore)},
+               {"r2_temperature_after", num(g.r2TemperatureAfter)},
+               {"ljung_box_p_moisture_before", num(g.ljungBoxPMoistureBefore)},
+               {"ljung_box_p_moisture_after", num(g.ljungBoxPMoistureAfter)},
+               {"low_frequency_share_before", num(g.lowFrequencyShareBefore)},
+               {"low_frequency_share_after", num(g.lowFrequencyShareAfter)},
+               {"p_value", num(g.pValue)}}}});
         // Specificity: per-part estimates, transfer, onset, look-alikes (CONTRACT.md §2 discover).
         json& out = j["findings"].back();
         out["output"] = f.output;

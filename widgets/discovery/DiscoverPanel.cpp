@@ -569,35 +569,52 @@ QString DiscoverPanel::noteText(const std::string& note) {
                   "well; against this one a change since may read as none.")
             .arg(m.captured(1), m.captured(2), m.captured(3));
     }
+    // A batch's inputs outside a range seen elsewhere, one note a batch (DiscoveryNotes.cpp's
+    // inputsOutside): "T_amb_C is typically 31.6 °C, outside what the reference saw (11 to 23 °C);
+    // RH_pct is typically …". Each input worded, then joined.
+    const auto inputsOutside = [](const QString& list, bool otherReferenceBatches) {
+        static const QRegularExpression item(
+            QStringLiteral("(\\S+) is typically (\\S+) ([^,;]+), outside what the (?:other reference batches|"
+                           "reference) saw \\((\\S+) to (\\S+) [^)]*\\)"));
+        QStringList worded;
+        for (auto it = item.globalMatch(list); it.hasNext();) {
+            const auto m = it.next();
+            const QString column = columnDisplayName(m.captured(1).toStdString());
+            worded << (otherReferenceBatches
+                           ? tr("%1 is typically %2 %3, outside what the other reference batches saw (%4 to "
+                                "%5 %3)")
+                           : tr("%1 is typically %2 %3, outside what the reference saw (%4 to %5 %3)"))
+                          .arg(column, m.captured(2), m.captured(3), m.captured(4), m.captured(5));
+        }
+        return worded.join(tr("; "));
+    };
     // ReferenceDiscovery.cpp: "reference batch R03: T_amb_C is typically 30.4 °C, outside what the
-    // other reference batches saw (12.1 to 19.4 °C): ..."
+    // other reference batches saw (12.1 to 19.4 °C)[; …]: the line's structure there …"
     static const QRegularExpression beyondOthers(
-        QStringLiteral("^reference batch (.+): (\\S+) is typically (\\S+) (.+), outside what the other "
-                       "reference batches saw \\((\\S+) to (\\S+) "));
+        QStringLiteral("^reference batch (.+?): (\\S+ is typically .+): the line's structure there is the "
+                       "map's extrapolation"));
     if (const auto m = beyondOthers.match(n); m.hasMatch()) {
-        return tr("Reference batch %1: %2 is typically %3 %4, outside what the other reference batches saw "
-                  "(%5 to %6 %4): the line's structure there is the map's extrapolation, so the batch is "
-                  "left out of the causes' normal spread.")
-            .arg(m.captured(1), columnDisplayName(m.captured(2).toStdString()), m.captured(3), m.captured(4),
-                 m.captured(5), m.captured(6));
+        return tr("Reference batch %1: %2: the line's structure there is the map's extrapolation, so the "
+                  "batch "
+                  "is left out of the causes' normal spread.")
+            .arg(m.captured(1), inputsOutside(m.captured(2), true));
     }
     // ReferenceDiscovery.cpp's operatingRangeNotes: "B04: T_amb_C is typically 31.6 °C, outside what
-    // the reference saw (11 to 23 °C): ..."
+    // the reference saw (11 to 23 °C)[; …]: …"
     static const QRegularExpression outside(QStringLiteral(
-        "^(.+): (\\S+) is typically (\\S+) (.+), outside what the reference saw \\((\\S+) to (\\S+) "));
+        "^(.+?): (\\S+ is typically .+ outside what the reference saw \\([^)]*\\)): (?:the reference has|the "
+        "model's error)"));
     if (const auto m = outside.match(n); m.hasMatch()) {
         // Whether the detectors judged the batch's level
         // (DiscoveryOptions::judgeOnlyChangesBeyondReferenceConditions).
         const QString text =
             n.contains(QStringLiteral("only changes within"))
-                ? tr("%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "
-                     "reference has no normal level for these conditions, so the detectors judge "
+                ? tr("%1: %2: the reference has no normal level for these conditions, so the detectors judge "
                      "only changes within this batch, not its level.")
-                : tr("%1: %2 is typically %3 %4, outside what the reference saw (%5 to %6 %4): the "
-                     "model's error there is judged beyond the reference's conditions, and an alarm "
+                : tr("%1: %2: the model's error there is judged beyond the reference's conditions, and an "
+                     "alarm "
                      "there may be that condition rather than a change of the line.");
-        return text.arg(m.captured(1), columnDisplayName(m.captured(2).toStdString()), m.captured(3),
-                        m.captured(4), m.captured(5), m.captured(6));
+        return text.arg(m.captured(1), inputsOutside(m.captured(2), false));
     }
     if (n.startsWith(QLatin1String(discovery::notes::kOnlyCausesAsked))) {
         QStringList causes;
@@ -757,7 +774,15 @@ QString DiscoverPanel::evidenceText(const discovery::Finding& f) {
     const auto& info = properties::info(f.parameter);
     const auto& g = f.gain;
     const QString share =
-        f.fastPartCounted
+        f.onItsChannelsCounted
+            ? (f.parameter == properties::Param::tau_meter
+                   ? tr("it removes %1 % of the held-out squared error and %2 % of the outlet moisture's, "
+                        "the only measured output it acts on")
+                   : tr("it removes %1 % of the held-out squared error and %2 % of the outlet moisture's "
+                        "and temperature's, the only measured outputs it acts on"))
+                  .arg(100 * f.explainedFraction, 0, 'f', 0)
+                  .arg(100 * f.explainedFractionOnItsChannels, 0, 'f', 0)
+        : f.fastPartCounted
             ? tr("it removes %1 % of the held-out squared error and %2 % of its fast part (the error about "
                  "its moving average, where slow drift does not hide it)")
                   .arg(100 * f.explainedFraction, 0, 'f', 0)

@@ -267,6 +267,14 @@ void MpcPanel::showRun() {
     }
 }
 
+MpcPanel::~MpcPanel() {
+    // One file per process, rewritten by each run (Run is off while one is queued, so no run is
+    // left to read it): gone with the panel, not left in the temporary folder.
+    if (!m_tempScenario.isEmpty()) {
+        QFile::remove(m_tempScenario);
+    }
+}
+
 void MpcPanel::run() {
     if (const QString problem = scenarioProblem(); !problem.isEmpty()) {
         m_note->setStyleSheet(QStringLiteral("color: #a40000;"));

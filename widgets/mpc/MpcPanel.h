@@ -25,6 +25,10 @@ class MpcPanel : public QWidget {
     Q_OBJECT
 public:
     explicit MpcPanel(Workbench& workbench, QWidget* parent = nullptr);
+    /// Removes the temporary file the editor's scenario ran from.
+    ~MpcPanel() override;
+    /// @brief The temporary file the last run's scenario was written to (empty before a run).
+    QString temporaryScenarioPath() const { return m_tempScenario; }
     PlotStack* plots() const { return m_plots; }
     QTableWidget* table() const { return m_table; }
     QPlainTextEdit* editor() const { return m_editor; }

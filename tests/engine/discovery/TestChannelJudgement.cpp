@@ -238,6 +238,15 @@ private Q_SLOTS:
                      notes.front().find("outside what the reference saw (12.0") != std::string::npos,
                  notes.front().c_str());
         QVERIFY(operatingRangeNotes(reference, {batchAt("N3", 24, 300)}).empty()); // within the margin
+        // Cold and dry: one note for the batch, both inputs in it.
+        auto coldDry = batchAt("N4", 2, 300);
+        std::fill(coldDry.rhAmb.begin(), coldDry.rhAmb.end(), 0.05);
+        const auto both = operatingRangeNotes(reference, {coldDry});
+        QCOMPARE(both.size(), std::size_t(1));
+        QVERIFY2(both.front().rfind("N4: ", 0) == 0 &&
+                     both.front().find("T_amb_C is typically 2") != std::string::npos &&
+                     both.front().find("; RH_amb_pct is typically 5 %") != std::string::npos,
+                 both.front().c_str());
     }
 
     /// Against a reference, once a change is detected, a cause's share is also counted of the
@@ -343,6 +352,62 @@ private Q_SLOTS:
         pr.options.pointSpreadOnceDetected = false; // the rule before
         auto bound = judgeAgainstReference(pr, f);
         QVERIFY(bound.ok() && !bound->empty());
+    }
+
+    // A meter's lag acts on the outlet moisture alone: the share it must remove is also counted on
+    // that channel, where the tube outlet's error (which it cannot touch) does not dilute it. Here
+    // the cause removes 40 % of X_out's squared error and nothing of a tube-outlet channel three
+    // times as large: 10 % of the whole, 40 % of its own channel.
+    void aDownstreamCauseIsJudgedOnTheChannelsItActsOn() {
+        constexpr std::size_t rows = 1200;
+        std::mt19937 rng(7);
+        std::normal_distribution<double> z(0, 1);
+        HeldOut before, after;
+        for (int b = 0; b < 2; ++b) {
+            before.channels.emplace_back();
+            after.channels.emplace_back();
+            before.loss.emplace_back();
+            after.loss.emplace_back();
+            for (std::size_t i = 0; i < rows; ++i) {
+                const double t = 3.0 * static_cast<double>(i);
+                const double noise = z(rng), tube = z(rng);
+                // X_out: the lag's part (a fast wave of rms sqrt(0.4)) and noise of rms sqrt(0.6);
+                // T_hdt: three times X_out's squared error, untouched.
+                const double lagPart = std::sqrt(0.4) * std::sqrt(2.0) * std::sin(2 * M_PI * t / 90);
+                const double x0 = lagPart + std::sqrt(0.6) * noise, x1 = std::sqrt(0.6) * noise;
+                const double hdt = std::sqrt(3.0) * tube;
+                for (auto* h : {&before, &after}) {
+                    for (int c = 0; c < 4; ++c) {
+                        h->channels.back()[static_cast<std::size_t>(c)].timeS.push_back(t);
+                    }
+                    h->channels.back()[kXOut].weightedError.push_back(h == &before ? x0 : x1);
+                    h->channels.back()[kTOut].weightedError.push_back(0.0);
+                    h->channels.back()[kXHdt].weightedError.push_back(0.0);
+                    h->channels.back()[kTHdt].weightedError.push_back(hdt);
+                    h->loss.back().push_back((h == &before ? x0 * x0 : x1 * x1) + hdt * hdt);
+                }
+            }
+        }
+        drytwin::discovery::DiscoveryOptions options;
+        const auto [whole, fast] = explainedShares(before, after, options);
+        QVERIFY2(whole > 0.07 && whole < 0.13, qPrintable(QString::number(whole)));
+        QVERIFY2(fast < 0.15, qPrintable(QString::number(fast)));
+        const auto meter = outletChannelsActedOn(drytwin::properties::Param::tau_meter);
+        QVERIFY(meter.has_value());
+        QVERIFY((*meter)[kXOut] && !(*meter)[kTOut] && !(*meter)[kXHdt] && !(*meter)[kTHdt]);
+        const auto [onX, onXFast] = explainedSharesOnChannels(before, after, *meter, options);
+        QVERIFY2(onX > 0.35 && onX < 0.45, qPrintable(QString::number(onX)));
+        QVERIFY2(onXFast > 0.35, qPrintable(QString::number(onXFast)));
+        // The transport time acts on both outlet channels; a cause in the tube on every channel.
+        const auto transport = outletChannelsActedOn(drytwin::properties::Param::dtau_conv);
+        QVERIFY(transport && (*transport)[kXOut] && (*transport)[kTOut] && !(*transport)[kTHdt]);
+        QVERIFY(!outletChannelsActedOn(drytwin::properties::Param::theta_foul).has_value());
+        QCOMPARE(outletChannelsName(*meter), std::string("the outlet moisture's"));
+        // Over every channel the same function gives back the overall shares.
+        const auto [allWhole, allFast] =
+            explainedSharesOnChannels(before, after, {true, true, true, true}, options);
+        QVERIFY(std::abs(allWhole - whole) < 1e-12);
+        QVERIFY(std::abs(allFast - fast) < 1e-12);
     }
 };
 
