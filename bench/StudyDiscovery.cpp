@@ -357,6 +357,9 @@ int main(int argc, char** argv) {
         } else if (a == "--spread-all-parts") { // against a reference: every batch in the normal spread, as
                                                 // before 2026-11-29
             discoveryOptions.normalSpreadWithinReferenceConditions = false;
+        } else if (a == "--share-over-every-channel") { // a downstream cause's share over every
+                                                        // channel only, as before 2026-11-29
+            discoveryOptions.shareOnTheChannelsItActsOn = false;
         } else if (a == "--cause-test-screen-only") { // against a reference: no second look at named fits
             discoveryOptions.causeTestAtNamedFits = false;
         } else if (a == "--judge-every-batch") { // against a reference: no batch left out before the change
@@ -400,7 +403,8 @@ int main(int argc, char** argv) {
                         "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
                         "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
                         "[--evaluations N] [--oracle] [--reference] [--reference-batches N] [--no-structure] "
-                        "[--structure-extrapolates] [--spread-all-parts] [--cause-test-screen-only] "
+                        "[--structure-extrapolates] [--spread-all-parts] [--share-over-every-channel] "
+                        "[--cause-test-screen-only] "
                         "[--keep-taken-up] "
                         "[--lag-from-start] [--judge-every-batch] [--onset-in-every-batch] [--size-rule] "
                         "[--spread-bound] [--undetected-at-5-percent] [--share-of-whole] "
