@@ -1107,9 +1107,14 @@
         <translation>基于 LSTM 的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="63"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="65"/>
         <source>MPC on: %1</source>
         <translation>MPC，基于：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="113"/>
+        <source>It was saved with another model (fingerprint %1, this one %2): its MPC controllers (%3) run on this one, so the recording may differ from the saved one. Open the project or model file it was run with to replay it exactly.</source>
+        <translation>该会话是用另一个模型保存的（指纹 %1，当前模型 %2）：其 MPC 控制器（%3）现在运行在当前模型上，因此记录可能与保存的不同。要精确重放，请打开当时使用的项目或模型文件。</translation>
     </message>
     <message>
         <source>Tube wall heat loss</source>
@@ -1159,26 +1164,26 @@
 <context>
     <name>TrainingRunner</name>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="33"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="38"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="34"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="40"/>
         <source>Start</source>
         <translation>开始</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="47"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="53"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="49"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="56"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="63"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="95"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="67"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="99"/>
         <source>Start a session first.</source>
         <translation>请先开始一个会话。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="94"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="100"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="98"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="104"/>
         <source>Save session</source>
         <translation>保存会话</translation>
     </message>
@@ -1840,7 +1845,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="43"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="900"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="904"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
@@ -1861,7 +1866,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="906"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="910"/>
         <source>Score z: how strongly the model&apos;s error points at this cause, in standard deviations of chance; above about 3 is strong evidence.</source>
         <translation>得分 z：模型误差指向该原因的强度，以偶然波动的标准差计；约 3 以上为有力证据。</translation>
     </message>
@@ -2031,8 +2036,8 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="133"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="854"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1070"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="858"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1074"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -2041,7 +2046,7 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="894"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="898"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
@@ -2303,67 +2308,67 @@
         <translation>%1 通常为 %2 %3，超出其他参考批次所见范围（%4 至 %5 %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="585"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="586"/>
         <source>%1 is typically %2 %3, outside what the reference saw (%4 to %5 %3)</source>
         <translation>%1通常为 %2 %3，超出参考期见过的范围（%4 至 %5 %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="588"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="589"/>
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="595"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="597"/>
         <source>Reference batch %1: %2: the line&apos;s structure there is the map&apos;s extrapolation, so the batch is left out of the causes&apos; normal spread.</source>
         <translation>参考批次 %1：%2：该批次上产线结构的修正是映射的外推，因此该批次不计入各原因的正常离散度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="609"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="612"/>
         <source>%1: %2: the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.</source>
         <translation>%1：%2：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="611"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="614"/>
         <source>%1: %2: the model&apos;s error there is judged beyond the reference&apos;s conditions, and an alarm there may be that condition rather than a change of the line.</source>
         <translation>%1：%2：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="682"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="686"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="687"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="691"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="687"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="691"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="693"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="697"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="697"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="701"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="722"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="726"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="728"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="732"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="711"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="715"/>
         <source>%1 was named on top of it (a further %2 % of the held-out error): alone it predicts worse (%3 times the held-out error), but the change needs both forms, so the data cannot say which of them it is.</source>
         <translation>在它之上又判定了 %1（再减少留出误差的 %2 %）：单独使用时预测更差（留出误差的 %3 倍），但这一变化需要两种形式共同解释，因此数据无法判断是其中哪一个。</translation>
     </message>
@@ -2420,102 +2425,102 @@
         <translation type="vanished">参考批次 %1：%2 通常为 %3 %4，超出其他参考批次所见范围（%5 至 %6 %4）：该批次上产线结构的修正是映射的外推，因此该批次不计入各原因的正常离散度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="621"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="625"/>
         <source>Only the causes asked were tried: %1. That the others are not named says nothing about them.</source>
         <translation>只试了所问的原因：%1。其他原因未被指认，并不说明它们不存在。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="631"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="635"/>
         <source>Commissioned on the reference period (%1 batch(es), %2 rows): h_HDT %3 W/(m²·K) and k_HDT %4 m/s, held fixed on the data judged.</source>
         <translation>已在参考期上调试（%1 个批次，%2 行）：h_HDT %3 W/(m²·K)，k_HDT %4 m/s，在所判断的数据上保持不变。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="639"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="643"/>
         <source>The line&apos;s own structure (what the model always gets wrong: a ridge regression on the inputs and the model&apos;s outputs, penalty %1) was learnt on the reference and taken off the measurements; the residuals shown are what is left.</source>
         <translation>产线自身的结构（模型总是出错的部分：基于输入和模型输出的岭回归，惩罚系数 %1）已在参考期上学习，并从测量值中扣除；所示残差为剩余部分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="651"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="655"/>
         <source>%1 is measured in the data but not in every batch of the reference period: the periods are compared on the outputs both measure, without it.</source>
         <translation>%1 在数据中有测量，但参考期并非每个批次都有：两个时期只在双方都测量的输出上比较，不含它。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="654"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="658"/>
         <source>%1 is measured in the reference period but not in every batch of the data: the periods are compared on the outputs both measure, without it.</source>
         <translation>%1 在参考期中有测量，但数据并非每个批次都有：两个时期只在双方都测量的输出上比较，不含它。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="661"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="665"/>
         <source>The reference period&apos;s files: %1</source>
         <translation>参考期的文件：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="689"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="693"/>
         <source>A part whose estimate left the parameter&apos;s range is held at its bound.</source>
         <translation>某一部分的估计值超出了参数范围，已按其边界处理。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="706"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="710"/>
         <source>It goes on from the start of %1.</source>
         <translation>它从 %1 的开始起持续存在。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="741"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="745"/>
         <source>%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts %4 better; which output a cause favours is the model&apos;s structure, so the data cannot tell them apart.</source>
         <translation>%1 同样拟合：总体上它留下 %2 倍的留出误差（p = %3），但它对%4的预测更好；原因偏向哪个输出取决于模型自身的结构，因此数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="747"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="751"/>
         <source>the outlet moisture</source>
         <translation>出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="748"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="752"/>
         <source>the outlet temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="749"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="753"/>
         <source>the tube-outlet moisture</source>
         <translation>管出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="750"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="754"/>
         <source>the tube-outlet temperature</source>
         <translation>管出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="754"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="758"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="755"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="759"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="762"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="766"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="775"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="779"/>
         <source>it removes %1 % of the held-out squared error and %2 % of the outlet moisture&apos;s, the only measured output it acts on</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及出口水分误差的 %2 %（出口水分是它唯一作用的测量输出）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="777"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="781"/>
         <source>it removes %1 % of the held-out squared error and %2 % of the outlet moisture&apos;s and temperature&apos;s, the only measured outputs it acts on</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及出口水分和温度误差的 %2 %（二者是它唯一作用的测量输出）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="782"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="786"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="786"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="790"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -2524,32 +2529,32 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="803"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="807"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="803"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="807"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="832"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="836"/>
         <source> %1 moved against this cause&apos;s effect (%2 times what its model form says), by less than that output&apos;s noise can tell from none: it counts neither for the cause nor against it.</source>
         <translation> %1 的变化与该原因的作用方向相反（为其模型形式所预测的 %2 倍），但小于该输出的噪声所能分辨的程度：既不支持也不否定该原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="849"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="853"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="850"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="854"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="868"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="872"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2566,12 +2571,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="948"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="952"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="948"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="952"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2580,23 +2585,23 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="998"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1002"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1001"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1005"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1009"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1013"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="476"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="917"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="921"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
@@ -2631,17 +2636,17 @@
         <translation>DryTwin（已命名原因的拟合值）：&lt;b&gt;已变化&lt;/b&gt;（p %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="787"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="791"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="788"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="792"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="792"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="796"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
@@ -2650,19 +2655,19 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="871"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="875"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="891"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="895"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="244"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="623"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="892"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="627"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="896"/>
         <source>, </source>
         <translation>、</translation>
     </message>
@@ -2671,86 +2676,86 @@
         <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="895"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="899"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="918"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="922"/>
         <source>Named on its fit: it lowers the held-out error (p = %1) and passes the checks that it is this cause; the screen&apos;s p only ranks the candidates for fitting.</source>
         <translation>按其拟合指认：它降低了留出部分的误差（p = %1），并通过了确认是此原因的各项检查；筛选的 p 只用于为拟合排列候选。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="933"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="937"/>
         <source>fitted, not the best</source>
         <translation>已拟合，非最佳</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="934"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="938"/>
         <source>Fitted in a round in which another cause explained more of the error; the causes named after it were fitted on the model extended by it.</source>
         <translation>在某一轮中已拟合，但另一原因解释了更多误差；其后指认的原因是在由它扩展的模型上拟合的。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="945"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="949"/>
         <source>not fitted (weaker)</source>
         <translation>未拟合（证据较弱）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1019"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1023"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1035"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1039"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1044"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1048"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1051"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1055"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1056"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1060"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1064"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1068"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1084"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1088"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="769"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1085"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1111"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="773"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1089"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1115"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="798"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="802"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out goes from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1086"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1090"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="769"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1087"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1115"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="773"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1091"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1119"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2790,17 +2795,17 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="835"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="839"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="900"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="904"/>
         <source>Change z</source>
         <translation>变化 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="903"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="907"/>
         <source>Change z: how far the cause&apos;s one-step estimate here lies from its normal value on the reference period, in units of both estimates&apos; errors and the spread between the reference&apos;s periods; above 2 it moved.</source>
         <translation>变化 z：该原因在此处的一步估计与其在参考期的正常值相差多远，以两次估计的误差及参考期各时段间的离散为单位；大于 2 即为发生了变化。</translation>
     </message>
@@ -2813,92 +2818,92 @@
         <translation>未拟合：证据弱于已拟合的候选</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="958"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="962"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="973"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="977"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="980"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="984"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="994"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="998"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1039"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1043"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1069"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1073"/>
         <source>Held-out accuracy: nothing was named, so nothing was extended (before = after):</source>
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1074"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1078"/>
         <source>Gain on the held-out part, with every named cause (each finding&apos;s own gain is in its evidence):</source>
         <translation>留出部分的改进（含所有已指认的原因；每项发现各自的改进见其证据）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1088"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1092"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1097"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1101"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1110"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1114"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1110"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1114"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1111"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1115"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1114"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1118"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1114"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1118"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1115"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1119"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1142"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1146"/>
         <source>model (nothing extended)</source>
         <translation>模型（未扩展）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1144"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1148"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1145"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1149"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -4740,12 +4745,12 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::TrainingPanel</name>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="108"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="131"/>
         <source>The line&apos;s conditions: initial levels, load changes, seed (docs/mpc.md)</source>
         <translation>产线条件：初始水平、负荷变化、随机种子（docs/mpc.md）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="109"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="132"/>
         <source>Start session</source>
         <translation>开始会话</translation>
     </message>
@@ -4758,252 +4763,252 @@ extrapolation</source>
         <translation>显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="112"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="135"/>
         <source>Instructor window…</source>
         <translation>教员窗口…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="113"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="136"/>
         <source>Opens the instructor&apos;s window: clock, snapshots, faults, the true moisture and the score. Not on the trainee&apos;s screen.</source>
         <translation>打开教员窗口：时钟、快照、故障、真实水分和得分。不显示在学员屏幕上。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="115"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="138"/>
         <source>No session</source>
         <translation>无会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="124"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="147"/>
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="131"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="154"/>
         <source> % wb</source>
         <translation> % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="133"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="156"/>
         <source>Apply</source>
         <translation>应用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="142"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="165"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="144"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="167"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="148"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="171"/>
         <source>X_out setpoint</source>
         <translation>X_out 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="149"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="172"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="153"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="176"/>
         <source>Diagnose the recording…</source>
         <translation>诊断记录…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="154"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="177"/>
         <source>Saves what the line recorded so far as a batch file and opens it, so that the Discover tab can show what the model gets wrong</source>
         <translation>将产线至今的记录保存为批次文件并打开，以便“发现”页显示模型哪里出错</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="157"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="671"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="782"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="180"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="698"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="809"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="161"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="184"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="164"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="656"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="187"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="683"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="165"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="188"/>
         <source>Stops the line&apos;s clock while you think; press again to continue</source>
         <translation>思考时暂停产线时钟；再按一次继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="166"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="189"/>
         <source>Trainee</source>
         <translation>学员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="176"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="199"/>
         <source>Causes named (session time):</source>
         <translation>已给出的原因（会话时间）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="180"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="655"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="203"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="682"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="184"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="207"/>
         <source> min</source>
         <translation> 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="185"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="208"/>
         <source>Run ahead</source>
         <translation>快进</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="186"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="209"/>
         <source>Runs the line this much further at full speed</source>
         <translation>以最快速度让产线再运行这么久</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="188"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="211"/>
         <source>label (default: the time)</source>
         <translation>标签（默认：时间）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="189"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="212"/>
         <source>Take snapshot</source>
         <translation>拍摄快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="192"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="215"/>
         <source>Restore selected</source>
         <translation>恢复所选快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="202"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="225"/>
         <source> s from now</source>
         <translation> 秒后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="203"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="226"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="204"/>
         <location filename="../widgets/training/TrainingPanel.cpp" line="227"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="250"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="204"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="229"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="227"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="252"/>
         <source>Strength</source>
         <translation>强度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="204"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="231"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="227"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="254"/>
         <source>Acts from</source>
         <translation>起作用时间</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="204"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="227"/>
         <source>Found after</source>
         <translation>发现用时</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="208"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="231"/>
         <source>Save session…</source>
         <translation>保存会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="209"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="232"/>
         <source>Open session…</source>
         <translation>打开会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="210"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="253"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="391"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="233"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="276"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="414"/>
         <source>Instructor</source>
         <translation>教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="223"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="246"/>
         <source>Clock and snapshots</source>
         <translation>时钟与快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="235"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="258"/>
         <source>Faults</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="239"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="262"/>
         <source>A session file holds the scenario, every event (faults, snapshots, answers) and the recording as a batch file; reopening replays it to the same data.</source>
         <translation>会话文件包含工况、每个事件（故障、快照、回答）以及作为批次文件的记录；重新打开时会回放得到相同的数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="247"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="270"/>
         <source>Set instructor password…</source>
         <translation>设置教员密码…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="248"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="271"/>
         <source>Asked before the instructor window opens (empty: no password)</source>
         <translation>打开教员窗口前询问（留空：不设密码）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="254"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="277"/>
         <source>New instructor password (empty: none):</source>
         <translation>新的教员密码（留空：无）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="261"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="284"/>
         <source>Session file</source>
         <translation>会话文件</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="264"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="287"/>
         <source>Start a session: the line runs live under its PI loop.</source>
         <translation>开始会话：产线在其 PI 回路下实时运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="269"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="292"/>
         <source>Two detectors commissioned on healthy runs of this line: the physics model&apos;s error, and a dynamic PCA monitor of the screens&apos; signals. Each alarms when the line leaves its normal (1 % chance of a false alarm over the session)</source>
         <translation>两个检测器在本产线的健康运行数据上调试：物理模型误差，以及画面信号的动态 PCA 监控。产线偏离正常状态时各自报警（整个会话的误报概率为 1 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="288"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="303"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="311"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="326"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="289"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
         <source>T_hot [°C]</source>
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="290"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="313"/>
         <source>Feed [kg/h]</source>
         <translation>进料 [kg/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="315"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="338"/>
         <source>fault began</source>
         <translation>故障开始</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="316"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="339"/>
         <source>trainee&apos;s answer</source>
         <translation>学员的回答</translation>
     </message>
@@ -5020,41 +5025,41 @@ extrapolation</source>
         <translation>进料 [t/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="291"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="314"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="292"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="304"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="315"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="327"/>
         <source>session time [min]</source>
         <translation>会话时间 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="294"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="311"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="317"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="334"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="296"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="313"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="319"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="336"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="297"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="307"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="320"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="330"/>
         <source>X_out measured</source>
         <translation>X_out 测量值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="300"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="323"/>
         <source>DryTwin — instructor</source>
         <translation>DryTwin — 教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="309"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="332"/>
         <source>X_out true</source>
         <translation>X_out 真实值</translation>
     </message>
@@ -5063,77 +5068,77 @@ extrapolation</source>
         <translation type="vanished">监控 T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="330"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="353"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="331"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="354"/>
         <source>T² of the model&apos;s error</source>
         <translation>模型误差的 T²</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="348"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="371"/>
         <source>alarm</source>
         <translation>报警</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="349"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="372"/>
         <source>change began</source>
         <translation>变化开始</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="357"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="380"/>
         <source>Start a session to see the line run</source>
         <translation>开始会话即可看到产线运行</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="358"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="381"/>
         <source>The monitor&apos;s T² shows once it has a minute of the model&apos;s error</source>
         <translation>监测器积累一分钟的模型误差后显示 T²</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="361"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="384"/>
         <source>Start a session to see the true outlet moisture beside the measured</source>
         <translation>开始会话即可看到真实出口含水率与测量值的对比</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="463"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="486"/>
         <source>Save the session as a folder</source>
         <translation>把会话保存为文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="466"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="489"/>
         <source>Session folder (*)</source>
         <translation>会话文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="713"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="740"/>
         <source>Line monitor unavailable: %1</source>
         <translation>产线监控不可用：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="715"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="742"/>
         <source>Line monitor: normal (as on its commissioning runs).</source>
         <translation>产线监控：正常（与调试运行一致）。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="719"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="746"/>
         <source>the model&apos;s error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="719"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="746"/>
         <source>the screens&apos; signals (PCA)</source>
         <translation>画面信号（PCA）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="722"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="749"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal; the change began at about %3. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态；变化约始于 %3。请诊断记录以确定原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="725"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="752"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态。请诊断记录以确定原因。</translation>
     </message>
@@ -5142,57 +5147,57 @@ extrapolation</source>
         <translation>X_out 真实值（教员）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="324"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="347"/>
         <source>T_hot setpoint</source>
         <translation>T_hot 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="325"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="348"/>
         <source>T_hot</source>
         <translation>T_hot</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="326"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="349"/>
         <source>feed</source>
         <translation>进料</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="327"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="350"/>
         <source>X_in</source>
         <translation>X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="328"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="351"/>
         <source>T² [-]</source>
         <translation>T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="366"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="389"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="367"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="390"/>
         <source>Stops the replay or the run ahead; the line stays where it got to</source>
         <translation>停止回放或快进；产线停留在已运行到的位置</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="369"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="392"/>
         <source>Scenario</source>
         <translation>工况</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="391"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="414"/>
         <source>Instructor password:</source>
         <translation>教员密码：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="394"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="417"/>
         <source>Wrong password: the instructor window stays closed.</source>
         <translation>密码错误：教员窗口保持关闭。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="451"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="474"/>
         <source>Select a snapshot to restore.</source>
         <translation>请选择要恢复的快照。</translation>
     </message>
@@ -5201,132 +5206,132 @@ extrapolation</source>
         <translation>将会话保存到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="472"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="495"/>
         <source>Open a training session</source>
         <translation>打开培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="472"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="495"/>
         <source>Sessions (*.json)</source>
         <translation>会话 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="481"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="504"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="491"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="514"/>
         <source>Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录以供诊断：%1。请在其上运行“发现”，然后在此给出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="494"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="517"/>
         <source>Recording opened for diagnosis: %1; the line&apos;s commissioning runs are in %2. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录用于诊断：%1；产线的调试运行数据位于 %2。对其运行“发现”，然后在此处指出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="501"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="524"/>
         <source>Session saved: %1</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="557"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="580"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="561"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="584"/>
         <source>The previous session was saved in %1.</source>
         <translation>上一个会话已保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="575"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="598"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="600"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="623"/>
         <source>%1 (stale: retrain)</source>
         <translation>%1（过期：需重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="601"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="624"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="649"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="672"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="652"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="679"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="652"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="679"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="652"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="679"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="654"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="681"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="655"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="682"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="656"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="683"/>
         <source>Continue</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="666"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="693"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="667"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="694"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="671"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="698"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="678"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="705"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="688"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="715"/>
         <source>not acting yet</source>
         <translation>尚未起作用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="688"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="715"/>
         <source>not found</source>
         <translation>未发现</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="691"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="718"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="701"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="728"/>
         <source>&lt;b&gt;Score %1 / 100&lt;/b&gt; — faults found %2 of %3, wrong answers %4, product out of the band %5 % of the time (%6 kg)</source>
         <translation>&lt;b&gt;得分 %1 / 100&lt;/b&gt; — 找到故障 %2 / %3，错误回答 %4，产品超出允许带的时间占 %5 %（%6 kg）</translation>
     </message>
@@ -5334,42 +5339,42 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::TrainingRunner</name>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="299"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="308"/>
         <source>Setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="305"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="314"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="313"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="322"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="321"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="330"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="330"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="339"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="339"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="348"/>
         <source>Snapshot</source>
         <translation>快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="345"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="354"/>
         <source>Restore</source>
         <translation>恢复</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="351"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="360"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>

@@ -8,6 +8,8 @@ import re
 import sys
 
 ZH = {
+    "It was saved with another model (fingerprint %1, this one %2): its MPC controllers (%3) run on this one, so the recording may differ from the saved one. Open the project or model file it was run with to replay it exactly.":
+        "该会话是用另一个模型保存的（指纹 %1，当前模型 %2）：其 MPC 控制器（%3）现在运行在当前模型上，因此记录可能与保存的不同。要精确重放，请打开当时使用的项目或模型文件。",
     "%1 is typically %2 %3, outside what the other reference batches saw (%4 to %5 %3)": "%1 通常为 %2 %3，超出其他参考批次所见范围（%4 至 %5 %3）",
     "%1 is typically %2 %3, outside what the reference saw (%4 to %5 %3)": "%1通常为 %2 %3，超出参考期见过的范围（%4 至 %5 %3）",
     "; ": "；",

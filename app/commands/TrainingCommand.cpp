@@ -45,6 +45,9 @@ int runTraining(const CommandOptions& o) {
                     f.offSpecPctWhileOpen, f.points);
     }
     std::printf("Score: %s\n", r.score.summary.c_str());
+    for (const auto& note : r.notes) {
+        std::printf("note: %s\n", note.c_str());
+    }
     std::printf("Wrote %s and %s\n", r.files.sessionFile.c_str(), r.files.recordingFiles.front().c_str());
     return 0;
 }

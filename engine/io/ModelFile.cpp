@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -39,6 +40,20 @@ const char* winnowerName(physics::WinnowerForm f) {
 }
 
 } // namespace
+
+std::string modelFingerprint(const HybridModel& m) {
+    // FNV-1a (64 bit) of the model file's text. Hand-written because it is a change detector, not
+    // a security measure, and the engine links no hash library (Qt's QCryptographicHash lies
+    // outside it, ARCHITECTURE.md); the text is the file's, so a model written and read back keeps
+    // its fingerprint.
+    std::uint64_t hash = 14695981039346656037ULL;
+    for (const unsigned char c : formatModelFile(m)) {
+        hash = (hash ^ c) * 1099511628211ULL;
+    }
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+    return hex;
+}
 
 std::string formatModelFile(const HybridModel& m) {
     json j = json::object();

@@ -24,6 +24,9 @@ Expected<hybrid::HybridModel> parseModelFile(const std::string& text, const std:
 Status writeModelFile(const hybrid::HybridModel& model, const std::string& path);
 /// @brief The model-file text of @p model.
 std::string formatModelFile(const hybrid::HybridModel& model);
+/// @brief Sixteen hex digits that change when anything of @p model its file holds changes (the
+/// physics parameters, the learnt models): which model a training session's MPCs ran on.
+std::string modelFingerprint(const hybrid::HybridModel& model);
 
 /// @brief The `--truth` file of `generate`: the plant's parameters and effects, which plant wrote
 /// the data and how its sensors read (CONTRACT.md §2).

@@ -4,6 +4,7 @@
 #include "control/BundledScenarios.h"
 #include "data/BatchWriter.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -69,6 +70,19 @@ json eventJson(const SessionEvent& e) {
     return j;
 }
 
+/// The controllers other than the PI loop a session switched to, in order of first use: the ones
+/// that run on the model.
+std::vector<std::string> modelControllersUsed(const std::vector<SessionEvent>& events) {
+    std::vector<std::string> used;
+    for (const auto& e : events) {
+        if (e.type == EventType::Controller && e.text != "pi" &&
+            std::find(used.begin(), used.end(), e.text) == used.end()) {
+            used.push_back(e.text);
+        }
+    }
+    return used;
+}
+
 } // namespace
 
 Expected<TrainingScript> parseTrainingScript(const std::string& text, const std::string& place) {
@@ -115,6 +129,10 @@ Expected<TrainingScript> parseTrainingScript(const std::string& text, const std:
                              std::to_string(script.scenario.lengthS) + " s)"};
         }
         script.endS = j["end_s"].get<double>();
+    }
+    if (j.contains("model") && j["model"].is_object() && j["model"].contains("fingerprint") &&
+        j["model"]["fingerprint"].is_string()) {
+        script.modelFingerprint = j["model"]["fingerprint"].get<std::string>();
     }
     if (j.contains("events")) {
         if (!j["events"].is_array()) {
@@ -327,7 +345,7 @@ Expected<TrainingSession> replay(const TrainingScript& script,
 }
 
 std::string sessionJson(const std::string& scenarioJson, const TrainingSession& session,
-                        const std::vector<std::string>& recordingFiles) {
+                        const std::vector<std::string>& recordingFiles, const std::string& modelFingerprint) {
     json j;
     j["format"] = "drytwin-training-session";
     j["version"] = 1;
@@ -369,6 +387,11 @@ std::string sessionJson(const std::string& scenarioJson, const TrainingSession& 
                   {"off_spec_kg", sc.offSpecKg},
                   {"summary", sc.summary}};
     j["recording"] = recordingFiles;
+    if (!modelFingerprint.empty()) {
+        // Which model the MPCs ran on: a replay with another one moves differently.
+        j["model"] = {{"fingerprint", modelFingerprint},
+                      {"controllers", modelControllersUsed(session.events())}};
+    }
     return j.dump(2) + "\n";
 }
 
@@ -397,7 +420,7 @@ std::string fileNameOf(const std::string& name) {
 } // namespace
 
 Expected<SavedSession> saveSession(const std::string& folder, const std::string& scenarioJson,
-                                   const TrainingSession& session) {
+                                   const TrainingSession& session, const std::string& modelFingerprint) {
     namespace fs = std::filesystem;
     std::error_code ec;
     fs::create_directories(fs::path(folder) / "recording", ec);
@@ -413,11 +436,27 @@ Expected<SavedSession> saveSession(const std::string& folder, const std::string&
     }
     saved.recordingFiles.push_back(csv);
     saved.sessionFile = (fs::path(folder) / "session.json").string();
-    if (auto st = writeFileAtomically(saved.sessionFile, sessionJson(scenarioJson, session, {relative}));
+    if (auto st = writeFileAtomically(saved.sessionFile,
+                                      sessionJson(scenarioJson, session, {relative}, modelFingerprint));
         !st) {
         return st.error();
     }
     return saved;
+}
+
+std::string modelDiffersNote(const TrainingScript& script, const std::string& modelFingerprint) {
+    const auto used = modelControllersUsed(script.events);
+    if (script.modelFingerprint.empty() || script.modelFingerprint == modelFingerprint || used.empty()) {
+        return {};
+    }
+    std::string list;
+    for (const auto& c : used) {
+        list += (list.empty() ? "" : ", ") + c;
+    }
+    return "the session was saved with another model (fingerprint " + script.modelFingerprint +
+           ", this one " + modelFingerprint + "): its MPC controllers (" + list +
+           ") run on this one, so the recording may differ from the saved one; open the project or model "
+           "file it was run with to replay it exactly";
 }
 
 } // namespace drytwin::training

@@ -191,6 +191,8 @@ struct TrainingResult {
     training::TrainingScore score;
     double endS = 0; ///< the session time the replay ran to
     std::size_t events = 0;
+    /// What the replay says beside its score (training::modelDiffersNote: saved with another model).
+    std::vector<std::string> notes;
     Ending ending;
 };
 

@@ -5,6 +5,7 @@
 #include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 #include "control/BundledScenarios.h"
+#include "control/ClosedLoop.h"
 #include "training/TrainingRunner.h"
 
 #include <QCheckBox>
@@ -27,6 +28,7 @@
 #include <QListWidget>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSpinBox>
@@ -93,6 +95,27 @@ QString clockText(double s) {
         .arg(t / 3600, 2, 10, QLatin1Char('0'))
         .arg((t / 60) % 60, 2, 10, QLatin1Char('0'))
         .arg(t % 60, 2, 10, QLatin1Char('0'));
+}
+
+/// training::modelDiffersNote in the GUI's language, the controllers by their display names.
+QString modelDiffersText(const QString& note) {
+    static const QRegularExpression form(QStringLiteral(
+        "fingerprint (\\S+), this one (\\S+)\\): its MPC controllers \\((.+)\\) run on this one"));
+    const auto m = form.match(note);
+    if (!m.hasMatch()) {
+        return note;
+    }
+    QStringList controllers;
+    for (const auto& name : m.captured(3).split(QStringLiteral(", "), Qt::SkipEmptyParts)) {
+        const auto kind = control::controllerByName(name.toStdString());
+        controllers << (kind ? controllerLabel(*kind) : name);
+    }
+    return QCoreApplication::translate(
+               "TrainingPanel", "It was saved with another model (fingerprint %1, this one %2): its MPC "
+                                "controllers (%3) run on this one, so the recording may differ from the "
+                                "saved one. Open the project or model file it was run with to replay it "
+                                "exactly.")
+        .arg(m.captured(1), m.captured(2), controllers.join(QStringLiteral(", ")));
 }
 
 } // namespace
@@ -645,8 +668,12 @@ void TrainingPanel::showFrame() {
     setLongWork(false);
     if (m_opening) {
         m_opening = false;
-        m_note->setText(
-            tr("Session reopened at %1, frozen: the instructor resumes it.").arg(clockText(f.timeS)));
+        QString text =
+            tr("Session reopened at %1, frozen: the instructor resumes it.").arg(clockText(f.timeS));
+        if (!f.openNote.isEmpty()) {
+            text += QLatin1Char(' ') + modelDiffersText(f.openNote);
+        }
+        m_note->setText(text);
         Q_EMIT sessionOpenFinished(m_openingFile, true, {});
     }
     QString state = f.finished ? tr("finished") : f.frozen ? tr("FROZEN") : tr("running %1×").arg(f.speed);

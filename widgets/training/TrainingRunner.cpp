@@ -2,6 +2,7 @@
 
 #include "common/ErrorText.h"
 #include "data/BatchWriter.h"
+#include "io/ModelFile.h"
 #include "training/TrainingScript.h"
 
 #include <QCoreApplication>
@@ -33,12 +34,13 @@ public:
             fail(QCoreApplication::translate("TrainingRunner", "Start"), scenario.error());
             return;
         }
+        const std::string fingerprint = io::modelFingerprint(*model);
         auto session = training::TrainingSession::start(*scenario, std::move(model));
         if (!session) {
             fail(QCoreApplication::translate("TrainingRunner", "Start"), session.error());
             return;
         }
-        adopt(std::move(*session), scenarioJson);
+        adopt(std::move(*session), scenarioJson, fingerprint);
     }
 
     void open(const std::string& path, std::shared_ptr<const hybrid::HybridModel> model) {
@@ -47,6 +49,7 @@ public:
             fail(QCoreApplication::translate("TrainingRunner", "Open session"), script.error());
             return;
         }
+        const std::string fingerprint = io::modelFingerprint(*model);
         auto session = training::replay(*script, std::move(model), longWork());
         m_cancel = false;
         if (!session) {
@@ -54,7 +57,8 @@ public:
             return;
         }
         session->freeze();
-        adopt(std::move(*session), script->scenarioJson);
+        m_openNote = training::modelDiffersNote(*script, fingerprint);
+        adopt(std::move(*session), script->scenarioJson, fingerprint);
     }
 
     /// Runs a command on the session and sends a frame; errors go to failed().
@@ -95,7 +99,7 @@ public:
                           QCoreApplication::translate("TrainingRunner", "Start a session first."));
             return;
         }
-        auto r = training::saveSession(folder.toStdString(), m_scenarioJson, *m_session);
+        auto r = training::saveSession(folder.toStdString(), m_scenarioJson, *m_session, m_modelFingerprint);
         if (!r) {
             fail(QCoreApplication::translate("TrainingRunner", "Save session"), r.error());
             return;
@@ -134,7 +138,8 @@ Q_SIGNALS:
     void saved(const QString& sessionFile, const QStringList& recordingFiles, const QString& referenceFolder);
 
 private:
-    void adopt(training::TrainingSession session, const std::string& scenarioJson) {
+    void adopt(training::TrainingSession session, const std::string& scenarioJson,
+               const std::string& modelFingerprint) {
         // The line's monitor, commissioned on healthy runs of the same scenario (a few seconds).
         m_monitor.reset();
         m_monitorNote.clear();
@@ -145,6 +150,7 @@ private:
         }
         m_session.emplace(std::move(session));
         m_scenarioJson = scenarioJson;
+        m_modelFingerprint = modelFingerprint;
         m_sent = 0;
         m_clock.start();
         m_owed = 0;
@@ -193,6 +199,7 @@ private:
             f.setpointPct = s.setpointPct();
             f.controller = s.controller();
             f.controllerNote = QString::fromStdString(s.controllerNote());
+            f.openNote = QString::fromStdString(std::exchange(m_openNote, {}));
             f.scenarioName = QString::fromStdString(s.scenario().name);
             const auto& trace = s.trace();
             // A restore shortens the trace (and a later run may lengthen it past the count
@@ -229,6 +236,8 @@ private:
     std::optional<training::LineMonitor> m_monitor;
     QString m_monitorNote;
     std::string m_scenarioJson;
+    std::string m_modelFingerprint; ///< of the model the session's MPCs run on (io::modelFingerprint)
+    std::string m_openNote;         ///< the reopened session's model differs: said once, in the next frame
     QTimer* m_tick = nullptr;
     QElapsedTimer m_clock;
     double m_speed = 10;

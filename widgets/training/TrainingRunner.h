@@ -28,6 +28,9 @@ struct TrainingFrame {
     double setpointPct = 13;
     control::ControllerKind controller = control::ControllerKind::Pi;
     QString controllerNote;
+    /// The first frame of a reopened session: why its replay may differ from the saved recording
+    /// (training::modelDiffersNote, engine English), else empty.
+    QString openNote;
     QString scenarioName;
     bool replaceTrace = false;
     std::vector<training::LiveSample> samples;

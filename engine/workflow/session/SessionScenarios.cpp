@@ -5,6 +5,7 @@
 #include "workflow/Session.h"
 
 #include "control/BundledScenarios.h"
+#include "io/ModelFile.h"
 #include "workflow/session/SessionInternal.h"
 
 #include <memory>
@@ -55,7 +56,8 @@ Expected<TrainingResult> Session::training(const TrainingOptions& options, const
     if (!session) {
         return session.error();
     }
-    auto saved = training::saveSession(options.outFolder, script->scenarioJson, *session);
+    const std::string fingerprint = io::modelFingerprint(m_model);
+    auto saved = training::saveSession(options.outFolder, script->scenarioJson, *session, fingerprint);
     if (!saved) {
         return saved.error();
     }
@@ -64,6 +66,9 @@ Expected<TrainingResult> Session::training(const TrainingOptions& options, const
     result.score = session->score();
     result.endS = session->timeS();
     result.events = session->events().size();
+    if (auto note = training::modelDiffersNote(*script, fingerprint); !note.empty()) {
+        result.notes.push_back(std::move(note));
+    }
     result.ending = {Termination::Completed, result.score.summary, secondsSince(t0)};
     return result;
 }

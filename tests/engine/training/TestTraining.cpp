@@ -2,6 +2,7 @@
 // their onset in the plant's own form and stay out of the operator's view, the score by its rule,
 // and scripted sessions that replay to the same recording for the same seed.
 #include "data/BatchWriter.h"
+#include "io/ModelFile.h"
 #include "training/LineMonitor.h"
 #include "training/TrainingScript.h"
 #include "training/TrainingSession.h"
@@ -256,6 +257,49 @@ private Q_SLOTS:
         auto d = training::replay(other, model);
         QVERIFY(d.ok());
         QVERIFY(csv(*d) != csv(*a));
+    }
+
+    // A saved session says which model its MPCs ran on; reopened with another one, the replay
+    // says that its recording may differ, and with the same one (or a PI-only session) nothing.
+    void aSessionRemembersTheModelItsMpcsRanOn() {
+        hybrid::HybridModel model;
+        const std::string scenarioJson = R"({"name": "short", "seed": 5, "length_s": 600, "warmup_s": 300})";
+        auto scenario = control::parseScenario(scenarioJson, "scenario");
+        QVERIFY(scenario.ok());
+        auto s = training::TrainingSession::start(*scenario, std::make_shared<hybrid::HybridModel>(model));
+        QVERIFY(s.ok());
+        QVERIFY(s->setController(control::ControllerKind::Pbm).ok());
+        s->advance(30);
+        const std::string fingerprint = io::modelFingerprint(model);
+        QCOMPARE(fingerprint.size(), std::size_t(16));
+        // The file's text is what is fingerprinted: written and read back, the model keeps it.
+        auto reread = io::parseModelFile(io::formatModelFile(model), "model.json");
+        QVERIFY(reread.ok());
+        QCOMPARE(io::modelFingerprint(*reread), fingerprint);
+        hybrid::HybridModel other = model;
+        other.parameters[properties::Param::h_HDT] *= 1.1;
+        const std::string otherFingerprint = io::modelFingerprint(other);
+        QVERIFY(otherFingerprint != fingerprint);
+
+        const std::string saved = training::sessionJson(scenarioJson, *s, {}, fingerprint);
+        QVERIFY2(saved.find("\"controllers\": [\n      \"pbm\"") != std::string::npos, saved.c_str());
+        auto script = training::parseTrainingScript(saved, "saved.json");
+        QVERIFY2(script.ok(), script ? "" : script.error().message().c_str());
+        QCOMPARE(script->modelFingerprint, fingerprint);
+        QVERIFY(training::modelDiffersNote(*script, fingerprint).empty());
+        const std::string note = training::modelDiffersNote(*script, otherFingerprint);
+        QVERIFY2(note.find(fingerprint) != std::string::npos &&
+                     note.find(otherFingerprint) != std::string::npos &&
+                     note.find("(pbm)") != std::string::npos,
+                 note.c_str());
+        // Under the PI loop alone the model plays no part.
+        auto piOnly = *script;
+        piOnly.events.clear();
+        QVERIFY(training::modelDiffersNote(piOnly, otherFingerprint).empty());
+        // An older session file without the key: nothing to compare.
+        auto older = *script;
+        older.modelFingerprint.clear();
+        QVERIFY(training::modelDiffersNote(older, otherFingerprint).empty());
     }
 
     void badScriptsNameThePlace() {
