@@ -1176,14 +1176,14 @@
         <translation>打开会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="67"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="99"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="68"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="100"/>
         <source>Start a session first.</source>
         <translation>请先开始一个会话。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="98"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="104"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="99"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="105"/>
         <source>Save session</source>
         <translation>保存会话</translation>
     </message>
@@ -1845,7 +1845,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="43"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="904"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="906"/>
         <source>Score z</source>
         <translation>得分 z</translation>
     </message>
@@ -1866,7 +1866,7 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="910"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="912"/>
         <source>Score z: how strongly the model&apos;s error points at this cause, in standard deviations of chance; above about 3 is strong evidence.</source>
         <translation>得分 z：模型误差指向该原因的强度，以偶然波动的标准差计；约 3 以上为有力证据。</translation>
     </message>
@@ -2036,8 +2036,8 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="133"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="858"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1074"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="860"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1076"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -2046,7 +2046,7 @@
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="898"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="900"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
@@ -2505,22 +2505,20 @@
         <translation>区分方法：%1。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="779"/>
         <source>it removes %1 % of the held-out squared error and %2 % of the outlet moisture&apos;s, the only measured output it acts on</source>
-        <translation>它消除了留出数据平方误差的 %1 %，以及出口水分误差的 %2 %（出口水分是它唯一作用的测量输出）</translation>
+        <translation type="vanished">它消除了留出数据平方误差的 %1 %，以及出口水分误差的 %2 %（出口水分是它唯一作用的测量输出）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="781"/>
         <source>it removes %1 % of the held-out squared error and %2 % of the outlet moisture&apos;s and temperature&apos;s, the only measured outputs it acts on</source>
-        <translation>它消除了留出数据平方误差的 %1 %，以及出口水分和温度误差的 %2 %（二者是它唯一作用的测量输出）</translation>
+        <translation type="vanished">它消除了留出数据平方误差的 %1 %，以及出口水分和温度误差的 %2 %（二者是它唯一作用的测量输出）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="786"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="788"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="790"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="792"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -2529,32 +2527,32 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="807"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="809"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="807"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="809"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="836"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="838"/>
         <source> %1 moved against this cause&apos;s effect (%2 times what its model form says), by less than that output&apos;s noise can tell from none: it counts neither for the cause nor against it.</source>
         <translation> %1 的变化与该原因的作用方向相反（为其模型形式所预测的 %2 倍），但小于该输出的噪声所能分辨的程度：既不支持也不否定该原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="853"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="855"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="854"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="856"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="872"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="874"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2571,12 +2569,12 @@
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="952"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="954"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="952"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="954"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2585,23 +2583,23 @@
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1002"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1004"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1005"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1007"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1013"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1015"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="476"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="921"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="923"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
@@ -2636,17 +2634,27 @@
         <translation>DryTwin（已命名原因的拟合值）：&lt;b&gt;已变化&lt;/b&gt;（p %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="791"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="779"/>
+        <source>it removes %1 % of the held-out squared error, and of the outlet moisture&apos;s, the only measured output it acts on, %2 % (%3 % of its fast part)</source>
+        <translation>它消除了留出数据平方误差的 %1 %；在出口水分（它唯一作用的测量输出）上消除 %2 %（快速部分的 %3 %）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="782"/>
+        <source>it removes %1 % of the held-out squared error, and of the outlet moisture&apos;s and temperature&apos;s, the only measured outputs it acts on, %2 % (%3 % of its fast part)</source>
+        <translation>它消除了留出数据平方误差的 %1 %；在出口水分和温度（它唯一作用的测量输出）上消除 %2 %（快速部分的 %3 %）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="793"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="792"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="794"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="796"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="798"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
@@ -2655,19 +2663,19 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="875"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="877"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="895"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="897"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="244"/>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="627"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="896"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="898"/>
         <source>, </source>
         <translation>、</translation>
     </message>
@@ -2676,86 +2684,86 @@
         <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="899"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="901"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="922"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="924"/>
         <source>Named on its fit: it lowers the held-out error (p = %1) and passes the checks that it is this cause; the screen&apos;s p only ranks the candidates for fitting.</source>
         <translation>按其拟合指认：它降低了留出部分的误差（p = %1），并通过了确认是此原因的各项检查；筛选的 p 只用于为拟合排列候选。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="937"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="939"/>
         <source>fitted, not the best</source>
         <translation>已拟合，非最佳</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="938"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="940"/>
         <source>Fitted in a round in which another cause explained more of the error; the causes named after it were fitted on the model extended by it.</source>
         <translation>在某一轮中已拟合，但另一原因解释了更多误差；其后指认的原因是在由它扩展的模型上拟合的。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="949"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="951"/>
         <source>not fitted (weaker)</source>
         <translation>未拟合（证据较弱）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1023"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1025"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1039"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1041"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1048"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1050"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1055"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1057"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1060"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1062"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1068"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1070"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1088"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1090"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="773"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1089"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1115"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1091"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1117"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="802"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="804"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out goes from %11 to %12 % wb and of T_out from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1090"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1092"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="773"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1091"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1119"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1093"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1121"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -2795,17 +2803,17 @@
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="839"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="841"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="904"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="906"/>
         <source>Change z</source>
         <translation>变化 z</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="907"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="909"/>
         <source>Change z: how far the cause&apos;s one-step estimate here lies from its normal value on the reference period, in units of both estimates&apos; errors and the spread between the reference&apos;s periods; above 2 it moved.</source>
         <translation>变化 z：该原因在此处的一步估计与其在参考期的正常值相差多远，以两次估计的误差及参考期各时段间的离散为单位；大于 2 即为发生了变化。</translation>
     </message>
@@ -2818,92 +2826,92 @@
         <translation>未拟合：证据弱于已拟合的候选</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="962"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="964"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="977"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="979"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="984"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="986"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="998"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1000"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1043"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1045"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1073"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1075"/>
         <source>Held-out accuracy: nothing was named, so nothing was extended (before = after):</source>
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1078"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1080"/>
         <source>Gain on the held-out part, with every named cause (each finding&apos;s own gain is in its evidence):</source>
         <translation>留出部分的改进（含所有已指认的原因；每项发现各自的改进见其证据）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1092"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1094"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1101"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1103"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1114"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1116"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1114"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1116"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1115"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1117"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1118"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1120"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1118"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1120"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1119"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1121"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1146"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1148"/>
         <source>model (nothing extended)</source>
         <translation>模型（未扩展）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1148"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1150"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1149"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1151"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -3982,72 +3990,72 @@ The results below are from the last complete run.</source>
         <translation>未运行：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="291"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="297"/>
         <source>Cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="309"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="315"/>
         <source>Choose at least one controller.</source>
         <translation>请至少选择一个控制器。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="313"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="319"/>
         <source>Running…</source>
         <translation>正在运行…</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="325"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="331"/>
         <source>Contract key: %1</source>
         <translation>接口代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="327"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="333"/>
         <source>%1 (stale)</source>
         <translation>%1（过期）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="328"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="334"/>
         <source>Learnt before %1: retrain it to run it.</source>
         <translation>学习于以下变化之前：%1；需重新训练才能运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="330"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="336"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="331"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="337"/>
         <source>Learn the correction models on the Residual model tab to run it.</source>
         <translation>在残差模型页学习修正模型后才能运行它。</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="353"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="359"/>
         <source>predicted at %1 s</source>
         <translation>在 %1 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="363"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="369"/>
         <source>skipped</source>
         <translation>已跳过</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="364"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="370"/>
         <source>the model holds no such prediction model</source>
         <translation>模型中没有这种预测模型</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="377"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="383"/>
         <source>Decisions that kept the previous plan (the model saw no effect of the hot air, or the solve failed); the last reason: %1</source>
         <translation>沿用上一计划的决策次数（模型看不到热风的作用，或求解失败）；最近一次的原因：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="391"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="397"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="400"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="406"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
@@ -4056,7 +4064,7 @@ The results below are from the last complete run.</source>
         <translation>%1 在 %2 s 时的预测</translation>
     </message>
     <message>
-        <location filename="../widgets/mpc/MpcPanel.cpp" line="441"/>
+        <location filename="../widgets/mpc/MpcPanel.cpp" line="447"/>
         <source>%1. IAE and violations on the product&apos;s true outlet moisture; the plant&apos;s own gain is %2 % wb/K.</source>
         <translation>%1。IAE 与越限按产品真实出口含水率计；装置自身增益为 %2 % 湿基/K。</translation>
     </message>
@@ -5339,42 +5347,42 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::TrainingRunner</name>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="308"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="311"/>
         <source>Setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="314"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="317"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="322"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="325"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="330"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="333"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="339"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="342"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="348"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="351"/>
         <source>Snapshot</source>
         <translation>快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="354"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="357"/>
         <source>Restore</source>
         <translation>恢复</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="360"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="363"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>

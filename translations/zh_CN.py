@@ -19,10 +19,10 @@ ZH = {
         "%1：%2：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。",
     "%1: %2: the model's error there is judged beyond the reference's conditions, and an alarm there may be that condition rather than a change of the line.":
         "%1：%2：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。",
-    "it removes %1 % of the held-out squared error and %2 % of the outlet moisture's, the only measured output it acts on":
-        "它消除了留出数据平方误差的 %1 %，以及出口水分误差的 %2 %（出口水分是它唯一作用的测量输出）",
-    "it removes %1 % of the held-out squared error and %2 % of the outlet moisture's and temperature's, the only measured outputs it acts on":
-        "它消除了留出数据平方误差的 %1 %，以及出口水分和温度误差的 %2 %（二者是它唯一作用的测量输出）",
+    "it removes %1 % of the held-out squared error, and of the outlet moisture's, the only measured output it acts on, %2 % (%3 % of its fast part)":
+        "它消除了留出数据平方误差的 %1 %；在出口水分（它唯一作用的测量输出）上消除 %2 %（快速部分的 %3 %）",
+    "it removes %1 % of the held-out squared error, and of the outlet moisture's and temperature's, the only measured outputs it acts on, %2 % (%3 % of its fast part)":
+        "它消除了留出数据平方误差的 %1 %；在出口水分和温度（它唯一作用的测量输出）上消除 %2 %（快速部分的 %3 %）",
     "fault began": "故障开始",
     "trainee's answer": "学员的回答",
     "%1: its model's gain has the other sign than the plant's, so it steers the hot air the wrong way.": "%1：其模型的增益与装置的符号相反，因此它把热风往错误的方向调。",

@@ -111,7 +111,9 @@ Expected<Confirmation> confirmCandidate(const ConfirmationInput& in) {
     f.explainedFractionFast = explainedFast;
     f.fastPartCounted = explained < options.minExplainedFraction;
     if (judgedOnItsChannels) {
-        f.explainedFractionOnItsChannels = std::max(onChannels, onChannelsFast);
+        f.judgedOnItsChannels = true;
+        f.explainedFractionOnItsChannels = onChannels;
+        f.explainedFractionOnItsChannelsFast = onChannelsFast;
         f.onItsChannelsCounted =
             std::max({explained, explainedFast, ofChange}) < options.minExplainedFraction;
     }

@@ -326,10 +326,11 @@ struct Finding {
     double explainedFraction = 0;     ///< share of the held-out weighted squared error it removes
     double explainedFractionFast = 0; ///< share of its fast part (DiscoveryOptions::fastBandWindowS)
     bool fastPartCounted = false;     ///< the whole share fell short; the fast part's made it count
-    /// A meter's lag or a transport time (DiscoveryOptions::shareOnTheChannelsItActsOn): the larger
-    /// of the shares of the held-out squared error on the outlet channels it acts on, whole or fast
-    /// part, it removes; -1: not judged on its channels.
-    double explainedFractionOnItsChannels = -1;
+    /// A meter's lag or a transport time (DiscoveryOptions::shareOnTheChannelsItActsOn): the shares
+    /// of the held-out squared error on the outlet channels it acts on, whole and fast part, it
+    /// removes (either may be negative: the refit moves the other parameters too).
+    bool judgedOnItsChannels = false;
+    double explainedFractionOnItsChannels = 0, explainedFractionOnItsChannelsFast = 0;
     bool onItsChannelsCounted = false; ///< neither share over every channel made it count; its channels' did
     /// The output it helps most ("X_out" or "T_out") and that output's residual before it: the
     /// numbers of the evidence sentence, for a GUI that words it in its own language.

@@ -101,11 +101,13 @@ std::string findingEvidence(const Finding& f, const DiscoveryOptions& options) {
     // The fast part is quoted when it is what made the cause count.
     const std::string share =
         f.onItsChannelsCounted
-            ? format("it removes %.0f %% of the held-out squared error and %.0f %% of %s",
-                     100 * f.explainedFraction, 100 * f.explainedFractionOnItsChannels,
+            ? format("it removes %.0f %% of the held-out squared error, and of %s %.0f %% (%.0f %% of its "
+                     "fast part)",
+                     100 * f.explainedFraction,
                      f.parameter == properties::Param::tau_meter
-                         ? "the outlet moisture's, the only measured output it acts on"
-                         : "the outlet moisture's and temperature's, the only measured outputs it acts on")
+                         ? "the outlet moisture's, the only measured output it acts on,"
+                         : "the outlet moisture's and temperature's, the only measured outputs it acts on,",
+                     100 * f.explainedFractionOnItsChannels, 100 * f.explainedFractionOnItsChannelsFast)
         : !f.fastPartCounted
             ? format("it removes %.0f %% of the held-out squared error", 100 * f.explainedFraction)
             : format("it removes %.0f %% of the held-out squared error and %.0f %% of its fast part (the "

@@ -443,10 +443,13 @@ std::string discoveryJson(const discovery::DiscoveryResult& r, bool hasHybrid, d
                    num(f.restated ? f.ci95HighWhenNamed : f.ci95High)}}}}}},
              {"explained_fraction", num(f.explainedFraction)},
              {"explained_fraction_fast", num(f.explainedFractionFast)},
-             // A meter's lag: of the outlet moisture's error alone (null: not
-             // judged on its channel).
+             // A meter's lag (X_out) or a transport time (X_out and T_out): of those
+             // channels' error alone, whole and fast part (null: not judged there).
              {"explained_fraction_on_its_channels",
-              f.explainedFractionOnItsChannels >= 0 ? num(f.explainedFractionOnItsChannels) : json(nullptr)},
+              f.judgedOnItsChannels ? num(f.explainedFractionOnItsChannels) : json(nullptr)},
+             {"explained_fraction_on_its_channels_fast",
+              f.judgedOnItsChannels ? num(f.explainedFractionOnItsChannelsFast) : json(nullptr)},
+             {"on_its_channels_counted", f.onItsChannelsCounted},
              {"evidence", f.evidence},
              {"gain",
               {{"split", g.split},

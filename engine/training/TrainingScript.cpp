@@ -1,6 +1,7 @@
 #include "training/TrainingScript.h"
 
 #include "common/AtomicFile.h"
+#include "common/TextList.h"
 #include "control/BundledScenarios.h"
 #include "data/BatchWriter.h"
 
@@ -449,10 +450,7 @@ std::string modelDiffersNote(const TrainingScript& script, const std::string& mo
     if (script.modelFingerprint.empty() || script.modelFingerprint == modelFingerprint || used.empty()) {
         return {};
     }
-    std::string list;
-    for (const auto& c : used) {
-        list += (list.empty() ? "" : ", ") + c;
-    }
+    const std::string list = commaList(used);
     return "the session was saved with another model (fingerprint " + script.modelFingerprint +
            ", this one " + modelFingerprint + "): its MPC controllers (" + list +
            ") run on this one, so the recording may differ from the saved one; open the project or model "

@@ -147,11 +147,11 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(LookAlike, cause, parameter, val
                                                 worseOutput, namedAfter, explainedAfter)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(
     Finding, cause, parameter, value, ci95Low, ci95High, explainedFraction, explainedFractionFast,
-    fastPartCounted, explainedFractionOnItsChannels, onItsChannelsCounted, output, biasBefore,
-    trendPerHourBefore, evidence, gain, perPart, consistent, transferChecked, transferReduction, hasOnset,
-    onsetS, onsetLowS, onsetHighS, actsFromStartOf, group, lookAlikes, tellApart, restated, valueWhenNamed,
-    ci95LowWhenNamed, ci95HighWhenNamed, hasReference, referenceValue, referenceCi95Low, referenceCi95High,
-    responseJudged, responseScale)
+    fastPartCounted, judgedOnItsChannels, explainedFractionOnItsChannels, explainedFractionOnItsChannelsFast,
+    onItsChannelsCounted, output, biasBefore, trendPerHourBefore, evidence, gain, perPart, consistent,
+    transferChecked, transferReduction, hasOnset, onsetS, onsetLowS, onsetHighS, actsFromStartOf, group,
+    lookAlikes, tellApart, restated, valueWhenNamed, ci95LowWhenNamed, ci95HighWhenNamed, hasReference,
+    referenceValue, referenceCi95Low, referenceCi95High, responseJudged, responseScale)
 // A result judged against a reference comes back with its detection and reference values, so that
 // a reopened project shows the headline, the monitor chart and each finding's change as they were.
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(ChangeDetection::CauseTest, changed, pValue, cause,

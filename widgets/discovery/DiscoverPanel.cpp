@@ -776,12 +776,14 @@ QString DiscoverPanel::evidenceText(const discovery::Finding& f) {
     const QString share =
         f.onItsChannelsCounted
             ? (f.parameter == properties::Param::tau_meter
-                   ? tr("it removes %1 % of the held-out squared error and %2 % of the outlet moisture's, "
-                        "the only measured output it acts on")
-                   : tr("it removes %1 % of the held-out squared error and %2 % of the outlet moisture's "
-                        "and temperature's, the only measured outputs it acts on"))
+                   ? tr("it removes %1 % of the held-out squared error, and of the outlet moisture's, the "
+                        "only "
+                        "measured output it acts on, %2 % (%3 % of its fast part)")
+                   : tr("it removes %1 % of the held-out squared error, and of the outlet moisture's and "
+                        "temperature's, the only measured outputs it acts on, %2 % (%3 % of its fast part)"))
                   .arg(100 * f.explainedFraction, 0, 'f', 0)
                   .arg(100 * f.explainedFractionOnItsChannels, 0, 'f', 0)
+                  .arg(100 * f.explainedFractionOnItsChannelsFast, 0, 'f', 0)
         : f.fastPartCounted
             ? tr("it removes %1 % of the held-out squared error and %2 % of its fast part (the error about "
                  "its moving average, where slow drift does not hide it)")

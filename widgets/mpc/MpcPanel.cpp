@@ -268,8 +268,8 @@ void MpcPanel::showRun() {
 }
 
 MpcPanel::~MpcPanel() {
-    // One file per process, rewritten by each run (Run is off while one is queued, so no run is
-    // left to read it): gone with the panel, not left in the temporary folder.
+    // The panel's own file, rewritten by each of its runs (Run is off while one is queued): gone
+    // with the panel, not left in the temporary folder.
     if (!m_tempScenario.isEmpty()) {
         QFile::remove(m_tempScenario);
     }
@@ -283,8 +283,14 @@ void MpcPanel::run() {
     }
     // The editor's text goes through the engine's own scenario parser again when the run starts.
     const QString dir = QStandardPaths::writableLocation(QStandardPaths::TempLocation);
-    m_tempScenario = QDir(dir).filePath(
-        QStringLiteral("drytwin-scenario-%1.json").arg(QCoreApplication::applicationPid()));
+    // One name a panel (each window has its own; a language switch opens a second): the
+    // destructor removes its own file, never another panel's that a queued run may still read.
+    static int panelsSoFar = 0;
+    if (m_tempScenario.isEmpty()) {
+        m_tempScenario = QDir(dir).filePath(QStringLiteral("drytwin-scenario-%1-%2.json")
+                                                .arg(QCoreApplication::applicationPid())
+                                                .arg(++panelsSoFar));
+    }
     QFile f(m_tempScenario);
     if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
         m_note->setStyleSheet(QStringLiteral("color: #a40000;"));

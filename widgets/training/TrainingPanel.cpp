@@ -666,7 +666,7 @@ void TrainingPanel::showFrame() {
         return;
     }
     setLongWork(false);
-    if (m_opening) {
+    if (m_opening && f.opened) {
         m_opening = false;
         QString text =
             tr("Session reopened at %1, frozen: the instructor resumes it.").arg(clockText(f.timeS));

@@ -58,6 +58,7 @@ public:
         }
         session->freeze();
         m_openNote = training::modelDiffersNote(*script, fingerprint);
+        m_justOpened = true;
         adopt(std::move(*session), script->scenarioJson, fingerprint);
     }
 
@@ -199,6 +200,7 @@ private:
             f.setpointPct = s.setpointPct();
             f.controller = s.controller();
             f.controllerNote = QString::fromStdString(s.controllerNote());
+            f.opened = std::exchange(m_justOpened, false);
             f.openNote = QString::fromStdString(std::exchange(m_openNote, {}));
             f.scenarioName = QString::fromStdString(s.scenario().name);
             const auto& trace = s.trace();
@@ -238,6 +240,7 @@ private:
     std::string m_scenarioJson;
     std::string m_modelFingerprint; ///< of the model the session's MPCs run on (io::modelFingerprint)
     std::string m_openNote;         ///< the reopened session's model differs: said once, in the next frame
+    bool m_justOpened = false;      ///< the next frame is the reopened session's first
     QTimer* m_tick = nullptr;
     QElapsedTimer m_clock;
     double m_speed = 10;

@@ -28,8 +28,10 @@ struct TrainingFrame {
     double setpointPct = 13;
     control::ControllerKind controller = control::ControllerKind::Pi;
     QString controllerNote;
-    /// The first frame of a reopened session: why its replay may differ from the saved recording
-    /// (training::modelDiffersNote, engine English), else empty.
+    /// The first frame of a reopened session (frames of the session before it may still be queued
+    /// when the GUI asks to open one), and why its replay may differ from the saved recording
+    /// (training::modelDiffersNote, engine English; else empty).
+    bool opened = false;
     QString openNote;
     QString scenarioName;
     bool replaceTrace = false;
