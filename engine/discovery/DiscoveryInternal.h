@@ -7,6 +7,7 @@
 // (FindingText.cpp). DiscoveryData.cpp: the options and the data split.
 
 #include "discovery/Discovery.h"
+#include "discovery/DiscoveryNotes.h"
 #include "physics/LineInputs.h"
 #include "physics/LineSimulator.h"
 
@@ -502,6 +503,8 @@ struct OutsideReference {
     std::size_t batch = 0;
     const InputColumn* input = nullptr;
     double typical = 0, low = 0, high = 0; ///< the batch's median and the reference's range, file units
+    /// As a note's item (DiscoveryNotes.h).
+    notes::InputOutsideRange asNoteItem() const { return {input->name, input->unit, typical, low, high}; }
 };
 /// @brief Every such batch and input (ReferenceDiscovery.cpp); the notes and the detectors use it.
 std::vector<OutsideReference> outsideReference(const std::vector<data::SiBatch>& reference,

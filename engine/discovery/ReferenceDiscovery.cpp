@@ -329,7 +329,7 @@ std::vector<std::string> operatingRangeNotes(const std::vector<data::SiBatch>& r
     // One note a batch, its inputs listed (a winter batch is cold and dry: one note, not two).
     std::vector<std::vector<notes::InputOutsideRange>> byBatch(batches.size());
     for (const auto& o : outsideReference(reference, batches)) {
-        byBatch[o.batch].push_back({o.input->name, o.input->unit, o.typical, o.low, o.high});
+        byBatch[o.batch].push_back(o.asNoteItem());
     }
     std::vector<std::string> notes;
     for (std::size_t b = 0; b < batches.size(); ++b) {
@@ -667,7 +667,7 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
                 }
                 std::vector<notes::InputOutsideRange> beyond;
                 for (const auto& o : outsideReference(others, {reference[p]})) {
-                    beyond.push_back({o.input->name, o.input->unit, o.typical, o.low, o.high});
+                    beyond.push_back(o.asNoteItem());
                 }
                 if (!beyond.empty()) {
                     structure.extrapolatedBatches.insert(reference[p].id);
