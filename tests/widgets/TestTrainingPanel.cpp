@@ -3,7 +3,9 @@
 // same seconds again), diagnose the recording on the Discover tab, name the cause, check the score.
 #include "MainWindow.h"
 #include "common/PlotStack.h"
+#include "common/Workbench.h"
 #include "discovery/DiscoverPanel.h"
+#include "io/ModelFile.h"
 #include "training/TrainingPanel.h"
 #include "training/TrainingRunner.h"
 #include "training/TrainingScript.h"
@@ -205,6 +207,16 @@ private Q_SLOTS:
         panel->saveSession(dir.path());
         QVERIFY(saved.wait(20000));
         QVERIFY(QFile::exists(dir.filePath(QStringLiteral("session.json"))));
+        {
+            // The model its MPCs would run on, fingerprinted at the save (not at the start).
+            QFile sessionFile(dir.filePath(QStringLiteral("session.json")));
+            QVERIFY(sessionFile.open(QIODevice::ReadOnly));
+            const QByteArray text = sessionFile.readAll();
+            QVERIFY2(text.contains("\"fingerprint\": \"") &&
+                         text.contains(
+                             QByteArray::fromStdString(io::modelFingerprint(window.workbench().model()))),
+                     text.constData());
+        }
         const double savedAt = runner.frame().timeS;
         const auto lastSaved = runner.trace().back();
         panel->openSession(dir.filePath(QStringLiteral("session.json")));

@@ -595,8 +595,7 @@ QString DiscoverPanel::noteText(const std::string& note) {
                        "map's extrapolation"));
     if (const auto m = beyondOthers.match(n); m.hasMatch()) {
         return tr("Reference batch %1: %2: the line's structure there is the map's extrapolation, so the "
-                  "batch "
-                  "is left out of the causes' normal spread.")
+                  "batch is left out of the causes' normal spread.")
             .arg(m.captured(1), inputsOutside(m.captured(2), true));
     }
     // ReferenceDiscovery.cpp's operatingRangeNotes: "B04: T_amb_C is typically 31.6 °C, outside what

@@ -34,13 +34,12 @@ public:
             fail(QCoreApplication::translate("TrainingRunner", "Start"), scenario.error());
             return;
         }
-        const std::string fingerprint = io::modelFingerprint(*model);
-        auto session = training::TrainingSession::start(*scenario, std::move(model));
+        auto session = training::TrainingSession::start(*scenario, model);
         if (!session) {
             fail(QCoreApplication::translate("TrainingRunner", "Start"), session.error());
             return;
         }
-        adopt(std::move(*session), scenarioJson, fingerprint);
+        adopt(std::move(*session), scenarioJson, std::move(model), {});
     }
 
     void open(const std::string& path, std::shared_ptr<const hybrid::HybridModel> model) {
@@ -50,7 +49,7 @@ public:
             return;
         }
         const std::string fingerprint = io::modelFingerprint(*model);
-        auto session = training::replay(*script, std::move(model), longWork());
+        auto session = training::replay(*script, model, longWork());
         m_cancel = false;
         if (!session) {
             fail(QCoreApplication::translate("TrainingRunner", "Open session"), session.error());
@@ -59,7 +58,7 @@ public:
         session->freeze();
         m_openNote = training::modelDiffersNote(*script, fingerprint);
         m_justOpened = true;
-        adopt(std::move(*session), script->scenarioJson, fingerprint);
+        adopt(std::move(*session), script->scenarioJson, std::move(model), fingerprint);
     }
 
     /// Runs a command on the session and sends a frame; errors go to failed().
@@ -100,6 +99,9 @@ public:
                           QCoreApplication::translate("TrainingRunner", "Start a session first."));
             return;
         }
+        if (m_modelFingerprint.empty()) {
+            m_modelFingerprint = io::modelFingerprint(*m_model);
+        }
         auto r = training::saveSession(folder.toStdString(), m_scenarioJson, *m_session, m_modelFingerprint);
         if (!r) {
             fail(QCoreApplication::translate("TrainingRunner", "Save session"), r.error());
@@ -139,8 +141,10 @@ Q_SIGNALS:
     void saved(const QString& sessionFile, const QStringList& recordingFiles, const QString& referenceFolder);
 
 private:
+    /// @p modelFingerprint: the model's, where already known (an open); else worked out at the
+    /// first save (the whole model file's text: not on a start that may never be saved).
     void adopt(training::TrainingSession session, const std::string& scenarioJson,
-               const std::string& modelFingerprint) {
+               std::shared_ptr<const hybrid::HybridModel> model, const std::string& modelFingerprint) {
         // The line's monitor, commissioned on healthy runs of the same scenario (a few seconds).
         m_monitor.reset();
         m_monitorNote.clear();
@@ -151,6 +155,7 @@ private:
         }
         m_session.emplace(std::move(session));
         m_scenarioJson = scenarioJson;
+        m_model = std::move(model);
         m_modelFingerprint = modelFingerprint;
         m_sent = 0;
         m_clock.start();
@@ -238,7 +243,8 @@ private:
     std::optional<training::LineMonitor> m_monitor;
     QString m_monitorNote;
     std::string m_scenarioJson;
-    std::string m_modelFingerprint; ///< of the model the session's MPCs run on (io::modelFingerprint)
+    std::shared_ptr<const hybrid::HybridModel> m_model; ///< the one the session's MPCs run on
+    std::string m_modelFingerprint; ///< its io::modelFingerprint; empty until an open or a save needs it
     std::string m_openNote;         ///< the reopened session's model differs: said once, in the next frame
     bool m_justOpened = false;      ///< the next frame is the reopened session's first
     QTimer* m_tick = nullptr;
