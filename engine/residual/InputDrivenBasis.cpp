@@ -61,7 +61,8 @@ Eigen::MatrixXd InputDrivenCorrection::inputSeries(const data::SiBatch& b,
     return z;
 }
 
-Eigen::MatrixXd InputDrivenCorrection::basisOf(const Eigen::MatrixXd& raw, double stepS) const {
+Eigen::MatrixXd InputDrivenCorrection::basisOf(const Eigen::MatrixXd& raw, double stepS,
+                                               Eigen::VectorXd* inRange) const {
     const Eigen::Index rows = raw.rows(), n = raw.cols();
     Eigen::MatrixXd z(rows, n);
     for (Eigen::Index k = 0; k < rows; ++k) {
@@ -70,6 +71,21 @@ Eigen::MatrixXd InputDrivenCorrection::basisOf(const Eigen::MatrixXd& raw, doubl
     // Transmitter spikes in the measured inputs (not the PBM's proxies, which are smooth): a
     // lag basis would carry a spike's full height for as many rows as it has lags.
     despikeTrailing(z, kMeasuredInputs, kDespikeWindow, kDespikeCutoff, kDespikeFloor);
+    if (inRange) {
+        // 1 inside the training range, falling linearly to 0 at the clip range's edge (the margin
+        // beyond it), the smallest over the inputs: how far the row is from what was seen.
+        const double margin = m_options.rangeMargin;
+        const Eigen::VectorXd span = (m_inputHigh - m_inputLow) / (1 + 2 * margin);
+        const Eigen::VectorXd low = m_inputLow + margin * span, high = m_inputHigh - margin * span;
+        inRange->setOnes(rows);
+        for (Eigen::Index k = 0; k < rows; ++k) {
+            for (Eigen::Index j = 0; j < n; ++j) {
+                const double beyond = std::max({0.0, low(j) - z(k, j), z(k, j) - high(j)});
+                const double fade = margin * span(j) > 0 ? beyond / (margin * span(j)) : (beyond > 0 ? 1.0 : 0.0);
+                (*inRange)(k) = std::min((*inRange)(k), std::max(0.0, 1.0 - fade));
+            }
+        }
+    }
     for (Eigen::Index k = 0; k < rows; ++k) {
         z.row(k) = z.row(k).cwiseMax(m_inputLow.transpose()).cwiseMin(m_inputHigh.transpose());
     }

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <limits>
 #include <optional>
+#include <cstdlib>
 
 namespace drytwin::residual {
 
@@ -55,6 +56,7 @@ double median(std::vector<double> v) {
 struct Segment {
     Eigen::Index begin = 0, end = 0;
     int fold = 0;
+    std::size_t view = 0; ///< the batch (view) the rows belong to
 };
 
 /// Ridge coefficients of one output from Gram G and right-hand side r; the constant (column 0)
@@ -83,6 +85,12 @@ Status InputDrivenOptions::validate() const {
     if (basis != InputBasis::FilterBank && !(lagStrideS > 0 && maxLagS >= 0 && maxLagS / lagStrideS <= 200)) {
         return Error{ErrorKind::Usage, "input-driven correction",
                      "lags need a positive stride and at most 200 of them"};
+    }
+    if (!(agreementZ >= 0 && agreementZ <= 10)) {
+        return Error{ErrorKind::Usage, "input-driven correction", "the agreement's z must lie in [0, 10]"};
+    }
+    if (!(supportQuantile > 0 && supportQuantile <= 1)) {
+        return Error{ErrorKind::Usage, "input-driven correction", "the support quantile must lie in (0, 1]"};
     }
     if (ridgeGrid.empty() || !(rangeMargin >= 0) || !(outlierCutoff > 1)) {
         return Error{ErrorKind::Usage, "input-driven correction",
@@ -166,6 +174,7 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
             Segment seg;
             seg.begin = static_cast<Eigen::Index>(phiRows.size());
             seg.fold = batchFolds ? static_cast<int>(i) : block;
+            seg.view = i;
             const std::size_t from = v.rows.begin + (batchFolds ? 0 : span * block / 3);
             const std::size_t to = batchFolds ? end : v.rows.begin + span * (block + 1) / 3;
             for (std::size_t k = from; k < to; ++k) {
@@ -252,12 +261,77 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
         gram += foldGram[static_cast<std::size_t>(f)];
         rhs += foldRhs[static_cast<std::size_t>(f)];
     }
+    // Per segment, the sums the batches' own levels need (within-batch fit): Σφ, Σy and the rows.
+    std::vector<Eigen::VectorXd> segmentPhi;
+    std::vector<Eigen::Vector2d> segmentY;
+    std::vector<double> segmentRows;
+    for (const auto& sg : segments) {
+        Eigen::VectorXd sumPhi = Eigen::VectorXd::Zero(features);
+        Eigen::Vector2d sumY = Eigen::Vector2d::Zero();
+        double count = 0;
+        for (Eigen::Index r = sg.begin; r < sg.end; ++r) {
+            if (inlier[static_cast<std::size_t>(r)]) {
+                sumPhi += phi.row(r).transpose();
+                sumY += y.row(r).transpose();
+                count += 1;
+            }
+        }
+        segmentPhi.push_back(std::move(sumPhi));
+        segmentY.push_back(sumY);
+        segmentRows.push_back(count);
+    }
+    // The ridge fit of output o on every fold but @p without (−1: all), at an absolute penalty.
+    // Within-batch (options.withinBatch): each batch's level is a parameter of its own (fixed
+    // effects, profiled out), so that the coefficients learn only what varies within batches, and
+    // the constant is the mean of the batches' levels: the level of a batch not seen.
+    const auto solve = [&](int without, int o, double penalty) -> Eigen::VectorXd {
+        Eigen::MatrixXd g = gram;
+        Eigen::VectorXd r = rhs.col(o);
+        if (without >= 0) {
+            g -= foldGram[static_cast<std::size_t>(without)];
+            r -= foldRhs[static_cast<std::size_t>(without)].col(o);
+        }
+        if (!options.withinBatch) {
+            return ridgeSolve(std::move(g), r, penalty);
+        }
+        std::vector<Eigen::VectorXd> viewPhi(views.size(), Eigen::VectorXd::Zero(features));
+        std::vector<double> viewY(views.size(), 0.0), viewRows(views.size(), 0.0);
+        for (std::size_t q = 0; q < segments.size(); ++q) {
+            if (segments[q].fold == without) {
+                continue;
+            }
+            viewPhi[segments[q].view] += segmentPhi[q];
+            viewY[segments[q].view] += segmentY[q](o);
+            viewRows[segments[q].view] += segmentRows[q];
+        }
+        for (std::size_t i = 0; i < views.size(); ++i) {
+            if (viewRows[i] > 0) {
+                g.noalias() -= viewPhi[i] * viewPhi[i].transpose() / viewRows[i];
+                r -= viewPhi[i] * (viewY[i] / viewRows[i]);
+            }
+        }
+        const Eigen::Index n = features - 1;
+        Eigen::MatrixXd tail = g.bottomRightCorner(n, n);
+        tail.diagonal().array() += penalty;
+        Eigen::VectorXd beta = Eigen::VectorXd::Zero(features);
+        beta.tail(n) = tail.ldlt().solve(r.tail(n));
+        double levels = 0, batches = 0;
+        for (std::size_t i = 0; i < views.size(); ++i) {
+            if (viewRows[i] > 0) {
+                levels += (viewY[i] - viewPhi[i].dot(beta)) / viewRows[i];
+                batches += 1;
+            }
+        }
+        beta(0) = batches > 0 ? levels / batches : 0.0;
+        return beta;
+    };
     // Cross-validated absolute error per penalty and output, judged on every row of the held-out
     // fold (spikes included: that is what a user's data holds).
     m.m_coefficients = Eigen::MatrixXd::Zero(features, kCorrectedOutputs);
     auto& val = m.m_validation;
     val.folds = folds;
     double pbmAbs[kCorrectedOutputs] = {0, 0};
+    double chosenPenalty[kCorrectedOutputs] = {0, 0};
     for (const auto& s : segments) {
         pbmAbs[0] += y.col(0).segment(s.begin, s.end - s.begin).cwiseAbs().sum();
         pbmAbs[1] += y.col(1).segment(s.begin, s.end - s.begin).cwiseAbs().sum();
@@ -265,14 +339,13 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
     for (int o = 0; o < kCorrectedOutputs; ++o) {
         double best = std::numeric_limits<double>::infinity();
         double bestPenalty = options.ridgeGrid.front();
-        Eigen::VectorXd bestHeldOut; // each row's forecast by the fit without its fold
+        Eigen::VectorXd bestHeldOut;           // each row's forecast by the fit without its fold
+        std::vector<Eigen::VectorXd> bestBeta; // the fits without each fold, at the best penalty
         for (double ridge : options.ridgeGrid) {
             const double penalty = ridge * double(rows);
             std::vector<Eigen::VectorXd> beta(static_cast<std::size_t>(folds));
             for (int f = 0; f < folds; ++f) {
-                beta[static_cast<std::size_t>(f)] =
-                    ridgeSolve(gram - foldGram[static_cast<std::size_t>(f)],
-                               rhs.col(o) - foldRhs[static_cast<std::size_t>(f)].col(o), penalty);
+                beta[static_cast<std::size_t>(f)] = solve(f, o, penalty);
             }
             Eigen::VectorXd heldOut(rows);
             for (const auto& s : segments) {
@@ -284,6 +357,7 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
                 best = abs;
                 bestPenalty = ridge;
                 bestHeldOut = std::move(heldOut);
+                bestBeta = beta;
             }
         }
         // How much of the correction to keep: the share κ ∈ [0, 1] (steps of 0.05) with the
@@ -300,6 +374,18 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
                 shrink = kappa;
             }
         }
+        if (std::getenv("DBG_FOLDS")) {
+            for (int f = 0; f < folds; ++f) {
+                double a0 = 0, a1 = 0, n = 0;
+                for (const auto& sg : segments) {
+                    if (sg.fold != f) continue;
+                    a0 += y.col(o).segment(sg.begin, sg.end - sg.begin).cwiseAbs().sum();
+                    a1 += (y.col(o).segment(sg.begin, sg.end - sg.begin) - shrink * bestHeldOut.segment(sg.begin, sg.end - sg.begin)).cwiseAbs().sum();
+                    n += sg.end - sg.begin;
+                }
+                std::fprintf(stderr, "basis %d out %d fold %d rows %.0f pbm %.4f corrected %.4f ratio %.3f kappa %.2f\n", (int)options.basis, o, f, n, a0 / n, a1 / n, a1 / a0, shrink);
+            }
+        }
         const bool better = shrink > 0;
         (o == 0 ? val.maeMoisturePbm : val.maeTemperaturePbm) = pbmAbs[o] / double(rows);
         (o == 0 ? val.maeMoistureCorrected : val.maeTemperatureCorrected) = best / double(rows);
@@ -307,8 +393,18 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
         if (o == 0) {
             val.ridge = bestPenalty;
         }
+        chosenPenalty[o] = bestPenalty * double(rows);
         if (better) {
-            m.m_coefficients.col(o) = shrink * ridgeSolve(gram, rhs.col(o), bestPenalty * double(rows));
+            m.m_coefficients.col(o) = shrink * solve(-1, o, bestPenalty * double(rows));
+            if (options.agreementAcrossFolds && folds >= 2) {
+                if (m.m_foldCoefficients.cols() != kCorrectedOutputs * folds) {
+                    m.m_foldCoefficients = Eigen::MatrixXd::Zero(features, kCorrectedOutputs * folds);
+                }
+                for (int f = 0; f < folds; ++f) {
+                    m.m_foldCoefficients.col(kCorrectedOutputs * f + o) =
+                        shrink * bestBeta[static_cast<std::size_t>(f)];
+                }
+            }
         } else {
             val.note +=
                 std::string(val.note.empty() ? "" : " ") +
@@ -317,14 +413,97 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
                 "training data, so the physics model's free run is used as it is.";
         }
     }
+    if (options.supportGuard && m.used()) {
+        // The guard at the smaller penalty of the outputs corrected: the one whose fit leans most
+        // on directions the training rows hardly span.
+        double penalty = std::numeric_limits<double>::infinity();
+        for (int o = 0; o < kCorrectedOutputs; ++o) {
+            if (m.m_coefficients.col(o).squaredNorm() > 0) {
+                penalty = std::min(penalty, chosenPenalty[o]);
+            }
+        }
+        m.fitSupport(phi, inlier, gram, penalty);
+    }
     return m;
 }
 
+void InputDrivenCorrection::fitSupport(const Eigen::MatrixXd& phi, const std::vector<char>& inlier,
+                                       const Eigen::MatrixXd& gram, double penalty) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
+    if (eigen.info() != Eigen::Success || !(penalty > 0)) {
+        return; // no guard rather than a wrong one: the correction is still held within its range
+    }
+    m_supportRho = 1.0 / penalty;
+    std::vector<Eigen::Index> kept;
+    for (Eigen::Index i = 0; i < eigen.eigenvalues().size(); ++i) {
+        if (eigen.eigenvalues()(i) > 0.05 * penalty) {
+            kept.push_back(i);
+        }
+    }
+    m_supportDirections.resize(gram.rows(), static_cast<Eigen::Index>(kept.size()));
+    for (std::size_t c = 0; c < kept.size(); ++c) {
+        const double s = eigen.eigenvalues()(kept[c]);
+        m_supportDirections.col(static_cast<Eigen::Index>(c)) =
+            eigen.eigenvectors().col(kept[c]) * std::sqrt(std::max(0.0, m_supportRho - 1.0 / (s + penalty)));
+    }
+    // The reference leverage and the correction's range, on the training rows (every few rows
+    // for the quantile: a few thousand rows fix it well enough).
+    const auto rows = phi.rows();
+    const Eigen::Index stride = std::max<Eigen::Index>(1, rows / 4000);
+    std::vector<double> leverages;
+    Eigen::MatrixXd sample(0, phi.cols());
+    std::vector<Eigen::Index> sampled;
+    for (Eigen::Index r = 0; r < rows; r += stride) {
+        if (inlier[static_cast<std::size_t>(r)]) {
+            sampled.push_back(r);
+        }
+    }
+    sample.resize(static_cast<Eigen::Index>(sampled.size()), phi.cols());
+    for (std::size_t i = 0; i < sampled.size(); ++i) {
+        sample.row(static_cast<Eigen::Index>(i)) = phi.row(sampled[i]);
+    }
+    const Eigen::VectorXd h = leverageOf(sample);
+    leverages.assign(h.data(), h.data() + h.size());
+    auto& val = m_validation;
+    if (leverages.empty()) {
+        m_supportDirections.resize(0, 0);
+        return;
+    }
+    const auto at = static_cast<std::ptrdiff_t>(
+        std::clamp(m_options.supportQuantile, 0.0, 1.0) * double(leverages.size() - 1));
+    std::nth_element(leverages.begin(), leverages.begin() + at, leverages.end());
+    val.supportLeverage = leverages[static_cast<std::size_t>(at)];
+    // The range of the correction over every inlier training row, as correct() forms it.
+    const Eigen::MatrixXd out = phi * m_coefficients;
+    Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector2d high = -low;
+    for (Eigen::Index r = 0; r < rows; ++r) {
+        if (inlier[static_cast<std::size_t>(r)]) {
+            low = low.cwiseMin(out.row(r).transpose());
+            high = high.cwiseMax(out.row(r).transpose());
+        }
+    }
+    val.correctionLow = low;
+    val.correctionHigh = high;
+}
+
+Eigen::VectorXd InputDrivenCorrection::leverageOf(const Eigen::MatrixXd& standardisedBasis) const {
+    if (m_supportDirections.size() == 0) {
+        return Eigen::VectorXd::Zero(standardisedBasis.rows());
+    }
+    const Eigen::MatrixXd projected = standardisedBasis * m_supportDirections;
+    return (m_supportRho * standardisedBasis.rowwise().squaredNorm() - projected.rowwise().squaredNorm())
+        .cwiseMax(0.0);
+}
+
 void InputDrivenCorrection::correct(const data::SiBatch& batch, const physics::SimulationResult& pbm,
-                                    std::vector<double>& moisturePct,
-                                    std::vector<double>& temperatureC) const {
+                                    std::vector<double>& moisturePct, std::vector<double>& temperatureC,
+                                    std::vector<double>* support) const {
     moisturePct.assign(batch.rows(), kNaN);
     temperatureC.assign(batch.rows(), kNaN);
+    if (support) {
+        support->assign(batch.rows(), 1.0);
+    }
     if (m_coefficients.size() == 0) {
         return;
     }
@@ -332,9 +511,55 @@ void InputDrivenCorrection::correct(const data::SiBatch& batch, const physics::S
     if (raw.rows() == 0) {
         return;
     }
-    Eigen::MatrixXd phi = basisOf(raw, medianStep(batch));
+    Eigen::VectorXd inRange;
+    Eigen::MatrixXd phi = basisOf(raw, medianStep(batch), m_options.rangeGuard ? &inRange : nullptr);
     phi = (phi.rowwise() - m_featureMean.transpose()).array().rowwise() / m_featureScale.transpose().array();
-    const Eigen::MatrixXd out = phi * m_coefficients;
+    const Eigen::MatrixXd fitted = phi * m_coefficients;
+    Eigen::MatrixXd out = fitted;
+    if (inRange.size() == out.rows()) {
+        out.array().colwise() *= inRange.array();
+    }
+    if (m_foldCoefficients.size() > 0) {
+        // The part of the correction the fits without each fold agree on: cut by its jackknife
+        // standard error across the folds, so that a correction resting on one batch is dropped.
+        const Eigen::MatrixXd byFold = phi * m_foldCoefficients;
+        const auto folds = static_cast<double>(m_foldCoefficients.cols() / kCorrectedOutputs);
+        for (Eigen::Index k = 0; k < out.rows(); ++k) {
+            for (int o = 0; o < kCorrectedOutputs; ++o) {
+                double mean = 0, spread = 0;
+                for (Eigen::Index f = o; f < byFold.cols(); f += kCorrectedOutputs) {
+                    mean += byFold(k, f) / folds;
+                }
+                for (Eigen::Index f = o; f < byFold.cols(); f += kCorrectedOutputs) {
+                    spread += (byFold(k, f) - mean) * (byFold(k, f) - mean);
+                }
+                const double standardError = std::sqrt((folds - 1) / folds * spread);
+                const double c = out(k, o);
+                if (std::getenv("AGREE_SOFT")) {
+                    out(k, o) = std::copysign(std::max(0.0, std::abs(c) - m_options.agreementZ * standardError), c);
+                } else {
+                    const double noise = m_options.agreementZ * m_options.agreementZ * standardError * standardError;
+                    out(k, o) = c * c * c / std::max(c * c + noise, 1e-300);
+                }
+            }
+        }
+    }
+    if (m_supportDirections.size() > 0) {
+        const Eigen::VectorXd h = leverageOf(phi);
+        const auto& val = m_validation;
+        for (Eigen::Index k = 0; k < out.rows(); ++k) {
+            const double weight = h(k) > val.supportLeverage ? val.supportLeverage / h(k) : 1.0;
+            for (int o = 0; o < kCorrectedOutputs; ++o) {
+                out(k, o) = std::clamp(weight * out(k, o), std::min(0.0, val.correctionLow(o)),
+                                       std::max(0.0, val.correctionHigh(o)));
+            }
+        }
+    }
+    for (Eigen::Index k = 0; support && k < out.rows(); ++k) {
+        if (std::isfinite(out(k, 0)) && fitted(k, 0) != 0) {
+            (*support)[static_cast<std::size_t>(k)] = out(k, 0) / fitted(k, 0);
+        }
+    }
     for (Eigen::Index k = 0; k < out.rows(); ++k) {
         if (out.row(k).allFinite()) {
             moisturePct[static_cast<std::size_t>(k)] = out(k, 0);

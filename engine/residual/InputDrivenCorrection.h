@@ -67,6 +67,38 @@ struct InputDrivenOptions {
     /// Rows whose training error is beyond this many robust standard deviations (1.4826 × MAD)
     /// are dropped and the fit repeated once: transmitter spikes must not set the coefficients.
     double outlierCutoff = 6.0;
+    /// Issue #75: the correction only where the training rows support it. A row whose basis lies
+    /// outside what the training rows held (its leverage h = φᵀ(ΦᵀΦ + λI)⁻¹φ beyond the training
+    /// rows' @ref supportQuantile, h_ref) keeps the share h_ref / h of its correction, and every
+    /// correction is held within the range it took on the training rows. Clipping each input to
+    /// its range does not keep their combination inside what was seen: on an unseen 5 × 4,000 demo
+    /// set a new batch's start-up at an ambient 9 K colder than any training batch drove the
+    /// moisture correction to −4.4 % wb where the training rows' corrections never left ±0.6.
+    /// false: the correction as fitted (model files before 2026-12-08).
+    bool supportGuard = true;
+    double supportQuantile = 0.995;
+    /// Issue #75: the correction is cut by @ref agreementZ times its jackknife standard error
+    /// across the cross-validation's fits without each fold (whole batches where there are three
+    /// or more), so that where the fits without one batch or another disagree (a correction that
+    /// rests on one batch: an ambient seen only in one batch's start-up), what is left is the part
+    /// they agree on. false: no cut (model files before 2026-12-08).
+    bool agreementAcrossFolds = true;
+    double agreementZ = 1.0;
+    /// Issue #75: the correction is fitted within batches: each training batch's own level of
+    /// the PBM's error is a parameter of its own (fixed effects), so that the coefficients learn
+    /// only what repeats within batches (a start-up, a response to the feed or the hot air), and a
+    /// batch not seen gets the mean level of those seen. With a few batches, each at its own
+    /// ambient, their levels otherwise became a slope in the ambient that a new batch at another
+    /// ambient followed the wrong way (an unseen 4 × 3,000 demo set: free-run moisture 1.45 times
+    /// the PBM's error). false: one pooled fit (model files before 2026-12-08).
+    bool withinBatch = true;
+    /// Issue #75: the correction holds inside the training range of every input and fades
+    /// linearly to nothing across the margin beyond it (@ref rangeMargin of the span), the
+    /// smallest weight over the inputs: a batch at an ambient or a feed the training batches
+    /// never showed runs on the physics alone, as a process engineer would expect of a
+    /// correction learnt from other conditions. false: the correction holds out to the clip
+    /// range (model files before 2026-12-08).
+    bool rangeGuard = true;
     Status validate() const;
 };
 
@@ -81,6 +113,10 @@ struct InputDrivenValidation {
     /// With InputBasis::ChosenByValidation: each basis tried and its cross-validated error
     /// relative to the PBM's (mean over the two outputs; < 1 beats the PBM), in plain words.
     std::string basisChoice;
+    /// With the support guard: the training rows' leverage at its @ref
+    /// InputDrivenOptions::supportQuantile (h_ref), and the correction's range on them.
+    double supportLeverage = 0;
+    Eigen::Vector2d correctionLow{0, 0}, correctionHigh{0, 0}; ///< % wb, °C
 };
 
 /// @brief The basis's name as model files and reports write it ("filter_bank", …).
@@ -101,8 +137,11 @@ public:
 
     /// @brief The correction for every row of @p batch (% wb in @p moisturePct, °C in
     /// @p temperatureC), NaN where no input was ever finite yet. Missing inputs hold their last value.
+    /// @p support, when given, receives each row's moisture correction over the one fitted (1: kept
+    /// whole; less where the guards of issue #75 cut it).
     void correct(const data::SiBatch& batch, const physics::SimulationResult& pbm,
-                 std::vector<double>& moisturePct, std::vector<double>& temperatureC) const;
+                 std::vector<double>& moisturePct, std::vector<double>& temperatureC,
+                 std::vector<double>* support = nullptr) const;
     /// @brief The PBM's run with the correction added to its outlet outputs (rows the
     /// correction cannot form keep the PBM's values).
     physics::SimulationResult corrected(const data::SiBatch& batch,
@@ -136,7 +175,15 @@ private:
     Eigen::MatrixXd inputSeries(const data::SiBatch& batch, const physics::SimulationResult& pbm) const;
     /// The basis φ for every row (rows × features, the constant first) from standardised,
     /// clipped inputs.
-    Eigen::MatrixXd basisOf(const Eigen::MatrixXd& inputs, double stepS) const;
+    /// @p inRange, when given, receives each row's operating-range weight (InputDrivenOptions::rangeGuard).
+    Eigen::MatrixXd basisOf(const Eigen::MatrixXd& inputs, double stepS, Eigen::VectorXd* inRange = nullptr) const;
+    /// The support guard's leverage of standardised basis rows: h = ‖φ‖² ρ − ‖Wᵀφ‖² (see
+    /// m_supportDirections).
+    Eigen::VectorXd leverageOf(const Eigen::MatrixXd& standardisedBasis) const;
+    /// Fits the support guard on the standardised training rows @p phi (inliers marked) at ridge
+    /// penalty @p penalty (absolute): the directions, ρ and the reference leverage.
+    void fitSupport(const Eigen::MatrixXd& phi, const std::vector<char>& inlier, const Eigen::MatrixXd& gram,
+                    double penalty);
     int inputCount() const;
     Eigen::Index featureCountFor(int inputs) const;
 
@@ -144,6 +191,14 @@ private:
     Eigen::VectorXd m_inputMean, m_inputScale, m_inputLow, m_inputHigh; ///< standardised range
     Eigen::VectorXd m_featureMean, m_featureScale;                      ///< of the basis columns
     Eigen::MatrixXd m_coefficients;                                     ///< features × 2 (% wb, °C)
+    /// The support guard: with ΦᵀΦ = Σ sᵢ vᵢvᵢᵀ over the training rows and the penalty λ,
+    /// h(φ) = Σ (vᵢᵀφ)²/(sᵢ + λ) = ρ‖φ‖² − Σ (vᵢᵀφ)² (ρ − 1/(sᵢ + λ)) with ρ = 1/λ; the columns of
+    /// W are vᵢ √(ρ − 1/(sᵢ + λ)) for the directions whose sᵢ exceeds 5 % of λ (the others add at
+    /// most 5 % to their term, and only upwards). Empty: no guard.
+    Eigen::MatrixXd m_supportDirections;
+    double m_supportRho = 0;
+    /// The fits without each fold (κ applied): column 2f + o is fold f's output o. Empty: no cut.
+    Eigen::MatrixXd m_foldCoefficients;
     double m_stepS = 1.0;
     InputDrivenValidation m_validation;
 };

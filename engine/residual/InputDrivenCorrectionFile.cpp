@@ -19,6 +19,8 @@ std::string InputDrivenCorrection::toJson() const {
     j["max_lag_s"] = o.maxLagS;
     j["lag_stride_s"] = o.lagStrideS;
     j["range_margin"] = o.rangeMargin;
+    j["range_guard"] = o.rangeGuard;
+    j["within_batch"] = o.withinBatch;
     j["input_mean"] = vectorToJson(m_inputMean);
     j["input_scale"] = vectorToJson(m_inputScale);
     j["input_low"] = vectorToJson(m_inputLow);
@@ -38,6 +40,17 @@ std::string InputDrivenCorrection::toJson() const {
                        {"temperature_used", v.temperatureUsed},
                        {"note", v.note},
                        {"basis_choice", v.basisChoice}};
+    if (m_foldCoefficients.size() > 0) {
+        j["agreement"] = {{"z", o.agreementZ}, {"fold_coefficients", matrixToJson(m_foldCoefficients)}};
+    }
+    if (m_supportDirections.size() > 0) {
+        j["support"] = {{"quantile", o.supportQuantile},
+                        {"rho", m_supportRho},
+                        {"leverage", v.supportLeverage},
+                        {"correction_low", vectorToJson(v.correctionLow)},
+                        {"correction_high", vectorToJson(v.correctionHigh)},
+                        {"directions", matrixToJson(m_supportDirections)}};
+    }
     return j.dump();
 }
 
@@ -66,6 +79,8 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::strin
         o.maxLagS = j.at("max_lag_s").get<double>();
         o.lagStrideS = j.at("lag_stride_s").get<double>();
         o.rangeMargin = j.at("range_margin").get<double>();
+        o.rangeGuard = j.value("range_guard", false); // files before 2026-12-08: no fade
+        o.withinBatch = j.value("within_batch", false);
         if (auto s = o.validate(); !s) {
             return s.error();
         }
@@ -89,12 +104,39 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::strin
         val.temperatureUsed = v.at("temperature_used").get<bool>();
         val.note = v.at("note").get<std::string>();
         val.basisChoice = v.value("basis_choice", std::string()); // files before the choice have none
+        // Files before 2026-12-08 have no support guard and no cut: their correction stays as fitted.
+        o.agreementAcrossFolds = j.contains("agreement");
+        if (o.agreementAcrossFolds) {
+            o.agreementZ = j.at("agreement").at("z").get<double>();
+            m.m_foldCoefficients = matrixFromJson(j.at("agreement").at("fold_coefficients"));
+        }
+        o.supportGuard = j.contains("support");
+        if (o.supportGuard) {
+            const auto& g = j.at("support");
+            o.supportQuantile = g.at("quantile").get<double>();
+            m.m_supportRho = g.at("rho").get<double>();
+            val.supportLeverage = g.at("leverage").get<double>();
+            const Eigen::VectorXd low = vectorFromJson(g.at("correction_low"));
+            const Eigen::VectorXd high = vectorFromJson(g.at("correction_high"));
+            m.m_supportDirections = matrixFromJson(g.at("directions"));
+            if (low.size() != kCorrectedOutputs || high.size() != kCorrectedOutputs ||
+                !(m.m_supportRho > 0) || !(val.supportLeverage > 0)) {
+                return Error{ErrorKind::BadInput, "input_driven.support",
+                             "needs rho and leverage > 0 and a range of two outputs"};
+            }
+            val.correctionLow = low;
+            val.correctionHigh = high;
+        }
         const int n = m.inputCount();
         const Eigen::Index features = m.featureCountFor(n);
         if (m.m_inputMean.size() != n || m.m_inputScale.size() != n || m.m_inputLow.size() != n ||
             m.m_inputHigh.size() != n || m.m_featureMean.size() != features ||
             m.m_featureScale.size() != features || m.m_coefficients.rows() != features ||
-            m.m_coefficients.cols() != kCorrectedOutputs) {
+            m.m_coefficients.cols() != kCorrectedOutputs ||
+            (m.m_supportDirections.size() > 0 && m.m_supportDirections.rows() != features) ||
+            (m.m_foldCoefficients.size() > 0 &&
+             (m.m_foldCoefficients.rows() != features || m.m_foldCoefficients.cols() % kCorrectedOutputs != 0 ||
+              m.m_foldCoefficients.cols() < 2 * kCorrectedOutputs))) {
             return Error{ErrorKind::BadInput, "input_driven", "sizes of the stored correction do not agree"};
         }
         return m;
