@@ -23,12 +23,17 @@ std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
                                                              const std::vector<int>& horizons) const {
     if (m_inputDriven && m_inputDriven->used() && !v.baseCorrected) {
         std::vector<physics::SimulationResult> runs;
-        auto out = predictHorizons(correctedViews({v}, runs).front(), horizons);
+        auto out = predictHorizonsOn(correctedViews({v}, runs).front(), horizons, v.pbm);
         for (auto& p : out) {
             residualAgainstPbm(v, p);
         }
         return out;
     }
+    return predictHorizonsOn(v, horizons, nullptr);
+}
+
+std::vector<HybridPrediction> ResidualModel::predictHorizonsOn(const BatchView& v, const std::vector<int>& horizons,
+                                                               const physics::SimulationResult* rawPbm) const {
     const std::size_t count = v.rows.size();
     std::vector<HybridPrediction> out(horizons.size(), HybridPrediction::unknown(count));
     // The learnt part of each slot's forecasts (% wb, °C), for the realised-weight guard.
@@ -124,7 +129,7 @@ std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
     for (std::size_t slot = 0; slot < horizons.size(); ++slot) {
         if (horizons[slot] >= 1) {
             weighByRealisedSkill(v, static_cast<std::size_t>(horizons[slot]), learnedX[slot], learnedT[slot],
-                                 out[slot]);
+                                 out[slot], rawPbm);
         }
     }
     return out;

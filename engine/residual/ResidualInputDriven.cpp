@@ -105,7 +105,8 @@ void ResidualModel::residualAgainstPbm(const BatchView& v, HybridPrediction& p) 
 
 void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon,
                                          const std::vector<double>& learnedX,
-                                         const std::vector<double>& learnedT, HybridPrediction& p) const {
+                                         const std::vector<double>& learnedT, HybridPrediction& p,
+                                         const physics::SimulationResult* rawPbm) const {
     if (!velocity() || m_options.realisedWeightHalfLifeSteps <= 0) {
         return;
     }
@@ -113,12 +114,19 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
     const Eigen::Vector2d trainedBlend = referenceChangeAt(static_cast<int>(horizon));
     // Per row and output, read once for both outputs: the measured error, the error held at the
     // forecast's origin and the PBM's change since.
-    std::array<std::vector<double>, kOutputs> measuredOf, heldOf, changeOf;
+    std::array<std::vector<double>, kOutputs> measuredOf, heldOf, changeOf, correctionChangeOf;
     for (int j = 0; j < kOutputs; ++j) {
         measuredOf[j].assign(count, kNaN);
         heldOf[j].assign(count, kNaN);
         changeOf[j].assign(count, kNaN);
+        correctionChangeOf[j].assign(count, kNaN);
     }
+    const bool correctionChange = m_options.realisedCorrectionChange && rawPbm != nullptr;
+    // The input-driven correction at row k: the corrected base minus the PBM's own run.
+    const auto correctionAt = [&](std::size_t k) -> Eigen::Vector2d {
+        return {units::dryToWetPct(v.pbm->xOutDb[k]) - units::dryToWetPct(rawPbm->xOutDb[k]),
+                v.pbm->tOutK[k] - rawPbm->tOutK[k]};
+    };
     for (std::size_t i = 0; i < count; ++i) {
         const std::size_t k = v.rows.begin + i;
         Eigen::Vector2d e;
@@ -128,12 +136,20 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
         }
         if (k >= horizon && observedResidual(*v.batch, *v.pbm, k - horizon, e(0), e(1))) {
             const Eigen::Vector2d change = pbmChange(v, k - horizon, k);
+            const Eigen::Vector2d correction =
+                correctionChange ? Eigen::Vector2d(correctionAt(k) - correctionAt(k - horizon))
+                                 : Eigen::Vector2d::Constant(kNaN);
             for (int j = 0; j < kOutputs; ++j) {
                 heldOf[j][i] = e(j);
                 changeOf[j][i] = change(j);
+                correctionChangeOf[j][i] = correction(j);
             }
         }
     }
+    // The prior is worth realisedWeightPriorRows independent forecasts; forecasts H steps ahead
+    // from consecutive origins share H − 1 steps, so as many independent ones take H times the rows.
+    const double priorRows = m_options.realisedWeightPriorRows *
+                             (m_options.realisedPriorPerHorizon ? static_cast<double>(horizon) : 1.0);
     for (int j = 0; j < kOutputs; ++j) {
         auto& residual = j == 0 ? p.residualXPct : p.residualTC;
         const auto& learned = j == 0 ? learnedX : learnedT;
@@ -150,17 +166,19 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
         // Each step adds w · correction to the forecast so far, w from the forecasts already
         // realised (pulled towards w₀); rows without a finite result keep what they had.
         const auto weighOnTop = [&](std::vector<double>& forecast, const std::vector<double>& correction,
-                                    double priorWeight) {
+                                    double priorWeight, std::vector<double>* weights = nullptr) {
             std::vector<double> combined;
             applyRealisedWeights(forecast, correction, measured, horizon,
-                                 m_options.realisedWeightHalfLifeSteps, m_options.realisedWeightPriorRows,
-                                 combined, nullptr, priorWeight, m_options.realisedWeightByAbsoluteError);
+                                 m_options.realisedWeightHalfLifeSteps, priorRows, combined, weights,
+                                 priorWeight, m_options.realisedWeightByAbsoluteError);
             for (std::size_t i = 0; i < count; ++i) {
                 if (std::isfinite(combined[i]) && std::isfinite(forecast[i])) {
                     forecast[i] = combined[i];
                 }
             }
         };
+        // The weight on the PBM's change per row (1: the last measurement held).
+        std::vector<double> blendWeights(count, trainedBlend(j));
         if (m_options.realisedReferenceBlend) {
             // 1. s: the held error, less s of the PBM's change (s = 1: the last measurement held).
             std::vector<double> minusChange(count);
@@ -170,7 +188,22 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
                     reference[i] = held[i];
                 }
             }
-            weighOnTop(reference, minusChange, trainedBlend(j));
+            weighOnTop(reference, minusChange, trainedBlend(j), &blendWeights);
+        }
+        if (correctionChange) {
+            // 1b. How much of the correction's own change to take back (all of it: the PBM's own
+            // change with its last error held, the second reference, exactly).
+            std::vector<double> takeBack(count);
+            for (std::size_t i = 0; i < count; ++i) {
+                // What is left of the correction's change after the blend towards holding the
+                // last measurement (which holds no change at all).
+                const double left = 1.0 - (std::isfinite(blendWeights[i]) ? blendWeights[i] : trainedBlend(j));
+                takeBack[i] = -correctionChangeOf[j][i] * left;
+                if (!std::isfinite(takeBack[i])) {
+                    takeBack[i] = 0;
+                }
+            }
+            weighOnTop(reference, takeBack, 0.0);
         }
         // 2. The learnt correction on top.
         std::vector<double> combined = reference;

@@ -122,6 +122,19 @@ struct ResidualOptions {
     /// and where the last measured error is mostly the transmitter's noise (issue #42: on seven of
     /// ten data sets the free-run hybrid beat holding the error beyond 30–60 steps).
     bool realisedHeldErrorDecay = true;
+    /// Velocity form with the input-driven correction: how much of the correction's own change
+    /// over the horizon to take back, weighted the same way (w₀ = 0: its change kept, as
+    /// trained). Taking all of it back gives exactly the PBM with its last error held; without
+    /// this step that reference was not among the forecasts the weights could reach, and where
+    /// the correction's changes did not hold forward in time the forecast 180 s ahead was worse
+    /// than the PBM with its error held (issue #75).
+    bool realisedCorrectionChange = true;
+    /// The realised weights' prior counts independent forecasts: realisedWeightPriorRows of them,
+    /// that is H times as many rows at horizon H, whose forecasts from consecutive origins share
+    /// H − 1 steps. With the same 30 rows at every horizon, the weights 180 s ahead followed a few
+    /// independent errors and lost 5 % against the PBM with its error held on an unseen 6 × 4,000
+    /// demo set (issue #75). false: the same rows at every horizon (model files before 2026-12-08).
+    bool realisedPriorPerHorizon = true;
     /// The realised weights minimise the forecasts' discounted absolute error (the measure they
     /// are judged by, robust to a transmitter's spike) instead of their squared error.
     bool realisedWeightByAbsoluteError = true;
@@ -259,8 +272,14 @@ private:
     static void residualAgainstPbm(const BatchView& v, HybridPrediction& p);
     /// The realised-weight guard on one horizon's forecasts of a corrected view: the learnt part
     /// (@p learnedX, @p learnedT, % wb and °C, per row of the view) reweighted in place in @p p.
+    /// @p rawPbm: the PBM's own run under the corrected view (null: no correction under it).
     void weighByRealisedSkill(const BatchView& v, std::size_t horizon, const std::vector<double>& learnedX,
-                              const std::vector<double>& learnedT, HybridPrediction& p) const;
+                              const std::vector<double>& learnedT, HybridPrediction& p,
+                              const physics::SimulationResult* rawPbm) const;
+    /// predictHorizons on a view whose base already holds the input-driven correction; @p rawPbm
+    /// the PBM's own run under it (for the realised weight on the correction's change).
+    std::vector<HybridPrediction> predictHorizonsOn(const BatchView& view, const std::vector<int>& horizons,
+                                                    const physics::SimulationResult* rawPbm) const;
     bool features(const BatchView& v, std::size_t k, Eigen::VectorXd& zLin, double& u,
                   Eigen::VectorXd& d) const;
     bool eq27() const {

@@ -66,6 +66,8 @@ std::string ResidualModel::toJson() const {
                     {"realised_reference_blend", o.realisedReferenceBlend},
                     {"realised_weight_by_absolute_error", o.realisedWeightByAbsoluteError},
                     {"realised_held_error_decay", o.realisedHeldErrorDecay},
+                    {"realised_correction_change", o.realisedCorrectionChange},
+                    {"realised_prior_per_horizon", o.realisedPriorPerHorizon},
                     {"input_range_margin", o.inputRangeMargin},
                     {"correction_folds_by_batch", o.correctionFoldsByBatch}};
     j["dictionary"] = {
@@ -166,6 +168,8 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
         o.realisedReferenceBlend = jo.value("realised_reference_blend", false);
         o.realisedWeightByAbsoluteError = jo.value("realised_weight_by_absolute_error", false);
         o.realisedHeldErrorDecay = jo.value("realised_held_error_decay", false);
+        o.realisedCorrectionChange = jo.value("realised_correction_change", false);
+        o.realisedPriorPerHorizon = jo.value("realised_prior_per_horizon", false);
         o.inputRangeMargin = jo.value("input_range_margin", 0.0);
         o.correctionFoldsByBatch = jo.value("correction_folds_by_batch", false);
         if (auto st = o.validate(); !st) {
