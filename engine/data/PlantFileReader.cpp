@@ -67,6 +67,7 @@ Expected<PlantFileRuns> readHistorianRows(const std::string& text, const std::st
     std::vector<std::size_t> clockJumpBefore; // row indices where daylight saving set the clock back
     std::vector<std::string> metadata;
     ClockWatch clock(file, timeColumn, shape.timeFormat, std::max(60.0, runs.maxInterpolatedGapS));
+    DatelessDays dateless(file, timeColumn, shape.timeHeader);
     CsvLineSplitter split(shape.delimiter);
     LineCursor lines(text);
     std::string_view line;
@@ -117,21 +118,28 @@ Expected<PlantFileRuns> readHistorianRows(const std::string& text, const std::st
         RowStamp r;
         r.line = lineNo;
         TimeStamp stamp;
-        bool stampOk = false;
+        StampReading reading = StampReading::NotThisFormat;
+        std::string impossible;
         if (shape.timeFormat == TimeFormat::Seconds) {
             const NumberCell n = readNumberCell(fields[timeIndex]);
-            stampOk = n.isNumber;
-            stamp.seconds = stampOk ? relativeSeconds(n, layout.timeScale, rows, lastStep) : 0;
+            reading = n.isNumber ? StampReading::Read : StampReading::NotThisFormat;
+            stamp.seconds = n.isNumber ? relativeSeconds(n, layout.timeScale, rows, lastStep) : 0;
         } else {
-            stampOk = parseTimeStamp(fields[timeIndex], shape.timeFormat, stamp);
+            reading = readTimeStamp(fields[timeIndex], shape.timeFormat, stamp, &impossible);
         }
-        if (!stampOk) {
+        if (reading == StampReading::ImpossibleDate) {
+            return fileError(file, lineNo, timeColumn, impossibleStampReason(fields[timeIndex], impossible));
+        }
+        if (reading != StampReading::Read) {
             return fileError(file, lineNo, timeColumn,
                              "bad time stamp '" + std::string(trimmed(fields[timeIndex])) +
                                  "' (the column is " + timeFormatName(shape.timeFormat) +
                                  "; if that is wrong, name the format in the column mapping: \"time_s\": "
                                  "{\"header\": \"" +
                                  shape.timeHeader + "\", \"format\": …})");
+        }
+        if (auto placed = dateless.place(stamp, lineNo, fields[timeIndex]); !placed) {
+            return placed.error();
         }
         r.t = stamp.seconds;
         bool batchChanged = false;
@@ -164,9 +172,13 @@ Expected<PlantFileRuns> readHistorianRows(const std::string& text, const std::st
         }
         rows.push_back(r);
     }
+    for (auto& n : dateless.notes()) {
+        result.notes.push_back(std::move(n));
+    }
     for (auto& n : clock.notes()) {
         result.notes.push_back(std::move(n));
     }
+    shape.timesOfDayOnly = dateless.timesOfDayOnly();
     if (rows.empty()) {
         return fileError(file, lines.lineNumber(), 1, "the file has a header but no data rows");
     }
