@@ -1,8 +1,8 @@
 #include "data/BatchReader.h"
 
-#include "common/AtomicFile.h"
 #include "common/TextList.h"
 #include "data/PlantFileReader.h"
+#include "data/historian/LineLengthGuard.h"
 #include "data/historian/NumberFormat.h"
 #include "data/historian/TextDecoding.h"
 #include "data/historian/TimeFormatDetection.h"
@@ -462,7 +462,7 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
 }
 
 Expected<Batch> readBatchFile(const std::string& path, const ReadOptions& options) {
-    auto text = readWholeFile(path);
+    auto text = historian::readFileWithLineLimit(path);
     if (!text) {
         return text.error();
     }

@@ -4,9 +4,9 @@
 // format on the whole file and cut the rows into production runs.
 #include "data/PlantFileReader.h"
 
-#include "common/AtomicFile.h"
 #include "data/historian/ClockSteps.h"
 #include "data/historian/CsvLines.h"
+#include "data/historian/LineLengthGuard.h"
 #include "data/historian/NarrowLayout.h"
 #include "data/historian/NumberFormat.h"
 #include "data/historian/PlaceInFile.h"
@@ -387,7 +387,7 @@ Expected<PlantFileRuns> parsePlantText(const std::string& raw, const std::string
             ++lineNo;
             if (!t.empty() && t.front() != '#') {
                 const auto separators = std::count_if(
-                    t.begin(), t.end(), [](char c) { return c == ',' || c == ';' || c == '\t'; });
+                    t.begin(), t.end(), [](char c) { return c == ',' || c == ';' || c == '\t' || c == '|'; });
                 if (separators >= 2) {
                     headerFound = true;
                     headerAt = pos;
@@ -463,11 +463,17 @@ Expected<PlantFileRuns> parsePlantText(const std::string& raw, const std::string
 
 Expected<PlantFileRuns> readPlantFile(const std::string& path, const ReadOptions& options,
                                       const Progress& progress) {
-    auto text = readWholeFile(path);
+    // Read with the line limit checked as the bytes come: a file without line breaks is refused
+    // after the limit, whatever its size.
+    auto text = readFileWithLineLimit(path);
     if (!text) {
         return text.error();
     }
     return parsePlantText(*text, path, options, progress);
+}
+
+Expected<std::string> readPlantFileHead(const std::string& path, std::size_t maxBytes) {
+    return readFileWithLineLimit(path, kMaxLineBytes, maxBytes);
 }
 
 } // namespace drytwin::data
