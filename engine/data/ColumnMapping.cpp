@@ -428,7 +428,9 @@ Status readColumnEntry(const std::string& key, const nlohmann::json& value, cons
     mapping.contractToFile[key] = value["header"].get<std::string>();
     if (key == "time_s" && value.contains("format")) {
         const auto& format = value["format"];
-        if (!format.is_string() || !timeFormatByName(format.get<std::string>())) {
+        // "" leaves the format to detection, as it always has.
+        if (!format.is_string() ||
+            (!format.get<std::string>().empty() && !timeFormatByName(format.get<std::string>()))) {
             return reader.atValue(
                 here + "/format",
                 "the time format " +

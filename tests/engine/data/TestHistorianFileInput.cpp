@@ -316,6 +316,13 @@ private Q_SLOTS:
         QCOMPARE(exitCodeFor(m.error().kind), 3);
     }
 
+    // An empty format leaves the time column to detection, as it did before the checks had places.
+    void anEmptyTimeFormatIsLeftToDetection() {
+        auto m = readColumnMappingText(R"({"time_s": {"header": "Timestamp", "format": ""}})", "m.json");
+        VERIFY_OK(m);
+        QCOMPARE(m->timeFormat, std::string());
+    }
+
     // The index the places come from: values, keys and the fallback to the enclosing value.
     void jsonPlacesFindValuesAndKeys() {
         const std::string text = "{\"a\": {\"b/c\": [1, {\"d\": true}]}, \"e~\": \"x\"}";
