@@ -1,8 +1,8 @@
 #include "data/BatchReader.h"
 
-#include "common/AtomicFile.h"
 #include "common/TextList.h"
 #include "data/PlantFileReader.h"
+#include "data/historian/LineLengthGuard.h"
 #include "data/historian/NumberFormat.h"
 #include "data/historian/TextDecoding.h"
 #include "data/historian/TimeFormatDetection.h"
@@ -424,14 +424,18 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
         if (medianStep < 0.05) {
             const double first = time->front();
             const bool excelDays = first >= 20000 && first < 80000;
+            const bool excelTimesOfDay = first >= 0 && time->back() < 1;
             char text[512];
             std::snprintf(text, sizeof text,
                           "time_s: rows are %.3g s apart (median), faster than any drying line's historian "
                           "samples: the column is not in seconds. %s",
                           medianStep,
-                          excelDays
-                              ? "Its values (near 45,000) are Excel serial days: name the column "
-                                "'Timestamp' so that the reader recognises them, or map it "
+                          excelDays ? "Its values (near 45,000) are Excel serial days: name the column "
+                                      "'Timestamp' so that the reader recognises them, or map it "
+                                      "({\"time_s\": {\"header\": \"time_s\", \"format\": \"excel_days\"}})"
+                          : excelTimesOfDay
+                              ? "Its values (0 to 1) are Excel times of day (fractions of a day): name the "
+                                "column 'Time' so that the reader recognises them, or map it "
                                 "({\"time_s\": {\"header\": \"time_s\", \"format\": \"excel_days\"}})"
                               : "Give its unit (a units row under the header: min or h) or its format in a "
                                 "column mapping");
@@ -458,7 +462,7 @@ Expected<Batch> parseBatchText(const std::string& rawText, const std::string& di
 }
 
 Expected<Batch> readBatchFile(const std::string& path, const ReadOptions& options) {
-    auto text = readWholeFile(path);
+    auto text = historian::readFileWithLineLimit(path);
     if (!text) {
         return text.error();
     }

@@ -2,6 +2,7 @@
 
 #include "common/AtomicFile.h"
 #include "data/Columns.h"
+#include "data/historian/JsonPlaces.h"
 #include "data/historian/PlaceInFile.h"
 #include "data/historian/TimeStamps.h"
 #include "data/historian/ValueColumns.h"
@@ -105,11 +106,18 @@ double ColumnMapping::toContractUnit(Column column, double v) const {
 }
 
 Status RunSplitOptions::validate() const {
+    // Each place names the mapping file's key ("runs.step_s"), which readColumnMappingText turns
+    // into the key's line and column.
     if (!(stepS > 0 && stepS <= 60)) {
         return Error{ErrorKind::BadInput, "column mapping: runs.step_s", "must lie in (0, 60] s"};
     }
-    if (!(lineStopFeedKgPerHour >= 0 && minStopS >= 0 && minRunS >= 0)) {
-        return Error{ErrorKind::BadInput, "column mapping: runs", "thresholds must not be negative"};
+    const std::pair<const char*, double> thresholds[] = {
+        {"line_stop_feed_kg_h", lineStopFeedKgPerHour}, {"min_stop_s", minStopS}, {"min_run_s", minRunS}};
+    for (const auto& [key, value] : thresholds) {
+        if (!(value >= 0)) {
+            return Error{ErrorKind::BadInput, std::string("column mapping: runs.") + key,
+                         "must not be negative"};
+        }
     }
     if (!(maxInterpolatedGapS >= stepS)) {
         return Error{ErrorKind::BadInput, "column mapping: runs.max_interpolated_gap_s",
@@ -302,89 +310,217 @@ Error jsonSyntaxError(const std::string& text, const std::string& path, std::siz
 
 } // namespace
 
+namespace {
+
+/// The keys of a mapping file beside the contract columns.
+constexpr const char* kMappingKeys[] = {"batch_id", "runs", "decimal_mark"};
+
+std::string jsonKind(const nlohmann::json& j) {
+    return j.is_array()     ? "an array"
+           : j.is_string()  ? "a string"
+           : j.is_number()  ? "a number"
+           : j.is_boolean() ? "true or false"
+           : j.is_null()    ? "null"
+                            : "an object";
+}
+
+/// A column mapping's entries read with the place of each: what a valid JSON file says wrong is
+/// named at its line and column, as a syntax error is.
+class MappingFileReader {
+public:
+    MappingFileReader(const std::string& text, const std::string& path)
+        : m_text(text), m_path(path), m_places(text) {}
+
+    Error atValue(const std::string& pointer, std::string reason) const {
+        return at(m_places.valueAt(pointer), std::move(reason));
+    }
+    Error atKey(const std::string& pointer, std::string reason) const {
+        return at(m_places.keyAt(pointer), std::move(reason));
+    }
+    std::size_t offsetOf(const std::string& pointer) const { return m_places.valueAt(pointer); }
+    /// An error of ColumnMapping::validate ("column mapping: runs.step_s") at the key it names.
+    Error atSetting(const Error& e) const {
+        const std::string prefix = "column mapping: ";
+        std::string pointer;
+        if (e.place.rfind(prefix, 0) == 0) {
+            pointer = "/" + e.place.substr(prefix.size());
+            std::replace(pointer.begin(), pointer.end(), '.', '/');
+        }
+        const std::string setting = pointer.empty() ? "" : e.place.substr(prefix.size()) + ": ";
+        return atValue(pointer, setting + e.reason);
+    }
+
+private:
+    Error at(std::size_t offset, std::string reason) const {
+        int line = 0, column = 0;
+        historian::lineAndColumnAt(m_text, offset, line, column);
+        return historian::fileError(m_path, line, column, std::move(reason));
+    }
+
+    const std::string& m_text;
+    const std::string& m_path;
+    historian::JsonPlaces m_places;
+};
+
+/// "'T_hot' is not a column …; did you mean 'T_hot_C'?"
+std::string unknownKeyReason(const std::string& key) {
+    std::vector<std::string> known;
+    for (const auto& s : columnSpecs()) {
+        known.emplace_back(s.name);
+    }
+    known.insert(known.end(), std::begin(kMappingKeys), std::end(kMappingKeys));
+    const std::string near = closestHeader(key, known);
+    return "'" + key + "' is neither a column of the batch format (CONTRACT.md §1) nor a key of the column " +
+           "mapping (batch_id, runs, decimal_mark)" + (near.empty() ? "" : "; did you mean '" + near + "'?");
+}
+
+Status readRuns(const nlohmann::json& value, const MappingFileReader& reader, RunSplitOptions& runs) {
+    if (!value.is_object()) {
+        return reader.atValue("/runs", "\"runs\" must be an object, not " + jsonKind(value));
+    }
+    const std::pair<const char*, double*> fields[] = {{"step_s", &runs.stepS},
+                                                      {"line_stop_feed_kg_h", &runs.lineStopFeedKgPerHour},
+                                                      {"min_stop_s", &runs.minStopS},
+                                                      {"max_interpolated_gap_s", &runs.maxInterpolatedGapS},
+                                                      {"min_run_s", &runs.minRunS}};
+    for (const auto& [k, v] : value.items()) {
+        const std::string here = historian::JsonPlaces::child("/runs", k);
+        auto it =
+            std::find_if(std::begin(fields), std::end(fields), [&](const auto& f) { return k == f.first; });
+        if (it == std::end(fields)) {
+            return reader.atKey(here, "runs." + k +
+                                          " is not one of step_s, line_stop_feed_kg_h, min_stop_s, "
+                                          "max_interpolated_gap_s, min_run_s");
+        }
+        if (!v.is_number()) {
+            return reader.atValue(here, "runs." + k + " must be a number, not " + jsonKind(v));
+        }
+        *it->second = v.get<double>();
+    }
+    if (auto st = runs.validate(); !st) {
+        return reader.atSetting(st.error());
+    }
+    return {};
+}
+
+/// One contract column's entry: "<header>" or {"header": …, "unit": …, "format": …}.
+Status readColumnEntry(const std::string& key, const nlohmann::json& value, const MappingFileReader& reader,
+                       ColumnMapping& mapping) {
+    const std::string here = historian::JsonPlaces::child("", key);
+    const auto column = columnByName(key);
+    if (!column) {
+        return reader.atKey(here, unknownKeyReason(key));
+    }
+    const std::string shape = "the value for '" + key + "' must be a header or {\"header\": …, \"unit\": …}";
+    if (value.is_string()) {
+        mapping.contractToFile[key] = value.get<std::string>();
+        return {};
+    }
+    if (!value.is_object()) {
+        return reader.atValue(here, shape + ", not " + jsonKind(value));
+    }
+    if (!value.contains("header")) {
+        return reader.atValue(here, shape + "; this object has no \"header\"");
+    }
+    if (!value["header"].is_string()) {
+        return reader.atValue(here + "/header", shape + "; its \"header\" is " + jsonKind(value["header"]));
+    }
+    mapping.contractToFile[key] = value["header"].get<std::string>();
+    if (key == "time_s" && value.contains("format")) {
+        const auto& format = value["format"];
+        // "" leaves the format to detection, as it always has.
+        if (!format.is_string() ||
+            (!format.get<std::string>().empty() && !timeFormatByName(format.get<std::string>()))) {
+            return reader.atValue(
+                here + "/format",
+                "the time format " +
+                    (format.is_string() ? "'" + format.get<std::string>() + "'" : jsonKind(format)) +
+                    " is not one of " + timeFormatNames());
+        }
+        mapping.timeFormat = format.get<std::string>();
+    }
+    if (value.contains("unit")) {
+        const auto& unitValue = value["unit"];
+        const auto units = unitsFor(*column);
+        std::string list;
+        for (const auto& u : units) {
+            list += (list.empty() ? "" : ", ") + u;
+        }
+        if (!unitValue.is_string()) {
+            return reader.atValue(here + "/unit",
+                                  "the unit of '" + key + "' must be a string (" + list + ")");
+        }
+        // "°F" as a units row would say it is "degF": one spelling of a unit is accepted wherever a
+        // unit is given.
+        const std::string unit = unitValue.get<std::string>();
+        const std::string canonical = historian::normalisedUnit(unit, *column);
+        const std::string kept = canonical.empty() ? unit : canonical;
+        if (std::find(units.begin(), units.end(), kept) == units.end()) {
+            return reader.atValue(here + "/unit",
+                                  "unit '" + unit + "' of '" + key + "' is not one of " + list);
+        }
+        mapping.contractToUnit[key] = kept;
+    }
+    return {};
+}
+
+} // namespace
+
 Expected<ColumnMapping> readColumnMappingText(const std::string& text, const std::string& path) {
     ColumnMapping mapping;
+    nlohmann::json j;
     try {
-        const auto j = nlohmann::json::parse(text);
-        if (!j.is_object()) {
-            return Error{ErrorKind::BadInput, path, "a column mapping must be a JSON object"};
-        }
-        for (const auto& [key, value] : j.items()) {
-            if (key == "batch_id") {
-                if (!value.is_object() || !value.contains("header") || !value["header"].is_string()) {
-                    return Error{ErrorKind::BadInput, path,
-                                 "\"batch_id\" must be {\"header\": \"<column>\"}"};
-                }
-                mapping.batchIdHeader = value["header"].get<std::string>();
-                continue;
-            }
-            if (key == "decimal_mark") {
-                if (!value.is_string() ||
-                    (value.get<std::string>() != "." && value.get<std::string>() != ",")) {
-                    return Error{ErrorKind::BadInput, path, "\"decimal_mark\" must be \".\" or \",\""};
-                }
-                mapping.decimalMark = value.get<std::string>()[0];
-                continue;
-            }
-            if (key == "runs") {
-                if (!value.is_object()) {
-                    return Error{ErrorKind::BadInput, path, "\"runs\" must be an object"};
-                }
-                const std::pair<const char*, double*> fields[] = {
-                    {"step_s", &mapping.runs.stepS},
-                    {"line_stop_feed_kg_h", &mapping.runs.lineStopFeedKgPerHour},
-                    {"min_stop_s", &mapping.runs.minStopS},
-                    {"max_interpolated_gap_s", &mapping.runs.maxInterpolatedGapS},
-                    {"min_run_s", &mapping.runs.minRunS}};
-                for (const auto& [k, v] : value.items()) {
-                    auto it = std::find_if(std::begin(fields), std::end(fields),
-                                           [&](const auto& f) { return k == f.first; });
-                    if (it == std::end(fields) || !v.is_number()) {
-                        return Error{ErrorKind::BadInput, path,
-                                     "runs." + k +
-                                         ": not a number or not one of step_s, line_stop_feed_kg_h, "
-                                         "min_stop_s, max_interpolated_gap_s, min_run_s"};
-                    }
-                    *it->second = v.get<double>();
-                }
-                continue;
-            }
-            if (value.is_object() && value.contains("header") && value["header"].is_string()) {
-                if (key == "time_s" && value.contains("format")) {
-                    if (!value["format"].is_string()) {
-                        return Error{ErrorKind::BadInput, path, "the format of 'time_s' must be a string"};
-                    }
-                    mapping.timeFormat = value["format"].get<std::string>();
-                }
-                mapping.contractToFile[key] = value["header"].get<std::string>();
-                if (value.contains("unit")) {
-                    if (!value["unit"].is_string()) {
-                        return Error{ErrorKind::BadInput, path,
-                                     "the unit for '" + key + "' must be a string"};
-                    }
-                    // "°F" as a units row would say it is "degF": one spelling of a unit is
-                    // accepted wherever a unit is given.
-                    const std::string unit = value["unit"].get<std::string>();
-                    const auto column = columnByName(key);
-                    const std::string canonical =
-                        column ? historian::normalisedUnit(unit, *column) : std::string();
-                    mapping.contractToUnit[key] = canonical.empty() ? unit : canonical;
-                }
-                continue;
-            }
-            if (!value.is_string()) {
-                return Error{ErrorKind::BadInput, path,
-                             "the value for '" + key + "' must be a header or {\"header\": …, \"unit\": …}"};
-            }
-            mapping.contractToFile[key] = value.get<std::string>();
-        }
+        j = nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
         return jsonSyntaxError(text, path, e.byte, e.what());
     } catch (const nlohmann::json::exception& e) {
-        return Error{ErrorKind::BadInput, path, std::string("not a column mapping: ") + e.what()};
+        return Error{ErrorKind::BadInput, path, std::string("not valid JSON: ") + e.what()}; // 1e999
+    }
+    const MappingFileReader reader(text, path);
+    if (!j.is_object()) {
+        return reader.atValue("",
+                              "a column mapping must be a JSON object ({\"<contract column>\": \"<header>\", "
+                              "…}), not " +
+                                  jsonKind(j));
+    }
+    for (const auto& [key, value] : j.items()) {
+        const std::string here = historian::JsonPlaces::child("", key);
+        if (key == "batch_id") {
+            if (!value.is_object() || !value.contains("header") || !value["header"].is_string()) {
+                return reader.atValue(here, "\"batch_id\" must be {\"header\": \"<column>\"}");
+            }
+            mapping.batchIdHeader = value["header"].get<std::string>();
+        } else if (key == "decimal_mark") {
+            if (!value.is_string() || (value.get<std::string>() != "." && value.get<std::string>() != ",")) {
+                return reader.atValue(here, "\"decimal_mark\" must be \".\" or \",\"");
+            }
+            mapping.decimalMark = value.get<std::string>()[0];
+        } else if (key == "runs") {
+            if (auto st = readRuns(value, reader, mapping.runs); !st) {
+                return st.error();
+            }
+        } else if (auto st = readColumnEntry(key, value, reader, mapping); !st) {
+            return st.error();
+        }
+    }
+    // A header given twice or empty: named at the later of the two in the file.
+    std::map<std::string, std::string> keyOfHeader;
+    for (const auto& [contract, header] : mapping.contractToFile) {
+        const std::string here = historian::JsonPlaces::child("", contract);
+        if (header.empty()) {
+            return reader.atValue(here, "empty file header for '" + contract + "'");
+        }
+        const auto [seen, fresh] = keyOfHeader.emplace(header, contract);
+        if (!fresh) {
+            const std::string there = historian::JsonPlaces::child("", seen->second);
+            const bool hereLater = reader.offsetOf(here) > reader.offsetOf(there);
+            return reader.atValue(hereLater ? here : there, "file header '" + header +
+                                                                "' is mapped to two contract columns ('" +
+                                                                seen->second + "' and '" + contract + "')");
+        }
     }
     if (auto st = mapping.validate(); !st) {
-        return Error{ErrorKind::BadInput, path, st.error().reason};
+        return reader.atSetting(st.error());
     }
     mapping.sourceName = path;
     return mapping;

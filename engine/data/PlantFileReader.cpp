@@ -4,9 +4,9 @@
 // format on the whole file and cut the rows into production runs.
 #include "data/PlantFileReader.h"
 
-#include "common/AtomicFile.h"
 #include "data/historian/ClockSteps.h"
 #include "data/historian/CsvLines.h"
+#include "data/historian/LineLengthGuard.h"
 #include "data/historian/NarrowLayout.h"
 #include "data/historian/NumberFormat.h"
 #include "data/historian/PlaceInFile.h"
@@ -67,6 +67,7 @@ Expected<PlantFileRuns> readHistorianRows(const std::string& text, const std::st
     std::vector<std::size_t> clockJumpBefore; // row indices where daylight saving set the clock back
     std::vector<std::string> metadata;
     ClockWatch clock(file, timeColumn, shape.timeFormat, std::max(60.0, runs.maxInterpolatedGapS));
+    DatelessDays dateless(file, timeColumn, shape.timeHeader);
     CsvLineSplitter split(shape.delimiter);
     LineCursor lines(text);
     std::string_view line;
@@ -117,21 +118,28 @@ Expected<PlantFileRuns> readHistorianRows(const std::string& text, const std::st
         RowStamp r;
         r.line = lineNo;
         TimeStamp stamp;
-        bool stampOk = false;
+        StampReading reading = StampReading::NotThisFormat;
+        std::string impossible;
         if (shape.timeFormat == TimeFormat::Seconds) {
             const NumberCell n = readNumberCell(fields[timeIndex]);
-            stampOk = n.isNumber;
-            stamp.seconds = stampOk ? relativeSeconds(n, layout.timeScale, rows, lastStep) : 0;
+            reading = n.isNumber ? StampReading::Read : StampReading::NotThisFormat;
+            stamp.seconds = n.isNumber ? relativeSeconds(n, layout.timeScale, rows, lastStep) : 0;
         } else {
-            stampOk = parseTimeStamp(fields[timeIndex], shape.timeFormat, stamp);
+            reading = readTimeStamp(fields[timeIndex], shape.timeFormat, stamp, &impossible);
         }
-        if (!stampOk) {
+        if (reading == StampReading::ImpossibleDate) {
+            return fileError(file, lineNo, timeColumn, impossibleStampReason(fields[timeIndex], impossible));
+        }
+        if (reading != StampReading::Read) {
             return fileError(file, lineNo, timeColumn,
                              "bad time stamp '" + std::string(trimmed(fields[timeIndex])) +
                                  "' (the column is " + timeFormatName(shape.timeFormat) +
                                  "; if that is wrong, name the format in the column mapping: \"time_s\": "
                                  "{\"header\": \"" +
                                  shape.timeHeader + "\", \"format\": …})");
+        }
+        if (auto placed = dateless.place(stamp, lineNo, fields[timeIndex]); !placed) {
+            return placed.error();
         }
         r.t = stamp.seconds;
         bool batchChanged = false;
@@ -164,9 +172,13 @@ Expected<PlantFileRuns> readHistorianRows(const std::string& text, const std::st
         }
         rows.push_back(r);
     }
+    for (auto& n : dateless.notes()) {
+        result.notes.push_back(std::move(n));
+    }
     for (auto& n : clock.notes()) {
         result.notes.push_back(std::move(n));
     }
+    shape.timesOfDayOnly = dateless.timesOfDayOnly();
     if (rows.empty()) {
         return fileError(file, lines.lineNumber(), 1, "the file has a header but no data rows");
     }
@@ -375,7 +387,7 @@ Expected<PlantFileRuns> parsePlantText(const std::string& raw, const std::string
             ++lineNo;
             if (!t.empty() && t.front() != '#') {
                 const auto separators = std::count_if(
-                    t.begin(), t.end(), [](char c) { return c == ',' || c == ';' || c == '\t'; });
+                    t.begin(), t.end(), [](char c) { return c == ',' || c == ';' || c == '\t' || c == '|'; });
                 if (separators >= 2) {
                     headerFound = true;
                     headerAt = pos;
@@ -451,11 +463,17 @@ Expected<PlantFileRuns> parsePlantText(const std::string& raw, const std::string
 
 Expected<PlantFileRuns> readPlantFile(const std::string& path, const ReadOptions& options,
                                       const Progress& progress) {
-    auto text = readWholeFile(path);
+    // Read with the line limit checked as the bytes come: a file without line breaks is refused
+    // after the limit, whatever its size.
+    auto text = readFileWithLineLimit(path);
     if (!text) {
         return text.error();
     }
     return parsePlantText(*text, path, options, progress);
+}
+
+Expected<std::string> readPlantFileHead(const std::string& path, std::size_t maxBytes) {
+    return readFileWithLineLimit(path, kMaxLineBytes, maxBytes);
 }
 
 } // namespace drytwin::data

@@ -30,8 +30,13 @@ struct PlantFileRuns {
 /// setting that fixes it. Thread-safe.
 Expected<PlantFileRuns> parsePlantText(const std::string& text, const std::string& displayName,
                                        const ReadOptions& options = {}, const Progress& progress = {});
-/// @brief parsePlantText of a file on disk.
+/// @brief parsePlantText of a file on disk. A line longer than 1 MiB stops the reading there,
+/// whatever the file's size.
 Expected<PlantFileRuns> readPlantFile(const std::string& path, const ReadOptions& options = {},
                                       const Progress& progress = {});
+/// @brief The first @p maxBytes of a plant file (all of it for 0), cut after its last whole line,
+/// for a preview or a guess; read with the same line limit as readPlantFile, so that a file
+/// without line breaks is refused alike and never read whole.
+Expected<std::string> readPlantFileHead(const std::string& path, std::size_t maxBytes);
 
 } // namespace drytwin::data

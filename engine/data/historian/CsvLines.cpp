@@ -67,7 +67,7 @@ bool CsvLineSplitter::split(std::string_view line) {
 }
 
 char detectDelimiter(std::string_view header) {
-    int counts[3] = {0, 0, 0};
+    int counts[4] = {0, 0, 0, 0};
     bool quoted = false;
     for (char c : header) {
         if (c == '"') {
@@ -76,6 +76,7 @@ char detectDelimiter(std::string_view header) {
             counts[0] += c == ',';
             counts[1] += c == ';';
             counts[2] += c == '\t';
+            counts[3] += c == '|';
         }
     }
     if (counts[1] > counts[0] && counts[1] >= counts[2]) {
@@ -84,11 +85,25 @@ char detectDelimiter(std::string_view header) {
     if (counts[2] > counts[0] && counts[2] > counts[1]) {
         return '\t';
     }
+    // A pipe (SAP, some MES and LIMS exports) only where the header has none of the others: a tag
+    // name may hold a pipe ("L1|TT101") in a header of commas, which must stay a comma file.
+    if (counts[0] == 0 && counts[1] == 0 && counts[2] == 0 && counts[3] > 0) {
+        return '|';
+    }
     return ',';
 }
 
 std::string delimiterName(char delimiter) {
-    return delimiter == ';' ? "semicolon" : delimiter == '\t' ? "tab" : "comma";
+    switch (delimiter) {
+    case ';':
+        return "semicolon";
+    case '\t':
+        return "tab";
+    case '|':
+        return "pipe";
+    default:
+        return "comma";
+    }
 }
 
 } // namespace drytwin::data::historian

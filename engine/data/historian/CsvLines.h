@@ -48,10 +48,11 @@ private:
     csv_parser* m_parser = nullptr;
 };
 
-/// @brief The delimiter of a header line: the most frequent of ',', ';' and tab outside quotes.
+/// @brief The delimiter of a header line: the most frequent of ',', ';' and tab outside quotes;
+/// '|' where the header has none of those but a pipe.
 char detectDelimiter(std::string_view header);
 
-/// @brief "comma", "semicolon", "tab".
+/// @brief "comma", "semicolon", "tab", "pipe".
 std::string delimiterName(char delimiter);
 
 } // namespace drytwin::data::historian

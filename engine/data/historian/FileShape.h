@@ -18,6 +18,9 @@ struct FileShape {
     bool unitsRow = false;
     std::string timeHeader;
     TimeFormat timeFormat = TimeFormat::Seconds;
+    /// Excel cells holding a time of day alone: the stamps count seconds from an undated midnight
+    /// (set when the rows are read).
+    bool timesOfDayOnly = false;
     /// False for a file in the contract's own form (comma, time_s in seconds, no units row, no
     /// batch column): it is read as one batch exactly as before.
     bool historian = false;

@@ -189,7 +189,13 @@ Expected<std::optional<NarrowPivot>> pivotNarrowExport(const std::string& text, 
     std::size_t repeated = 0;
     for (const auto& r : rows) {
         TimeStamp stamp;
-        if (!parseTimeStamp(r.time, *format, stamp)) {
+        std::string impossible;
+        const StampReading reading = readTimeStamp(r.time, *format, stamp, &impossible);
+        if (reading == StampReading::ImpossibleDate) {
+            return fileError(file, r.line, static_cast<int>(timeAt) + 1,
+                             impossibleStampReason(r.time, impossible));
+        }
+        if (reading != StampReading::Read) {
             return fileError(file, r.line, static_cast<int>(timeAt) + 1,
                              "bad time stamp '" + r.time + "' (the column is " + timeFormatName(*format) +
                                  ")");

@@ -240,10 +240,10 @@ DecimalMarkDecision decideDecimalMark(const std::vector<ColumnMarks>& columns, c
         return d; // only whole numbers: the mark does not matter
     }
     // Nothing in the file tells. One kind of cell: its mark is the decimal mark (a comma between
-    // fields cannot be one). Both kinds: the delimiter's convention, a tab's has none.
+    // fields cannot be one). Both kinds: the delimiter's convention; a tab's and a pipe's have none.
     std::string cells;
     if (pointOrThousands && commaOrThousands) {
-        if (delimiter == '\t') {
+        if (delimiter == '\t' || delimiter == '|') {
             const FoundCell& later =
                 pointOrThousands.line() >= commaOrThousands.line() ? pointOrThousands : commaOrThousands;
             return fail(later,

@@ -84,6 +84,9 @@ void resampleRuns(const std::vector<RowSpan>& spans, const std::vector<RowStamp>
             std::snprintf(buf, sizeof buf, "t = %.3f s", t);
             return std::string(buf);
         }
+        if (shape.timesOfDayOnly) {
+            return timeOfDayText(t) + " (no date)";
+        }
         return isoTimestamp(t);
     };
     // Every run's grid first, then column by column into all runs, each source column freed

@@ -41,30 +41,6 @@ std::string hexByte(unsigned char b) {
     return buf;
 }
 
-/// UTF-16 without a byte-order mark: text of mostly ASCII (digits, delimiters, tag names) has a
-/// zero in every other byte. Looks at the first 4 KiB.
-bool looksLikeUtf16(const std::string& raw, bool& littleEndian) {
-    const std::size_t n = std::min<std::size_t>(raw.size(), 4096) & ~std::size_t(1);
-    if (n < 4) {
-        return false;
-    }
-    std::size_t zeroEven = 0, zeroOdd = 0;
-    for (std::size_t i = 0; i < n; i += 2) {
-        zeroEven += raw[i] == '\0';
-        zeroOdd += raw[i + 1] == '\0';
-    }
-    const std::size_t pairs = n / 2;
-    if (zeroOdd * 10 >= pairs * 4 && zeroEven * 20 < pairs) {
-        littleEndian = true;
-        return true;
-    }
-    if (zeroEven * 10 >= pairs * 4 && zeroOdd * 20 < pairs) {
-        littleEndian = false;
-        return true;
-    }
-    return false;
-}
-
 Expected<DecodedText> fromUtf16(const std::string& raw, const std::string& file, bool littleEndian,
                                 bool bom) {
     DecodedText d;
@@ -156,6 +132,28 @@ Expected<DecodedText> fromWindows1252(const std::string& raw, const std::string&
 }
 
 } // namespace
+
+bool looksLikeUtf16(std::string_view raw, bool& littleEndian) {
+    const std::size_t n = std::min<std::size_t>(raw.size(), 4096) & ~std::size_t(1);
+    if (n < 4) {
+        return false;
+    }
+    std::size_t zeroEven = 0, zeroOdd = 0;
+    for (std::size_t i = 0; i < n; i += 2) {
+        zeroEven += raw[i] == '\0';
+        zeroOdd += raw[i + 1] == '\0';
+    }
+    const std::size_t pairs = n / 2;
+    if (zeroOdd * 10 >= pairs * 4 && zeroEven * 20 < pairs) {
+        littleEndian = true;
+        return true;
+    }
+    if (zeroEven * 10 >= pairs * 4 && zeroOdd * 20 < pairs) {
+        littleEndian = false;
+        return true;
+    }
+    return false;
+}
 
 std::string encodingName(TextEncoding encoding) {
     switch (encoding) {

@@ -42,6 +42,10 @@ struct DecodedText {
 Expected<DecodedText> decodeText(const std::string& raw, const std::string& file,
                                  std::size_t maxLineBytes = kMaxLineBytes);
 
+/// @brief True when @p raw, a file's first bytes, is UTF-16 without a byte-order mark: text of
+/// mostly ASCII (digits, delimiters, tag names) has a zero in every other byte. Looks at 4 KiB.
+bool looksLikeUtf16(std::string_view raw, bool& littleEndian);
+
 /// @brief The byte offset of the first byte of @p text that is not valid UTF-8 (overlong forms,
 /// surrogates and code points past U+10FFFF are invalid), or npos when all of it is valid.
 std::size_t firstInvalidUtf8(std::string_view text);

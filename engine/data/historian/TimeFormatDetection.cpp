@@ -8,14 +8,6 @@
 
 namespace drytwin::data::historian {
 
-namespace {
-
-bool isDigit(char c) {
-    return c >= '0' && c <= '9';
-}
-
-} // namespace
-
 double medianPositiveStep(const std::vector<double>& v) {
     std::vector<double> steps;
     for (std::size_t i = 1; i < v.size(); ++i) {
@@ -54,18 +46,27 @@ TimeFormatGuess detectTimeFormat(const std::vector<std::string_view>& cells, con
         return g;
     }
     const std::string_view first = stamps.front();
+    // The form decides, not whether the date exists: "2025-02-29 08:00:00" is an ISO stamp naming a
+    // day that does not exist, which the reader refuses at its own line as an impossible date rather
+    // than as a stamp of no known format.
     const auto fits = [&](TimeFormat f) {
         TimeStamp t;
-        return parseTimeStamp(first, f, t);
+        return readTimeStamp(first, f, t) != StampReading::NotThisFormat;
     };
-    const auto all = [&](TimeFormat f) {
+    // Day/month or month/day: a cell that exists in one reading only is evidence (13/05/2025);
+    // one that exists in neither (30/02/2025) is a damaged cell and tells nothing.
+    const auto all = [&](TimeFormat f, TimeFormat other) {
         TimeStamp t;
-        return std::all_of(stamps.begin(), stamps.end(), [&](auto c) { return parseTimeStamp(c, f, t); });
+        return std::all_of(stamps.begin(), stamps.end(), [&](auto c) {
+            const StampReading r = readTimeStamp(c, f, t);
+            return r == StampReading::Read ||
+                   (r == StampReading::ImpossibleDate && readTimeStamp(c, other, t) != StampReading::Read);
+        });
     };
     // The first stamp decides the family (a bad stamp further down is then reported at its own
     // line); only day/month against month/day needs more.
     std::size_t lead = 0;
-    while (lead < first.size() && isDigit(first[lead])) {
+    while (lead < first.size() && (first[lead] >= '0' && first[lead] <= '9')) {
         ++lead;
     }
     const char after = lead < first.size() ? first[lead] : '\0';
@@ -86,8 +87,8 @@ TimeFormatGuess detectTimeFormat(const std::vector<std::string_view>& cells, con
         return g;
     }
     if (lead >= 1 && lead <= 2 && after == '/') {
-        const bool dmy = all(TimeFormat::DmySlash);
-        const bool mdy = all(TimeFormat::MdySlash);
+        const bool dmy = all(TimeFormat::DmySlash, TimeFormat::MdySlash);
+        const bool mdy = all(TimeFormat::MdySlash, TimeFormat::DmySlash);
         if (dmy != mdy) {
             g.format = dmy ? TimeFormat::DmySlash : TimeFormat::MdySlash;
             return g;
@@ -129,6 +130,17 @@ TimeFormatGuess detectTimeFormat(const std::vector<std::string_view>& cells, con
             g.format = TimeFormat::ExcelDays;
             return g;
         }
+        // Excel cells holding a time of day alone: fractions of a day in [0, 1), 1 s apart being
+        // 0.0000116. As seconds they would be a historian sampling faster than 20 Hz, the same
+        // argument as for serial days; they are read as Excel's, without a date. A header that
+        // states a unit ("Zeit [min]") says what the numbers are.
+        const bool timeOfDayRange =
+            std::all_of(values.begin(), values.end(), [](double x) { return x >= 0 && x < 1; });
+        if (header != "time_s" && header.find('[') == std::string::npos && timeOfDayRange &&
+            (step > 0 ? step < 0.05 : fraction && namedLikeTime(header))) {
+            g.format = TimeFormat::ExcelDays;
+            return g;
+        }
         g.format = TimeFormat::Seconds;
         return g;
     }
@@ -147,8 +159,13 @@ void DayMonthOrderVote::add(std::string_view cell) {
         return;
     }
     TimeStamp a, b;
-    const bool dmy = m_dmyFits && parseTimeStamp(cell, TimeFormat::DmySlash, a);
-    const bool mdy = m_mdyFits && parseTimeStamp(cell, TimeFormat::MdySlash, b);
+    const StampReading asDmy = readTimeStamp(cell, TimeFormat::DmySlash, a);
+    const StampReading asMdy = readTimeStamp(cell, TimeFormat::MdySlash, b);
+    if (asDmy == StampReading::ImpossibleDate && asMdy == StampReading::ImpossibleDate) {
+        return; // a day that exists in neither order (30/02/2025): the reader names it at its line
+    }
+    const bool dmy = m_dmyFits && asDmy == StampReading::Read;
+    const bool mdy = m_mdyFits && asMdy == StampReading::Read;
     if (m_dmyFits && m_mdyFits && dmy && mdy) {
         m_differ = m_differ || a.seconds != b.seconds;
         if (m_started) {

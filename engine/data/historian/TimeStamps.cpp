@@ -57,15 +57,39 @@ bool year(std::string_view s, std::size_t& pos, int& y) {
     return true;
 }
 
-/// Days since 1970-01-01 of a proleptic Gregorian date (H. Hinnant's days_from_civil); false for a
-/// date that does not exist (31 June, 29 February 2025).
-bool civilDays(int y, int m, int d, long& days) {
+/// What a cell names that does not exist (a day or month past its end, an hour past 24), once the
+/// cell has had the form of a stamp: the first such thing found.
+struct Impossible {
+    std::string why;
+    void found(std::string what) {
+        if (why.empty()) {
+            why = std::move(what);
+        }
+    }
+};
+
+constexpr const char* kMonthNames[] = {"January", "February", "March",     "April",   "May",      "June",
+                                       "July",    "August",   "September", "October", "November", "December"};
+
+/// Days since 1970-01-01 of a proleptic Gregorian date (H. Hinnant's days_from_civil); false, with
+/// what does not exist in @p bad, for a date that does not (31 June, 29 February 2025, month 13).
+bool civilDays(int y, int m, int d, long& days, Impossible& bad) {
     static constexpr int kDays[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-    if (m < 1 || m > 12 || d < 1) {
+    if (m < 1 || m > 12) {
+        bad.found("there is no month " + std::to_string(m));
         return false;
     }
     const bool leap = (y % 4 == 0 && y % 100 != 0) || y % 400 == 0;
-    if (d > kDays[m - 1] + (m == 2 && leap ? 1 : 0)) {
+    const int daysInMonth = kDays[m - 1] + (m == 2 && leap ? 1 : 0);
+    if (d < 1 || d > daysInMonth) {
+        if (d < 1) {
+            bad.found("there is no day 0");
+        } else if (m == 2) {
+            bad.found("February " + std::to_string(y) + " has " + std::to_string(daysInMonth) + " days" +
+                      (leap ? "" : " (" + std::to_string(y) + " is no leap year)"));
+        } else {
+            bad.found(std::string(kMonthNames[m - 1]) + " has " + std::to_string(daysInMonth) + " days");
+        }
         return false;
     }
     const long yy = y - (m <= 2 ? 1 : 0);
@@ -78,15 +102,16 @@ bool civilDays(int y, int m, int d, long& days) {
 }
 
 /// "h:mm[:ss[.fff]]" from @p pos, the hour of one digit or two, then optionally " AM"/" PM"
-/// (12-hour clock) when @p amPm; @p pos is moved past it.
-bool timeOfDay(std::string_view s, std::size_t& pos, bool amPm, double& secondsOfDay) {
+/// (12-hour clock) when @p amPm; @p pos is moved past it. False when the text has another form;
+/// a time of that form that does not exist (25:00, 8:61, 13 PM) is noted in @p bad.
+bool timeOfDay(std::string_view s, std::size_t& pos, bool amPm, double& secondsOfDay, Impossible& bad) {
     int h = 0, mi = 0, whole = 0;
-    if (!digits(s, pos, 1, 2, h) || !expect(s, pos, ':') || !digits(s, pos, 2, 2, mi) || mi > 59) {
+    if (!digits(s, pos, 1, 2, h) || !expect(s, pos, ':') || !digits(s, pos, 2, 2, mi)) {
         return false;
     }
     double sec = 0;
     if (expect(s, pos, ':')) {
-        if (!digits(s, pos, 2, 2, whole) || whole > 60) {
+        if (!digits(s, pos, 2, 2, whole)) {
             return false;
         }
         sec = whole;
@@ -110,14 +135,20 @@ bool timeOfDay(std::string_view s, std::size_t& pos, bool amPm, double& secondsO
         const bool pm = rest == "pm" || rest == "p.m.";
         if (am || pm) {
             if (h < 1 || h > 12) {
-                return false;
+                bad.found("a 12-hour clock has no hour " + std::to_string(h));
             }
             h = h % 12 + (pm ? 12 : 0);
             pos = s.size();
         }
     }
-    if (h > 24 || (h == 24 && (mi > 0 || sec > 0))) {
-        return false;
+    if (h > 24) {
+        bad.found("there is no hour " + std::to_string(h));
+    } else if (h == 24 && (mi > 0 || sec > 0)) {
+        bad.found("a day ends at 24:00");
+    } else if (mi > 59) {
+        bad.found("there is no minute " + std::to_string(mi));
+    } else if (whole > 60) {
+        bad.found("there is no second " + std::to_string(whole));
     }
     secondsOfDay = h * 3600.0 + mi * 60.0 + sec;
     return true;
@@ -146,11 +177,9 @@ bool monthByName(std::string_view s, std::size_t& pos, int& month) {
         return false;
     }
     const std::string word = historian::lowerAscii(s.substr(pos, n));
-    static const char* const kFull[] = {"january",   "february", "march",    "april",
-                                        "may",       "june",     "july",     "august",
-                                        "september", "october",  "november", "december"};
     for (int m = 0; m < 12; ++m) {
-        if (word == kMonths[m] || word == kFull[m] || (m == 8 && word == "sept")) {
+        if (word == kMonths[m] || word == historian::lowerAscii(kMonthNames[m]) ||
+            (m == 8 && word == "sept")) {
             month = m + 1;
             pos += n;
             return true;
@@ -159,13 +188,110 @@ bool monthByName(std::string_view s, std::size_t& pos, int& month) {
     return false;
 }
 
-bool dateAndTime(int y, int mo, int d, double secondsOfDay, double& seconds) {
+/// Seconds of a date and a time of day; a date that does not exist is noted in @p bad (the cell
+/// still has a stamp's form, so true).
+bool dateAndTime(int y, int mo, int d, double secondsOfDay, double& seconds, Impossible& bad) {
     long days = 0;
-    if (!civilDays(y, mo, d, days)) {
+    if (civilDays(y, mo, d, days, bad)) {
+        seconds = static_cast<double>(days) * 86400.0 + secondsOfDay;
+    }
+    return true;
+}
+
+/// The form of @p s in @p format: false when it has another; @p bad notes a date or time of that
+/// form that does not exist.
+bool readStampForm(std::string_view s, TimeFormat format, historian::TimeStamp& stamp, Impossible& bad) {
+    std::size_t pos = 0;
+    int y = 0, mo = 0, d = 0;
+    double tod = 0;
+    switch (format) {
+    case TimeFormat::Seconds:
+    case TimeFormat::EpochSeconds:
+    case TimeFormat::EpochMillis:
+    case TimeFormat::ExcelDays: {
+        const historian::NumberCell n = historian::readNumberCell(s);
+        if (!n.isNumber) {
+            return false;
+        }
+        if (format == TimeFormat::EpochMillis) {
+            stamp.seconds = n.value / 1000.0;
+        } else if (format == TimeFormat::ExcelDays) {
+            if (n.value < 0 || n.value > 2958465) {
+                return false;
+            }
+            // A cell below 1 holds a time of day alone: Excel's calendar has no day 0 (its serial 1
+            // is 1900-01-01), and it shows such a cell as a time, 0.3333 as 08:00:00. The seconds
+            // then count from a midnight the file does not date.
+            stamp.timeOfDayOnly = n.value < 1;
+            // Excel's day 25569 is 1970-01-01 (its calendar counts from 1899-12-30).
+            // To 10 ms: ten significant digits of a day resolve a millisecond, not better.
+            const double days = stamp.timeOfDayOnly ? n.value : n.value - 25569.0;
+            stamp.seconds = std::round(days * 86400.0 * 100.0) / 100.0;
+        } else {
+            stamp.seconds = n.value;
+        }
+        return true;
+    }
+    case TimeFormat::Iso8601: {
+        if (!digits(s, pos, 4, 4, y) || !expect(s, pos, '-') || !digits(s, pos, 2, 2, mo) ||
+            !expect(s, pos, '-') || !digits(s, pos, 2, 2, d) || !dateTimeGap(s, pos, true) ||
+            !timeOfDay(s, pos, false, tod, bad) || !dateAndTime(y, mo, d, tod, stamp.seconds, bad)) {
+            return false;
+        }
+        if (pos == s.size()) {
+            return true; // naive local time
+        }
+        if (s[pos] == 'Z' && pos + 1 == s.size()) {
+            stamp.hasOffset = true;
+            return true;
+        }
+        if (s[pos] == '+' || s[pos] == '-') {
+            const int sign = s[pos] == '+' ? 1 : -1;
+            ++pos;
+            int oh = 0, om = 0;
+            if (!digits(s, pos, 2, 2, oh)) {
+                return false;
+            }
+            expect(s, pos, ':');
+            if (!digits(s, pos, 2, 2, om) || pos != s.size()) {
+                return false;
+            }
+            stamp.hasOffset = true;
+            stamp.offsetMinutes = sign * (oh * 60 + om);
+            stamp.seconds -= stamp.offsetMinutes * 60.0; // to UTC
+            return true;
+        }
         return false;
     }
-    seconds = static_cast<double>(days) * 86400.0 + secondsOfDay;
-    return true;
+    case TimeFormat::YmdSlash:
+        return digits(s, pos, 4, 4, y) && expect(s, pos, '/') && digits(s, pos, 1, 2, mo) &&
+               expect(s, pos, '/') && digits(s, pos, 1, 2, d) && dateTimeGap(s, pos, false) &&
+               timeOfDay(s, pos, true, tod, bad) && pos == s.size() &&
+               dateAndTime(y, mo, d, tod, stamp.seconds, bad);
+    case TimeFormat::DmyDot:
+    case TimeFormat::DmySlash:
+    case TimeFormat::MdySlash: {
+        const char sep = format == TimeFormat::DmyDot ? '.' : '/';
+        int a = 0, b = 0;
+        if (!digits(s, pos, 1, 2, a) || !expect(s, pos, sep) || !digits(s, pos, 1, 2, b) ||
+            !expect(s, pos, sep) || !year(s, pos, y) || !dateTimeGap(s, pos, false) ||
+            !timeOfDay(s, pos, true, tod, bad) || pos != s.size()) {
+            return false;
+        }
+        d = format == TimeFormat::MdySlash ? b : a;
+        mo = format == TimeFormat::MdySlash ? a : b;
+        return dateAndTime(y, mo, d, tod, stamp.seconds, bad);
+    }
+    case TimeFormat::DayMonthNameYear: {
+        if (!digits(s, pos, 1, 2, d) || !(expect(s, pos, '-') || expect(s, pos, ' ')) ||
+            !monthByName(s, pos, mo) || !(expect(s, pos, '-') || expect(s, pos, ' ')) || !year(s, pos, y) ||
+            !dateTimeGap(s, pos, false) || !timeOfDay(s, pos, true, tod, bad) || pos != s.size()) {
+            return false;
+        }
+        return dateAndTime(y, mo, d, tod, stamp.seconds, bad);
+    }
+    }
+    return false;
 }
 
 } // namespace
@@ -226,94 +352,43 @@ bool parseTimeCell(std::string_view cell, TimeFormat format, double& seconds) {
 
 namespace drytwin::data::historian {
 
-bool parseTimeStamp(std::string_view cell, TimeFormat format, TimeStamp& stamp) {
-    const std::string_view s = trimmed(cell);
+StampReading readTimeStamp(std::string_view cell, TimeFormat format, TimeStamp& stamp,
+                           std::string* whyImpossible) {
     stamp = {};
-    std::size_t pos = 0;
-    int y = 0, mo = 0, d = 0;
-    double tod = 0;
-    switch (format) {
-    case TimeFormat::Seconds:
-    case TimeFormat::EpochSeconds:
-    case TimeFormat::EpochMillis:
-    case TimeFormat::ExcelDays: {
-        const NumberCell n = readNumberCell(s);
-        if (!n.isNumber) {
-            return false;
-        }
-        if (format == TimeFormat::EpochMillis) {
-            stamp.seconds = n.value / 1000.0;
-        } else if (format == TimeFormat::ExcelDays) {
-            if (n.value < 1 || n.value > 2958465) {
-                return false;
-            }
-            // Excel's day 25569 is 1970-01-01 (its calendar counts from 1899-12-30).
-            // To 10 ms: ten significant digits of a day resolve a millisecond, not better.
-            stamp.seconds = std::round((n.value - 25569.0) * 86400.0 * 100.0) / 100.0;
-        } else {
-            stamp.seconds = n.value;
-        }
-        return true;
+    Impossible bad;
+    if (!readStampForm(trimmed(cell), format, stamp, bad)) {
+        return StampReading::NotThisFormat;
     }
-    case TimeFormat::Iso8601: {
-        if (!digits(s, pos, 4, 4, y) || !expect(s, pos, '-') || !digits(s, pos, 2, 2, mo) ||
-            !expect(s, pos, '-') || !digits(s, pos, 2, 2, d) || !dateTimeGap(s, pos, true) ||
-            !timeOfDay(s, pos, false, tod) || !dateAndTime(y, mo, d, tod, stamp.seconds)) {
-            return false;
+    if (!bad.why.empty()) {
+        if (whyImpossible) {
+            *whyImpossible = bad.why;
         }
-        if (pos == s.size()) {
-            return true; // naive local time
-        }
-        if (s[pos] == 'Z' && pos + 1 == s.size()) {
-            stamp.hasOffset = true;
-            return true;
-        }
-        if (s[pos] == '+' || s[pos] == '-') {
-            const int sign = s[pos] == '+' ? 1 : -1;
-            ++pos;
-            int oh = 0, om = 0;
-            if (!digits(s, pos, 2, 2, oh)) {
-                return false;
-            }
-            expect(s, pos, ':');
-            if (!digits(s, pos, 2, 2, om) || pos != s.size()) {
-                return false;
-            }
-            stamp.hasOffset = true;
-            stamp.offsetMinutes = sign * (oh * 60 + om);
-            stamp.seconds -= stamp.offsetMinutes * 60.0; // to UTC
-            return true;
-        }
-        return false;
+        return StampReading::ImpossibleDate;
     }
-    case TimeFormat::YmdSlash:
-        return digits(s, pos, 4, 4, y) && expect(s, pos, '/') && digits(s, pos, 1, 2, mo) &&
-               expect(s, pos, '/') && digits(s, pos, 1, 2, d) && dateTimeGap(s, pos, false) &&
-               timeOfDay(s, pos, true, tod) && pos == s.size() && dateAndTime(y, mo, d, tod, stamp.seconds);
-    case TimeFormat::DmyDot:
-    case TimeFormat::DmySlash:
-    case TimeFormat::MdySlash: {
-        const char sep = format == TimeFormat::DmyDot ? '.' : '/';
-        int a = 0, b = 0;
-        if (!digits(s, pos, 1, 2, a) || !expect(s, pos, sep) || !digits(s, pos, 1, 2, b) ||
-            !expect(s, pos, sep) || !year(s, pos, y) || !dateTimeGap(s, pos, false) ||
-            !timeOfDay(s, pos, true, tod) || pos != s.size()) {
-            return false;
-        }
-        d = format == TimeFormat::MdySlash ? b : a;
-        mo = format == TimeFormat::MdySlash ? a : b;
-        return dateAndTime(y, mo, d, tod, stamp.seconds);
+    return StampReading::Read;
+}
+
+std::string impossibleStampReason(std::string_view cell, const std::string& why) {
+    return "impossible date or time '" + std::string(trimmed(cell)) + "': " + why +
+           ". The cell is damaged; correct or remove the row";
+}
+
+bool parseTimeStamp(std::string_view cell, TimeFormat format, TimeStamp& stamp) {
+    return readTimeStamp(cell, format, stamp) == StampReading::Read;
+}
+
+std::string timeOfDayText(double secondsSinceFirstMidnight) {
+    const double day = std::floor(secondsSinceFirstMidnight / 86400.0);
+    const double s = secondsSinceFirstMidnight - day * 86400.0;
+    const int whole = static_cast<int>(std::floor(s));
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%02d:%02d:%02d", whole / 3600, whole / 60 % 60, whole % 60);
+    std::string text(buf);
+    if (const int ms = static_cast<int>(std::lround((s - whole) * 1000.0)); ms > 0 && ms < 1000) {
+        std::snprintf(buf, sizeof buf, ".%03d", ms);
+        text += buf;
     }
-    case TimeFormat::DayMonthNameYear: {
-        if (!digits(s, pos, 1, 2, d) || !(expect(s, pos, '-') || expect(s, pos, ' ')) ||
-            !monthByName(s, pos, mo) || !(expect(s, pos, '-') || expect(s, pos, ' ')) || !year(s, pos, y) ||
-            !dateTimeGap(s, pos, false) || !timeOfDay(s, pos, true, tod) || pos != s.size()) {
-            return false;
-        }
-        return dateAndTime(y, mo, d, tod, stamp.seconds);
-    }
-    }
-    return false;
+    return day > 0 ? "day " + std::to_string(static_cast<long>(day) + 1) + " " + text : text;
 }
 
 std::string isoTimestamp(double epochSeconds) {

@@ -23,20 +23,10 @@ namespace drytwin::workflow {
 
 namespace {
 
-/// The first @p maxBytes of a file, cut after its last whole line (0: all of it).
+/// The first @p maxBytes of a file, cut after its last whole line (0: all of it); only that much
+/// is read, so a preview of a month's export or of a file without line breaks stays small.
 Expected<std::string> headOf(const std::string& path, std::size_t maxBytes) {
-    auto text = readWholeFile(path);
-    if (!text) {
-        return text.error();
-    }
-    if (maxBytes > 0 && text->size() > maxBytes) {
-        text->resize(maxBytes);
-        const auto nl = text->rfind('\n');
-        if (nl != std::string::npos) {
-            text->resize(nl + 1);
-        }
-    }
-    return text;
+    return data::readPlantFileHead(path, maxBytes);
 }
 
 } // namespace

@@ -111,3 +111,22 @@ def contract(n, change):
     return "\n".join(rows) + "\n"
 write("impossible.csv", contract(30, lambda i, r: r.__setitem__(11, 140) if i == 5 else None))
 write("simulate_out_of_range.csv", contract(120, lambda i, r: r.__setitem__(5, 95) if i == 3 else None))
+
+# Issue #72. 12. Excel cells holding a time of day alone (a fraction of a day, as Excel's General
+# format writes it: ten significant digits, an exponent below 0.0001), across midnight on line 602.
+def excel_time(t, i):
+    fraction = ((23 * 3600 + 50 * 60 + i) % 86400) / 86400.0
+    return "%.9E" % fraction if 0 < fraction < 1e-4 else "%.10g" % fraction
+write("excel_time_of_day.csv", shift(excel_time, n=1200, delimiter=",", header="Time"))
+
+# 13. A step back of one hour on 3 June, which is no night daylight saving ends in.
+def hour_back_in_june(t, i):
+    base = dt.datetime(2025, 6, 3, 2, 50, 0) + dt.timedelta(seconds=i)
+    return (base - dt.timedelta(hours=1) if i >= 600 else base).strftime("%Y-%m-%d %H:%M:%S")
+write("hour_back_in_june.csv", shift(hour_back_in_june, n=1200))
+
+# 16. A pipe-delimited export; and 1 March written as 29 February 2025 (line 302).
+write("pipe_delimited.csv", shift(iso, delimiter="|"))
+def february_29(t, i):
+    return iso(t, i).replace("2025-03-01", "2025-02-29")
+write("impossible_date.csv", shift(february_29, start=dt.datetime(2025, 2, 28, 23, 55, 0)))

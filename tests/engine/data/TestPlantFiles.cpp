@@ -227,20 +227,25 @@ private Q_SLOTS:
         f.delimiter = ';';
         f.timeCell = [](double t) { return stamp(t, "%Y-%m-%dT%H:%M:%S"); };
         std::string text = historianFile(f, kJune3, 1200, 1.0);
-        // Line 11 gets a stamp that is no date.
-        std::string bad = text;
-        {
-            std::size_t pos = 0;
-            for (int line = 1; line < 11; ++line) {
-                pos = bad.find('\n', pos) + 1;
-            }
-            bad.replace(pos, 19, "2025-06-31T08:00:09");
+        // Line 11 gets a stamp of another form, then one of a day that does not exist.
+        std::size_t line11 = 0;
+        for (int line = 1; line < 11; ++line) {
+            line11 = text.find('\n', line11) + 1;
         }
+        std::string bad = text;
+        bad.replace(line11, 19, "2025-06-03 at 08:09");
         auto r = parsePlantText(bad, "stamps.csv", tagOptions());
         QVERIFY(!r.ok());
-        QVERIFY2(r.error().message().find("stamps.csv:11:1") != std::string::npos,
+        QVERIFY2(r.error().message().find("stamps.csv:11:1: bad time stamp '2025-06-03 at 08:09'") == 0,
                  r.error().message().c_str());
-        QVERIFY(r.error().message().find("bad time stamp") != std::string::npos);
+        bad = text;
+        bad.replace(line11, 19, "2025-06-31T08:00:09");
+        auto impossible = parsePlantText(bad, "stamps.csv", tagOptions());
+        QVERIFY(!impossible.ok());
+        QCOMPARE(
+            impossible.error().message(),
+            std::string("stamps.csv:11:1: impossible date or time '2025-06-31T08:00:09': June has 30 days. "
+                        "The cell is damaged; correct or remove the row"));
         // A duplicate stamp: reported with its line, the row left out, nothing reordered.
         std::string dup;
         {
@@ -262,10 +267,14 @@ private Q_SLOTS:
         QCOMPARE(d->runs[0].rows(), std::size_t(1200));
         QCOMPARE(d->notes.size(), std::size_t(1));
         QVERIFY2(d->notes[0].find("dup.csv:21:1") != std::string::npos, d->notes[0].c_str());
-        // The clock goes back an hour (daylight saving ends): a new run from that line, reported.
+        // The clock goes back an hour in the night daylight saving ends (26 October 2025, 03:00 to
+        // 02:00 in central Europe): a new run from that line, reported.
+        constexpr double kFallBackNight = 1761436800 + 3 * 3600 - 700; // 2025-10-26 02:48:20 local
         FileSpec g = f;
-        g.timeCell = [](double t) { return stamp(t >= kJune3 + 700 ? t - 3600 : t, "%Y-%m-%dT%H:%M:%S"); };
-        auto j = parsePlantText(historianFile(g, kJune3, 1200, 1.0), "dst.csv", tagOptions());
+        g.timeCell = [](double t) {
+            return stamp(t >= kFallBackNight + 700 ? t - 3600 : t, "%Y-%m-%dT%H:%M:%S");
+        };
+        auto j = parsePlantText(historianFile(g, kFallBackNight, 1200, 1.0), "dst.csv", tagOptions());
         QVERIFY2(j.ok(), j ? "" : j.error().message().c_str());
         QCOMPARE(j->runs.size(), std::size_t(2));
         QCOMPARE(j->runs[0].run->splitReason, std::string("clock jump"));
