@@ -618,9 +618,13 @@ Expected<DiscoveryResult> discoverChange(const std::vector<data::SiBatch>& refer
         return options.causes.empty() || (name && std::find(options.causes.begin(), options.causes.end(),
                                                             *name) != options.causes.end());
     };
+    // Every cause is a candidate, those the model already holds too (issue #72): commissioned on
+    // the reference, a mechanism the model carries (a fouling taken in by Extend) has a normal value
+    // there like any other cause, and its change on the new data is judged the same way. Left out,
+    // a model extended by a cause could no longer name that cause when it grew.
     std::vector<Param> remaining;
     for (Param m : properties::mechanismParams()) {
-        if (std::find(commissioned.begin(), commissioned.end(), m) == commissioned.end() && asked(m)) {
+        if (m != Param::phi_X_in_scatter && asked(m)) { // the gauge's scatter: its own rise (scatterChange)
             remaining.push_back(m);
         }
     }

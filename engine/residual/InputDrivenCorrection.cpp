@@ -10,9 +10,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <optional>
-#include <cstdlib>
 
 namespace drytwin::residual {
 
@@ -52,12 +52,6 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-/// A contiguous run of stacked training rows that belongs to one cross-validation fold.
-struct Segment {
-    Eigen::Index begin = 0, end = 0;
-    int fold = 0;
-    std::size_t view = 0; ///< the batch (view) the rows belong to
-};
 
 /// Ridge coefficients of one output from Gram G and right-hand side r; the constant (column 0)
 /// is not penalised.
@@ -163,6 +157,7 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
     // Stack the training rows' basis and targets, remembering each row's fold.
     std::vector<Eigen::RowVectorXd> phiRows;
     std::vector<Eigen::Vector2d> targets;
+    std::vector<std::size_t> rowTime; // each stacked row's row in its batch
     std::vector<Segment> segments;
     const bool batchFolds = views.size() >= 3;
     for (std::size_t i = 0; i < views.size(); ++i) {
@@ -183,6 +178,7 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
                 if (pbmError(*v.batch, *v.pbm, k, e) && row.allFinite()) {
                     phiRows.push_back(row);
                     targets.push_back(e);
+                    rowTime.push_back(k);
                 }
             }
             seg.end = static_cast<Eigen::Index>(phiRows.size());
@@ -332,6 +328,9 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
     val.folds = folds;
     double pbmAbs[kCorrectedOutputs] = {0, 0};
     double chosenPenalty[kCorrectedOutputs] = {0, 0};
+    // Each row's correction from the fit without its fold, κ applied (0 where an output is not
+    // corrected): what the weights on the correction's change are judged on.
+    Eigen::MatrixXd heldOutCorrection = Eigen::MatrixXd::Zero(rows, kCorrectedOutputs);
     for (const auto& s : segments) {
         pbmAbs[0] += y.col(0).segment(s.begin, s.end - s.begin).cwiseAbs().sum();
         pbmAbs[1] += y.col(1).segment(s.begin, s.end - s.begin).cwiseAbs().sum();
@@ -364,26 +363,34 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
         // smallest held-out absolute error. A correction that partly does not carry over from one
         // batch to the next (an unmeasured drift the closed loop's inputs echo) is shrunk, not
         // taken whole; κ = 0 is the PBM itself.
+        // With everyFoldNoWorse, only a κ under which no held-out fold (a batch it had not seen)
+        // comes out worse than the PBM counts.
+        std::vector<double> pbmFold(static_cast<std::size_t>(folds), 0.0);
+        for (const auto& sg : segments) {
+            pbmFold[static_cast<std::size_t>(sg.fold)] += y.col(o).segment(sg.begin, sg.end - sg.begin).cwiseAbs().sum();
+        }
         double shrink = 0;
         best = pbmAbs[o]; // κ = 0
         for (int step = 1; step <= 20; ++step) {
             const double kappa = 0.05 * step;
-            const double abs = (y.col(o) - kappa * bestHeldOut).cwiseAbs().sum();
-            if (abs < best) {
+            std::vector<double> fold(static_cast<std::size_t>(folds), 0.0);
+            for (const auto& sg : segments) {
+                fold[static_cast<std::size_t>(sg.fold)] +=
+                    (y.col(o).segment(sg.begin, sg.end - sg.begin) - kappa * bestHeldOut.segment(sg.begin, sg.end - sg.begin))
+                        .cwiseAbs()
+                        .sum();
+            }
+            bool noFoldWorse = true;
+            for (int f = 0; f < folds; ++f) {
+                noFoldWorse = noFoldWorse && fold[static_cast<std::size_t>(f)] <= pbmFold[static_cast<std::size_t>(f)];
+            }
+            double abs = 0;
+            for (double a : fold) {
+                abs += a;
+            }
+            if (abs < best && (noFoldWorse || !options.everyFoldNoWorse)) {
                 best = abs;
                 shrink = kappa;
-            }
-        }
-        if (std::getenv("DBG_FOLDS")) {
-            for (int f = 0; f < folds; ++f) {
-                double a0 = 0, a1 = 0, n = 0;
-                for (const auto& sg : segments) {
-                    if (sg.fold != f) continue;
-                    a0 += y.col(o).segment(sg.begin, sg.end - sg.begin).cwiseAbs().sum();
-                    a1 += (y.col(o).segment(sg.begin, sg.end - sg.begin) - shrink * bestHeldOut.segment(sg.begin, sg.end - sg.begin)).cwiseAbs().sum();
-                    n += sg.end - sg.begin;
-                }
-                std::fprintf(stderr, "basis %d out %d fold %d rows %.0f pbm %.4f corrected %.4f ratio %.3f kappa %.2f\n", (int)options.basis, o, f, n, a0 / n, a1 / n, a1 / a0, shrink);
             }
         }
         const bool better = shrink > 0;
@@ -395,6 +402,7 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
         }
         chosenPenalty[o] = bestPenalty * double(rows);
         if (better) {
+            heldOutCorrection.col(o) = shrink * bestHeldOut;
             m.m_coefficients.col(o) = shrink * solve(-1, o, bestPenalty * double(rows));
             if (options.agreementAcrossFolds && folds >= 2) {
                 if (m.m_foldCoefficients.cols() != kCorrectedOutputs * folds) {
@@ -413,6 +421,9 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
                 "training data, so the physics model's free run is used as it is.";
         }
     }
+    if (m.used()) {
+        m.m_changeWeights = fitChangeWeights(y, heldOutCorrection, rowTime, segments);
+    }
     if (options.supportGuard && m.used()) {
         // The guard at the smaller penalty of the outputs corrected: the one whose fit leans most
         // on directions the training rows hardly span.
@@ -425,75 +436,6 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
         m.fitSupport(phi, inlier, gram, penalty);
     }
     return m;
-}
-
-void InputDrivenCorrection::fitSupport(const Eigen::MatrixXd& phi, const std::vector<char>& inlier,
-                                       const Eigen::MatrixXd& gram, double penalty) {
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
-    if (eigen.info() != Eigen::Success || !(penalty > 0)) {
-        return; // no guard rather than a wrong one: the correction is still held within its range
-    }
-    m_supportRho = 1.0 / penalty;
-    std::vector<Eigen::Index> kept;
-    for (Eigen::Index i = 0; i < eigen.eigenvalues().size(); ++i) {
-        if (eigen.eigenvalues()(i) > 0.05 * penalty) {
-            kept.push_back(i);
-        }
-    }
-    m_supportDirections.resize(gram.rows(), static_cast<Eigen::Index>(kept.size()));
-    for (std::size_t c = 0; c < kept.size(); ++c) {
-        const double s = eigen.eigenvalues()(kept[c]);
-        m_supportDirections.col(static_cast<Eigen::Index>(c)) =
-            eigen.eigenvectors().col(kept[c]) * std::sqrt(std::max(0.0, m_supportRho - 1.0 / (s + penalty)));
-    }
-    // The reference leverage and the correction's range, on the training rows (every few rows
-    // for the quantile: a few thousand rows fix it well enough).
-    const auto rows = phi.rows();
-    const Eigen::Index stride = std::max<Eigen::Index>(1, rows / 4000);
-    std::vector<double> leverages;
-    Eigen::MatrixXd sample(0, phi.cols());
-    std::vector<Eigen::Index> sampled;
-    for (Eigen::Index r = 0; r < rows; r += stride) {
-        if (inlier[static_cast<std::size_t>(r)]) {
-            sampled.push_back(r);
-        }
-    }
-    sample.resize(static_cast<Eigen::Index>(sampled.size()), phi.cols());
-    for (std::size_t i = 0; i < sampled.size(); ++i) {
-        sample.row(static_cast<Eigen::Index>(i)) = phi.row(sampled[i]);
-    }
-    const Eigen::VectorXd h = leverageOf(sample);
-    leverages.assign(h.data(), h.data() + h.size());
-    auto& val = m_validation;
-    if (leverages.empty()) {
-        m_supportDirections.resize(0, 0);
-        return;
-    }
-    const auto at = static_cast<std::ptrdiff_t>(
-        std::clamp(m_options.supportQuantile, 0.0, 1.0) * double(leverages.size() - 1));
-    std::nth_element(leverages.begin(), leverages.begin() + at, leverages.end());
-    val.supportLeverage = leverages[static_cast<std::size_t>(at)];
-    // The range of the correction over every inlier training row, as correct() forms it.
-    const Eigen::MatrixXd out = phi * m_coefficients;
-    Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
-    Eigen::Vector2d high = -low;
-    for (Eigen::Index r = 0; r < rows; ++r) {
-        if (inlier[static_cast<std::size_t>(r)]) {
-            low = low.cwiseMin(out.row(r).transpose());
-            high = high.cwiseMax(out.row(r).transpose());
-        }
-    }
-    val.correctionLow = low;
-    val.correctionHigh = high;
-}
-
-Eigen::VectorXd InputDrivenCorrection::leverageOf(const Eigen::MatrixXd& standardisedBasis) const {
-    if (m_supportDirections.size() == 0) {
-        return Eigen::VectorXd::Zero(standardisedBasis.rows());
-    }
-    const Eigen::MatrixXd projected = standardisedBasis * m_supportDirections;
-    return (m_supportRho * standardisedBasis.rowwise().squaredNorm() - projected.rowwise().squaredNorm())
-        .cwiseMax(0.0);
 }
 
 void InputDrivenCorrection::correct(const data::SiBatch& batch, const physics::SimulationResult& pbm,
@@ -519,42 +461,7 @@ void InputDrivenCorrection::correct(const data::SiBatch& batch, const physics::S
     if (inRange.size() == out.rows()) {
         out.array().colwise() *= inRange.array();
     }
-    if (m_foldCoefficients.size() > 0) {
-        // The part of the correction the fits without each fold agree on: cut by its jackknife
-        // standard error across the folds, so that a correction resting on one batch is dropped.
-        const Eigen::MatrixXd byFold = phi * m_foldCoefficients;
-        const auto folds = static_cast<double>(m_foldCoefficients.cols() / kCorrectedOutputs);
-        for (Eigen::Index k = 0; k < out.rows(); ++k) {
-            for (int o = 0; o < kCorrectedOutputs; ++o) {
-                double mean = 0, spread = 0;
-                for (Eigen::Index f = o; f < byFold.cols(); f += kCorrectedOutputs) {
-                    mean += byFold(k, f) / folds;
-                }
-                for (Eigen::Index f = o; f < byFold.cols(); f += kCorrectedOutputs) {
-                    spread += (byFold(k, f) - mean) * (byFold(k, f) - mean);
-                }
-                const double standardError = std::sqrt((folds - 1) / folds * spread);
-                const double c = out(k, o);
-                if (std::getenv("AGREE_SOFT")) {
-                    out(k, o) = std::copysign(std::max(0.0, std::abs(c) - m_options.agreementZ * standardError), c);
-                } else {
-                    const double noise = m_options.agreementZ * m_options.agreementZ * standardError * standardError;
-                    out(k, o) = c * c * c / std::max(c * c + noise, 1e-300);
-                }
-            }
-        }
-    }
-    if (m_supportDirections.size() > 0) {
-        const Eigen::VectorXd h = leverageOf(phi);
-        const auto& val = m_validation;
-        for (Eigen::Index k = 0; k < out.rows(); ++k) {
-            const double weight = h(k) > val.supportLeverage ? val.supportLeverage / h(k) : 1.0;
-            for (int o = 0; o < kCorrectedOutputs; ++o) {
-                out(k, o) = std::clamp(weight * out(k, o), std::min(0.0, val.correctionLow(o)),
-                                       std::max(0.0, val.correctionHigh(o)));
-            }
-        }
-    }
+    applyGuards(phi, out);
     for (Eigen::Index k = 0; support && k < out.rows(); ++k) {
         if (std::isfinite(out(k, 0)) && fitted(k, 0) != 0) {
             (*support)[static_cast<std::size_t>(k)] = out(k, 0) / fitted(k, 0);

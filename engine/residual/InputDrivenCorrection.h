@@ -99,6 +99,11 @@ struct InputDrivenOptions {
     /// correction learnt from other conditions. false: the correction holds out to the clip
     /// range (model files before 2026-12-08).
     bool rangeGuard = true;
+    /// Issue #75: the share κ of the correction kept is the one with the smallest cross-validated
+    /// error among those under which no held-out fold (a batch the fit had not seen, where there
+    /// are three or more) comes out worse than the PBM: never worse on a batch it had not seen,
+    /// not merely better on the whole. false: the smallest error over all folds together.
+    bool everyFoldNoWorse = true;
     Status validate() const;
 };
 
@@ -146,6 +151,11 @@ public:
     /// correction cannot form keep the PBM's values).
     physics::SimulationResult corrected(const data::SiBatch& batch,
                                         const physics::SimulationResult& pbm) const;
+    /// @brief The share of the correction's own change over @p horizon steps that predicted the
+    /// PBM's error's change on rows of the training data it was not fitted on (X_out, T_out; 1 for
+    /// files before 2026-12-08): the forecasts take back the rest, so that a correction whose
+    /// changes do not hold forward in time leaves the PBM with its error held.
+    Eigen::Vector2d changeWeight(int horizon) const;
     /// @brief @p pbm with the correction formed from another run of the same rows added: the
     /// inputs of @p sourceBatch and the proxies of @p sourcePbm (the MPC forms it from a run with
     /// the hot air held, so that the correction carries no path from the hot air; Forecasters.cpp).
@@ -184,6 +194,9 @@ private:
     /// penalty @p penalty (absolute): the directions, ρ and the reference leverage.
     void fitSupport(const Eigen::MatrixXd& phi, const std::vector<char>& inlier, const Eigen::MatrixXd& gram,
                     double penalty);
+    /// The guards of issue #75 (the fits without each fold, leverage, range) on the fitted
+    /// correction @p out of the standardised basis rows @p phi, in place.
+    void applyGuards(const Eigen::MatrixXd& phi, Eigen::MatrixXd& out) const;
     int inputCount() const;
     Eigen::Index featureCountFor(int inputs) const;
 
@@ -199,6 +212,8 @@ private:
     double m_supportRho = 0;
     /// The fits without each fold (κ applied): column 2f + o is fold f's output o. Empty: no cut.
     Eigen::MatrixXd m_foldCoefficients;
+    /// μ_H per horizon of input_driven::kChangeHorizons (X_out, T_out); empty: 1 everywhere.
+    std::vector<Eigen::Vector2d> m_changeWeights;
     double m_stepS = 1.0;
     InputDrivenValidation m_validation;
 };

@@ -1,6 +1,7 @@
 // How the input-driven correction is stored in model files (JSON), and read back.
 #include "residual/EigenJson.h"
 #include "residual/InputDrivenCorrection.h"
+#include "residual/InputDrivenInternal.h"
 
 #include <nlohmann/json.hpp>
 
@@ -40,6 +41,13 @@ std::string InputDrivenCorrection::toJson() const {
                        {"temperature_used", v.temperatureUsed},
                        {"note", v.note},
                        {"basis_choice", v.basisChoice}};
+    if (!m_changeWeights.empty()) {
+        nlohmann::json weights = nlohmann::json::array();
+        for (const auto& w : m_changeWeights) {
+            weights.push_back({w(0), w(1)});
+        }
+        j["change_weights"] = {{"horizons_steps", input_driven::kChangeHorizons}, {"weights", weights}};
+    }
     if (m_foldCoefficients.size() > 0) {
         j["agreement"] = {{"z", o.agreementZ}, {"fold_coefficients", matrixToJson(m_foldCoefficients)}};
     }
@@ -105,6 +113,19 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::strin
         val.note = v.at("note").get<std::string>();
         val.basisChoice = v.value("basis_choice", std::string()); // files before the choice have none
         // Files before 2026-12-08 have no support guard and no cut: their correction stays as fitted.
+        if (j.contains("change_weights")) {
+            const auto& c = j.at("change_weights");
+            if (c.at("horizons_steps").get<std::vector<int>>() != input_driven::kChangeHorizons) {
+                return Error{ErrorKind::BadInput, "input_driven.change_weights",
+                             "horizons differ from the ones this version fits"};
+            }
+            for (const auto& w : c.at("weights")) {
+                m.m_changeWeights.emplace_back(w.at(0).get<double>(), w.at(1).get<double>());
+            }
+            if (m.m_changeWeights.size() != input_driven::kChangeHorizons.size()) {
+                return Error{ErrorKind::BadInput, "input_driven.change_weights", "one weight pair per horizon"};
+            }
+        }
         o.agreementAcrossFolds = j.contains("agreement");
         if (o.agreementAcrossFolds) {
             o.agreementZ = j.at("agreement").at("z").get<double>();

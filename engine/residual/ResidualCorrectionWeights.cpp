@@ -247,10 +247,48 @@ Expected<ResidualModel> ResidualModel::trainOnBase(const std::vector<BatchView>&
         scan(best, 0.05, 0.005);
         return best;
     };
+    // Issue #75: a blend of the references or a learnt share is a parameter fitted on the folds;
+    // the references themselves (s = 0 or 1, κ = 0) are not. Each free parameter must earn its
+    // place by Akaike's criterion for absolute errors (Laplace likelihood: 2 n log SAE + 2 k),
+    // with n the independent forecasts among the rows: H-step forecasts from consecutive origins
+    // share H − 1 steps, so about rows / H. At 120 steps a blend 8 % towards holding the last
+    // measurement, chosen on the folds for a gain of a few parts in ten thousand, cost 0.7 % on
+    // an unseen data set against the PBM with its error held.
+    const auto sumAbsolute = [](const std::vector<std::array<float, 3>>& rows, double sv, double kv) {
+        double sum = 0;
+        for (const auto& r : rows) {
+            sum += std::abs(double(r[2]) - sv * double(r[0]) - kv * double(r[1]));
+        }
+        return sum;
+    };
+    const auto parsimonious = [&](const std::vector<std::array<float, 3>>& rows, Eigen::Vector2d fitted,
+                                  int horizon) -> Eigen::Vector2d {
+        if (rows.empty() || !options.parsimoniousWeights) {
+            return fitted;
+        }
+        const double n = std::max(1.0, static_cast<double>(rows.size()) / std::max(1, horizon));
+        const auto aic = [&](double sv, double kv) {
+            const bool blend = sv > 0 && sv < 1, learnt = kv > 0;
+            const double sae = std::max(sumAbsolute(rows, sv, kv), 1e-300);
+            return 2 * n * std::log(sae) + 2.0 * (int(blend) + int(learnt));
+        };
+        Eigen::Vector2d best(0, 0);
+        double bestAic = aic(0, 0);
+        std::vector<Eigen::Vector2d> tries{{1, 0}, {fitted(0), 0}, {0, fitted(1)}, {1, fitted(1)}, fitted};
+        for (const auto& c : tries) {
+            if (const double a = aic(c(0), c(1)); a < bestAic) {
+                bestAic = a;
+                best = c;
+            }
+        }
+        return best;
+    };
     std::vector<std::array<Eigen::Vector2d, kOutputs>> chosen(kShrinkGrid.size());
     parallelFor(kShrinkGrid.size() * kOutputs, [&](std::size_t i) {
         const std::size_t g = i / kOutputs, j = i % kOutputs;
-        chosen[g][j] = options.correctionByAbsoluteError ? solveAbsolute(samples[g][j]) : solve(normal[g][j]);
+        chosen[g][j] = options.correctionByAbsoluteError
+                           ? parsimonious(samples[g][j], solveAbsolute(samples[g][j]), kShrinkGrid[g])
+                           : solve(normal[g][j]);
     });
     auto m = trainOnce(training, options);
     if (!m) {

@@ -145,13 +145,35 @@ std::vector<HybridPrediction> ResidualModel::forecastFrom(const std::vector<Batc
         // The realised-weight guard needs the forecasts' history, which one origin does not have:
         // the MPC's forecasts use the trained κ_H alone.
         std::vector<physics::SimulationResult> runs;
-        auto out = forecastFrom(correctedViews(views, runs), origin, horizon);
+        const auto corrected = correctedViews(views, runs);
+        auto out = forecastFrom(corrected, origin, horizon);
         for (std::size_t c = 0; c < out.size(); ++c) {
             BatchView ahead = views[c];
             ahead.rows = {origin + 1, origin + 1 + out[c].xOutPct.size()};
-            if (ahead.rows.end <= ahead.pbm->xOutDb.size()) {
-                residualAgainstPbm(ahead, out[c]);
+            if (ahead.rows.end > ahead.pbm->xOutDb.size()) {
+                continue;
             }
+            // The share of the correction's own change its cross-validation did not trust is taken
+            // back (issue #75), as the realised weights start from for the recorded forecasts.
+            const auto& raw = *views[c].pbm;
+            const auto& base = *corrected[c].pbm;
+            const auto correctionAt = [&](std::size_t k) -> Eigen::Vector2d {
+                return {units::dryToWetPct(base.xOutDb[k]) - units::dryToWetPct(raw.xOutDb[k]),
+                        base.tOutK[k] - raw.tOutK[k]};
+            };
+            const Eigen::Vector2d atOrigin = correctionAt(origin);
+            for (std::size_t i = 0; i < out[c].xOutPct.size() && atOrigin.allFinite(); ++i) {
+                const int h = static_cast<int>(i) + 1;
+                const Eigen::Vector2d untrusted =
+                    (Eigen::Vector2d::Ones() - m_inputDriven->changeWeight(h))
+                        .cwiseProduct(Eigen::Vector2d::Ones() - referenceChangeAt(h))
+                        .cwiseProduct(correctionAt(origin + 1 + i) - atOrigin);
+                if (untrusted.allFinite()) {
+                    out[c].xOutPct[i] -= untrusted(0);
+                    out[c].tOutC[i] -= untrusted(1);
+                }
+            }
+            residualAgainstPbm(ahead, out[c]);
         }
         return out;
     }

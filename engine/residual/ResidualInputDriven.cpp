@@ -203,7 +203,9 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
                     takeBack[i] = 0;
                 }
             }
-            weighOnTop(reference, takeBack, 0.0);
+            // Prior: the share of the change the correction's cross-validation did not trust.
+            const double trusted = m_inputDriven ? m_inputDriven->changeWeight(static_cast<int>(horizon))(j) : 1.0;
+            weighOnTop(reference, takeBack, 1.0 - trusted);
         }
         // 2. The learnt correction on top.
         std::vector<double> combined = reference;

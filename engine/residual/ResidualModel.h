@@ -79,6 +79,11 @@ struct ResidualOptions {
     /// 5 × 4,000 demo set the summed correction of a new batch reached 15 % wb before κ_H at 180
     /// steps, five times anything validated (moisture skill 1.049 there). false: unbounded.
     bool boundLearntByValidation = true;
+    /// With correctionByAbsoluteError: s_H strictly between the references and κ_H > 0 are kept
+    /// only where they earn their place by Akaike's criterion over the folds' independent
+    /// forecasts (about rows / H at horizon H); else the better reference, or no learnt part.
+    /// false: the fitted values as they are (model files before 2026-12-08; training only).
+    bool parsimoniousWeights = true;
     bool controlConsistentWeights = true; ///< ω of Eq. 29 (else W = I)
     bool stabilityConstraint = true;      ///< A with a certificate (Eq. 30)
     StabilityMethod stabilityMethod = StabilityMethod::Constrained;

@@ -2,9 +2,11 @@
 // sensors: the model is commissioned on healthy data of one seed and judged on data of another.
 // The seeds (41-44) are not the study's (101-103 and their references 7101-7103).
 #include "DiscoveryTestSupport.h"
+#include "calibration/Calibration.h"
 #include "discovery/Discovery.h"
 #include "plant/PlantExport.h"
 #include "plant/VirtualPlant.h"
+#include "properties/Parameters.h"
 #include "workflow/ResultArchive.h"
 #include "workflow/Session.h"
 
@@ -284,6 +286,63 @@ private Q_SLOTS:
         QVERIFY2(drifts(*r), qPrintable(QString::fromStdString(r->notes.empty() ? std::string("no notes")
                                                                                 : r->notes.front())));
         QVERIFY(!drifts(judge(plantData(47)))); // the healthy reference of the other tests: no such note
+    }
+
+    /// A cause the model already holds (Extend took it in) is a parameter whose change is judged
+    /// like any other (issue #72): the model carries the demo's three extensions, the reference is
+    /// healthy, and in the data one of them has grown. Before, the extended model left its own
+    /// causes out of the candidates and said "unexplained structure" where the paper's model named
+    /// the fouling.
+    void aCauseTheModelHoldsIsJudgedLikeAnyOther_data() {
+        QTest::addColumn<int>("mechanism");
+        QTest::addColumn<double>("strength");
+        QTest::addColumn<QString>("cause");
+        QTest::newRow("heat_transfer_fouling")
+            << int(Mechanism::HeatTransferFouling) << 0.3 << QStringLiteral("heat_transfer_fouling");
+        // A meter lag the model holds takes up the distributed line's own outlet mixing when it
+        // is commissioned (37 s on this reference, its parts 0-77 s): a 60 s lag lies within that
+        // normal spread, a 120 s one does not.
+        QTest::newRow("moisture_meter_lag")
+            << int(Mechanism::MoistureMeterLag) << 120.0 << QStringLiteral("moisture_meter_lag");
+        QTest::newRow("tube_wall_heat_loss")
+            << int(Mechanism::TubeWallHeatLoss) << 0.3 << QStringLiteral("tube_wall_heat_loss");
+    }
+    void aCauseTheModelHoldsIsJudgedLikeAnyOther() {
+        QFETCH(int, mechanism);
+        QFETCH(double, strength);
+        QFETCH(QString, cause);
+        // As Extend leaves a calibrated model after the demo's findings.
+        static const hybrid::HybridModel calibrated = [] {
+            hybrid::HybridModel m;
+            calibration::CalibrationOptions co;
+            co.rows = data::calibrationSubset(healthyReference(), 10, 300);
+            auto c = calibration::calibrate(healthyReference(), m.parameters, co);
+            if (!c) {
+                qFatal("%s", c.error().message().c_str());
+            }
+            m.parameters = c->parameters;
+            m.calibration = hybrid::CalibrationRecord{};
+            return m;
+        }();
+        hybrid::HybridModel extended = calibrated;
+        for (const auto& [name, value] : {std::pair{"heat_transfer_fouling", 0.1},
+                                          {"moisture_meter_lag", 20.0},
+                                          {"tube_wall_heat_loss", 0.02}}) {
+            const auto param = properties::mechanismParam(name);
+            QVERIFY(param.has_value());
+            extended.parameters[*param] = value;
+            hybrid::MechanismValue held;
+            held.value = value;
+            held.unit = properties::info(*param).unit;
+            held.ci95Low = held.ci95High = value;
+            extended.mechanisms[name] = held;
+        }
+        auto r = discovery::discoverChange(
+            healthyReference(), plantData(48, {{static_cast<Mechanism>(mechanism), strength}}), extended);
+        QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
+        QVERIFY2(namesFirst(*r, cause.toStdString()), qPrintable(story(*r)));
+        const auto& f = r->findings.front();
+        QVERIFY2(f.hasReference && f.value > f.referenceCi95High, qPrintable(story(*r)));
     }
 
     void healthyPairNamesNothing() {
