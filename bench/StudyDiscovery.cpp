@@ -357,6 +357,9 @@ int main(int argc, char** argv) {
         } else if (a == "--spread-all-parts") { // against a reference: every batch in the normal spread, as
                                                 // before 2026-11-29
             discoveryOptions.normalSpreadWithinReferenceConditions = false;
+        } else if (a == "--later-cause-by-direction") { // against a reference: a cause after another
+                                                        // judged as the first, as before 2026-12-08
+            discoveryOptions.laterCauseImprovesEveryOutput = false;
         } else if (a == "--share-over-every-channel") { // a downstream cause's share over every
                                                         // channel only, as before 2026-11-29
             discoveryOptions.shareOnTheChannelsItActsOn = false;
@@ -403,7 +406,7 @@ int main(int argc, char** argv) {
                         "[--mechanism NAME] [--verbose] [--seeds FIRST] [--null-seeds FIRST] "
                         "[--min-explained SHARE] [--unimproved-alpha A] [--candidates N] "
                         "[--evaluations N] [--oracle] [--reference] [--reference-batches N] [--no-structure] "
-                        "[--structure-extrapolates] [--spread-all-parts] [--share-over-every-channel] "
+                        "[--structure-extrapolates] [--spread-all-parts] [--share-over-every-channel] [--later-cause-by-direction] "
                         "[--cause-test-screen-only] "
                         "[--keep-taken-up] "
                         "[--lag-from-start] [--judge-every-batch] [--onset-in-every-batch] [--size-rule] "

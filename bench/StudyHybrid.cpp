@@ -221,7 +221,7 @@ int partUnseen(bool quick) {
 bool designSets = false;
 int lstmEpochsForStudy = 30;
 /// --guards: which of the input-driven correction's guards of issue #75 are on (for comparison).
-std::string guards = "support,agreement,range,within,every-fold,prior-h,take-back,aic";
+std::string guards = "support,agreement,range,within,every-fold,take-back,bic"; // the defaults
 
 std::vector<DataSetSpec> neverWorseSets() {
     using K = plant::PlantKind;
@@ -285,7 +285,8 @@ int partNeverWorse(bool quick) {
         train.residual.inputDrivenOptions.everyFoldNoWorse = guards.find("every-fold") != std::string::npos;
         train.residual.realisedPriorPerHorizon = guards.find("prior-h") != std::string::npos;
         train.residual.realisedCorrectionChange = guards.find("take-back") != std::string::npos;
-        train.residual.parsimoniousWeights = guards.find("aic") != std::string::npos;
+        train.residual.parsimoniousWeights = guards.find("bic") != std::string::npos;
+        train.residual.trainedHeldErrorDecay = guards.find("decay") != std::string::npos;
         if (auto r = session.train(train); !r) {
             fail(s.name + " train", r.error());
         }

@@ -85,6 +85,9 @@ ZH = {
     "inconsistent": "各批次不一致",
     "not constant": "批次内不恒定",
     "within normal range": "在正常范围内",
+    "not on every output": "并非每个输出都改善",
+    "named after another cause, it must lower the error of every output it acts on, and on one it does not: what is left there is not this cause's":
+        "它是在另一个原因之后提出的，必须降低它所作用的每个输出的误差，而在其中一个输出上没有做到：那里剩下的误差不是这个原因造成的",
     "below the floor": "低于实用下限",
     "no held-out gain": "留出集无增益",
     "its look-alike": "是其相似原因",
@@ -606,6 +609,8 @@ ZH = {
     "Two detectors commissioned on healthy runs of this line: the physics model's error, and a dynamic PCA monitor of the screens' signals. Each alarms when the line leaves its normal (1 % chance of a false alarm over the session)": "两个检测器在本产线的健康运行数据上调试：物理模型误差，以及画面信号的动态 PCA 监控。产线偏离正常状态时各自报警（整个会话的误报概率为 1 %）",
     "T² of the model's error": "模型误差的 T²",
     "Line monitor unavailable: %1": "产线监控不可用：%1",
+    "Line monitor: commissioning on healthy runs of this scenario (a few seconds); it then catches up with the line.":
+        "产线监控：正在用本场景的健康运行进行调试（几秒钟），随后追上产线。",
     "Line monitor: normal (as on its commissioning runs).": "产线监控：正常（与调试运行一致）。",
     "the model's error": "模型误差",
     "the screens' signals (PCA)": "画面信号（PCA）",

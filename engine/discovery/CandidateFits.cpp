@@ -286,7 +286,8 @@ Expected<SelectionRound::Fit> SelectionRound::fittedFromOnset(const Candidate& c
 Expected<Confirmation> SelectionRound::confirm(const Candidate& cand, const Fit& fit, int k) const {
     return confirmCandidate({m_pr, cand, fit.parameters, fit.onset, m_options.gainAlpha / k,
                              m_prepared.meanBatchHours, m_model.held, m_stack, m_nuisanceCols,
-                             columnOf(cand.parameter), m_model.nuisance, m_model.sims});
+                             columnOf(cand.parameter), m_model.nuisance, m_model.sims,
+                             !m_result.findings.empty()});
 }
 
 /// A fitted cause (from its onset where it has one), the k-th tried judged at level α/k.

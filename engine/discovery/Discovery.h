@@ -158,6 +158,14 @@ struct DiscoveryOptions {
     /// size wrongly on one output (Specificity.cpp, responseMismatch). false: the single-data-set
     /// rule (no output made significantly worse), as before 2026-11-27.
     bool referenceJudgesDirection = true;
+    /// Against a reference period, a cause tried after another was named must lower the held-out
+    /// error of every output it acts on (one-sided, at laterCauseAlpha, the causes named before it
+    /// refitted with it), not merely point the way the outputs changed: a second finding sends a
+    /// technician after something that is fine when it is only what is left of the first cause's
+    /// imperfect form (a wall loss followed by a transport time, fouling by gas coupling; issue
+    /// #72). false: judged as the first cause is, as before 2026-12-08.
+    bool laterCauseImprovesEveryOutput = true;
+    double laterCauseAlpha = 0.05;
     /// A cause a batch does not change (a gauge's offset, the wall's loss, the gas phase's
     /// coupling) must be estimated alike on the first and the second half of the batches
     /// (Specificity.cpp, `not_constant`). false: not checked, as before 2026-11-26.

@@ -23,6 +23,9 @@ Status DiscoveryOptions::validate() const {
     if (!(falseAlarmRate > 0 && falseAlarmRate < 0.5)) {
         return invalidOption("false-alarm rate", "must lie in (0, 0.5)");
     }
+    if (!(laterCauseAlpha > 0 && laterCauseAlpha <= 1)) {
+        return invalidOption("later-cause level", "must lie in (0, 1]");
+    }
     if (!(unimprovedChannelAlpha > 0 && unimprovedChannelAlpha <= 1)) {
         return invalidOption("unimproved-channel level", "must lie in (0, 1]");
     }

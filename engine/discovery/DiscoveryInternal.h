@@ -301,6 +301,7 @@ struct SpecificityInput {
     const std::vector<int>& nuisance;
     int atCol;
     const std::vector<physics::SimulationResult>& currentSims; ///< the model without it, every row
+    bool afterOtherCauses = false; ///< another cause was named before it (DiscoveryOptions::laterCause…)
 };
 /// Whether a cause is specific: no channel made worse, above its floor, consistent part by part
 /// and between operating regions, and (a meter lag) not the line's own dynamics. code is "" when
@@ -348,6 +349,7 @@ struct ConfirmationInput {
     int roundCol;                                              ///< the candidate's column in it
     const std::vector<Param>& nuisance;                        ///< the nuisance parameters
     const std::vector<physics::SimulationResult>& currentSims; ///< the model without it, every row
+    bool afterOtherCauses = false; ///< another cause was named before it
 };
 struct Confirmation {
     std::optional<Finding> finding; ///< set when it is named

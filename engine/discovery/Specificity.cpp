@@ -387,7 +387,32 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
         }
         worse = worsenedChannel(in.before, in.after, in.pr.options, actsOn);
     }
-    if (worse >= 0 || notImproved >= 0) {
+    // A cause after another against a reference: every output it acts on must be better for it.
+    int notBetterLater = -1;
+    double notBetterP = 1;
+    if (in.pr.reference && in.afterOtherCauses && in.pr.options.laterCauseImprovesEveryOutput && worse < 0) {
+        for (int c = 0; c < 4 && notBetterLater < 0; ++c) {
+            const auto& ch = changes[static_cast<std::size_t>(c)];
+            if (!actsOn[static_cast<std::size_t>(c)] || !ch.measured) {
+                continue;
+            }
+            const double pBetter = 1 - ch.pWorse;
+            if (!(pBetter < in.pr.options.laterCauseAlpha)) {
+                notBetterLater = c;
+                notBetterP = pBetter;
+            }
+        }
+    }
+    if (notBetterLater >= 0) {
+        const auto& ch = changes[static_cast<std::size_t>(notBetterLater)];
+        const double w = std::max(1e-12, channelWeight(in.pr.options.weights, notBetterLater));
+        out.code = "not_on_every_output";
+        out.why = format("after the causes named before it, it acts on %s but does not lower its held-out "
+                         "error clearly (rms %.3g to %.3g %s, p = %.2g, needs < %.2g): what is left there is "
+                         "not this cause's",
+                         kChannelName[notBetterLater], std::sqrt(ch.mseBefore / w), std::sqrt(ch.mseAfter / w),
+                         kChannelUnit[notBetterLater], notBetterP, in.pr.options.laterCauseAlpha);
+    } else if (worse >= 0 || notImproved >= 0) {
         const int c = worse >= 0 ? worse : notImproved;
         const auto& ch = changes[static_cast<std::size_t>(c)];
         const double w = std::max(1e-12, channelWeight(in.pr.options.weights, c));

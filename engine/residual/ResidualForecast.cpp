@@ -225,7 +225,14 @@ std::vector<HybridPrediction> ResidualModel::forecastFrom(const std::vector<Batc
         for (Eigen::Index c = 0; c < nv; ++c) {
             const BatchView& v = views[static_cast<std::size_t>(c)];
             auto& o = out[static_cast<std::size_t>(c)];
-            const Eigen::Vector2d base = levelOf(v, origin, target);
+            Eigen::Vector2d base = levelOf(v, origin, target);
+            if (velocity()) {
+                // The trained share of the held error let go (issue #75).
+                Eigen::Vector2d held;
+                if (observedResidual(*v.batch, *v.pbm, origin, held(0), held(1))) {
+                    base -= decayAt(static_cast<int>(i) + 1).cwiseProduct(held);
+                }
+            }
             o.residualXPct[i] = e(0, c) * m_eScale(0) + base(0);
             o.residualTC[i] = e(1, c) * m_eScale(1) + base(1);
             o.xOutPct[i] = units::dryToWetPct(v.pbm->xOutDb[target]) + o.residualXPct[i]; // Eq. (21)

@@ -107,10 +107,26 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
                                          const std::vector<double>& learnedX,
                                          const std::vector<double>& learnedT, HybridPrediction& p,
                                          const physics::SimulationResult* rawPbm) const {
-    if (!velocity() || m_options.realisedWeightHalfLifeSteps <= 0) {
+    if (!velocity()) {
         return;
     }
     const std::size_t count = v.rows.size();
+    const Eigen::Vector2d trainedDecay = decayAt(static_cast<int>(horizon));
+    if (m_options.realisedWeightHalfLifeSteps <= 0) {
+        // No realised weights: the trained share of the held error let go, as it is.
+        for (std::size_t i = 0; i < count && trainedDecay.any(); ++i) {
+            const std::size_t k = v.rows.begin + i;
+            Eigen::Vector2d held;
+            if (k < horizon || !observedResidual(*v.batch, *v.pbm, k - horizon, held(0), held(1))) {
+                continue;
+            }
+            p.residualXPct[i] -= trainedDecay(0) * held(0);
+            p.residualTC[i] -= trainedDecay(1) * held(1);
+            p.xOutPct[i] -= trainedDecay(0) * held(0);
+            p.tOutC[i] -= trainedDecay(1) * held(1);
+        }
+        return;
+    }
     const Eigen::Vector2d trainedBlend = referenceChangeAt(static_cast<int>(horizon));
     // Per row and output, read once for both outputs: the measured error, the error held at the
     // forecast's origin and the PBM's change since.
@@ -218,7 +234,7 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
             for (std::size_t i = 0; i < count; ++i) {
                 minusHeld[i] = -held[i];
             }
-            weighOnTop(combined, minusHeld, 0.0);
+            weighOnTop(combined, minusHeld, trainedDecay(j));
         }
         for (std::size_t i = 0; i < count; ++i) {
             const std::size_t k = v.rows.begin + i;

@@ -115,6 +115,9 @@ std::string ResidualModel::toJson() const {
     j["correction_weight_horizons"] = m_shrinkHorizons;
     j["correction_weights"] = pairsToJson(m_shrink);
     j["reference_change_by_horizon"] = pairsToJson(m_referenceByHorizon);
+    if (!m_decayByHorizon.empty()) {
+        j["held_error_decay_by_horizon"] = pairsToJson(m_decayByHorizon);
+    }
     if (!m_learntBound.empty()) {
         j["learnt_bound_by_horizon"] = pairsToJson(m_learntBound); // [% wb, °C]
     }
@@ -238,9 +241,11 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
             m.m_referenceByHorizon =
                 pairsFromJson(j.value("reference_change_by_horizon", nlohmann::json::array()));
             m.m_learntBound = pairsFromJson(j.value("learnt_bound_by_horizon", nlohmann::json::array()));
+            m.m_decayByHorizon = pairsFromJson(j.value("held_error_decay_by_horizon", nlohmann::json::array()));
             if (m.m_shrink.size() != m.m_shrinkHorizons.size() ||
                 (!m.m_referenceByHorizon.empty() &&
                  m.m_referenceByHorizon.size() != m.m_shrinkHorizons.size()) ||
+                (!m.m_decayByHorizon.empty() && m.m_decayByHorizon.size() != m.m_shrinkHorizons.size()) ||
                 (!m.m_learntBound.empty() && m.m_learntBound.size() != m.m_shrinkHorizons.size()) ||
                 !std::is_sorted(m.m_shrinkHorizons.begin(), m.m_shrinkHorizons.end())) {
                 return Error{ErrorKind::BadInput, "residual model",

@@ -412,9 +412,10 @@ private Q_SLOTS:
             const bool stopped = i >= 1000 && i < 1300;
             char line[256];
             std::snprintf(
-                line, sizeof line, "2025-06-03 %02d:%02d:%02d;%.2f;%.1f;%.2f;24,1;55,3;%.2f;55,2;%s\n",
+                line, sizeof line, "2025-06-03 %02d:%02d:%02d;%.2f;%.1f;%.2f;%.2f;%.2f;%.2f;%.2f;%s\n",
                 8 + i / 3600, (i / 60) % 60, i % 60, 170 + 5 * std::sin(i / 300.0), stopped ? 0.0 : 6200.0,
-                22 + 0.4 * std::sin(i / 500.0), 13 + 0.2 * std::sin(i / 400.0), stopped ? "STOP" : "RUN");
+                22 + 0.4 * std::sin(i / 500.0), 24.1 + 0.3 * std::sin(i / 700.0), 55.3 + std::sin(i / 900.0),
+                13 + 0.2 * std::sin(i / 400.0), 55.2 + 0.8 * std::sin(i / 350.0), stopped ? "STOP" : "RUN");
             std::string l(line);
             // Decimal commas everywhere, as a German or Chinese Excel writes them.
             for (std::size_t k = l.find('.'); k != std::string::npos; k = l.find('.', k)) {

@@ -398,6 +398,7 @@ QString rejectionShortText(const std::string& code) {
         {"inconsistent", QT_TRANSLATE_NOOP("DiscoverPanel", "inconsistent")},
         {"not_constant", QT_TRANSLATE_NOOP("DiscoverPanel", "not constant")},
         {"within_normal_spread", QT_TRANSLATE_NOOP("DiscoverPanel", "within normal range")},
+        {"not_on_every_output", QT_TRANSLATE_NOOP("DiscoverPanel", "not on every output")},
         {"below_floor", QT_TRANSLATE_NOOP("DiscoverPanel", "below the floor")},
         {"no_held_out_gain", QT_TRANSLATE_NOOP("DiscoverPanel", "no held-out gain")},
         {"channels", QT_TRANSLATE_NOOP("DiscoverPanel", "its look-alike")},
@@ -421,6 +422,10 @@ QString rejectionText(const std::string& code) {
     }
     if (code == "within_normal_spread") {
         return DiscoverPanel::tr("its value lies within the reference period's normal range: not a change");
+    }
+    if (code == "not_on_every_output") {
+        return DiscoverPanel::tr("named after another cause, it must lower the error of every output it acts on, "
+                                 "and on one it does not: what is left there is not this cause's");
     }
     if (code == "below_floor") {
         return DiscoverPanel::tr("it is below what the instruments can tell (practical floor)");

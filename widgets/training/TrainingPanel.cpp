@@ -735,7 +735,10 @@ void TrainingPanel::showFrame() {
             .arg(f.score.offSpecPct, 0, 'f', 1)
             .arg(f.score.offSpecKg, 0, 'f', 0));
     const auto& m = f.monitor;
-    if (!m.ready) {
+    if (!m.ready && f.monitorCommissioning) {
+        m_monitorLabel->setText(tr("Line monitor: commissioning on healthy runs of this scenario (a few "
+                                   "seconds); it then catches up with the line."));
+    } else if (!m.ready) {
         m_monitorLabel->setText(
             f.monitorNote.isEmpty() ? QString() : tr("Line monitor unavailable: %1").arg(f.monitorNote));
     } else if (!m.alarmed()) {

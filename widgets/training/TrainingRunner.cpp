@@ -9,6 +9,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QTimer>
+#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -114,6 +115,7 @@ public:
         // The commissioning runs beside it: the period when this line ran as it should, which a
         // diagnosis of the recording compares with.
         QString referenceFolder;
+        adoptCommissionedMonitor(true);
         if (m_monitor) {
             const QString dir = QDir(folder).filePath(QStringLiteral("commissioning"));
             QDir().mkpath(dir);
@@ -145,14 +147,14 @@ private:
     /// first save (the whole model file's text: not on a start that may never be saved).
     void adopt(training::TrainingSession session, const std::string& scenarioJson,
                std::shared_ptr<const hybrid::HybridModel> model, const std::string& modelFingerprint) {
-        // The line's monitor, commissioned on healthy runs of the same scenario (a few seconds).
+        // The line's monitor, commissioned on healthy runs of the same scenario: ten seconds of
+        // simulation and calibration, done beside the running line so that the session starts at
+        // once; the monitor then catches up on the trace so far (LineMonitor::feed).
         m_monitor.reset();
         m_monitorNote.clear();
-        if (auto monitor = training::LineMonitor::commission(session.scenario()); monitor) {
-            m_monitor.emplace(std::move(*monitor));
-        } else {
-            m_monitorNote = errorText(monitor.error());
-        }
+        m_commissioning = QtConcurrent::run([scenario = session.scenario()] {
+            return std::make_shared<Expected<training::LineMonitor>>(training::LineMonitor::commission(scenario));
+        });
         m_session.emplace(std::move(session));
         m_scenarioJson = scenarioJson;
         m_model = std::move(model);
@@ -165,6 +167,23 @@ private:
     }
 
     void fail(const QString& action, const Error& error) { Q_EMIT failed(action, errorText(error)); }
+
+    bool commissioningFinished() const { return m_commissioning.isFinished() && !m_commissioning.isCanceled(); }
+
+    /// Takes in the monitor once its commissioning has finished; @p wait: waits for it (a save,
+    /// which writes the commissioning runs beside the recording).
+    void adoptCommissionedMonitor(bool wait) {
+        if (m_commissioning.isCanceled() || (!wait && !commissioningFinished())) {
+            return; // a default QFuture (none under way) reads as cancelled
+        }
+        auto monitor = m_commissioning.result();
+        m_commissioning = {};
+        if (*monitor) {
+            m_monitor.emplace(std::move(**monitor));
+        } else {
+            m_monitorNote = errorText(monitor->error());
+        }
+    }
 
     /// Progress and cancel of a replay or a run ahead (minutes of MPC at full speed take seconds).
     Progress longWork() {
@@ -188,6 +207,9 @@ private:
             sendFrame();
         } else {
             m_owed = 0; // a frozen or finished line has nothing new to show; commands send their own frames
+            if (commissioningFinished()) {
+                sendFrame(); // ... but the monitor commissioned meanwhile has: its verdict on the trace
+            }
         }
     }
 
@@ -225,6 +247,7 @@ private:
             f.faults = s.faults();
             f.answers = s.answers();
             f.score = s.score();
+            adoptCommissionedMonitor(false);
             if (m_monitor) {
                 if (auto st = m_monitor->feed(s); !st) {
                     m_monitorNote = errorText(st.error());
@@ -234,6 +257,7 @@ private:
                 }
             }
             f.monitorNote = m_monitorNote;
+            f.monitorCommissioning = !m_commissioning.isFinished();
         }
         Q_EMIT frame(f);
     }
@@ -241,6 +265,9 @@ private:
     std::atomic<bool>& m_cancel;
     std::optional<training::TrainingSession> m_session;
     std::optional<training::LineMonitor> m_monitor;
+    /// The monitor being commissioned for the current session (a shared pointer: the monitor is
+    /// move-only, QFuture's results are copied).
+    QFuture<std::shared_ptr<Expected<training::LineMonitor>>> m_commissioning;
     QString m_monitorNote;
     std::string m_scenarioJson;
     std::shared_ptr<const hybrid::HybridModel> m_model; ///< the one the session's MPCs run on

@@ -44,6 +44,7 @@ struct TrainingFrame {
     /// not be commissioned (monitorNote says why).
     training::LineMonitorState monitor;
     QString monitorNote;
+    bool monitorCommissioning = false; ///< the monitor is still being commissioned (seconds)
 };
 
 namespace detail {
