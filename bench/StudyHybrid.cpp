@@ -220,8 +220,10 @@ int partUnseen(bool quick) {
 /// seeds 78-84 instead (the data sets that showed the defect; design data).
 bool designSets = false;
 int lstmEpochsForStudy = 30;
+/// --only: a comma-separated list of data set names (or their seeds) to run, for a quick look.
+std::string onlySets;
 /// --guards: which of the input-driven correction's guards of issue #75 are on (for comparison).
-std::string guards = "support,agreement,range,within,every-fold,take-back,bic"; // the defaults
+std::string guards = "support,agreement,range,within,every-fold,later,take-back,bic"; // the defaults
 
 std::vector<DataSetSpec> neverWorseSets() {
     using K = plant::PlantKind;
@@ -268,6 +270,16 @@ int partNeverWorse(bool quick) {
     if (quick) {
         sets.resize(std::min<std::size_t>(sets.size(), 3));
     }
+    if (!onlySets.empty()) {
+        std::vector<DataSetSpec> kept;
+        for (const auto& s : sets) {
+            if (("," + onlySets + ",").find("," + std::to_string(s.seed) + ",") != std::string::npos ||
+                ("," + onlySets + ",").find("," + s.name + ",") != std::string::npos) {
+                kept.push_back(s);
+            }
+        }
+        sets = kept;
+    }
     std::printf("| data set | PGRL-CC worst skill X (H) | worst skill T (H) | free run X: PGRL-CC / PBM | T: "
                 "PGRL-CC / PBM | input-only X / PBM | input-only T / PBM | PBM free run X [%% wb] / T [°C] | "
                 "goals | s |\n|---|---|---|---|---|---|---|---|---|---|\n");
@@ -283,6 +295,7 @@ int partNeverWorse(bool quick) {
         train.residual.inputDrivenOptions.rangeGuard = guards.find("range") != std::string::npos;
         train.residual.inputDrivenOptions.withinBatch = guards.find("within") != std::string::npos;
         train.residual.inputDrivenOptions.everyFoldNoWorse = guards.find("every-fold") != std::string::npos;
+        train.residual.inputDrivenOptions.laterInTime = guards.find("later") != std::string::npos;
         train.residual.realisedPriorPerHorizon = guards.find("prior-h") != std::string::npos;
         train.residual.realisedCorrectionChange = guards.find("take-back") != std::string::npos;
         train.residual.parsimoniousWeights = guards.find("bic") != std::string::npos;
@@ -779,6 +792,8 @@ int main(int argc, char** argv) {
             lstmEpochsForStudy = std::atoi(argv[++i]);
         } else if (!std::strcmp(argv[i], "--quick")) {
             quick = true;
+        } else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) {
+            onlySets = argv[++i];
         } else if (!std::strcmp(argv[i], "--design-pair") && i + 1 < argc) {
             std::sscanf(argv[++i], "%u:%u", &designPair.first, &designPair.second);
         } else if (!std::strcmp(argv[i], "--seed-base") && i + 1 < argc) {
@@ -788,7 +803,7 @@ int main(int argc, char** argv) {
         } else {
             std::fprintf(
                 stderr,
-                "usage: study_hybrid [--part unseen|free-run] [--quick] [--seed-base N] [--work DIR]\n");
+                "usage: study_hybrid [--part unseen|free-run|never-worse|why|diagnose] [--quick] [--only SEEDS] [--seed-base N] [--guards LIST] [--work DIR]\n");
             return 2;
         }
     }

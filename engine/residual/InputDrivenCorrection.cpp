@@ -280,25 +280,13 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
     // Within-batch (options.withinBatch): each batch's level is a parameter of its own (fixed
     // effects, profiled out), so that the coefficients learn only what varies within batches, and
     // the constant is the mean of the batches' levels: the level of a batch not seen.
-    const auto solve = [&](int without, int o, double penalty) -> Eigen::VectorXd {
-        Eigen::MatrixXd g = gram;
-        Eigen::VectorXd r = rhs.col(o);
-        if (without >= 0) {
-            g -= foldGram[static_cast<std::size_t>(without)];
-            r -= foldRhs[static_cast<std::size_t>(without)].col(o);
-        }
+    // The ridge fit from the normal equations @p g, @p r of the rows it uses and, for the
+    // within-batch fit, those rows' per-batch sums of φ and y and their counts.
+    const auto solveFrom = [&](Eigen::MatrixXd g, Eigen::VectorXd r, const std::vector<Eigen::VectorXd>& viewPhi,
+                               const std::vector<double>& viewY, const std::vector<double>& viewRows,
+                               double penalty) -> Eigen::VectorXd {
         if (!options.withinBatch) {
             return ridgeSolve(std::move(g), r, penalty);
-        }
-        std::vector<Eigen::VectorXd> viewPhi(views.size(), Eigen::VectorXd::Zero(features));
-        std::vector<double> viewY(views.size(), 0.0), viewRows(views.size(), 0.0);
-        for (std::size_t q = 0; q < segments.size(); ++q) {
-            if (segments[q].fold == without) {
-                continue;
-            }
-            viewPhi[segments[q].view] += segmentPhi[q];
-            viewY[segments[q].view] += segmentY[q](o);
-            viewRows[segments[q].view] += segmentRows[q];
         }
         for (std::size_t i = 0; i < views.size(); ++i) {
             if (viewRows[i] > 0) {
@@ -320,6 +308,56 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
         }
         beta(0) = batches > 0 ? levels / batches : 0.0;
         return beta;
+    };
+    const auto solve = [&](int without, int o, double penalty) -> Eigen::VectorXd {
+        Eigen::MatrixXd g = gram;
+        Eigen::VectorXd r = rhs.col(o);
+        if (without >= 0) {
+            g -= foldGram[static_cast<std::size_t>(without)];
+            r -= foldRhs[static_cast<std::size_t>(without)].col(o);
+        }
+        std::vector<Eigen::VectorXd> viewPhi(views.size(), Eigen::VectorXd::Zero(features));
+        std::vector<double> viewY(views.size(), 0.0), viewRows(views.size(), 0.0);
+        if (options.withinBatch) {
+            for (std::size_t q = 0; q < segments.size(); ++q) {
+                if (segments[q].fold == without) {
+                    continue;
+                }
+                viewPhi[segments[q].view] += segmentPhi[q];
+                viewY[segments[q].view] += segmentY[q](o);
+                viewRows[segments[q].view] += segmentRows[q];
+            }
+        }
+        return solveFrom(std::move(g), std::move(r), viewPhi, viewY, viewRows, penalty);
+    };
+    // Forward in time (options.laterInTime): the fit on the first two thirds of the training rows
+    // in time (the batches in their order), judged on the last third: how the correction is used
+    // (the evaluation's held-out part is the data set's last 30 %, a what-if run goes on from
+    // now), and what the batch folds cannot see: a correction that holds across the batches seen
+    // so far but not on the ones that came after. The stacked rows are in time order already.
+    std::vector<char> later(static_cast<std::size_t>(rows), 0);
+    for (Eigen::Index r = rows * 2 / 3; r < rows; ++r) {
+        later[static_cast<std::size_t>(r)] = 1;
+    }
+    const auto solveEarlier = [&](int o, double penalty) -> Eigen::VectorXd {
+        Eigen::MatrixXd g = Eigen::MatrixXd::Zero(features, features);
+        Eigen::VectorXd r = Eigen::VectorXd::Zero(features);
+        std::vector<Eigen::VectorXd> viewPhi(views.size(), Eigen::VectorXd::Zero(features));
+        std::vector<double> viewY(views.size(), 0.0), viewRows(views.size(), 0.0);
+        for (const auto& sg : segments) {
+            for (Eigen::Index k = sg.begin; k < sg.end; ++k) {
+                if (later[static_cast<std::size_t>(k)] || !inlier[static_cast<std::size_t>(k)]) {
+                    continue;
+                }
+                const Eigen::VectorXd f = phi.row(k).transpose();
+                g.noalias() += f * f.transpose();
+                r += f * y(k, o);
+                viewPhi[sg.view] += f;
+                viewY[sg.view] += y(k, o);
+                viewRows[sg.view] += 1;
+            }
+        }
+        return solveFrom(std::move(g), std::move(r), viewPhi, viewY, viewRows, penalty);
     };
     // Cross-validated absolute error per penalty and output, judged on every row of the held-out
     // fold (spikes included: that is what a user's data holds).
@@ -371,8 +409,25 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
         }
         double shrink = 0;
         best = pbmAbs[o]; // κ = 0
+        Eigen::VectorXd laterForecast; // the later rows' correction by the fit on the earlier ones
+        double laterPbm = 0;
+        if (options.laterInTime) {
+            laterForecast = phi * solveEarlier(o, bestPenalty * double(rows));
+            for (Eigen::Index k = 0; k < rows; ++k) {
+                laterPbm += later[static_cast<std::size_t>(k)] ? std::abs(y(k, o)) : 0.0;
+            }
+        }
         for (int step = 1; step <= 20; ++step) {
             const double kappa = 0.05 * step;
+            if (options.laterInTime) {
+                double laterAbs = 0;
+                for (Eigen::Index k = 0; k < rows; ++k) {
+                    laterAbs += later[static_cast<std::size_t>(k)] ? std::abs(y(k, o) - kappa * laterForecast(k)) : 0.0;
+                }
+                if (laterAbs > laterPbm) {
+                    continue; // worse than the physics later in the batches than it was fitted on
+                }
+            }
             std::vector<double> fold(static_cast<std::size_t>(folds), 0.0);
             for (const auto& sg : segments) {
                 fold[static_cast<std::size_t>(sg.fold)] +=

@@ -104,6 +104,11 @@ struct InputDrivenOptions {
     /// are three or more) comes out worse than the PBM: never worse on a batch it had not seen,
     /// not merely better on the whole. false: the smallest error over all folds together.
     bool everyFoldNoWorse = true;
+    /// Issue #75: and only a κ under which the fit on the first two thirds of the training rows
+    /// in time is no worse than the PBM on the last third: the correction must hold forward in
+    /// time, as it is used (the data set's later part, a what-if run from now on), not only on a
+    /// batch left out between others. false: no such check (model files before 2026-12-08).
+    bool laterInTime = true;
     Status validate() const;
 };
 
