@@ -230,6 +230,11 @@ private Q_SLOTS:
         QVERIFY2(all.contains(QString::fromUtf8("°C")) && all.contains(QString::fromUtf8("°F")) &&
                      all.contains(QString::fromUtf8("% 湿基")) && all.contains(QString::fromUtf8("% 干基")),
                  qPrintable(all));
+        if (qEnvironmentVariableIsSet("DRYTWIN_SCREENSHOT_DIR")) { // scripts/screenshots.sh, under Xvfb
+            dialog.show();
+            QTest::qWait(200);
+            dialog.grab().save(qEnvironmentVariable("DRYTWIN_SCREENSHOT_DIR") + "/column-mapping.png");
+        }
         // The file's unit chosen in Chinese is still the mapping file's name for it.
         QVERIFY(dialog.chooseUnit("X_out_pct", "% db"));
         QVERIFY(dialog.mappingJson().contains("% db"));
