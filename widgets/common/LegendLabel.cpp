@@ -3,6 +3,7 @@
 #include <QFontMetrics>
 #include <algorithm>
 #include <qwt_legend_label.h>
+#include <qwt_plot.h>
 #include <qwt_text.h>
 
 namespace drytwin::widgets {
@@ -20,8 +21,19 @@ void compactLegendLabel(QwtLegendLabel& label) {
     // of a full row. Its least width is the drawn text's, with the key, spacing, margins and frame.
     const int text = QFontMetrics(f).horizontalAdvance(label.text().text());
     const int beforeText = std::max(label.indent(), label.margin() + label.icon().width() + label.spacing());
-    const int around = beforeText + label.margin() + 2 * label.frameWidth() + 4;
+    const int around = beforeText + label.margin() + 2 * label.frameWidth() + 2;
+    if (label.minimumWidth() == text + around) {
+        return;
+    }
     label.setMinimumWidth(text + around);
+    // The plot lays its legend out from the items' sizes it measured before: told again, so that a
+    // row that no longer fits goes onto another one instead of into a scroll area.
+    for (QWidget* up = label.parentWidget(); up; up = up->parentWidget()) {
+        if (auto* plot = qobject_cast<QwtPlot*>(up)) {
+            plot->updateLayout();
+            break;
+        }
+    }
 }
 
 } // namespace drytwin::widgets
