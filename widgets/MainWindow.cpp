@@ -10,6 +10,7 @@
 
 #include "calibration/CalibrationPanel.h"
 #include "common/PlotStack.h"
+#include "common/WheelGuard.h"
 #include "common/WidgetHelpers.h"
 #include "data/DataPanel.h"
 #include "diagnostics/DiagnosticsPanel.h"
@@ -24,6 +25,7 @@
 #include <QCloseEvent>
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QGuiApplication>
 #include <QIcon>
 #include <QLabel>
@@ -75,8 +77,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
            "and its simulation against the measurements. Edit a value to try it; Undo takes "
            "it back."));
     m_calibration->setWhatsThis(
-        tr("<b>Calibrate</b>: fits the ticked parameters to the data (a global search, then "
-           "BOBYQA) and gives each its 95 % interval. Stop keeps the best so far."));
+        tr("<b>Calibrate</b>: fits the ticked parameters to the data (a global search, then a local "
+           "polish: BOBYQA) and gives each its 95 % interval. Stop keeps the best so far."));
     m_residual->setWhatsThis(
         tr("<b>Residual model</b>: learns a correction of the physics model from the data "
            "(PGRL-CC, paper Eqs. 20–30) and scores it on held-out data beside the comparison "
@@ -100,8 +102,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         tr("<b>Training</b>: the line runs live for a trainee; the instructor's window injects "
            "faults, freezes the clock and scores the answers."));
     createDataSetChooser();
+    trackUnsavedWork();
     createStatusBar();
     createMenus();
+    // No value on any tab changes under a wheel turned to scroll past it (issue #72 item 7).
+    ignoreWheelUnlessFocused(this);
     connectProgress();
     connectDataLoading();
     connect(&m_workbench, &Workbench::simulated, this, [this] {
@@ -127,12 +132,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             // p 0.08; TestTrainingPanel names it alone). With six runs (since 2026-11-27) the
             // reference names 16 of 24 one-hour faults (docs/training.md).
             m_workbench.setReferencePath({});
-            if (!reference.isEmpty()) {
-                m_statusLabel->setText(
-                    tr("The line's commissioning runs are in %1: choose them under \"Compare with "
-                       "a reference period\" to ask what changed since commissioning.")
-                        .arg(QDir::toNativeSeparators(reference)));
-            }
+            // Offered on the Discover tab's reference menu, first (its path was only text on the
+            // Training tab, overwritten at once in the status line: issue #72 item 5).
+            m_workbench.suggestReference(csv, reference);
             const QString before = m_workbench.dataSetLabel();
             m_workbench.openData(csv);
             if (!before.isEmpty()) {
@@ -165,15 +167,12 @@ MainWindow::~MainWindow() {
         for (const char* suffix : {"", ".model.json", ".results.json"}) {
             QFile::remove(m_languageTempProject + QLatin1String(suffix));
         }
+        // The other data sets' results beside it (PROJECT.results.1.json, …).
+        const QFileInfo temp(m_languageTempProject);
+        for (const auto& f : temp.dir().entryList({temp.fileName() + QStringLiteral(".results.*.json")})) {
+            QFile::remove(temp.dir().filePath(f));
+        }
     }
-}
-
-void MainWindow::closeEvent(QCloseEvent* event) {
-    // Closing mid-run cancels cleanly: the running job is told to stop, queued ones never start.
-    m_workbench.cancelAll();
-    QSettings settings;
-    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
-    event->accept();
 }
 
 } // namespace drytwin::widgets

@@ -7,6 +7,7 @@
 #include <QStringList>
 #include <array>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -93,6 +94,12 @@ public:
     Expected<QStringList> exportReport(const QString& folder) const;
     /// @brief What opening the last project warned of (its data changed since it was saved), or empty.
     QString projectWarning() const { return m_projectWarning; }
+    /// @brief What was done in this window since the project was last saved or opened ("the
+    /// calibration", "the edited scenario" …); empty when nothing would be lost by closing.
+    QStringList unsavedWork() const { return m_unsavedWork; }
+    /// @brief Closing with unsaved work asks Save / Discard / Cancel; false when the user cancels
+    /// (or saving failed), and the window stays open.
+    bool askToSaveBeforeClosing();
     /// @brief An engine progress stage ("calibrate") in the user's language ("Calibrating").
     static QString stageText(const QString& stage);
     /// @brief Help ▸ User guide: the workflow, shipped as a resource, in the window's language.
@@ -136,6 +143,10 @@ private:
     void showError(const QString& title, const QString& message);
     /// Puts back a reopened project's results and learnt parts' states.
     void restorePending();
+    /// Notes what the user does that a project keeps, for the question on closing
+    /// (mainwindow/MainWindowUnsaved.cpp).
+    void trackUnsavedWork();
+    void noteUnsaved(const QString& what);
 
     Workbench m_workbench;
     data::DataSet m_noData;
@@ -169,6 +180,9 @@ private:
     QStringList m_pendingActions;
     int m_pendingTab = -1;
     std::optional<workflow::LatestResults> m_pendingResults;
+    /// The results of a reopened project's other data sets, by path (put back with the rest).
+    std::map<QString, workflow::LatestResults> m_pendingOtherResults;
+    QStringList m_unsavedWork; ///< see unsavedWork()
     std::optional<std::array<LearntPart, 3>> m_pendingParts;
     /// What the project's data held when it was saved ("B01:3000 B02:3000 …"), compared once the
     /// data are in again: a batch file removed or changed since then makes the restored results

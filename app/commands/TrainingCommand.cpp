@@ -41,7 +41,9 @@ int runTraining(const CommandOptions& o) {
                     "%.0f points\n",
                     std::string(mi.name).c_str(), f.fault.strength, std::string(mi.unit).c_str(),
                     f.fault.onsetS,
-                    f.found ? ("found after " + fmt(f.timeToFindS, 0) + " s").c_str() : "not found",
+                    f.found                ? ("found after " + fmt(f.timeToFindS, 0) + " s").c_str()
+                    : f.withinReactionTime ? "not found yet, within the time to react (not scored)"
+                                           : "not found",
                     f.offSpecPctWhileOpen, f.points);
     }
     std::printf("Score: %s\n", r.score.summary.c_str());

@@ -40,7 +40,11 @@ const std::vector<Profile>& profiles() {
          {"WT", "WI", "FT", "FI"},
          500,
          30000},
-        {Column::XIn, {"in", "inlet", "xin", "wet", "feed", "infeed"}, {"MT", "MI", "AT"}, 14, 40},
+        {Column::XIn,
+         {"in", "inlet", "xin", "wet", "feed", "infeed", "nir", "moisture"},
+         {"MT", "MI", "AT"},
+         14,
+         40},
         {Column::TIn, {"in", "inlet", "tin", "feed", "infeed"}, {"TT", "TI"}, 0, 45},
         {Column::TAmb, {"amb", "ambient", "hall", "room", "env", "outside"}, {"TT", "TI"}, -15, 45},
         {Column::RHAmb,
@@ -48,10 +52,10 @@ const std::vector<Profile>& profiles() {
          {"MT", "HT", "AT", "MI"},
          3,
          100},
-        {Column::XHdt, {"hdt", "tube", "dryer", "mid", "xhdt"}, {"MT", "MI", "AT"}, 6, 22},
+        {Column::XHdt, {"hdt", "tube", "dryer", "mid", "xhdt", "nir", "moisture"}, {"MT", "MI", "AT"}, 6, 22},
         {Column::THdt, {"hdt", "tube", "dryer", "mid", "thdt"}, {"TT", "TI"}, 30, 100},
         {Column::XOut,
-         {"out", "outlet", "xout", "product", "final", "win", "winnower", "exit"},
+         {"out", "outlet", "xout", "product", "final", "win", "winnower", "exit", "nir", "moisture"},
          {"MT", "MI", "AT"},
          6,
          20},
@@ -62,6 +66,18 @@ const std::vector<Profile>& profiles() {
          90},
     };
     return p;
+}
+
+/// Words that say the column is a moisture reading: an NIR analyser (near-infrared) or a moisture
+/// meter measures the material's water content, never a temperature ("NIR_IN.PV" was taken for the
+/// inlet material temperature, its values lying in both ranges: issue #72 item 6).
+bool isMoistureWord(const std::string& word) {
+    static const std::set<std::string> moisture{"nir", "moisture", "moist", "feuchte"};
+    return moisture.count(word) > 0;
+}
+
+bool measuresMoisture(Column c) {
+    return c == Column::XIn || c == Column::XHdt || c == Column::XOut;
 }
 
 /// Lower-case words of a header and the ISA letters of its tag ("HDT_TT101.PV" → hdt, tt101, pv; TT).
@@ -243,6 +259,12 @@ Expected<MappingGuess> guessMapping(const std::string& raw, const std::string& f
             if (wordHits > 0) {
                 score += 2.0 * std::min(wordHits, 2);
                 why += ", name";
+            }
+            // A moisture analyser's column is no temperature, flow or humidity, whatever its range.
+            if (!measuresMoisture(p.column) &&
+                std::any_of(words.begin(), words.end(),
+                            [](const std::string& w) { return isMoistureWord(w); })) {
+                score -= 3;
             }
             if (!isa.empty()) {
                 const bool isaHit = std::find(p.isa.begin(), p.isa.end(), isa) != p.isa.end();

@@ -1,4 +1,6 @@
 #include "io/Report.h"
+
+#include "io/MethodsGlossary.h"
 #include "properties/Parameters.h"
 
 #include "common/AtomicFile.h"
@@ -408,6 +410,7 @@ Expected<std::string> writePipelineReport(const std::string& folder) {
     if (auto mpc = readJson(dir / "mpc.json"); mpc) {
         r += mpcSection(*mpc);
     }
+    r += methodsAppendixMarkdown(); // the technical names the workbench keeps off its screen
     const std::string path = (dir / "report.md").string();
     if (auto st = writeFileAtomically(path, r); !st) {
         return st.error();

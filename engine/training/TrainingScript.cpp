@@ -377,7 +377,8 @@ std::string sessionJson(const std::string& scenarioJson, const TrainingSession& 
         json fj{{"cause", plant::info(f.fault.mechanism).name},
                 {"found", f.found},
                 {"off_spec_pct_while_open", f.offSpecPctWhileOpen},
-                {"points", f.points}};
+                {"points", f.points},
+                {"within_reaction_time", f.withinReactionTime}};
         fj["time_to_find_s"] = f.found ? json(f.timeToFindS) : json(nullptr);
         scored.push_back(fj);
     }

@@ -15,8 +15,8 @@ using control::ControllerKind;
 namespace {
 
 /// A cause that "found" a fault needs a right answer within this time for the full time bonus
-/// to fade to zero (docs/training.md): half an hour of a shift.
-constexpr double kTimeBonusFadeS = 1800;
+/// to fade to zero (docs/training.md): half an hour of a shift, the reaction time.
+constexpr double kTimeBonusFadeS = kReactionTimeS;
 constexpr double kFoundPoints = 60;
 constexpr double kTimePoints = 25;
 constexpr double kBandPoints = 15;
@@ -369,6 +369,7 @@ TrainingScore TrainingSession::score() const {
         }
     }
     double sum = 0;
+    std::size_t scored = 0;
     for (const auto& f : im.state.faults) {
         if (f.onsetS > now) {
             continue;
@@ -397,10 +398,18 @@ TrainingScore TrainingSession::score() const {
             fs.points = kFoundPoints + kTimePoints * std::max(0.0, 1.0 - fs.timeToFindS / kTimeBonusFadeS);
         }
         fs.points += kBandPoints * (1.0 - fs.offSpecPctWhileOpen / 100.0);
-        sum += fs.points;
+        // Unanswered and younger than the reaction time: nobody could have acted yet, so it does
+        // not count until it is found or that time has passed (the score fell to 15 the moment a
+        // fault was injected: issue #72 item 9).
+        fs.withinReactionTime = !fs.found && now - f.onsetS < kReactionTimeS;
+        fs.reactionTimeLeftS = fs.withinReactionTime ? kReactionTimeS - (now - f.onsetS) : 0;
+        if (!fs.withinReactionTime) {
+            sum += fs.points;
+            ++scored;
+        }
         sc.faults.push_back(fs);
     }
-    const double base = sc.faults.empty() ? 100.0 : sum / static_cast<double>(sc.faults.size());
+    const double base = scored == 0 ? 100.0 : sum / static_cast<double>(scored);
     sc.points = std::clamp(base - kWrongAnswerPenalty * sc.wrongAnswers, 0.0, 100.0);
     std::ostringstream os;
     os.setf(std::ios::fixed);
@@ -414,6 +423,11 @@ TrainingScore TrainingSession::score() const {
             found += f.found ? 1 : 0;
         }
         os << found << " of " << sc.faults.size() << " faults found";
+        const auto waiting = std::count_if(sc.faults.begin(), sc.faults.end(),
+                                           [](const FaultScore& x) { return x.withinReactionTime; });
+        if (waiting > 0) {
+            os << " (" << waiting << " within the time to react, not scored yet)";
+        }
     }
     os.precision(1);
     os << ", " << sc.wrongAnswers << " wrong answer(s), " << sc.offSpecPct

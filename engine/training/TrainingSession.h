@@ -61,11 +61,20 @@ struct FaultScore {
     double timeToFindS = 0;         ///< from the onset to the first right answer (found only)
     double offSpecPctWhileOpen = 0; ///< share of seconds out of the band from onset to the answer (or now)
     double points = 0;              ///< of 100
+    /// Not found yet and still within the time a trainee fairly needs to react
+    /// (kReactionTimeS from its onset): not scored yet, so not counted in the session's points.
+    bool withinReactionTime = false;
+    double reactionTimeLeftS = 0; ///< how long it stays so [s]
 };
+
+/// @brief The time from a fault's onset within which it is not scored unless found: noticing,
+/// recording and diagnosing take that long (discovery names few causes on less than half an hour
+/// of recording, docs/training.md), and the time bonus fades over the same half hour.
+inline constexpr double kReactionTimeS = 1800;
 
 /// @brief The session's score (docs/training.md gives the rule).
 struct TrainingScore {
-    std::vector<FaultScore> faults; ///< faults that have acted by now
+    std::vector<FaultScore> faults; ///< faults that have acted by now (scored or within their reaction time)
     int wrongAnswers = 0;           ///< causes named that were not acting at the time
     double offSpecPct = 0;          ///< share of session seconds with true X_out out of the band [%]
     double offSpecKg = 0;           ///< product (wet feed) that left out of the band [kg]

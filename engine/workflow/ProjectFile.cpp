@@ -54,7 +54,12 @@ Expected<ProjectPaths> readProjectPaths(const std::string& projectPath) {
         if (relative.empty()) {
             return std::string();
         }
-        const fs::path here = (base / relative).lexically_normal();
+        fs::path here = (base / relative).lexically_normal();
+        // "." (the data beside the project) normalises to "folder/": without its trailing
+        // separator, so that the folder keeps its name ("demo (3 batches)", not " (3 batches)").
+        if (!here.has_filename() && here.has_parent_path() && here != here.root_path()) {
+            here = here.parent_path();
+        }
         const std::string saved = text(from, key + "_absolute");
         std::error_code ec;
         return fs::exists(here, ec) || saved.empty() || !fs::exists(saved, ec) ? here.string() : saved;
@@ -69,7 +74,12 @@ Expected<ProjectPaths> readProjectPaths(const std::string& projectPath) {
     if (const auto sets = o.find("data_sets"); sets != o.end() && sets->is_array()) {
         for (const auto& e : *sets) {
             if (e.is_object() && !resolve(e, "path").empty()) {
-                p.dataSets.push_back({text(e, "label"), resolve(e, "path"), resolve(e, "mapping_path")});
+                const auto batches = e.find("batches");
+                p.dataSets.push_back(
+                    {text(e, "label"), resolve(e, "path"), resolve(e, "mapping_path"),
+                     resolve(e, "results_path"),
+                     batches != e.end() && batches->is_number_integer() ? batches->get<int>() : -1,
+                     resolve(e, "suggested_reference")});
             }
         }
     }

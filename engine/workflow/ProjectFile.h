@@ -18,6 +18,11 @@ struct ProjectPaths {
     std::string data, mapping, model, results, reference;
     struct DataSet {
         std::string label, path, mapping;
+        /// Its latest results (a LatestResults archive) when it was not the loaded one; "" for none.
+        std::string results;
+        int batches = -1; ///< its batch count when saved (-1: a project that does not say)
+        /// A reference period offered for it (a training recording's commissioning runs); "" for none.
+        std::string suggestedReference;
     };
     std::vector<DataSet> dataSets; ///< every data set the window had open
     /// The data's batches and rows when the project was saved (dataFingerprint()); "" in a project

@@ -73,14 +73,22 @@ struct SimulateOptions {
 struct BatchFit {
     std::string id;
     std::size_t rows = 0;
-    double maeXOutPct = 0; ///< % wb
-    double maeTOutC = 0;   ///< °C (= K)
+    double maeXOutPct = 0;    ///< % wb
+    double maeTOutC = 0;      ///< °C (= K)
+    std::size_t keptRows = 0; ///< the rows the MAEs are over (those the cleaning keeps)
 };
 
 struct SimulateResult {
     std::vector<physics::SimulationResult> simulations; ///< one per batch, SI units, dry basis
     std::vector<BatchFit> fits;
     Ending ending;
+    /// @brief The outlet moisture's MAE over every kept row of every batch [% wb] (each batch
+    /// weighted by its kept rows, as the calibration counts its rows); NaN without rows.
+    double maeXOutPctAllKeptRows() const;
+    /// @brief The outlet temperature's, alike [°C].
+    double maeTOutCAllKeptRows() const;
+    /// @brief The kept rows those two are over.
+    std::size_t keptRows() const;
 };
 
 /// @brief Calibration of the session's physics model (paper §IV.B).

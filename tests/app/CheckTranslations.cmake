@@ -46,3 +46,30 @@ if(literal_count GREATER 0)
                       "legends): wrap them in tr() or a display name:\n${literal_hits}")
 endif()
 message(STATUS "no English literal in headers, axis titles or legends")
+
+# Nor may the engine's English reach the Chinese window (issue #72 item 11): the engine writes its
+# notes and reasons in English for the command line (ARCHITECTURE.md rule 11), and the GUI words
+# them (widgets/common/EngineText.h, ErrorText.h, DisplayNames.h). A reason, an error's message, a
+# note or an MPC's fallback reason turned into a QString anywhere else reaches the screen as the
+# engine wrote it. The wording files themselves read the engine's English back, and are not checked.
+set(ENGINE_TEXT "QString::fromStdString\\([^;\n]*(\\.reason|\\.message\\(\\)|notes|[Nn]ote\\(\\)|FallbackReason|describe\\(\\)|\\.what\\(\\))")
+set(wording_files "/widgets/report/|/widgets/common/ErrorText\\.cpp$|/widgets/common/DisplayNames\\.cpp$|/widgets/common/EngineText\\.cpp$")
+set(engine_hits "")
+foreach(source IN LISTS checked)
+  if(source MATCHES "${wording_files}")
+    continue()
+  endif()
+  file(READ ${source} code)
+  string(REGEX MATCHALL "${ENGINE_TEXT}" hits "${code}")
+  foreach(hit IN LISTS hits)
+    list(APPEND engine_hits "${source}: ${hit}")
+  endforeach()
+endforeach()
+list(LENGTH engine_hits engine_count)
+if(engine_count GREATER 0)
+  string(REPLACE ";" "\n" engine_hits "${engine_hits}")
+  message(FATAL_ERROR "${engine_count} place(s) put the engine's English on screen unworded: pass it through "
+                      "dataNoteText(), fallbackReasonText(), engineDetailText() (common/EngineText.h) or "
+                      "errorText():\n${engine_hits}")
+endif()
+message(STATUS "no engine text on screen unworded")

@@ -5,7 +5,10 @@
 #include "mpc/MpcPanel.h"
 #include "mpc/ScenarioForm.h"
 
+#include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QHeaderView>
 #include <QLabel>
 #include <QPlainTextEdit>
@@ -16,6 +19,7 @@
 #include <QStandardPaths>
 #include <QTabWidget>
 #include <QTableWidget>
+#include <QWheelEvent>
 #include <QtTest>
 
 using namespace drytwin;
@@ -74,6 +78,68 @@ private Q_SLOTS:
 
     // Under the table, a controller whose model believes a third of the plant's gain is said to
     // over-act, one with three times to act too little, one of the other sign to steer wrong.
+    // Issue #72 item 7: the wheel turned over the form scrolls it; a value under the pointer does
+    // not change unless its box has the focus (the band went 0.50 → 0.01 % wb unnoticed).
+    void theWheelChangesNoValueItsBoxHasNotTheFocusOf() {
+        Workbench wb;
+        MpcPanel panel(wb);
+        panel.resize(700, 500);
+        static_cast<QWidget&>(panel).show(); // MpcPanel::show() redraws its results
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        auto* band = panel.form()->band();
+        const double before = band->value();
+        const auto turn = [](QWidget* target) {
+            const QPoint at = target->rect().center();
+            QWheelEvent wheel(at, target->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton,
+                              Qt::NoModifier, Qt::NoScrollPhase, false);
+            QApplication::sendEvent(target, &wheel);
+        };
+        band->clearFocus();
+        turn(band);
+        QCOMPARE(band->value(), before);
+        QCOMPARE(band->focusPolicy(), Qt::StrongFocus);
+        // A combo box in a table cell alike (an input change's input).
+        panel.form()->addInputChange("feed_kg_h", 10, 0, 6400);
+        auto* input = qobject_cast<QComboBox*>(panel.form()->inputChanges()->cellWidget(0, 0));
+        QVERIFY(input);
+        const int chosen = input->currentIndex();
+        turn(input);
+        QCOMPARE(input->currentIndex(), chosen);
+        // With the focus (clicked into, or tabbed to), the wheel steps the value as usual.
+        panel.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&panel));
+        band->setFocus();
+        QTRY_VERIFY(band->hasFocus());
+        turn(band);
+        QVERIFY2(band->value() != before, qPrintable(QString::number(band->value())));
+    }
+
+    // Issue #72 item 7: Add appends a setpoint step after the last one, so Run stays on.
+    void addAppendsAStepAfterTheLast() {
+        Workbench wb;
+        MpcPanel panel(wb);
+        panel.editor()->setPlainText(R"({"name": "steps", "length_s": 1000, "warmup_s": 150, "seed": 2,
+            "setpoint_steps": [{"at_s": 300, "to_pct": 12.5}, {"at_s": 600, "to_pct": 13.2}]})");
+        QVERIFY(panel.runButton()->isEnabled());
+        QPushButton* add = nullptr;
+        for (auto* b : panel.form()->findChildren<QPushButton*>()) {
+            if (b->text() == QStringLiteral("Add") && !add) {
+                add = b; // the first Add: the setpoint steps'
+            }
+        }
+        QVERIFY(add);
+        add->click();
+        QCOMPARE(panel.form()->setpointSteps()->rowCount(), 3);
+        const double added = panel.form()->setpointSteps()->item(2, 0)->text().toDouble();
+        QVERIFY2(added > 600 && added <= 1000, qPrintable(QString::number(added)));
+        QCOMPARE(panel.form()->setpointSteps()->item(2, 1)->text().toDouble(),
+                 13.2); // holds the last setpoint
+        QVERIFY2(panel.runButton()->isEnabled(), qPrintable(panel.scenarioProblem()));
+        add->click(); // and again, still after the last and within the run
+        QVERIFY(panel.form()->setpointSteps()->item(3, 0)->text().toDouble() > added);
+        QVERIFY(panel.form()->isValid());
+    }
+
     void aMismatchedGainIsExplained() {
         const QString under = MpcPanel::gainMismatchText(QStringLiteral("LSTM"), 0.32);
         const QString over = MpcPanel::gainMismatchText(QStringLiteral("LSTM"), 3.0);

@@ -59,6 +59,10 @@ private Q_SLOTS:
                 text.mid(0, acf).lastIndexOf(QStringLiteral("<svg")));
         QVERIFY(!text.contains(QStringLiteral("lag [s] / frequency [Hz]")));
         QVERIFY(text.contains(QStringLiteral("Paper Fig. 5")));
+        // The technical names the workbench keeps to its tooltips, in the appendix (issue #72 item 10).
+        QVERIFY(text.contains(QStringLiteral("Appendix: the methods behind the workbench's words")) &&
+                text.contains(QStringLiteral("Diebold-Mariano")) && text.contains(QStringLiteral("Holm")) &&
+                text.contains(QStringLiteral("Newey-West")) && text.contains(QStringLiteral("BOBYQA")));
         // Table 2 says which line the controllers ran against, and how often each fell back.
         QVERIFY(text.contains(QRegularExpression(QStringLiteral("<th[^>]*>fallbacks</th>"))));
         // The ablation's variants in the paper's words, not only their keys.

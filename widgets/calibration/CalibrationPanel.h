@@ -27,6 +27,9 @@ public:
     QPushButton* runButton() const { return m_run; }
     QPushButton* stopButton() const { return m_stop; }
     QTableWidget* estimates() const { return m_estimates; }
+    /// @brief The summary under the plots: how the calibration ended, its MAEs on its own rows and,
+    /// once simulated, on every kept row (the status bar's figure).
+    QLabel* summary() const { return m_fit; }
     QTableWidget* freeParameters() const { return m_free; }
     PlotStack* lossPlot() const { return m_loss; }
     /// @brief Measured outlet moisture with the simulation before and after the last calibration.
@@ -46,6 +49,7 @@ private:
     QPushButton* m_stop = nullptr;
     QTableWidget* m_estimates = nullptr;
     QLabel* m_fit = nullptr;
+    QString m_fitSummary; ///< the calibration's own sentence, before the all-rows one is added
     PlotStack* m_loss = nullptr;
     PlotStack* m_fitPlot = nullptr;
     QVector<double> m_lossX, m_lossY;

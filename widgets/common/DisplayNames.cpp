@@ -219,6 +219,26 @@ QString unitSuffix(std::string_view unit) {
     return QLatin1Char(' ') + QString::fromUtf8(unit.data(), static_cast<int>(unit.size()));
 }
 
+QString mappingUnitText(const std::string& unit) {
+    // The mapping file's unit names are keys (CONTRACT.md §1); the dialog shows them as units read.
+    if (unit == "degC") {
+        return QStringLiteral("°C");
+    }
+    if (unit == "degF") {
+        return QStringLiteral("°F");
+    }
+    static const std::map<std::string, const char*> words{
+        {"% wb", QT_TRANSLATE_NOOP("DisplayNames", "% wb")},
+        {"% db", QT_TRANSLATE_NOOP("DisplayNames", "% db")},
+        {"fraction wb", QT_TRANSLATE_NOOP("DisplayNames", "fraction, wet basis")},
+        {"fraction", QT_TRANSLATE_NOOP("DisplayNames", "fraction")},
+        {"min", QT_TRANSLATE_NOOP("DisplayNames", "min")},
+        {"%", QT_TRANSLATE_NOOP("DisplayNames", "% RH")}};
+    const auto it = words.find(unit);
+    return it == words.end() ? QString::fromStdString(unit)
+                             : QCoreApplication::translate("DisplayNames", it->second);
+}
+
 QString verdictDisplayText(const std::string& verdict, const QString& firstCause) {
     if (verdict == "cause_found") {
         return firstCause.isEmpty()
@@ -238,7 +258,23 @@ QString verdictDisplayText(const std::string& verdict, const QString& firstCause
     return QString::fromStdString(verdict);
 }
 
-QString verdictNextStep(const std::string& verdict, bool aCauseFitsButFailedACheck) {
+QString verdictNextStep(const std::string& verdict, bool aCauseFitsButFailedACheck, bool againstReference) {
+    // Compared with a reference already: the advice to compare with one would send the user in a
+    // circle (issue #72 item 4); the reference's own words instead.
+    if (againstReference && verdict == "no_structural_cause") {
+        return QCoreApplication::translate(
+            "DisplayNames",
+            "Next: nothing changed since the reference period that the model needs to account "
+            "for. To see smaller changes, record longer or more batches.");
+    }
+    if (againstReference && verdict == "unexplained_structure") {
+        return QCoreApplication::translate(
+            "DisplayNames",
+            "Next: something changed since the reference period that no known cause explains. The evidence "
+            "says which measurement the error follows; check that transmitter and the maintenance log around "
+            "the time the change began. If the reference period itself was not a good time for the line, "
+            "choose another one.");
+    }
     if (verdict == "cause_found") {
         return QCoreApplication::translate(
             "DisplayNames", "Next: check that part of the line (the evidence says where and from when), then "
@@ -306,12 +342,19 @@ QString intervalMethodText(const std::string& method) {
         return QCoreApplication::translate("DisplayNames", "none (the sensitivities could not be computed)");
     }
     if (method.find("sandwich") != std::string::npos) {
+        // Plain words on screen; the estimator's names go to the tooltip (issue #72 item 10).
         return QCoreApplication::translate(
-            "DisplayNames",
-            "widened because neighbouring rows are alike and not independent evidence (sandwich covariance "
-            "with a Newey-West middle term)");
+            "DisplayNames", "widened because neighbouring rows are alike and not independent evidence");
     }
     return QString::fromStdString(method);
+}
+
+QString intervalMethodDetails(const std::string& method) {
+    if (method.find("sandwich") != std::string::npos) {
+        return QCoreApplication::translate("DisplayNames",
+                                           "Intervals: sandwich covariance with a Newey-West middle term.");
+    }
+    return {};
 }
 
 QString r2Explanation(double r2) {

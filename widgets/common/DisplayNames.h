@@ -46,13 +46,19 @@ QString groupDisplayName(const std::string& group);
 QString verdictDisplayText(const std::string& verdict, const QString& firstCause = {});
 /// @brief What to do next after a discovery verdict, in plant words (issue #43 item 15); empty
 /// for a verdict key it does not know.
-QString verdictNextStep(const std::string& verdict, bool aCauseFitsButFailedACheck = false);
+QString verdictNextStep(const std::string& verdict, bool aCauseFitsButFailedACheck = false,
+                        bool againstReference = false);
 /// @brief How an iterative action ended, as the first words of a sentence ("Converged").
 QString terminationText(Termination termination);
 /// @brief A what-if run's ending in words ("Scenario x: 5 controllers, 1000 scored seconds").
 QString mpcEndingText(const control::ClosedLoopResult& result);
-/// @brief How a calibration's intervals were made, in words (the engine's method string is English).
+/// @brief A unit as a column mapping names it ("degC", "% db", "fraction wb") in the user's words.
+QString mappingUnitText(const std::string& unit);
+/// @brief How a calibration's intervals were made, in plain words (the engine's method string is
+/// English); the statistician's names are in intervalMethodDetails().
 QString intervalMethodText(const std::string& method);
+/// @brief The same with the method's technical names (sandwich covariance, Newey-West), for a tooltip.
+QString intervalMethodDetails(const std::string& method);
 /// @brief What an R² says in words, for the tooltips of R² cells (R² < 0: worse than the mean).
 QString r2Explanation(double r2);
 

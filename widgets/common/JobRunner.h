@@ -88,6 +88,14 @@ public:
     bool busy() const { return !m_jobs.empty(); }
     /// @brief Jobs queued or running.
     int pending() const { return static_cast<int>(m_jobs.size()); }
+    /// @brief The job the engine thread runs now, or runs next when none has started yet (jobs
+    /// run in the order submitted); 0 when idle.
+    JobId headJob() const { return m_jobs.empty() ? 0 : m_jobs.begin()->first; }
+    /// @brief The name a queued or running job was submitted with ("" when it is not).
+    QString jobName(JobId id) const {
+        const auto it = m_jobs.find(id);
+        return it == m_jobs.end() ? QString() : it->second->name;
+    }
 
 Q_SIGNALS:
     void started(drytwin::widgets::JobId id, const QString& name);

@@ -29,12 +29,15 @@ ModelStateBar::ModelStateBar(Workbench& workbench, QWidget* parent)
     connect(&m_workbench, &Workbench::modelChanged, this, &ModelStateBar::refresh);
     connect(&m_workbench, &Workbench::dataChanged, this, &ModelStateBar::refresh);
     connect(&m_workbench.jobs(), &JobRunner::busyChanged, this, &ModelStateBar::refresh);
+    // A retraining queued or started: the paragraph says so instead of "retrain it" (issue #72 item 8).
+    connect(&m_workbench, &Workbench::runningChanged, this, &ModelStateBar::refresh);
+    connect(&m_workbench.jobs(), &JobRunner::started, this, &ModelStateBar::refresh);
     refresh();
 }
 
 void ModelStateBar::refresh() {
     m_text->setText(m_workbench.modelStateText());
-    m_retrain->setVisible(m_workbench.hasStaleParts());
+    m_retrain->setVisible(m_workbench.hasStaleParts() && !m_workbench.isRunning(Action::Train));
     m_retrain->setEnabled(m_workbench.hasData() && !m_workbench.jobs().busy());
 }
 

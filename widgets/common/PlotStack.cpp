@@ -1,4 +1,5 @@
 #include "common/PlotStack.h"
+#include "common/LegendLabel.h"
 
 #include "common/WidgetHelpers.h"
 
@@ -42,19 +43,6 @@
 namespace drytwin::widgets {
 
 namespace {
-
-/// A legend item as small as it can be and still be read and clicked: Qwt's checkable items are
-/// framed buttons 30 px tall, and the What-if tab's ten of them took the moisture plot's room at
-/// 1280 x 800 (a newcomer's screenshot).
-void compactLegendLabel(QwtLegendLabel& label) {
-    label.setMargin(1);
-    // The spacing also places the text after the key (Qwt sets the text's indent from margin, key
-    // and spacing): an indent set here put the text of the last entry on top of its key.
-    label.setSpacing(4);
-    QFont f = label.font();
-    f.setPointSizeF(8.5);
-    label.setFont(f);
-}
 
 /// The legend's key drawn as the curve's line, long enough to show its style: Qwt's default, a
 /// filled square, made a setpoint (dashed), its band (dotted) and a prediction (dash-dot) look

@@ -75,6 +75,8 @@ public:
     /// @brief What fills these plots, said in each plot while it has no data ("Run Calibrate to
     /// see the loss"); empty: nothing said.
     void setEmptyText(const QString& text);
+    /// @brief What the empty plots say (setEmptyText()).
+    QString emptyText() const { return m_emptyText; }
     /// @brief True while the empty text is shown (no curve with data in any plot).
     bool showsEmptyText() const;
     /// @brief The y range plot @p index shows while it has no data: its quantity's usual range

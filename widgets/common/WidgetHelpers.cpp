@@ -146,6 +146,17 @@ void FittedTable::fitFirstColumn() {
                 cell->setToolTip(cell->text());
             }
         }
+        // A name narrower than its text goes on two lines rather than being cut: "drying air
+        // cooling along th…" left the engineer guessing (issue #72 item 11).
+        if (!wordWrap() || textElideMode() != Qt::ElideNone) {
+            setWordWrap(true);
+            setTextElideMode(Qt::ElideNone);
+        }
+        m_namesWrapped = true;
+    }
+    if (m_namesWrapped) {
+        resizeRowsToContents(); // one line again where the names fit once more
+        m_namesWrapped = width < natural;
     }
 }
 

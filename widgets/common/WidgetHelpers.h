@@ -52,8 +52,9 @@ public:
     /// The first column (the names: a cause, a controller, a batch) as wide as its cells where
     /// there is room, and narrower, down to its header, where that shows every other column
     /// without scrolling (at 1280 × 800 the Discover ranking's losses lay beyond the edge); a name
-    /// cut short keeps its whole text in a tooltip. A table that would scroll anyway keeps its
-    /// names whole. fitTableWidth() and every resize call it.
+    /// narrower than its text is written on two lines (its row taller) and keeps its whole text in
+    /// a tooltip. A table that would scroll anyway keeps its names whole. fitTableWidth() and
+    /// every resize call it.
     void fitFirstColumn();
 
 protected:
@@ -62,6 +63,7 @@ protected:
 private:
     int m_preferredWidth = 0;
     int m_minimumRows = 0;
+    bool m_namesWrapped = false; ///< the names are on two lines: rows sized to them
 };
 /// @brief An empty table of results: these column headers, no row header, read-only cells.
 QTableWidget* makeResultTable(const QStringList& headers);

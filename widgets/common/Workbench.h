@@ -69,8 +69,15 @@ QString progressStageOf(Action action);
 struct DataSetEntry {
     QString path;
     QString mappingPath;
-    QString label;
+    QString label;    ///< as worded when it was opened (kept for a project that gives no count)
+    int batches = -1; ///< its batch count (-1: unknown)
+
+    /// @brief Its name and batch count in the user's language ("shift.csv (2 batches)").
+    QString labelText() const;
 };
+
+/// @brief A data set's name and batch count as the tabs say it: "demo (10 batches)".
+QString dataSetLabelText(const QString& name, int batches);
 
 /// @brief What to do with learnt parts an action is about to make stale.
 enum class AfterInvalidation { Ask, Retrain, KeepStale };
@@ -105,6 +112,11 @@ public:
     /// when the line ran as it should; empty: the data are judged alone). A project keeps it.
     QString referencePath() const { return m_referencePath; }
     void setReferencePath(const QString& path);
+    /// @brief Offers @p referencePath as the reference period for the data set at @p dataPath (a
+    /// training recording's commissioning runs): Discover's reference menu names it first.
+    void suggestReference(const QString& dataPath, const QString& referencePath);
+    /// @brief The reference offered for the data set at @p dataPath (default: the loaded one); "" for none.
+    QString suggestedReference(const QString& dataPath = {}) const;
     /// @brief The loaded data set in a few words ("plant: 10 batches"), for "learnt on" and
     /// "results of" lines; empty without data.
     QString dataSetLabel() const;
@@ -139,6 +151,9 @@ public:
     /// ones that go stale; none: every learnt part (calibrate).
     std::optional<bool> confirmInvalidation(QWidget* parent, const QString& action,
                                             const hybrid::HybridModel* newModel = nullptr);
+    /// @brief The question confirmInvalidation() asks: what @p newModel adds (causes, refitted
+    /// parameters, learnt parts it brings) and which learnt parts go stale.
+    QString invalidationQuestion(const QString& action, const hybrid::HybridModel* newModel = nullptr) const;
     /// @brief Answers confirmInvalidation() without a dialog (tests, scripted runs).
     void setInvalidationPolicy(AfterInvalidation policy) { m_invalidationPolicy = policy; }
     /// @brief Retrains the learnt parts with the settings they were last trained with (the
@@ -151,9 +166,19 @@ public:
     void openModel(const QString& path, const std::optional<std::array<LearntPart, 3>>& parts = std::nullopt);
     /// @p doneMessage: the status line when it is written (default "Model saved to …").
     void saveModel(const QString& path, const QString& doneMessage = {});
-    /// @brief Shows results read back from a project (panels redraw from them, nothing re-runs) and
-    /// the learnt parts' states as they were saved.
-    void restoreResults(const workflow::LatestResults& results);
+    /// @brief Shows results read back from a project (panels redraw from them, nothing re-runs).
+    /// @p otherDataSets: the results of the other data sets the project had open, by path; they
+    /// come back when one is switched to, as long as the model is the project's.
+    void restoreResults(const workflow::LatestResults& results,
+                        const std::map<QString, workflow::LatestResults>& otherDataSets = {});
+    /// @brief The results of the data sets other than the loaded one that still belong to the
+    /// present model (a project keeps them beside its own), by path.
+    std::map<QString, workflow::LatestResults> otherDataSetResults() const;
+    /// @brief For a button whose action is queued behind another job: "Queued — waits for …";
+    /// empty when the action is not waiting (not asked for, or running now).
+    QString queuedText(Action action) const;
+    /// @brief True while an action of this kind is running now (not merely queued).
+    bool isRunningNow(Action action) const;
     /// @brief Puts back the learnt parts' states a project saved (after its model is open).
     void restoreLearntParts(const std::array<LearntPart, 3>& parts);
     /// @brief Sets a physics parameter (checked against its bounds on the engine thread).
@@ -196,6 +221,9 @@ Q_SIGNALS:
     void dataSetsChanged();
     /// @brief The learnt parts' states changed (learnt, dropped, opened from a file).
     void modelStateChanged();
+    /// @brief The user changed the model (a parameter edited, the model extended or replaced):
+    /// a project saved before no longer holds it.
+    void modelEdited();
     void simulated();
     /// @brief calibrationStart() is ready.
     void calibrationStartSimulated();
@@ -262,6 +290,10 @@ private:
         int modelRevision = 0;
     };
     std::map<QString, StashedResults> m_stash;
+    std::map<QString, QString> m_suggestedReferences; ///< by data set path
+    /// A project's other data sets' results were put in the stash before its model file was read:
+    /// the model that reading brings is the one they were made with.
+    bool m_stashAwaitsProjectModel = false;
     int m_modelRevision = 0; ///< counts changes of the model
 };
 

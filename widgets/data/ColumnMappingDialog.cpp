@@ -1,7 +1,9 @@
 #include "data/ColumnMappingDialog.h"
+#include "common/EngineText.h"
 
 #include "common/DisplayNames.h"
 #include "common/ErrorText.h"
+#include "common/WheelGuard.h"
 #include "common/WidgetHelpers.h"
 #include "data/ColumnMapping.h"
 #include "data/Columns.h"
@@ -9,6 +11,7 @@
 #include "workflow/Session.h"
 
 #include <QComboBox>
+#include <QCryptographicHash>
 #include <QDialogButtonBox>
 #include <QFile>
 #include <QFileInfo>
@@ -18,10 +21,12 @@
 #include <QJsonObject>
 #include <QLabel>
 #include <QSaveFile>
+#include <QSettings>
 #include <QSignalBlocker>
 #include <QTableWidget>
 #include <QTextStream>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace drytwin::widgets {
 
@@ -68,7 +73,7 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* pare
         name->setData(Qt::UserRole, fromView(s.name));
         name->setFlags(Qt::ItemIsEnabled);
         m_table->setItem(row, 0, name);
-        auto* unit = new QTableWidgetItem(fromView(s.unit));
+        auto* unit = new QTableWidgetItem(mappingUnitText(std::string(s.unit)));
         unit->setFlags(Qt::ItemIsEnabled);
         m_table->setItem(row, 1, unit);
         auto* combo = new QComboBox;
@@ -86,8 +91,9 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* pare
         }
         m_table->setCellWidget(row, 2, combo);
         auto* unitCombo = new QComboBox;
+        // The unit in the user's words ("°F", "% 干基"), the mapping file's name kept as its data.
         for (const auto& u : data::unitsFor(s.id)) {
-            unitCombo->addItem(QString::fromStdString(u));
+            unitCombo->addItem(mappingUnitText(u), QString::fromStdString(u));
         }
         m_table->setCellWidget(row, 3, unitCombo);
         auto* reason = new QTableWidgetItem(why);
@@ -138,7 +144,68 @@ ColumnMappingDialog::ColumnMappingDialog(const QString& batchFile, QWidget* pare
     layout->addWidget(m_preview, 2);
     layout->addWidget(buttons);
     resize(1000, 720);
+    if (applyRemembered()) {
+        m_note->setText(m_note->text() + QStringLiteral("\n") +
+                        tr("Proposed as you mapped a file with these same headers before; check it."));
+    }
+    // A wheel turned over the table scrolls it; it does not change a choice the pointer passes.
+    ignoreWheelUnlessFocused(this);
     updatePreview();
+}
+
+QString ColumnMappingDialog::memoryKey(const QStringList& headers) {
+    // The header row as it is, hashed: a file with exactly these columns in this order.
+    const QByteArray digest =
+        QCryptographicHash::hash(headers.join(QLatin1Char('\n')).toUtf8(), QCryptographicHash::Sha1);
+    return QStringLiteral("columnMappings/%1").arg(QString::fromLatin1(digest.toHex()));
+}
+
+void ColumnMappingDialog::rememberForTheseHeaders() const {
+    if (m_headers.isEmpty()) {
+        return;
+    }
+    // Every row's choice, "not in the file" included: a column the user took away from the guess
+    // must stay away.
+    QVariantMap headerOf, unitOf;
+    for (int r = 0; r < m_table->rowCount(); ++r) {
+        const QString name = m_table->item(r, 0)->data(Qt::UserRole).toString();
+        headerOf[name] = qobject_cast<QComboBox*>(m_table->cellWidget(r, 2))->currentData().toString();
+        unitOf[name] = qobject_cast<QComboBox*>(m_table->cellWidget(r, 3))->currentData().toString();
+    }
+    QSettings().setValue(memoryKey(m_headers), QVariantMap{{QStringLiteral("headers"), headerOf},
+                                                           {QStringLiteral("units"), unitOf},
+                                                           {QStringLiteral("batch_column"),
+                                                            m_batchColumn->currentData().toString()}});
+}
+
+bool ColumnMappingDialog::applyRemembered() {
+    if (m_headers.isEmpty()) {
+        return false;
+    }
+    const QVariantMap remembered = QSettings().value(memoryKey(m_headers)).toMap();
+    if (remembered.isEmpty()) {
+        return false;
+    }
+    const QVariantMap headerOf = remembered.value(QStringLiteral("headers")).toMap();
+    const QVariantMap unitOf = remembered.value(QStringLiteral("units")).toMap();
+    for (int r = 0; r < m_table->rowCount(); ++r) {
+        const QString name = m_table->item(r, 0)->data(Qt::UserRole).toString();
+        if (!headerOf.contains(name)) {
+            continue;
+        }
+        auto* header = qobject_cast<QComboBox*>(m_table->cellWidget(r, 2));
+        auto* unit = qobject_cast<QComboBox*>(m_table->cellWidget(r, 3));
+        const QSignalBlocker blockHeader(header), blockUnit(unit);
+        header->setCurrentIndex(std::max(0, header->findData(headerOf.value(name).toString())));
+        unit->setCurrentIndex(std::max(0, unit->findData(unitOf.value(name).toString())));
+        const bool mapped = header->currentIndex() > 0;
+        m_table->item(r, 4)->setText(mapped ? tr("as you mapped these headers before") : QString());
+    }
+    const QSignalBlocker blockBatch(m_batchColumn);
+    m_batchColumn->setCurrentIndex(
+        std::max(0, m_batchColumn->findData(remembered.value(QStringLiteral("batch_column")).toString())));
+    m_fromMemory = true;
+    return true;
 }
 
 namespace {
@@ -169,7 +236,7 @@ void ColumnMappingDialog::updatePreview() {
         (runs->notes.empty() ? QString()
                              : QStringLiteral(" ") + tr("Notes while reading: %1; the first: %2")
                                                          .arg(runs->notes.size())
-                                                         .arg(QString::fromStdString(runs->notes.front()))));
+                                                         .arg(dataNoteText(runs->notes.front()))));
     for (const auto& b : runs->runs) {
         const int r = m_preview->rowCount();
         m_preview->insertRow(r);
@@ -224,7 +291,7 @@ bool ColumnMappingDialog::chooseUnit(const QString& contractName, const QString&
     for (int r = 0; r < m_table->rowCount(); ++r) {
         if (m_table->item(r, 0)->data(Qt::UserRole).toString() == contractName) {
             auto* combo = qobject_cast<QComboBox*>(m_table->cellWidget(r, 3));
-            const int k = combo->findText(unit);
+            const int k = combo->findData(unit);
             if (k >= 0) {
                 combo->setCurrentIndex(k);
                 return true;
@@ -244,7 +311,7 @@ QByteArray ColumnMappingDialog::mappingJson() const {
             continue;
         }
         if (unit->currentIndex() > 0) { // not the contract's own unit: converted when read
-            m.contractToUnit[name.toStdString()] = unit->currentText().toStdString();
+            m.contractToUnit[name.toStdString()] = unit->currentData().toString().toStdString();
         }
         if (header != name || unit->currentIndex() > 0 ||
             (name == QLatin1String("time_s") && !m_timeFormat.isEmpty())) {

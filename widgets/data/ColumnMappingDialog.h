@@ -41,9 +41,20 @@ public:
     /// @brief The mapping table: one row per DryTwin column (name, unit, header, unit, why, meaning).
     QTableWidget* mappingTable() const { return m_table; }
     QLabel* previewNote() const { return m_previewNote; }
+    /// @brief Remembers the choices as they stand for files with these headers: the next file
+    /// with the same header row is proposed them instead of the guess (issue #72 item 6).
+    void rememberForTheseHeaders() const;
+    /// @brief True when the proposal came from a mapping remembered for these headers.
+    bool proposedFromMemory() const { return m_fromMemory; }
+    /// @brief The settings key under which the choices for @p headers are remembered.
+    static QString memoryKey(const QStringList& headers);
 
 private:
+    /// Puts back the choices remembered for these headers; false when there are none.
+    bool applyRemembered();
+
     QString m_file;
+    bool m_fromMemory = false;
     QStringList m_headers;
     QString m_timeFormat; ///< the mapping file's name of the time stamps' format ("" = seconds)
     QTableWidget* m_table = nullptr;

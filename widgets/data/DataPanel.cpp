@@ -1,4 +1,5 @@
 #include "data/DataPanel.h"
+#include "common/EngineText.h"
 
 #include "common/DisplayNames.h"
 #include "common/PlotStack.h"
@@ -128,6 +129,8 @@ void DataPanel::mapAndOpen(const QString& file) {
         if (dialog.exec() != QDialog::Accepted) {
             return;
         }
+        // The user's corrections, proposed again for the next file with these headers.
+        dialog.rememberForTheseHeaders();
         QString saveTo = askSaveFile(this, tr("Save the column mapping"), QStringLiteral("mapping.json"),
                                      tr("Mappings (*.json)"));
         const bool chosenByUser = !saveTo.isEmpty();
@@ -145,10 +148,12 @@ void DataPanel::mapAndOpen(const QString& file) {
             return;
         }
         m_keptMappingPath = chosenByUser ? QString() : saveTo;
-        m_workbench.openData(QFileInfo(file).absolutePath(), saveTo);
+        // The file mapped is the data set, not its folder: another CSV beside it (an export of
+        // another line, a file of plots) was pulled in with it (issue #72 item 6).
+        m_workbench.openData(QFileInfo(file).absoluteFilePath(), saveTo);
         if (!chosenByUser) {
             m_keptMappingNote = tr("The column mapping is kept at %1 and in the project when you save it; "
-                                   "“Map its columns…” changes it.")
+                                   "“Column mapping…” changes it.")
                                     .arg(QDir::toNativeSeparators(saveTo));
         }
     }
@@ -258,7 +263,7 @@ void DataPanel::fill() {
         (summary.notes.empty()
              ? QString()
              : QStringLiteral("\n") + tr("Noted while reading (%1):").arg(summary.notes.size()) +
-                   QStringLiteral(" ") + QString::fromStdString(summary.notes.front()) +
+                   QStringLiteral(" ") + dataNoteText(summary.notes.front()) +
                    (summary.notes.size() > 1 ? QStringLiteral(" …") : QString())) +
         (!m_keptMappingPath.isEmpty() && m_workbench.mappingPath() == m_keptMappingPath
              ? QStringLiteral("\n") + m_keptMappingNote
@@ -267,7 +272,7 @@ void DataPanel::fill() {
     // another unit can carry several, each naming its file.
     QStringList allNotes;
     for (const auto& note : summary.notes) {
-        allNotes << QString::fromStdString(note);
+        allNotes << dataNoteText(note);
     }
     m_cleaning->setToolTip(allNotes.isEmpty()
                                ? QString()

@@ -1,19 +1,21 @@
 #include "discovery/DiscoverPanel.h"
+#include "common/EngineText.h"
 
 #include "common/DisplayNames.h"
 #include "common/PlotStack.h"
+#include "common/QueuedNote.h"
 #include "common/Series.h"
 #include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 #include "discovery/DiscoveryNotes.h"
+#include "discovery/RankingWords.h"
+#include "discovery/ReferenceMenu.h"
 
 #include <QCoreApplication>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QMenu>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSplitter>
@@ -39,18 +41,8 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
            "retrained) the session's model"));
     m_verdict = new QLabel(tr("Run discovery on the loaded data with the current model."));
     m_verdict->setWordWrap(true);
-    m_ranking = makeResultTable(
-        {tr("Cause"), tr("Outcome"), tr("Score z"), tr("p (Holm)"), tr("Fitted"), tr("Loss")});
-    setHeaderToolTips(
-        m_ranking,
-        {QString(),
-         tr("Outcome: named, or why not (the whole reason in the cell's tooltip, and under the evidence)."),
-         tr("Score z: how strongly the model's error points at this cause, in standard deviations of "
-            "chance; above about 3 is strong evidence."),
-         tr("p (Holm): the chance of evidence this strong if the cause were absent, corrected for "
-            "testing many causes at once (Holm's method); below 0.05 the cause is taken seriously."),
-         tr("Fitted: whether the cause's parameter was fitted to the data (only the leading causes are)."),
-         tr("Loss: the fit's error with the cause in the model; lower is a better fit.")});
+    m_ranking = makeResultTable({tr("Cause"), tr("Outcome"), QString(), QString(), tr("Fitted"), tr("Loss")});
+    setRankingHeaders(m_ranking, false);
     m_gains = makeResultTable({tr("Held-out"), tr("Before"), tr("After"), tr("Unit")});
     setHeaderToolTips(m_gains,
                       {tr("The held-out part: the last 30 % of the rows, batches in time order (the "
@@ -74,25 +66,7 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
     m_referenceButton->setToolTip(
         tr("Choose batches from a time when the line ran as it should (the weeks after a cleaning, "
            "commissioning runs): Discover then says whether, from when and why the loaded data differ"));
-    auto* referenceMenu = new QMenu(m_referenceButton);
-    referenceMenu->addAction(tr("A folder of batch files…"), this, [this] {
-        const QString dir = QFileDialog::getExistingDirectory(
-            this, tr("Reference period: a folder of batch files"), m_workbench.dataPath());
-        if (!dir.isEmpty()) {
-            m_workbench.setReferencePath(dir);
-        }
-    });
-    referenceMenu->addAction(tr("One batch or historian file…"), this, [this] {
-        const QString file =
-            QFileDialog::getOpenFileName(this, tr("Reference period: a batch or historian file"),
-                                         m_workbench.dataPath(), tr("CSV files (*.csv *.txt)"));
-        if (!file.isEmpty()) {
-            m_workbench.setReferencePath(file);
-        }
-    });
-    referenceMenu->addAction(tr("No reference: judge the data alone"), this,
-                             [this] { m_workbench.setReferencePath({}); });
-    m_referenceButton->setMenu(referenceMenu);
+    m_referenceButton->setMenu(makeReferenceMenu(m_workbench, m_referenceButton));
     m_referenceLabel = new QLabel;
     m_referenceLabel->setWordWrap(true);
     m_detection = new QLabel;
@@ -124,6 +98,7 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
     buttons->addWidget(run);
     buttons->addWidget(m_extend);
     ll->addLayout(buttons);
+    ll->addWidget(new QueuedNote(m_workbench, Action::Discover));
     ll->addWidget(m_referenceButton);
     ll->addWidget(m_referenceLabel);
     ll->addWidget(m_detection);
@@ -808,7 +783,7 @@ QString DiscoverPanel::evidenceText(const discovery::Finding& f) {
     return tr("%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, "
               "%10]) "
               "and %18, the held-out MAE of X_out goes from %11 to %12 % wb and of T_out "
-              "from %13 to %14 °C (Diebold-Mariano p = %15: the chance that a gain this large is luck); "
+              "from %13 to %14 °C (the chance that a gain this large is luck: %15); "
               "%16. Check on the plots: %17.")
                .arg(moisture ? tr("Outlet-moisture") : tr("Outlet-temperature"))
                .arg(f.biasBefore, 0, 'g', 3)
@@ -896,7 +871,8 @@ void DiscoverPanel::show() {
                        x.code == "line_dynamics";
             });
         });
-    const QString nextStep = extended ? QString() : verdictNextStep(d.verdict, aCauseFitsButFailedACheck);
+    const QString nextStep =
+        extended ? QString() : verdictNextStep(d.verdict, aCauseFitsButFailedACheck, d.hasReference);
     m_verdict->setText(
         tr("%1. On %2.")
             .arg(verdictDisplayText(d.verdict, named.join(tr(", "))), m_workbench.dataSetLabel()) +
@@ -904,17 +880,7 @@ void DiscoverPanel::show() {
         (extended ? tr(" The model is extended.") : QString()));
     m_verdict->setToolTip(tr("Discovery's verdict key: %1").arg(QString::fromStdString(d.verdict)));
     m_extend->setEnabled(!d.findings.empty() && !extended);
-    // Against a reference the z is the change of the cause's one-step estimate from its normal
-    // value; a timing cause's p may come from its own score test instead (marked *), which is
-    // why a small z can sit beside a small p.
-    m_ranking->horizontalHeaderItem(2)->setText(d.hasReference ? tr("Change z") : tr("Score z"));
-    m_ranking->horizontalHeaderItem(2)->setToolTip(
-        d.hasReference
-            ? tr("Change z: how far the cause's one-step estimate here lies from its normal value on "
-                 "the reference period, in units of both estimates' errors and the spread between "
-                 "the reference's periods; above 2 it moved.")
-            : tr("Score z: how strongly the model's error points at this cause, in standard "
-                 "deviations of chance; above about 3 is strong evidence."));
+    setRankingHeaders(m_ranking, d.hasReference);
     m_ranking->setRowCount(static_cast<int>(d.ranking.size()));
     // Each candidate's outcome beside its evidence: a significant candidate left unnamed with no
     // word on why read as a contradiction of the verdict (a newcomer's review, 2026-11-28). The
@@ -933,7 +899,7 @@ void DiscoverPanel::show() {
         for (auto r = d.rounds.rbegin(); r != d.rounds.rend(); ++r) {
             for (const auto& x : r->rejected) {
                 if (x.cause == cause) {
-                    return {rejectionShortText(x.code), QString::fromStdString(x.reason)};
+                    return {rejectionShortText(x.code), engineDetailText(x.reason, rejectionText(x.code))};
                 }
             }
         }
@@ -954,12 +920,13 @@ void DiscoverPanel::show() {
             causeDisplayName(c.cause),
             outcomeText.isEmpty() ? (c.fitted ? QString() : tr("not fitted (weaker)")) : outcomeText,
             QString::number(c.score, 'f', 2),
-            QString::number(c.pHolm, 'g', 3) + (c.pFromOwnScreen ? QStringLiteral(" *") : QString()),
+            QString(), // setRankingPValue below
             c.fitted ? tr("yes") : tr("no"),
             c.fitted
                 ? QStringLiteral("%1 → %2").arg(c.fitLossBefore, 0, 'g', 4).arg(c.fitLossAfter, 0, 'g', 4)
                 : QStringLiteral("–")};
         setTableRow(m_ranking, static_cast<int>(i), cells);
+        setRankingPValue(m_ranking->item(static_cast<int>(i), 3), c.pHolm, c.pFromOwnScreen);
         if (!outcomeWhy.isEmpty()) {
             m_ranking->item(static_cast<int>(i), 1)->setToolTip(outcomeWhy);
         }
@@ -1016,14 +983,16 @@ void DiscoverPanel::show() {
     // Why the selection stopped where it did: each round's best candidate and the decision.
     for (std::size_t i = 0; i < d.rounds.size(); ++i) {
         const auto& rd = d.rounds[i];
-        html += tr("<p><b>Round %1</b>: %2 (held-out p = %3; removes %4 % of the error, %5 % of its fast "
-                   "part): %6</p>")
-                    .arg(i + 1)
-                    .arg(rd.best.empty() ? QStringLiteral("–") : causeDisplayName(rd.best).toHtmlEscaped())
-                    .arg(rd.heldOutPValue, 0, 'g', 2)
-                    .arg(100 * rd.explainedFraction, 0, 'f', 0)
-                    .arg(100 * rd.explainedFractionFast, 0, 'f', 0)
-                    .arg(roundReasonText(rd).toHtmlEscaped());
+        // The evidence's details: here the test behind "the chance it is luck" is named.
+        html +=
+            tr("<p><b>Round %1</b>: %2 (chance the held-out gain is luck %3, Diebold-Mariano test; removes "
+               "%4 % of the error, %5 % of its fast part): %6</p>")
+                .arg(i + 1)
+                .arg(rd.best.empty() ? QStringLiteral("–") : causeDisplayName(rd.best).toHtmlEscaped())
+                .arg(rd.heldOutPValue, 0, 'g', 2)
+                .arg(100 * rd.explainedFraction, 0, 'f', 0)
+                .arg(100 * rd.explainedFractionFast, 0, 'f', 0)
+                .arg(roundReasonText(rd).toHtmlEscaped());
         for (const auto& x : rd.rejected) {
             html +=
                 tr("<p>&nbsp;&nbsp;Not named: %1, because %2.</p>")

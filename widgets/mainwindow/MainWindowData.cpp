@@ -37,7 +37,7 @@ void MainWindow::createDataSetChooser() {
         m_dataSetChooser->blockSignals(true);
         m_dataSetChooser->clear();
         for (const auto& e : m_workbench.dataSets()) {
-            m_dataSetChooser->addItem(e.label, e.path);
+            m_dataSetChooser->addItem(e.labelText(), e.path);
             m_dataSetChooser->setItemData(m_dataSetChooser->count() - 1, e.path, Qt::ToolTipRole);
         }
         if (m_workbench.dataSets().empty()) {

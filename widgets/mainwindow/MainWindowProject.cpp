@@ -9,6 +9,7 @@
 #include "common/Translations.h"
 #include "data/DataPanel.h"
 #include "mainwindow/MainWindowInternal.h"
+#include "mpc/MpcPanel.h"
 #include "training/TrainingPanel.h"
 #include "training/TrainingRunner.h"
 #include "workflow/ProjectFile.h"
@@ -29,6 +30,7 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <algorithm>
+#include <map>
 #include <utility>
 
 namespace drytwin::widgets {
@@ -45,16 +47,32 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
         }
         return false;
     }
-    {
-        QSaveFile results(resultsPath);
+    const auto writeResults = [error](const QString& file, const workflow::LatestResults& latest) {
+        QSaveFile results(file);
         if (!results.open(QIODevice::WriteOnly) ||
-            results.write(QByteArray::fromStdString(workflow::latestResultsJson(m_workbench.latest()))) < 0 ||
+            results.write(QByteArray::fromStdString(workflow::latestResultsJson(latest))) < 0 ||
             !results.commit()) {
             if (error) {
-                *error = tr("cannot write %1: %2").arg(resultsPath, results.errorString());
+                *error = tr("cannot write %1: %2").arg(file, results.errorString());
             }
             return false;
         }
+        return true;
+    };
+    if (!writeResults(resultsPath, m_workbench.latest())) {
+        return false;
+    }
+    // The other data sets' results too, each in a file of its own: results made on the plant's
+    // data and kept while a historian export was looked at came back empty (issue #72 item 3).
+    const auto otherResults = m_workbench.otherDataSetResults();
+    std::map<QString, QString> otherResultFiles;
+    for (const auto& [dataPath, latest] : otherResults) {
+        const QString file =
+            path + QStringLiteral(".results.%1.json").arg(static_cast<int>(otherResultFiles.size()) + 1);
+        if (!writeResults(file, latest)) {
+            return false;
+        }
+        otherResultFiles[dataPath] = file;
     }
     const QString savedMessage = tr("Project saved to %1 (model, results and view)").arg(path);
     QString modelPath = m_workbench.modelPath();
@@ -97,12 +115,22 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
     // recording beside the plant's data), so that a reopened project can switch to them again.
     QJsonArray dataSets;
     for (const auto& e : m_workbench.dataSets()) {
-        QJsonObject entry{{QStringLiteral("label"), e.label}};
+        QJsonObject entry{{QStringLiteral("label"), e.label}, {QStringLiteral("batches"), e.batches}};
         withAbsolute(entry, QStringLiteral("path"), e.path);
         withAbsolute(entry, QStringLiteral("mapping_path"), e.mappingPath);
+        if (const QString offered = m_workbench.suggestedReference(e.path); !offered.isEmpty()) {
+            withAbsolute(entry, QStringLiteral("suggested_reference"), offered);
+        }
+        if (const auto it = otherResultFiles.find(e.path); it != otherResultFiles.end()) {
+            withAbsolute(entry, QStringLiteral("results_path"), it->second);
+        }
         dataSets.append(entry);
     }
     o[QStringLiteral("data_sets")] = dataSets;
+    // The what-if scenario as it stands in the editor, edits and all (it reverted to the bundled
+    // one on reopening).
+    o[QStringLiteral("scenario")] = QJsonObject{{QStringLiteral("name"), m_mpc->scenarioName()},
+                                                {QStringLiteral("text"), m_mpc->scenarioText()}};
     o[QStringLiteral("tab")] = QString::fromLatin1(kTabKeys[std::max(0, m_tabs->currentIndex())]);
     QJsonArray batches;
     for (const auto& r : m_data->batchTable()->selectionModel()->selectedRows()) {
@@ -138,6 +166,7 @@ bool MainWindow::saveProject(const QString& path, QString* error, bool remember)
     if (remember) {
         m_projectPath = path;
         rememberRecent(path);
+        m_unsavedWork.clear(); // a language change's temporary project saves nothing for the user
     }
     // With a model to write, the status says "saved" once the model file is written too.
     m_statusLabel->setText(modelQueued ? tr("Saving the project to %1…").arg(path) : savedMessage);
@@ -202,6 +231,18 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
             }
         }
     }
+    // Each other data set's results, put back with the rest so that switching to it shows them.
+    m_pendingOtherResults.clear();
+    for (const auto& e : paths->dataSets) {
+        const QString file = q(e.results);
+        QFile rf(file);
+        if (file.isEmpty() || !rf.open(QIODevice::ReadOnly)) {
+            continue;
+        }
+        if (auto parsed = workflow::parseLatestResults(rf.readAll().toStdString(), e.results)) {
+            m_pendingOtherResults[QDir::cleanPath(q(e.path))] = std::move(*parsed);
+        }
+    }
     m_pendingParts.reset();
     const QJsonArray parts = o.value(QStringLiteral("learnt_parts")).toArray();
     if (parts.size() == 3) {
@@ -227,9 +268,16 @@ bool MainWindow::openProject(const QString& path, QString* error, bool remember)
     m_workbench.setReferencePath(q(paths->reference));
     std::vector<DataSetEntry> dataSets;
     for (const auto& e : paths->dataSets) {
-        dataSets.push_back({q(e.path), q(e.mapping), q(e.label)});
+        dataSets.push_back({q(e.path), q(e.mapping), q(e.label), e.batches});
+        m_workbench.suggestReference(q(e.path), q(e.suggestedReference));
     }
     m_workbench.restoreDataSets(dataSets);
+    const QJsonObject scenario = o.value(QStringLiteral("scenario")).toObject();
+    if (scenario.contains(QStringLiteral("text"))) {
+        m_mpc->setScenario(scenario.value(QStringLiteral("name")).toString(),
+                           scenario.value(QStringLiteral("text")).toString());
+    }
+    m_unsavedWork.clear(); // what the window held before is replaced by the project
     if (!data.isEmpty()) {
         m_workbench.openData(data, mapping);
     } else {
@@ -249,7 +297,7 @@ QString MainWindow::dataFingerprint() const {
 
 void MainWindow::restorePending() {
     if (m_pendingResults) {
-        m_workbench.restoreResults(*m_pendingResults);
+        m_workbench.restoreResults(*m_pendingResults, std::exchange(m_pendingOtherResults, {}));
         m_pendingResults.reset();
     }
     if (m_pendingParts) { // a project without a model file: the states as saved, at once
@@ -293,6 +341,7 @@ MainWindow* MainWindow::reopenInLanguage(const QString& language, QString* error
         return nullptr;
     }
     next->m_tabs->setCurrentIndex(m_tabs->currentIndex());
+    next->m_unsavedWork = m_unsavedWork; // not saved by the language change: still to ask about
     // This window stays alive until it is closed (the first one lives as long as the program): a
     // live training line in it must not run on hidden.
     if (m_training->runner().frame().started) {

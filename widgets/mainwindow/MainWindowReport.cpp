@@ -2,6 +2,7 @@
 // window has run, so that work done in the workbench reaches a report as `drytwin pipeline` does.
 
 #include "MainWindow.h"
+#include "common/ErrorText.h"
 
 #include "report/ReportWriter.h"
 #include "workflow/ProjectFile.h"
@@ -68,7 +69,7 @@ Expected<QStringList> MainWindow::exportReport(const QString& folder) const {
 void MainWindow::askAndExportReport() {
     // Before the folder is asked for: the same message exportReport() would give.
     if (!reportMissingSteps().isEmpty()) {
-        showError(tr("Export report"), QString::fromStdString(exportReport(QString()).error().message()));
+        showError(tr("Export report"), errorText(exportReport(QString()).error()));
         return;
     }
     const QString folder = QFileDialog::getExistingDirectory(this, tr("Export report into folder"));
@@ -77,7 +78,7 @@ void MainWindow::askAndExportReport() {
     }
     const auto files = exportReport(folder);
     if (!files) {
-        showError(tr("Export report"), QString::fromStdString(files.error().message()));
+        showError(tr("Export report"), errorText(files.error()));
         return;
     }
     m_statusLabel->setText(

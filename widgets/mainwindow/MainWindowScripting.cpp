@@ -142,6 +142,26 @@ QStringList MainWindow::saveTabScreenshots(const QString& folder) {
             if (m_training->instructorWindow()->grab().save(instructor)) {
                 files << instructor;
             }
+            // Its faults page too: the faults with their units and the time left to react.
+            QWidget* page = m_training->faultTable();
+            while (page && !qobject_cast<QTabWidget*>(
+                               page->parentWidget() ? page->parentWidget()->parentWidget() : nullptr)) {
+                page = page->parentWidget();
+            }
+            if (auto* pages =
+                    page ? qobject_cast<QTabWidget*>(page->parentWidget()->parentWidget()) : nullptr) {
+                QWidget* shown = pages->currentWidget();
+                pages->setCurrentWidget(page);
+                for (int k = 0; k < 5; ++k) {
+                    QApplication::processEvents();
+                }
+                const QString faults = QDir(folder).filePath(
+                    QStringLiteral("%1-training-instructor-faults.png").arg(i + 2, 2, 10, QLatin1Char('0')));
+                if (m_training->instructorWindow()->grab().save(faults)) {
+                    files << faults;
+                }
+                pages->setCurrentWidget(shown);
+            }
             m_training->setInstructorView(false);
         }
     }

@@ -23,7 +23,7 @@ void MainWindow::createStatusBar() {
     m_progressBar->setRange(0, 100);
     m_cancelButton = new QPushButton(tr("Cancel"));
     statusBar()->addWidget(m_statusLabel, 1);
-    m_mapButton = new QPushButton(tr("Map its columns…"));
+    m_mapButton = new QPushButton(tr("Column mapping…")); // the Data tab's button has the same name
     m_mapButton->setToolTip(tr("Open the column-mapping dialog for the file that was not recognised"));
     m_mapButton->setVisible(false);
     statusBar()->addPermanentWidget(m_mapButton);

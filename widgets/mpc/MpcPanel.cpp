@@ -1,8 +1,10 @@
 #include "mpc/MpcPanel.h"
+#include "common/EngineText.h"
 
 #include "common/DisplayNames.h"
 #include "common/ModelStateBar.h"
 #include "common/PlotStack.h"
+#include "common/QueuedNote.h"
 #include "common/WidgetHelpers.h"
 #include "common/Workbench.h"
 #include "control/BundledScenarios.h"
@@ -22,6 +24,7 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QSignalBlocker>
 #include <QSplitter>
 #include <QStandardPaths>
 #include <QTabBar>
@@ -116,6 +119,7 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     runRow->addWidget(new QLabel(tr("prediction at")));
     runRow->addWidget(m_prediction, 1);
     ll->addLayout(runRow);
+    ll->addWidget(new QueuedNote(m_workbench, Action::Mpc));
     ll->addWidget(m_blocked);
     ll->addWidget(m_note);
     ll->addWidget(m_table, 1);
@@ -138,17 +142,23 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
         }
     };
     connect(m_scenario, &QComboBox::currentTextChanged, this, load);
+    // Another bundled scenario chosen by the user is an edit a project must keep.
+    connect(m_scenario, QOverload<int>::of(&QComboBox::activated), this, &MpcPanel::scenarioEdited);
     connect(m_form, &ScenarioForm::edited, this, [this] {
         m_editor->blockSignals(true);
         m_editor->setPlainText(m_form->json());
         m_editor->blockSignals(false);
         updateRunState();
+        Q_EMIT scenarioEdited();
     });
     // Text typed in the JSON tab goes into the form at once: its checks and Run's state follow
     // the text, whichever tab is in front.
     connect(m_editor, &QPlainTextEdit::textChanged, this, [this] {
         m_form->setJson(m_editor->toPlainText());
         updateRunState();
+        if (!m_settingScenario) {
+            Q_EMIT scenarioEdited();
+        }
     });
     connect(m_form, &ScenarioForm::validityChanged, this, &MpcPanel::updateRunState);
     connect(&m_workbench, &Workbench::runningChanged, this, &MpcPanel::updateRunState);
@@ -157,7 +167,9 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
             m_form->setJson(m_editor->toPlainText());
         }
     });
+    m_settingScenario = true;
     load();
+    m_settingScenario = false;
     connect(openFile, &QPushButton::clicked, this, [this] {
         const QString p = askOpenFile(this, tr("Open scenario"), tr("Scenarios (*.json)"));
         QFile f(p);
@@ -167,6 +179,7 @@ MpcPanel::MpcPanel(Workbench& workbench, QWidget* parent) : QWidget(parent), m_w
     });
     connect(m_run, &QPushButton::clicked, this, &MpcPanel::run);
     connect(&m_workbench, &Workbench::modelStateChanged, this, &MpcPanel::offerControllers);
+    connect(&m_workbench, &Workbench::runningChanged, this, &MpcPanel::offerControllers);
     offerControllers();
     connect(m_prediction, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &MpcPanel::show);
     m_plots->setEmptyText(tr("Run a scenario to see each controller's outlet moisture and hot-air setpoint"));
@@ -237,9 +250,12 @@ QString MpcPanel::scenarioProblem() const {
     const auto colon = place.rfind(':');
     const QString line =
         colon == std::string::npos ? QString() : QString::fromStdString(place.substr(colon + 1));
-    return line.isEmpty() ? tr("The scenario's JSON: %1").arg(QString::fromStdString(parsed.error().reason))
-                          : tr("The scenario's JSON, line %1: %2")
-                                .arg(line, QString::fromStdString(parsed.error().reason));
+    // The parser's reason in English only where the window is: elsewhere the line it names and
+    // that the scenario file's schema (docs/mpc.md) is not met.
+    const QString reason =
+        engineDetailText(parsed.error().reason, tr("a value or key the scenario's schema does not accept"));
+    return line.isEmpty() ? tr("The scenario's JSON: %1").arg(reason)
+                          : tr("The scenario's JSON, line %1: %2").arg(line, reason);
 }
 
 void MpcPanel::updateRunState() {
@@ -265,6 +281,28 @@ void MpcPanel::showRun() {
         m_prediction->blockSignals(false);
         show();
     }
+}
+
+QString MpcPanel::scenarioName() const {
+    return m_scenario->currentText();
+}
+
+QString MpcPanel::scenarioText() const {
+    return m_editor->toPlainText();
+}
+
+void MpcPanel::setScenario(const QString& name, const QString& text) {
+    m_settingScenario = true;
+    {
+        // The list shows the bundled scenario it started from; the text is the one kept, edits
+        // and all (choosing the name would load the bundled text over it).
+        const QSignalBlocker blockList(m_scenario);
+        if (m_scenario->findText(name) >= 0) {
+            m_scenario->setCurrentText(name);
+        }
+    }
+    m_editor->setPlainText(text);
+    m_settingScenario = false;
 }
 
 MpcPanel::~MpcPanel() {
@@ -329,7 +367,12 @@ void MpcPanel::offerControllers() {
         const auto& part = m_workbench.learntPart(kind);
         QString label = controllerDisplayName(kind);
         QString tip = tr("Contract key: %1").arg(QString::fromLatin1(control::controllerName(kind)));
-        if (!exists && part.state == PartState::Stale) {
+        if (!exists && part.state == PartState::Stale && m_workbench.isRunning(Action::Train)) {
+            // Not "retrain it" while a retraining is under way or queued (issue #72 item 8).
+            label = tr("%1 (stale, being learnt again)").arg(label);
+            tip =
+                tr("Learnt before %1; it is being learnt again now.").arg(staleReasonText(part.staleBecause));
+        } else if (!exists && part.state == PartState::Stale) {
             label = tr("%1 (stale)").arg(label);
             tip = tr("Learnt before %1: retrain it to run it.").arg(staleReasonText(part.staleBecause));
         } else if (!exists) {
@@ -382,7 +425,7 @@ void MpcPanel::show() {
             m_table->item(row, 5)->setToolTip(
                 tr("Decisions that kept the previous plan (the model saw no effect of the hot air, or the "
                    "solve failed); the last reason: %1")
-                    .arg(QString::fromStdString(run.metrics.lastFallbackReason)));
+                    .arg(fallbackReasonText(run.metrics.lastFallbackReason)));
         }
         if (const auto ratio =
                 pi ? std::nullopt : control::mismatchedGainRatio(m.gainPctPerKMedian, cl.plantGainPctPerK)) {

@@ -38,6 +38,12 @@ public:
     QComboBox* scenarios() const { return m_scenario; }
     /// @brief Runs the scenario; refused (the reason shown beside Run) while it has a problem.
     void run();
+    /// @brief The bundled scenario chosen last (the text may have been edited since).
+    QString scenarioName() const;
+    /// @brief The scenario as it stands in the editor (a project keeps it).
+    QString scenarioText() const;
+    /// @brief Puts back a scenario a project kept: @p name chosen in the list, @p text in the editor.
+    void setScenario(const QString& name, const QString& text);
     QPushButton* runButton() const { return m_run; }
     /// @brief What stops the scenario from running, worded for the user (the form's first problem,
     /// else the scenario parser's on the JSON text); empty when it can run.
@@ -52,6 +58,10 @@ public:
     /// @brief Why a controller whose model's steady gain is @p ratio times the plant's
     /// (control::mismatchedGainRatio) controls as it does, in a sentence.
     static QString gainMismatchText(const QString& controller, double ratio);
+
+Q_SIGNALS:
+    /// @brief The user changed the scenario (the form, the JSON, another bundled one or a file).
+    void scenarioEdited();
 
 private:
     void show();
@@ -76,7 +86,8 @@ private:
     QPushButton* m_run = nullptr;
     QLabel* m_blocked = nullptr;
     QString m_tempScenario;
-    bool m_awaitingRun = false; ///< run() started a job whose ending the note has not shown yet
+    bool m_awaitingRun = false;     ///< run() started a job whose ending the note has not shown yet
+    bool m_settingScenario = false; ///< the editor's text is being set by the program, not the user
 };
 
 } // namespace drytwin::widgets

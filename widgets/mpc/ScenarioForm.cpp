@@ -1,6 +1,7 @@
 #include "mpc/ScenarioForm.h"
 
 #include "common/DisplayNames.h"
+#include "common/WheelGuard.h"
 #include "common/WidgetHelpers.h"
 #include "plant/Mechanisms.h"
 
@@ -19,6 +20,7 @@
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -138,13 +140,17 @@ ScenarioForm::ScenarioForm(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_note);
     layout->addLayout(form);
-    // A new row starts inside the scored length, so that Add never makes the form invalid.
-    const auto newRowAt = [this] { return std::min(100, m_length->value() / 2); };
-    layout->addWidget(section(tr("Setpoint steps"), m_steps, m_stepsError,
-                              [this, newRowAt] { addSetpointStep(newRowAt(), 13.0); }));
+    layout->addWidget(section(tr("Setpoint steps"), m_steps, m_stepsError, [this] {
+        // Appended after the last step, to the setpoint it left: inserted at 100 s before a later
+        // step it made the form invalid and Run was off until it was edited (issue #72 item 7).
+        const int last = m_steps->rowCount() - 1;
+        addSetpointStep(timeForNewRow(m_steps, 0),
+                        last >= 0 ? cellNumber(m_steps, last, 1, 13.0) : m_setpoint->value());
+    }));
     layout->addWidget(
-        section(tr("Input changes (a ramp when \"over\" > 0)"), m_inputs, m_inputsError,
-                [this, newRowAt] { addInputChange(QStringLiteral("feed_kg_h"), newRowAt(), 0, 6400); }));
+        section(tr("Input changes (a ramp when \"over\" > 0)"), m_inputs, m_inputsError, [this] {
+            addInputChange(QStringLiteral("feed_kg_h"), timeForNewRow(m_inputs, 1), 0, 6400);
+        }));
     layout->addWidget(section(tr("Hidden causes in the plant (no controller knows them)"), m_mechanisms,
                               m_mechanismsError,
                               [this] { addMechanism(QStringLiteral("heat_transfer_fouling"), 0.2, 0); }));
@@ -161,6 +167,26 @@ ScenarioForm::ScenarioForm(QWidget* parent) : QWidget(parent) {
     for (auto* table : {m_steps, m_inputs, m_mechanisms}) {
         connect(table, &QTableWidget::itemChanged, this, &ScenarioForm::emitEdited);
     }
+    // The form scrolls: a wheel over a value scrolls it rather than changing the value.
+    ignoreWheelUnlessFocused(this);
+}
+
+double ScenarioForm::timeForNewRow(const QTableWidget* table, int timeColumn) const {
+    // After the latest row's time and within the scored length, so that Add never makes the form
+    // invalid: halfway from the latest time to the end (100 s into an empty table, or the middle
+    // of a short run).
+    const int length = m_length->value();
+    double latest = -1;
+    for (int r = 0; r < table->rowCount(); ++r) {
+        latest = std::max(latest, cellNumber(table, r, timeColumn, -1));
+    }
+    if (latest < 0) {
+        return std::min(100, length / 2);
+    }
+    if (latest >= length) {
+        return latest; // the form already says the table runs past the length
+    }
+    return std::round(latest + 0.5 * (length - latest));
 }
 
 QTableWidget* ScenarioForm::makeTable(const QStringList& headers) {
@@ -357,6 +383,7 @@ void ScenarioForm::addInputChange(const QString& input, double atS, double durat
     }
     combo->setCurrentIndex(std::max(0, combo->findData(input)));
     connect(combo, QOverload<int>::of(&QComboBox::activated), this, &ScenarioForm::emitEdited);
+    ignoreWheelUnlessFocused(combo);
     m_inputs->setCellWidget(r, 0, combo);
     m_inputs->setItem(r, 1, new QTableWidgetItem(QString::number(atS)));
     m_inputs->setItem(r, 2, new QTableWidgetItem(QString::number(durationS)));
@@ -378,6 +405,7 @@ void ScenarioForm::addMechanism(const QString& mechanism, double strength, doubl
     }
     combo->setCurrentIndex(std::max(0, combo->findData(mechanism)));
     connect(combo, QOverload<int>::of(&QComboBox::activated), this, &ScenarioForm::emitEdited);
+    ignoreWheelUnlessFocused(combo);
     m_mechanisms->setCellWidget(r, 0, combo);
     m_mechanisms->setItem(r, 1, new QTableWidgetItem(QString::number(strength)));
     m_mechanisms->setItem(r, 2, new QTableWidgetItem(QString::number(atS)));

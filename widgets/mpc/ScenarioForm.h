@@ -36,6 +36,8 @@ public:
     void addInputChange(const QString& input, double atS, double durationS, double to);
     void addMechanism(const QString& mechanism, double strength, double atS);
     QSpinBox* scoredLength() const { return m_length; }
+    /// @brief The specification band's box (± % wb around the setpoint).
+    QDoubleSpinBox* band() const { return m_band; }
 
     /// @brief What is wrong with the form's values, worded for the user; empty when nothing is.
     QStringList problems() const { return m_problems; }
@@ -54,6 +56,8 @@ Q_SIGNALS:
 
 private:
     QTableWidget* makeTable(const QStringList& headers);
+    /// The time for a row the Add button appends to @p table (its times in @p timeColumn).
+    double timeForNewRow(const QTableWidget* table, int timeColumn) const;
     void emitEdited();
     /// Checks the values again, fills the inline messages, marks the cells at fault.
     void revalidate();

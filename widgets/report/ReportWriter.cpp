@@ -1,4 +1,5 @@
 #include "report/ReportWriter.h"
+#include "io/MethodsGlossary.h"
 
 #include "common/DisplayNames.h"
 
@@ -462,6 +463,17 @@ Expected<QStringList> writeHtmlPdfReport(const workflow::PipelineResult& r,
                        "Paper Fig. 5: closed-loop outlet moisture and hot-air setpoint under the PGRL-CC "
                        "MPC, the PBM MPC and the plant's PI loop."));
     }
+
+    // The methods behind the workbench's plain words, by their technical names (issue #72 item 10).
+    both(QStringLiteral("<h2>Appendix: the methods behind the workbench's words</h2>") +
+         tableHead({{QStringLiteral("on screen"), 30},
+                    {QStringLiteral("tab"), 15},
+                    {QStringLiteral("method"), 55}}));
+    for (const auto& t : io::methodsGlossary()) {
+        both(QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td></tr>")
+                 .arg(esc(t.onScreen), esc(t.where), esc(t.method)));
+    }
+    both(QStringLiteral("</table>"));
 
     // Reproducibility.
     both(QStringLiteral("<h2>Reproducibility</h2><p>Command: <code>%1</code></p><p>DryTwin %2; Qt %3")

@@ -89,8 +89,7 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     m_workbench.bindButton(runAblation, Action::Ablation);
     m_ablation = makeResultTable({tr("Variant"), tr("MAE X_out\n[% wb]"), tr("R² X_out\n[-]"),
                                   tr("MAE T_out\n[°C]"), tr("MAE X_out,\nextrapolation")});
-    m_eigen->setEmptyText(tr("Learn the correction models to see the eigenvalues of their state matrix"));
-    m_skill->setEmptyText(tr("Learn the correction models to see their skill by forecast horizon"));
+    setDefaultEmptyTexts();
     m_eigen->setHintVisible(false);
     // Sensible empty axes until a model is evaluated (a log axis would autoscale to 1e-100).
     keepEqualAspect(m_eigen->plot(0), 1.15);
@@ -130,8 +129,19 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     layout->addWidget(split);
     connect(train, &QPushButton::clicked, this, &ResidualPanel::train);
     connect(&m_workbench, &Workbench::evaluated, this, &ResidualPanel::showEvaluation);
-    connect(&m_workbench, &Workbench::trained, this,
-            [this] { m_note->setText(tr("Learnt. Scoring the models on the held-out part…")); });
+    connect(&m_workbench, &Workbench::trained, this, [this] {
+        m_learning = Learning::Scoring;
+        showLearningState();
+    });
+    connect(&m_workbench, &Workbench::evaluated, this, [this] {
+        if (m_learning == Learning::Scoring) {
+            m_learning = Learning::Idle;
+            setDefaultEmptyTexts();
+        }
+    });
+    // A job ahead of the training or of its scoring ends, or another is queued: say it again.
+    connect(&m_workbench, &Workbench::runningChanged, this, &ResidualPanel::showLearningState);
+    connect(&m_workbench.jobs(), &JobRunner::started, this, &ResidualPanel::showLearningState);
     // Results of another data set or model are not shown as these.
     connect(&m_workbench, &Workbench::dataChanged, this, [this] {
         showEvaluation();
@@ -146,7 +156,10 @@ ResidualPanel::ResidualPanel(Workbench& workbench, QWidget* parent)
     connect(&m_workbench, &Workbench::failed, this,
             [this](const QString& action, const QString& message, bool) {
                 if (action == Workbench::tr("Learn the correction models") ||
-                    action == Workbench::tr("Ablation")) {
+                    action == Workbench::tr("Ablation") ||
+                    (action == Workbench::tr("Evaluate") && m_learning == Learning::Scoring)) {
+                    m_learning = Learning::Idle;
+                    setDefaultEmptyTexts();
                     m_note->setText(message);
                 }
             });
@@ -204,8 +217,31 @@ void ResidualPanel::train() {
         o.lstm.hidden = 8;
         o.selection.lags = {4, 8};
     }
-    m_note->setText(tr("Training…"));
     m_workbench.train(o);
+    m_learning = Learning::Training;
+    showLearningState();
+}
+
+void ResidualPanel::setDefaultEmptyTexts() {
+    m_eigen->setEmptyText(tr("Learn the correction models to see the eigenvalues of their state matrix"));
+    m_skill->setEmptyText(tr("Learn the correction models to see their skill by forecast horizon"));
+}
+
+void ResidualPanel::showLearningState() {
+    if (m_learning == Learning::Training) {
+        const QString queued = m_workbench.queuedText(Action::Train);
+        m_note->setText(queued.isEmpty() ? tr("Training…") : queued);
+    } else if (m_learning == Learning::Scoring) {
+        const QString queued = m_workbench.queuedText(Action::Evaluate);
+        m_note->setText(queued.isEmpty()
+                            ? tr("Learnt. Scoring the models on the held-out part…")
+                            : tr("Learnt. Their scores on the held-out part come next: %1.").arg(queued));
+        // The plots say the same: the models exist, their scores (and these plots) are on the way.
+        m_eigen->setEmptyText(tr("Learnt: the eigenvalues are drawn once the models are scored on the "
+                                 "held-out part"));
+        m_skill->setEmptyText(tr("Learnt: the skill curves are drawn once the models are scored on the "
+                                 "held-out part"));
+    }
 }
 
 void ResidualPanel::showEvaluation() {

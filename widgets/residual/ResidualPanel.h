@@ -28,11 +28,18 @@ public:
     QTabWidget* tables() const { return m_tables; }
     PlotStack* eigenvalues() const { return m_eigen; }
     PlotStack* skill() const { return m_skill; }
+    /// @brief The line under Learn: what the learning is doing, queued, or how it ended.
+    QLabel* note() const { return m_note; }
     void train();
     /// @brief A quick training for tests (2 LSTM epochs, small grid).
     void setQuick(bool quick) { m_quick = quick; }
 
 private:
+    /// Where learning stands (queued, training, learnt and waiting for its scores), said alike by
+    /// the note and the empty plots (issue #72 item 8: "Learnt. Scoring…" beside plots asking to learn).
+    enum class Learning { Idle, Training, Scoring };
+    void showLearningState();
+    void setDefaultEmptyTexts();
     void showEvaluation();
     void showAblation();
     /// The steady gains of X_out to the hot air from the last What-if MPC run, the plant's beside them.
@@ -53,6 +60,7 @@ private:
     QLabel* m_gains = nullptr;
     ModelStateBar* m_state = nullptr;
     bool m_quick = false;
+    Learning m_learning = Learning::Idle;
 };
 
 } // namespace drytwin::widgets

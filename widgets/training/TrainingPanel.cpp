@@ -6,6 +6,7 @@
 #include "common/Workbench.h"
 #include "control/BundledScenarios.h"
 #include "control/ClosedLoop.h"
+#include "training/FaultWords.h"
 #include "training/TrainingRunner.h"
 
 #include <QCheckBox>
@@ -224,7 +225,7 @@ TrainingPanel::TrainingPanel(Workbench& workbench, QWidget* parent)
     m_faultDelay->setRange(0, 7200);
     m_faultDelay->setSuffix(tr(" s from now"));
     m_inject = new QPushButton(tr("Inject fault"));
-    m_faults = makeResultTable({tr("Fault"), tr("Strength"), tr("Acts from"), tr("Found after")});
+    m_faults = makeResultTable({tr("Fault"), tr("Strength"), tr("Acts from"), tr("Found")});
     m_faults->setMaximumHeight(100);
     m_score = new QLabel;
     m_score->setWordWrap(true);
@@ -656,8 +657,8 @@ void TrainingPanel::updateFaultUnit() {
     m_faultStrength->setRange(0, mi.maxStrength);
     m_faultStrength->setSingleStep(mi.maxStrength / 50);
     m_faultStrength->setValue(mi.defaultStrength * 2); // clearly visible to a trainee, still realistic
-    m_faultStrength->setSuffix(unitSuffix(mi.unit));
-    m_faultStrength->setToolTip(fromView(mi.strengthMeaning));
+    m_faultStrength->setSuffix(faultStrengthUnit(mi.id));
+    m_faultStrength->setToolTip(faultStrengthToolTip(mi.id));
 }
 
 void TrainingPanel::showFrame() {
@@ -712,28 +713,18 @@ void TrainingPanel::showFrame() {
     m_faults->setRowCount(static_cast<int>(f.faults.size()));
     for (std::size_t i = 0; i < f.faults.size(); ++i) {
         const auto& fault = f.faults[i];
-        QString found = fault.onsetS > f.timeS ? tr("not acting yet") : tr("not found");
-        for (const auto& fs : f.score.faults) {
-            if (fs.fault.mechanism == fault.mechanism && fs.found) {
-                found = tr("%1 s").arg(fs.timeToFindS, 0, 'f', 0);
-            }
-        }
+        const auto scored = std::find_if(f.score.faults.begin(), f.score.faults.end(), [&](const auto& fs) {
+            return fs.fault.mechanism == fault.mechanism && fs.fault.onsetS == fault.onsetS;
+        });
+        const QString state =
+            faultStateText(scored == f.score.faults.end() ? nullptr : &*scored, fault.onsetS <= f.timeS);
         setTableRow(m_faults, static_cast<int>(i),
-                    {mechanismLabel(fault.mechanism),
-                     QString::number(fault.strength) + unitSuffix(plant::info(fault.mechanism).unit),
-                     clockText(fault.onsetS), found});
+                    {mechanismLabel(fault.mechanism), faultStrengthText(fault.mechanism, fault.strength),
+                     clockText(fault.onsetS), state});
+        m_faults->item(static_cast<int>(i), 1)->setToolTip(faultStrengthToolTip(fault.mechanism));
     }
     fitTableWidth(m_faults);
-    m_score->setText(
-        tr("<b>Score %1 / 100</b> — faults found %2 of %3, wrong answers %4, product out of the band "
-           "%5 % of the time (%6 kg)")
-            .arg(f.score.points, 0, 'f', 0)
-            .arg(std::count_if(f.score.faults.begin(), f.score.faults.end(),
-                               [](const auto& x) { return x.found; }))
-            .arg(f.score.faults.size())
-            .arg(f.score.wrongAnswers)
-            .arg(f.score.offSpecPct, 0, 'f', 1)
-            .arg(f.score.offSpecKg, 0, 'f', 0));
+    m_score->setText(scoreText(f.score));
     const auto& m = f.monitor;
     if (!m.ready && f.monitorCommissioning) {
         m_monitorLabel->setText(tr("Line monitor: commissioning on healthy runs of this scenario (a few "

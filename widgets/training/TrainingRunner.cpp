@@ -1,4 +1,5 @@
 #include "training/TrainingRunner.h"
+#include "common/EngineText.h"
 
 #include "common/ErrorText.h"
 #include "data/BatchWriter.h"
@@ -226,7 +227,7 @@ private:
             f.bandPct = s.scenario().bandPct;
             f.setpointPct = s.setpointPct();
             f.controller = s.controller();
-            f.controllerNote = QString::fromStdString(s.controllerNote());
+            f.controllerNote = fallbackReasonText(s.controllerNote()); // the MPC's reason to hold its plan
             f.opened = std::exchange(m_justOpened, false);
             f.openNote = QString::fromStdString(std::exchange(m_openNote, {}));
             f.scenarioName = QString::fromStdString(s.scenario().name);

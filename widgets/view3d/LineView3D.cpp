@@ -342,9 +342,22 @@ void LineView3D::setBarTitle(bool moisture) {
     m_barTitle = moisture ? tr("moisture [% wb]") : tr("temperature [°C]");
     const bool cjk =
         std::any_of(m_barTitle.begin(), m_barTitle.end(), [](QChar c) { return c.unicode() >= 0x2E80; });
-    if (cjk && !m_cjkFont.isEmpty()) {
+    // VTK's own font draws "[" and "]" as round brackets: the bar read "moisture (% wb)" beside
+    // axes that say "[% wb]" (issue #72 item 11). A system font file draws them as written.
+    static const QString latinFont = [] {
+        for (const char* candidate : {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
+                                      "/usr/share/fonts/truetype/liberation/LiberationSans-Regular.ttf",
+                                      "/usr/share/fonts/truetype/freefont/FreeSans.ttf"}) {
+            if (QFileInfo::exists(QString::fromLatin1(candidate))) {
+                return QString::fromLatin1(candidate);
+            }
+        }
+        return QString();
+    }();
+    const QString fontFile = cjk ? m_cjkFont : latinFont;
+    if (!fontFile.isEmpty()) {
         m_bar->GetTitleTextProperty()->SetFontFamily(VTK_FONT_FILE);
-        m_bar->GetTitleTextProperty()->SetFontFile(m_cjkFont.toUtf8().constData());
+        m_bar->GetTitleTextProperty()->SetFontFile(fontFile.toUtf8().constData());
     }
     const QString shown = cjk && m_cjkFont.isEmpty()
                               ? (moisture ? QStringLiteral("X [% wb]") : QStringLiteral("T [°C]"))

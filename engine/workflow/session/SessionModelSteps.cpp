@@ -43,7 +43,7 @@ Expected<SimulateResult> Session::simulate(const SimulateOptions& options, const
             }
         }
         result.fits.push_back({s.id, s.rows(), diagnostics::meanAbsoluteError(obsX, predX),
-                               diagnostics::meanAbsoluteError(obsT, predT)});
+                               diagnostics::meanAbsoluteError(obsT, predT), obsX.size()});
     }
     result.simulations = std::move(*sims);
     result.ending = {Termination::Completed, std::to_string(m_si.size()) + " batch(es) simulated",
@@ -52,6 +52,36 @@ Expected<SimulateResult> Session::simulate(const SimulateOptions& options, const
         m_latest.simulate = result;
     }
     return result;
+}
+
+namespace {
+double keptRowsWeightedMean(const std::vector<BatchFit>& fits, double BatchFit::*mae) {
+    double sum = 0;
+    std::size_t rows = 0;
+    for (const auto& f : fits) {
+        if (f.keptRows > 0) {
+            sum += f.*mae * static_cast<double>(f.keptRows);
+            rows += f.keptRows;
+        }
+    }
+    return rows > 0 ? sum / static_cast<double>(rows) : std::numeric_limits<double>::quiet_NaN();
+}
+} // namespace
+
+double SimulateResult::maeXOutPctAllKeptRows() const {
+    return keptRowsWeightedMean(fits, &BatchFit::maeXOutPct);
+}
+
+double SimulateResult::maeTOutCAllKeptRows() const {
+    return keptRowsWeightedMean(fits, &BatchFit::maeTOutC);
+}
+
+std::size_t SimulateResult::keptRows() const {
+    std::size_t rows = 0;
+    for (const auto& f : fits) {
+        rows += f.keptRows;
+    }
+    return rows;
 }
 
 Expected<CalibrateResult> Session::calibrate(const CalibrateOptions& options, const Progress& progress) {

@@ -209,6 +209,32 @@ private Q_SLOTS:
         QVERIFY(sc.summary.find("1 of 1 faults found") != std::string::npos);
     }
 
+    // Issue #72 item 9: a fault just injected does not drop the score (it fell to 15 at once);
+    // it counts once found or once the time to react (30 min from its onset) has passed.
+    void aFaultIsScoredOnlyAfterATimeToReact() {
+        control::Scenario scenario = shortScenario();
+        scenario.lengthS = 2400;
+        auto s = started(scenario);
+        QVERIFY(s.injectFault(Mechanism::MoistureMeterOffset, 0.6, 100).ok());
+        s.advance(700); // ten minutes into the fault
+        auto sc = s.score();
+        QCOMPARE(sc.faults.size(), std::size_t(1));
+        QVERIFY(sc.faults[0].withinReactionTime);
+        QCOMPARE(sc.faults[0].reactionTimeLeftS, training::kReactionTimeS - 600);
+        QCOMPARE(sc.points, 100.0); // as before the fault: nobody could have acted yet
+        QVERIFY2(sc.summary.find("within the time to react") != std::string::npos, sc.summary.c_str());
+        // A wrong answer costs at once: that the trainee did.
+        QVERIFY(s.answer("heat_transfer_fouling").ok());
+        QCOMPARE(s.score().points, 90.0);
+        // Past the time to react, unfound: scored as not found (the band's share only), less the answer.
+        s.advance(1300); // onset + 1900 s
+        sc = s.score();
+        QVERIFY(!sc.faults[0].withinReactionTime);
+        QVERIFY(!sc.faults[0].found);
+        const double band = 15 * (1 - sc.faults[0].offSpecPctWhileOpen / 100);
+        QVERIFY(std::abs(sc.points - std::max(0.0, band - 10)) < 1e-9);
+    }
+
     void controllersSwitchBumplessly() {
         auto s = started(shortScenario());
         QVERIFY(s.setController(control::ControllerKind::Pbm).ok());

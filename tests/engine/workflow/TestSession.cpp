@@ -99,6 +99,20 @@ private Q_SLOTS:
         std::filesystem::create_directories(root + "/moved/project/data");
         paths = workflow::readProjectPaths(root + "/moved/project/p.dtproj");
         QCOMPARE(paths->data, root + "/moved/project/data"); // moved with its data: beside it
+        QCOMPARE(paths->dataSets[0].batches, -1);            // a project that does not say
+        // A project saved in its data's folder ("." in the file) names that folder without a
+        // trailing separator, so that the folder keeps its name in the data-set list (issue #72
+        // item 3: "(1 batch)"); another data set's results and batch count come back with it.
+        nlohmann::json beside{{"format", "drytwin-project"}, {"data_path", "."}};
+        beside["data_sets"] = nlohmann::json::array(
+            {{{"label", "x"}, {"path", "."}, {"batches", 3}, {"results_path", "p.dtproj.results.1.json"}}});
+        std::ofstream(root + "/saved/data/p.dtproj") << beside.dump();
+        paths = workflow::readProjectPaths(root + "/saved/data/p.dtproj");
+        QVERIFY(paths.ok());
+        QCOMPARE(paths->data, root + "/saved/data");
+        QCOMPARE(paths->dataSets[0].path, root + "/saved/data");
+        QCOMPARE(paths->dataSets[0].batches, 3);
+        QCOMPARE(paths->dataSets[0].results, root + "/saved/data/p.dtproj.results.1.json");
         std::ofstream(root + "/cut.dtproj") << project.substr(0, 40);
         const auto cut = workflow::readProjectPaths(root + "/cut.dtproj");
         QVERIFY(!cut.ok());
