@@ -93,21 +93,26 @@
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="376"/>
+        <source>not on every output</source>
+        <translation>并非每个输出都改善</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="377"/>
         <source>below the floor</source>
         <translation>低于实用下限</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="377"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="378"/>
         <source>no held-out gain</source>
         <translation>留出集无增益</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="378"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="379"/>
         <source>its look-alike</source>
         <translation>是其相似原因</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="379"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="380"/>
         <source>line dynamics</source>
         <translation>产线自身动态</translation>
     </message>
@@ -1345,26 +1350,26 @@
 <context>
     <name>TrainingRunner</name>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="35"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="40"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="36"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="41"/>
         <source>Start</source>
         <translation>开始</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="49"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="56"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="50"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="57"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="68"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="100"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="69"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="101"/>
         <source>Start a session first.</source>
         <translation>请先开始一个会话。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="99"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="108"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="100"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="109"/>
         <source>Save session</source>
         <translation>保存会话</translation>
     </message>
@@ -2302,8 +2307,8 @@ is noise</source>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="108"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="834"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1044"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="839"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1049"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -2312,7 +2317,7 @@ is noise</source>
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="875"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="880"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
@@ -2471,12 +2476,12 @@ is noise</source>
         <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="387"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="388"/>
         <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
         <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="390"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="391"/>
         <source>its size is not consistent across batches or operating regions</source>
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
@@ -2485,62 +2490,67 @@ is noise</source>
         <translation type="vanished">偏差在整个批次中读数不变；此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="398"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="399"/>
         <source>its value lies within the reference period&apos;s normal range: not a change</source>
         <translation>其值在参考期的正常范围内：不是变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="401"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="402"/>
+        <source>named after another cause, it must lower the error of every output it acts on, and on one it does not: what is left there is not this cause&apos;s</source>
+        <translation>它是在另一个原因之后提出的，必须降低它所作用的每个输出的误差，而在其中一个输出上没有做到：那里剩下的误差不是这个原因造成的</translation>
+    </message>
+    <message>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="406"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="404"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="409"/>
         <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
         <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="408"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="413"/>
         <source>the outlet channels&apos; timing points to its look-alike (the moisture answers later than the temperature: a meter, not the transport)</source>
         <translation>出口两个通道的时序指向它的相似原因（水分比温度响应更晚：是水分仪，而非输送）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="413"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="418"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="416"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="421"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="481"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="486"/>
         <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
         <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="485"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="490"/>
         <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
         <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="488"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="493"/>
         <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
         <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="492"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="497"/>
         <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
         <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="497"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="502"/>
         <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="422"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="427"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
@@ -2549,92 +2559,92 @@ is noise</source>
         <translation type="vanished">误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="437"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="442"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="442"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="447"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="454"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="459"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="461"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="466"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="559"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="564"/>
         <source>%1 is typically %2 %3, outside what the other reference batches saw (%4 to %5 %3)</source>
         <translation>%1 通常为 %2 %3，超出其他参考批次所见范围（%4 至 %5 %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="561"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="566"/>
         <source>%1 is typically %2 %3, outside what the reference saw (%4 to %5 %3)</source>
         <translation>%1通常为 %2 %3，超出参考期见过的范围（%4 至 %5 %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="564"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="569"/>
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="572"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="577"/>
         <source>Reference batch %1: %2: the line&apos;s structure there is the map&apos;s extrapolation, so the batch is left out of the causes&apos; normal spread.</source>
         <translation>参考批次 %1：%2：该批次上产线结构的修正是映射的外推，因此该批次不计入各原因的正常离散度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="586"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="591"/>
         <source>%1: %2: the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.</source>
         <translation>%1：%2：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="588"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="593"/>
         <source>%1: %2: the model&apos;s error there is judged beyond the reference&apos;s conditions, and an alarm there may be that condition rather than a change of the line.</source>
         <translation>%1：%2：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="660"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="665"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="665"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="670"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="665"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="670"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="671"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="676"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="675"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="680"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="700"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="705"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="706"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="711"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="689"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="694"/>
         <source>%1 was named on top of it (a further %2 % of the held-out error): alone it predicts worse (%3 times the held-out error), but the change needs both forms, so the data cannot say which of them it is.</source>
         <translation>在它之上又判定了 %1（再减少留出误差的 %2 %）：单独使用时预测更差（留出误差的 %3 倍），但这一变化需要两种形式共同解释，因此数据无法判断是其中哪一个。</translation>
     </message>
@@ -2657,32 +2667,32 @@ is noise</source>
         <translation>误差在每个批次内（或在记录中自结垢开始起）逐渐漂移，每个新批次重新开始</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="381"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="382"/>
         <source>not named</source>
         <translation>未指认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="506"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="511"/>
         <source>%1 was named first, then withdrawn: refitted together with the causes named after it, it is no change of the line (it had taken up what they explain). In detail: %2.</source>
         <translation>%1 先被识别，随后撤回：与之后识别的原因一起重新拟合后，它并非产线的变化（它曾吸收了那些原因所解释的部分）。详情：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="516"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="521"/>
         <source>The causes are judged on the batches from %1 on, where the change began; %2 before it ran as the reference did.</source>
         <translation>原因按从 %1 起的批次判断，变化从那里开始；此前的 %2 与参考期运行一致。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="525"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="530"/>
         <source>The change goes on from the start of %1 (the monitor reads them changed before the onset time too): the causes act there from the batch&apos;s start.</source>
         <translation>变化从 %1 的开始起持续（监测器在起始时间之前也判定这些批次已变化）：原因在这些批次中从批次开始起作用。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="530"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="535"/>
         <source>The reference holds %1 batch(es): a period&apos;s normal spread comes from thirds of them, which share their day and weather; a change named here may be a difference of conditions the reference never showed. A reference of several batches over the conditions the line runs in (weeks, seasons) judges better.</source>
         <translation>参考期仅含 %1 个批次：一个时段的正常离散取自其三等分，它们同属一天、同样天气；此处识别出的变化可能只是参考期从未出现过的工况差异。覆盖产线运行工况（数周、不同季节）的多批次参考期判断得更好。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="542"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="547"/>
         <source>The reference period itself drifts: the model&apos;s %1 error changes by %2 %3 within a mean batch. A reference should be a period when the line ran well; against this one a change since may read as none.</source>
         <translation>参考期本身在漂移：模型的 %1 误差在一个平均批次内变化 %2 %3。参考期应是产线运行良好的时段；以此为参考，之后的变化可能显示为无变化。</translation>
     </message>
@@ -2691,82 +2701,82 @@ is noise</source>
         <translation type="vanished">参考批次 %1：%2 通常为 %3 %4，超出其他参考批次所见范围（%5 至 %6 %4）：该批次上产线结构的修正是映射的外推，因此该批次不计入各原因的正常离散度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="599"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="604"/>
         <source>Only the causes asked were tried: %1. That the others are not named says nothing about them.</source>
         <translation>只试了所问的原因：%1。其他原因未被指认，并不说明它们不存在。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="609"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="614"/>
         <source>Commissioned on the reference period (%1 batch(es), %2 rows): h_HDT %3 W/(m²·K) and k_HDT %4 m/s, held fixed on the data judged.</source>
         <translation>已在参考期上调试（%1 个批次，%2 行）：h_HDT %3 W/(m²·K)，k_HDT %4 m/s，在所判断的数据上保持不变。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="617"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="622"/>
         <source>The line&apos;s own structure (what the model always gets wrong: a ridge regression on the inputs and the model&apos;s outputs, penalty %1) was learnt on the reference and taken off the measurements; the residuals shown are what is left.</source>
         <translation>产线自身的结构（模型总是出错的部分：基于输入和模型输出的岭回归，惩罚系数 %1）已在参考期上学习，并从测量值中扣除；所示残差为剩余部分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="629"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="634"/>
         <source>%1 is measured in the data but not in every batch of the reference period: the periods are compared on the outputs both measure, without it.</source>
         <translation>%1 在数据中有测量，但参考期并非每个批次都有：两个时期只在双方都测量的输出上比较，不含它。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="632"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="637"/>
         <source>%1 is measured in the reference period but not in every batch of the data: the periods are compared on the outputs both measure, without it.</source>
         <translation>%1 在参考期中有测量，但数据并非每个批次都有：两个时期只在双方都测量的输出上比较，不含它。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="639"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="644"/>
         <source>The reference period&apos;s files: %1</source>
         <translation>参考期的文件：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="667"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="672"/>
         <source>A part whose estimate left the parameter&apos;s range is held at its bound.</source>
         <translation>某一部分的估计值超出了参数范围，已按其边界处理。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="684"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="689"/>
         <source>It goes on from the start of %1.</source>
         <translation>它从 %1 的开始起持续存在。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="719"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="724"/>
         <source>%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts %4 better; which output a cause favours is the model&apos;s structure, so the data cannot tell them apart.</source>
         <translation>%1 同样拟合：总体上它留下 %2 倍的留出误差（p = %3），但它对%4的预测更好；原因偏向哪个输出取决于模型自身的结构，因此数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="725"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="730"/>
         <source>the outlet moisture</source>
         <translation>出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="726"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="731"/>
         <source>the outlet temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="727"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="732"/>
         <source>the tube-outlet moisture</source>
         <translation>管出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="728"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="733"/>
         <source>the tube-outlet temperature</source>
         <translation>管出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="732"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="737"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="733"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="738"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="740"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="745"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
@@ -2779,12 +2789,12 @@ is noise</source>
         <translation type="vanished">它消除了留出数据平方误差的 %1 %，以及出口水分和温度误差的 %2 %（二者是它唯一作用的测量输出）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="762"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="767"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="766"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="771"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -2793,32 +2803,32 @@ is noise</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="783"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="788"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="783"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="788"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="812"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="817"/>
         <source> %1 moved against this cause&apos;s effect (%2 times what its model form says), by less than that output&apos;s noise can tell from none: it counts neither for the cause nor against it.</source>
         <translation> %1 的变化与该原因的作用方向相反（为其模型形式所预测的 %2 倍），但小于该输出的噪声所能分辨的程度：既不支持也不否定该原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="829"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="834"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="830"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="835"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="848"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="853"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2835,12 +2845,12 @@ is noise</source>
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="919"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="924"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="919"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="924"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2849,12 +2859,12 @@ is noise</source>
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="970"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="975"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="973"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="978"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
@@ -2863,8 +2873,8 @@ is noise</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="451"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="888"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="456"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="893"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
@@ -2899,27 +2909,27 @@ is noise</source>
         <translation>DryTwin（已命名原因的拟合值）：&lt;b&gt;已变化&lt;/b&gt;（p %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="753"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="758"/>
         <source>it removes %1 % of the held-out squared error, and of the outlet moisture&apos;s, the only measured output it acts on, %2 % (%3 % of its fast part)</source>
         <translation>它消除了留出数据平方误差的 %1 %；在出口水分（它唯一作用的测量输出）上消除 %2 %（快速部分的 %3 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="756"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="761"/>
         <source>it removes %1 % of the held-out squared error, and of the outlet moisture&apos;s and temperature&apos;s, the only measured outputs it acts on, %2 % (%3 % of its fast part)</source>
         <translation>它消除了留出数据平方误差的 %1 %；在出口水分和温度（它唯一作用的测量输出）上消除 %2 %（快速部分的 %3 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="767"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="772"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="768"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="773"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="772"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="777"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
@@ -2928,19 +2938,19 @@ is noise</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="851"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="856"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="872"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="877"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
         <location filename="../widgets/discovery/DiscoverPanel.cpp" line="219"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="601"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="873"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="606"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="878"/>
         <source>, </source>
         <translation>、</translation>
     </message>
@@ -2949,69 +2959,69 @@ is noise</source>
         <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="876"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="881"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="889"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="894"/>
         <source>Named on its fit: it lowers the held-out error (p = %1) and passes the checks that it is this cause; the screen&apos;s p only ranks the candidates for fitting.</source>
         <translation>按其拟合指认：它降低了留出部分的误差（p = %1），并通过了确认是此原因的各项检查；筛选的 p 只用于为拟合排列候选。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="904"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="909"/>
         <source>fitted, not the best</source>
         <translation>已拟合，非最佳</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="905"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="910"/>
         <source>Fitted in a round in which another cause explained more of the error; the causes named after it were fitted on the model extended by it.</source>
         <translation>在某一轮中已拟合，但另一原因解释了更多误差；其后指认的原因是在由它扩展的模型上拟合的。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="916"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="921"/>
         <source>not fitted (weaker)</source>
         <translation>未拟合（证据较弱）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="993"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="998"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1009"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1014"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1018"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1023"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1025"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1030"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1030"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1035"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1038"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1043"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1058"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1063"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="747"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1059"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1085"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="752"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1064"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1090"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
@@ -3020,14 +3030,14 @@ is noise</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1060"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1065"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="747"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1061"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1089"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="752"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1066"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1094"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -3045,7 +3055,7 @@ is noise</source>
         <translation>误差随进料量和入口水分增大（按进料量和按入口水分分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="393"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="394"/>
         <source>it does not change within a batch (an offset, the tube&apos;s wall or gas phase), but this error grows or shrinks within the batch (fouling, a drifting reading)</source>
         <translation>它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
@@ -3058,7 +3068,7 @@ is noise</source>
         <translation type="vanished">%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="427"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="432"/>
         <source>the error follows %1 %2 s later (correlation %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（相关系数 %3）</translation>
     </message>
@@ -3067,7 +3077,7 @@ is noise</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="815"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="820"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
@@ -3089,102 +3099,102 @@ is noise</source>
         <translation>未拟合：证据弱于已拟合的候选</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="778"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="783"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out goes from %11 to %12 % wb and of T_out from %13 to %14 °C (the chance that a gain this large is luck: %15); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（如此大的改进纯属偶然的概率：%15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="930"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="935"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="945"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="950"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="952"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="957"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="966"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="971"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="983"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="988"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (chance the held-out gain is luck %3, Diebold-Mariano test; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（留出部分的改进纯属偶然的概率 %3，Diebold-Mariano 检验；消除误差的 %4 %，快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1013"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1018"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1043"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1048"/>
         <source>Held-out accuracy: nothing was named, so nothing was extended (before = after):</source>
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1048"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1053"/>
         <source>Gain on the held-out part, with every named cause (each finding&apos;s own gain is in its evidence):</source>
         <translation>留出部分的改进（含所有已指认的原因；每项发现各自的改进见其证据）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1062"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1067"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1071"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1076"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1084"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1089"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1084"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1089"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1085"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1090"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1088"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1093"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1088"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1093"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1089"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1094"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1116"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1121"/>
         <source>model (nothing extended)</source>
         <translation>模型（未扩展）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1118"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1123"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1119"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1124"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -5196,7 +5206,7 @@ extrapolation</source>
     <message>
         <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
         <location filename="../widgets/training/TrainingPanel.cpp" line="699"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="800"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="803"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
@@ -5488,32 +5498,37 @@ extrapolation</source>
         <translation>会话文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="731"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="730"/>
+        <source>Line monitor: commissioning on healthy runs of this scenario (a few seconds); it then catches up with the line.</source>
+        <translation>产线监控：正在用本场景的健康运行进行调试（几秒钟），随后追上产线。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="734"/>
         <source>Line monitor unavailable: %1</source>
         <translation>产线监控不可用：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="733"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="736"/>
         <source>Line monitor: normal (as on its commissioning runs).</source>
         <translation>产线监控：正常（与调试运行一致）。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="737"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="740"/>
         <source>the model&apos;s error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="737"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="740"/>
         <source>the screens&apos; signals (PCA)</source>
         <translation>画面信号（PCA）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="740"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="743"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal; the change began at about %3. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态；变化约始于 %3。请诊断记录以确定原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="743"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="746"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态。请诊断记录以确定原因。</translation>
     </message>
@@ -5710,42 +5725,42 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::TrainingRunner</name>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="318"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="345"/>
         <source>Setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="324"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="351"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="332"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="359"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="340"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="367"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="349"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="376"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="358"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="385"/>
         <source>Snapshot</source>
         <translation>快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="364"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="391"/>
         <source>Restore</source>
         <translation>恢复</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="370"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="397"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>
