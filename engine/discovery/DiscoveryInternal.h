@@ -566,4 +566,11 @@ std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 /// What a colleague should look for on the residual plots for each cause.
 const char* lookFor(Param p);
 
+/// Where a change against the reference began (ChangeOnset.cpp): the first judged batch from which
+/// DryTwin's monitor sees it (0: none), the detector whose change point sets the onset (null:
+/// neither found one), and the batches after the onset batch that read changed from their start.
+std::size_t firstBatchOfChange(const monitoring::Detection& d);
+const monitoring::Detection* changePointDetector(const ChangeDetection& detection);
+std::vector<std::size_t> batchesChangedFromStart(const monitoring::Detection& d, std::size_t firstJudged);
+
 } // namespace drytwin::discovery::detail

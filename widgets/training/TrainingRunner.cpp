@@ -15,6 +15,8 @@
 #include <atomic>
 #include <cmath>
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace drytwin::widgets {
 
@@ -114,22 +116,21 @@ public:
             files << QString::fromStdString(f);
         }
         // The commissioning runs beside it: the period when this line ran as it should, which a
-        // diagnosis of the recording compares with.
-        QString referenceFolder;
-        adoptCommissionedMonitor(true);
+        // diagnosis of the recording compares with. A monitor still being commissioned writes
+        // them there when it is ready, so that a save (and a language change's freeze after it)
+        // never waits for it.
+        const QString referenceFolder = QDir(folder).filePath(QStringLiteral("commissioning"));
+        adoptCommissionedMonitor(false);
         if (m_monitor) {
-            const QString dir = QDir(folder).filePath(QStringLiteral("commissioning"));
-            QDir().mkpath(dir);
-            bool ok = true;
-            for (const auto& run : m_monitor->commissioningRuns()) {
-                ok = ok && data::writeBatchFile(
-                               run, QDir(dir)
-                                        .filePath(QString::fromStdString(run.id) + QStringLiteral(".csv"))
-                                        .toStdString());
+            if (!writeCommissioningRuns(*m_monitor, referenceFolder)) {
+                fail(QCoreApplication::translate("TrainingRunner", "Save session"),
+                     Error{ErrorKind::BadInput, referenceFolder.toStdString(), "the commissioning runs could not be written"});
             }
-            referenceFolder = ok ? dir : QString();
+        } else if (!m_commissioning.isFinished()) {
+            m_commissioningFolders << referenceFolder;
         }
-        Q_EMIT saved(QString::fromStdString(r->sessionFile), files, referenceFolder);
+        Q_EMIT saved(QString::fromStdString(r->sessionFile), files,
+                     m_monitor || !m_commissioning.isFinished() ? referenceFolder : QString());
     }
 
     void stop() {
@@ -153,6 +154,10 @@ private:
         // once; the monitor then catches up on the trace so far (LineMonitor::feed).
         m_monitor.reset();
         m_monitorNote.clear();
+        if (!m_commissioning.isFinished() && !m_commissioningFolders.isEmpty()) {
+            m_earlierCommissionings.emplace_back(m_commissioning, std::exchange(m_commissioningFolders, {}));
+        }
+        m_commissioningFolders.clear();
         m_commissioning = QtConcurrent::run([scenario = session.scenario()] {
             return std::make_shared<Expected<training::LineMonitor>>(training::LineMonitor::commission(scenario));
         });
@@ -181,9 +186,46 @@ private:
         m_commissioning = {};
         if (*monitor) {
             m_monitor.emplace(std::move(**monitor));
+            writeWhenCommissioned(*m_monitor, std::exchange(m_commissioningFolders, {}));
         } else {
             m_monitorNote = errorText(monitor->error());
+            m_commissioningFolders.clear();
         }
+    }
+
+    /// Sessions saved, then replaced by another, before their monitor was commissioned: their
+    /// commissioning runs are written once it is.
+    void writeEarlierSessionsRuns() {
+        for (auto it = m_earlierCommissionings.begin(); it != m_earlierCommissionings.end();) {
+            if (!it->first.isFinished()) {
+                ++it;
+                continue;
+            }
+            if (auto monitor = it->first.result(); *monitor) {
+                writeWhenCommissioned(**monitor, it->second);
+            }
+            it = m_earlierCommissionings.erase(it);
+        }
+    }
+
+    void writeWhenCommissioned(const training::LineMonitor& monitor, const QStringList& folders) {
+        for (const auto& folder : folders) {
+            if (!writeCommissioningRuns(monitor, folder)) {
+                fail(QCoreApplication::translate("TrainingRunner", "Save session"),
+                     Error{ErrorKind::BadInput, folder.toStdString(), "the commissioning runs could not be written"});
+            }
+        }
+    }
+
+    /// The monitor's commissioning runs as batch files in @p dir (created); false on a failed write.
+    static bool writeCommissioningRuns(const training::LineMonitor& monitor, const QString& dir) {
+        QDir().mkpath(dir);
+        bool ok = true;
+        for (const auto& run : monitor.commissioningRuns()) {
+            ok = ok && data::writeBatchFile(
+                           run, QDir(dir).filePath(QString::fromStdString(run.id) + QStringLiteral(".csv")).toStdString());
+        }
+        return ok;
     }
 
     /// Progress and cancel of a replay or a run ahead (minutes of MPC at full speed take seconds).
@@ -249,6 +291,7 @@ private:
             f.answers = s.answers();
             f.score = s.score();
             adoptCommissionedMonitor(false);
+            writeEarlierSessionsRuns();
             if (m_monitor) {
                 if (auto st = m_monitor->feed(s); !st) {
                     m_monitorNote = errorText(st.error());
@@ -269,6 +312,9 @@ private:
     /// The monitor being commissioned for the current session (a shared pointer: the monitor is
     /// move-only, QFuture's results are copied).
     QFuture<std::shared_ptr<Expected<training::LineMonitor>>> m_commissioning;
+    QStringList m_commissioningFolders; ///< sessions saved before it finished: their runs go there
+    std::vector<std::pair<QFuture<std::shared_ptr<Expected<training::LineMonitor>>>, QStringList>>
+        m_earlierCommissionings;
     QString m_monitorNote;
     std::string m_scenarioJson;
     std::shared_ptr<const hybrid::HybridModel> m_model; ///< the one the session's MPCs run on
