@@ -9,6 +9,7 @@
 #include "mpc/MpcPanel.h"
 #include "residual/ResidualPanel.h"
 #include "training/TrainingPanel.h"
+#include "training/TrainingRunner.h"
 
 #include <QApplication>
 #include <QDir>
@@ -77,7 +78,10 @@ void MainWindow::whenEngineIdle(std::function<void()> then) {
 }
 
 bool MainWindow::hasPendingActions() const {
-    return !m_pendingActions.isEmpty() || m_training->isOpening();
+    // A training session's monitor is commissioned beside the running line: a screenshot waits
+    // for its verdict rather than catching "commissioning…".
+    return !m_pendingActions.isEmpty() || m_training->isOpening() ||
+           m_training->runner().frame().monitorCommissioning;
 }
 
 void MainWindow::openTrainingSession(const QString& sessionFile) {
