@@ -25,6 +25,9 @@ std::string mosquittoReason(int rc) {
     if (rc == MOSQ_ERR_ERRNO) {
         return std::strerror(errno);
     }
+    if (rc == MOSQ_ERR_EAI) {
+        return "the host name cannot be resolved";
+    }
     return mosquitto_strerror(rc);
 }
 
