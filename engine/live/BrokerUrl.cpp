@@ -5,7 +5,8 @@
 namespace drytwin::live {
 
 std::string BrokerUrl::text() const {
-    return std::string(tls ? "mqtts://" : "mqtt://") + host + ":" + std::to_string(port);
+    const bool ipv6 = host.find(':') != std::string::npos;
+    return std::string(tls ? "mqtts://" : "mqtt://") + (ipv6 ? "[" + host + "]" : host) + ":" + std::to_string(port);
 }
 
 Expected<BrokerUrl> parseBrokerUrl(const std::string& url, const std::string& option) {
