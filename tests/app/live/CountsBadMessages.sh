@@ -14,7 +14,7 @@ cat > "$WORK/topics.json" <<'JSON'
 {"X_out_pct": "plant/NIR_OUT", "batch_id": "plant/BATCH", "prefix": "twin/lineA"}
 JSON
 "$EXE" -q live --broker "$BROKER_URL" --topics "$WORK/topics.json" --topic-prefix test/lineA \
-  --record "$WORK/recording" --reorder-window 5 --duration 12 > "$WORK/live.out" 2> "$WORK/live.err" &
+  --record "$WORK/recording" --reorder-window 40 --duration 12 > "$WORK/live.out" 2> "$WORK/live.err" &
 LIVE_PID=$!
 wait_for_line "$WORK/live.err" "subscribed to 13 topics" 10
 
@@ -22,15 +22,17 @@ T0=$(( $(date +%s) - 1000 ))
 pub() { # pub TOPIC < lines: one message per line, QoS 1
   "$PUB" -h 127.0.0.1 -p "$PORT" -q 1 -t "$1" -l
 }
-# The good stream, second by second as a line sends it: the batch's id, X_out_pct on its mapped
-# topic without seconds 10-14 (a gap), T_out_C on the default topic under the prefix. Values end
-# in 5: their shortest text is as written.
+# The good stream: the batch's id, X_out_pct on its mapped topic without seconds 10-14 (a gap),
+# T_out_C for the first 30 s on the default topic under the prefix, then X_out_pct to second 79.
+# The 40 s reorder window takes the first two streams in either order; the third makes rows up to
+# second 39 final. Values end in 5: their shortest text is as written.
 echo "{\"t\": $T0, \"v\": \"Run7\"}" | pub plant/BATCH
 for s in $(seq 0 29); do
-  if [ "$s" -lt 10 ] || [ "$s" -gt 14 ]; then echo "{\"t\": $((T0 + s)), \"v\": 12.${s}5}" | pub plant/NIR_OUT; fi
-  echo "{\"t\": $((T0 + s)), \"v\": 40.${s}5}" | pub test/lineA/T_out_C
-done
-sleep 1 # the rows older than the 5 s reorder window are now written
+  if [ "$s" -lt 10 ] || [ "$s" -gt 14 ]; then echo "{\"t\": $((T0 + s)), \"v\": 12.${s}5}"; fi
+done | pub plant/NIR_OUT
+for s in $(seq 0 29); do echo "{\"t\": $((T0 + s)), \"v\": 40.${s}5}"; done | pub test/lineA/T_out_C
+for s in $(seq 30 79); do echo "{\"t\": $((T0 + s)), \"v\": 12.${s}5}"; done | pub plant/NIR_OUT
+sleep 1 # the rows older than the reorder window are now written
 
 # 300 duplicates with other values: the first sample of each second is kept.
 for i in $(seq 1 300); do s=$(( 15 + i % 15 )); echo "{\"t\": $((T0 + s)), \"v\": 99}"; done | pub plant/NIR_OUT
@@ -53,16 +55,19 @@ set -e
 LIVE_PID=
 cat "$WORK/live.out"
 [ "$rc" -eq 0 ] || fail "live ended with $rc (expected 0 after --duration): $(cat "$WORK/live.err")"
-grep -qE "recorded 30 rows in 1 file\(s\).*: 55 samples, 300 late, 300 duplicate, 400 malformed, 5 missing cells" \
-  "$WORK/live.out" || fail "the counts are not 300 late, 300 duplicate, 400 malformed, 5 missing"
+grep -qE "recorded 80 rows in 1 file\(s\).*: 105 samples, 300 late, 300 duplicate, 400 malformed, 55 missing cells" \
+  "$WORK/live.out" || fail "the counts are not 300 late, 300 duplicate, 400 malformed, 55 missing"
 grep -q "malformed message on plant/NIR_OUT: not a number or JSON (not recorded)" "$WORK/live.err" \
   || fail "the first malformed message is not named with its topic and cause: $(cat "$WORK/live.err")"
 
 [ -f "$WORK/recording/Run7.csv" ] || fail "no Run7.csv (batch id from the mapped topic): $(ls "$WORK/recording")"
 {
   echo "time_s,X_out_pct,T_out_C"
-  for s in $(seq 0 29); do
-    if [ "$s" -lt 10 ] || [ "$s" -gt 14 ]; then echo "$s,12.${s}5,40.${s}5"; else echo "$s,,40.${s}5"; fi
+  for s in $(seq 0 79); do
+    x="12.${s}5" t="40.${s}5"
+    if [ "$s" -ge 10 ] && [ "$s" -le 14 ]; then x=""; fi
+    if [ "$s" -ge 30 ]; then t=""; fi
+    echo "$s,$x,$t"
   done
 } > "$WORK/expected.csv"
 grep -v '^#' "$WORK/recording/Run7.csv" > "$WORK/recorded.csv"

@@ -13,9 +13,11 @@ listener $PORT 127.0.0.1
 allow_anonymous true
 persistence false
 max_queued_messages 0
-log_dest file $WORK/mosquitto.log
+log_dest stderr
 CONF
-    "$MOSQUITTO" -c "$conf" &
+    # Its log to stderr, into the work folder: run as root it drops to the mosquitto user, which
+    # could not open a log file there.
+    "$MOSQUITTO" -c "$conf" 2>> "$WORK/mosquitto.log" &
     BROKER_PID=$!
     local i
     for i in $(seq 1 50); do
