@@ -202,7 +202,15 @@ CommandLine::CommandLine() : m_impl(new Impl) {
                      "shorter gaps are rows of missing cells")
         ->capture_default_str();
     live->add_option("--reference", o.referencePath,
-                     "a period when the line ran as it should: the monitor against it (not yet in this version)");
+                     "a period when the line ran as it should (batch file or folder): the dynamic-PCA monitor "
+                     "is fitted on it and judges the line second by second; its windows and its alarm are "
+                     "published under the twin's prefix (<prefix>/monitor, <prefix>/alarm)");
+    live->add_option("--false-alarm-rate", o.liveFalseAlarmRate,
+                     "with --reference: the chance of an alarm over one planned run of a healthy line")
+        ->capture_default_str();
+    live->add_option("--planned-run", o.plannedRunS,
+                     "with --reference: the run length [s] the false-alarm rate holds over (default: the "
+                     "reference batches' mean)");
     live->add_option("--model", o.modelPath, "the twin's model file (not yet in this version)");
     addMqttOptions(live);
     reg(live, runLive);

@@ -83,6 +83,8 @@ struct CommandOptions {
     double durationS = 0;         ///< live --duration (0: until Ctrl+C)
     double reorderWindowS = 10;   ///< live: line seconds a sample may come late and still be placed
     double splitGapS = 600;       ///< live: a gap longer than this starts a new batch file
+    double liveFalseAlarmRate = 0.01; ///< live --reference: per planned run
+    double plannedRunS = 0;           ///< live --reference: 0 = the reference batches' mean length
 };
 
 int runInspect(const CommandOptions& o);

@@ -109,11 +109,11 @@ int publishPlant(const CommandOptions& o, const plant::PlantOptions& plant) {
 using namespace detail;
 
 int runLive(const CommandOptions& o) {
-    if (!o.referencePath.empty() || !o.modelPath.empty()) {
-        return fail(Error{ErrorKind::Usage, o.referencePath.empty() ? "--model" : "--reference",
-                          "the twin and the monitor beside a live line are not in this version yet (issue #73); "
-                          "record with --record, then run discover --reference on the recording",
-                          ErrorCode::NotImplemented, {"live --reference"}});
+    if (!o.modelPath.empty()) {
+        return fail(Error{ErrorKind::Usage, "--model",
+                          "the twin's prediction and forecast beside a live line are not in this version yet "
+                          "(issue #73); --reference runs the monitor",
+                          ErrorCode::NotImplemented, {"live --model"}});
     }
     live::LiveOptions lo;
     auto connection = connectionOptions(o, "--broker", "live");
@@ -130,6 +130,9 @@ int runLive(const CommandOptions& o) {
     lo.recording.reorderWindowS = o.reorderWindowS;
     lo.recording.splitGapS = o.splitGapS;
     lo.durationS = o.durationS;
+    lo.referencePath = o.referencePath;
+    lo.monitor.falseAlarmRate = o.liveFalseAlarmRate;
+    lo.monitor.plannedRunS = o.plannedRunS;
     // What happens on the link goes to stderr at once, stamped: an operator reads it as a log.
     lo.onEvent = [](const std::string& line) {
         const std::time_t now = std::time(nullptr);
@@ -150,6 +153,20 @@ int runLive(const CommandOptions& o) {
                 result->disconnects);
     for (const auto& f : result->files) {
         std::printf("  %s\n", f.c_str());
+    }
+    if (result->monitored) {
+        std::printf("monitor: %ld windows published under %s/monitor; ", result->monitorWindows,
+                    lo.topics.twinTopicPrefix().c_str());
+        if (result->alarms.empty()) {
+            std::printf("no alarm\n");
+        }
+        for (const auto& a : result->alarms) {
+            std::printf("alarm by %s in batch %s at %.0f s", a.statistic.c_str(), a.batch.c_str(), a.timeS);
+            if (a.hasOnset) {
+                std::printf(", onset about %.0f s in batch %s", a.onsetS, a.onsetBatch.c_str());
+            }
+            std::printf("\n");
+        }
     }
     // Ctrl+C ends a live run as the contract says (130), the recording written.
     return result->stoppedByUser ? 130 : 0;

@@ -134,13 +134,26 @@ void GridRecorder::finalise(Row row) {
         Row gap;
         gap.second = s;
         gap.values.fill(kNaN);
-        m_batch.rows.push_back(gap);
-        ++m_counts.rows;
+        appendRow(gap);
     }
+    appendRow(row);
+}
+
+void GridRecorder::appendRow(const Row& row) {
     m_batch.columnsSeen |= row.present;
-    m_batch.rows.push_back(std::move(row));
+    m_batch.rows.push_back(row);
     m_batch.dirty = true;
     ++m_counts.rows;
+    if (m_options.keepFinalRows) {
+        m_finalRows.push_back({m_batch.id, static_cast<double>(m_batch.startSecond),
+                               static_cast<double>(row.second - m_batch.startSecond), row.values});
+    }
+}
+
+std::vector<FinalRow> GridRecorder::takeFinalRows() {
+    std::vector<FinalRow> rows;
+    rows.swap(m_finalRows);
+    return rows;
 }
 
 void GridRecorder::beginBatch(const std::string& id, std::int64_t second) {

@@ -28,6 +28,7 @@ struct GridRecorderOptions {
     /// Names a batch when the line sends no batch id: `<prefix>_<UTC start, YYYYmmddTHHMMSS>`.
     std::string unnamedPrefix = "live";
     std::string sourceText; ///< `# source:` of every file (the broker)
+    bool keepFinalRows = false; ///< keep each final row for takeFinalRows() (the live monitor)
     Status validate() const;
 };
 
@@ -40,6 +41,14 @@ struct RecorderCounts {
     long missingCells = 0; ///< cells of final rows that no message filled (gaps)
     long rows = 0;       ///< final rows written
     long batches = 0;    ///< batch files begun
+};
+
+/// @brief A row of the grid as it became final: what the live monitor is fed.
+struct FinalRow {
+    std::string batch;
+    double batchStartS = 0; ///< Unix second of the batch's first row
+    double timeS = 0;       ///< since the batch's start
+    std::array<double, data::kColumnCount> values{}; ///< by contract column; NaN missing
 };
 
 /// @brief Puts tag samples on the 1 s grid of line time (the sender's stamps), one row per second,
@@ -59,6 +68,8 @@ public:
     /// and writes the batch files that changed when due (always when @p everything).
     Status flush(bool everything = false);
     const RecorderCounts& counts() const { return m_counts; }
+    /// @brief The rows made final since the last call (keepFinalRows), in time order, gap rows included.
+    std::vector<FinalRow> takeFinalRows();
     /// @brief The files written so far, in the order begun.
     const std::vector<std::string>& files() const { return m_files; }
 
@@ -79,6 +90,7 @@ private:
     };
 
     void finalise(Row row);
+    void appendRow(const Row& row);
     void beginBatch(const std::string& id, std::int64_t second);
     Status writeOpenBatch();
     data::Batch toBatch(const OpenBatch& b) const;
@@ -96,6 +108,7 @@ private:
     OpenBatch m_batch;
     long m_batchMissingCounted = 0; ///< the open batch's missing cells already in m_counts
     std::vector<std::string> m_files;
+    std::vector<FinalRow> m_finalRows;
     std::chrono::steady_clock::time_point m_lastWrite;
     Status m_writeError;
 };

@@ -1,10 +1,12 @@
 #include "LiveRecorder.h"
 
+#include "data/BatchReader.h"
 #include "live/TagPayload.h"
 
 #include <chrono>
 #include <deque>
 #include <map>
+#include <optional>
 #include <mutex>
 #include <thread>
 
@@ -56,6 +58,24 @@ Expected<LiveResult> runLive(const LiveOptions& options, const Progress& progres
     if (auto st = options.validate(); !st) {
         return st.error();
     }
+    std::optional<LiveMonitor> monitor;
+    if (!options.referencePath.empty()) {
+        // Fitted before connecting: a reference that cannot be used stops the run at once.
+        auto reference = data::loadDataSet(options.referencePath, {}, progress);
+        if (reference.cancelled) {
+            return cancelledError("live");
+        }
+        if (!reference.ok()) {
+            Error e = reference.errors.front();
+            e.causes = reference.errors;
+            return e;
+        }
+        auto commissioned = LiveMonitor::commission(reference.dataSet, options.monitor);
+        if (!commissioned) {
+            return commissioned.error();
+        }
+        monitor = std::move(*commissioned);
+    }
     auto say = [&](const std::string& line) {
         if (options.onEvent) {
             options.onEvent(line);
@@ -84,7 +104,14 @@ Expected<LiveResult> runLive(const LiveOptions& options, const Progress& progres
     say("connected to " + (*client)->brokerText() + ", subscribed to " + std::to_string(subscriptions.size()) +
         " topics under " + options.topics.linePrefix);
 
+    if (monitor) {
+        say("monitor fitted on the reference " + options.referencePath + " (false-alarm rate " +
+            std::to_string(options.monitor.falseAlarmRate) + " per " +
+            std::to_string(static_cast<int>(monitor->plannedRunS())) + " s run), publishing under " +
+            options.topics.twinTopicPrefix());
+    }
     GridRecorderOptions recording = options.recording;
+    recording.keepFinalRows = monitor.has_value();
     if (recording.sourceText.empty()) {
         recording.sourceText = "drytwin live, " + (*client)->brokerText();
     }
@@ -130,6 +157,44 @@ Expected<LiveResult> runLive(const LiveOptions& options, const Progress& progres
     std::deque<Inbox::Message> messages;
     std::deque<std::string> events;
     auto lastReport = Clock::now();
+    const std::string monitorTopic = options.topics.twinTopicPrefix() + "/monitor";
+    const std::string alarmTopic = options.topics.twinTopicPrefix() + "/alarm";
+    // The recording's final rows into the monitor; its windows and its alarm out to the broker.
+    auto publishWindows = [&](const std::vector<monitoring::StreamingWindow>& windows) -> Status {
+        for (const auto& w : windows) {
+            ++result.monitorWindows;
+            if (auto st = (*client)->publish(monitorTopic, monitor->windowPayload(w)); !st) {
+                return st;
+            }
+            if (auto alarm = monitor->alarmOf(w)) {
+                if (auto st = (*client)->publish(alarmTopic, monitor->alarmPayload(*alarm, w)); !st) {
+                    return st;
+                }
+                say("ALARM by " + alarm->statistic + " in batch " + alarm->batch + " at " +
+                    std::to_string(static_cast<long>(alarm->timeS)) + " s" +
+                    (alarm->hasOnset ? ", onset about " + std::to_string(static_cast<long>(alarm->onsetS)) +
+                                           " s in batch " + alarm->onsetBatch
+                                     : std::string()));
+                result.alarms.push_back(*alarm);
+            }
+        }
+        return {};
+    };
+    auto feedMonitor = [&](bool finish) -> Status {
+        if (!monitor) {
+            return {};
+        }
+        for (const auto& row : recorder.takeFinalRows()) {
+            auto windows = monitor->push(row.batch, row.batchStartS, row.timeS, row.values);
+            if (!windows) {
+                return windows.error();
+            }
+            if (auto st = publishWindows(*windows); !st) {
+                return st;
+            }
+        }
+        return finish ? publishWindows(monitor->finish()) : Status{};
+    };
     for (;;) {
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
         inbox->take(messages, events);
@@ -142,6 +207,9 @@ Expected<LiveResult> runLive(const LiveOptions& options, const Progress& progres
         }
         messages.clear();
         if (auto st = recorder.flush(); !st) {
+            return st.error();
+        }
+        if (auto st = feedMonitor(false); !st) {
             return st.error();
         }
         const double elapsedS = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -171,6 +239,12 @@ Expected<LiveResult> runLive(const LiveOptions& options, const Progress& progres
     if (auto st = recorder.flush(true); !st) {
         return st.error();
     }
+    if (auto st = feedMonitor(true); !st) {
+        return st.error();
+    }
+    result.monitored = monitor.has_value();
+    // The monitor's last messages reach the broker before the client goes.
+    (*client)->waitUntilDelivered(5);
     result.counts = recorder.counts();
     result.files = recorder.files();
     result.disconnects = (*client)->disconnects();

@@ -3,6 +3,7 @@
 #include "common/Error.h"
 #include "common/Progress.h"
 #include "live/GridRecorder.h"
+#include "live/LiveMonitor.h"
 #include "live/MqttClient.h"
 #include "live/TopicMapping.h"
 
@@ -18,6 +19,11 @@ struct LiveOptions {
     TopicMapping topics;
     GridRecorderOptions recording; ///< folder empty: nothing written, the stream only counted
     double durationS = 0;          ///< wall-clock seconds to run; 0: until progress says stop
+    /// A period when the line ran as it should (batch file or folder): the dynamic-PCA monitor is
+    /// fitted on it and fed the recording's rows; its windows and its alarm are published under
+    /// the twin's prefix (`<twin>/monitor`, `<twin>/alarm`). Empty: no monitor.
+    std::string referencePath;
+    LiveMonitorOptions monitor;
     /// Told of what happens on the link (connected, dropped, back) and of the first malformed
     /// messages, as one English line each; called on the thread that runs runLive().
     std::function<void(const std::string&)> onEvent;
@@ -31,6 +37,9 @@ struct LiveResult {
     int disconnects = 0;    ///< times the link dropped (each followed by reconnect attempts)
     bool stoppedByUser = false; ///< ended by progress (Ctrl+C), not by the duration
     std::vector<std::string> files;
+    bool monitored = false;   ///< a reference was given and the monitor ran
+    long monitorWindows = 0;  ///< windows the monitor completed (each published)
+    std::vector<LiveAlarm> alarms; ///< at most one: the monitor stays alarmed once it alarmed
     Ending ending;
 };
 
