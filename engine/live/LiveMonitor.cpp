@@ -83,7 +83,7 @@ Expected<LiveMonitor> LiveMonitor::commission(const data::DataSet& reference, co
     if (!stream) {
         return stream.error();
     }
-    out.m_stream = std::make_shared<monitoring::StreamingMonitor>(std::move(*stream));
+    out.m_stream.emplace(std::move(*stream));
     return out;
 }
 

@@ -35,7 +35,8 @@ struct LiveAlarm {
 /// @brief The dynamic-PCA monitor of the line's screens (the training line's six columns:
 /// outlet moisture and temperature, hot-air setpoint and temperature, feed, inlet moisture),
 /// fitted on a reference period and fed the recording's final rows second by second, as
-/// training/LineMonitor feeds the training line. A new batch id starts a new run. Not thread-safe.
+/// training/LineMonitor feeds the training line. A new batch id starts a new run. Copies are
+/// independent (a copy of a freshly commissioned monitor has seen nothing). Not thread-safe.
 class LiveMonitor {
 public:
     /// @brief Fits on @p reference (batch files of a period when the line ran as it should); a
@@ -67,7 +68,7 @@ public:
 
 private:
     std::shared_ptr<const monitoring::Monitor> m_monitor;
-    std::shared_ptr<monitoring::StreamingMonitor> m_stream;
+    std::optional<monitoring::StreamingMonitor> m_stream; ///< by value: a copy of a fresh monitor starts afresh
     double m_plannedRunS = 0;
     std::string m_run;
     double m_runStartS = 0;

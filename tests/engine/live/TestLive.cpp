@@ -2,6 +2,7 @@
 // the payloads and the 1 s grid recorder. The broker end to end: tests/app/live/.
 #include "live/BrokerUrl.h"
 #include "live/GridRecorder.h"
+#include "live/LiveMonitor.h"
 #include "live/TagPayload.h"
 #include "live/TopicMapping.h"
 
@@ -9,6 +10,7 @@
 #include <QtTest>
 #include <cmath>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 using namespace drytwin;
@@ -19,6 +21,32 @@ namespace {
 
 TagSample at(double timeS, double value) {
     return TagSample{timeS, true, value};
+}
+
+/// A batch of the six screen columns around fixed levels with independent noise, plus @p shift on
+/// the outlet moisture from @p shiftFromS on.
+data::Batch noisyBatch(const std::string& id, int rows, unsigned seed, double shift = 0, double shiftFromS = 0) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> noise(0.0, 1.0);
+    data::Batch b;
+    b.id = id;
+    std::vector<double> time(static_cast<std::size_t>(rows));
+    for (int r = 0; r < rows; ++r) {
+        time[static_cast<std::size_t>(r)] = r;
+    }
+    b.setValues(Column::Time, time);
+    const std::pair<Column, double> levels[] = {{Column::XOut, 12}, {Column::TOut, 55}, {Column::THotSp, 160},
+                                                 {Column::THot, 160}, {Column::Feed, 6000}, {Column::XIn, 22}};
+    for (const auto& [c, level] : levels) {
+        std::vector<double> v(static_cast<std::size_t>(rows));
+        for (int r = 0; r < rows; ++r) {
+            v[static_cast<std::size_t>(r)] =
+                level + 0.1 * noise(rng) + (c == Column::XOut && r >= shiftFromS ? shift : 0.0);
+        }
+        b.setValues(c, v);
+    }
+    b.lineOfRow.resize(static_cast<std::size_t>(rows));
+    return b;
 }
 
 std::string fileText(const std::string& path) {
@@ -207,6 +235,65 @@ private slots:
         again.addSample(Column::XOut, at(t0, 1));
         QVERIFY(again.flush(true));
         QVERIFY(again.files()[0].find("/A_2.csv") != std::string::npos);
+    }
+
+    // The monitor fed row by row alarms after a shift, with an onset near it, and said once;
+    // fed the same stream without the shift, it stays quiet.
+    void monitorAlarmsOnceAfterAShift() {
+        data::DataSet reference;
+        for (unsigned r = 0; r < 3; ++r) {
+            reference.batches.push_back(noisyBatch("R" + std::to_string(r), 1800, 100 + r));
+        }
+        auto commissioned = LiveMonitor::commission(reference, {});
+        QVERIFY2(commissioned, commissioned ? "" : commissioned.error().message().c_str());
+        QCOMPARE(commissioned->plannedRunS(), 1800.0);
+        for (const double shift : {0.0, 0.3}) {
+            LiveMonitor monitor = *commissioned;
+            const data::Batch live = noisyBatch("L1", 1800, 7, shift, 600);
+            std::vector<LiveAlarm> alarms;
+            int windows = 0;
+            std::array<double, data::kColumnCount> row{};
+            for (std::size_t r = 0; r < live.rows(); ++r) {
+                for (const auto c : LiveMonitor::columns()) {
+                    row[static_cast<std::size_t>(c)] = (*live.values(c))[r];
+                }
+                auto out = monitor.push("L1", 1700000000, static_cast<double>(r), row);
+                QVERIFY(out);
+                for (const auto& w : *out) {
+                    ++windows;
+                    if (auto a = monitor.alarmOf(w)) {
+                        alarms.push_back(*a);
+                        QVERIFY(monitor.alarmPayload(*a, w).find("\"statistic\"") != std::string::npos);
+                    }
+                    QVERIFY(monitor.windowPayload(w).find("\"cusum_spe_limit\"") != std::string::npos);
+                }
+            }
+            windows += static_cast<int>(monitor.finish().size());
+            QCOMPARE(windows, 30);
+            if (shift == 0) {
+                QCOMPARE(alarms.size(), std::size_t(0));
+            } else {
+                QCOMPARE(alarms.size(), std::size_t(1));
+                qInfo("shift 0.3 at 600 s: alarm by %s at %.0f s, onset %.0f s", alarms[0].statistic.c_str(),
+                      alarms[0].timeS, alarms[0].onsetS);
+                QVERIFY2(alarms[0].timeS > 600 && alarms[0].timeS <= 900, std::to_string(alarms[0].timeS).c_str());
+                QVERIFY(alarms[0].hasOnset);
+                QVERIFY2(std::abs(alarms[0].onsetS - 600) <= 120, std::to_string(alarms[0].onsetS).c_str());
+            }
+        }
+    }
+
+    void monitorRefusesAReferenceWithoutItsColumns() {
+        data::DataSet reference;
+        reference.batches.push_back(noisyBatch("R0", 1800, 1));
+        auto& b = reference.batches[0];
+        b.numeric.erase(std::remove_if(b.numeric.begin(), b.numeric.end(),
+                                       [](const data::Batch::NumericColumn& c) { return c.id == Column::Feed; }),
+                        b.numeric.end());
+        const auto commissioned = LiveMonitor::commission(reference, {});
+        QVERIFY(!commissioned);
+        QVERIFY2(commissioned.error().reason.find("lacks the column 'feed_kg_h'") != std::string::npos,
+                 commissioned.error().message().c_str());
     }
 };
 
