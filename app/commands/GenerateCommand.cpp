@@ -98,7 +98,8 @@ int runGenerate(const CommandOptions& o) {
         }
     }
     if (o.outPath.empty() && o.brokerUrl.empty()) {
-        return fail(invalidOption("generate", "give --out DIR (batch files) or --publish URL (a live line), or both"));
+        return fail(invalidOption("generate",
+                                  "give --out DIR (batch files) or --publish URL (a live line), or both"));
     }
     if (o.outPath.empty()) {
         return publishPlant(o, go.plant);

@@ -96,11 +96,12 @@ int publishPlant(const CommandOptions& o, const plant::PlantOptions& plant) {
     if (!result) {
         return fail(result.error());
     }
-    std::printf("published %d batch(es), %ld samples (%ld messages, %.0f s of line time) to %s under %s at %gx "
-                "in %.2f s\n",
-                result->batches, result->samples, result->messages, result->lineSeconds,
-                po.connection.broker.text().c_str(), po.topics.linePrefix.c_str(), po.speed,
-                result->ending.elapsedSeconds);
+    std::printf(
+        "published %d batch(es), %ld samples (%ld messages, %.0f s of line time) to %s under %s at %gx "
+        "in %.2f s\n",
+        result->batches, result->samples, result->messages, result->lineSeconds,
+        po.connection.broker.text().c_str(), po.topics.linePrefix.c_str(), po.speed,
+        result->ending.elapsedSeconds);
     return 0;
 }
 
@@ -110,10 +111,12 @@ using namespace detail;
 
 int runLive(const CommandOptions& o) {
     if (!o.modelPath.empty()) {
-        return fail(Error{ErrorKind::Usage, "--model",
+        return fail(Error{ErrorKind::Usage,
+                          "--model",
                           "the twin's prediction and forecast beside a live line are not in this version yet "
                           "(issue #73); --reference runs the monitor",
-                          ErrorCode::NotImplemented, {"live --model"}});
+                          ErrorCode::NotImplemented,
+                          {"live --model"}});
     }
     live::LiveOptions lo;
     auto connection = connectionOptions(o, "--broker", "live");

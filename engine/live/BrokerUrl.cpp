@@ -6,7 +6,8 @@ namespace drytwin::live {
 
 std::string BrokerUrl::text() const {
     const bool ipv6 = host.find(':') != std::string::npos;
-    return std::string(tls ? "mqtts://" : "mqtt://") + (ipv6 ? "[" + host + "]" : host) + ":" + std::to_string(port);
+    return std::string(tls ? "mqtts://" : "mqtt://") + (ipv6 ? "[" + host + "]" : host) + ":" +
+           std::to_string(port);
 }
 
 Expected<BrokerUrl> parseBrokerUrl(const std::string& url, const std::string& option) {
@@ -20,7 +21,8 @@ Expected<BrokerUrl> parseBrokerUrl(const std::string& url, const std::string& op
         broker.tls = true;
         broker.port = 8883;
     } else {
-        return invalidOption(place, "a broker URL begins with mqtt:// or mqtts:// (e.g. mqtt://127.0.0.1:1883)");
+        return invalidOption(place,
+                             "a broker URL begins with mqtt:// or mqtts:// (e.g. mqtt://127.0.0.1:1883)");
     }
     if (!rest.empty() && rest.back() == '/') {
         rest.pop_back();

@@ -21,7 +21,8 @@ std::uint32_t bitOf(data::Column c) {
 /// "20250603T080000" of Unix seconds: a file-name-safe UTC stamp.
 std::string compactUtc(std::int64_t second) {
     std::string iso = data::historian::isoTimestamp(static_cast<double>(second));
-    iso.erase(std::remove_if(iso.begin(), iso.end(), [](char ch) { return ch == '-' || ch == ':'; }), iso.end());
+    iso.erase(std::remove_if(iso.begin(), iso.end(), [](char ch) { return ch == '-' || ch == ':'; }),
+              iso.end());
     return iso;
 }
 
@@ -121,15 +122,15 @@ void GridRecorder::finalise(Row row) {
         m_batchStarts.erase(m_batchStarts.begin());
     }
     const std::int64_t last =
-        m_open ? (m_batch.rows.empty() ? m_batch.startSecond - 1 : m_batch.rows.back().second) : row.second - 1;
+        m_open ? (m_batch.rows.empty() ? m_batch.startSecond - 1 : m_batch.rows.back().second)
+               : row.second - 1;
     if (!announced.empty() && (!m_open || announced != m_batch.id)) {
         beginBatch(announced, std::clamp(announcedAt, last + 1, row.second));
     } else if (!m_open || static_cast<double>(row.second - last - 1) > m_options.splitGapS) {
         beginBatch(m_options.unnamedPrefix + "_" + compactUtc(row.second), row.second);
     }
     // Seconds without any message before this row: rows of missing cells, never interpolated.
-    const std::int64_t from =
-        m_batch.rows.empty() ? m_batch.startSecond : m_batch.rows.back().second + 1;
+    const std::int64_t from = m_batch.rows.empty() ? m_batch.startSecond : m_batch.rows.back().second + 1;
     for (std::int64_t s = from; s < row.second; ++s) {
         Row gap;
         gap.second = s;
@@ -194,7 +195,8 @@ data::Batch GridRecorder::toBatch(const OpenBatch& b) const {
     data::Batch batch;
     batch.id = b.id;
     batch.metadataLines = {"# batch: " + b.id, "# source: " + m_options.sourceText,
-                           "# start: " + data::historian::isoTimestamp(static_cast<double>(b.startSecond)) + "Z",
+                           "# start: " + data::historian::isoTimestamp(static_cast<double>(b.startSecond)) +
+                               "Z",
                            "# sampling: 1 s"};
     const std::size_t n = b.rows.size();
     std::vector<double> time(n);
@@ -239,7 +241,8 @@ Status GridRecorder::writeOpenBatch() {
     std::error_code ec;
     std::filesystem::create_directories(m_options.folder, ec);
     if (ec) {
-        return Error{ErrorKind::BadInput, m_options.folder, "cannot create the recording folder: " + ec.message()};
+        return Error{ErrorKind::BadInput, m_options.folder,
+                     "cannot create the recording folder: " + ec.message()};
     }
     if (auto st = data::writeBatchFile(toBatch(m_batch), m_batch.path); !st) {
         return st;

@@ -27,27 +27,27 @@ struct GridRecorderOptions {
     double writeEveryS = 5;
     /// Names a batch when the line sends no batch id: `<prefix>_<UTC start, YYYYmmddTHHMMSS>`.
     std::string unnamedPrefix = "live";
-    std::string sourceText; ///< `# source:` of every file (the broker)
+    std::string sourceText;     ///< `# source:` of every file (the broker)
     bool keepFinalRows = false; ///< keep each final row for takeFinalRows() (the live monitor)
     Status validate() const;
 };
 
 /// @brief What happened to the messages so far.
 struct RecorderCounts {
-    long samples = 0;    ///< tag samples placed on the grid (explicit nulls included)
-    long duplicates = 0; ///< a second sample of a tag in one grid second: the first is kept
-    long late = 0;       ///< for a row already final (older than the reorder window): not placed
-    long malformed = 0;  ///< unreadable payloads: counted, never recorded
+    long samples = 0;      ///< tag samples placed on the grid (explicit nulls included)
+    long duplicates = 0;   ///< a second sample of a tag in one grid second: the first is kept
+    long late = 0;         ///< for a row already final (older than the reorder window): not placed
+    long malformed = 0;    ///< unreadable payloads: counted, never recorded
     long missingCells = 0; ///< cells of final rows that no message filled (gaps)
-    long rows = 0;       ///< final rows written
-    long batches = 0;    ///< batch files begun
+    long rows = 0;         ///< final rows written
+    long batches = 0;      ///< batch files begun
 };
 
 /// @brief A row of the grid as it became final: what the live monitor is fed.
 struct FinalRow {
     std::string batch;
-    double batchStartS = 0; ///< Unix second of the batch's first row
-    double timeS = 0;       ///< since the batch's start
+    double batchStartS = 0;                          ///< Unix second of the batch's first row
+    double timeS = 0;                                ///< since the batch's start
     std::array<double, data::kColumnCount> values{}; ///< by contract column; NaN missing
 };
 
@@ -98,7 +98,7 @@ private:
 
     GridRecorderOptions m_options;
     RecorderCounts m_counts;
-    std::map<std::int64_t, Row> m_pending;            ///< rows not yet final, by grid second
+    std::map<std::int64_t, Row> m_pending;             ///< rows not yet final, by grid second
     std::map<std::int64_t, std::string> m_batchStarts; ///< batch ids announced, by first second
     bool m_anyFinal = false;
     std::int64_t m_finalBefore = 0; ///< rows before this second are final

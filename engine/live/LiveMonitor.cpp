@@ -31,7 +31,8 @@ const std::vector<data::Column>& LiveMonitor::columns() {
     return cols;
 }
 
-Expected<LiveMonitor> LiveMonitor::commission(const data::DataSet& reference, const LiveMonitorOptions& options) {
+Expected<LiveMonitor> LiveMonitor::commission(const data::DataSet& reference,
+                                              const LiveMonitorOptions& options) {
     if (auto st = options.validate(); !st) {
         return st.error();
     }
@@ -61,8 +62,11 @@ Expected<LiveMonitor> LiveMonitor::commission(const data::DataSet& reference, co
         runs.push_back(std::move(run));
     }
     if (runs.empty()) {
-        return Error{ErrorKind::BadInput, "--reference", "the reference holds no batch with rows",
-                     ErrorCode::NotEnoughData, {"reference batches", "0"}};
+        return Error{ErrorKind::BadInput,
+                     "--reference",
+                     "the reference holds no batch with rows",
+                     ErrorCode::NotEnoughData,
+                     {"reference batches", "0"}};
     }
     monitoring::MonitorOptions mo;
     mo.falseAlarmRate = options.falseAlarmRate;
@@ -78,7 +82,8 @@ Expected<LiveMonitor> LiveMonitor::commission(const data::DataSet& reference, co
     }
     LiveMonitor out;
     out.m_monitor = std::make_shared<const monitoring::Monitor>(std::move(*fitted));
-    out.m_plannedRunS = options.plannedRunS > 0 ? options.plannedRunS : totalS / static_cast<double>(runs.size());
+    out.m_plannedRunS =
+        options.plannedRunS > 0 ? options.plannedRunS : totalS / static_cast<double>(runs.size());
     auto stream = monitoring::StreamingMonitor::create(*out.m_monitor, {out.m_plannedRunS});
     if (!stream) {
         return stream.error();

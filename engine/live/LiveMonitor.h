@@ -25,11 +25,11 @@ struct LiveMonitorOptions {
 /// stays alarmed from then on, across batches, as StreamingMonitor does).
 struct LiveAlarm {
     std::string batch;
-    double timeS = 0;          ///< end of the alarming window since the batch's start [s]
-    std::string statistic;     ///< "T2" or "SPE": the CUSUM that crossed its threshold
+    double timeS = 0;      ///< end of the alarming window since the batch's start [s]
+    std::string statistic; ///< "T2" or "SPE": the CUSUM that crossed its threshold
     bool hasOnset = false;
     std::string onsetBatch;
-    double onsetS = 0;         ///< the change's estimated start since its batch's start [s]
+    double onsetS = 0; ///< the change's estimated start since its batch's start [s]
 };
 
 /// @brief The dynamic-PCA monitor of the line's screens (the training line's six columns:
@@ -41,12 +41,14 @@ class LiveMonitor {
 public:
     /// @brief Fits on @p reference (batch files of a period when the line ran as it should); a
     /// reference without the screen columns or too short for the monitor is a BadInput error.
-    static Expected<LiveMonitor> commission(const data::DataSet& reference, const LiveMonitorOptions& options);
+    static Expected<LiveMonitor> commission(const data::DataSet& reference,
+                                            const LiveMonitorOptions& options);
     /// @brief One final row of the recording (values by contract column, NaN missing) at
     /// @p timeS since the start of batch @p batch, which began at Unix second @p batchStartS.
     /// Returns the windows it completed.
-    Expected<std::vector<monitoring::StreamingWindow>> push(const std::string& batch, double batchStartS, double timeS,
-                                                            const std::array<double, data::kColumnCount>& values);
+    Expected<std::vector<monitoring::StreamingWindow>>
+    push(const std::string& batch, double batchStartS, double timeS,
+         const std::array<double, data::kColumnCount>& values);
     /// @brief Ends the current run (its last block); the windows that completed.
     std::vector<monitoring::StreamingWindow> finish();
     /// @brief The alarm of @p w when it is the stream's first alarmed window, else nullopt.
@@ -68,7 +70,8 @@ public:
 
 private:
     std::shared_ptr<const monitoring::Monitor> m_monitor;
-    std::optional<monitoring::StreamingMonitor> m_stream; ///< by value: a copy of a fresh monitor starts afresh
+    std::optional<monitoring::StreamingMonitor>
+        m_stream; ///< by value: a copy of a fresh monitor starts afresh
     double m_plannedRunS = 0;
     std::string m_run;
     double m_runStartS = 0;

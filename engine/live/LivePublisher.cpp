@@ -36,7 +36,8 @@ Expected<PublishResult> publishBatches(const std::vector<data::Batch>& batches, 
     result.firstStampS =
         options.startEpochS > 0
             ? options.startEpochS
-            : std::floor(std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count());
+            : std::floor(
+                  std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count());
     std::size_t totalRows = 0;
     for (const auto& b : batches) {
         totalRows += b.rows();
@@ -58,7 +59,8 @@ Expected<PublishResult> publishBatches(const std::vector<data::Batch>& batches, 
             }
         }
         const double batchStartStamp = result.firstStampS + lineOffsetS;
-        if (auto st = (*client)->publish(options.topics.batchIdTopic(), formatTextPayload(batchStartStamp, batch.id));
+        if (auto st = (*client)->publish(options.topics.batchIdTopic(),
+                                         formatTextPayload(batchStartStamp, batch.id));
             !st) {
             return st.error();
         }
@@ -66,8 +68,9 @@ Expected<PublishResult> publishBatches(const std::vector<data::Batch>& batches, 
         for (std::size_t r = 0; r < batch.rows() && !stopped; ++r) {
             const double lineS = lineOffsetS + ((*time)[r] - batchTime0);
             // Paced by the line's own clock: a sample goes out when its time has come at N x.
-            std::this_thread::sleep_until(paceStart + std::chrono::duration_cast<Clock::duration>(
-                                                          std::chrono::duration<double>(lineS / options.speed)));
+            std::this_thread::sleep_until(paceStart +
+                                          std::chrono::duration_cast<Clock::duration>(
+                                              std::chrono::duration<double>(lineS / options.speed)));
             const double stamp = result.firstStampS + lineS;
             for (const auto& [topic, values] : tags) {
                 if (auto st = (*client)->publish(topic, formatTagPayload(stamp, (*values)[r])); !st) {

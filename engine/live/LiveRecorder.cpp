@@ -6,8 +6,8 @@
 #include <chrono>
 #include <deque>
 #include <map>
-#include <optional>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 namespace drytwin::live {
@@ -89,7 +89,8 @@ Expected<LiveResult> runLive(const LiveOptions& options, const Progress& progres
     };
     auto onConnection = [inbox](bool up, const std::string& reason) {
         std::lock_guard<std::mutex> lock(inbox->mutex);
-        inbox->linkEvents.push_back(up ? "link up again, subscribed" : "link down (" + reason + "), reconnecting");
+        inbox->linkEvents.push_back(up ? "link up again, subscribed"
+                                       : "link down (" + reason + "), reconnecting");
     };
     const auto subscriptions = options.topics.subscriptions();
     auto client = MqttClient::connect(options.connection, subscriptions, onMessage, onConnection);
@@ -101,8 +102,8 @@ Expected<LiveResult> runLive(const LiveOptions& options, const Progress& progres
         std::lock_guard<std::mutex> lock(inbox->mutex);
         inbox->linkEvents.clear();
     }
-    say("connected to " + (*client)->brokerText() + ", subscribed to " + std::to_string(subscriptions.size()) +
-        " topics under " + options.topics.linePrefix);
+    say("connected to " + (*client)->brokerText() + ", subscribed to " +
+        std::to_string(subscriptions.size()) + " topics under " + options.topics.linePrefix);
 
     if (monitor) {
         say("monitor fitted on the reference " + options.referencePath + " (false-alarm rate " +
@@ -217,10 +218,10 @@ Expected<LiveResult> runLive(const LiveOptions& options, const Progress& progres
         if (Clock::now() - lastReport >= std::chrono::seconds(1) || timeUp) {
             lastReport = Clock::now();
             const auto& c = recorder.counts();
-            const std::string detail = std::to_string(c.rows) + " rows, " + std::to_string(c.samples) + " samples, " +
-                                       std::to_string(c.late) + " late, " + std::to_string(c.duplicates) +
-                                       " duplicate, " + std::to_string(c.malformed) + " malformed" +
-                                       ((*client)->connected() ? "" : ", link down");
+            const std::string detail =
+                std::to_string(c.rows) + " rows, " + std::to_string(c.samples) + " samples, " +
+                std::to_string(c.late) + " late, " + std::to_string(c.duplicates) + " duplicate, " +
+                std::to_string(c.malformed) + " malformed" + ((*client)->connected() ? "" : ", link down");
             const double fraction = options.durationS > 0 ? std::min(1.0, elapsedS / options.durationS) : 0.0;
             if (reportProgress(progress, "live", fraction, detail)) {
                 result.stoppedByUser = true;

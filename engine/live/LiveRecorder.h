@@ -33,12 +33,12 @@ struct LiveOptions {
 /// @brief How a live run went.
 struct LiveResult {
     RecorderCounts counts;
-    long messages = 0;      ///< messages received, of every kind
-    int disconnects = 0;    ///< times the link dropped (each followed by reconnect attempts)
+    long messages = 0;          ///< messages received, of every kind
+    int disconnects = 0;        ///< times the link dropped (each followed by reconnect attempts)
     bool stoppedByUser = false; ///< ended by progress (Ctrl+C), not by the duration
     std::vector<std::string> files;
-    bool monitored = false;   ///< a reference was given and the monitor ran
-    long monitorWindows = 0;  ///< windows the monitor completed (each published)
+    bool monitored = false;        ///< a reference was given and the monitor ran
+    long monitorWindows = 0;       ///< windows the monitor completed (each published)
     std::vector<LiveAlarm> alarms; ///< at most one: the monitor stays alarmed once it alarmed
     Ending ending;
 };

@@ -44,7 +44,8 @@ Status MqttConnectOptions::validate() const {
         return invalidOption("keep-alive", "must be at least 5 s");
     }
     if (reconnectFirstDelayS < 1 || reconnectMaxDelayS < reconnectFirstDelayS) {
-        return invalidOption("reconnect delay", "must be at least 1 s, the largest no smaller than the first");
+        return invalidOption("reconnect delay",
+                             "must be at least 1 s, the largest no smaller than the first");
     }
     if (!caFile.empty() && !broker.tls) {
         return invalidOption("--cafile", "a CA file needs a TLS broker URL (mqtts://)");
@@ -113,8 +114,9 @@ struct MqttClient::Impl {
         Impl& self = of(userdata);
         if (self.onMessage && message->topic) {
             self.onMessage(message->topic,
-                           std::string_view(static_cast<const char*>(message->payload),
-                                            message->payloadlen > 0 ? static_cast<std::size_t>(message->payloadlen) : 0));
+                           std::string_view(
+                               static_cast<const char*>(message->payload),
+                               message->payloadlen > 0 ? static_cast<std::size_t>(message->payloadlen) : 0));
         }
     }
     static void onPublishAcknowledged(mosquitto*, void* userdata, int) {
@@ -154,9 +156,11 @@ Expected<std::unique_ptr<MqttClient>> MqttClient::connect(const MqttConnectOptio
     impl->onMessage = std::move(onMessage);
     impl->onConnection = std::move(onConnection);
     const std::string place = "broker " + impl->brokerText;
-    impl->handle = mosquitto_new(options.clientId.empty() ? nullptr : options.clientId.c_str(), true, impl.get());
+    impl->handle =
+        mosquitto_new(options.clientId.empty() ? nullptr : options.clientId.c_str(), true, impl.get());
     if (!impl->handle) {
-        return Error{ErrorKind::BadInput, place, "cannot create an MQTT client: " + std::string(std::strerror(errno))};
+        return Error{ErrorKind::BadInput, place,
+                     "cannot create an MQTT client: " + std::string(std::strerror(errno))};
     }
     mosquitto* m = impl->handle;
     mosquitto_connect_callback_set(m, &Impl::onConnect);
@@ -186,16 +190,16 @@ Expected<std::unique_ptr<MqttClient>> MqttClient::connect(const MqttConnectOptio
     if (int rc = mosquitto_connect(m, options.broker.host.c_str(), options.broker.port, options.keepAliveS);
         rc != MOSQ_ERR_SUCCESS) {
         return Error{ErrorKind::BadInput, place,
-                     "cannot connect: " + mosquittoReason(rc) + " (is the broker running and listening there?)"};
+                     "cannot connect: " + mosquittoReason(rc) +
+                         " (is the broker running and listening there?)"};
     }
     if (int rc = mosquitto_loop_start(m); rc != MOSQ_ERR_SUCCESS) {
         return Error{ErrorKind::BadInput, place, "cannot start the network thread: " + mosquittoReason(rc)};
     }
     // The TCP link is up; the broker's CONNACK says whether it takes us (credentials, protocol).
     std::unique_lock<std::mutex> lock(impl->mutex);
-    const bool answered =
-        impl->changed.wait_for(lock, std::chrono::duration<double>(options.connectTimeoutS),
-                               [&] { return impl->firstConnack >= 0; });
+    const bool answered = impl->changed.wait_for(lock, std::chrono::duration<double>(options.connectTimeoutS),
+                                                 [&] { return impl->firstConnack >= 0; });
     // Back only once the broker has confirmed every subscription: a sender started after this
     // returns loses nothing to a subscription still on its way.
     const bool subscribed =
@@ -210,8 +214,8 @@ Expected<std::unique_ptr<MqttClient>> MqttClient::connect(const MqttConnectOptio
                          std::to_string(static_cast<int>(options.connectTimeoutS)) + " s"};
     }
     if (connack != 0) {
-        return Error{ErrorKind::BadInput, place, std::string("the broker refused the connection: ") +
-                                                     mosquitto_connack_string(connack)};
+        return Error{ErrorKind::BadInput, place,
+                     std::string("the broker refused the connection: ") + mosquitto_connack_string(connack)};
     }
     if (!subscribed) {
         return Error{ErrorKind::BadInput, place, "the broker did not confirm the subscriptions"};

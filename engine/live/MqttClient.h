@@ -15,11 +15,11 @@ namespace drytwin::live {
 /// it from a file or the environment: never from a command line or a project (issue #73).
 struct MqttConnectOptions {
     BrokerUrl broker;
-    std::string clientId;   ///< empty: the library makes one up
-    std::string user;       ///< empty: anonymous
-    std::string password;   ///< only with a user
-    std::string caFile;     ///< TLS: the CA certificate(s) the broker's certificate is checked against
-    int keepAliveS = 30;    ///< the broker drops a client silent for 1.5 x this
+    std::string clientId; ///< empty: the library makes one up
+    std::string user;     ///< empty: anonymous
+    std::string password; ///< only with a user
+    std::string caFile;   ///< TLS: the CA certificate(s) the broker's certificate is checked against
+    int keepAliveS = 30;  ///< the broker drops a client silent for 1.5 x this
     double connectTimeoutS = 10;
     /// Reconnect back-off after a drop: doubles from the first delay up to the last (libmosquitto's
     /// exponential back-off), so that a restarting broker is not hammered.
@@ -45,9 +45,9 @@ public:
     /// BadInput error naming the broker and the cause. The handlers are set before the first
     /// message can arrive; @p subscriptions are subscribed at QoS 1 after every (re)connect.
     static Expected<std::unique_ptr<MqttClient>> connect(const MqttConnectOptions& options,
-                                                          std::vector<std::string> subscriptions = {},
-                                                          MessageHandler onMessage = {},
-                                                          ConnectionHandler onConnection = {});
+                                                         std::vector<std::string> subscriptions = {},
+                                                         MessageHandler onMessage = {},
+                                                         ConnectionHandler onConnection = {});
     ~MqttClient();
     MqttClient(const MqttClient&) = delete;
     MqttClient& operator=(const MqttClient&) = delete;

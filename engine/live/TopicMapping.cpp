@@ -113,13 +113,14 @@ Expected<TopicMapping> readTopicMappingText(const std::string& text, const std::
         return Error{ErrorKind::BadInput, name + ":" + std::to_string(line) + ":" + std::to_string(column),
                      "the topic mapping is not valid JSON: " + what};
     } catch (const nlohmann::json::exception& e) {
-        return Error{ErrorKind::BadInput, name, std::string("the topic mapping is not valid JSON: ") + e.what()};
+        return Error{ErrorKind::BadInput, name,
+                     std::string("the topic mapping is not valid JSON: ") + e.what()};
     }
     const data::historian::JsonPlaces places(text);
     auto at = [&](const std::string& key, const std::string& reason) {
         int line = 0, column = 0;
-        data::historian::lineAndColumnAt(text, places.keyAt(data::historian::JsonPlaces::child("", key)), line,
-                                         column);
+        data::historian::lineAndColumnAt(text, places.keyAt(data::historian::JsonPlaces::child("", key)),
+                                         line, column);
         return Error{ErrorKind::BadInput, name + ":" + std::to_string(line) + ":" + std::to_string(column),
                      reason};
     };

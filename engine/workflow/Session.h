@@ -287,7 +287,8 @@ public:
     /// @brief Runs the virtual plant and publishes its batches' samples to an MQTT broker at N x
     /// real time (`generate --publish`): the samples generate() would write for the same options.
     /// Leaves the session alone; declared here, defined in live/ (live/LivePublisher.h).
-    Expected<live::PublishResult> publish(const live::PublishOptions& options, const Progress& progress = {}) const;
+    Expected<live::PublishResult> publish(const live::PublishOptions& options,
+                                          const Progress& progress = {}) const;
     /// @brief Follows a running line on an MQTT broker and records its tags as batch files until
     /// the duration ends or progress says stop (`drytwin live`; live/LiveRecorder.h).
     Expected<live::LiveResult> live(const live::LiveOptions& options, const Progress& progress = {}) const;

@@ -8,7 +8,8 @@
 
 namespace drytwin::workflow {
 
-Expected<live::PublishResult> Session::publish(const live::PublishOptions& options, const Progress& progress) const {
+Expected<live::PublishResult> Session::publish(const live::PublishOptions& options,
+                                               const Progress& progress) const {
     if (auto st = options.validate(); !st) {
         return st.error();
     }

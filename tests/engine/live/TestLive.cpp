@@ -25,7 +25,8 @@ TagSample at(double timeS, double value) {
 
 /// A batch of the six screen columns around fixed levels with independent noise, plus @p shift on
 /// the outlet moisture from @p shiftFromS on.
-data::Batch noisyBatch(const std::string& id, int rows, unsigned seed, double shift = 0, double shiftFromS = 0) {
+data::Batch noisyBatch(const std::string& id, int rows, unsigned seed, double shift = 0,
+                       double shiftFromS = 0) {
     std::mt19937 rng(seed);
     std::normal_distribution<double> noise(0.0, 1.0);
     data::Batch b;
@@ -35,8 +36,9 @@ data::Batch noisyBatch(const std::string& id, int rows, unsigned seed, double sh
         time[static_cast<std::size_t>(r)] = r;
     }
     b.setValues(Column::Time, time);
-    const std::pair<Column, double> levels[] = {{Column::XOut, 12}, {Column::TOut, 55}, {Column::THotSp, 160},
-                                                 {Column::THot, 160}, {Column::Feed, 6000}, {Column::XIn, 22}};
+    const std::pair<Column, double> levels[] = {{Column::XOut, 12},    {Column::TOut, 55},
+                                                {Column::THotSp, 160}, {Column::THot, 160},
+                                                {Column::Feed, 6000},  {Column::XIn, 22}};
     for (const auto& [c, level] : levels) {
         std::vector<double> v(static_cast<std::size_t>(rows));
         for (int r = 0; r < rows; ++r) {
@@ -75,15 +77,24 @@ private slots:
     void brokerUrls_data() {
         QTest::addColumn<QString>("url");
         QTest::addColumn<QString>("expected"); // text(), or the start of the error's reason
-        QTest::newRow("plain") << "mqtt://127.0.0.1:1884" << "mqtt://127.0.0.1:1884";
-        QTest::newRow("default port") << "mqtt://broker.local" << "mqtt://broker.local:1883";
-        QTest::newRow("tls default port") << "mqtts://broker.local" << "mqtts://broker.local:8883";
-        QTest::newRow("ipv6") << "mqtt://[::1]:1900" << "mqtt://[::1]:1900";
-        QTest::newRow("scheme") << "tcp://host:1883" << "a broker URL begins with";
-        QTest::newRow("port text") << "mqtt://host:abc" << "the port 'abc' is not a number";
-        QTest::newRow("port range") << "mqtt://host:70000" << "the port '70000' is not a number";
-        QTest::newRow("no host") << "mqtt://:1883" << "no host name";
-        QTest::newRow("user in url") << "mqtt://me:pw@host:1883" << "the URL holds only host and port";
+        QTest::newRow("plain") << "mqtt://127.0.0.1:1884"
+                               << "mqtt://127.0.0.1:1884";
+        QTest::newRow("default port") << "mqtt://broker.local"
+                                      << "mqtt://broker.local:1883";
+        QTest::newRow("tls default port") << "mqtts://broker.local"
+                                          << "mqtts://broker.local:8883";
+        QTest::newRow("ipv6") << "mqtt://[::1]:1900"
+                              << "mqtt://[::1]:1900";
+        QTest::newRow("scheme") << "tcp://host:1883"
+                                << "a broker URL begins with";
+        QTest::newRow("port text") << "mqtt://host:abc"
+                                   << "the port 'abc' is not a number";
+        QTest::newRow("port range") << "mqtt://host:70000"
+                                    << "the port '70000' is not a number";
+        QTest::newRow("no host") << "mqtt://:1883"
+                                 << "no host name";
+        QTest::newRow("user in url") << "mqtt://me:pw@host:1883"
+                                     << "the URL holds only host and port";
     }
     void brokerUrls() {
         QFETCH(QString, url);
@@ -93,7 +104,8 @@ private slots:
             QCOMPARE(QString::fromStdString(parsed->text()), expected);
         } else {
             QCOMPARE(parsed.error().kind, ErrorKind::Usage);
-            QVERIFY2(parsed.error().reason.rfind(expected.toStdString(), 0) == 0, parsed.error().message().c_str());
+            QVERIFY2(parsed.error().reason.rfind(expected.toStdString(), 0) == 0,
+                     parsed.error().message().c_str());
             QVERIFY(parsed.error().place.find(url.toStdString()) != std::string::npos);
         }
     }
@@ -103,8 +115,8 @@ private slots:
         QCOMPARE(QString::fromStdString(defaults.topicOf(Column::XOut)), QString("drytwin/line1/X_out_pct"));
         QCOMPARE(QString::fromStdString(defaults.twinTopicPrefix()), QString("drytwin/line1/twin"));
         QCOMPARE(defaults.subscriptions().size(), std::size_t(13));
-        auto mapped = readTopicMappingText(R"({"X_out_pct": "plant/NIR", "batch_id": "plant/B", "prefix": "tw"})",
-                                           "t.json");
+        auto mapped = readTopicMappingText(
+            R"({"X_out_pct": "plant/NIR", "batch_id": "plant/B", "prefix": "tw"})", "t.json");
         QVERIFY(mapped);
         QCOMPARE(QString::fromStdString(mapped->topicOf(Column::XOut)), QString("plant/NIR"));
         QCOMPARE(QString::fromStdString(mapped->topicOf(Column::TOut)), QString("drytwin/line1/T_out_C"));
@@ -116,12 +128,18 @@ private slots:
     void topicMappingErrorsNamePlaceAndCause_data() {
         QTest::addColumn<QString>("text");
         QTest::addColumn<QString>("message");
-        QTest::newRow("not json") << "{\"X_out_pct\": }" << "t.json:1:15: the topic mapping is not valid JSON";
-        QTest::newRow("unknown key") << "{\n  \"X_outlet\": \"a\"\n}" << "t.json:2:3: 'X_outlet' is not a measured";
-        QTest::newRow("time") << "{\"time_s\": \"a\"}" << "t.json:1:2: 'time_s' is not a measured";
-        QTest::newRow("number") << "{\"X_out_pct\": 5}" << "t.json:1:2: 'X_out_pct' must be a topic";
-        QTest::newRow("wildcard") << "{\"X_out_pct\": \"plant/#\"}" << "t.json: X_out_pct: the topic 'plant/#' holds";
-        QTest::newRow("shared") << "{\"X_out_pct\": \"a\", \"T_out_C\": \"a\"}" << "t.json: 'T_out_C' and 'X_out_pct' are both";
+        QTest::newRow("not json") << "{\"X_out_pct\": }"
+                                  << "t.json:1:15: the topic mapping is not valid JSON";
+        QTest::newRow("unknown key") << "{\n  \"X_outlet\": \"a\"\n}"
+                                     << "t.json:2:3: 'X_outlet' is not a measured";
+        QTest::newRow("time") << "{\"time_s\": \"a\"}"
+                              << "t.json:1:2: 'time_s' is not a measured";
+        QTest::newRow("number") << "{\"X_out_pct\": 5}"
+                                << "t.json:1:2: 'X_out_pct' must be a topic";
+        QTest::newRow("wildcard") << "{\"X_out_pct\": \"plant/#\"}"
+                                  << "t.json: X_out_pct: the topic 'plant/#' holds";
+        QTest::newRow("shared") << "{\"X_out_pct\": \"a\", \"T_out_C\": \"a\"}"
+                                << "t.json: 'T_out_C' and 'X_out_pct' are both";
     }
     void topicMappingErrorsNamePlaceAndCause() {
         QFETCH(QString, text);
@@ -143,8 +161,8 @@ private slots:
         r = readTagPayload(R"({"t": "2023-11-14T22:13:20Z", "v": null})", 0);
         QVERIFY(r.ok && std::isnan(r.sample.value));
         QCOMPARE(r.sample.timeS, 1700000000.0);
-        for (const char* bad : {"wet", R"({"t": 1, "v": "wet"})", R"({"t": "yesterday", "v": 1})", R"({"t": 1})",
-                                "[1, 2]", "true", "", R"({"t": -5, "v": 1})", "{\"v\": 1"}) {
+        for (const char* bad : {"wet", R"({"t": 1, "v": "wet"})", R"({"t": "yesterday", "v": 1})",
+                                R"({"t": 1})", "[1, 2]", "true", "", R"({"t": -5, "v": 1})", "{\"v\": 1"}) {
             const auto b = readTagPayload(bad, 0);
             QVERIFY2(!b.ok && !b.problem.empty(), bad);
         }
@@ -175,15 +193,15 @@ private slots:
         GridRecorder rec(o);
         const double t0 = 1700000000;
         rec.addBatchStart("B01", t0);
-        for (int s : {1, 0, 2, 3, 7, 8, 9, 10, 11, 12}) { // 4, 5, 6 never come: a gap
+        for (int s : {1, 0, 2, 3, 7, 8, 9, 10, 11, 12}) {          // 4, 5, 6 never come: a gap
             rec.addSample(Column::XOut, at(t0 + s + 0.2, 10 + s)); // 0.2 s off the grid: rounded
         }
         rec.addSample(Column::XOut, at(t0 + 2, 99)); // duplicate, still pending
         QVERIFY(rec.flush());
-        rec.addSample(Column::XOut, at(t0 + 5, 99));   // late: its row is written
-        rec.addSample(Column::XOut, at(t0 + 1, 99));   // duplicate of a written row
-        rec.addSample(Column::TOut, at(t0 + 0, 40));   // late: a written row, another column
-        rec.addSample(Column::TOut, at(t0 + 12, 41));  // still within the window
+        rec.addSample(Column::XOut, at(t0 + 5, 99));  // late: its row is written
+        rec.addSample(Column::XOut, at(t0 + 1, 99));  // duplicate of a written row
+        rec.addSample(Column::TOut, at(t0 + 0, 40));  // late: a written row, another column
+        rec.addSample(Column::TOut, at(t0 + 12, 41)); // still within the window
         rec.addMalformed();
         QVERIFY(rec.flush(true));
         const auto& c = rec.counts();
@@ -197,10 +215,12 @@ private slots:
         std::string expected = "time_s,X_out_pct,T_out_C\n";
         for (int s = 0; s <= 12; ++s) {
             const bool gap = s >= 4 && s <= 6;
-            expected += std::to_string(s) + "," + (gap ? "" : std::to_string(10 + s)) + "," + (s == 12 ? "41" : "") + "\n";
+            expected += std::to_string(s) + "," + (gap ? "" : std::to_string(10 + s)) + "," +
+                        (s == 12 ? "41" : "") + "\n";
         }
         QCOMPARE(QString::fromStdString(rowsOf(rec.files()[0])), QString::fromStdString(expected));
-        QVERIFY(fileText(rec.files()[0]).rfind("# batch: B01\n# source: test\n# start: 2023-11-14T22:13:20Z\n", 0) == 0);
+        QVERIFY(fileText(rec.files()[0])
+                    .rfind("# batch: B01\n# source: test\n# start: 2023-11-14T22:13:20Z\n", 0) == 0);
     }
 
     void gridRecorderStartsFilesAtBatchIdsAndLongGaps() {
@@ -227,7 +247,8 @@ private slots:
         QVERIFY(rec.files()[0].find("/A.csv") != std::string::npos);
         QVERIFY(rec.files()[1].find("/B.csv") != std::string::npos);
         QVERIFY(rec.files()[2].find("/live_20231114T221340.csv") != std::string::npos);
-        QCOMPARE(QString::fromStdString(rowsOf(rec.files()[1])), QString("time_s,X_out_pct\n0,4\n1,5\n2,6\n3,7\n"));
+        QCOMPARE(QString::fromStdString(rowsOf(rec.files()[1])),
+                 QString("time_s,X_out_pct\n0,4\n1,5\n2,6\n3,7\n"));
         QCOMPARE(rec.counts().missingCells, 0L);
         // A second recording into the same folder never overwrites the first.
         GridRecorder again(o);
@@ -276,7 +297,8 @@ private slots:
                 QCOMPARE(alarms.size(), std::size_t(1));
                 qInfo("shift 0.3 at 600 s: alarm by %s at %.0f s, onset %.0f s", alarms[0].statistic.c_str(),
                       alarms[0].timeS, alarms[0].onsetS);
-                QVERIFY2(alarms[0].timeS > 600 && alarms[0].timeS <= 900, std::to_string(alarms[0].timeS).c_str());
+                QVERIFY2(alarms[0].timeS > 600 && alarms[0].timeS <= 900,
+                         std::to_string(alarms[0].timeS).c_str());
                 QVERIFY(alarms[0].hasOnset);
                 QVERIFY2(std::abs(alarms[0].onsetS - 600) <= 120, std::to_string(alarms[0].onsetS).c_str());
             }
@@ -287,9 +309,10 @@ private slots:
         data::DataSet reference;
         reference.batches.push_back(noisyBatch("R0", 1800, 1));
         auto& b = reference.batches[0];
-        b.numeric.erase(std::remove_if(b.numeric.begin(), b.numeric.end(),
-                                       [](const data::Batch::NumericColumn& c) { return c.id == Column::Feed; }),
-                        b.numeric.end());
+        b.numeric.erase(
+            std::remove_if(b.numeric.begin(), b.numeric.end(),
+                           [](const data::Batch::NumericColumn& c) { return c.id == Column::Feed; }),
+            b.numeric.end());
         const auto commissioned = LiveMonitor::commission(reference, {});
         QVERIFY(!commissioned);
         QVERIFY2(commissioned.error().reason.find("lacks the column 'feed_kg_h'") != std::string::npos,
