@@ -1,8 +1,8 @@
 # A gas-phase coupling on the lumped plant against a healthy reference (seeds 101 and 7101, as
-# study_discovery's first lumped seed): the wall loss, its look-alike, predicts worse alone but is
-# needed on top of the coupling. One change, one finding: the coupling names the group, the wall
-# loss is in it as "named_after" with its joint value, and no second finding repeats it (before
-# 2026-11-27 evening: "gas_phase_coupling" then "tube_wall_heat_loss", two findings). Usage:
+# study_discovery's first lumped seed): the wall loss, its look-alike, predicts worse alone. One
+# change, one finding: the coupling, with the wall loss listed beside it, neither named after it
+# nor as a second finding (before 2026-11-27 evening: two findings; before 2026-12-08: named after
+# the coupling with a joint value). Usage:
 #   cmake -DEXE=drytwin -DWORK=dir -P this file
 include(${CMAKE_CURRENT_LIST_DIR}/DiscoverJson.cmake)
 file(REMOVE_RECURSE ${WORK})
@@ -15,22 +15,25 @@ endforeach()
 drytwin_run("discover --reference" discover --reference ${WORK}/reference --data ${WORK}/after
             --json ${WORK}/discover.json)
 drytwin_expect_change_and_first_cause(${WORK}/discover.json gas_phase_coupling "against the reference")
-string(JSON group GET "${json}" findings 0 group)
-if(NOT group MATCHES "tube_wall_heat_loss")
-  message(FATAL_ERROR "the coupling's finding is not the group with the wall loss: ${group}\n${out}")
-endif()
+# The wall loss is the coupling's look-alike, listed with it; but it is not on this line: after
+# the coupling is taken in, it does not lower the outlet moisture's held-out error (an output it
+# acts on), so it is not named after the coupling (issue #72 item 2; before 2026-12-08 it was, with
+# a joint value of 0.29: a cause that is not there).
 string(JSON count LENGTH "${json}" findings 0 look_alikes)
-set(folded "")
+set(listed FALSE)
 math(EXPR last "${count} - 1")
 foreach(i RANGE ${last})
   string(JSON cause GET "${json}" findings 0 look_alikes ${i} cause)
   string(JSON after GET "${json}" findings 0 look_alikes ${i} named_after)
-  if(cause STREQUAL "tube_wall_heat_loss" AND after)
-    string(JSON folded GET "${json}" findings 0 look_alikes ${i} value)
+  if(cause STREQUAL "tube_wall_heat_loss")
+    set(listed TRUE)
+    if(after)
+      message(FATAL_ERROR "the wall loss, not on this line, is named after the coupling\n${out}")
+    endif()
   endif()
 endforeach()
-if(folded STREQUAL "" OR NOT folded GREATER 0)
-  message(FATAL_ERROR "the wall loss is not in the finding as named after it with a joint value > 0\n${out}")
+if(NOT listed)
+  message(FATAL_ERROR "the wall loss is not listed as the coupling's look-alike\n${out}")
 endif()
 string(JSON findings LENGTH "${json}" findings)
 foreach(i RANGE ${findings})
@@ -41,4 +44,4 @@ foreach(i RANGE ${findings})
     endif()
   endif()
 endforeach()
-message(STATUS "gas_phase_coupling named as the group; theta_wall ${folded} named after it, in the same finding")
+message(STATUS "gas_phase_coupling named; the wall loss listed as its look-alike, not named after it")

@@ -18,6 +18,8 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTimer>
+#include "WaitIdle.h"
+
 #include <QtTest>
 #include <cmath>
 #include <cstdio>
@@ -55,17 +57,7 @@ QComboBox* comboOf(ColumnMappingDialog& d, const QString& contractName, int colu
 }
 
 bool waitIdle(MainWindow& w, int ms = 120000) {
-    QElapsedTimer t;
-    t.start();
-    int idle = 0;
-    while (t.elapsed() < ms) {
-        QTest::qWait(50);
-        idle = w.jobs().busy() ? 0 : idle + 1;
-        if (idle >= 4) {
-            return true;
-        }
-    }
-    return false;
+    return widgets::test::waitUntilIdle(w, ms);
 }
 
 } // namespace

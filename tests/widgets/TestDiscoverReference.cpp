@@ -11,6 +11,8 @@
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include "WaitIdle.h"
+
 #include <QtTest>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
@@ -21,17 +23,7 @@ using drytwin::widgets::MainWindow;
 namespace {
 
 bool waitIdle(MainWindow& w, int ms = 240000) {
-    QElapsedTimer t;
-    t.start();
-    int idle = 0;
-    while (t.elapsed() < ms) {
-        QTest::qWait(50);
-        idle = w.jobs().busy() ? 0 : idle + 1;
-        if (idle >= 4) {
-            return true;
-        }
-    }
-    return false;
+    return widgets::test::waitUntilIdle(w, ms);
 }
 
 /// Virtual-plant batches (distributed plant, realistic sensors) written to @p folder.

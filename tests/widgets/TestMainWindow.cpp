@@ -48,6 +48,8 @@
 #include <QTimer>
 #include <QTranslator>
 #include <QUndoStack>
+#include "WaitIdle.h"
+
 #include <QtTest>
 #include <fstream>
 #include <functional>
@@ -83,17 +85,7 @@ const char* kGood =
 
 /// Waits until the window's engine queue is empty (every queued action and its follow-ups done).
 bool waitIdle(MainWindow& w, int ms = 120000) {
-    QElapsedTimer t;
-    t.start();
-    int idle = 0;
-    while (t.elapsed() < ms) {
-        QTest::qWait(50);
-        idle = w.jobs().busy() ? 0 : idle + 1;
-        if (idle >= 4) {
-            return true;
-        }
-    }
-    return false;
+    return widgets::test::waitUntilIdle(w, ms);
 }
 
 /// The button of @p parent whose text is @p text (null when there is none).

@@ -20,6 +20,8 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QWheelEvent>
+#include "WaitIdle.h"
+
 #include <QtTest>
 
 using namespace drytwin;
@@ -28,13 +30,7 @@ using namespace drytwin::widgets;
 namespace {
 
 bool waitIdle(Workbench& wb, int ms = 60000) {
-    QElapsedTimer t;
-    t.start();
-    while (wb.jobs().busy() && t.elapsed() < ms) {
-        QTest::qWait(50);
-    }
-    QTest::qWait(50);
-    return !wb.jobs().busy();
+    return widgets::test::waitUntilIdle(wb, ms);
 }
 
 // A run the engine refuses: the note says why, without the temporary file's name.

@@ -23,6 +23,8 @@
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include "WaitIdle.h"
+
 #include <QtTest>
 #include <fstream>
 
@@ -52,13 +54,7 @@ const char* kBatch =
     "0,170,6000,22,20,50,12.5,55\n1,171,6000,22,20,50,12.6,55.1\n2,171,6000,22,20,50,12.7,55.3\n";
 
 bool waitIdle(Workbench& wb, int ms = 60000) {
-    QElapsedTimer t;
-    t.start();
-    while (wb.jobs().busy() && t.elapsed() < ms) {
-        QTest::qWait(50);
-    }
-    QTest::qWait(50);
-    return !wb.jobs().busy();
+    return widgets::test::waitUntilIdle(wb, ms);
 }
 
 } // namespace

@@ -27,6 +27,8 @@
 #include <QTemporaryDir>
 #include <QTextBrowser>
 #include <QTimer>
+#include "WaitIdle.h"
+
 #include <QtTest>
 #include <cmath>
 #include <cstdio>
@@ -41,17 +43,7 @@ using drytwin::widgets::MainWindow;
 namespace {
 
 bool waitIdle(MainWindow& w, int ms = 600000) {
-    QElapsedTimer t;
-    t.start();
-    int idle = 0;
-    while (t.elapsed() < ms) {
-        QTest::qWait(50);
-        idle = w.jobs().busy() ? 0 : idle + 1;
-        if (idle >= 4) {
-            return true;
-        }
-    }
-    return false;
+    return widgets::test::waitUntilIdle(w, ms);
 }
 
 int curvesWithData(QwtPlot* plot) {

@@ -17,6 +17,8 @@
 #include <QPushButton>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include "WaitIdle.h"
+
 #include <QtTest>
 
 using namespace drytwin;
@@ -25,17 +27,7 @@ using drytwin::widgets::MainWindow;
 namespace {
 
 bool waitIdle(MainWindow& w, int ms = 600000) {
-    QElapsedTimer t;
-    t.start();
-    int idle = 0;
-    while (t.elapsed() < ms) {
-        QTest::qWait(50);
-        idle = w.jobs().busy() ? 0 : idle + 1;
-        if (idle >= 4) {
-            return true;
-        }
-    }
-    return false;
+    return widgets::test::waitUntilIdle(w, ms);
 }
 
 /// Waits until @p holds() is true, for at most @p ms.

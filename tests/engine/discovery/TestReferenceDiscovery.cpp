@@ -48,6 +48,14 @@ discovery::DiscoveryResult judge(const std::vector<data::SiBatch>& data) {
 }
 
 /// What was named and why not, so that a failure says why.
+/// Four batches of the lumped plant with its built-in instruments and the given effects.
+std::vector<data::SiBatch> lumpedFourBatches(unsigned seed, const std::map<Mechanism, double>& effects) {
+    plant::PlantOptions o;
+    o.seed = seed;
+    o.effects = effects;
+    return test::fourBatchesOf(o);
+}
+
 QString story(const discovery::DiscoveryResult& r) {
     QStringList out;
     out << QStringLiteral("changed %1 (drytwin %2: monitor p %3, causes p %6; pca %4 p %5)")
@@ -186,18 +194,16 @@ private Q_SLOTS:
 
     /// Healthy data of another seed against the healthy reference: nothing changed, nothing named.
     /// A gas-phase coupling on the lumped plant (seeds 7101 and 101, as cli_discover_reference_look_alike):
-    /// the round after the coupling first tries an inlet-gauge offset, turns it down, then names
-    /// the wall loss on top of the coupling. That round reports the wall loss's own share of the
-    /// error, the one its entry in the coupling's finding gives (it once gave the offset's).
+    /// judging a later cause as the first (laterCauseImprovesEveryOutput off), the round after the
+    /// coupling first tries an inlet-gauge offset, turns it down, then names the wall loss on top
+    /// of the coupling. That round reports the wall loss's own share of the error, the one its
+    /// entry in the coupling's finding gives (it once gave the offset's).
     void aRoundTellsTheNumbersOfTheCauseItNamed() {
-        const auto lumped = [](unsigned seed, const std::map<Mechanism, double>& effects) {
-            plant::PlantOptions o; // the lumped plant with its built-in instruments
-            o.seed = seed;
-            o.effects = effects;
-            return test::fourBatchesOf(o);
-        };
-        auto r = discovery::discoverChange(
-            lumped(7101, {}), lumped(101, {{Mechanism::GasPhaseCoupling, 0.25}}), hybrid::HybridModel{});
+        discovery::DiscoveryOptions asTheFirst;
+        asTheFirst.laterCauseImprovesEveryOutput = false;
+        auto r = discovery::discoverChange(lumpedFourBatches(7101, {}),
+                                           lumpedFourBatches(101, {{Mechanism::GasPhaseCoupling, 0.25}}),
+                                           hybrid::HybridModel{}, asTheFirst);
         QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
         const auto afterARejection = std::find_if(r->rounds.begin(), r->rounds.end(), [](const auto& rd) {
             return rd.named && !rd.rejected.empty();
@@ -205,6 +211,25 @@ private Q_SLOTS:
         QVERIFY2(afterARejection != r->rounds.end(), qPrintable(story(*r))); // the case this test is for
         QVERIFY2(test::roundsDisagreeWithFindings(*r).isEmpty(),
                  qPrintable(test::roundsDisagreeWithFindings(*r)));
+    }
+
+    /// Issue #72 item 2: that wall loss is not on the line (the plant holds the coupling alone).
+    /// After the coupling is taken in, the wall loss does not lower the outlet moisture's held-out
+    /// error, an output it acts on: it is not named, and its rejection says so.
+    void aLaterCauseMustImproveEveryOutputItActsOn() {
+        auto r = discovery::discoverChange(lumpedFourBatches(7101, {}),
+                                           lumpedFourBatches(101, {{Mechanism::GasPhaseCoupling, 0.25}}),
+                                           hybrid::HybridModel{});
+        QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
+        QVERIFY2(r->detection.namedCauses == std::vector<std::string>{"gas_phase_coupling"}, qPrintable(story(*r)));
+        bool rejectedForItsOutputs = false;
+        for (const auto& rd : r->rounds) {
+            for (const auto& x : rd.rejected) {
+                rejectedForItsOutputs = rejectedForItsOutputs ||
+                                        (x.cause == "tube_wall_heat_loss" && x.code == "not_on_every_output");
+            }
+        }
+        QVERIFY2(rejectedForItsOutputs, qPrintable(story(*r)));
     }
 
     /// A healthy pair of the lumped plant with unmeasured drift (null 206 of study_discovery
