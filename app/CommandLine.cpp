@@ -88,6 +88,24 @@ CommandLine::CommandLine() : m_impl(new Impl) {
         sub->add_option("--mapping", o.mappingPath,
                         "JSON column mapping {\"<contract column>\": \"<header in the files>\", ...}");
     };
+    // The broker's login and the topics, alike on generate --publish and live.
+    auto addMqttOptions = [&](CLI::App* sub) {
+        sub->add_option(
+            "--topics,--mapping", o.topicsPath,
+            "topic mapping (JSON): {\"<contract column>\": \"<topic>\", \"batch_id\": \"<topic>\", "
+            "\"prefix\": \"<twin's prefix>\"}; unnamed columns are on <topic prefix>/<column>");
+        sub->add_option(
+            "--topic-prefix", o.topicPrefix,
+            "where the line's unmapped tags are: <prefix>/<contract column> (default drytwin/line1)");
+        sub->add_option("--user", o.mqttUser, "broker user name");
+        sub->add_option(
+            "--password-file", o.passwordFile,
+            "file whose first line is the broker password (else DRYTWIN_MQTT_PASSWORD; never on the "
+            "command line)");
+        sub->add_option("--password", o.passwordOnCommandLine)->group(""); // refused with a message
+        sub->add_option("--cafile", o.caFile,
+                        "TLS (mqtts://): CA certificate(s) to check the broker against");
+    };
     auto reg = [&](CLI::App* sub, std::function<int(const CommandOptions&)> handler) {
         sub->allow_extras(false);
         // Also after the subcommand, where a script writes it (`drytwin calibrate -q …` was refused).
@@ -108,8 +126,10 @@ CommandLine::CommandLine() : m_impl(new Impl) {
     inspect->add_option("--json", o.jsonPath, "also write the summary as JSON");
     reg(inspect, runInspect);
 
-    auto* generate = app.add_subcommand("generate", "write virtual-plant batches");
-    generate->add_option("--out", o.outPath, "output folder")->required();
+    auto* generate = app.add_subcommand(
+        "generate",
+        "write virtual-plant batches (--out), or publish them live to an MQTT broker (--publish)");
+    generate->add_option("--out", o.outPath, "output folder");
     generate->add_option("--seed", o.seed, "random seed")->capture_default_str();
     generate->add_option("--batches", o.batches, "number of batches")->capture_default_str();
     generate->add_option("--samples", o.samples, "samples per batch (1 s apart, at least 200)")
@@ -160,7 +180,48 @@ CommandLine::CommandLine() : m_impl(new Impl) {
                      "dropouts (missing cells) per channel and hour")
         ->check(CLI::Range(0.0, 60.0))
         ->capture_default_str();
+    generate->add_option("--publish", o.brokerUrl,
+                         "publish the batches' samples live to this MQTT broker (mqtt://host:port, mqtts:// "
+                         "with TLS) instead of (or, with --out, after) writing them: one message per column "
+                         "and second, {\"t\": <Unix s>, \"v\": <value or null>} (docs/live.md)");
+    generate->add_option("--speed", o.speed, "--publish: N x real time (1 = the line's own pace)")
+        ->capture_default_str();
+    addMqttOptions(generate);
     reg(generate, runGenerate);
+
+    auto* live = app.add_subcommand(
+        "live", "follow a running line on an MQTT broker and record its tags as batch files (docs/live.md)");
+    live->add_option("--broker", o.brokerUrl, "the broker: mqtt://host:port, or mqtts://host:port with TLS")
+        ->required();
+    live->add_option("--record", o.recordFolder,
+                     "write the stream to this folder as batch files, one per batch id (made if missing; "
+                     "existing files are never overwritten)");
+    live->add_option("--duration", o.durationS,
+                     "end after this many seconds of wall clock (default: at Ctrl+C)")
+        ->check(CLI::NonNegativeNumber);
+    live->add_option(
+            "--reorder-window", o.reorderWindowS,
+            "seconds of line time a sample may come after newer ones and still be placed; later ones "
+            "are counted late and not recorded")
+        ->capture_default_str();
+    live->add_option("--split-gap", o.splitGapS,
+                     "a stretch without messages longer than this many seconds starts a new batch file; "
+                     "shorter gaps are rows of missing cells")
+        ->capture_default_str();
+    live->add_option(
+        "--reference", o.referencePath,
+        "a period when the line ran as it should (batch file or folder): the dynamic-PCA monitor "
+        "is fitted on it and judges the line second by second; its windows and its alarm are "
+        "published under the twin's prefix (<prefix>/monitor, <prefix>/alarm)");
+    live->add_option("--false-alarm-rate", o.liveFalseAlarmRate,
+                     "with --reference: the chance of an alarm over one planned run of a healthy line")
+        ->capture_default_str();
+    live->add_option("--planned-run", o.plannedRunS,
+                     "with --reference: the run length [s] the false-alarm rate holds over (default: the "
+                     "reference batches' mean)");
+    live->add_option("--model", o.modelPath, "the twin's model file (not yet in this version)");
+    addMqttOptions(live);
+    reg(live, runLive);
 
     auto* simulate =
         app.add_subcommand("simulate", "run a model over data; write predictions and proxy states");
@@ -391,13 +452,15 @@ ParsedCommandLine CommandLine::parse(int argc, char** argv) {
         for (const auto& [flag, path] :
              {std::pair<const char*, const std::string*>{"--out", &m_impl->options.outPath},
               {"--json", &m_impl->options.jsonPath},
-              {"--diagnostics", &m_impl->options.diagnosticsPath}}) {
+              {"--diagnostics", &m_impl->options.diagnosticsPath},
+              {"--record", &m_impl->options.recordFolder}}) {
             if (path->empty()) {
                 continue;
             }
             // The same for a folder the command makes: wrong usage (2), as for a file, not bad
             // input data (3), which a newcomer got from generate and pipeline.
-            const bool folder = writesFolder && std::string(flag) == "--out";
+            const bool folder =
+                (writesFolder && std::string(flag) == "--out") || std::string(flag) == "--record";
             const std::string why = folder ? unwritableFolderReason(*path) : unwritableReason(*path);
             if (!why.empty()) {
                 std::fprintf(stderr, "drytwin: error: %s %s: %s\n",

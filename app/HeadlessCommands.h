@@ -70,6 +70,21 @@ struct CommandOptions {
                                            const std::string& folder, std::string& error)>
         renderReport;
     std::string commandLine; ///< the exact command, for the report's reproducibility block
+    // The live link (generate --publish, live; issue #73).
+    std::string brokerUrl;   ///< generate --publish, live --broker
+    double speed = 1;        ///< generate --publish: line seconds per wall-clock second
+    std::string topicsPath;  ///< the topic mapping (CONTRACT.md §2)
+    std::string topicPrefix; ///< where unmapped tags are (default drytwin/line1)
+    std::string mqttUser;
+    std::string passwordFile;          ///< the password's only sources: this file or DRYTWIN_MQTT_PASSWORD
+    std::string passwordOnCommandLine; ///< refused with a message, never used
+    std::string caFile;
+    std::string recordFolder;         ///< live --record
+    double durationS = 0;             ///< live --duration (0: until Ctrl+C)
+    double reorderWindowS = 10;       ///< live: line seconds a sample may come late and still be placed
+    double splitGapS = 600;           ///< live: a gap longer than this starts a new batch file
+    double liveFalseAlarmRate = 0.01; ///< live --reference: per planned run
+    double plannedRunS = 0;           ///< live --reference: 0 = the reference batches' mean length
 };
 
 int runInspect(const CommandOptions& o);
@@ -84,5 +99,6 @@ int runPipeline(const CommandOptions& o);
 int runMpc(const CommandOptions& o);
 int runTraining(const CommandOptions& o);
 int runReport(const CommandOptions& o);
+int runLive(const CommandOptions& o);
 
 } // namespace drytwin::app

@@ -7,6 +7,8 @@ pkg_check_modules(IPOPT REQUIRED IMPORTED_TARGET ipopt)
 find_package(nlohmann_json 3.10 REQUIRED)
 find_package(CLI11 REQUIRED)
 pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
+# MQTT client for the live link (engine/live/, issue #73): Mosquitto's C library, libmosquitto-dev.
+pkg_check_modules(MOSQUITTO REQUIRED IMPORTED_TARGET libmosquitto)
 find_package(Boost 1.74 REQUIRED)
 
 # libcsv (Debian libcsv-dev) has neither a CMake config nor a pkg-config file.

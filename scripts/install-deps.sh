@@ -26,6 +26,9 @@ PACKAGES=(
   # well-kept helpers instead of hand-written code:
   #   JSON, CLI parsing, CSV parsing, FFT, statistics (Boost.Math distributions)
   nlohmann-json3-dev libcli11-dev libcsv-dev libfftw3-dev libboost-dev
+  # the live link to a running line (drytwin live, generate --publish; docs/live.md): Mosquitto's
+  # C client library, and the broker and its command-line clients for the live tests and a demo line
+  libmosquitto-dev mosquitto mosquitto-clients
   # tests and benchmarks
   libbenchmark-dev
   # screenshots of the GUI and headless GUI tests; a CJK font for the Chinese interface

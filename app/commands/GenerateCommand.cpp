@@ -1,5 +1,6 @@
 #include "HeadlessCommands.h"
 #include "commands/CommandHelpers.h"
+#include "commands/LiveHelpers.h"
 
 #include "common/AtomicFile.h"
 #include "common/Units.h"
@@ -96,6 +97,13 @@ int runGenerate(const CommandOptions& o) {
             return fail(Error{ErrorKind::Usage, "--onset " + e, "give the mechanism with --effect too"});
         }
     }
+    if (o.outPath.empty() && o.brokerUrl.empty()) {
+        return fail(invalidOption("generate",
+                                  "give --out DIR (batch files) or --publish URL (a live line), or both"));
+    }
+    if (o.outPath.empty()) {
+        return publishPlant(o, go.plant);
+    }
     auto result = workflow::Session().generate(go, o.progress);
     if (!result) {
         return fail(result.error());
@@ -107,7 +115,8 @@ int runGenerate(const CommandOptions& o) {
                 : go.plant.sensors == plant::SensorMode::Ideal ? "ideal"
                                                                : "built-in",
                 o.outPath.c_str(), result->ending.elapsedSeconds);
-    return 0;
+    // Both: the files first, then the same samples on the broker (a recording to compare with).
+    return o.brokerUrl.empty() ? 0 : publishPlant(o, go.plant);
 }
 
 } // namespace drytwin::app

@@ -24,6 +24,13 @@
 #include <string>
 #include <vector>
 
+namespace drytwin::live {
+struct PublishOptions;
+struct PublishResult;
+struct LiveOptions;
+struct LiveResult;
+} // namespace drytwin::live
+
 namespace drytwin::workflow {
 
 /// @brief What to load: a batch file or folder (CONTRACT.md §1), an optional column mapping,
@@ -277,6 +284,14 @@ public:
     /// @brief Runs the virtual plant and writes its batches (and the truth) to files. Leaves
     /// the session's data and model alone.
     Expected<GenerateResult> generate(const GenerateOptions& options, const Progress& progress = {}) const;
+    /// @brief Runs the virtual plant and publishes its batches' samples to an MQTT broker at N x
+    /// real time (`generate --publish`): the samples generate() would write for the same options.
+    /// Leaves the session alone; declared here, defined in live/ (live/LivePublisher.h).
+    Expected<live::PublishResult> publish(const live::PublishOptions& options,
+                                          const Progress& progress = {}) const;
+    /// @brief Follows a running line on an MQTT broker and records its tags as batch files until
+    /// the duration ends or progress says stop (`drytwin live`; live/LiveRecorder.h).
+    Expected<live::LiveResult> live(const live::LiveOptions& options, const Progress& progress = {}) const;
     /// @brief The loaded data set at a glance, with the cleaning counts.
     Expected<data::DataSetSummary> inspect() const;
     /// @brief A guess at the column mapping of the plant file at @p path from the first rows of
