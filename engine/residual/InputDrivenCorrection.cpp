@@ -336,28 +336,43 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
     // now), and what the batch folds cannot see: a correction that holds across the batches seen
     // so far but not on the ones that came after. The stacked rows are in time order already.
     std::vector<char> later(static_cast<std::size_t>(rows), 0);
-    for (Eigen::Index r = rows * 2 / 3; r < rows; ++r) {
+    for (Eigen::Index r = rows - rows / 3; r < rows; ++r) {
         later[static_cast<std::size_t>(r)] = 1;
     }
-    const auto solveEarlier = [&](int o, double penalty) -> Eigen::VectorXd {
-        Eigen::MatrixXd g = Eigen::MatrixXd::Zero(features, features);
-        Eigen::VectorXd r = Eigen::VectorXd::Zero(features);
-        std::vector<Eigen::VectorXd> viewPhi(views.size(), Eigen::VectorXd::Zero(features));
-        std::vector<double> viewY(views.size(), 0.0), viewRows(views.size(), 0.0);
-        for (const auto& sg : segments) {
-            for (Eigen::Index k = sg.begin; k < sg.end; ++k) {
-                if (later[static_cast<std::size_t>(k)] || !inlier[static_cast<std::size_t>(k)]) {
-                    continue;
-                }
-                const Eigen::VectorXd f = phi.row(k).transpose();
-                g.noalias() += f * f.transpose();
-                r += f * y(k, o);
-                viewPhi[sg.view] += f;
-                viewY[sg.view] += y(k, o);
-                viewRows[sg.view] += 1;
+    // The earlier rows' normal equations and per-batch sums, once for both outputs: one product of
+    // the (inlier) earlier rows, not a rank-one update per row.
+    const Eigen::Index earlierRows = options.laterInTime ? rows - rows / 3 : 0;
+    Eigen::MatrixXd earlierGram, earlierRhs;
+    std::vector<Eigen::VectorXd> earlierViewPhi(views.size(), Eigen::VectorXd::Zero(features));
+    std::vector<Eigen::Vector2d> earlierViewY(views.size(), Eigen::Vector2d::Zero());
+    std::vector<double> earlierViewRows(views.size(), 0.0);
+    if (options.laterInTime) {
+        Eigen::MatrixXd p = phi.topRows(earlierRows);
+        Eigen::MatrixXd t = y.topRows(earlierRows);
+        for (Eigen::Index k = 0; k < earlierRows; ++k) {
+            if (!inlier[static_cast<std::size_t>(k)]) {
+                p.row(k).setZero();
+                t.row(k).setZero();
             }
         }
-        return solveFrom(std::move(g), std::move(r), viewPhi, viewY, viewRows, penalty);
+        earlierGram = p.transpose() * p;
+        earlierRhs = p.transpose() * t;
+        for (const auto& sg : segments) {
+            for (Eigen::Index k = sg.begin; k < std::min(sg.end, earlierRows); ++k) {
+                if (inlier[static_cast<std::size_t>(k)]) {
+                    earlierViewPhi[sg.view] += phi.row(k).transpose();
+                    earlierViewY[sg.view] += y.row(k).transpose();
+                    earlierViewRows[sg.view] += 1;
+                }
+            }
+        }
+    }
+    const auto solveEarlier = [&](int o, double penalty) -> Eigen::VectorXd {
+        std::vector<double> viewY(views.size(), 0.0);
+        for (std::size_t i = 0; i < views.size(); ++i) {
+            viewY[i] = earlierViewY[i](o);
+        }
+        return solveFrom(earlierGram, earlierRhs.col(o), earlierViewPhi, viewY, earlierViewRows, penalty);
     };
     // Cross-validated absolute error per penalty and output, judged on every row of the held-out
     // fold (spikes included: that is what a user's data holds).
