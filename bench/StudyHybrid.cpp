@@ -241,7 +241,12 @@ std::vector<DataSetSpec> neverWorseSets() {
         K plant;
         bool demo, drift;
     };
-    const Mix mixes[] = {{"d", K::Distributed, true, false, },
+    const Mix mixes[] = {{
+                             "d",
+                             K::Distributed,
+                             true,
+                             false,
+                         },
                          {"d", K::Distributed, false, false},
                          {"d", K::Distributed, false, true},
                          {"l", K::Lumped, true, false},
@@ -291,7 +296,8 @@ int partNeverWorse(bool quick) {
         workflow::TrainOptions train;
         train.lstm.epochs = lstmEpochsForStudy;
         train.residual.inputDrivenOptions.supportGuard = guards.find("support") != std::string::npos;
-        train.residual.inputDrivenOptions.agreementAcrossFolds = guards.find("agreement") != std::string::npos;
+        train.residual.inputDrivenOptions.agreementAcrossFolds =
+            guards.find("agreement") != std::string::npos;
         train.residual.inputDrivenOptions.rangeGuard = guards.find("range") != std::string::npos;
         train.residual.inputDrivenOptions.withinBatch = guards.find("within") != std::string::npos;
         train.residual.inputDrivenOptions.everyFoldNoWorse = guards.find("every-fold") != std::string::npos;
@@ -709,8 +715,8 @@ int partWhy(const std::string& dataPath, const std::string& modelPath) {
         const char* name;
         const residual::ResidualModel* model;
     };
-    const std::vector<Column> columns{{"pbm", nullptr}, {"pgrl_cc", model.pgrlCc.get()},
-                                      {"ext_input", model.extInput.get()}};
+    const std::vector<Column> columns{
+        {"pbm", nullptr}, {"pgrl_cc", model.pgrlCc.get()}, {"ext_input", model.extInput.get()}};
     std::vector<std::size_t> rowsPerBatch;
     for (const auto& b : batches) {
         rowsPerBatch.push_back(b.rows());
@@ -729,7 +735,8 @@ int partWhy(const std::string& dataPath, const std::string& modelPath) {
         residual::BatchView whole{&batch, &(*pbm)[b], {0, n}};
         std::vector<residual::HybridPrediction> predictions;
         for (const auto& c : columns) {
-            predictions.push_back(c.model ? c.model->predictFreeRun(whole) : evaluation::pbmPrediction(whole));
+            predictions.push_back(c.model ? c.model->predictFreeRun(whole)
+                                          : evaluation::pbmPrediction(whole));
         }
         std::vector<double> cx, ct, support;
         if (model.pgrlCc && model.pgrlCc->inputDriven()) {
@@ -801,9 +808,8 @@ int main(int argc, char** argv) {
         } else if (!std::strcmp(argv[i], "--work") && i + 1 < argc) {
             workDir = argv[++i];
         } else {
-            std::fprintf(
-                stderr,
-                "usage: study_hybrid [--part unseen|free-run|never-worse|why|diagnose] [--quick] [--only SEEDS] [--seed-base N] [--guards LIST] [--work DIR]\n");
+            std::fprintf(stderr, "usage: study_hybrid [--part unseen|free-run|never-worse|why|diagnose] "
+                                 "[--quick] [--only SEEDS] [--seed-base N] [--guards LIST] [--work DIR]\n");
             return 2;
         }
     }

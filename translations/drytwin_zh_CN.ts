@@ -72,47 +72,47 @@
 <context>
     <name>DiscoverPanel</name>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="372"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="119"/>
         <source>compensation</source>
         <translation>相互补偿</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="373"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="120"/>
         <source>inconsistent</source>
         <translation>各批次不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="374"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="121"/>
         <source>not constant</source>
         <translation>批次内不恒定</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="375"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="122"/>
         <source>within normal range</source>
         <translation>在正常范围内</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="376"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="123"/>
         <source>not on every output</source>
         <translation>并非每个输出都改善</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="377"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="124"/>
         <source>below the floor</source>
         <translation>低于实用下限</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="378"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="125"/>
         <source>no held-out gain</source>
         <translation>留出集无增益</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="379"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="126"/>
         <source>its look-alike</source>
         <translation>是其相似原因</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="380"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="127"/>
         <source>line dynamics</source>
         <translation>产线自身动态</translation>
     </message>
@@ -1293,12 +1293,12 @@
         <translation>基于 LSTM 的 MPC</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="66"/>
+        <location filename="../widgets/training/TrainingPanelInternal.h" line="32"/>
         <source>MPC on: %1</source>
         <translation>MPC，基于：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="114"/>
+        <location filename="../widgets/training/TrainingPanelInternal.h" line="80"/>
         <source>It was saved with another model (fingerprint %1, this one %2): its MPC controllers (%3) run on this one, so the recording may differ from the saved one. Open the project or model file it was run with to replay it exactly.</source>
         <translation>该会话是用另一个模型保存的（指纹 %1，当前模型 %2）：其 MPC 控制器（%3）现在运行在当前模型上，因此记录可能与保存的不同。要精确重放，请打开当时使用的项目或模型文件。</translation>
     </message>
@@ -1350,26 +1350,28 @@
 <context>
     <name>TrainingRunner</name>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="36"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="41"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="38"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="43"/>
         <source>Start</source>
         <translation>开始</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="50"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="57"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="52"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="59"/>
         <source>Open session</source>
         <translation>打开会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="69"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="101"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="71"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="103"/>
         <source>Start a session first.</source>
         <translation>请先开始一个会话。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="100"/>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="109"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="102"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="111"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="126"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="218"/>
         <source>Save session</source>
         <translation>保存会话</translation>
     </message>
@@ -2043,33 +2045,33 @@ error</source>
 <context>
     <name>drytwin::widgets::DiscoverPanel</name>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="35"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="38"/>
         <source>Discover</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="36"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="39"/>
         <source>What does the simulation get wrong, and why? (score tests, fits, held-out gain)</source>
         <translation>仿真哪里出错，为什么？（得分检验、拟合、留出数据上的改进）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="37"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="127"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="40"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="130"/>
         <source>Extend the model</source>
         <translation>扩展模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="40"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="43"/>
         <source>Make the extended model (named causes, refitted h_HDT and k_HDT, residual models retrained) the session&apos;s model</source>
         <translation>将扩展后的模型（已命名的原因、重新拟合的 h_HDT 与 k_HDT、重新训练的残差模型）设为当前模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="42"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="45"/>
         <source>Run discovery on the loaded data with the current model.</source>
         <translation>用当前模型在已加载的数据上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="44"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="47"/>
         <location filename="../widgets/discovery/RankingWords.cpp" line="16"/>
         <source>Cause</source>
         <translation>原因</translation>
@@ -2083,13 +2085,13 @@ error</source>
         <translation>p（Holm）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="44"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="47"/>
         <location filename="../widgets/discovery/RankingWords.cpp" line="23"/>
         <source>Fitted</source>
         <translation>已拟合</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="44"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="47"/>
         <location filename="../widgets/discovery/RankingWords.cpp" line="24"/>
         <source>Loss</source>
         <translation>损失</translation>
@@ -2145,12 +2147,12 @@ is noise</source>
         <translation>留出部分：拟合时未使用的批次。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="46"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
         <source>Held-out</source>
         <translation>留出数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="44"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="47"/>
         <location filename="../widgets/discovery/RankingWords.cpp" line="17"/>
         <source>Outcome</source>
         <translation>结果</translation>
@@ -2161,17 +2163,17 @@ is noise</source>
         <translation>结果：已指认，或未指认的理由（完整理由见单元格提示及证据下方）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="46"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
         <source>Before</source>
         <translation>之前</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="46"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
         <source>After</source>
         <translation>之后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="46"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="49"/>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
@@ -2180,33 +2182,33 @@ is noise</source>
         <translation>之前：起始模型（调试所得或标定后的模型）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="56"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="59"/>
         <source>After: the extended model, every named cause fitted together (a finding&apos;s own sentence gives the gain when that cause was named).</source>
         <translation>之后：扩展后的模型，所有已识别原因一起拟合（各项发现的文字给出识别该原因时的改进）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="60"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="63"/>
         <source>X_out residual [% wb]</source>
         <translation>X_out 残差 [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="61"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="64"/>
         <source>T_out residual [°C]</source>
         <translation>T_out 残差 [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="62"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="78"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="65"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="81"/>
         <source>time, batches one after another [h]</source>
         <translation>时间，批次首尾相接 [h]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="65"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="68"/>
         <source>Compare with a reference period…</source>
         <translation>与参考期比较…</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="67"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="70"/>
         <source>Choose batches from a time when the line ran as it should (the weeks after a cleaning, commissioning runs): Discover then says whether, from when and why the loaded data differ</source>
         <translation>选择产线正常运行时期的批次（清洗后的几周、调试运行）：发现功能将说明已加载的数据是否、从何时起以及为何与之不同</translation>
     </message>
@@ -2256,59 +2258,59 @@ is noise</source>
         <translation>不用参考期：单独判断数据</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="76"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="79"/>
         <source>T² [-]</source>
         <translation>T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="77"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="80"/>
         <source>SPE [-]</source>
         <translation>SPE [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="81"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="84"/>
         <source>Choose a reference period and run Discover to see the monitor</source>
         <translation>选择参考期并运行“发现”以查看监控图</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="83"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="86"/>
         <source>Column</source>
         <translation>列</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="83"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="86"/>
         <source>Share of the change</source>
         <translation>在变化中的占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="83"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="86"/>
         <source>Detector</source>
         <translation>检测器</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="85"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="88"/>
         <source>How much each column contributes to the monitor&apos;s statistic after the onset (reconstruction-based contributions: the column that, put back to normal, removes most of it)</source>
         <translation>起始点之后各列对监控统计量的贡献（基于重构的贡献：将该列恢复正常后消除的部分最多者）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="92"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="95"/>
         <source>Model error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="93"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="96"/>
         <source>Monitor against the reference</source>
         <translation>相对参考期的监控</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="106"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="109"/>
         <source>Candidate causes, first round:</source>
         <translation>候选原因（第一轮）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="108"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="839"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1049"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="111"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="161"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="371"/>
         <source>Gain on the held-out part:</source>
         <translation>留出数据上的改进：</translation>
     </message>
@@ -2317,42 +2319,42 @@ is noise</source>
         <translation>模型已由发现功能扩展</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="880"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="202"/>
         <source> The model is extended.</source>
         <translation> 模型已扩展。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="142"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="145"/>
         <source>Run Discover to see the physics model&apos;s error over the batches</source>
         <translation>运行发现，可看到物理模型在各批次上的误差</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="149"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="37"/>
         <source>No reference period: the data are judged alone.</source>
         <translation>无参考期：单独判断数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="150"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="38"/>
         <source>Reference period: %1</source>
         <translation>参考期：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="166"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="54"/>
         <source>%1: &lt;b&gt;changed&lt;/b&gt; (p = %2)</source>
         <translation>%1：&lt;b&gt;已变化&lt;/b&gt;（p = %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="167"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="55"/>
         <source>%1: no change (p = %2)</source>
         <translation>%1：无变化（p = %2）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="169"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="57"/>
         <source>, first alarm in %1 at %2 min</source>
         <translation>，首次报警于 %1 第 %2 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="174"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="62"/>
         <source>, from %1 at %2 min (95 %: %3 to %4 min)</source>
         <translation>，自 %1 第 %2 分钟起（95 %：%3 至 %4 分钟）</translation>
     </message>
@@ -2365,50 +2367,50 @@ is noise</source>
         <translation>DryTwin（各原因的参数）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="222"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="110"/>
         <source>&lt;b&gt;The line has changed since the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;自参考期以来产线已发生变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="229"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="117"/>
         <source>&lt;b&gt;No change against the reference period.&lt;/b&gt;</source>
         <translation>&lt;b&gt;与参考期相比无变化。&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="230"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="118"/>
         <source> Each detector&apos;s false-alarm rate: %1 % per data set.</source>
         <translation> 每个检测器的误报率：每个数据集 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="231"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="119"/>
         <source>DryTwin (the model&apos;s error)</source>
         <translation>DryTwin（模型误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="233"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="121"/>
         <source>Dynamic PCA (the measured columns)</source>
         <translation>动态 PCA（测量列）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="258"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="274"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="146"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="162"/>
         <source>DryTwin</source>
         <translation>DryTwin</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="258"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="274"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="146"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="162"/>
         <source>dynamic PCA</source>
         <translation>动态 PCA</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="260"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="262"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="148"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="150"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="304"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="51"/>
         <source>the outlet-temperature error grows with the hot-air excess over ambient (bias by T_amb and T_hot)</source>
         <translation>出口温度误差随热风高出环境温度的幅度增大（按 T_amb 和 T_hot 分组的偏差）</translation>
     </message>
@@ -2421,67 +2423,67 @@ is noise</source>
         <translation>误差在每个批次内漂移，并在每个批次开始时复位</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="314"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="61"/>
         <source>the outlet-moisture error follows the rate of change of the simulated outlet moisture, and the tube-outlet error does not</source>
         <translation>出口水分误差跟随模拟出口水分的变化率，而管道出口误差不跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="318"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="65"/>
         <source>a steady outlet-moisture bias that the tube-outlet moisture does not share</source>
         <translation>出口水分存在稳定偏差，而管道出口水分没有</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="321"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="68"/>
         <source>the outlet error correlates with tube-outlet changes at a shifted lag</source>
         <translation>出口误差与管道出口的变化在偏移的滞后处相关</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="323"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="70"/>
         <source>the tube-outlet and outlet moisture are wetter than simulated, most where the tube dries furthest</source>
         <translation>管道出口和出口水分比模拟值更湿，在管道干燥程度最深处最明显</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="327"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="74"/>
         <source>the outlet-moisture error grows with ambient humidity while the tube-outlet error does not</source>
         <translation>出口水分误差随环境湿度增大，而管道出口误差不随之变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="331"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="78"/>
         <source>a steady bias of the tube-outlet and outlet moisture alike, larger where the tube dries less</source>
         <translation>干燥管出口与出口水分有相同的稳定偏差，干燥管干燥越少处越大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="334"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="81"/>
         <source>after each hot-air setpoint step the outlet temperature and moisture move before the simulation, which follows the slow reading</source>
         <translation>每次热风设定值阶跃后，出口温度和水分先于仿真变化，仿真跟随的是迟缓的读数</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="337"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="84"/>
         <source>the inlet-moisture reading scatters from second to second while the outlet does not follow it, and the simulated outlet does</source>
         <translation>入口水分读数逐秒跳动，出口并不跟随，而仿真的出口却跟随</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="347"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="94"/>
         <source>a step of the hot-air setpoint logged at 1 s: a transport-time error delays the outlet temperature&apos;s response as much as the moisture&apos;s, a meter lag delays the moisture reading alone; or grab samples timed against the meter</source>
         <translation>以 1 s 记录一次热风设定值阶跃：输送时间误差使出口温度与水分的响应同样延迟，水分仪滞后只延迟水分读数；或对照水分仪定时取样</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="354"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="101"/>
         <source>oven-dry laboratory samples at the outlet against the meter and at the inlet against the gauge; or a tube-outlet moisture channel (X_hdt), which an inlet-gauge offset moves and an outlet-meter offset does not</source>
         <translation>在出口对照水分仪、在入口对照入口水分计做烘箱法实验室取样；或增加干燥管出口水分通道（X_hdt）：入口水分计偏差会使其变化，出口水分仪偏差不会</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="361"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="108"/>
         <source>a gas-temperature reading at the tube&apos;s outlet end at two feed rates: wall loss does not change with the feed, gas-phase cooling grows with it</source>
         <translation>在两种喂料量下测量干燥管出口端的气体温度：管壁散热不随喂料量变化，气相冷却随之增大</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="388"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="135"/>
         <source>it lowers one output&apos;s error by raising another&apos;s (compensation)</source>
         <translation>它以增大另一输出的误差为代价降低一个输出的误差（补偿）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="391"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="138"/>
         <source>its size is not consistent across batches or operating regions</source>
         <translation>其大小在各批次或各工况区间之间不一致</translation>
     </message>
@@ -2490,67 +2492,67 @@ is noise</source>
         <translation type="vanished">偏差在整个批次中读数不变；此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="399"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="146"/>
         <source>its value lies within the reference period&apos;s normal range: not a change</source>
         <translation>其值在参考期的正常范围内：不是变化</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="402"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="149"/>
         <source>named after another cause, it must lower the error of every output it acts on, and on one it does not: what is left there is not this cause&apos;s</source>
         <translation>它是在另一个原因之后提出的，必须降低它所作用的每个输出的误差，而在其中一个输出上没有做到：那里剩下的误差不是这个原因造成的</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="406"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="154"/>
         <source>it is below what the instruments can tell (practical floor)</source>
         <translation>它低于仪表能分辨的程度（实用下限）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="409"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="157"/>
         <source>it does not predict the held-out part clearly better (too small a share of the error, or not significant)</source>
         <translation>它对留出部分的预测没有明显改善（消除的误差比例太小，或不显著）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="413"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="161"/>
         <source>the outlet channels&apos; timing points to its look-alike (the moisture answers later than the temperature: a meter, not the transport)</source>
         <translation>出口两个通道的时序指向它的相似原因（水分比温度响应更晚：是水分仪，而非输送）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="418"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="166"/>
         <source>the outlet temperature lags the model as much: the line is slower than the model, not the meter</source>
         <translation>出口温度同样滞后于模型：是产线比模型慢，而不是水分仪</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="421"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="169"/>
         <source>no clear held-out gain</source>
         <translation>在留出数据上没有明确的改进</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="486"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="236"/>
         <source>X_hdt_pct is not measured: without the tube-outlet moisture, meter and conveyor causes cannot be told from tube causes; only the outlet channels are used.</source>
         <translation>未测量 X_hdt_pct：没有管出口含水率，无法区分仪表和输送原因与干燥管原因；只使用出口通道。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="490"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="240"/>
         <source>T_hdt_C is not measured: the tube-outlet temperature is not used.</source>
         <translation>未测量 T_hdt_C：不使用管出口温度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="493"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="243"/>
         <source>air_speed_m_s is constant (not measured?): the air cooling along the tube is fitted with that one value.</source>
         <translation>air_speed_m_s 为常数（未测量？）：沿管风冷却按这一个值拟合。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="497"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="247"/>
         <source>The line&apos;s outlet mixing (belt and winnower): a first-order lag of %1 s fitted with h_HDT and k_HDT (0: plug flow).</source>
         <translation>产线出口混合（输送带和风选机）：与 h_HDT、k_HDT 一起拟合的一阶滞后 %1 s（0：活塞流）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="502"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="252"/>
         <source>The inlet gauge&apos;s normal scatter: %1 % of X_in&apos;s fast variation (%2 % wb) is taken as gauge scatter, not moisture, in the starting model.</source>
         <translation>入口水分仪的正常波动：在初始模型中，X_in 快速变化（%2 % 湿基）的 %1 % 被视为仪表波动而非真实水分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="427"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="175"/>
         <source>a periodic error of %1 s period (power %2 times its background)</source>
         <translation>周期为 %1 s 的周期性误差（功率为背景的 %2 倍）</translation>
     </message>
@@ -2559,92 +2561,92 @@ is noise</source>
         <translation type="vanished">误差在 %1 之后 %2 s 跟随变化（|ccf| %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="442"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="190"/>
         <source>batches %1 are shifted by %2 against the others</source>
         <translation>批次 %1 相对其他批次偏移 %2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="447"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="195"/>
         <source>the error drifts by %1 per hour within the batches</source>
         <translation>误差在批次内每小时漂移 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="459"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="207"/>
         <source>no candidate passes the screening test</source>
         <translation>没有候选原因通过筛选检验</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="466"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="214"/>
         <source>no fitted candidate lowers the training loss</source>
         <translation>没有拟合的候选原因降低训练损失</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="564"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="314"/>
         <source>%1 is typically %2 %3, outside what the other reference batches saw (%4 to %5 %3)</source>
         <translation>%1 通常为 %2 %3，超出其他参考批次所见范围（%4 至 %5 %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="566"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="316"/>
         <source>%1 is typically %2 %3, outside what the reference saw (%4 to %5 %3)</source>
         <translation>%1通常为 %2 %3，超出参考期见过的范围（%4 至 %5 %3）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="569"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="319"/>
         <source>; </source>
         <translation>；</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="577"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="327"/>
         <source>Reference batch %1: %2: the line&apos;s structure there is the map&apos;s extrapolation, so the batch is left out of the causes&apos; normal spread.</source>
         <translation>参考批次 %1：%2：该批次上产线结构的修正是映射的外推，因此该批次不计入各原因的正常离散度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="591"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="341"/>
         <source>%1: %2: the reference has no normal level for these conditions, so the detectors judge only changes within this batch, not its level.</source>
         <translation>%1：%2：参考期没有这种工况下的正常水平，因此两个检测器只判断该批次内部的变化，不判断其水平。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="593"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="343"/>
         <source>%1: %2: the model&apos;s error there is judged beyond the reference&apos;s conditions, and an alarm there may be that condition rather than a change of the line.</source>
         <translation>%1：%2：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="665"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="415"/>
         <source>Fitted part by part (%1 parts) it lies between %2 and %3 %4: %5.</source>
         <translation>逐段拟合（%1 段）时其值在 %2 与 %3 %4 之间：%5。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="670"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="420"/>
         <source>consistent</source>
         <translation>一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="670"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="420"/>
         <source>not consistent</source>
         <translation>不一致</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="676"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="426"/>
         <source>Fitted on the cooler half of the data it removes %1 % of the warmer half&apos;s error.</source>
         <translation>用较冷的一半数据拟合，它消除较热一半数据误差的 %1 %。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="680"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="430"/>
         <source>It starts %1 min into the batch (95 % interval %2–%3 min).</source>
         <translation>它在批次开始后 %1 min 出现（95 % 区间 %2–%3 min）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="705"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="455"/>
         <source>Not %1: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); a transport time delays both alike.</source>
         <translation>不是 %1：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；输送时间会使二者同样延迟。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="711"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="461"/>
         <source>%1 fits too: the moisture answers %2 s later than the model and the outlet temperature %3 s (each fitted alone, p = %4); the channels&apos; timing cannot tell them apart (the temperature has dynamics of its own, or the difference is within the noise).</source>
         <translation>%1 也同样吻合：水分比模型晚 %2 s 响应，出口温度晚 %3 s（各自单独拟合，p = %4）；两个通道的时序无法区分二者（温度有其自身的动态，或差异在噪声范围内）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="694"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="444"/>
         <source>%1 was named on top of it (a further %2 % of the held-out error): alone it predicts worse (%3 times the held-out error), but the change needs both forms, so the data cannot say which of them it is.</source>
         <translation>在它之上又判定了 %1（再减少留出误差的 %2 %）：单独使用时预测更差（留出误差的 %3 倍），但这一变化需要两种形式共同解释，因此数据无法判断是其中哪一个。</translation>
     </message>
@@ -2657,42 +2659,42 @@ is noise</source>
         <translation>DryTwin（各原因的一步估计）：均未超出其正常范围（p = %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="224"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="112"/>
         <source>&lt;b&gt;A cause has changed since the reference period: %1.&lt;/b&gt; The detectors, judging the data set as a whole, stayed below their limits; fitting the causes found it beyond its normal spread with a gain on held-out data (below). Check it on the plots.</source>
         <translation>&lt;b&gt;自参考期以来有一个原因发生了变化：%1。&lt;/b&gt;检测器对整个数据集的判断未超出其限值；拟合各原因发现它超出正常范围，且在留出数据上有改进（见下）。请在图上核对。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="310"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="57"/>
         <source>the error drifts over each batch, or over the recording from the fouling&apos;s onset, and starts afresh with each new batch</source>
         <translation>误差在每个批次内（或在记录中自结垢开始起）逐渐漂移，每个新批次重新开始</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="382"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="129"/>
         <source>not named</source>
         <translation>未指认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="511"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="261"/>
         <source>%1 was named first, then withdrawn: refitted together with the causes named after it, it is no change of the line (it had taken up what they explain). In detail: %2.</source>
         <translation>%1 先被识别，随后撤回：与之后识别的原因一起重新拟合后，它并非产线的变化（它曾吸收了那些原因所解释的部分）。详情：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="521"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="271"/>
         <source>The causes are judged on the batches from %1 on, where the change began; %2 before it ran as the reference did.</source>
         <translation>原因按从 %1 起的批次判断，变化从那里开始；此前的 %2 与参考期运行一致。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="530"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="280"/>
         <source>The change goes on from the start of %1 (the monitor reads them changed before the onset time too): the causes act there from the batch&apos;s start.</source>
         <translation>变化从 %1 的开始起持续（监测器在起始时间之前也判定这些批次已变化）：原因在这些批次中从批次开始起作用。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="535"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="285"/>
         <source>The reference holds %1 batch(es): a period&apos;s normal spread comes from thirds of them, which share their day and weather; a change named here may be a difference of conditions the reference never showed. A reference of several batches over the conditions the line runs in (weeks, seasons) judges better.</source>
         <translation>参考期仅含 %1 个批次：一个时段的正常离散取自其三等分，它们同属一天、同样天气；此处识别出的变化可能只是参考期从未出现过的工况差异。覆盖产线运行工况（数周、不同季节）的多批次参考期判断得更好。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="547"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="297"/>
         <source>The reference period itself drifts: the model&apos;s %1 error changes by %2 %3 within a mean batch. A reference should be a period when the line ran well; against this one a change since may read as none.</source>
         <translation>参考期本身在漂移：模型的 %1 误差在一个平均批次内变化 %2 %3。参考期应是产线运行良好的时段；以此为参考，之后的变化可能显示为无变化。</translation>
     </message>
@@ -2701,82 +2703,82 @@ is noise</source>
         <translation type="vanished">参考批次 %1：%2 通常为 %3 %4，超出其他参考批次所见范围（%5 至 %6 %4）：该批次上产线结构的修正是映射的外推，因此该批次不计入各原因的正常离散度。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="604"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="354"/>
         <source>Only the causes asked were tried: %1. That the others are not named says nothing about them.</source>
         <translation>只试了所问的原因：%1。其他原因未被指认，并不说明它们不存在。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="614"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="364"/>
         <source>Commissioned on the reference period (%1 batch(es), %2 rows): h_HDT %3 W/(m²·K) and k_HDT %4 m/s, held fixed on the data judged.</source>
         <translation>已在参考期上调试（%1 个批次，%2 行）：h_HDT %3 W/(m²·K)，k_HDT %4 m/s，在所判断的数据上保持不变。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="622"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="372"/>
         <source>The line&apos;s own structure (what the model always gets wrong: a ridge regression on the inputs and the model&apos;s outputs, penalty %1) was learnt on the reference and taken off the measurements; the residuals shown are what is left.</source>
         <translation>产线自身的结构（模型总是出错的部分：基于输入和模型输出的岭回归，惩罚系数 %1）已在参考期上学习，并从测量值中扣除；所示残差为剩余部分。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="634"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="384"/>
         <source>%1 is measured in the data but not in every batch of the reference period: the periods are compared on the outputs both measure, without it.</source>
         <translation>%1 在数据中有测量，但参考期并非每个批次都有：两个时期只在双方都测量的输出上比较，不含它。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="637"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="387"/>
         <source>%1 is measured in the reference period but not in every batch of the data: the periods are compared on the outputs both measure, without it.</source>
         <translation>%1 在参考期中有测量，但数据并非每个批次都有：两个时期只在双方都测量的输出上比较，不含它。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="644"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="394"/>
         <source>The reference period&apos;s files: %1</source>
         <translation>参考期的文件：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="672"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="422"/>
         <source>A part whose estimate left the parameter&apos;s range is held at its bound.</source>
         <translation>某一部分的估计值超出了参数范围，已按其边界处理。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="689"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="439"/>
         <source>It goes on from the start of %1.</source>
         <translation>它从 %1 的开始起持续存在。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="724"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="474"/>
         <source>%1 fits too: overall it leaves %2 times the held-out error (p = %3), but it predicts %4 better; which output a cause favours is the model&apos;s structure, so the data cannot tell them apart.</source>
         <translation>%1 同样拟合：总体上它留下 %2 倍的留出误差（p = %3），但它对%4的预测更好；原因偏向哪个输出取决于模型自身的结构，因此数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="730"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="480"/>
         <source>the outlet moisture</source>
         <translation>出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="731"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="481"/>
         <source>the outlet temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="732"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="482"/>
         <source>the tube-outlet moisture</source>
         <translation>管出口含水率</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="733"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="483"/>
         <source>the tube-outlet temperature</source>
         <translation>管出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="737"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="487"/>
         <source>Not %1: fitted in its place it leaves %2 times the held-out error (p = %3).</source>
         <translation>不是 %1：以它代替拟合后留出误差为 %2 倍（p = %3）。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="738"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="488"/>
         <source>%1 fits these data about as well (held-out error %2 times, p = %3): the data cannot tell them apart.</source>
         <translation>%1 对这些数据拟合得差不多好（留出误差 %2 倍，p = %3）：数据无法区分二者。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="745"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="495"/>
         <source>To tell them apart: %1.</source>
         <translation>区分方法：%1。</translation>
     </message>
@@ -2789,12 +2791,12 @@ is noise</source>
         <translation type="vanished">它消除了留出数据平方误差的 %1 %，以及出口水分和温度误差的 %2 %（二者是它唯一作用的测量输出）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="767"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="517"/>
         <source>it removes %1 % of the held-out squared error and %2 % of its fast part (the error about its moving average, where slow drift does not hide it)</source>
         <translation>它消除了留出数据平方误差的 %1 %，以及其快速部分（误差相对其滑动平均的部分，慢漂移不会掩盖它）的 %2 %</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="771"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="521"/>
         <source>it removes %1 % of the held-out squared error</source>
         <translation>它消除了留出数据平方误差的 %1 %</translation>
     </message>
@@ -2803,32 +2805,32 @@ is noise</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]）并重新拟合 h_HDT、k_HDT 后，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="788"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="538"/>
         <source>Outlet-moisture</source>
         <translation>出口水分</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="788"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="538"/>
         <source>Outlet-temperature</source>
         <translation>出口温度</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="817"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="567"/>
         <source> %1 moved against this cause&apos;s effect (%2 times what its model form says), by less than that output&apos;s noise can tell from none: it counts neither for the cause nor against it.</source>
         <translation> %1 的变化与该原因的作用方向相反（为其模型形式所预测的 %2 倍），但小于该输出的噪声所能分辨的程度：既不支持也不否定该原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="834"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="156"/>
         <source>Run discovery on %1 with the current model.</source>
         <translation>用当前模型在 %1 上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="835"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="157"/>
         <source>Open a data set, then run discovery on it.</source>
         <translation>请先打开数据集，再在其上运行发现。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="853"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="175"/>
         <source> or </source>
         <translation> 或 </translation>
     </message>
@@ -2845,12 +2847,12 @@ is noise</source>
         <translation>结论：%1。已命名：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="924"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="246"/>
         <source>yes</source>
         <translation>是</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="924"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="246"/>
         <source>no</source>
         <translation>否</translation>
     </message>
@@ -2859,12 +2861,12 @@ is noise</source>
         <translation type="vanished">%1，滞后 %2 s（互相关 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="975"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="297"/>
         <source>, significant</source>
         <translation>，显著</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="978"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="300"/>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; error moves with: %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt; 误差随以下变量变化：%2&lt;/p&gt;</translation>
     </message>
@@ -2873,63 +2875,63 @@ is noise</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（保留集 p = %3；消除误差的 %4 %，其快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="456"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="893"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="215"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="204"/>
         <source>named</source>
         <translation>已确认</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="48"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="51"/>
         <source>The held-out part: the last 30 % of the rows, batches in time order (the Residual model tab&apos;s split); every fit saw only the rows before it.</source>
         <translation>留出部分：按时间顺序排列批次后最后 30 % 的行（与“残差模型”标签页的划分相同）；每次拟合只看到它之前的行。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="52"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="55"/>
         <source>Before: discovery&apos;s starting model, with h_HDT, k_HDT and the inlet gauge&apos;s scatter fitted to these data&apos;s training rows (or as commissioned on the reference period). It can differ from the Calibrate tab&apos;s model, and so from the physics model&apos;s error on the Residual model tab.</source>
         <translation>之前：发现功能的起始模型，其 h_HDT、k_HDT 和入口测量仪散布按这些数据的训练行拟合（或按参考期调试所得）。它可能与“标定”标签页的模型不同，因此也可能与“残差模型”标签页上物理模型的误差不同。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="191"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="79"/>
         <source>DryTwin (the causes&apos; estimates): none moved beyond its normal spread (p %1)</source>
         <translation>DryTwin（各原因的估计）：均未超出其正常范围（p %1）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="193"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="81"/>
         <source>DryTwin (the causes&apos; one-step estimates): &lt;b&gt;changed&lt;/b&gt; (p %1): %2 moved beyond its normal spread</source>
         <translation>DryTwin（各原因的一步估计）：&lt;b&gt;已变化&lt;/b&gt;（p %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="197"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="85"/>
         <source>DryTwin (the inlet gauge&apos;s own scatter): &lt;b&gt;changed&lt;/b&gt; (p %1): %2 rose beyond the reference&apos;s</source>
         <translation>DryTwin（进口水分仪自身的散布）：&lt;b&gt;已变化&lt;/b&gt;（p %1）：%2 高于参考期</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="200"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="88"/>
         <source>DryTwin (a named cause&apos;s fitted value): &lt;b&gt;changed&lt;/b&gt; (p %1): %2 moved beyond its normal spread</source>
         <translation>DryTwin（已命名原因的拟合值）：&lt;b&gt;已变化&lt;/b&gt;（p %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="758"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="508"/>
         <source>it removes %1 % of the held-out squared error, and of the outlet moisture&apos;s, the only measured output it acts on, %2 % (%3 % of its fast part)</source>
         <translation>它消除了留出数据平方误差的 %1 %；在出口水分（它唯一作用的测量输出）上消除 %2 %（快速部分的 %3 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="761"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="511"/>
         <source>it removes %1 % of the held-out squared error, and of the outlet moisture&apos;s and temperature&apos;s, the only measured outputs it acts on, %2 % (%3 % of its fast part)</source>
         <translation>它消除了留出数据平方误差的 %1 %；在出口水分和温度（它唯一作用的测量输出）上消除 %2 %（快速部分的 %3 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="772"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="522"/>
         <source>h_HDT, k_HDT as commissioned on the reference period</source>
         <translation>h_HDT、k_HDT 取参考期调试所得值</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="773"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="523"/>
         <source>h_HDT, k_HDT refitted</source>
         <translation>并重新拟合 h_HDT、k_HDT 后</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="777"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="527"/>
         <source> On the reference period it was %1 %2 (a period&apos;s normal range %3 to %4): it changed.</source>
         <translation> 在参考期它为 %1 %2（一个时段的正常范围 %3 至 %4）：它发生了变化。</translation>
     </message>
@@ -2938,19 +2940,19 @@ is noise</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="856"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="178"/>
         <source>%1, one of: %2</source>
         <translation>%1，可能是：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="877"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="199"/>
         <source>%1. On %2.</source>
         <translation>%1。数据：%2。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="219"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="606"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="878"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="200"/>
+        <location filename="../widgets/discovery/DiscoverPanelDetection.cpp" line="107"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="356"/>
         <source>, </source>
         <translation>、</translation>
     </message>
@@ -2959,69 +2961,69 @@ is noise</source>
         <translation type="vanished">扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="881"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="203"/>
         <source>Discovery&apos;s verdict key: %1</source>
         <translation>发现结论代码：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="894"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="216"/>
         <source>Named on its fit: it lowers the held-out error (p = %1) and passes the checks that it is this cause; the screen&apos;s p only ranks the candidates for fitting.</source>
         <translation>按其拟合指认：它降低了留出部分的误差（p = %1），并通过了确认是此原因的各项检查；筛选的 p 只用于为拟合排列候选。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="909"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="231"/>
         <source>fitted, not the best</source>
         <translation>已拟合，非最佳</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="910"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="232"/>
         <source>Fitted in a round in which another cause explained more of the error; the causes named after it were fitted on the model extended by it.</source>
         <translation>在某一轮中已拟合，但另一原因解释了更多误差；其后指认的原因是在由它扩展的模型上拟合的。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="921"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="243"/>
         <source>not fitted (weaker)</source>
         <translation>未拟合（证据较弱）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="998"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="320"/>
         <source>&lt;p&gt;&amp;nbsp;&amp;nbsp;Not named: %1, because %2.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&amp;nbsp;&amp;nbsp;未认定：%1，因为%2。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1014"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="336"/>
         <source>&lt;p&gt;&lt;b&gt;Not named&lt;/b&gt;; what the data allow (95 %): %1&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未确认&lt;/b&gt;；数据允许的范围（95 %）：%1&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1023"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="345"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): the error follows the simulated rate of change (a lag of %2 s would explain %3 % of it): the line&apos;s dynamics differ from the model&apos;s.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：误差跟随仿真值的变化率（%2 s 的滞后可解释其 %3 %）：产线的动态与模型不同。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1030"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="352"/>
         <source>&lt;p&gt;&lt;b&gt;Unexplained&lt;/b&gt; (%1): %2&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;未解释&lt;/b&gt;（%1）：%2&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1035"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="357"/>
         <source>&lt;p&gt;&lt;b&gt;The correction model learnt on the extended physics model predicts worse on the held-out part than the one on the starting model: Extend keeps the starting model and its correction model; the findings stand.&lt;/b&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;在扩展物理模型上学得的修正模型在留出数据上的预测比在初始模型上的差：“扩展”保留初始模型及其修正模型；结论仍然成立。&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1043"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="365"/>
         <source>&lt;p&gt;No structure that a mechanism explains.&lt;/p&gt;</source>
         <translation>&lt;p&gt;没有可由机理解释的结构。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1063"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="385"/>
         <source>MAE X_out (physics)</source>
         <translation>MAE X_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="752"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1064"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1090"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="386"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="412"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="502"/>
         <source>% wb</source>
         <translation>% 湿基</translation>
     </message>
@@ -3030,14 +3032,14 @@ is noise</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1065"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="387"/>
         <source>MAE T_out (physics)</source>
         <translation>MAE T_out（机理）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="752"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1066"/>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1094"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="388"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="416"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="502"/>
         <source>°C</source>
         <translation>°C</translation>
     </message>
@@ -3050,12 +3052,12 @@ is noise</source>
         <translation>DryTwin（已命名原因的拟合值、进口水分仪的散布）：&lt;b&gt;已变化&lt;/b&gt;（p = %1）：%2 超出其正常范围</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="307"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="54"/>
         <source>the errors grow with feed rate and inlet moisture (bias by feed rate and by inlet moisture)</source>
         <translation>误差随进料量和入口水分增大（按进料量和按入口水分分组的偏差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="394"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="141"/>
         <source>it does not change within a batch (an offset, the tube&apos;s wall or gas phase), but this error grows or shrinks within the batch (fouling, a drifting reading)</source>
         <translation>它在批次内不变（偏差、管壁或气相），但此误差在批次内增大或减小（结垢、读数漂移）</translation>
     </message>
@@ -3068,7 +3070,7 @@ is noise</source>
         <translation type="vanished">%1：%2通常为 %3 %4，超出参考期见过的范围（%5 至 %6 %4）：该处模型误差是在参考期条件之外判断的，报警可能来自这一工况，而不是生产线的变化。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="432"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="180"/>
         <source>the error follows %1 %2 s later (correlation %3)</source>
         <translation>误差在 %1 之后 %2 s 跟随变化（相关系数 %3）</translation>
     </message>
@@ -3077,7 +3079,7 @@ is noise</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7 %8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 降至 %12 % 湿基，T_out 从 %13 降至 %14 °C（Diebold-Mariano p = %15：如此大的改进纯属偶然的概率）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="820"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="570"/>
         <source> %1 moved %2 times as much as this cause&apos;s model form says: the direction agrees, the size is the model&apos;s to answer.</source>
         <translation> %1 的变化是该原因模型形式所预测的 %2 倍：方向一致，幅度是模型需要解释的问题。</translation>
     </message>
@@ -3099,102 +3101,102 @@ is noise</source>
         <translation>未拟合：证据弱于已拟合的候选</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="783"/>
+        <location filename="../widgets/discovery/DiscoverPanelTexts.cpp" line="533"/>
         <source>%1 error before: bias %2 %3, within-batch trend %4 %3/h. With %5 (%6 = %7%8, 95 % CI [%9, %10]) and %18, the held-out MAE of X_out goes from %11 to %12 % wb and of T_out from %13 to %14 °C (the chance that a gain this large is luck: %15); %16. Check on the plots: %17.</source>
         <translation>扩展前的%1误差：偏差 %2 %3，批次内趋势 %4 %3/h。加入 %5（%6 = %7%8，95 % 置信区间 [%9, %10]），%18，留出数据上 X_out 的 MAE 从 %11 变为 %12 % 湿基，T_out 从 %13 变为 %14 °C（如此大的改进纯属偶然的概率：%15）；%16。在图上检查：%17。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="935"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="257"/>
         <source>* A timing cause: p is its own score test (how strongly the error points at it), smaller than its change test&apos;s; a lag&apos;s one-step estimate understates how far it moved, so the fit decides.</source>
         <translation>* 时间类原因：p 来自其自身的得分检验（误差指向它的强度），小于其变化检验的 p；滞后的一步估计会低估其变化幅度，因此由拟合来决定。</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="950"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="272"/>
         <source>%1 = %2%3, 95 % CI [%4, %5]</source>
         <translation>%1 = %2%3，95 % 置信区间 [%4, %5]</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="957"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="279"/>
         <source> in the final model, fitted with every other named cause (%1%2 when it was named, as below)</source>
         <translation>（最终模型中与其他所有已识别原因一起拟合；识别时为 %1%2，如下文）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="971"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="293"/>
         <source>%1, %2 s earlier (correlation %3%4)</source>
         <translation>%1，提前 %2 s（相关系数 %3%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="988"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="310"/>
         <source>&lt;p&gt;&lt;b&gt;Round %1&lt;/b&gt;: %2 (chance the held-out gain is luck %3, Diebold-Mariano test; removes %4 % of the error, %5 % of its fast part): %6&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;第 %1 轮&lt;/b&gt;：%2（留出部分的改进纯属偶然的概率 %3，Diebold-Mariano 检验；消除误差的 %4 %，快速部分的 %5 %）：%6&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1018"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="340"/>
         <source>&lt;p&gt;The patterns left in the error below are within what the reference period shows: the data did not change against it.&lt;/p&gt;</source>
         <translation>&lt;p&gt;下列误差中残留的模式在参考期所示的范围之内：数据相对参考期没有变化。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1048"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="370"/>
         <source>Held-out accuracy: nothing was named, so nothing was extended (before = after):</source>
         <translation>留出部分的精度：未指认原因，因此未扩展模型（前 = 后）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1053"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="375"/>
         <source>Gain on the held-out part, with every named cause (each finding&apos;s own gain is in its evidence):</source>
         <translation>留出部分的改进（含所有已指认的原因；每项发现各自的改进见其证据）：</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1067"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="389"/>
         <source>R² X_out</source>
         <translation>R² X_out</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1076"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="398"/>
         <source>low-frequency share</source>
         <translation>低频占比</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1089"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="411"/>
         <source>MAE X_out (PGRL-CC)</source>
         <translation>MAE X_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1089"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="411"/>
         <source>MAE X_out (last value held)</source>
         <translation>MAE X_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1090"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="412"/>
         <source>MAE X_out (physics, last error held)</source>
         <translation>MAE X_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1093"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="415"/>
         <source>MAE T_out (PGRL-CC)</source>
         <translation>MAE T_out（PGRL-CC）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1093"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="415"/>
         <source>MAE T_out (last value held)</source>
         <translation>MAE T_out（保持上一测量值）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1094"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="416"/>
         <source>MAE T_out (physics, last error held)</source>
         <translation>MAE T_out（机理，保持上一误差）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1121"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="443"/>
         <source>model (nothing extended)</source>
         <translation>模型（未扩展）</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1123"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="445"/>
         <source>starting model</source>
         <translation>初始模型</translation>
     </message>
     <message>
-        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="1124"/>
+        <location filename="../widgets/discovery/DiscoverPanel.cpp" line="446"/>
         <source>extended model</source>
         <translation>扩展后的模型</translation>
     </message>
@@ -3886,17 +3888,17 @@ is noise</source>
         <translation>%1 不是 DryTwin 项目（%2）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="92"/>
+        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="96"/>
         <source>Opening the training session %1…</source>
         <translation>正在打开培训会话 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="103"/>
+        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="107"/>
         <source>Training session %1 (its recording is on the Training tab; no data set is loaded for the other tabs)</source>
         <translation>培训会话 %1（其记录显示在“培训”选项卡上；其他选项卡未加载数据集）</translation>
     </message>
     <message>
-        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="107"/>
+        <location filename="../widgets/mainwindow/MainWindowScripting.cpp" line="111"/>
         <source>The training session %1 could not be opened: %2</source>
         <translation>无法打开培训会话 %1：%2</translation>
     </message>
@@ -4430,12 +4432,12 @@ The results below are from the last complete run.</source>
 <context>
     <name>drytwin::widgets::PlotStack</name>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="238"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="214"/>
         <source>Ctrl+click: cursor A, Shift+click: cursor B, Alt+click: time cursor; drag to zoom, right click to zoom out, middle drag to pan</source>
         <translation>Ctrl+单击：游标 A，Shift+单击：游标 B，Alt+单击：时间游标；拖动放大，右键缩小，中键拖动平移</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="114"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="90"/>
         <source>Export…</source>
         <translation>导出…</translation>
     </message>
@@ -4444,62 +4446,62 @@ The results below are from the last complete run.</source>
         <translation>将这些图表保存为 PNG、SVG 或 PDF</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="115"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="91"/>
         <source>Save these plots as PNG, SVG or PDF, or their data as CSV</source>
         <translation>把这些曲线图保存为 PNG、SVG 或 PDF，或把数据保存为 CSV</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="222"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="198"/>
         <source>time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="303"/>
+        <location filename="../widgets/common/PlotStack.cpp" line="279"/>
         <source>No data yet</source>
         <translation>尚无数据</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="576"/>
+        <location filename="../widgets/common/PlotStackCursors.cpp" line="105"/>
         <source>A %1</source>
         <translation>A %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="579"/>
+        <location filename="../widgets/common/PlotStackCursors.cpp" line="108"/>
         <source>B %1</source>
         <translation>B %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="582"/>
+        <location filename="../widgets/common/PlotStackCursors.cpp" line="111"/>
         <source>Δx %1</source>
         <translation>Δx %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="586"/>
+        <location filename="../widgets/common/PlotStackCursors.cpp" line="115"/>
         <source>%1: Δ %2</source>
         <translation>%1：Δ %2</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="590"/>
+        <location filename="../widgets/common/PlotStackCursors.cpp" line="119"/>
         <source>time cursor %1 s</source>
         <translation>时间游标 %1 s</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="711"/>
+        <location filename="../widgets/common/PlotStackExport.cpp" line="90"/>
         <source>cannot write %1</source>
         <translation>无法写入 %1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="739"/>
+        <location filename="../widgets/common/PlotStackExport.cpp" line="118"/>
         <source>unknown format &apos;%1&apos;: use .png, .svg, .pdf or .csv</source>
         <translation>未知格式“%1”：请使用 .png、.svg、.pdf 或 .csv</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="777"/>
+        <location filename="../widgets/common/PlotStackExport.cpp" line="156"/>
         <source>PNG image (*.png);;SVG drawing (*.svg);;PDF (*.pdf);;Data as CSV (*.csv)</source>
         <translation>PNG 图像 (*.png);;SVG 图形 (*.svg);;PDF (*.pdf);;CSV 数据 (*.csv)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="689"/>
+        <location filename="../widgets/common/PlotStackExport.cpp" line="68"/>
         <source>DryTwin plots</source>
         <translation>DryTwin 图表</translation>
     </message>
@@ -4508,7 +4510,7 @@ The results below are from the last complete run.</source>
         <translation>未知格式“%1”：请使用 .png、.svg 或 .pdf</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="776"/>
+        <location filename="../widgets/common/PlotStackExport.cpp" line="155"/>
         <source>Export plots</source>
         <translation>导出图表</translation>
     </message>
@@ -4517,12 +4519,12 @@ The results below are from the last complete run.</source>
         <translation>PNG 图像 (*.png);;SVG 矢量图 (*.svg);;PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="783"/>
+        <location filename="../widgets/common/PlotStackExport.cpp" line="162"/>
         <source>Export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/common/PlotStack.cpp" line="785"/>
+        <location filename="../widgets/common/PlotStackExport.cpp" line="164"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
@@ -5126,12 +5128,12 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::TrainingPanel</name>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="132"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="63"/>
         <source>The line&apos;s conditions: initial levels, load changes, seed (docs/mpc.md)</source>
         <translation>产线条件：初始水平、负荷变化、随机种子（docs/mpc.md）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="133"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="64"/>
         <source>Start session</source>
         <translation>开始会话</translation>
     </message>
@@ -5144,164 +5146,164 @@ extrapolation</source>
         <translation>显示教员的控制、故障、真实含水率和得分；将屏幕交给学员前请隐藏</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="136"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="67"/>
         <source>Instructor window…</source>
         <translation>教员窗口…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="137"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="68"/>
         <source>Opens the instructor&apos;s window: clock, snapshots, faults, the true moisture and the score. Not on the trainee&apos;s screen.</source>
         <translation>打开教员窗口：时钟、快照、故障、真实水分和得分。不显示在学员屏幕上。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="139"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="70"/>
         <source>No session</source>
         <translation>无会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="148"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="79"/>
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="155"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="86"/>
         <source> % wb</source>
         <translation> % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="157"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="88"/>
         <source>Apply</source>
         <translation>应用</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="166"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="97"/>
         <source>Operator</source>
         <translation>操作员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="168"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="99"/>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="172"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="103"/>
         <source>X_out setpoint</source>
         <translation>X_out 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="173"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="104"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="177"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="108"/>
         <source>Diagnose the recording…</source>
         <translation>诊断记录…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="178"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="109"/>
         <source>Saves what the line recorded so far as a batch file and opens it, so that the Discover tab can show what the model gets wrong</source>
         <translation>将产线至今的记录保存为批次文件并打开，以便“发现”页显示模型哪里出错</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="181"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="699"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="803"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="112"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="92"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="196"/>
         <source>No fault</source>
         <translation>无故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="185"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="116"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="188"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="684"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="119"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="77"/>
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="189"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="120"/>
         <source>Stops the line&apos;s clock while you think; press again to continue</source>
         <translation>思考时暂停产线时钟；再按一次继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="190"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="121"/>
         <source>Trainee</source>
         <translation>学员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="200"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="131"/>
         <source>Causes named (session time):</source>
         <translation>已给出的原因（会话时间）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="204"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="683"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="135"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="76"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="208"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="139"/>
         <source> min</source>
         <translation> 分钟</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="209"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="140"/>
         <source>Run ahead</source>
         <translation>快进</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="210"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="141"/>
         <source>Runs the line this much further at full speed</source>
         <translation>以最快速度让产线再运行这么久</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="212"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="143"/>
         <source>label (default: the time)</source>
         <translation>标签（默认：时间）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="213"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="144"/>
         <source>Take snapshot</source>
         <translation>拍摄快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="216"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="147"/>
         <source>Restore selected</source>
         <translation>恢复所选快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="226"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="157"/>
         <source> s from now</source>
         <translation> 秒后</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="227"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="158"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="228"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="251"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="159"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="182"/>
         <source>Fault</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="228"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="253"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="159"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="184"/>
         <source>Strength</source>
         <translation>强度</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="228"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="255"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="159"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="186"/>
         <source>Acts from</source>
         <translation>起作用时间</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="228"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="159"/>
         <source>Found</source>
         <translation>发现情况</translation>
     </message>
@@ -5310,90 +5312,90 @@ extrapolation</source>
         <translation>发现用时</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="232"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="163"/>
         <source>Save session…</source>
         <translation>保存会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="233"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="164"/>
         <source>Open session…</source>
         <translation>打开会话…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="234"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="277"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="415"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="165"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="208"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="346"/>
         <source>Instructor</source>
         <translation>教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="247"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="178"/>
         <source>Clock and snapshots</source>
         <translation>时钟与快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="259"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="190"/>
         <source>Faults</source>
         <translation>故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="263"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="194"/>
         <source>A session file holds the scenario, every event (faults, snapshots, answers) and the recording as a batch file; reopening replays it to the same data.</source>
         <translation>会话文件包含工况、每个事件（故障、快照、回答）以及作为批次文件的记录；重新打开时会回放得到相同的数据。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="271"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="202"/>
         <source>Set instructor password…</source>
         <translation>设置教员密码…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="272"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="203"/>
         <source>Asked before the instructor window opens (empty: no password)</source>
         <translation>打开教员窗口前询问（留空：不设密码）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="278"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="209"/>
         <source>New instructor password (empty: none):</source>
         <translation>新的教员密码（留空：无）：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="285"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="216"/>
         <source>Session file</source>
         <translation>会话文件</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="288"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="219"/>
         <source>Start a session: the line runs live under its PI loop.</source>
         <translation>开始会话：产线在其 PI 回路下实时运行。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="293"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="224"/>
         <source>Two detectors commissioned on healthy runs of this line: the physics model&apos;s error, and a dynamic PCA monitor of the screens&apos; signals. Each alarms when the line leaves its normal (1 % chance of a false alarm over the session)</source>
         <translation>两个检测器在本产线的健康运行数据上调试：物理模型误差，以及画面信号的动态 PCA 监控。产线偏离正常状态时各自报警（整个会话的误报概率为 1 %）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="327"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="243"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="258"/>
         <source>X_out [% wb]</source>
         <translation>X_out [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="313"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="244"/>
         <source>T_hot [°C]</source>
         <translation>T_hot [°C]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="314"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="245"/>
         <source>Feed [kg/h]</source>
         <translation>进料 [kg/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="339"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="270"/>
         <source>fault began</source>
         <translation>故障开始</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="340"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="271"/>
         <source>trainee&apos;s answer</source>
         <translation>学员的回答</translation>
     </message>
@@ -5410,41 +5412,41 @@ extrapolation</source>
         <translation>进料 [t/h]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="315"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="246"/>
         <source>X_in [% wb]</source>
         <translation>X_in [% 湿基]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="316"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="328"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="247"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="259"/>
         <source>session time [min]</source>
         <translation>会话时间 [min]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="318"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="335"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="249"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="266"/>
         <source>band</source>
         <translation>允许带</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="320"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="337"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="251"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="268"/>
         <source>setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="321"/>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="331"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="252"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="262"/>
         <source>X_out measured</source>
         <translation>X_out 测量值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="324"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="255"/>
         <source>DryTwin — instructor</source>
         <translation>DryTwin — 教员</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="333"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="264"/>
         <source>X_out true</source>
         <translation>X_out 真实值</translation>
     </message>
@@ -5453,82 +5455,82 @@ extrapolation</source>
         <translation type="vanished">监控 T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="354"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="285"/>
         <source>99 % limit</source>
         <translation>99 % 限值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="355"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="286"/>
         <source>T² of the model&apos;s error</source>
         <translation>模型误差的 T²</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="372"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="303"/>
         <source>alarm</source>
         <translation>报警</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="373"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="304"/>
         <source>change began</source>
         <translation>变化开始</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="381"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="312"/>
         <source>Start a session to see the line run</source>
         <translation>开始会话即可看到产线运行</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="382"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="313"/>
         <source>The monitor&apos;s T² shows once it has a minute of the model&apos;s error</source>
         <translation>监测器积累一分钟的模型误差后显示 T²</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="385"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="316"/>
         <source>Start a session to see the true outlet moisture beside the measured</source>
         <translation>开始会话即可看到真实出口含水率与测量值的对比</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="487"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="418"/>
         <source>Save the session as a folder</source>
         <translation>把会话保存为文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="490"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="421"/>
         <source>Session folder (*)</source>
         <translation>会话文件夹 (*)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="730"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="123"/>
         <source>Line monitor: commissioning on healthy runs of this scenario (a few seconds); it then catches up with the line.</source>
         <translation>产线监控：正在用本场景的健康运行进行调试（几秒钟），随后追上产线。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="734"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="127"/>
         <source>Line monitor unavailable: %1</source>
         <translation>产线监控不可用：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="736"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="129"/>
         <source>Line monitor: normal (as on its commissioning runs).</source>
         <translation>产线监控：正常（与调试运行一致）。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="740"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="133"/>
         <source>the model&apos;s error</source>
         <translation>模型误差</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="740"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="133"/>
         <source>the screens&apos; signals (PCA)</source>
         <translation>画面信号（PCA）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="743"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="136"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal; the change began at about %3. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态；变化约始于 %3。请诊断记录以确定原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="746"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="139"/>
         <source>&lt;b&gt;Line monitor: ALARM&lt;/b&gt; at %1 (%2) — the line has left its normal. Diagnose the recording to name the cause.</source>
         <translation>&lt;b&gt;产线监控：报警&lt;/b&gt;于 %1（%2）——产线已偏离正常状态。请诊断记录以确定原因。</translation>
     </message>
@@ -5537,57 +5539,57 @@ extrapolation</source>
         <translation>X_out 真实值（教员）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="348"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="279"/>
         <source>T_hot setpoint</source>
         <translation>T_hot 设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="349"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="280"/>
         <source>T_hot</source>
         <translation>T_hot</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="350"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="281"/>
         <source>feed</source>
         <translation>进料</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="351"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="282"/>
         <source>X_in</source>
         <translation>X_in</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="352"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="283"/>
         <source>T² [-]</source>
         <translation>T² [-]</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="390"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="321"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="391"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="322"/>
         <source>Stops the replay or the run ahead; the line stays where it got to</source>
         <translation>停止回放或快进；产线停留在已运行到的位置</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="393"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="324"/>
         <source>Scenario</source>
         <translation>工况</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="415"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="346"/>
         <source>Instructor password:</source>
         <translation>教员密码：</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="418"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="349"/>
         <source>Wrong password: the instructor window stays closed.</source>
         <translation>密码错误：教员窗口保持关闭。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="475"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="406"/>
         <source>Select a snapshot to restore.</source>
         <translation>请选择要恢复的快照。</translation>
     </message>
@@ -5596,112 +5598,112 @@ extrapolation</source>
         <translation>将会话保存到文件夹</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="496"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="427"/>
         <source>Open a training session</source>
         <translation>打开培训会话</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="496"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="427"/>
         <source>Sessions (*.json)</source>
         <translation>会话 (*.json)</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="505"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="436"/>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="515"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="446"/>
         <source>Recording opened for diagnosis: %1. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录以供诊断：%1。请在其上运行“发现”，然后在此给出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="518"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="449"/>
         <source>Recording opened for diagnosis: %1; the line&apos;s commissioning runs are in %2. Run Discover on it, then name the cause here.</source>
         <translation>已打开记录用于诊断：%1；产线的调试运行数据位于 %2。对其运行“发现”，然后在此处指出原因。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="525"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="456"/>
         <source>Session saved: %1</source>
         <translation>会话已保存：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="581"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="512"/>
         <source>Session started: the line runs under its PI loop. The MPC controllers use the model loaded now.</source>
         <translation>会话已开始：产线在其 PI 回路下运行。MPC 控制器使用当前加载的模型。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="585"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="516"/>
         <source>The previous session was saved in %1.</source>
         <translation>上一个会话已保存在 %1。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="599"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="530"/>
         <source>Replaying %1…</source>
         <translation>正在回放 %1…</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="624"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="555"/>
         <source>%1 (stale: retrain)</source>
         <translation>%1（过期：需重新训练）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="625"/>
+        <location filename="../widgets/training/TrainingPanel.cpp" line="556"/>
         <source>%1 (not learnt)</source>
         <translation>%1（未学习）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="673"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="66"/>
         <source>Session reopened at %1, frozen: the instructor resumes it.</source>
         <translation>会话已在 %1 处重新打开并冻结：由教员继续。</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="680"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="73"/>
         <source>finished</source>
         <translation>已结束</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="680"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="73"/>
         <source>FROZEN</source>
         <translation>已冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="680"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="73"/>
         <source>running %1×</source>
         <translation>运行中 %1×</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="682"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="75"/>
         <source>%1  t = %2 / %3  (%4)</source>
         <translation>%1  t = %2 / %3（%4）</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="683"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="76"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="684"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="77"/>
         <source>Continue</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="694"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="87"/>
         <source>Setpoint %1 % wb, band ±%2 % wb</source>
         <translation>设定值 %1 % 湿基，允许带 ±%2 % 湿基</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="695"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="88"/>
         <source>MPC fell back: %1</source>
         <translation>MPC 已回退：%1</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="699"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="92"/>
         <source>%1  %2</source>
         <translation>%1  %2</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingPanel.cpp" line="706"/>
+        <location filename="../widgets/training/TrainingPanelFrame.cpp" line="99"/>
         <source>%1 (at %2)</source>
         <translation>%1（于 %2）</translation>
     </message>
@@ -5725,42 +5727,42 @@ extrapolation</source>
 <context>
     <name>drytwin::widgets::TrainingRunner</name>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="345"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="398"/>
         <source>Setpoint</source>
         <translation>设定值</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="351"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="404"/>
         <source>Controller</source>
         <translation>控制器</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="359"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="412"/>
         <source>Inject fault</source>
         <translation>注入故障</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="367"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="420"/>
         <source>Freeze</source>
         <translation>冻结</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="376"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="429"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="385"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="438"/>
         <source>Snapshot</source>
         <translation>快照</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="391"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="444"/>
         <source>Restore</source>
         <translation>恢复</translation>
     </message>
     <message>
-        <location filename="../widgets/training/TrainingRunner.cpp" line="397"/>
+        <location filename="../widgets/training/TrainingRunner.cpp" line="450"/>
         <source>Name the cause</source>
         <translation>给出原因</translation>
     </message>

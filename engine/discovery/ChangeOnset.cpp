@@ -16,7 +16,6 @@
 #include <set>
 #include <string_view>
 
-
 namespace drytwin::discovery::detail {
 
 /// The first batch from which DryTwin's monitor sees the change: the run that holds its change

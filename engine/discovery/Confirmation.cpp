@@ -84,10 +84,9 @@ Expected<Confirmation> confirmCandidate(const ConfirmationInput& in) {
     }
     const int atCol = static_cast<int>(in.nuisance.size());
     const double value = in.fitParameters[in.cand.parameter];
-    auto judged =
-        judgeSpecificity({in.pr, in.cand.parameter, value, in.meanBatchHours, in.currentHeld, *afterHeld,
-                          in.fitParameters, *at, in.roundStack, in.nuisanceCols, atCol, in.currentSims,
-                          in.afterOtherCauses});
+    auto judged = judgeSpecificity({in.pr, in.cand.parameter, value, in.meanBatchHours, in.currentHeld,
+                                    *afterHeld, in.fitParameters, *at, in.roundStack, in.nuisanceCols, atCol,
+                                    in.currentSims, in.afterOtherCauses});
     if (!judged) {
         return judged.error();
     }

@@ -349,7 +349,7 @@ struct ConfirmationInput {
     int roundCol;                                              ///< the candidate's column in it
     const std::vector<Param>& nuisance;                        ///< the nuisance parameters
     const std::vector<physics::SimulationResult>& currentSims; ///< the model without it, every row
-    bool afterOtherCauses = false; ///< another cause was named before it
+    bool afterOtherCauses = false;                             ///< another cause was named before it
 };
 struct Confirmation {
     std::optional<Finding> finding; ///< set when it is named

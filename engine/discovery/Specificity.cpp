@@ -407,11 +407,12 @@ Expected<Specificity> judgeSpecificity(const SpecificityInput& in) {
         const auto& ch = changes[static_cast<std::size_t>(notBetterLater)];
         const double w = std::max(1e-12, channelWeight(in.pr.options.weights, notBetterLater));
         out.code = "not_on_every_output";
-        out.why = format("after the causes named before it, it acts on %s but does not lower its held-out "
-                         "error clearly (rms %.3g to %.3g %s, p = %.2g, needs < %.2g): what is left there is "
-                         "not this cause's",
-                         kChannelName[notBetterLater], std::sqrt(ch.mseBefore / w), std::sqrt(ch.mseAfter / w),
-                         kChannelUnit[notBetterLater], notBetterP, in.pr.options.laterCauseAlpha);
+        out.why =
+            format("after the causes named before it, it acts on %s but does not lower its held-out "
+                   "error clearly (rms %.3g to %.3g %s, p = %.2g, needs < %.2g): what is left there is "
+                   "not this cause's",
+                   kChannelName[notBetterLater], std::sqrt(ch.mseBefore / w), std::sqrt(ch.mseAfter / w),
+                   kChannelUnit[notBetterLater], notBetterP, in.pr.options.laterCauseAlpha);
     } else if (worse >= 0 || notImproved >= 0) {
         const int c = worse >= 0 ? worse : notImproved;
         const auto& ch = changes[static_cast<std::size_t>(c)];

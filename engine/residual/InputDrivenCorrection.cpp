@@ -52,7 +52,6 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-
 /// Ridge coefficients of one output from Gram G and right-hand side r; the constant (column 0)
 /// is not penalised.
 Eigen::VectorXd ridgeSolve(Eigen::MatrixXd gram, const Eigen::VectorXd& rhs, double penalty) {
@@ -282,9 +281,9 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
     // the constant is the mean of the batches' levels: the level of a batch not seen.
     // The ridge fit from the normal equations @p g, @p r of the rows it uses and, for the
     // within-batch fit, those rows' per-batch sums of φ and y and their counts.
-    const auto solveFrom = [&](Eigen::MatrixXd g, Eigen::VectorXd r, const std::vector<Eigen::VectorXd>& viewPhi,
-                               const std::vector<double>& viewY, const std::vector<double>& viewRows,
-                               double penalty) -> Eigen::VectorXd {
+    const auto solveFrom = [&](Eigen::MatrixXd g, Eigen::VectorXd r,
+                               const std::vector<Eigen::VectorXd>& viewPhi, const std::vector<double>& viewY,
+                               const std::vector<double>& viewRows, double penalty) -> Eigen::VectorXd {
         if (!options.withinBatch) {
             return ridgeSolve(std::move(g), r, penalty);
         }
@@ -420,10 +419,11 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
         // comes out worse than the PBM counts.
         std::vector<double> pbmFold(static_cast<std::size_t>(folds), 0.0);
         for (const auto& sg : segments) {
-            pbmFold[static_cast<std::size_t>(sg.fold)] += y.col(o).segment(sg.begin, sg.end - sg.begin).cwiseAbs().sum();
+            pbmFold[static_cast<std::size_t>(sg.fold)] +=
+                y.col(o).segment(sg.begin, sg.end - sg.begin).cwiseAbs().sum();
         }
         double shrink = 0;
-        best = pbmAbs[o]; // κ = 0
+        best = pbmAbs[o];              // κ = 0
         Eigen::VectorXd laterForecast; // the later rows' correction by the fit on the earlier ones
         double laterPbm = 0;
         if (options.laterInTime) {
@@ -437,7 +437,9 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
             if (options.laterInTime) {
                 double laterAbs = 0;
                 for (Eigen::Index k = 0; k < rows; ++k) {
-                    laterAbs += later[static_cast<std::size_t>(k)] ? std::abs(y(k, o) - kappa * laterForecast(k)) : 0.0;
+                    laterAbs += later[static_cast<std::size_t>(k)]
+                                    ? std::abs(y(k, o) - kappa * laterForecast(k))
+                                    : 0.0;
                 }
                 if (laterAbs > laterPbm) {
                     continue; // worse than the physics later in the batches than it was fitted on
@@ -446,13 +448,15 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::train(const std::vector<B
             std::vector<double> fold(static_cast<std::size_t>(folds), 0.0);
             for (const auto& sg : segments) {
                 fold[static_cast<std::size_t>(sg.fold)] +=
-                    (y.col(o).segment(sg.begin, sg.end - sg.begin) - kappa * bestHeldOut.segment(sg.begin, sg.end - sg.begin))
+                    (y.col(o).segment(sg.begin, sg.end - sg.begin) -
+                     kappa * bestHeldOut.segment(sg.begin, sg.end - sg.begin))
                         .cwiseAbs()
                         .sum();
             }
             bool noFoldWorse = true;
             for (int f = 0; f < folds; ++f) {
-                noFoldWorse = noFoldWorse && fold[static_cast<std::size_t>(f)] <= pbmFold[static_cast<std::size_t>(f)];
+                noFoldWorse =
+                    noFoldWorse && fold[static_cast<std::size_t>(f)] <= pbmFold[static_cast<std::size_t>(f)];
             }
             double abs = 0;
             for (double a : fold) {

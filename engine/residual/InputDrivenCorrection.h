@@ -191,7 +191,8 @@ private:
     /// The basis φ for every row (rows × features, the constant first) from standardised,
     /// clipped inputs.
     /// @p inRange, when given, receives each row's operating-range weight (InputDrivenOptions::rangeGuard).
-    Eigen::MatrixXd basisOf(const Eigen::MatrixXd& inputs, double stepS, Eigen::VectorXd* inRange = nullptr) const;
+    Eigen::MatrixXd basisOf(const Eigen::MatrixXd& inputs, double stepS,
+                            Eigen::VectorXd* inRange = nullptr) const;
     /// The support guard's leverage of standardised basis rows: h = ‖φ‖² ρ − ‖Wᵀφ‖² (see
     /// m_supportDirections).
     Eigen::VectorXd leverageOf(const Eigen::MatrixXd& standardisedBasis) const;

@@ -123,7 +123,8 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::strin
                 m.m_changeWeights.emplace_back(w.at(0).get<double>(), w.at(1).get<double>());
             }
             if (m.m_changeWeights.size() != input_driven::kChangeHorizons.size()) {
-                return Error{ErrorKind::BadInput, "input_driven.change_weights", "one weight pair per horizon"};
+                return Error{ErrorKind::BadInput, "input_driven.change_weights",
+                             "one weight pair per horizon"};
             }
         }
         o.agreementAcrossFolds = j.contains("agreement");
@@ -155,9 +156,9 @@ Expected<InputDrivenCorrection> InputDrivenCorrection::fromJson(const std::strin
             m.m_featureScale.size() != features || m.m_coefficients.rows() != features ||
             m.m_coefficients.cols() != kCorrectedOutputs ||
             (m.m_supportDirections.size() > 0 && m.m_supportDirections.rows() != features) ||
-            (m.m_foldCoefficients.size() > 0 &&
-             (m.m_foldCoefficients.rows() != features || m.m_foldCoefficients.cols() % kCorrectedOutputs != 0 ||
-              m.m_foldCoefficients.cols() < 2 * kCorrectedOutputs))) {
+            (m.m_foldCoefficients.size() > 0 && (m.m_foldCoefficients.rows() != features ||
+                                                 m.m_foldCoefficients.cols() % kCorrectedOutputs != 0 ||
+                                                 m.m_foldCoefficients.cols() < 2 * kCorrectedOutputs))) {
             return Error{ErrorKind::BadInput, "input_driven", "sizes of the stored correction do not agree"};
         }
         return m;

@@ -55,8 +55,8 @@ void InputDrivenCorrection::fitSupport(const Eigen::MatrixXd& phi, const std::ve
         m_supportDirections.resize(0, 0);
         return;
     }
-    const auto at = static_cast<std::ptrdiff_t>(
-        std::clamp(m_options.supportQuantile, 0.0, 1.0) * double(leverages.size() - 1));
+    const auto at = static_cast<std::ptrdiff_t>(std::clamp(m_options.supportQuantile, 0.0, 1.0) *
+                                                double(leverages.size() - 1));
     std::nth_element(leverages.begin(), leverages.begin() + at, leverages.end());
     val.supportLeverage = leverages[static_cast<std::size_t>(at)];
     // The range of the correction over every inlier training row, as correct() forms it.
@@ -102,7 +102,8 @@ void InputDrivenCorrection::applyGuards(const Eigen::MatrixXd& phi, Eigen::Matri
                 // c · c² / (c² + z² se²): kept whole where it stands well clear of its spread, a
                 // quarter of it where it is as large as z times its spread.
                 const double c = out(k, o);
-                const double noise = m_options.agreementZ * m_options.agreementZ * standardError * standardError;
+                const double noise =
+                    m_options.agreementZ * m_options.agreementZ * standardError * standardError;
                 out(k, o) = c * c * c / std::max(c * c + noise, 1e-300);
             }
         }
@@ -129,7 +130,8 @@ Eigen::Vector2d InputDrivenCorrection::changeWeight(int horizon) const {
     }
     for (std::size_t i = 1; i < kChangeHorizons.size(); ++i) {
         if (horizon <= kChangeHorizons[i]) {
-            const double t = double(horizon - kChangeHorizons[i - 1]) / double(kChangeHorizons[i] - kChangeHorizons[i - 1]);
+            const double t = double(horizon - kChangeHorizons[i - 1]) /
+                             double(kChangeHorizons[i] - kChangeHorizons[i - 1]);
             return (1 - t) * m_changeWeights[i - 1] + t * m_changeWeights[i];
         }
     }

@@ -220,7 +220,8 @@ Expected<ResidualModel> ResidualModel::trainOnBase(const std::vector<BatchView>&
     // within 0.005 unless its valley is long and narrow (a and b strongly correlated), where it is
     // a point of nearly the same error (no library call: a boxed two-variable L1 fit is two loops).
     // @p decay: the share d of the held error let go, fixed (t − d c is fitted).
-    const auto solveAbsolute = [](const std::vector<std::array<float, 4>>& rows, double decay) -> Eigen::Vector2d {
+    const auto solveAbsolute = [](const std::vector<std::array<float, 4>>& rows,
+                                  double decay) -> Eigen::Vector2d {
         Eigen::Vector2d best(0, 0);
         double bestSae = 0; // at (s, κ) = (0, 0)
         for (const auto& r : rows) {
@@ -239,7 +240,8 @@ Expected<ResidualModel> ResidualModel::trainOnBase(const std::vector<BatchView>&
                 const double sc = std::clamp(sv, 0.0, 1.0);
                 sums.assign(kappas.size(), 0.0);
                 for (const auto& r : rows) {
-                    const double left = double(r[2]) - decay * double(r[3]) - sc * double(r[0]), b = double(r[1]);
+                    const double left = double(r[2]) - decay * double(r[3]) - sc * double(r[0]),
+                                 b = double(r[1]);
                     for (std::size_t q = 0; q < kappas.size(); ++q) {
                         sums[q] += std::abs(left - kappas[q] * b);
                     }
@@ -265,7 +267,8 @@ Expected<ResidualModel> ResidualModel::trainOnBase(const std::vector<BatchView>&
     // gain of a few parts in ten thousand, cost 0.7 % on an unseen data set against the PBM with
     // its error held; Akaike's criterion (2 k) still let through a learnt share 180 s ahead that
     // gained 2 % on the folds of a 4 × 3,000 set and lost 1 % on its held-out part.
-    const auto sumAbsolute = [](const std::vector<std::array<float, 4>>& rows, double sv, double kv, double dv) {
+    const auto sumAbsolute = [](const std::vector<std::array<float, 4>>& rows, double sv, double kv,
+                                double dv) {
         double sum = 0;
         for (const auto& r : rows) {
             sum += std::abs(double(r[2]) - sv * double(r[0]) - kv * double(r[1]) - dv * double(r[3]));
@@ -307,7 +310,8 @@ Expected<ResidualModel> ResidualModel::trainOnBase(const std::vector<BatchView>&
         const double n = std::max(1.0, static_cast<double>(rows.size()) / std::max(1, horizon));
         const auto aic = [&](const Weights& c) {
             const int k = int(c.s > 0 && c.s < 1) + int(c.kappa > 0) + int(c.decay > 0);
-            return 2 * n * std::log(std::max(sumAbsolute(rows, c.s, c.kappa, c.decay), 1e-300)) + std::log(n) * k;
+            return 2 * n * std::log(std::max(sumAbsolute(rows, c.s, c.kappa, c.decay), 1e-300)) +
+                   std::log(n) * k;
         };
         Weights best;
         double bestAic = aic(best);

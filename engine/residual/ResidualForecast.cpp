@@ -32,8 +32,9 @@ std::vector<HybridPrediction> ResidualModel::predictHorizons(const BatchView& v,
     return predictHorizonsOn(v, horizons, nullptr);
 }
 
-std::vector<HybridPrediction> ResidualModel::predictHorizonsOn(const BatchView& v, const std::vector<int>& horizons,
-                                                               const physics::SimulationResult* rawPbm) const {
+std::vector<HybridPrediction>
+ResidualModel::predictHorizonsOn(const BatchView& v, const std::vector<int>& horizons,
+                                 const physics::SimulationResult* rawPbm) const {
     const std::size_t count = v.rows.size();
     std::vector<HybridPrediction> out(horizons.size(), HybridPrediction::unknown(count));
     // The learnt part of each slot's forecasts (% wb, °C), for the realised-weight guard.

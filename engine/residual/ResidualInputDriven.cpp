@@ -213,14 +213,16 @@ void ResidualModel::weighByRealisedSkill(const BatchView& v, std::size_t horizon
             for (std::size_t i = 0; i < count; ++i) {
                 // What is left of the correction's change after the blend towards holding the
                 // last measurement (which holds no change at all).
-                const double left = 1.0 - (std::isfinite(blendWeights[i]) ? blendWeights[i] : trainedBlend(j));
+                const double left =
+                    1.0 - (std::isfinite(blendWeights[i]) ? blendWeights[i] : trainedBlend(j));
                 takeBack[i] = -correctionChangeOf[j][i] * left;
                 if (!std::isfinite(takeBack[i])) {
                     takeBack[i] = 0;
                 }
             }
             // Prior: the share of the change the correction's cross-validation did not trust.
-            const double trusted = m_inputDriven ? m_inputDriven->changeWeight(static_cast<int>(horizon))(j) : 1.0;
+            const double trusted =
+                m_inputDriven ? m_inputDriven->changeWeight(static_cast<int>(horizon))(j) : 1.0;
             weighOnTop(reference, takeBack, 1.0 - trusted);
         }
         // 2. The learnt correction on top.

@@ -241,7 +241,8 @@ Expected<ResidualModel> ResidualModel::fromJson(const std::string& text) {
             m.m_referenceByHorizon =
                 pairsFromJson(j.value("reference_change_by_horizon", nlohmann::json::array()));
             m.m_learntBound = pairsFromJson(j.value("learnt_bound_by_horizon", nlohmann::json::array()));
-            m.m_decayByHorizon = pairsFromJson(j.value("held_error_decay_by_horizon", nlohmann::json::array()));
+            m.m_decayByHorizon =
+                pairsFromJson(j.value("held_error_decay_by_horizon", nlohmann::json::array()));
             if (m.m_shrink.size() != m.m_shrinkHorizons.size() ||
                 (!m.m_referenceByHorizon.empty() &&
                  m.m_referenceByHorizon.size() != m.m_shrinkHorizons.size()) ||

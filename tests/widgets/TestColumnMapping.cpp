@@ -7,6 +7,7 @@
 #include "data/ColumnMappingDialog.h"
 #include "data/DataPanel.h"
 
+#include "WaitIdle.h"
 #include <QApplication>
 #include <QComboBox>
 #include <QFileDialog>
@@ -18,7 +19,6 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTimer>
-#include "WaitIdle.h"
 
 #include <QtTest>
 #include <cmath>

@@ -7,11 +7,11 @@
 #include "discovery/DiscoverPanel.h"
 #include "workflow/Session.h"
 
+#include "WaitIdle.h"
 #include <QLabel>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
-#include "WaitIdle.h"
 
 #include <QtTest>
 #include <qwt_plot.h>

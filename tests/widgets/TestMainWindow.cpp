@@ -23,6 +23,7 @@
 #include "view3d/LineView3D.h"
 #include "workflow/Session.h"
 
+#include "WaitIdle.h"
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
@@ -48,7 +49,6 @@
 #include <QTimer>
 #include <QTranslator>
 #include <QUndoStack>
-#include "WaitIdle.h"
 
 #include <QtTest>
 #include <fstream>

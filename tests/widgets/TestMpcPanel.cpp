@@ -5,6 +5,7 @@
 #include "mpc/MpcPanel.h"
 #include "mpc/ScenarioForm.h"
 
+#include "WaitIdle.h"
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
@@ -20,7 +21,6 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QWheelEvent>
-#include "WaitIdle.h"
 
 #include <QtTest>
 

@@ -13,6 +13,7 @@
 #include "discovery/DiscoveryNotes.h"
 #include "discovery/RankingWords.h"
 
+#include "WaitIdle.h"
 #include <QAction>
 #include <QHeaderView>
 #include <QLabel>
@@ -23,7 +24,6 @@
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTemporaryDir>
-#include "WaitIdle.h"
 
 #include <QtTest>
 #include <fstream>

@@ -11,6 +11,7 @@
 #include "residual/ResidualPanel.h"
 #include "workflow/Session.h"
 
+#include "WaitIdle.h"
 #include <QApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -27,7 +28,6 @@
 #include <QTemporaryDir>
 #include <QTextBrowser>
 #include <QTimer>
-#include "WaitIdle.h"
 
 #include <QtTest>
 #include <cmath>

@@ -12,12 +12,12 @@
 #include "residual/ResidualPanel.h"
 #include "workflow/Session.h"
 
+#include "WaitIdle.h"
 #include <QCheckBox>
 #include <QLabel>
 #include <QPushButton>
 #include <QStandardPaths>
 #include <QTemporaryDir>
-#include "WaitIdle.h"
 
 #include <QtTest>
 

@@ -154,7 +154,8 @@ private Q_SLOTS:
 
         // The line's monitor (commissioned on healthy runs of this scenario, beside the running
         // line) has caught up and left "normal".
-        QTRY_VERIFY2_WITH_TIMEOUT(runner.frame().monitor.ready, qPrintable(runner.frame().monitorNote), 30000);
+        QTRY_VERIFY2_WITH_TIMEOUT(runner.frame().monitor.ready, qPrintable(runner.frame().monitorNote),
+                                  30000);
         QVERIFY2(panel->monitorLabel()->text().contains("ALARM"), qPrintable(panel->monitorLabel()->text()));
         QVERIFY(runner.frame().monitor.drytwin.alarmed);
         QVERIFY(runner.frame().monitor.drytwin.alarmAtS > frozenAt - 60);

@@ -7,8 +7,7 @@ namespace drytwin::widgets::test {
 
 /// Waits until @p owner's job queue (MainWindow::jobs(), Workbench::jobs()) has been idle for four
 /// polls in a row (200 ms: an action's follow-ups are queued from its end), at most @p ms.
-template <class Owner>
-bool waitUntilIdle(Owner& owner, int ms) {
+template <class Owner> bool waitUntilIdle(Owner& owner, int ms) {
     QElapsedTimer t;
     t.start();
     int idle = 0;

@@ -76,7 +76,6 @@ QwtPlotMarker* verticalLine(QwtPlot* plot, const QColor& colour, Qt::PenStyle st
     return m;
 }
 
-
 } // namespace
 
 PlotStack::PlotStack(QWidget* parent)

@@ -1,7 +1,7 @@
 // The plot stack's cursors: the time cursor every plot shares, the two measuring cursors and the
 // readout of the values under them.
-#include "common/PlotStack.h"
 #include "common/LegendLabel.h"
+#include "common/PlotStack.h"
 
 #include "common/WidgetHelpers.h"
 

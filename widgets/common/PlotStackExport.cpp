@@ -1,6 +1,6 @@
 // The plot stack's export: the plots drawn as PNG, SVG or PDF, their data as CSV.
-#include "common/PlotStack.h"
 #include "common/LegendLabel.h"
+#include "common/PlotStack.h"
 
 #include "common/WidgetHelpers.h"
 

@@ -1,6 +1,6 @@
 #include "discovery/DiscoverPanel.h"
-#include "discovery/FindingWords.h"
 #include "common/EngineText.h"
+#include "discovery/FindingWords.h"
 
 #include "common/DisplayNames.h"
 #include "common/PlotStack.h"
@@ -146,7 +146,6 @@ DiscoverPanel::DiscoverPanel(Workbench& workbench, QWidget* parent)
     m_workbench.bindButton(run, Action::Discover);
     showReference();
 }
-
 
 void DiscoverPanel::show() {
     const auto& r = m_workbench.latest().discover;

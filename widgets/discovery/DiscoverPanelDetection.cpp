@@ -1,7 +1,7 @@
 // The Discover tab's reference period and detection against it: both detectors' verdicts, the
 // monitor's T² and SPE with their limits, each column's contribution after the onset.
-#include "discovery/DiscoverPanel.h"
 #include "common/EngineText.h"
+#include "discovery/DiscoverPanel.h"
 
 #include "common/DisplayNames.h"
 #include "common/PlotStack.h"

@@ -1,9 +1,9 @@
 // The Discover tab's words: a finding's evidence, specificity and notes, the rejections' and
 // signatures' sentences, in the window's language (DiscoverPanel.cpp keeps the tab's layout and
 // wiring).
+#include "common/EngineText.h"
 #include "discovery/DiscoverPanel.h"
 #include "discovery/FindingWords.h"
-#include "common/EngineText.h"
 
 #include "common/DisplayNames.h"
 #include "common/PlotStack.h"
@@ -146,8 +146,9 @@ QString rejectionText(const std::string& code) {
         return DiscoverPanel::tr("its value lies within the reference period's normal range: not a change");
     }
     if (code == "not_on_every_output") {
-        return DiscoverPanel::tr("named after another cause, it must lower the error of every output it acts on, "
-                                 "and on one it does not: what is left there is not this cause's");
+        return DiscoverPanel::tr(
+            "named after another cause, it must lower the error of every output it acts on, "
+            "and on one it does not: what is left there is not this cause's");
     }
     if (code == "below_floor") {
         return DiscoverPanel::tr("it is below what the instruments can tell (practical floor)");

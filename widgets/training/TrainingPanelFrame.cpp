@@ -50,7 +50,6 @@
 #include <qwt_text.h>
 #include <utility>
 
-
 namespace drytwin::widgets {
 
 using namespace training_panel;

@@ -124,7 +124,8 @@ public:
         if (m_monitor) {
             if (!writeCommissioningRuns(*m_monitor, referenceFolder)) {
                 fail(QCoreApplication::translate("TrainingRunner", "Save session"),
-                     Error{ErrorKind::BadInput, referenceFolder.toStdString(), "the commissioning runs could not be written"});
+                     Error{ErrorKind::BadInput, referenceFolder.toStdString(),
+                           "the commissioning runs could not be written"});
             }
         } else if (!m_commissioning.isFinished()) {
             m_commissioningFolders << referenceFolder;
@@ -159,7 +160,8 @@ private:
         }
         m_commissioningFolders.clear();
         m_commissioning = QtConcurrent::run([scenario = session.scenario()] {
-            return std::make_shared<Expected<training::LineMonitor>>(training::LineMonitor::commission(scenario));
+            return std::make_shared<Expected<training::LineMonitor>>(
+                training::LineMonitor::commission(scenario));
         });
         m_session.emplace(std::move(session));
         m_scenarioJson = scenarioJson;
@@ -174,7 +176,9 @@ private:
 
     void fail(const QString& action, const Error& error) { Q_EMIT failed(action, errorText(error)); }
 
-    bool commissioningFinished() const { return m_commissioning.isFinished() && !m_commissioning.isCanceled(); }
+    bool commissioningFinished() const {
+        return m_commissioning.isFinished() && !m_commissioning.isCanceled();
+    }
 
     /// Takes in the monitor once its commissioning has finished; @p wait: waits for it (a save,
     /// which writes the commissioning runs beside the recording).
@@ -212,7 +216,8 @@ private:
         for (const auto& folder : folders) {
             if (!writeCommissioningRuns(monitor, folder)) {
                 fail(QCoreApplication::translate("TrainingRunner", "Save session"),
-                     Error{ErrorKind::BadInput, folder.toStdString(), "the commissioning runs could not be written"});
+                     Error{ErrorKind::BadInput, folder.toStdString(),
+                           "the commissioning runs could not be written"});
             }
         }
     }
@@ -223,7 +228,9 @@ private:
         bool ok = true;
         for (const auto& run : monitor.commissioningRuns()) {
             ok = ok && data::writeBatchFile(
-                           run, QDir(dir).filePath(QString::fromStdString(run.id) + QStringLiteral(".csv")).toStdString());
+                           run, QDir(dir)
+                                    .filePath(QString::fromStdString(run.id) + QStringLiteral(".csv"))
+                                    .toStdString());
         }
         return ok;
     }

@@ -221,7 +221,8 @@ private Q_SLOTS:
                                            lumpedFourBatches(101, {{Mechanism::GasPhaseCoupling, 0.25}}),
                                            hybrid::HybridModel{});
         QVERIFY2(r.ok(), r ? "" : r.error().message().c_str());
-        QVERIFY2(r->detection.namedCauses == std::vector<std::string>{"gas_phase_coupling"}, qPrintable(story(*r)));
+        QVERIFY2(r->detection.namedCauses == std::vector<std::string>{"gas_phase_coupling"},
+                 qPrintable(story(*r)));
         bool rejectedForItsOutputs = false;
         for (const auto& rd : r->rounds) {
             for (const auto& x : rd.rejected) {

@@ -2,10 +2,9 @@
 // of 4,000 s on the distributed plant with realistic transmitters) the input-driven correction,
 // fitted on four batches, extrapolated at the start of the fifth, at an ambient 9 K colder than
 // any it was fitted on: free-run moisture 1.81 times the PBM's error, and PGRL-CC's forecast 180 s
-// ahead 1.63 times the better trivial one's. With the guards (support, agreement across batches, range, the fit
-// within batches, no fold and no later part worse than the physics, the correction's change taken
-// back where it does not hold) the forecast at every horizon and the free run fall back to the
-// physics there.
+// ahead 1.63 times the better trivial one's. With the guards (support, agreement across batches, range, the
+// fit within batches, no fold and no later part worse than the physics, the correction's change taken back
+// where it does not hold) the forecast at every horizon and the free run fall back to the physics there.
 #include "hybrid/Evaluation.h"
 #include "hybrid/HybridModel.h"
 #include "hybrid/HybridTraining.h"
@@ -26,7 +25,8 @@ struct Outcome {
     double freeRunTemperature = 0;
 };
 
-const evaluation::ModelMetrics* find(const std::vector<evaluation::ModelMetrics>& list, const std::string& key) {
+const evaluation::ModelMetrics* find(const std::vector<evaluation::ModelMetrics>& list,
+                                     const std::string& key) {
     for (const auto& m : list) {
         if (m.name == key) {
             return &m;
